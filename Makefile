@@ -1,0 +1,37 @@
+# The README's quick-start commands.  CMake does the real work; this file
+# installs what is missing, configures and builds.
+BUILD ?= build
+CMAKE_FLAGS ?=
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+OUT ?= out
+
+.PHONY: all run test bench deps build clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh build test
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Renders the demo gallery to $(OUT)/index.html.
+run: build
+	$(BUILD)/tools/cg/cg demo -o $(OUT)
+
+# Builds and runs every test.
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# Builds and runs the benchmarks against the peer libraries; rewrites bench/RESULTS.md.
+bench:
+	@scripts/install-deps.sh build bench
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS)
+	bench/run.sh $(BUILD)
+
+clean:
+	rm -rf $(BUILD) $(OUT)

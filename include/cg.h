@@ -1,0 +1,11 @@
+/* cg.h - the whole public API of libcg. */
+#ifndef CG_H
+#define CG_H
+
+#include "cg/core.h"
+#include "cg/image.h"
+#include "cg/color.h"
+#include "cg/xform.h"
+#include "cg/draw.h"
+
+#endif

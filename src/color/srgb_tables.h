@@ -1,0 +1,8 @@
+/* Private: constant sRGB lookup tables shared by the image and color code. */
+#ifndef CG_SRGB_TABLES_H
+#define CG_SRGB_TABLES_H
+
+extern const float cg_srgb_decode_table[256];
+extern const float cg_srgb_threshold_table[255];
+
+#endif

@@ -1,0 +1,30 @@
+/* Private pieces shared by the image readers and writers. */
+#ifndef CG_IMAGE_INTERNAL_H
+#define CG_IMAGE_INTERNAL_H
+
+#include "cg/image.h"
+
+/* A growable byte buffer that a writer fills before it goes to disk. */
+typedef struct byte_buffer {
+    unsigned char *bytes;
+    size_t size, capacity;
+} byte_buffer;
+
+cg_status byte_buffer_append(byte_buffer *buffer, const void *bytes, size_t size);
+void byte_buffer_free(byte_buffer *buffer);
+
+/* Checks a size read from a file against CG_IMAGE_MAX_SIDE/PIXELS. */
+cg_status image_check_dimensions(unsigned long width, unsigned long height, const char *name,
+                                 cg_error *err);
+
+cg_status png_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
+                     cg_error *err);
+cg_status pnm_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
+                     cg_error *err);
+
+/* Encoders take an RGBA8 image. */
+cg_status png_encode(const cg_image *image, byte_buffer *out, cg_error *err);
+cg_status pnm_encode(const cg_image *image, cg_file_format format, byte_buffer *out,
+                     cg_error *err);
+
+#endif

@@ -1,0 +1,176 @@
+/* Reading and writing image files: format detection and safe replacement. */
+#include "internal.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+cg_status byte_buffer_append(byte_buffer *buffer, const void *bytes, size_t size)
+{
+    if (size > buffer->capacity - buffer->size) {
+        size_t capacity = buffer->capacity ? buffer->capacity : 4096;
+        while (capacity - buffer->size < size) {
+            if (capacity > SIZE_MAX / 2)
+                return CG_ENOMEM;
+            capacity *= 2;
+        }
+        unsigned char *grown = realloc(buffer->bytes, capacity);
+        if (!grown)
+            return CG_ENOMEM;
+        buffer->bytes = grown;
+        buffer->capacity = capacity;
+    }
+    memcpy(buffer->bytes + buffer->size, bytes, size);
+    buffer->size += size;
+    return CG_OK;
+}
+
+void byte_buffer_free(byte_buffer *buffer)
+{
+    free(buffer->bytes);
+    buffer->bytes = NULL;
+    buffer->size = buffer->capacity = 0;
+}
+
+cg_status image_check_dimensions(unsigned long width, unsigned long height, const char *name,
+                                 cg_error *err)
+{
+    if (width == 0 || height == 0)
+        return cg_error_set(err, CG_EFORMAT, "%s: image has zero width or height", name);
+    if (width > CG_IMAGE_MAX_SIDE || height > CG_IMAGE_MAX_SIDE
+        || (size_t)width * (size_t)height > CG_IMAGE_MAX_PIXELS)
+        return cg_error_set(err, CG_ERANGE,
+                            "%s: %lu x %lu pixels is over cg's limit (%d per side, %zu in all)",
+                            name, width, height, CG_IMAGE_MAX_SIDE, CG_IMAGE_MAX_PIXELS);
+    return CG_OK;
+}
+
+cg_file_format cg_file_format_from_path(const char *path)
+{
+    const char *dot = path ? strrchr(path, '.') : NULL;
+    if (!dot)
+        return CG_FILE_UNKNOWN;
+    if (strcasecmp(dot, ".png") == 0)
+        return CG_FILE_PNG;
+    if (strcasecmp(dot, ".ppm") == 0)
+        return CG_FILE_PPM;
+    if (strcasecmp(dot, ".pgm") == 0)
+        return CG_FILE_PGM;
+    return CG_FILE_UNKNOWN;
+}
+
+cg_status cg_image_read_memory(const void *bytes, size_t size, const char *name, cg_image **out,
+                               cg_error *err)
+{
+    static const unsigned char png_magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    const unsigned char *b = bytes;
+    if (!out)
+        return cg_error_set(err, CG_EINVAL, "%s: no output image", name);
+    *out = NULL;
+    if (!b || size == 0)
+        return cg_error_set(err, CG_EFORMAT, "%s: file is empty", name);
+    if (size >= 8 && memcmp(b, png_magic, 8) == 0)
+        return png_decode(b, size, name, out, err);
+    if (size >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '7')
+        return pnm_decode(b, size, name, out, err);
+    return cg_error_set(err, CG_EFORMAT,
+                        "%s: unknown image format (expected PNG, or PPM/PGM starting with P2, P3, "
+                        "P5 or P6)",
+                        name);
+}
+
+cg_status cg_image_read(const char *path, cg_image **out, cg_error *err)
+{
+    if (!path || !out)
+        return cg_error_set(err, CG_EINVAL, "image read: no path or output given");
+    *out = NULL;
+    FILE *file = fopen(path, "rb");
+    if (!file)
+        return cg_error_set(err, CG_EIO, "%s: cannot open: %s", path, strerror(errno));
+    byte_buffer contents = {0};
+    unsigned char chunk[65536];
+    size_t got;
+    cg_status status = CG_OK;
+    while ((got = fread(chunk, 1, sizeof chunk, file)) > 0)
+        if ((status = byte_buffer_append(&contents, chunk, got)) != CG_OK)
+            break;
+    int failed = ferror(file);
+    fclose(file);
+    if (status != CG_OK) {
+        byte_buffer_free(&contents);
+        return cg_error_set(err, status, "%s: file too large to read into memory", path);
+    }
+    if (failed) {
+        byte_buffer_free(&contents);
+        return cg_error_set(err, CG_EIO, "%s: read error", path);
+    }
+    status = cg_image_read_memory(contents.bytes, contents.size, path, out, err);
+    byte_buffer_free(&contents);
+    return status;
+}
+
+/* Writes bytes to a temporary file beside path, then renames it over path. */
+static cg_status replace_file(const char *path, const byte_buffer *contents, cg_error *err)
+{
+    size_t length = strlen(path);
+    char *temporary = malloc(length + 16);
+    if (!temporary)
+        return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
+    memcpy(temporary, path, length);
+    memcpy(temporary + length, ".tmp-XXXXXX", 12);
+    int fd = mkstemp(temporary);
+    if (fd < 0) {
+        cg_status s = cg_error_set(err, CG_EIO, "%s: cannot create a temporary file: %s", path,
+                                   strerror(errno));
+        free(temporary);
+        return s;
+    }
+    FILE *file = fdopen(fd, "wb");
+    int ok = file != NULL;
+    if (ok)
+        ok = fwrite(contents->bytes, 1, contents->size, file) == contents->size;
+    if (file)
+        ok = (fclose(file) == 0) && ok;
+    else
+        close(fd);
+    if (ok)
+        ok = rename(temporary, path) == 0;
+    cg_status status = CG_OK;
+    if (!ok) {
+        status = cg_error_set(err, CG_EIO, "%s: cannot write: %s", path, strerror(errno));
+        remove(temporary);
+    }
+    free(temporary);
+    return status;
+}
+
+cg_status cg_image_write(const cg_image *image, const char *path, cg_file_format format,
+                         cg_error *err)
+{
+    if (!image || !path)
+        return cg_error_set(err, CG_EINVAL, "image write: no image or path given");
+    if (format == CG_FILE_UNKNOWN)
+        format = cg_file_format_from_path(path);
+    if (format == CG_FILE_UNKNOWN)
+        return cg_error_set(err, CG_EINVAL,
+                            "%s: unknown output format (expected .png, .ppm or .pgm)", path);
+    cg_image *encoded = NULL;
+    const cg_image *source = image;
+    if (image->format != CG_PIXEL_RGBA8) {
+        cg_status s = cg_image_convert(image, CG_PIXEL_RGBA8, &encoded);
+        if (s != CG_OK)
+            return cg_error_set(err, s, "%s: cannot convert the image for writing", path);
+        source = encoded;
+    }
+    byte_buffer contents = {0};
+    cg_status status = format == CG_FILE_PNG ? png_encode(source, &contents, err)
+                                             : pnm_encode(source, format, &contents, err);
+    if (status == CG_OK)
+        status = replace_file(path, &contents, err);
+    byte_buffer_free(&contents);
+    cg_image_free(encoded);
+    return status;
+}

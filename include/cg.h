@@ -7,5 +7,6 @@
 #include "cg/color.h"
 #include "cg/xform.h"
 #include "cg/draw.h"
+#include "cg/mesh.h"
 
 #endif

@@ -119,6 +119,38 @@ cg_mat4 cg_viewport(int width, int height);
  * coordinates are meaningless. */
 cg_vec3 cg_project_point(cg_mat4 transform, cg_vec3 point, int *visible);
 
+
+/* ---- camera ---------------------------------------------------------------
+ * One camera model for the rasterizer and the ray tracer, so that the same
+ * scene renders with either. */
+
+typedef struct cg_camera {
+    cg_vec3 eye, target, up;
+    int orthographic;   /* 0: perspective with fovy; 1: parallel with ortho_height */
+    double fovy;        /* vertical field of view in radians, in (0, pi) */
+    double ortho_height; /* height of the visible region for parallel views */
+    double near, far;   /* clip distances along the viewing direction, 0 < near < far */
+} cg_camera;
+
+/* A perspective camera looking from eye at target with +y up, 45 deg
+ * vertical field of view; near and far left for cg_camera_frame to set. */
+cg_camera cg_camera_default(void);
+/* Places the camera so the box [lo, hi] fills the view: keeps the viewing
+ * direction (target - eye) and field of view, moves the eye back until the
+ * box's bounding sphere fits, and sets near and far to enclose it.
+ * CG_EINVAL when the box is empty or not finite. */
+cg_status cg_camera_frame(cg_camera *camera, cg_vec3 lo, cg_vec3 hi, double aspect);
+/* View matrix (world to camera space). */
+cg_status cg_camera_view(const cg_camera *camera, cg_mat4 *out);
+/* Projection matrix for the given aspect ratio (width / height). */
+cg_status cg_camera_projection(const cg_camera *camera, double aspect, cg_mat4 *out);
+/* The primary ray through the image point (x, y) in continuous pixel
+ * coordinates of a width x height image (pixel centres at +0.5): origin and
+ * unit direction in world space, consistent with view, projection and
+ * viewport above.  For parallel cameras the origin lies on the near plane. */
+cg_status cg_camera_ray(const cg_camera *camera, int width, int height, double x, double y,
+                        cg_vec3 *origin, cg_vec3 *direction);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,111 @@
+/* The indexed mesh: allocation, validation, bounds. */
+#include "cg/mesh.h"
+
+#include <stdlib.h>
+
+static void *zeroed(size_t count, size_t size)
+{
+    return calloc(count ? count : 1, size);
+}
+
+cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count,
+                         size_t index_count, unsigned flags)
+{
+    if (!out)
+        return CG_EINVAL;
+    *out = NULL;
+    if (vertex_count > CG_MESH_MAX_VERTICES || index_count > CG_MESH_MAX_INDICES
+        || face_count > CG_MESH_MAX_INDICES)
+        return CG_ERANGE;
+    cg_mesh *m = calloc(1, sizeof *m);
+    if (!m)
+        return CG_ENOMEM;
+    m->vertex_count = vertex_count;
+    m->face_count = face_count;
+    m->positions = zeroed(vertex_count, sizeof *m->positions);
+    m->face_offsets = zeroed(face_count + 1, sizeof *m->face_offsets);
+    m->face_indices = zeroed(index_count, sizeof *m->face_indices);
+    int failed = !m->positions || !m->face_offsets || !m->face_indices;
+    if (flags & CG_MESH_NORMALS)
+        failed |= !(m->normals = zeroed(vertex_count, sizeof *m->normals));
+    if (flags & CG_MESH_TEXCOORDS)
+        failed |= !(m->texcoords = zeroed(vertex_count, sizeof *m->texcoords));
+    if (flags & CG_MESH_COLORS)
+        failed |= !(m->colors = zeroed(vertex_count, sizeof *m->colors));
+    if (flags & CG_MESH_FACE_COLORS)
+        failed |= !(m->face_colors = zeroed(face_count, sizeof *m->face_colors));
+    if (failed) {
+        cg_mesh_free(m);
+        return CG_ENOMEM;
+    }
+    *out = m;
+    return CG_OK;
+}
+
+void cg_mesh_free(cg_mesh *mesh)
+{
+    if (!mesh)
+        return;
+    free(mesh->positions);
+    free(mesh->normals);
+    free(mesh->texcoords);
+    free(mesh->colors);
+    free(mesh->face_offsets);
+    free(mesh->face_indices);
+    free(mesh->face_colors);
+    free(mesh);
+}
+
+cg_status cg_mesh_validate(const cg_mesh *mesh, cg_error *err)
+{
+    if (!mesh)
+        return cg_error_set(err, CG_EINVAL, "mesh: none given");
+    if (mesh->face_offsets[0] != 0)
+        return cg_error_set(err, CG_EFORMAT, "mesh: face offsets must start at 0");
+    for (size_t f = 0; f < mesh->face_count; f++) {
+        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
+        if (end < begin || end - begin < 3)
+            return cg_error_set(err, CG_EFORMAT, "mesh: face %zu has %ld corners, expected 3 or more",
+                                f, (long)end - (long)begin);
+        for (uint32_t k = begin; k < end; k++)
+            if (mesh->face_indices[k] >= mesh->vertex_count)
+                return cg_error_set(err, CG_EFORMAT,
+                                    "mesh: face %zu refers to vertex %u, but there are %zu", f,
+                                    mesh->face_indices[k], mesh->vertex_count);
+    }
+    return CG_OK;
+}
+
+cg_status cg_mesh_bounds(const cg_mesh *mesh, cg_vec3 *lo, cg_vec3 *hi)
+{
+    int any = 0;
+    cg_vec3 a = {0, 0, 0}, b = {0, 0, 0};
+    for (size_t i = 0; mesh && i < mesh->vertex_count; i++) {
+        cg_vec3 p = mesh->positions[i];
+        if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(p.z))
+            continue;
+        if (!any) {
+            a = b = p;
+            any = 1;
+            continue;
+        }
+        a = cg_vec3_make(fmin(a.x, p.x), fmin(a.y, p.y), fmin(a.z, p.z));
+        b = cg_vec3_make(fmax(b.x, p.x), fmax(b.y, p.y), fmax(b.z, p.z));
+    }
+    if (!any)
+        return CG_EEMPTY;
+    *lo = a;
+    *hi = b;
+    return CG_OK;
+}
+
+size_t cg_mesh_triangle_count(const cg_mesh *mesh)
+{
+    size_t n = 0;
+    for (size_t f = 0; f < mesh->face_count; f++) {
+        uint32_t size = cg_mesh_face_size(mesh, f);
+        if (size >= 3)
+            n += size - 2;
+    }
+    return n;
+}

@@ -528,9 +528,15 @@ static cg_status unify_indices(obj_reader *r)
         b->face_indices[k] = table[j].vertex;
     }
     for (size_t v = 0; s == CG_OK && v < positions; v++) {
-        if (b->texcoords && first_tex[v] != OBJ_NONE && first_tex[v])
+        if (first_tex[v] == OBJ_NONE) {
+            /* a position no face uses: when the file lists one texture coordinate
+             * (normal) per position, the one of the same number is its own */
+            first_tex[v] = r->tex_count == positions ? (uint32_t)v + 1 : 0;
+            first_nor[v] = r->nor_count == positions ? (uint32_t)v + 1 : 0;
+        }
+        if (b->texcoords && first_tex[v])
             b->texcoords[v] = r->tex[first_tex[v] - 1];
-        if (b->normals && first_nor[v] != OBJ_NONE && first_nor[v])
+        if (b->normals && first_nor[v])
             b->normals[v] = r->nor[first_nor[v] - 1];
     }
     free(first_tex);

@@ -3,11 +3,22 @@
  * parse_double reads decimal numbers by hand: the digits go into a 64-bit
  * integer m and the decimal exponent into e.  When m < 2^53 and |e| <= 22,
  * both m and 10^|e| are exact doubles, so one IEEE multiplication or
- * division gives the correctly rounded value (Clinger's fast path).  Any
- * other form (more than 19 significant digits, large exponents, inf, nan,
- * hexadecimal) goes through strtod, which rounds correctly too. */
+ * division gives the correctly rounded value (Clinger's fast path).
+ *
+ * Up to 19 digits (m < 2^64) with |e| <= 27 the same holds one size up
+ * where long double has a 64-bit significand (x87): m and 10^|e| are exact
+ * there, so r = m * 10^e or m / 10^-e is the exact value rounded once to 64
+ * bits, within half a unit of its last bit.  Rounding r to double then gives
+ * the correctly rounded double unless r lies on (or next to) a point halfway
+ * between two doubles, which shows in r's 11 low significand bits; those
+ * rare cases, and r with all 11 low bits zero (also what an emulator that
+ * computes long double in double precision gives), go to strtod.
+ *
+ * Any other form (more than 19 significant digits, larger exponents, inf,
+ * nan) goes through strtod, which rounds correctly too. */
 #include "internal.h"
 
+#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -39,6 +50,33 @@ static int parse_double_slow(const char **p, const char *end, double *out)
     *out = value;
     *p = q;
     return 1;
+}
+
+/* m * 10^e rounded correctly to double through long double, when that is
+ * sure (see the top of the file); 0 when the caller must use strtod. */
+static int wide_path(uint64_t m, int e, double *out)
+{
+#if LDBL_MANT_DIG == 64
+    /* exact: 10^27 = 5^27 2^27 and 5^27 < 2^64 */
+    static const long double powers[28] = {
+        1e0L,  1e1L,  1e2L,  1e3L,  1e4L,  1e5L,  1e6L,  1e7L,  1e8L,  1e9L,
+        1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
+        1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
+    long double r = (long double)m; /* exact: m < 2^64 */
+    r = e < 0 ? r / powers[-e] : r * powers[e];
+    uint64_t significand;
+    memcpy(&significand, &r, sizeof significand); /* x87: the 64 low bytes */
+    unsigned low = (unsigned)(significand & 0x7ff);
+    if (low == 0 || low == 0x3ff || low == 0x400 || low == 0x401)
+        return 0;
+    *out = (double)r;
+    return 1;
+#else
+    (void)m;
+    (void)e;
+    (void)out;
+    return 0;
+#endif
 }
 
 int parse_double(const char **p, const char *end, double *out)
@@ -105,6 +143,8 @@ int parse_double(const char **p, const char *end, double *out)
     } else if (!inexact && mantissa <= (UINT64_C(1) << 53) && exponent >= -22 && exponent <= 22) {
         value = (double)mantissa;
         value = exponent < 0 ? value / powers_of_ten[-exponent] : value * powers_of_ten[exponent];
+    } else if (!inexact && exponent >= -27 && exponent <= 27 && wide_path(mantissa, exponent, &value)) {
+        /* value set */
     } else {
         return parse_double_slow(p, end, out);
     }

@@ -65,8 +65,9 @@ cg_status cg_draw_circle(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
  * the rightmost pixel of cg_draw_circle's circle on that row. */
 cg_status cg_draw_disc(cg_image *image, int cx, int cy, int r, cg_rgba8 color);
 
-/* The midpoint ellipse with axis-aligned radii rx, ry >= 0 (two regions,
- * 4-way symmetry); each pixel drawn once.  Radii up to 2^24. */
+/* The midpoint ellipse with axis-aligned radii rx, ry >= 0 (two regions cut
+ * where the slope is -1, 4-way symmetry); each pixel drawn once.  Equal radii
+ * give cg_draw_circle's circle.  Radii up to 2^30 (CG_ERANGE beyond). */
 cg_status cg_draw_ellipse(cg_image *image, int cx, int cy, int rx, int ry, cg_rgba8 color);
 
 /* The pixels of cg_draw_circle / cg_draw_ellipse whose direction from the

@@ -110,10 +110,13 @@ cg_status cg_draw_hermite(cg_image *image, cg_vec2 p1, cg_vec2 p4, cg_vec2 r1, c
 static cg_status draw_spline(cg_image *image, cg_curve_basis basis, const cg_vec2 *control,
                              int count, double tolerance, cg_draw_mode mode, cg_rgba8 color)
 {
-    if (!control || count < 4 || count > (1 << 20))
+    if (!control || count < 4 || count > (1 << 20) || !image)
         return CG_EINVAL;
-    if (!image)
-        return CG_EINVAL;
+    int same = 1;
+    for (int i = 1; i < count; i++)
+        same &= control[i].x == control[0].x && control[i].y == control[0].y;
+    if (same && isfinite(control[0].x) && isfinite(control[0].y))
+        return CG_EEMPTY;
     cg_vec2 *beziers = malloc((size_t)(count - 3) * 4 * sizeof *beziers);
     if (!beziers)
         return CG_ENOMEM;

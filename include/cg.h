@@ -8,6 +8,7 @@
 #include "cg/light.h"
 #include "cg/xform.h"
 #include "cg/draw.h"
+#include "cg/curve.h"
 #include "cg/mesh.h"
 
 #endif

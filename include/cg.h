@@ -7,6 +7,7 @@
 #include "cg/color.h"
 #include "cg/xform.h"
 #include "cg/draw.h"
+#include "cg/fill.h"
 #include "cg/mesh.h"
 
 #endif

@@ -69,8 +69,13 @@ cg_status fill_aa_add_line(struct cg_rasterizer *r, cg_vec2 a, cg_vec2 b)
         x1 = clamp_between(x1 + (yc - y1) * (x0 - x1) / (y0 - y1), x0, x1);
         y1 = yc;
     }
-    if (x0 >= w && x1 >= w)
+    if (x0 >= w && x1 >= w) {
+        /* Dropped, but the coverage of lines left of it now reaches the
+         * right edge of the image. */
+        if (w > r->max_x)
+            r->max_x = w;
         return CG_OK;
+    }
     if (x0 <= 0 && x1 <= 0)
         return push_line(r, 0, y0, 0, y1);
     if (x0 < 0 || x1 < 0) {

@@ -42,20 +42,29 @@ static cg_status half_turn(stroker *s, cg_vec2 v, cg_vec2 n)
     return fill_arc_points(s->out, v, s->half, a0, a0 - CG_PI, s->tolerance);
 }
 
-/* The left side at vertex v, arriving along u0 and leaving along u1. */
-static cg_status join(stroker *s, cg_vec2 v, cg_vec2 u0, cg_vec2 u1)
+/* The left side at vertex v, arriving along u0 from a segment of length
+ * len0 and leaving along u1 on one of length len1. */
+static cg_status join(stroker *s, cg_vec2 v, cg_vec2 u0, cg_vec2 u1, double len0, double len1)
 {
     cg_vec2 n0 = normal(s, u0), n1 = normal(s, u1);
     double cross = cg_vec2_cross(u0, u1), dot = cg_vec2_dot(u0, u1);
+    if (cross > 0) { /* turning left: the left side is inside */
+        /* Where the two offset lines cross, h tan(turn / 2) back from v
+         * along both segments: the exact inner corner when both segments
+         * are that long; otherwise go round through v itself. */
+        double back = s->half * cross / (1 + dot);
+        if (back <= len0 && back <= len1)
+            return add(s, cg_vec2_add(v, cg_vec2_scale(cg_vec2_add(n0, n1), 1 / (1 + dot))));
+        cg_status status = add(s, cg_vec2_add(v, n0));
+        if (status == CG_OK)
+            status = add(s, v);
+        return status != CG_OK ? status : add(s, cg_vec2_add(v, n1));
+    }
     cg_status status = add(s, cg_vec2_add(v, n0));
     if (status != CG_OK)
         return status;
     if (cross == 0 && dot > 0)
         return CG_OK; /* straight on */
-    if (cross > 0) {  /* turning left: the left side is inside */
-        status = add(s, v);
-        return status != CG_OK ? status : add(s, cg_vec2_add(v, n1));
-    }
     switch (s->style->join) {
     case CG_JOIN_MITER:
         /* miter length / width = 1 / cos(turn / 2) */
@@ -98,7 +107,9 @@ static cg_status side(stroker *s, const cg_vec2 *p, size_t m, int backward)
 #define AT(i) (backward ? p[m - 1 - (i)] : p[(i)])
     cg_status status = add(s, cg_vec2_add(AT(0), normal(s, unit(AT(0), AT(1)))));
     for (size_t i = 1; status == CG_OK && i + 1 < m; i++)
-        status = join(s, AT(i), unit(AT(i - 1), AT(i)), unit(AT(i), AT(i + 1)));
+        status = join(s, AT(i), unit(AT(i - 1), AT(i)), unit(AT(i), AT(i + 1)),
+                      cg_vec2_length(cg_vec2_sub(AT(i), AT(i - 1))),
+                      cg_vec2_length(cg_vec2_sub(AT(i + 1), AT(i))));
     if (status == CG_OK)
         status = add(s, cg_vec2_add(AT(m - 1), normal(s, unit(AT(m - 2), AT(m - 1)))));
     if (status == CG_OK)
@@ -151,7 +162,9 @@ static cg_status stroke_closed(stroker *s, const cg_vec2 *p, size_t m)
             size_t i = backward ? m - 1 - k : k;
             size_t prev = backward ? (i + 1) % m : (i + m - 1) % m;
             size_t next = backward ? (i + m - 1) % m : (i + 1) % m;
-            status = join(s, p[i], unit(p[prev], p[i]), unit(p[i], p[next]));
+            status = join(s, p[i], unit(p[prev], p[i]), unit(p[i], p[next]),
+                          cg_vec2_length(cg_vec2_sub(p[i], p[prev])),
+                          cg_vec2_length(cg_vec2_sub(p[next], p[i])));
         }
         fill_polylines_close(s->out);
         if (status != CG_OK)

@@ -9,6 +9,7 @@
 #include "cg/xform.h"
 #include "cg/draw.h"
 #include "cg/curve.h"
+#include "cg/fill.h"
 #include "cg/mesh.h"
 
 #endif

@@ -263,6 +263,67 @@ static void sutherland_hodgman(void)
     }
 }
 
+/* ---- Weiler-Atherton ------------------------------------------------------ */
+
+static void weiler_atherton(void)
+{
+    check_rng rng = {8080};
+    long split = 0;
+    for (int it = 0; it < 3000; it++) {
+        cg_vec2 sub[40], win[40];
+        int n = (int)check_rng_int(&rng, 3, 40), m = (int)check_rng_int(&rng, 3, 40);
+        if (it % 4 == 3) {
+            /* on a coarse grid: shared vertices and edges */
+            double x0 = (double)check_rng_int(&rng, 0, 3), y0 = (double)check_rng_int(&rng, 0, 3);
+            double x1 = x0 + (double)check_rng_int(&rng, 1, 3), y1 = y0 + (double)check_rng_int(&rng, 1, 3);
+            cg_vec2 r1[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+            memcpy(sub, r1, sizeof r1);
+            n = 4;
+            x0 = (double)check_rng_int(&rng, 0, 3);
+            y0 = (double)check_rng_int(&rng, 0, 3);
+            x1 = x0 + (double)check_rng_int(&rng, 1, 3);
+            y1 = y0 + (double)check_rng_int(&rng, 1, 3);
+            cg_vec2 r2[4] = {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}}; /* clockwise */
+            memcpy(win, r2, sizeof r2);
+            m = 4;
+        } else {
+            star(&rng, sub, n, 0, 0, 0.2, 1.5);
+            star(&rng, win, m, check_rng_range(&rng, -0.8, 0.8), check_rng_range(&rng, -0.8, 0.8), 0.2, 1.5);
+            if (it % 2)
+                for (int i = 0; i < m / 2; i++) {
+                    cg_vec2 t = win[i];
+                    win[i] = win[m - 1 - i];
+                    win[m - 1 - i] = t;
+                }
+        }
+        cg_polygon_set wa = {0}, s = {0}, w = {0}, r = {0};
+        CHECK(cg_clip_weiler_atherton(sub, (size_t)n, win, (size_t)m, &wa) == CG_OK);
+        cg_polygon_set_add_ring(&s, sub, (size_t)n, 1);
+        cg_polygon_set_add_ring(&w, win, (size_t)m, 1);
+        CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &s, CG_CLIP_NON_ZERO, &w, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK_MSG(fabs(cg_polygon_set_area(&wa) - cg_polygon_set_area(&r)) <= 1e-6,
+                  "round %d: Weiler-Atherton %.9f, boolean %.9f", it, cg_polygon_set_area(&wa),
+                  cg_polygon_set_area(&r));
+        /* as many pieces as the boolean operation finds */
+        CHECK_MSG(wa.polygon_count == r.polygon_count || it % 4 == 3, "round %d: %zu pieces, boolean %zu", it,
+                  wa.polygon_count, r.polygon_count);
+        split += wa.polygon_count > 1;
+        cg_polygon_set_clear(&wa);
+        cg_polygon_set_clear(&s);
+        cg_polygon_set_clear(&w);
+        cg_polygon_set_clear(&r);
+    }
+    CHECK(split > 100);
+    printf("Weiler-Atherton: %ld results split into several polygons\n", split);
+    cg_polygon_set r = {0};
+    cg_vec2 tri[3] = {{0, 0}, {1, 0}, {0, 1}}, nanp[3] = {{0, 0}, {NAN, 0}, {0, 1}};
+    CHECK(cg_clip_weiler_atherton(tri, 2, tri, 3, &r) == CG_EINVAL);
+    CHECK(cg_clip_weiler_atherton(tri, 3, nanp, 3, &r) == CG_EINVAL);
+    CHECK(cg_clip_weiler_atherton(tri, 3, tri, 3, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set_area(&r), 0.5, 1e-8);
+    cg_polygon_set_clear(&r);
+}
+
 /* ---- mesh against a box --------------------------------------------------- */
 
 static cg_mesh *sphere(int slices, int stacks)
@@ -420,6 +481,7 @@ int main(void)
     lines();
     lines3();
     sutherland_hodgman();
+    weiler_atherton();
     mesh_box();
     frustum();
     return check_finish();

@@ -164,15 +164,19 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
 /* ---- Weiler-Atherton (11.2.2) ------------------------------------------ */
 
 /* Clips the simple polygon subject[0..n) by the simple (possibly concave)
- * polygon window[0..m), either orientation, by walking the two boundaries
- * through their entry and exit intersections.  The visible parts are
- * appended to result (cleared first) as separate polygons (each a single
- * counter-clockwise ring; a part that contains a hole of the window keeps
- * it as a clockwise ring).  Coordinates are snapped to the boolean grid
- * (scale as for cg_clip_boolean), so degenerate contacts are resolved
- * consistently.  CG_EINVAL for fewer than 3 points or non-finite input. */
+ * polygon window[0..m), either orientation, by walking the two boundaries:
+ * along the subject from an entering intersection to the next (exiting)
+ * one, then along the window to the next entering one, until the loop
+ * closes.  Every loop is a separate polygon of result (cleared first):
+ * counter-clockwise outer contours, and clockwise holes where the two
+ * windows interlock around a hole.  Degenerate contacts (a vertex on the
+ * other's edge, overlapping edges) are avoided by moving the window by 1e-9
+ * of the drawing's extent, so results are exact to about that.
+ * CG_EINVAL for fewer than 3 points or non-finite input; the polygons must
+ * be simple (self-intersecting input gives a meaningless result, use
+ * cg_clip_boolean for that). */
 cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
-                                  size_t m, double scale, cg_polygon_set *result);
+                                  size_t m, cg_polygon_set *result);
 
 /* ---- 3D (11.3) ----------------------------------------------------------- */
 

@@ -11,5 +11,6 @@
 #include "cg/curve.h"
 #include "cg/fill.h"
 #include "cg/mesh.h"
+#include "cg/clip.h"
 
 #endif

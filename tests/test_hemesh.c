@@ -97,6 +97,20 @@ static void check_traversals(const char *name, const cg_mesh *mesh, const cg_hem
         qsort(c, n3, sizeof *c, cmp_u32);
         CHECK_MSG(memcmp(c, fc, nf * sizeof *c) == 0, "%s: vertex %zu: wrong faces", name, v);
     }
+    /* the umbrella average is the mean of the neighbours */
+    cg_vec3 *avg = malloc((V ? V : 1) * sizeof *avg);
+    CHECK(cg_hemesh_neighbor_average(h, avg) == CG_OK);
+    for (size_t v = 0; v < V; v++) {
+        size_t n = cg_hemesh_vertex_neighbors(h, (uint32_t)v, 1, a, 256);
+        cg_vec3 mean = h->positions[v];
+        if (n) {
+            mean = cg_vec3_make(0, 0, 0);
+            for (size_t i = 0; i < n; i++)
+                mean = cg_vec3_add(mean, cg_vec3_scale(h->positions[a[i]], 1.0 / (double)n));
+        }
+        CHECK(cg_vec3_length(cg_vec3_sub(mean, avg[v])) < 1e-12);
+    }
+    free(avg);
     /* face loops equal the input faces (the build keeps face numbers) */
     for (size_t f = 0; f < mesh->face_count; f++) {
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];

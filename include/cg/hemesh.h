@@ -188,6 +188,11 @@ size_t cg_hemesh_vertex_neighbors(const cg_hemesh *m, uint32_t v, int direction,
 /* Faces around v (the boundary gap skipped). */
 size_t cg_hemesh_vertex_faces(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
                               size_t capacity);
+/* The average of the neighbours of every vertex (the umbrella operator of
+ * Laplacian smoothing): one one-ring traversal of every vertex, O(E).  out
+ * has vertex_count entries; isolated and deleted vertices get their own
+ * position. */
+cg_status cg_hemesh_neighbor_average(const cg_hemesh *m, cg_vec3 *out);
 /* Number of edges at v (0 for isolated or deleted vertices). */
 size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v);
 /* Number of sides of face f. */

@@ -127,6 +127,36 @@ size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v)
     return around(m, v, 1, 0, NULL, 0);
 }
 
+cg_status cg_hemesh_neighbor_average(const cg_hemesh *m, cg_vec3 *out)
+{
+    if (!m || !out)
+        return CG_EINVAL;
+    const cg_hemesh_halfedge *he = m->halfedges;
+    const cg_vec3 *p = m->positions;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        uint32_t h0 = m->vertex_halfedge[v];
+        if (h0 >= CG_HEMESH_DELETED) {
+            out[v] = p[v];
+            continue;
+        }
+        /* clockwise: next(twin(h)) reads the pair h, h ^ 1 only */
+        double x = 0, y = 0, z = 0;
+        size_t n = 0;
+        uint32_t h = h0;
+        do {
+            const cg_vec3 *q = &p[he[h ^ 1u].origin];
+            x += q->x;
+            y += q->y;
+            z += q->z;
+            n++;
+            h = he[h ^ 1u].next;
+        } while (h != h0);
+        double s = 1.0 / (double)n;
+        out[v] = cg_vec3_make(x * s, y * s, z * s);
+    }
+    return CG_OK;
+}
+
 /* ---- geometry ------------------------------------------------------------ */
 
 cg_vec3 cg_hemesh_face_newell(const cg_hemesh *m, uint32_t f)

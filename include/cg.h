@@ -12,5 +12,6 @@
 #include "cg/fill.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
+#include "cg/hemesh.h"
 
 #endif

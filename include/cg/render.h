@@ -46,7 +46,10 @@ typedef void (*cg_span_fn)(void *user, int y, int x_begin, int x_end);
  * edge) are reported row by row, top to bottom, through span.  Either
  * orientation; a triangle of zero area after snapping covers nothing.
  * CG_EINVAL for a non-finite vertex or a NULL argument, CG_ERANGE when a
- * side exceeds CG_RASTER_MAX_SIDE.  Vertices outside the grid are fine. */
+ * side exceeds CG_RASTER_MAX_SIDE.  Vertices outside the grid are fine:
+ * within 2^20 pixels of it they are used exactly; beyond, the triangle is
+ * first clipped to that band in double precision (an error of about
+ * |coordinate| * 2^-52 pixels in the clipped edges). */
 cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_fn span,
                              void *user);
 
@@ -54,7 +57,9 @@ cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_
 
 typedef enum cg_render_algorithm {
     CG_RENDER_ZBUFFER = 0, /* z-buffer (5.3), tiled and multithreaded */
-    CG_RENDER_PAINTER = 1  /* depth sort with Newell's overlap tests (5.2) */
+    CG_RENDER_PAINTER = 1, /* depth sort with Newell's overlap tests (5.2) */
+    CG_RENDER_DEPTH_SORT = 2 /* plain depth sort, no overlap tests: shows what the
+                                tests are for (wrong where polygons overlap in depth) */
 } cg_render_algorithm;
 
 typedef enum cg_shading {

@@ -3,6 +3,7 @@
 #define CG_RENDER_INTERNAL_H
 
 #include "cg/render.h"
+#include "cg/light.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -14,17 +15,17 @@
 /* ---- shading: the one place that computes the colour of a point --------- */
 
 typedef struct render_lighting {
-    int count;
-    float direction[CG_RENDER_MAX_LIGHTS][3]; /* unit, toward the light */
-    float intensity[CG_RENDER_MAX_LIGHTS];
-    float ambient, specular, shininess;
+    int count;                  /* lights[0] is the ambient light */
+    cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
+    cg_material material;       /* colour replaced per point */
     int orthographic;
     float eye[3];       /* perspective: viewer position */
     float view_dir[3];  /* orthographic: unit direction toward the viewer */
 } render_lighting;
 
 /* Colour (linear) of a surface point with unit normal n and diffuse colour
- * base, seen from the camera and lit by the lights. */
+ * base, seen from the camera and lit by the lights: the local illumination
+ * model of cg/light.h. */
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3]);
 
@@ -70,8 +71,8 @@ typedef struct screen_vertex {
 void render_project(const clip_vertex *v, int width, int height, int attribute_count,
                     screen_vertex *out);
 
-/* A triangle ready to rasterize: fixed-point vertices, counter-clockwise on
- * screen in a y-up sense (positive area with the edge function below), the
+/* A triangle ready to rasterize: fixed-point vertices ordered clockwise as
+ * seen on the screen (positive edge functions inside), the
  * pixel box it may cover, and the values to interpolate. */
 typedef struct setup_triangle {
     int32_t x[3], y[3];  /* 1/256 pixel */

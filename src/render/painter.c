@@ -317,7 +317,14 @@ cg_status render_painter(render_frame *f)
         push_front(&pt, &list, keys[i].index);
     free(keys);
     size_t splits = 0;
+    int naive = f->o->algorithm == CG_RENDER_DEPTH_SORT;
     while (list >= 0 && status == CG_OK) {
+        if (naive) {
+            int p = list;
+            unlink_node(&pt, &list, p);
+            paint(&pt, p);
+            continue;
+        }
         int p = list, restart = 0;
         for (int q = pt.nodes[p].next; q >= 0; q = pt.nodes[q].next) {
             if (pt.nodes[q].zmax <= pt.nodes[p].zmin) {

@@ -267,8 +267,8 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
                 const screen_vertex *p = &s[k], *q = &s[(k + 1) % count];
                 area += (q->x - p->x) * (q->y + p->y);
             }
-            /* area < 0 for polygons clockwise on the y-down screen (front). */
-            if (f->cull && area >= 0) {
+            /* area > 0 for polygons the camera sees counter-clockwise (front). */
+            if (f->cull && area <= 0) {
                 c->culled++;
                 continue;
             }
@@ -457,9 +457,10 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
 {
     const cg_render_options *o = f->o;
     render_lighting *l = &f->lighting;
-    l->ambient = (float)o->ambient;
-    l->specular = (float)o->specular;
-    l->shininess = (float)o->shininess;
+    /* White lights; ka, kd = 1 and ks of the options; Blinn-Phong. */
+    l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular,
+                                   o->shininess);
+    l->material.specular = CG_SPECULAR_BLINN;
     l->orthographic = camera->orthographic;
     l->eye[0] = (float)camera->eye.x;
     l->eye[1] = (float)camera->eye.y;
@@ -468,6 +469,7 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     l->view_dir[0] = (float)back.x;
     l->view_dir[1] = (float)back.y;
     l->view_dir[2] = (float)back.z;
+    l->lights[0] = cg_light_ambient(cg_vec3_make(1, 1, 1));
     if (o->light_count == 0) {
         /* A key light from the camera's upper left, a little in front. */
         cg_vec3 d = cg_vec3_normalize(cg_vec3_make(-1, 1, 1.5));
@@ -476,22 +478,18 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
         cg_vec3 world = {view->m[0][0] * d.x + view->m[1][0] * d.y + view->m[2][0] * d.z,
                          view->m[0][1] * d.x + view->m[1][1] * d.y + view->m[2][1] * d.z,
                          view->m[0][2] * d.x + view->m[1][2] * d.y + view->m[2][2] * d.z};
-        l->count = 1;
-        world = cg_vec3_normalize(world);
-        l->direction[0][0] = (float)world.x;
-        l->direction[0][1] = (float)world.y;
-        l->direction[0][2] = (float)world.z;
-        l->intensity[0] = 0.85f;
+        l->lights[1] = cg_light_directional(cg_vec3_scale(world, -1), cg_vec3_make(0.85, 0.85, 0.85));
+        l->count = 2;
         return;
     }
-    l->count = o->light_count;
+    /* The options name the direction toward each light; cg_light the way
+     * its light travels. */
     for (int i = 0; i < o->light_count; i++) {
-        cg_vec3 d = cg_vec3_normalize(o->lights[i].direction);
-        l->direction[i][0] = (float)d.x;
-        l->direction[i][1] = (float)d.y;
-        l->direction[i][2] = (float)d.z;
-        l->intensity[i] = (float)o->lights[i].intensity;
+        double k = o->lights[i].intensity;
+        l->lights[i + 1] = cg_light_directional(cg_vec3_scale(o->lights[i].direction, -1),
+                                                cg_vec3_make(k, k, k));
     }
+    l->count = o->light_count + 1;
 }
 
 static void free_chunks(render_frame *f)
@@ -611,7 +609,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     team tm;
     memset(&tm, 0, sizeof tm);
     tm.frame = &f;
-    tm.painter = o->algorithm == CG_RENDER_PAINTER;
+    tm.painter = o->algorithm != CG_RENDER_ZBUFFER;
     atomic_init(&tm.next_tile, 0);
     atomic_init(&tm.tiles_done, 0);
     pthread_mutex_init(&tm.lock, NULL);

@@ -19,12 +19,15 @@ void render_project(const clip_vertex *v, int width, int height, int attribute_c
         out->a[i] = v->a[i];
 }
 
-/* Rounds to the 1/256 grid and clamps to a guard band one pixel wider than
- * the image (clipped vertices lie on its border up to rounding). */
+/* Vertices within this many pixels around the image are rasterized exactly;
+ * fixed-point values then stay below 2^29 and edge functions within 64 bits. */
+#define GUARD_BAND (1 << 20)
+
+/* Rounds to the 1/256 grid and clamps to the guard band. */
 static int32_t snap(double value, int size)
 {
     double s = floor(value * SUBPIXEL + 0.5);
-    double lo = -SUBPIXEL, hi = ((double)size + 1) * SUBPIXEL;
+    double lo = -(double)GUARD_BAND * SUBPIXEL, hi = ((double)size + GUARD_BAND) * SUBPIXEL;
     if (!(s >= lo))
         s = lo;
     if (s > hi)
@@ -49,13 +52,16 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
         y[k] = snap(v[k]->y, height);
     }
     int64_t area = (int64_t)(x[1] - x[0]) * (y[2] - y[0]) - (int64_t)(y[1] - y[0]) * (x[2] - x[0]);
+    /* The camera sees front faces counter-clockwise; on the y-down screen
+     * that makes this edge function negative.  The rasterizer wants it
+     * positive: front faces are turned around, back faces culled or turned. */
     if (back)
-        *back = area < 0;
+        *back = area > 0;
     if (area == 0)
         return 0;
+    if (area > 0 && cull)
+        return -1;
     if (area < 0) {
-        if (cull)
-            return -1;
         const screen_vertex *t = v[1];
         v[1] = v[2];
         v[2] = t;
@@ -125,10 +131,9 @@ cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_
             return CG_EINVAL;
     if (width == 0 || height == 0)
         return CG_OK;
-    /* Vertices far outside the grid are first clipped (as points of the
-     * plane w = 1) to a band one pixel around it, so that the fixed-point
-     * values stay small; edges shared by two triangles are cut alike. */
-    double hx = 0.5 * width + 1, hy = 0.5 * height + 1;
+    /* Vertices beyond the guard band are first clipped to it (as points of
+     * the plane w = 1); edges shared by two triangles are cut alike. */
+    double hx = 0.5 * width + GUARD_BAND, hy = 0.5 * height + GUARD_BAND;
     clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
     unsigned any = 0;
     for (int k = 0; k < 3; k++) {

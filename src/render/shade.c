@@ -1,49 +1,25 @@
-/* The colour of a surface point: the single place where the renderer
- * evaluates illumination (ambient + Lambert diffuse + Blinn-Phong specular
- * for directional lights), and a fast exact sRGB encoder. */
+/* The colour of a surface point, the one place where the renderer calls the
+ * illumination model (cg/light.h), and a fast exact sRGB encoder. */
 #include "internal.h"
 #include "cg/color.h"
 
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3])
 {
-    float diffuse = lighting->ambient, specular = 0;
-    float view[3];
-    if (lighting->specular > 0) {
-        if (lighting->orthographic) {
-            view[0] = lighting->view_dir[0];
-            view[1] = lighting->view_dir[1];
-            view[2] = lighting->view_dir[2];
-        } else {
-            view[0] = lighting->eye[0] - position[0];
-            view[1] = lighting->eye[1] - position[1];
-            view[2] = lighting->eye[2] - position[2];
-            float length = sqrtf(view[0] * view[0] + view[1] * view[1] + view[2] * view[2]);
-            float inverse = length > 0 ? 1 / length : 0;
-            view[0] *= inverse;
-            view[1] *= inverse;
-            view[2] *= inverse;
-        }
-    }
-    for (int i = 0; i < lighting->count; i++) {
-        const float *l = lighting->direction[i];
-        float lambert = normal[0] * l[0] + normal[1] * l[1] + normal[2] * l[2];
-        if (!(lambert > 0))
-            continue;
-        diffuse += lighting->intensity[i] * lambert;
-        if (lighting->specular > 0) {
-            float h[3] = {l[0] + view[0], l[1] + view[1], l[2] + view[2]};
-            float length = sqrtf(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-            if (length > 0) {
-                float nh = (normal[0] * h[0] + normal[1] * h[1] + normal[2] * h[2]) / length;
-                if (nh > 0)
-                    specular += lighting->intensity[i] * powf(nh, lighting->shininess);
-            }
-        }
-    }
-    specular *= lighting->specular;
-    for (int c = 0; c < 3; c++)
-        out[c] = base[c] * diffuse + specular;
+    cg_vec3 p = {position[0], position[1], position[2]};
+    cg_vec3 n = {normal[0], normal[1], normal[2]};
+    cg_vec3 view;
+    if (lighting->orthographic)
+        view = cg_vec3_make(lighting->view_dir[0], lighting->view_dir[1], lighting->view_dir[2]);
+    else
+        view = cg_vec3_normalize(cg_vec3_make(lighting->eye[0] - p.x, lighting->eye[1] - p.y,
+                                              lighting->eye[2] - p.z));
+    cg_material material = lighting->material;
+    material.color = cg_vec3_make(base[0], base[1], base[2]);
+    cg_vec3 c = cg_light_shade(p, n, view, &material, lighting->lights, (size_t)lighting->count);
+    out[0] = (float)c.x;
+    out[1] = (float)c.y;
+    out[2] = (float)c.z;
 }
 
 #define ENCODER_STEPS 4096

@@ -202,7 +202,7 @@ void cg_render_options_default(cg_render_options *o)
     o->edges = CG_EDGES_NONE;
     o->threads = 1;
     o->background = (cg_rgbaf){0.012f, 0.014f, 0.02f, 1};
-    o->color = (cg_rgbaf){0.8f, 0.8f, 0.8f, 1};
+    o->color = (cg_rgbaf){0.55f, 0.55f, 0.55f, 1};
     o->edge_color = (cg_rgbaf){0.9f, 0.9f, 0.9f, 1};
     o->ambient = 0.15;
     o->specular = 0.25;

@@ -13,5 +13,6 @@
 #include "cg/mesh.h"
 #include "cg/clip.h"
 #include "cg/hemesh.h"
+#include "cg/render.h"
 
 #endif

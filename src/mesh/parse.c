@@ -87,37 +87,23 @@ int parse_double(const char **p, const char *end, double *out)
         negative = *s == '-';
         s++;
     }
+    /* the digits, all of them into m; more than 19 may wrap m, and then the
+     * number goes to strtod */
     uint64_t mantissa = 0;
-    int digits = 0, exponent = 0, any = 0, inexact = 0;
-    while (s < end && (unsigned)(*s - '0') < 10) {
-        unsigned d = (unsigned)(*s - '0');
-        any = 1;
-        if (digits < 19) {
-            mantissa = mantissa * 10 + d;
-            digits += mantissa != 0;
-        } else {
-            exponent++;
-            inexact |= d != 0;
-        }
-        s++;
-    }
+    const char *first = s;
+    while (s < end && (unsigned)(*s - '0') < 10)
+        mantissa = mantissa * 10 + (unsigned)(*s++ - '0');
+    size_t digits = (size_t)(s - first), fraction = 0;
     if (s < end && *s == '.') {
-        s++;
-        while (s < end && (unsigned)(*s - '0') < 10) {
-            unsigned d = (unsigned)(*s - '0');
-            any = 1;
-            if (digits < 19) {
-                mantissa = mantissa * 10 + d;
-                digits += mantissa != 0;
-                exponent--;
-            } else {
-                inexact |= d != 0;
-            }
-            s++;
-        }
+        const char *point = ++s;
+        while (s < end && (unsigned)(*s - '0') < 10)
+            mantissa = mantissa * 10 + (unsigned)(*s++ - '0');
+        fraction = (size_t)(s - point);
+        digits += fraction;
     }
-    if (!any)
-        return parse_double_slow(p, end, out);
+    if (digits == 0)
+        return parse_double_slow(p, end, out); /* inf, nan, or not a number */
+    int exponent = 0;
     if (s < end && (*s == 'e' || *s == 'E')) {
         s++;
         int exponent_negative = 0;
@@ -127,25 +113,26 @@ int parse_double(const char **p, const char *end, double *out)
         }
         if (s >= end || (unsigned)(*s - '0') >= 10)
             return 0;
-        int e = 0;
         while (s < end && (unsigned)(*s - '0') < 10) {
-            if (e < 100000)
-                e = e * 10 + (*s - '0');
+            if (exponent < 100000)
+                exponent = exponent * 10 + (*s - '0');
             s++;
         }
-        exponent += exponent_negative ? -e : e;
+        if (exponent_negative)
+            exponent = -exponent;
     }
     if (!is_delimiter(s, end))
         return 0;
+    if (digits > 19)
+        return parse_double_slow(p, end, out);
+    exponent -= (int)fraction;
     double value;
     if (mantissa == 0) {
         value = 0.0;
-    } else if (!inexact && mantissa <= (UINT64_C(1) << 53) && exponent >= -22 && exponent <= 22) {
+    } else if (mantissa <= (UINT64_C(1) << 53) && exponent >= -22 && exponent <= 22) {
         value = (double)mantissa;
         value = exponent < 0 ? value / powers_of_ten[-exponent] : value * powers_of_ten[exponent];
-    } else if (!inexact && exponent >= -27 && exponent <= 27 && wide_path(mantissa, exponent, &value)) {
-        /* value set */
-    } else {
+    } else if (exponent < -27 || exponent > 27 || !wide_path(mantissa, exponent, &value)) {
         return parse_double_slow(p, end, out);
     }
     *out = negative ? -value : value;
@@ -161,18 +148,13 @@ int parse_int64(const char **p, const char *end, int64_t *out)
         negative = *s == '-';
         s++;
     }
-    if (s >= end || (unsigned)(*s - '0') >= 10)
+    const char *first = s;
+    uint64_t value = 0; /* at most 18 digits: no overflow */
+    while (s < end && (unsigned)(*s - '0') < 10)
+        value = value * 10 + (unsigned)(*s++ - '0');
+    if (s == first || s - first > 18 || !is_delimiter(s, end))
         return 0;
-    int64_t value = 0;
-    while (s < end && (unsigned)(*s - '0') < 10) {
-        if (value > (INT64_MAX - 9) / 10)
-            return 0;
-        value = value * 10 + (*s - '0');
-        s++;
-    }
-    if (!is_delimiter(s, end))
-        return 0;
-    *out = negative ? -value : value;
+    *out = negative ? -(int64_t)value : (int64_t)value;
     *p = s;
     return 1;
 }

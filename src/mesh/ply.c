@@ -362,21 +362,28 @@ static cg_status ascii_fail(ply_reader *r, text_cursor *t, const char *what, uin
 /* Reads one number of the given type, skipping blanks and line ends. */
 static int ascii_value(text_cursor *t, enum ply_type type, double *value)
 {
-    while (t->p < t->end && is_space(*t->p)) {
-        if (is_line_end(*t->p))
-            text_next_line(t);
-        else
-            t->p++;
+    const char *p = t->p, *end = t->end;
+    while (p < end && is_space(*p)) {
+        if (*p == '\n' || (*p == '\r' && (p + 1 == end || p[1] != '\n')))
+            t->line++;
+        p++;
     }
-    if (t->p >= t->end || !parse_double(&t->p, t->end, value))
+    t->p = p;
+    if (p >= end)
         return 0;
+    double lo, hi;
     if (type < PLY_FLOAT32) {
-        double lo, hi;
         type_range(type, &lo, &hi);
-        if (!valid_integer(type, *value) || *value < lo || *value > hi)
-            return 0;
+        int64_t i;
+        if (parse_int64(&t->p, end, &i)) {
+            *value = (double)i;
+            return *value >= lo && *value <= hi;
+        }
     }
-    return 1;
+    if (!parse_double(&t->p, end, value))
+        return 0;
+    /* an integer property written as "3.0" is still a whole number */
+    return type >= PLY_FLOAT32 || (valid_integer(type, *value) && *value >= lo && *value <= hi);
 }
 
 static const char *kind_name(const ply_element *e)

@@ -407,8 +407,12 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                                     "%s: the face element has no vertex_indices list", r->name);
             continue; /* items without properties take no text */
         }
-        /* each item takes at least 2 bytes a property ("0 "): reserve no more */
-        size_t room = (size_t)(t.end - t.p) / (2 * (e->property_count ? e->property_count : 1));
+        /* each item takes at least 2 bytes a value ("0 "), a face's corner list
+         * at least 4 values: reserve no more than the text left can hold */
+        size_t least = 2 * e->property_count;
+        for (size_t k = 0; k < e->property_count; k++)
+            least += props[k].target == T_CORNERS ? 6 : 0;
+        size_t room = (size_t)(t.end - t.p) / least;
         size_t guess = e->count < room ? (size_t)e->count : room;
         if (e->kind == E_VERTEX && builder_reserve_vertices(&r->b, guess) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
@@ -558,7 +562,13 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
             at += (size_t)e->count * fixed;
             continue;
         }
-        size_t guess = fixed ? (size_t)e->count : 0;
+        /* room for what the bytes left can hold: a face's list has 3 or more indices */
+        size_t least = fixed;
+        for (size_t k = 0; k < e->property_count; k++)
+            least += props[k].target == T_CORNERS ? 3 * type_size[props[k].type] : 0;
+        size_t guess = least && e->count < (size - at) / least ? (size_t)e->count
+                       : least                                 ? (size - at) / least
+                                                               : 0;
         if (e->kind == E_VERTEX && builder_reserve_vertices(&r->b, guess) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
         if (e->kind == E_FACE && builder_reserve_faces(&r->b, guess) != CG_OK)

@@ -127,7 +127,8 @@ typedef struct cg_line_step {
 
 /* Calls step(user, &s) for every pixel of the line, in drawing order, and
  * fills the octant description: *dx, *dy (first-octant values), *de, *dne.
- * Any out-pointer may be NULL.  A non-zero callback result stops the walk. */
+ * Any out-pointer may be NULL, and step too (only the description is
+ * filled then).  A non-zero callback result stops the walk. */
 cg_status cg_line_trace(int x0, int y0, int x1, int y1,
                         int (*step)(void *user, const cg_line_step *s), void *user,
                         long long *dx, long long *dy, long long *de, long long *dne);

@@ -184,11 +184,11 @@ static char *read_all(const char *path, size_t *size)
     return text;
 }
 
-/* A word starting with '#' is a colour when '#' is followed by 3, 4, 6 or 8
- * hexadecimal digits; otherwise it starts a comment. */
+/* A word of '#' and one or more hexadecimal digits is a colour (checked
+ * later by the command); any other word starting with '#' starts a comment. */
 static int is_hex_colour(const char *word, size_t length)
 {
-    if (length != 4 && length != 5 && length != 7 && length != 9)
+    if (length < 2)
         return 0;
     for (size_t i = 1; i < length; i++) {
         char c = word[i];

@@ -214,6 +214,8 @@ void draw_script_free(draw_script *script)
     memset(script, 0, sizeof *script);
 }
 
+static int parse(draw_script *script, size_t size);
+
 int draw_script_load(const char *path, draw_script *script)
 {
     memset(script, 0, sizeof *script);
@@ -224,6 +226,25 @@ int draw_script_load(const char *path, draw_script *script)
         fprintf(stderr, "cg: draw: %s: cannot read: %s\n", script->file, strerror(errno));
         return 1;
     }
+    return parse(script, size);
+}
+
+int draw_script_parse(const char *name, const char *text, draw_script *script)
+{
+    memset(script, 0, sizeof *script);
+    script->file = name;
+    size_t size = strlen(text);
+    script->text = malloc(size + 1);
+    if (!script->text) {
+        fprintf(stderr, "cg: draw: %s: out of memory\n", name);
+        return 1;
+    }
+    memcpy(script->text, text, size + 1);
+    return parse(script, size);
+}
+
+static int parse(draw_script *script, size_t size)
+{
     if (memchr(script->text, '\0', size)) {
         fprintf(stderr, "cg: draw: %s: not a text file (contains a NUL byte)\n", script->file);
         draw_script_free(script);

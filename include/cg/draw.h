@@ -84,7 +84,8 @@ cg_status cg_draw_ellipse_arc(cg_image *image, int cx, int cy, int rx, int ry, d
 /* Anti-aliased circle and ellipse one pixel wide, centred on an image-plane
  * point: each pixel gets coverage max(0, 1 - |d|) where d is the distance of
  * its centre from the real curve (for ellipses, the first-order estimate
- * F / |grad F|).  Blended in linear light. */
+ * F / |grad F|).  Blended in linear light.  Radii up to 1e9 (CG_ERANGE
+ * beyond, unless the ring misses the image). */
 cg_status cg_draw_circle_aa(cg_image *image, double cx, double cy, double r, cg_rgba8 color);
 cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, double ry,
                              cg_rgba8 color);

@@ -169,7 +169,11 @@ cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, d
 {
     if (!image || !image->data || !finite4(cx, cy, rx, ry) || rx < 0 || ry < 0)
         return CG_EINVAL;
-    if (rx > 1e7 || ry > 1e7 || fabs(cx) > 1e9 || fabs(cy) > 1e9)
+    /* Nothing to do when the ring misses the image. */
+    if (cx + rx + 1 < 0 || cy + ry + 1 < 0 || cx - rx - 1 > image->width
+        || cy - ry - 1 > image->height)
+        return CG_OK;
+    if (rx > 1e9 || ry > 1e9)
         return CG_ERANGE;
     cg_painter painter;
     cg_painter_init(&painter, image, color);

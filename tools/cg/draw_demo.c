@@ -2,8 +2,22 @@
 #include "draw_demo.h"
 #include "draw_script_run.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+
+void script_add(script_text *script, const char *format, ...)
+{
+    size_t room = sizeof script->text - script->length;
+    if (room <= 1)
+        return;
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(script->text + script->length, room, format, args);
+    va_end(args);
+    if (n > 0)
+        script->length += (size_t)n < room ? (size_t)n : room - 1;
+}
 
 int draw_demo_script(demo_context *context, const char *name, const char *text,
                      const char *caption)
@@ -54,4 +68,21 @@ void zoom_fill(zoom *z, int x, int y, cg_rgba8 color)
 double zoom_x(const zoom *z, double x)
 {
     return x * z->cell + 0.5;
+}
+
+void zoom_fill_drawn(zoom *z, const cg_image *grid, cg_rgba8 color)
+{
+    for (int y = 0; y < grid->height; y++)
+        for (int x = 0; x < grid->width; x++)
+            if (cg_image_get_rgba8(grid, x, y).a)
+                zoom_fill(z, x, y, color);
+}
+
+int zoom_add(demo_context *context, zoom *z, const char *file, const char *caption,
+             const char *command)
+{
+    int status = demo_add(context, file, z->image, caption, command);
+    cg_image_free(z->image);
+    z->image = NULL;
+    return status;
 }

@@ -11,6 +11,17 @@
 int draw_demo_script(demo_context *context, const char *name, const char *text,
                      const char *caption);
 
+/* A script built line by line (text truncated beyond its size). */
+typedef struct script_text {
+    char text[16384];
+    size_t length;
+} script_text;
+void script_add(script_text *script, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
 /* A magnified view: each pixel of a small grid becomes a cell of `cell`
  * image pixels with a thin grid between cells. */
 typedef struct zoom {
@@ -22,6 +33,12 @@ typedef struct zoom {
 int zoom_create(zoom *z, int columns, int rows, int cell);
 /* Fills grid pixel (x, y). */
 void zoom_fill(zoom *z, int x, int y, cg_rgba8 color);
+/* Fills the cells of the pixels drawn (alpha > 0) in grid, an image of the
+ * zoom's columns x rows. */
+void zoom_fill_drawn(zoom *z, const cg_image *grid, cg_rgba8 color);
+/* Adds the magnified image to the gallery and frees it. */
+int zoom_add(demo_context *context, zoom *z, const char *file, const char *caption,
+             const char *command);
 /* Maps a point of the grid's pixel plane to the magnified image plane. */
 double zoom_x(const zoom *z, double x);
 

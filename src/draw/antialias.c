@@ -143,11 +143,11 @@ static void ring_aa(const cg_painter *painter, double cx, double cy, double rx, 
             for (double col = a; col <= b; col++) {
                 double dx = col + 0.5 - cx, d;
                 if (rx == ry) {
-                    d = hypot(dx, dy) - rx;
+                    d = sqrt(dx * dx + dy * dy) - rx;
                 } else {
                     double fx = dx / rx, fy = dy / ry;
                     double f = fx * fx + fy * fy - 1;
-                    double gx = 2 * fx / rx, gy = 2 * fy / ry, g = hypot(gx, gy);
+                    double gx = 2 * fx / rx, gy = 2 * fy / ry, g = sqrt(gx * gx + gy * gy);
                     d = g > 0 ? f / g : -fmin(rx, ry);
                 }
                 double c = 1 - fabs(d);

@@ -154,22 +154,24 @@ static inline uint8_t hue8(int r, int g, int b, int max, int delta)
  * correctly rounded float quotient never crosses the integer above the true
  * quotient (the gap, at least 1/d, exceeds half an ulp of the result), so
  * truncation gives the exact floor. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define CG_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define CG_SIMD_CLONES
-#endif
-
 #define BLOCK 512
 
 /* Each kernel reads m pixels of CH bytes from in and writes them to out
  * (never the same memory: callers copy a block first); alpha is copied. */
+/* Deinterleaving to planar bytes first lets the arithmetic loop load
+ * contiguous vectors. */
 #define HSV_FORWARD(CH)                                                              \
     CG_SIMD_CLONES static void hsv_forward_##CH(const uint8_t *restrict in,          \
                                                  uint8_t *restrict out, int m)        \
     {                                                                                \
+        uint8_t pr[BLOCK], pg[BLOCK], pb[BLOCK], ph[BLOCK], ps[BLOCK];               \
         for (int i = 0; i < m; i++) {                                                \
-            float r = in[CH * i], g = in[CH * i + 1], b = in[CH * i + 2];            \
+            pr[i] = in[CH * i];                                                      \
+            pg[i] = in[CH * i + 1];                                                  \
+            pb[i] = in[CH * i + 2];                                                  \
+        }                                                                            \
+        for (int i = 0; i < m; i++) {                                                \
+            float r = pr[i], g = pg[i], b = pb[i];                                   \
             float mx = r > g ? r : g;                                                \
             mx = mx > b ? mx : b;                                                    \
             float mn = r < g ? r : g;                                                \
@@ -180,45 +182,65 @@ static inline uint8_t hue8(int r, int g, int b, int max, int delta)
             float dd = d > 0 ? d : 1;                                                \
             int h = (int)((512 * t + 6 * dd) / (12 * dd));                           \
             float mm = mx > 0 ? mx : 1;                                              \
-            out[CH * i] = (uint8_t)h; /* 256 wraps to 0 */                           \
-            out[CH * i + 1] = (uint8_t)(int)((510 * d + mx) / (2 * mm));             \
-            out[CH * i + 2] = (uint8_t)(int)mx;                                      \
+            ph[i] = (uint8_t)h; /* 256 wraps to 0 */                                 \
+            ps[i] = (uint8_t)(int)((510 * d + mx) / (2 * mm));                       \
+            pb[i] = (uint8_t)(int)mx;                                                \
+        }                                                                            \
+        for (int i = 0; i < m; i++) {                                                \
+            out[CH * i] = ph[i];                                                     \
+            out[CH * i + 1] = ps[i];                                                 \
+            out[CH * i + 2] = pb[i];                                                 \
             if (CH == 4)                                                             \
                 out[CH * i + CH - 1] = in[CH * i + CH - 1];                          \
         }                                                                            \
     }
 
 /* (H8, S8, V8) -> RGB: round(255 x) of the double formula with h / 60 =
- * 6 H / 256, as exact integer quotients.  sector: 0 (v t p) 1 (q v p)
- * 2 (p v t) 3 (p q v) 4 (t p v) 5 (v p q), as a chain of simple selects the
- * compiler turns into blends. */
+ * 6 H / 256, as exact integer quotients. */
+/* floor(n / d) for integers n < 2^24 and d held exactly in float: the
+ * product by the rounded reciprocal is off by at most one, and the exact
+ * products q d and (q + 1) d (< 2^24) correct it without a division. */
+static inline float floor_divide(float n, float d)
+{
+    float q = (float)(int)(n * (1.0f / d));
+    q = (q + 1) * d <= n ? q + 1 : q;
+    q = q * d > n ? q - 1 : q;
+    return q;
+}
+
+/* One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
+ * w = clamp(min(k, 4 - k), 0, 1) (n = 5, 3, 1 for R, G, B), all in units of
+ * 1/256 of a sector: round(v (65280 - s W) / 65280) with W = 256 w. */
+static inline float hsv_channel(float n256, float h6, float s, float v)
+{
+    float k = n256 + h6;
+    k = k >= 1536 ? k - 1536 : k;
+    float w = k < 1024 - k ? k : 1024 - k;
+    w = w > 0 ? w : 0;
+    w = w < 256 ? w : 256;
+    return floor_divide(v * (65280 - s * w) + 32640, 65280);
+}
+
 #define HSV_INVERSE(CH)                                                              \
     CG_SIMD_CLONES static void hsv_inverse_##CH(const uint8_t *restrict in,          \
                                                  uint8_t *restrict out, int m)        \
     {                                                                                \
+        uint8_t ph[BLOCK], ps[BLOCK], pv[BLOCK], pr[BLOCK], pg[BLOCK], pb[BLOCK];    \
         for (int i = 0; i < m; i++) {                                                \
-            float h6 = 6.0f * in[CH * i], s = in[CH * i + 1], v = in[CH * i + 2];    \
-            float sector = (float)(int)(h6 * (1.0f / 256));                          \
-            float f = h6 - 256 * sector;                                             \
-            float p = (float)(int)((2 * v * (255 - s) + 255) / 510);                 \
-            float q = (float)(int)((v * (65280 - s * f) + 32640) / 65280);           \
-            float t = (float)(int)((v * (65280 - s * (256 - f)) + 32640) / 65280);   \
-            float r = p, g = p, b = v;                                               \
-            r = sector == 0 ? v : r;                                                 \
-            r = sector == 1 ? q : r;                                                 \
-            r = sector == 4 ? t : r;                                                 \
-            r = sector == 5 ? v : r;                                                 \
-            g = sector == 0 ? t : g;                                                 \
-            g = sector == 1 ? v : g;                                                 \
-            g = sector == 2 ? v : g;                                                 \
-            g = sector == 3 ? q : g;                                                 \
-            b = sector == 0 ? p : b;                                                 \
-            b = sector == 1 ? p : b;                                                 \
-            b = sector == 2 ? t : b;                                                 \
-            b = sector == 5 ? q : b;                                                 \
-            out[CH * i] = (uint8_t)(int)r;                                           \
-            out[CH * i + 1] = (uint8_t)(int)g;                                       \
-            out[CH * i + 2] = (uint8_t)(int)b;                                       \
+            ph[i] = in[CH * i];                                                      \
+            ps[i] = in[CH * i + 1];                                                  \
+            pv[i] = in[CH * i + 2];                                                  \
+        }                                                                            \
+        for (int i = 0; i < m; i++) {                                                \
+            float h6 = 6.0f * ph[i], s = ps[i], v = pv[i];                           \
+            pr[i] = (uint8_t)(int)hsv_channel(1280, h6, s, v);                       \
+            pg[i] = (uint8_t)(int)hsv_channel(768, h6, s, v);                        \
+            pb[i] = (uint8_t)(int)hsv_channel(256, h6, s, v);                        \
+        }                                                                            \
+        for (int i = 0; i < m; i++) {                                                \
+            out[CH * i] = pr[i];                                                     \
+            out[CH * i + 1] = pg[i];                                                 \
+            out[CH * i + 2] = pb[i];                                                 \
             if (CH == 4)                                                             \
                 out[CH * i + CH - 1] = in[CH * i + CH - 1];                          \
         }                                                                            \

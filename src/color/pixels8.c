@@ -197,28 +197,22 @@ static inline uint8_t hue8(int r, int g, int b, int max, int delta)
 
 /* (H8, S8, V8) -> RGB: round(255 x) of the double formula with h / 60 =
  * 6 H / 256, as exact integer quotients. */
-/* floor(n / d) for integers n < 2^24 and d held exactly in float: the
- * product by the rounded reciprocal is off by at most one, and the exact
- * products q d and (q + 1) d (< 2^24) correct it without a division. */
-static inline float floor_divide(float n, float d)
-{
-    float q = (float)(int)(n * (1.0f / d));
-    q = (q + 1) * d <= n ? q + 1 : q;
-    q = q * d > n ? q - 1 : q;
-    return q;
-}
-
 /* One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
  * w = clamp(min(k, 4 - k), 0, 1) (n = 5, 3, 1 for R, G, B), all in units of
- * 1/256 of a sector: round(v (65280 - s W) / 65280) with W = 256 w. */
-static inline float hsv_channel(float n256, float h6, float s, float v)
+ * 1/256 of a sector: round(v (65280 - s W) / 65280) with W = 256 w, that is
+ * floor(X / 65280) with X = v (65280 - s W) + 32640 < 2^24.  As 65280 =
+ * 256 * 255, floor(X / 65280) = floor(u / 255) with u = X >> 8 <= 65152, and
+ * floor(u / 255) = (u + 1 + (u >> 8)) >> 8 for every u < 65535: integer
+ * operations only. */
+static inline int hsv_channel(int n256, int h6, int s, int v)
 {
-    float k = n256 + h6;
+    int k = n256 + h6;
     k = k >= 1536 ? k - 1536 : k;
-    float w = k < 1024 - k ? k : 1024 - k;
+    int w = k < 1024 - k ? k : 1024 - k;
     w = w > 0 ? w : 0;
     w = w < 256 ? w : 256;
-    return floor_divide(v * (65280 - s * w) + 32640, 65280);
+    int u = (v * (65280 - s * w) + 32640) >> 8;
+    return (u + 1 + (u >> 8)) >> 8;
 }
 
 #define HSV_INVERSE(CH)                                                              \
@@ -232,10 +226,10 @@ static inline float hsv_channel(float n256, float h6, float s, float v)
             pv[i] = in[CH * i + 2];                                                  \
         }                                                                            \
         for (int i = 0; i < m; i++) {                                                \
-            float h6 = 6.0f * ph[i], s = ps[i], v = pv[i];                           \
-            pr[i] = (uint8_t)(int)hsv_channel(1280, h6, s, v);                       \
-            pg[i] = (uint8_t)(int)hsv_channel(768, h6, s, v);                        \
-            pb[i] = (uint8_t)(int)hsv_channel(256, h6, s, v);                        \
+            int h6 = 6 * ph[i], s = ps[i], v = pv[i];                                \
+            pr[i] = (uint8_t)hsv_channel(1280, h6, s, v);                            \
+            pg[i] = (uint8_t)hsv_channel(768, h6, s, v);                             \
+            pb[i] = (uint8_t)hsv_channel(256, h6, s, v);                             \
         }                                                                            \
         for (int i = 0; i < m; i++) {                                                \
             out[CH * i] = pr[i];                                                     \

@@ -380,7 +380,7 @@ static int mesh_cut(demo_context *c)
                "3D clipping of a torus (4,032 triangles) against an axis-aligned box moved along x in "
                "steps, as in Fig. 11.9: triangles cut at the box faces with interpolated normals, the "
                "cut closed (shared edges give the same new vertex)",
-               NULL);
+               "cg demo --only Clipping");
 }
 
 static int culling(demo_context *c)
@@ -419,7 +419,7 @@ static int culling(demo_context *c)
              "Frustum culling by bounding boxes (top view, camera at the bottom looking up): %d outside "
              "(grey), %d crossing a plane (yellow), %d inside (green)",
              counts[0], counts[1], counts[2]);
-    return add(c, "clip-frustum-culling.png", im, caption, NULL);
+    return add(c, "clip-frustum-culling.png", im, caption, "cg demo --only Clipping");
 }
 
 static int render(demo_context *context)

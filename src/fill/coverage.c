@@ -176,6 +176,77 @@ static void deposit_line(float *accumulation, size_t stride, int band_top, int b
     }
 }
 
+static inline int coverage_of(float acc, cg_fill_rule rule)
+{
+    float a = fabsf(acc);
+    if (rule == CG_FILL_EVEN_ODD) {
+        a -= 2.0f * floorf(a * 0.5f);
+        if (a > 1)
+            a = 2 - a;
+    }
+    return a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
+}
+
+/* Whether a cell was left untouched (all bits zero; -0.0 counts as touched,
+ * which is harmless). */
+static inline int cell_empty(const float *cell)
+{
+    uint32_t bits;
+    memcpy(&bits, cell, sizeof bits);
+    return bits == 0;
+}
+
+/* The first touched cell at or after x (or width), eight cells at a time. */
+static inline int skip_empty(const float *row, int x, int width)
+{
+    while (x + 8 <= width) {
+        uint64_t a, b, c, d;
+        memcpy(&a, row + x, 8);
+        memcpy(&b, row + x + 2, 8);
+        memcpy(&c, row + x + 4, 8);
+        memcpy(&d, row + x + 6, 8);
+        if (a | b | c | d)
+            break;
+        x += 8;
+    }
+    while (x < width && cell_empty(row + x))
+        x++;
+    return x;
+}
+
+/* Sums one row of the accumulation buffer into coverage and paints it,
+ * clearing the buffer behind it.  Runs of untouched cells have the
+ * coverage of the cell before them and are painted as one span. */
+static void render_row(const fill_painter *painter, float *row, int width, size_t stride, int y,
+                       int origin_x, cg_fill_rule rule, uint8_t *cover)
+{
+    float acc = 0;
+    int c = 0, x = 0;
+    while (x < width) {
+        int start = x;
+        if (cell_empty(row + x)) {
+            x = skip_empty(row, x, width);
+            if (c == 255) {
+                fill_painter_span(painter, y, origin_x + start, x - start, NULL);
+            } else if (c) {
+                memset(cover, c, (size_t)(x - start));
+                fill_painter_span(painter, y, origin_x + start, x - start, cover);
+            }
+            continue;
+        }
+        while (x < width && !cell_empty(row + x)) {
+            acc += row[x];
+            row[x] = 0;
+            c = coverage_of(acc, rule);
+            cover[x - start] = (uint8_t)c;
+            x++;
+        }
+        fill_painter_span(painter, y, origin_x + start, x - start, cover);
+    }
+    for (size_t i = (size_t)width; i < stride; i++)
+        row[i] = 0;
+}
+
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
                          const cg_paint *paint)
 {
@@ -255,33 +326,9 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
                 r->active[kept++] = r->active[i];
         }
         active_count = kept;
-        for (int y = band_top; y < band_bottom; y++) {
-            float *row = r->accumulation + (size_t)(y - band_top) * stride;
-            uint8_t *cover = r->cover;
-            float acc = 0;
-            int lo = draw_width, hi = -1;
-            for (int x = 0; x < draw_width; x++) {
-                acc += row[x];
-                row[x] = 0;
-                float a = fabsf(acc);
-                if (rule == CG_FILL_EVEN_ODD) {
-                    a -= 2.0f * floorf(a * 0.5f);
-                    if (a > 1)
-                        a = 2 - a;
-                }
-                int c = a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
-                cover[x] = (uint8_t)c;
-                if (c) {
-                    if (x < lo)
-                        lo = x;
-                    hi = x;
-                }
-            }
-            for (size_t x = (size_t)draw_width; x < stride; x++)
-                row[x] = 0;
-            if (hi >= lo)
-                fill_painter_span(&painter, y, origin_x + lo, hi - lo + 1, cover + lo);
-        }
+        for (int y = band_top; y < band_bottom; y++)
+            render_row(&painter, r->accumulation + (size_t)(y - band_top) * stride, draw_width,
+                       stride, y, origin_x, rule, r->cover);
     }
     return CG_OK;
 }

@@ -104,6 +104,8 @@ struct cg_rasterizer {
     int clip_width, clip_height;
     float *accumulation;
     size_t accumulation_capacity;
+    uint64_t *touched; /* a bit per accumulation cell */
+    size_t touched_capacity;
     uint8_t *cover;
     size_t cover_capacity;
     size_t *order;

@@ -32,6 +32,7 @@ void cg_rasterizer_free(cg_rasterizer *r)
     free(r->lines);
     free(r->accumulation);
     free(r->cover);
+    free(r->touched);
     free(r->order);
     free(r->active);
     free(r->edges);

@@ -118,7 +118,8 @@ static cg_status append(cg_path *path, int verb, const double *coords)
                          path->coord_count + (size_t)n, sizeof *path->coords))
         return CG_ENOMEM;
     path->verbs[path->verb_count++] = (unsigned char)verb;
-    memcpy(path->coords + path->coord_count, coords, (size_t)n * sizeof *coords);
+    if (n)
+        memcpy(path->coords + path->coord_count, coords, (size_t)n * sizeof *coords);
     path->coord_count += (size_t)n;
     if (verb != VERB_MOVE)
         path->drawing++;

@@ -141,6 +141,15 @@ static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
     return (uint8_t)c;
 }
 
+/* The same for v known to be in [0, 1] (a blend of such values; tiny
+ * rounding outside is harmless): one table look-up and one comparison,
+ * as a table step (1/4096) is smaller than the smallest code step. */
+static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
+{
+    int c = r->encode[(int)(v * 4096.0f)];
+    return (uint8_t)(c + (v >= r->threshold[c]));
+}
+
 /* Grows *array (of element size) to hold at least need elements. */
 int fill_reserve(void **array, size_t *capacity, size_t need, size_t size);
 

@@ -176,10 +176,10 @@ static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, f
                           float as)
 {
     if (d->a == 255) {
-        float k = 1 - as;
-        d->r = fill_encode(t, r * as + t->decode[d->r] * k);
-        d->g = fill_encode(t, g * as + t->decode[d->g] * k);
-        d->b = fill_encode(t, b * as + t->decode[d->b] * k);
+        float dr = t->decode[d->r], dg = t->decode[d->g], db = t->decode[d->b];
+        d->r = fill_encode_unit(t, dr + (r - dr) * as);
+        d->g = fill_encode_unit(t, dg + (g - dg) * as);
+        d->b = fill_encode_unit(t, db + (b - db) * as);
         return;
     }
     float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;

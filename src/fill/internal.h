@@ -67,7 +67,7 @@ typedef struct fill_painter {
     uint32_t encoded;
     int opaque;
     /* gradients */
-    double gx, gy, gdx, gdy, gc; /* linear: t = gx * x + gy * y + gc */
+    double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
     cg_rgbaf ramp[256];
 } fill_painter;

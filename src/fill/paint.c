@@ -130,7 +130,12 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
 {
     if (!paint)
         return CG_EINVAL;
-    memset(p, 0, sizeof *p);
+    /* Field by field: the ramp (4 KiB) is only written for gradients. */
+    p->r = p->g = p->b = p->a = 0;
+    p->encoded = 0;
+    p->opaque = 0;
+    p->gx = p->gy = p->gc = 0;
+    p->cx = p->cy = p->inv_radius = 0;
     p->image = image;
     p->tables = r;
     p->type = paint->type;

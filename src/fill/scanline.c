@@ -103,14 +103,15 @@ static cg_status add_edge(cg_rasterizer *r, cg_vec2 a, cg_vec2 b, int height)
 }
 
 /* Pixel index of the first centre at or right of x, clamped to [0, width]. */
-static int first_pixel_at(double x, int width)
+static inline int first_pixel_at(double x, int width)
 {
-    double p = ceil(x - 0.5);
+    double p = x - 0.5; /* exact for |x| < 2^52 */
     if (!(p > 0))
         return 0;
-    if (p > width)
+    if (p >= width)
         return width;
-    return (int)p;
+    int i = (int)p; /* p > 0: truncation is floor; ceil is one more unless integral */
+    return i + (i < p);
 }
 
 typedef struct active_edge {

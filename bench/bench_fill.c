@@ -12,6 +12,7 @@
 #include "bench.h"
 #include "bench_fill_peers.h"
 #include "cg/fill.h"
+#include "../tests/maze.h"
 
 #include <math.h>
 #include <string.h>
@@ -344,36 +345,9 @@ static void polygon_cases(int runs)
 
 static void maze(cg_image *im)
 {
-    /* Randomised depth-first maze on 1023 x 1023 cells. */
-    int cells = (FLOOD - 1) / 2, n = cells * cells;
+    /* a perfect maze of 1023 x 1023 cells */
     cg_rgba8 wall = {0, 0, 0, 255}, open = {255, 255, 255, 255};
-    cg_image_clear_rgba8(im, wall);
-    unsigned char *seen = calloc((size_t)n, 1);
-    int *stack = malloc(sizeof(int) * (size_t)n), top = 0;
-    stack[top++] = 0;
-    seen[0] = 1;
-    cg_image_set_rgba8(im, 1, 1, open);
-    static const int d[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    while (top) {
-        int c = stack[top - 1], cx = c % cells, cy = c / cells, options[4], k = 0;
-        for (int i = 0; i < 4; i++) {
-            int nx = cx + d[i][0], ny = cy + d[i][1];
-            if (nx >= 0 && ny >= 0 && nx < cells && ny < cells && !seen[ny * cells + nx])
-                options[k++] = i;
-        }
-        if (!k) {
-            top--;
-            continue;
-        }
-        int i = options[(int)(unit() * k)];
-        int nx = cx + d[i][0], ny = cy + d[i][1];
-        seen[ny * cells + nx] = 1;
-        cg_image_set_rgba8(im, 2 * cx + 1 + d[i][0], 2 * cy + 1 + d[i][1], open);
-        cg_image_set_rgba8(im, 2 * nx + 1, 2 * ny + 1, open);
-        stack[top++] = ny * cells + nx;
-    }
-    free(seen);
-    free(stack);
+    maze_draw(im, (FLOOD - 1) / 2, (FLOOD - 1) / 2, 88172645463325252ULL, 0, wall, open);
 }
 
 static void open_field(cg_image *im)

@@ -2,6 +2,7 @@
  * dashes and gradients, a flood-filled maze, 4- against 8-connectivity. */
 #include "demo.h"
 #include "cg/fill.h"
+#include "../../tests/maze.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -175,35 +176,10 @@ static int maze(demo_context *context)
     if (cg_image_create(&small, side, side, CG_PIXEL_RGBA8) != CG_OK)
         return 1;
     cg_rgba8 wall = {44, 44, 54, 255}, open = {255, 255, 255, 255};
-    cg_image_clear_rgba8(small, wall);
-    unsigned char seen[CELLS * CELLS] = {0};
-    int stack[CELLS * CELLS], top = 0;
-    unsigned state = 12345;
-    stack[top++] = 0;
-    seen[0] = 1;
-    cg_image_set_rgba8(small, 1, 1, open);
-    static const int d[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    int carved = 0;
-    while (top) {
-        int c = stack[top - 1], cx = c % CELLS, cy = c / CELLS, options[4], k = 0;
-        for (int i = 0; i < 4; i++) {
-            int nx = cx + d[i][0], ny = cy + d[i][1];
-            if (nx >= 0 && ny >= 0 && nx < CELLS && ny < CELLS && !seen[ny * CELLS + nx])
-                options[k++] = i;
-        }
-        if (!k) {
-            top--;
-            continue;
-        }
-        state = state * 1103515245u + 12345u;
-        int i = options[(state >> 16) % (unsigned)k];
-        int nx = cx + d[i][0], ny = cy + d[i][1];
-        seen[ny * CELLS + nx] = 1;
-        /* every 97th passage stays walled: the maze falls into regions */
-        if (++carved % 97 != 0)
-            cg_image_set_rgba8(small, 2 * cx + 1 + d[i][0], 2 * cy + 1 + d[i][1], open);
-        cg_image_set_rgba8(small, 2 * nx + 1, 2 * ny + 1, open);
-        stack[top++] = ny * CELLS + nx;
+    /* every 97th passage stays walled: the maze falls into regions */
+    if (maze_draw(small, CELLS, CELLS, 12345, 97, wall, open) != 0) {
+        cg_image_free(small);
+        return 1;
     }
     static const cg_rgba8 palette[] = {{230, 90, 70, 255},  {70, 150, 220, 255}, {90, 180, 100, 255},
                                        {240, 180, 50, 255}, {160, 100, 200, 255}, {60, 190, 180, 255},

@@ -1,6 +1,7 @@
 /* Gallery: filling (chapter 10) - even-odd against non-zero, joins and caps,
  * dashes and gradients, a flood-filled maze, 4- against 8-connectivity. */
 #include "demo.h"
+#include "draw_demo.h"
 #include "cg/fill.h"
 #include "../../tests/maze.h"
 
@@ -27,109 +28,59 @@ static cg_image *canvas(int width, int height)
     return image;
 }
 
-static void stroke_svg(cg_rasterizer *r, cg_image *image, const char *data, double width,
-                       cg_rgba8 color)
+/* A pentagram and two overlapping rings traced the same way, filled
+ * even-odd (left) and non-zero (right): a `cg draw` script. */
+static int fill_rules(demo_context *context)
 {
-    cg_path *path;
-    if (cg_path_create(&path) != CG_OK)
-        return;
-    cg_stroke_style style = cg_stroke_style_default();
-    style.width = width;
-    style.join = CG_JOIN_ROUND;
-    cg_paint paint = cg_paint_solid(color);
-    if (cg_path_append_svg(path, data, NULL) == CG_OK)
-        cg_rasterizer_stroke_path(r, image, path, &style, &paint);
-    cg_path_free(path);
-}
-
-/* A pentagram and two overlapping rings drawn in one direction, filled
- * even-odd (left) and non-zero (right). */
-static int fill_rules(demo_context *context, cg_rasterizer *r)
-{
-    cg_image *image = canvas(520, 260);
-    if (!image)
-        return 1;
-    cg_rgba8 colors[2] = {{214, 92, 62, 255}, {58, 118, 190, 255}};
-    cg_path *path;
-    if (cg_path_create(&path) != CG_OK) {
-        cg_image_free(image);
-        return 1;
+    script_text t = {{0}, 0};
+    script_add(&t, "# even-odd (left) against non-zero (right)\nsize 520 260\n"
+                   "background #faf8f2\nwidth 1.2\n");
+    static const char *const rules[2] = {"evenodd", "nonzero"};
+    for (int half = 0; half < 2; half++) {
+        int dx = 260 * half;
+        script_add(&t, "fillrule %s\n", rules[half]);
+        script_add(&t, "path M %d 20 l 60 195 l -165 -120 l 210 0 l -165 120 Z\n", 130 + dx);
+        script_add(&t, "color #d65c3e\nfill\ncolor #282830\nstroke\n");
+        script_add(&t, "path M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z "
+                       "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z\n",
+                   62 + dx, 100 + dx);
+        script_add(&t, "color #3a76be\nfill\ncolor #282830\nstroke\n");
     }
-    for (int half = 0; half < 2; half++)
-        for (int s = 0; s < 2; s++) {
-            char d[512];
-            if (s == 0)
-                snprintf(d, sizeof d, "M %d 20 l 60 195 l -165 -120 l 210 0 l -165 120 Z",
-                         130 + 260 * half);
-            else
-                snprintf(d, sizeof d,
-                         "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z "
-                         "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z",
-                         62 + 260 * half, 100 + 260 * half);
-            cg_path_reset(path);
-            cg_path_append_svg(path, d, NULL);
-            cg_paint paint = cg_paint_solid(colors[s]), outline = cg_paint_solid(ink);
-            cg_rasterizer_fill_path(r, image, path, half ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD,
-                                    &paint);
-            cg_stroke_style thin = cg_stroke_style_default();
-            thin.width = 1.2;
-            cg_rasterizer_stroke_path(r, image, path, &thin, &outline);
-        }
-    cg_path_free(path);
-    return save(context, "fill-rules.png", image,
-                "Even-odd (left) against non-zero winding (right): a pentagram and two rings "
-                "traced the same way; anti-aliased by exact area coverage");
+    return draw_demo_script(context, "fill-rules", t.text,
+                            "Even-odd (left) against non-zero winding (right): a pentagram and "
+                            "two rings traced the same way; anti-aliased by exact area coverage");
 }
 
-/* Thick zig-zags with each join, over their centre lines, and segments with
- * each cap. */
-static int joins_and_caps(demo_context *context, cg_rasterizer *r)
+/* Thick zig-zags with each join and segments with each cap over their
+ * centre lines, and dashed arcs: a `cg draw` script. */
+static int joins_and_caps(demo_context *context)
 {
-    cg_image *image = canvas(540, 330);
-    if (!image)
-        return 1;
-    cg_rgba8 colors[3] = {{64, 140, 110, 255}, {214, 128, 52, 255}, {112, 92, 190, 255}};
-    cg_rgba8 red = {220, 40, 40, 255};
+    static const char *const joins[3] = {"miter", "round", "bevel"};
+    static const char *const caps[3] = {"butt", "round", "square"};
+    static const char *const colors[3] = {"#408c6e", "#d68034", "#705cbe"};
+    script_text t = {{0}, 0};
+    script_add(&t, "# joins (top), caps (middle), dashes (bottom)\nsize 540 330\n"
+                   "background #faf8f2\n");
     for (int j = 0; j < 3; j++) {
         double x = 30 + 175 * j;
-        char zig[256];
-        snprintf(zig, sizeof zig, "M %g 150 L %g 50 L %g 150 L %g 70 L %g 140", x, x + 35, x + 70,
-                 x + 105, x + 140);
-        cg_path *path;
-        if (cg_path_create(&path) != CG_OK)
-            break;
-        cg_path_append_svg(path, zig, NULL);
-        cg_stroke_style style = cg_stroke_style_default();
-        style.width = 22;
-        style.join = (cg_line_join)j;
-        style.miter_limit = 10;
-        cg_paint paint = cg_paint_solid(colors[j]);
-        cg_rasterizer_stroke_path(r, image, path, &style, &paint);
-        stroke_svg(r, image, zig, 1.5, red);
-        /* caps: butt, round, square on a horizontal segment */
-        char segment[128];
+        char zig[160], segment[96];
+        snprintf(zig, sizeof zig, "M %g 150 L %g 50 L %g 150 L %g 70 L %g 140", x, x + 35,
+                 x + 70, x + 105, x + 140);
         snprintf(segment, sizeof segment, "M %g 215 L %g 215", x + 25, x + 115);
-        cg_path_reset(path);
-        cg_path_append_svg(path, segment, NULL);
-        style = cg_stroke_style_default();
-        style.width = 26;
-        style.cap = (cg_line_cap)j;
-        cg_rasterizer_stroke_path(r, image, path, &style, &paint);
-        stroke_svg(r, image, segment, 1.5, red);
-        /* dashes with the same cap */
-        snprintf(segment, sizeof segment, "M %g 290 A 70 30 0 0 1 %g 290", x + 5, x + 135);
-        cg_path_reset(path);
-        cg_path_append_svg(path, segment, NULL);
-        double dashes[2] = {14, 12};
-        style.width = 9;
-        style.dashes = dashes;
-        style.dash_count = 2;
-        cg_rasterizer_stroke_path(r, image, path, &style, &paint);
-        cg_path_free(path);
+        script_add(&t, "color %s\nwidth 22\njoin %s\ncap butt\ndash\npath %s\nstroke\n",
+                   colors[j], joins[j], zig);
+        script_add(&t, "color #dc2828\nwidth 1.5\njoin round\nstroke\n");
+        script_add(&t, "color %s\nwidth 26\ncap %s\npath %s\nstroke\n", colors[j], caps[j],
+                   segment);
+        script_add(&t, "color #dc2828\nwidth 1.5\ncap butt\nstroke\n");
+        script_add(&t, "color %s\nwidth 9\ncap %s\ndash 14 12\n"
+                       "path M %g 290 A 70 30 0 0 1 %g 290\nstroke\n",
+                   colors[j], caps[j], x + 5, x + 135);
     }
-    return save(context, "fill-joins-caps.png", image,
-                "Strokes turned into polygons: miter, round and bevel joins (top), butt, round "
-                "and square caps (middle; centre lines in red), dashed arcs with each cap");
+    return draw_demo_script(context, "fill-joins-caps", t.text,
+                            "Strokes turned into polygons: miter, round and bevel joins (top), "
+                            "butt, round and square caps (middle; centre lines in red), dashed "
+                            "arcs with each cap");
 }
 
 /* A glyph-like outline of arcs and lines: solid, linear and radial
@@ -206,42 +157,40 @@ static int maze(demo_context *context)
 }
 
 /* One-pixel diagonal gaps: a 4-connected fill stops, an 8-connected one
- * leaks through.  Shown enlarged. */
+ * leaks through.  Shown magnified. */
 static int connectivity(demo_context *context)
 {
-    enum { N = 24, SCALE = 11 };
+    enum { N = 24 };
     cg_rgba8 white = {255, 255, 255, 255}, wall = {44, 44, 54, 255};
     cg_rgba8 fills[2] = {{70, 150, 220, 255}, {230, 90, 70, 255}};
-    cg_image *image;
-    if (cg_image_create(&image, 2 * N * SCALE + SCALE, N * SCALE, CG_PIXEL_RGBA8) != CG_OK)
-        return 1;
-    cg_image_clear_rgba8(image, paper);
+    const char *files[2] = {"fill-connect4.png", "fill-connect8.png"};
+    const char *captions[2] = {
+        "Seed fill from the top-left pixel, 4-connected: it stops at the one-pixel diagonal wall",
+        "The same seed fill, 8-connected: it slips through the diagonal wall's corners"};
+    int failed = 0;
     for (int k = 0; k < 2; k++) {
         cg_image *small;
+        zoom z;
         if (cg_image_create(&small, N, N, CG_PIXEL_RGBA8) != CG_OK)
-            break;
+            return 1;
+        if (zoom_create(&z, N, N, 11)) {
+            cg_image_free(small);
+            return 1;
+        }
         cg_image_clear_rgba8(small, white);
-        for (int i = 0; i < N; i++) { /* a diagonal wall and a staircase */
+        for (int i = 0; i < N; i++) { /* a diagonal wall and short stairs */
             cg_image_set_rgba8(small, i, N - 1 - i, wall);
             if (i % 6 < 3)
                 cg_image_set_rgba8(small, (i + N / 2) % N, i, wall);
         }
         cg_flood_fill(small, 1, 1, fills[k], k ? CG_CONNECT_8 : CG_CONNECT_4, 0, NULL);
-        for (int y = 0; y < N * SCALE; y++)
-            for (int x = 0; x < N * SCALE; x++) {
-                cg_rgba8 p = cg_image_get_rgba8(small, x / SCALE, y / SCALE);
-                if (x % SCALE == 0 || y % SCALE == 0) { /* grid lines */
-                    p.r = (uint8_t)(p.r * 0.85);
-                    p.g = (uint8_t)(p.g * 0.85);
-                    p.b = (uint8_t)(p.b * 0.85);
-                }
-                cg_image_set_rgba8(image, x + k * (N + 1) * SCALE, y, p);
-            }
+        for (int y = 0; y < N; y++)
+            for (int x = 0; x < N; x++)
+                zoom_fill(&z, x, y, cg_image_get_rgba8(small, x, y));
         cg_image_free(small);
+        failed |= zoom_add(context, &z, files[k], captions[k], COMMAND);
     }
-    return save(context, "fill-connectivity.png", image,
-                "Seed fill from the top-left pixel: 4-connected (left) stops at the one-pixel "
-                "diagonal wall, 8-connected (right) slips through its corners");
+    return failed;
 }
 
 static int render(demo_context *context)
@@ -249,8 +198,8 @@ static int render(demo_context *context)
     cg_rasterizer *r;
     if (cg_rasterizer_create(&r) != CG_OK)
         return 1;
-    int failed = fill_rules(context, r);
-    failed |= joins_and_caps(context, r);
+    int failed = fill_rules(context);
+    failed |= joins_and_caps(context);
     failed |= gradients(context, r);
     failed |= maze(context);
     failed |= connectivity(context);

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define DEMO_COMMAND "cg demo --only 'Half-edge meshes'"
+
 static const cg_rgba8 white = {255, 255, 255, 255}, ink = {40, 44, 52, 255},
                       faint = {205, 208, 214, 255}, boundary_red = {205, 45, 45, 255},
                       orange = {230, 120, 20, 255}, blue = {40, 90, 200, 255};
@@ -142,7 +144,7 @@ static int render_halfedges(demo_context *context)
                           "Half-edge structure (DCEL): each face's half-edges run counter-clockwise "
                           "inside it (one colour per face); the boundary loop's half-edges (red) "
                           "run clockwise outside, with no face",
-                          NULL);
+                          DEMO_COMMAND);
     cg_image_free(image);
     cg_hemesh_free(h);
     return status;
@@ -250,7 +252,7 @@ static int render_one_ring(demo_context *context)
                           "One-ring of a vertex found by rotation (h = twin(prev(h))): its "
                           "outgoing half-edges (orange), neighbours and link (blue), in time "
                           "proportional to the valence",
-                          NULL);
+                          DEMO_COMMAND);
     cg_image_free(image);
     cg_hemesh_free(h);
     return status;
@@ -303,7 +305,7 @@ static int render(demo_context *context)
     if (render_levels(context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop.png",
                       "Loop subdivision of a tetrahedron, levels 0 to 3: 4, 16, 64 and 256 "
                       "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)",
-                      NULL))
+                      DEMO_COMMAND))
         return 1;
     static const double box[][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -312,7 +314,7 @@ static int render(demo_context *context)
     return render_levels(context, make_mesh(box, 8, box_faces, 6), 0, "hemesh-catmull-clark.png",
                          "Catmull-Clark subdivision of a cube, levels 0 to 3: 6, 24, 96 and 384 "
                          "quads, converging to a rounded shape",
-                         NULL);
+                         DEMO_COMMAND);
 }
 
 const demo_section demo_section_hemesh = {9, "Half-edge meshes (DCEL)", render};

@@ -207,6 +207,20 @@ static int check_output(const char *what, const char *path)
     return CLI_OK;
 }
 
+/* Checks OUT's format, then loads IN and builds it with every repair. */
+static int load_for_output(const char *what, const char *in, const char *out, cg_hemesh **h,
+                           cg_hemesh_report *report)
+{
+    if (check_output(what, out))
+        return CLI_USAGE;
+    cg_mesh *mesh;
+    if (load(in, &mesh))
+        return CLI_FAILED;
+    int status = build(what, mesh, h, report);
+    cg_mesh_free(mesh);
+    return status;
+}
+
 static int subdivide(int argc, char **argv)
 {
     int scheme = 0; /* 1 Loop, 2 Catmull-Clark */
@@ -234,15 +248,9 @@ static int subdivide(int argc, char **argv)
         return cli_usage_error("mesh", "subdivide: expected --loop N or --catmull-clark N");
     if (count != 2)
         return cli_usage_error("mesh", "subdivide: expected IN and OUT files");
-    if (check_output("subdivide", paths[1]))
-        return CLI_USAGE;
-    cg_mesh *mesh;
-    if (load(paths[0], &mesh))
-        return CLI_FAILED;
     cg_hemesh *h = NULL;
     cg_hemesh_report rep;
-    int status = build("subdivide", mesh, &h, &rep);
-    cg_mesh_free(mesh);
+    int status = load_for_output("subdivide", paths[0], paths[1], &h, &rep);
     if (status)
         return status;
     if (repaired(&rep))
@@ -290,15 +298,9 @@ static int repair(int argc, char **argv)
     }
     if (count != 2)
         return cli_usage_error("mesh", "repair: expected IN and OUT files");
-    if (check_output("repair", paths[1]))
-        return CLI_USAGE;
-    cg_mesh *mesh;
-    if (load(paths[0], &mesh))
-        return CLI_FAILED;
     cg_hemesh *h = NULL;
     cg_hemesh_report rep;
-    int status = build("repair", mesh, &h, &rep);
-    cg_mesh_free(mesh);
+    int status = load_for_output("repair", paths[0], paths[1], &h, &rep);
     if (status)
         return status;
     if (repaired(&rep))

@@ -82,6 +82,16 @@ static void arrow(cg_image *image, cg_vec2 p, cg_vec2 q, cg_rgba8 color)
     thick_line(image, q.x, q.y, q.x + len * r.x, q.y + len * r.y, 2, color);
 }
 
+/* Adds the picture to the gallery and frees it and the mesh. */
+static int finish(demo_context *context, const char *file, cg_image *image, cg_hemesh *h,
+                  const char *caption)
+{
+    int status = demo_add(context, file, image, caption, DEMO_COMMAND);
+    cg_image_free(image);
+    cg_hemesh_free(h);
+    return status;
+}
+
 /* ---- half-edges of a planar mesh --------------------------------------- */
 
 static cg_vec2 to_pixel(cg_vec3 p, double scale, double ox, double oy)
@@ -140,14 +150,10 @@ static int render_halfedges(demo_context *context)
         cg_vec2 p = to_pixel(h->positions[v], scale, ox, oy);
         dot(image, p.x, p.y, 5, ink);
     }
-    int status = demo_add(context, "hemesh-halfedges.png", image,
-                          "Half-edge structure (DCEL): each face's half-edges run counter-clockwise "
-                          "inside it (one colour per face); the boundary loop's half-edges (red) "
-                          "run clockwise outside, with no face",
-                          DEMO_COMMAND);
-    cg_image_free(image);
-    cg_hemesh_free(h);
-    return status;
+    return finish(context, "hemesh-halfedges.png", image, h,
+                  "Half-edge structure (DCEL): each face's half-edges run counter-clockwise "
+                  "inside it (one colour per face); the boundary loop's half-edges (red) "
+                  "run clockwise outside, with no face");
 }
 
 /* ---- 3D views ---------------------------------------------------------- */
@@ -248,18 +254,14 @@ static int render_one_ring(demo_context *context)
         dot(image, b.x, b.y, 5, blue);
     }
     dot(image, c.x, c.y, 6, boundary_red);
-    int status = demo_add(context, "hemesh-one-ring.png", image,
-                          "One-ring of a vertex found by rotation (h = twin(prev(h))): its "
-                          "outgoing half-edges (orange), neighbours and link (blue), in time "
-                          "proportional to the valence",
-                          DEMO_COMMAND);
-    cg_image_free(image);
-    cg_hemesh_free(h);
-    return status;
+    return finish(context, "hemesh-one-ring.png", image, h,
+                  "One-ring of a vertex found by rotation (h = twin(prev(h))): its "
+                  "outgoing half-edges (orange), neighbours and link (blue), in time "
+                  "proportional to the valence");
 }
 
 static int render_levels(demo_context *context, cg_hemesh *h, int loop, const char *file,
-                         const char *caption, const char *command)
+                         const char *caption)
 {
     int panel = 300;
     cg_image *image = blank(4 * panel, panel);
@@ -290,10 +292,7 @@ static int render_levels(demo_context *context, cg_hemesh *h, int loop, const ch
         if (s != CG_OK)
             break;
     }
-    int status = demo_add(context, file, image, caption, command);
-    cg_image_free(image);
-    cg_hemesh_free(h);
-    return status;
+    return finish(context, file, image, h, caption);
 }
 
 static int render(demo_context *context)
@@ -304,8 +303,7 @@ static int render(demo_context *context)
     static const uint32_t tetra_faces[] = {3, 0, 1, 2, 3, 0, 2, 3, 3, 0, 3, 1, 3, 1, 3, 2};
     if (render_levels(context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop.png",
                       "Loop subdivision of a tetrahedron, levels 0 to 3: 4, 16, 64 and 256 "
-                      "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)",
-                      DEMO_COMMAND))
+                      "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)"))
         return 1;
     static const double box[][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -313,8 +311,7 @@ static int render(demo_context *context)
                                          4, 3, 7, 6, 2, 4, 0, 4, 7, 3, 4, 1, 2, 6, 5};
     return render_levels(context, make_mesh(box, 8, box_faces, 6), 0, "hemesh-catmull-clark.png",
                          "Catmull-Clark subdivision of a cube, levels 0 to 3: 6, 24, 96 and 384 "
-                         "quads, converging to a rounded shape",
-                         DEMO_COMMAND);
+                         "quads, converging to a rounded shape");
 }
 
 const demo_section demo_section_hemesh = {9, "Half-edge meshes (DCEL)", render};

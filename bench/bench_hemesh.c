@@ -139,11 +139,14 @@ int main(int argc, char **argv)
         {"icosphere level 8", shape_icosphere, 8},
         {"grid 1024x1024", NULL, 1024},
     };
+    /* --quick: the two small cases; any other argument: only the cases whose
+     * name contains it */
     int only = argc > 1 && strcmp(argv[1], "--quick") == 0;
+    const char *filter = argc > 1 && !only ? argv[1] : NULL;
     peer_quiet();
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        if (only && i >= 2)
-            break;
+        if ((only && i >= 2) || (filter && !strstr(cases[i].name, filter)))
+            continue;
         cg_mesh *mesh = cases[i].make ? cases[i].make(cases[i].arg)
                                       : shape_grid(cases[i].arg, cases[i].arg, 1);
         if (!mesh) {
@@ -157,6 +160,8 @@ int main(int argc, char **argv)
      * cg repairs (CG_HEMESH_REPAIR) and OpenMesh's add_face skips */
     static const char *real[] = {"bunny.obj", "dragon_vrip_res3.ply.gz"};
     for (size_t i = 0; !only && i < sizeof real / sizeof real[0]; i++) {
+        if (filter && !strstr(real[i], filter))
+            continue;
         char path[1024];
         snprintf(path, sizeof path, "%s/data/meshes/%s", CG_SOURCE_DIR, real[i]);
         cg_mesh *mesh = NULL;

@@ -262,6 +262,12 @@ int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h);
  * a k-gon becomes k triangles. */
 cg_status cg_hemesh_split_face(cg_hemesh *m, uint32_t f, cg_vec3 position, uint32_t *new_vertex);
 
+/* Splits the face of half-edges p and q by a new edge from origin(p) to
+ * origin(q): p's side keeps the face, q's side becomes a new face
+ * (*new_face, may be NULL).  Refused unless p and q lie on the same face,
+ * their origins are not neighbours along it and not already joined. */
+cg_status cg_hemesh_split_face_between(cg_hemesh *m, uint32_t p, uint32_t q, uint32_t *new_face);
+
 /* Removes face f; its edges become boundary, edges left with no face and
  * vertices left with no edge are deleted. */
 cg_status cg_hemesh_remove_face(cg_hemesh *m, uint32_t f);

@@ -47,7 +47,7 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
     if (r->bad_face_count) {
         fprintf(f, "%sdropped %zu face%s with fewer than 3 corners, a vertex out of range or a "
                    "repeated vertex; ", prefix, r->bad_face_count, r->bad_face_count == 1 ? "" : "s");
-        print_list(f, "faces", r->bad_faces, r->bad_face_count, 1);
+        print_list(f, "faces (counted from 0)", r->bad_faces, r->bad_face_count, 1);
     }
     if (r->flipped_face_count)
         fprintf(f, "%sreversed %zu face%s to orient each component consistently\n", prefix,
@@ -58,13 +58,13 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
     if (r->nonmanifold_edge_count) {
         fprintf(f, "%sseparated the extra faces of %zu edge%s with more than two faces; ", prefix,
                 r->nonmanifold_edge_count, r->nonmanifold_edge_count == 1 ? "" : "s");
-        print_list(f, "edges", r->nonmanifold_edges, r->nonmanifold_edge_count, 2);
+        print_list(f, "edges (vertices counted from 0)", r->nonmanifold_edges, r->nonmanifold_edge_count, 2);
     }
     if (r->added_vertex_count) {
         fprintf(f, "%ssplit %zu non-manifold %s into one per fan (%zu vertices added); ",
                 prefix, r->nonmanifold_vertex_count, r->nonmanifold_vertex_count == 1 ? "vertex" : "vertices",
                 r->added_vertex_count);
-        print_list(f, "vertices", r->nonmanifold_vertices, r->nonmanifold_vertex_count, 1);
+        print_list(f, "vertices (counted from 0)", r->nonmanifold_vertices, r->nonmanifold_vertex_count, 1);
     }
 }
 

@@ -441,6 +441,18 @@ static cg_status assemble(builder *b, cg_hemesh **out)
         x.origin = b->edge_vertices[2 * e + 1];
         he[2 * e + 1] = x;
     }
+    /* The fan walk below jumps around memory, so it runs on a compact copy
+     * of the rotation h -> twin(prev(h)) (4 bytes a half-edge) and two
+     * bitmaps, filled while linking, rather than on the 16-byte half-edges. */
+    size_t words = H / 64 + 1;
+    /* the edge vertices (2 per edge = H entries) are read above and no longer
+     * needed: their memory, already mapped, holds the rotation */
+    uint32_t *rotation = b->edge_vertices;
+    uint64_t *seen = calloc(2 * words, sizeof *seen), *on_boundary = seen ? seen + words : NULL;
+    if (!seen) {
+        cg_hemesh_free(m);
+        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
+    }
     /* face loops */
     for (size_t f = 0; f < F; f++) {
         uint32_t begin = b->offsets[f], end = b->offsets[f + 1];
@@ -449,6 +461,7 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             uint32_t h = b->corner_halfedge[k];
             he[h].face = (uint32_t)f;
             he[h].prev = prev;
+            rotation[h] = prev ^ 1u;
             he[prev].next = h;
             prev = h;
         }
@@ -465,15 +478,12 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             h = he[h].prev ^ 1u;
         he[x].next = h;
         he[h].prev = (uint32_t)x;
+        rotation[h] = (uint32_t)x ^ 1u;
+        on_boundary[x >> 6] |= (uint64_t)1 << (x & 63);
     }
-    /* fans: cycles of the rotation h -> twin(prev(h)) */
+    /* fans: the cycles of the rotation */
     for (size_t v = 0; v < V; v++)
         m->vertex_halfedge[v] = CG_HEMESH_NONE;
-    uint8_t *seen = calloc(H ? H : 1, 1);
-    if (!seen) {
-        cg_hemesh_free(m);
-        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    }
     size_t nonmanifold_vertices = 0, added = 0;
     uint32_t first_bad_vertex = 0;
     int failed = 0;
@@ -481,14 +491,14 @@ static cg_status assemble(builder *b, cg_hemesh **out)
     size_t extra_count = 0;
     cg_hemesh_report *rep = b->report;
     for (size_t h0 = 0; h0 < H; h0++) {
-        if (seen[h0])
+        if (seen[h0 >> 6] >> (h0 & 63) & 1)
             continue;
         uint32_t v = he[h0].origin, h = (uint32_t)h0, boundary = CG_HEMESH_NONE;
         do {
-            seen[h] = 1;
-            if (he[h].face == CG_HEMESH_NONE)
+            seen[h >> 6] |= (uint64_t)1 << (h & 63);
+            if (on_boundary[h >> 6] >> (h & 63) & 1)
                 boundary = h;
-            h = he[h].prev ^ 1u;
+            h = rotation[h];
         } while (h != h0);
         uint32_t pick = boundary != CG_HEMESH_NONE ? boundary : (uint32_t)h0;
         if (m->vertex_halfedge[v] == CG_HEMESH_NONE) {

@@ -156,6 +156,7 @@ struct cg_renderer {
     float *depth;
     size_t depth_size;
     int depth_valid;
+    int depth_width, depth_height;
     cg_render_stats stats;
 };
 

@@ -657,6 +657,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         r->depth_size = pixels;
     }
     f.depth = r->depth;
+    r->depth_width = f.width;
+    r->depth_height = f.height;
 
     /* Whole-object culling: the bounding box against the six planes. */
     unsigned all = 0x3f;

@@ -61,6 +61,7 @@ static int run(int argc, char **argv)
     const char *mesh_path = NULL, *out_path = NULL;
     int width = 800, height = 600, have_eye = 0, have_target = 0, have_from = 0, algorithm = 0;
     long repeat = 0, threads = 1;
+    int output_depth = 0;
     cg_render_options o;
     cg_render_options_default(&o);
     o.frame_camera = 0;
@@ -174,6 +175,8 @@ static int run(int argc, char **argv)
             o.edges = CG_EDGES_WIREFRAME;
         } else if (cli_option_is(a, "--hidden-line")) {
             o.edges = CG_EDGES_HIDDEN_LINE;
+        } else if (cli_option_is(a, "--output-depth")) {
+            output_depth = 1;
         } else if (cli_option_is(a, "--edges")) {
             o.edges = CG_EDGES_OVERLAY;
         } else if (cli_option_is(a, "--threads")) {
@@ -312,6 +315,10 @@ static int run(int argc, char **argv)
     }
     if (status == CLI_OK && repeat > 0)
         fprintf(stderr, "frame: %.1f ms\n", cli_median(times, frames) * 1e3);
+    if (status == CLI_OK && output_depth) {
+        if (!renderer || cg_renderer_depth_image(renderer, image) != CG_OK)
+            status = cli_fail("render: --output-depth needs --algorithm zbuffer or painter");
+    }
     if (status == CLI_OK)
         status = cli_write_image(image, out_path);
     free(times);
@@ -356,6 +363,7 @@ const cg_command cg_command_render = {
     "  --wireframe           every edge, no faces\n"
     "  --hidden-line         visible edges only\n"
     "  --edges               shaded faces with their visible edges\n"
+    "  --output-depth        write the depth buffer (near light, far dark) instead\n"
     "  --threads N           worker threads, 1 to 64; the picture is the same for any N\n"
     "  --repeat N            render N frames after loading and print the median time\n"
     "                        on stderr as 'frame: 12.3 ms'\n"

@@ -179,24 +179,10 @@ static int render_pipeline(demo_context *context)
     cg_image *image = NULL;
     if (cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
         if (cg_image_create(&image, W, H, CG_PIXEL_RGBA8) == CG_OK
-            && cg_renderer_draw(r, image) == CG_OK) {
-            const float *depth = cg_renderer_depth(r);
-            float lo = 1, hi = 0;
-            for (int i = 0; i < W * H; i++)
-                if (isfinite(depth[i])) {
-                    lo = depth[i] < lo ? depth[i] : lo;
-                    hi = depth[i] > hi ? depth[i] : hi;
-                }
-            for (int y = 0; y < H; y++)
-                for (int x = 0; x < W; x++) {
-                    float d = depth[y * W + x];
-                    uint8_t v = isfinite(d) && hi > lo ? (uint8_t)(235 - 200 * (d - lo) / (hi - lo)) : 0;
-                    cg_image_set_rgba8(image, x, y, (cg_rgba8){v, v, v, 255});
-                }
+            && cg_renderer_draw(r, image) == CG_OK && cg_renderer_depth_image(r, image) == CG_OK)
             status |= demo_add(context, "render-depth.png", image,
                                "The z-buffer after the frame: near is light (window depth, 32-bit float)",
-                               NULL);
-        }
+                               "cg render " BUNNY " --size 320x240 --output-depth -o render-depth.png");
         cg_image_free(image);
         cg_renderer_free(r);
     }

@@ -14,6 +14,7 @@
 #include "cg.h"
 
 #include <string.h>
+#include <time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -77,6 +78,33 @@ static cg_render_options scene_options(cg_shading shading, int threads)
     return o;
 }
 
+/* Median wall time, and the median process CPU time per run in *cpu (all
+ * threads of the process together; steadier than wall time on a loaded
+ * machine). */
+static double cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static double timed(void (*work)(void *), void *context, int runs, double *cpu)
+{
+    double wall[64], used[64];
+    if (runs > 64)
+        runs = 64;
+    for (int i = 0; i < runs; i++) {
+        double c = cpu_now(), w = bench_now();
+        work(context);
+        wall[i] = bench_now() - w;
+        used[i] = cpu_now() - c;
+    }
+    qsort(wall, (size_t)runs, sizeof wall[0], bench_compare);
+    qsort(used, (size_t)runs, sizeof used[0], bench_compare);
+    *cpu = used[runs / 2];
+    return wall[runs / 2];
+}
+
 static int runs_for(size_t triangles)
 {
     return triangles > 500000 ? 5 : triangles > 50000 ? 9 : 15;
@@ -123,7 +151,7 @@ static void gl_measure(scene *scenes, int count, FILE *out)
     OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
     if (!context || !buffer || !OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT)) {
         for (int i = 0; i < count * 2; i++)
-            fprintf(out, "0\n");
+            fprintf(out, "0 0\n");
         return;
     }
     fprintf(stderr, "bench_render: OpenGL renderer: %s\n", (const char *)glGetString(GL_RENDERER));
@@ -205,7 +233,8 @@ static void gl_measure(scene *scenes, int count, FILE *out)
         for (int shading = 0; shading < 2; shading++) {
             glShadeModel(shading == 0 ? GL_FLAT : GL_SMOOTH);
             gl_frame(&job); /* warm-up */
-            fprintf(out, "%.9g\n", bench_median(gl_frame, &job, runs_for(scenes[i].triangles)));
+            double cpu, wall = timed(gl_frame, &job, runs_for(scenes[i].triangles), &cpu);
+            fprintf(out, "%.9g %.9g\n", wall, cpu);
             fflush(out);
         }
         free(normals);
@@ -218,7 +247,7 @@ static void gl_measure(scene *scenes, int count, FILE *out)
 }
 
 /* Runs gl_measure in a child with LP_NUM_THREADS set; fills seconds. */
-static int gl_child(scene *scenes, int count, int threads, double *seconds)
+static int gl_child(scene *scenes, int count, int threads, double *seconds, double *cpu)
 {
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0)
@@ -240,8 +269,8 @@ static int gl_child(scene *scenes, int count, int threads, double *seconds)
     close(pipe_ends[1]);
     FILE *in = fdopen(pipe_ends[0], "r");
     for (int i = 0; i < count * 2; i++)
-        if (fscanf(in, "%lf", &seconds[i]) != 1)
-            seconds[i] = 0;
+        if (fscanf(in, "%lf %lf", &seconds[i], &cpu[i]) != 2)
+            seconds[i] = cpu[i] = 0;
     fclose(in);
     waitpid(child, NULL, 0);
     return 0;
@@ -255,9 +284,9 @@ int main(void)
     cg_image *image;
     cg_image_create(&image, WIDTH, HEIGHT, CG_PIXEL_RGBA8);
     for (int threads = 1; threads <= 2; threads++) {
-        double peer[MAX_SCENES * 2] = {0};
+        double peer[MAX_SCENES * 2] = {0}, peer_cpu[MAX_SCENES * 2] = {0};
 #ifdef CG_HAVE_OSMESA
-        gl_child(scenes, count, threads, peer);
+        gl_child(scenes, count, threads, peer, peer_cpu);
 #endif
         for (int i = 0; i < count; i++)
             for (int shading = 0; shading < 2; shading++) {
@@ -268,18 +297,23 @@ int main(void)
                     continue;
                 cg_job job = {r, image};
                 cg_frame(&job);
-                double t = bench_median(cg_frame, &job, runs_for(scenes[i].triangles));
+                double cpu, t = timed(cg_frame, &job, runs_for(scenes[i].triangles), &cpu);
                 cg_renderer_free(r);
                 char name[256], note[160];
                 snprintf(name, sizeof name, "render 1920x1080 %.40s %zuk tri %s %dT", scenes[i].name,
                          (scenes[i].triangles + 500) / 1000, shading ? "gouraud" : "flat", threads);
-                double p = peer[i * 2 + shading];
-                snprintf(note, sizeof note, "cg %.1f fps%s%.1f fps", 1 / t,
-                         p > 0 ? ", llvmpipe " : "", p > 0 ? 1 / p : 0.0);
+                double p = peer[i * 2 + shading], pc = peer_cpu[i * 2 + shading];
+                if (p > 0)
+                    snprintf(note, sizeof note,
+                             "%.1f vs %.1f fps; CPU per frame cg %.1f ms, llvmpipe %.1f ms", 1 / t,
+                             1 / p, cpu * 1e3, pc * 1e3);
+                else
+                    snprintf(note, sizeof note, "%.1f fps; CPU per frame %.1f ms", 1 / t, cpu * 1e3);
                 if (p > 0)
                     bench_row(name, t, "osmesa", p, note);
                 else
                     bench_row(name, t, "-", 0, "OSMesa not available");
+                fprintf(stderr, "    %s\n", note);
             }
     }
     cg_image_free(image);

@@ -555,6 +555,8 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular,
                                    o->shininess);
     l->material.specular = CG_SPECULAR_BLINN;
+    if (o->specular == 0)
+        l->material.shininess = 1; /* the term is zero anyway: spare its power */
     l->orthographic = camera->orthographic;
     l->eye[0] = (float)camera->eye.x;
     l->eye[1] = (float)camera->eye.y;

@@ -21,6 +21,7 @@
 #ifdef CG_HAVE_OSMESA
 #include <GL/osmesa.h>
 #include <GL/gl.h>
+#include "../tests/gl_camera.h"
 #endif
 
 #define WIDTH 1920
@@ -136,13 +137,6 @@ static void gl_frame(void *context)
     glFinish();
 }
 
-static void gl_matrix(cg_mat4 m, GLdouble out[16])
-{
-    for (int r = 0; r < 4; r++)
-        for (int c = 0; c < 4; c++)
-            out[c * 4 + r] = m.m[r][c];
-}
-
 /* Times every scene and shading in OpenGL with the current LP_NUM_THREADS;
  * writes one line "seconds" per case to out. */
 static void gl_measure(scene *scenes, int count, FILE *out)
@@ -191,16 +185,8 @@ static void gl_measure(scene *scenes, int count, FILE *out)
         cg_camera camera = cg_renderer_camera(r);
         cg_renderer_free(r);
         cg_image_free(probe);
-        cg_mat4 view, projection;
-        cg_camera_view(&camera, &view);
-        cg_camera_projection(&camera, (double)WIDTH / HEIGHT, &projection);
         GLdouble mat[16];
-        glViewport(0, 0, WIDTH, HEIGHT);
-        glMatrixMode(GL_PROJECTION);
-        gl_matrix(projection, mat);
-        glLoadMatrixd(mat);
-        glMatrixMode(GL_MODELVIEW);
-        glLoadIdentity();
+        gl_load_camera(&camera, WIDTH, HEIGHT, 1, mat);
         /* The light direction is given in world space: set it with the
          * identity, then load the view. */
         GLfloat direction[4] = {(GLfloat)o.lights[0].direction.x, (GLfloat)o.lights[0].direction.y,
@@ -215,7 +201,6 @@ static void gl_measure(scene *scenes, int count, FILE *out)
         glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
         glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, color);
         glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, none);
-        gl_matrix(view, mat);
         glLoadMatrixd(mat);
         glEnable(GL_LIGHTING);
         glEnable(GL_LIGHT0);

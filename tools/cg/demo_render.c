@@ -118,37 +118,47 @@ static int render_pipeline(demo_context *context)
     if (!bunny)
         return 1;
     int status = 0;
-    cg_render_options o = base_options();
-    status |= shot(context, bunny, &o, "render-zbuffer.png",
-                   "Z-buffer (5.3): nearest fragment per pixel, Gouraud shading",
-                   "cg render " BUNNY " --size 320x240 -o render-zbuffer.png");
-    o.algorithm = CG_RENDER_PAINTER;
-    status |= shot(context, bunny, &o, "render-painter.png",
-                   "Painter's algorithm (5.2): depth sort with Newell's overlap tests, far to near",
-                   "cg render " BUNNY " --size 320x240 --algorithm painter -o render-painter.png");
-    o = base_options();
-    o.edges = CG_EDGES_WIREFRAME;
-    o.cull = CG_CULL_NONE;
-    status |= shot(context, bunny, &o, "render-wireframe.png",
-                   "Wireframe: every edge, clipped in homogeneous coordinates, Bresenham lines",
-                   "cg render " BUNNY " --size 320x240 --wireframe --cull none -o render-wireframe.png");
-    o.cull = CG_CULL_BACK;
-    status |= shot(context, bunny, &o, "render-wireframe-culled.png",
-                   "Back-face culling (5.1): only faces the camera sees counter-clockwise",
-                   "cg render " BUNNY " --size 320x240 --wireframe -o render-wireframe-culled.png");
-    o.edges = CG_EDGES_HIDDEN_LINE;
-    status |= shot(context, bunny, &o, "render-hidden-line.png",
-                   "Hidden-line removal: edges tested against the z-buffer of the faces",
-                   "cg render " BUNNY " --size 320x240 --hidden-line -o render-hidden-line.png");
-    o = base_options();
-    o.edges = CG_EDGES_OVERLAY;
-    o.shading = CG_SHADING_FLAT;
-    cg_rgba8 edge = {0x1b, 0x1b, 0x1c, 255};
-    o.edge_color = cg_rgba8_to_linear(edge);
-    status |= shot(context, bunny, &o, "render-edges.png",
-                   "Flat-shaded faces with their visible edges",
-                   "cg render " BUNNY " --size 320x240 --edges --edge-color '#1b1b1c' --shading flat "
-                   "-o render-edges.png");
+    /* The bunny under each option of the pipeline. */
+    static const struct variant {
+        const char *file, *caption, *arguments;
+        cg_render_algorithm algorithm;
+        cg_edge_mode edges;
+        cg_cull_mode cull;
+        cg_shading shading;
+    } variants[] = {
+        {"render-zbuffer.png", "Z-buffer (5.3): nearest fragment per pixel, Gouraud shading", "",
+         CG_RENDER_ZBUFFER, CG_EDGES_NONE, CG_CULL_BACK, CG_SHADING_GOURAUD},
+        {"render-painter.png",
+         "Painter's algorithm (5.2): depth sort with Newell's overlap tests, far to near",
+         " --algorithm painter", CG_RENDER_PAINTER, CG_EDGES_NONE, CG_CULL_BACK, CG_SHADING_GOURAUD},
+        {"render-wireframe.png",
+         "Wireframe: every edge, clipped in homogeneous coordinates, Bresenham lines",
+         " --wireframe --cull none", CG_RENDER_ZBUFFER, CG_EDGES_WIREFRAME, CG_CULL_NONE,
+         CG_SHADING_GOURAUD},
+        {"render-wireframe-culled.png",
+         "Back-face culling (5.1): only faces the camera sees counter-clockwise", " --wireframe",
+         CG_RENDER_ZBUFFER, CG_EDGES_WIREFRAME, CG_CULL_BACK, CG_SHADING_GOURAUD},
+        {"render-hidden-line.png", "Hidden-line removal: edges tested against the z-buffer of the faces",
+         " --hidden-line", CG_RENDER_ZBUFFER, CG_EDGES_HIDDEN_LINE, CG_CULL_BACK, CG_SHADING_GOURAUD},
+        {"render-edges.png", "Flat-shaded faces with their visible edges",
+         " --edges --edge-color '#1b1b1c' --shading flat", CG_RENDER_ZBUFFER, CG_EDGES_OVERLAY,
+         CG_CULL_BACK, CG_SHADING_FLAT},
+    };
+    cg_render_options o;
+    for (size_t i = 0; i < sizeof variants / sizeof variants[0]; i++) {
+        const struct variant *v = &variants[i];
+        o = base_options();
+        o.algorithm = v->algorithm;
+        o.edges = v->edges;
+        o.cull = v->cull;
+        o.shading = v->shading;
+        if (v->edges == CG_EDGES_OVERLAY)
+            o.edge_color = cg_rgba8_to_linear((cg_rgba8){0x1b, 0x1b, 0x1c, 255});
+        char command[256];
+        snprintf(command, sizeof command, "cg render " BUNNY " --size 320x240%s -o %s", v->arguments,
+                 v->file);
+        status |= shot(context, bunny, &o, v->file, v->caption, command);
+    }
     o = base_options();
     o.camera.orthographic = 1;
     o.camera.eye = cg_vec3_make(1, 0.6, 1);
@@ -195,23 +205,27 @@ static int render_pipeline(demo_context *context)
         o.cull = CG_CULL_NONE;
         o.camera.eye = cg_vec3_make(0, 0, 4);
         o.ambient = 0.35;
-        o.algorithm = CG_RENDER_DEPTH_SORT;
-        status |= shot(context, cycle, &o, "render-sort-naive.png",
-                       "Plain depth sort: each stick lies over the next, so any order of whole "
-                       "polygons is wrong somewhere",
-                       "cg render sticks.obj --size 320x240 --cull none --ambient 0.35 "
-                       "--algorithm depth-sort -o render-sort-naive.png");
-        o.algorithm = CG_RENDER_PAINTER;
-        status |= shot(context, cycle, &o, "render-sort-painter.png",
-                       "Painter's with Newell's tests: the cycle is found and broken by splitting "
-                       "a polygon along another's plane",
-                       "cg render sticks.obj --size 320x240 --cull none --ambient 0.35 "
-                       "--algorithm painter -o render-sort-painter.png");
-        o.algorithm = CG_RENDER_ZBUFFER;
-        status |= shot(context, cycle, &o, "render-sort-zbuffer.png",
-                       "The z-buffer on the same sticks: per-pixel depth needs no ordering",
-                       "cg render sticks.obj --size 320x240 --cull none --ambient 0.35 "
-                       "-o render-sort-zbuffer.png");
+        static const struct {
+            cg_render_algorithm algorithm;
+            const char *file, *caption, *arguments;
+        } sorts[] = {
+            {CG_RENDER_DEPTH_SORT, "render-sort-naive.png",
+             "Plain depth sort: each stick lies over the next, so any order of whole polygons is "
+             "wrong somewhere", " --algorithm depth-sort"},
+            {CG_RENDER_PAINTER, "render-sort-painter.png",
+             "Painter's with Newell's tests: the cycle is found and broken by splitting a polygon "
+             "along another's plane", " --algorithm painter"},
+            {CG_RENDER_ZBUFFER, "render-sort-zbuffer.png",
+             "The z-buffer on the same sticks: per-pixel depth needs no ordering", ""},
+        };
+        for (int i = 0; i < 3; i++) {
+            char command[256];
+            o.algorithm = sorts[i].algorithm;
+            snprintf(command, sizeof command,
+                     "cg render sticks.obj --size 320x240 --cull none --ambient 0.35%s -o %s",
+                     sorts[i].arguments, sorts[i].file);
+            status |= shot(context, cycle, &o, sorts[i].file, sorts[i].caption, command);
+        }
         cg_mesh_free(cycle);
     }
 

@@ -290,7 +290,14 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             continue;
         }
         if (!any && !painter && v[0]->c[3] > 0 && v[1]->c[3] > 0 && v[2]->c[3] > 0) {
-            /* Inside the frustum: set up from the snapped vertices. */
+            /* Inside the frustum: set up from the snapped vertices; back
+             * faces leave before anything else is read. */
+            int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
+                           - (int64_t)(v[1]->sy - v[0]->sy) * (v[2]->sx - v[0]->sx);
+            if (area > 0 && f->cull) {
+                c->culled++;
+                continue;
+            }
             render_corner corner[3];
             for (int k = 0; k < 3; k++) {
                 corner[k].x = v[k]->sx;

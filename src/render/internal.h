@@ -33,22 +33,21 @@ void render_shade(const render_lighting *lighting, const float position[3], cons
 /* sRGB encoding with a lookup that is exact (same result as
  * cg_linear_to_srgb8) and fast. */
 typedef struct render_encoder {
-    uint8_t code[4097];
+    uint8_t code[4098]; /* code of i / 4096 for i <= 4096, and 255 once more */
 } render_encoder;
 #define RENDER_ENCODER_STEPS 4096
 void render_encoder_init(render_encoder *encoder);
 static inline uint8_t render_encode(const render_encoder *encoder, float linear)
 {
-    if (!(linear > 0))
-        return 0;
-    if (linear >= 1)
-        return 255;
-    int i = (int)(linear * RENDER_ENCODER_STEPS);
+    /* Clamped to [0, 1] (NaN to 0) without branches. */
+    float x = linear > 0 ? linear : 0;
+    x = x < 1 ? x : 1;
+    int i = (int)(x * RENDER_ENCODER_STEPS);
     uint8_t code = encoder->code[i];
     /* The code is monotonic: when both ends of the step agree it is exact. */
     if (code == encoder->code[i + 1])
         return code;
-    return cg_linear_to_srgb8(linear);
+    return cg_linear_to_srgb8(x);
 }
 
 /* ---- clipping in homogeneous coordinates -------------------------------- */

@@ -76,6 +76,14 @@ static inline size_t raster_mode(const render_frame *f, const setup_triangle *t,
     render_edges_at(t, x0, y0, &e);
     const float ia = t->inverse_area, z0 = t->z[0], dz1 = t->z[1] - z0, dz2 = t->z[2] - z0;
     const int n = mode == MODE_GOURAUD ? 3 : f->attribute_count;
+    float w_base = t->iw[0], w_d1 = t->iw[1] - t->iw[0], w_d2 = t->iw[2] - t->iw[0];
+    float p_base[RENDER_MAX_ATTRIBUTES], p_d1[RENDER_MAX_ATTRIBUTES], p_d2[RENDER_MAX_ATTRIBUTES];
+    if (mode != MODE_FLAT)
+        for (int j = 0; j < n; j++) {
+            p_base[j] = t->a[j] * t->iw[0];
+            p_d1[j] = t->a[n + j] * t->iw[1] - p_base[j];
+            p_d2[j] = t->a[2 * n + j] * t->iw[2] - p_base[j];
+        }
     size_t fragments = 0;
     for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
              e.w[2] += e.step_y[2]) {
@@ -101,14 +109,18 @@ static inline size_t raster_mode(const render_frame *f, const setup_triangle *t,
                     store(f, row, x, t->color, rgba8);
                 continue;
             }
-            float q0 = (1 - l1 - l2) * t->iw[0], q1 = l1 * t->iw[1], q2 = l2 * t->iw[2];
-            float s = 1 / (q0 + q1 + q2);
-            q0 *= s;
-            q1 *= s;
-            q2 *= s;
+            /* Perspective-correct: attribute / w and 1 / w are affine on
+             * the screen; divide their interpolants. */
+            float r = 1 / (w_base + l1 * w_d1 + l2 * w_d2);
             float v[RENDER_MAX_ATTRIBUTES];
-            for (int j = 0; j < n; j++)
-                v[j] = q0 * t->a[j] + q1 * t->a[n + j] + q2 * t->a[2 * n + j];
+            if (mode == MODE_GOURAUD) {
+                v[0] = (p_base[0] + l1 * p_d1[0] + l2 * p_d2[0]) * r;
+                v[1] = (p_base[1] + l1 * p_d1[1] + l2 * p_d2[1]) * r;
+                v[2] = (p_base[2] + l1 * p_d1[2] + l2 * p_d2[2]) * r;
+            } else {
+                for (int j = 0; j < n; j++)
+                    v[j] = (p_base[j] + l1 * p_d1[j] + l2 * p_d2[j]) * r;
+            }
             if (mode == MODE_GOURAUD) {
                 store(f, row, x, v, rgba8);
             } else {

@@ -29,4 +29,5 @@ void render_encoder_init(render_encoder *encoder)
 {
     for (int i = 0; i <= RENDER_ENCODER_STEPS; i++)
         encoder->code[i] = cg_linear_to_srgb8((float)i / RENDER_ENCODER_STEPS);
+    encoder->code[RENDER_ENCODER_STEPS + 1] = 255;
 }

@@ -8,5 +8,6 @@
 #include "cg/xform.h"
 #include "cg/draw.h"
 #include "cg/mesh.h"
+#include "cg/trace.h"
 
 #endif

@@ -5,25 +5,33 @@ CMAKE_FLAGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 OUT ?= out
 
-.PHONY: all run test bench deps build clean
+.PHONY: all run test bench deps test-deps build compile clean
 
 all: build
 
+# Packages needed to build; the tests need a few more (deps/test*.txt).
 deps:
+	@scripts/install-deps.sh build
+
+test-deps:
 	@scripts/install-deps.sh build test
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 
-build: deps $(BUILD)/CMakeCache.txt
+compile: $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
+
+build: deps
+	@$(MAKE) --no-print-directory compile
 
 # Renders the demo gallery to $(OUT)/index.html.
 run: build
 	$(BUILD)/tools/cg/cg demo -o $(OUT)
 
 # Builds and runs every test.
-test: build
+test: test-deps
+	@$(MAKE) --no-print-directory compile
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # Builds and runs the benchmarks against the peer libraries; rewrites bench/RESULTS.md.

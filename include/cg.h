@@ -5,6 +5,7 @@
 #include "cg/core.h"
 #include "cg/image.h"
 #include "cg/color.h"
+#include "cg/light.h"
 #include "cg/xform.h"
 #include "cg/draw.h"
 #include "cg/mesh.h"

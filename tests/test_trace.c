@@ -421,21 +421,25 @@ static void test_scene(void)
     cg_mat4 singular = cg_xform3_scale(1, 0, 1, cg_vec3_make(0, 0, 0));
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, &singular, &m) == CG_EINVAL);
     CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 0), &m) == CG_EINVAL);
-    m.transmit = 1;
-    m.ior = 0;
+    m.surface.transmittance = 1;
+    m.surface.refractive_index = -1;
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &m) == CG_EINVAL);
-    m.ior = NAN;
+    m.surface.refractive_index = NAN;
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &m) == CG_EINVAL);
     m = cg_trace_material_default();
-    m.reflect = 2;
+    m.surface.reflectance = 2;
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &m) == CG_EINVAL);
-    cg_trace_light light;
-    memset(&light, 0, sizeof light);
-    light.kind = CG_LIGHT_DIRECTIONAL;
-    light.color = cg_vec3_make(1, 1, 1);
+    m = cg_trace_material_default();
+    m.checker_size = -1;
+    CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &m) == CG_EINVAL);
+    cg_light light = cg_light_directional(cg_vec3_make(0, 0, -1), cg_vec3_make(1, 1, 1));
+    light.direction = cg_vec3_make(0, 0, 0);
     CHECK(cg_trace_scene_add_light(scene, &light) == CG_EINVAL); /* zero direction */
-    light.kind = CG_LIGHT_AREA;
-    CHECK(cg_trace_scene_add_light(scene, &light) == CG_EINVAL); /* no samples */
+    cg_trace_area_light area = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1}, 0};
+    CHECK(cg_trace_scene_add_area_light(scene, &area) == CG_EINVAL); /* no samples */
+    area.samples = 2;
+    area.corner.x = NAN;
+    CHECK(cg_trace_scene_add_area_light(scene, &area) == CG_EINVAL);
 
     /* The empty scene renders the background; a zero-radius sphere is
      * invisible. */
@@ -459,15 +463,14 @@ static void test_scene(void)
      * ray bounces until the depth limit; the render must end. */
     CHECK(cg_trace_scene_create(&scene) == CG_OK);
     cg_trace_material mirror = cg_trace_material_default();
-    mirror.reflect = 1;
+    mirror.surface.reflectance = 1;
     cg_trace_material glass = cg_trace_material_default();
-    glass.transmit = 1;
-    glass.diffuse = 0;
-    glass.ior = 1e-3; /* absurd but valid: total internal reflection almost everywhere */
+    glass.surface.transmittance = 1;
+    glass.surface.kd = 0;
+    glass.surface.refractive_index = 1e-3; /* absurd but valid: total internal reflection */
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 10, NULL, &mirror) == CG_OK);
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, -3), 1, NULL, &glass) == CG_OK);
-    light.kind = CG_LIGHT_POINT;
-    light.position = cg_vec3_make(0, 5, 0);
+    light = cg_light_point(cg_vec3_make(0, 5, 0), cg_vec3_make(1, 1, 1));
     CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
     cam = cg_camera_default();
     cam.eye = cg_vec3_make(0, 0, 0);
@@ -480,6 +483,55 @@ static void test_scene(void)
     cg_image_free(small);
     cg_trace_scene_free(scene);
     cg_image_free(img);
+}
+
+/* A glass sphere of index 1 (and of index 0, which means 1) bends nothing
+ * and reflects nothing: the picture equals the one without the sphere. */
+static void test_index_one(void)
+{
+    cg_image *img[3];
+    cg_camera cam = cg_camera_default();
+    cam.eye = cg_vec3_make(0, 1.5, 6);
+    cam.target = cg_vec3_make(0, 0.5, 0);
+    for (int k = 0; k < 3; k++) {
+        cg_trace_scene *scene;
+        cg_trace_scene_create(&scene);
+        cg_trace_material floor = cg_trace_material_default();
+        floor.checker_size = 0.5;
+        floor.checker_color = cg_vec3_make(0.2, 0.3, 0.9);
+        cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &floor);
+        cg_light l = cg_light_directional(cg_vec3_make(0, -1, 0), cg_vec3_make(1, 1, 1));
+        cg_trace_scene_add_light(scene, &l);
+        if (k > 0) {
+            cg_trace_material glass = cg_trace_material_default();
+            glass.surface.ka = glass.surface.kd = glass.surface.ks = 0;
+            glass.surface.transmittance = 1;
+            glass.surface.refractive_index = k == 1 ? 1 : 0;
+            CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 1, 0), 1, NULL, &glass) == CG_OK);
+        }
+        cg_image_create(&img[k], 40, 30, CG_PIXEL_RGBAF);
+        cg_trace_options opt = cg_trace_options_default();
+        opt.shadows = 0;
+        CHECK(cg_trace_render(scene, &cam, &opt, img[k], NULL) == CG_OK);
+        cg_trace_scene_free(scene);
+    }
+    double worst0 = 0;
+    for (int y = 0; y < 30; y++)
+        for (int x = 0; x < 40; x++) {
+            cg_rgbaf b = cg_image_get(img[1], x, y), c = cg_image_get(img[2], x, y);
+            worst0 = fmax(worst0, fabs(c.r - b.r) + fabs(c.g - b.g) + fabs(c.b - b.b));
+        }
+    /* Pixels whose ray passes within rounding of a checker edge may flip. */
+    long differ = 0;
+    for (int y = 0; y < 30; y++)
+        for (int x = 0; x < 40; x++) {
+            cg_rgbaf a = cg_image_get(img[0], x, y), b = cg_image_get(img[1], x, y);
+            differ += fabs(a.r - b.r) > 1e-4;
+        }
+    CHECK_MSG(differ <= 2, "index-1 sphere changes %ld pixels", differ);
+    CHECK_NEAR(worst0, 0, 0);
+    for (int k = 0; k < 3; k++)
+        cg_image_free(img[k]);
 }
 
 /* A mesh with NaN vertices, degenerate faces and out-of-range indices. */
@@ -497,11 +549,9 @@ static void test_mesh_input(void)
     CHECK(cg_trace_scene_create(&scene) == CG_OK);
     cg_trace_material m = cg_trace_material_default();
     CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, &m) == CG_OK);
-    cg_trace_light light;
-    memset(&light, 0, sizeof light);
-    light.kind = CG_LIGHT_DIRECTIONAL;
-    light.color = cg_vec3_make(1, 1, 1);
-    light.direction = cg_vec3_make(0, 0, 1);
+    cg_light light = cg_light_directional(cg_vec3_make(0, 0, -1), cg_vec3_make(1, 1, 1));
+    CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
+    light = cg_light_ambient(cg_vec3_make(0.1, 0.1, 0.1));
     CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
     cg_camera cam = cg_camera_default();
     cg_image *img;
@@ -529,14 +579,13 @@ static void test_shadow(void)
     cg_trace_scene *scene;
     CHECK(cg_trace_scene_create(&scene) == CG_OK);
     cg_trace_material m = cg_trace_material_default();
-    m.specular = 0;
+    m.surface.ks = 0;
     CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &m) == CG_OK);
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 2, 0), 1, NULL, &m) == CG_OK);
-    cg_trace_light light;
-    memset(&light, 0, sizeof light);
-    light.kind = CG_LIGHT_DIRECTIONAL;
-    light.color = cg_vec3_make(1, 1, 1);
-    light.direction = cg_vec3_make(1, 1, 0);
+    /* Light from (1, 1, 0): it travels along (-1, -1, 0). */
+    cg_light light = cg_light_directional(cg_vec3_make(-1, -1, 0), cg_vec3_make(1, 1, 1));
+    CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
+    light = cg_light_ambient(cg_vec3_make(0.1, 0.1, 0.1));
     CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
     cg_camera cam = cg_camera_default();
     cam.eye = cg_vec3_make(0, 10, 0);
@@ -568,6 +617,7 @@ int main(void)
     test_bvh();
     test_scene();
     test_mesh_input();
+    test_index_one();
     test_shadow();
     return check_finish();
 }

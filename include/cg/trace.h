@@ -5,7 +5,8 @@
  *    heuristic, 32-byte nodes) with a watertight ray-triangle test; nearest
  *    hit and any-hit (shadow) queries.  Usable on its own.
  *  - cg_trace_scene: triangle meshes, spheres and planes with materials and
- *    per-object transformations, lights (directional, point, area), and a
+ *    per-object transformations, the lights of cg/light.h plus area lights,
+ *    shaded by cg/light.h's illumination model, and a
  *    Whitted-style renderer (shadows, mirror reflection, refraction with total
  *    internal reflection and Schlick's Fresnel, recursion limit, stratified
  *    supersampling, tiles on threads with output independent of the thread
@@ -20,6 +21,7 @@
 
 #include "cg/core.h"
 #include "cg/image.h"
+#include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
 
@@ -88,41 +90,31 @@ cg_vec3 cg_reflect(cg_vec3 incident, cg_vec3 n);
 int cg_refract(cg_vec3 incident, cg_vec3 n, double n1, double n2, cg_vec3 *out);
 /* Schlick's approximation of the Fresnel reflectance for an incident ray
  * making cos_incident with the normal, going from index n1 to n2; 1 under total
- * internal reflection. */
+ * internal reflection, 0 when n1 == n2 (no interface), 1 for an invalid index. */
 double cg_fresnel_schlick(double cos_incident, double n1, double n2);
 
 /* ---- scenes --------------------------------------------------------------- */
 
+/* A surface: the shared illumination material of cg/light.h (colour,
+ * ka, kd, ks, shininess, and the ray tracer's reflectance, transmittance and
+ * refractive index, where 0 means 1) and an optional 3D checker pattern. */
 typedef struct cg_trace_material {
-    cg_vec3 color;         /* diffuse colour, linear light */
-    cg_vec3 checker_color; /* second colour of a 3D checker pattern */
-    double checker_size;   /* cell size of the checker; 0 for plain colour */
-    double ambient;        /* ambient coefficient */
-    double diffuse;        /* Lambertian coefficient */
-    double specular;       /* Blinn-Phong highlight coefficient */
-    double shininess;      /* Blinn-Phong exponent */
-    double reflect;        /* mirror reflectance (0..1) */
-    double transmit;       /* transparency (0..1): refracted, Fresnel-weighted */
-    double ior;            /* index of refraction of the inside (> 0) */
+    cg_material surface;
+    cg_vec3 checker_color; /* second colour of the checker */
+    double checker_size;   /* cell size; 0 for the plain colour */
 } cg_trace_material;
 
-/* Matte white: ambient 0.1, diffuse 0.9, small highlight, ior 1.5. */
+/* White, ka 1, kd 0.9, ks 0.2, shininess 32, Blinn-Phong, opaque. */
 cg_trace_material cg_trace_material_default(void);
 
-typedef enum cg_trace_light_kind {
-    CG_LIGHT_DIRECTIONAL, /* from direction (toward the light), at infinity */
-    CG_LIGHT_POINT,       /* at position */
-    CG_LIGHT_AREA         /* parallelogram position + s edge_u + t edge_v, s, t in [0, 1] */
-} cg_trace_light_kind;
-
-typedef struct cg_trace_light {
-    cg_trace_light_kind kind;
-    cg_vec3 color;       /* intensity, linear light */
-    cg_vec3 direction;   /* CG_LIGHT_DIRECTIONAL: toward the light */
-    cg_vec3 position;    /* CG_LIGHT_POINT, CG_LIGHT_AREA */
-    cg_vec3 edge_u, edge_v; /* CG_LIGHT_AREA */
-    int samples;         /* CG_LIGHT_AREA: samples per side (samples^2 shadow rays) */
-} cg_trace_light;
+/* A rectangular (parallelogram) light: corner + s edge_u + t edge_v for s, t
+ * in [0, 1], sampled on a samples x samples jittered grid for soft shadows;
+ * each sample acts as a point light of color / samples^2. */
+typedef struct cg_trace_area_light {
+    cg_vec3 corner, edge_u, edge_v;
+    cg_vec3 color;
+    int samples; /* 1 to 64 */
+} cg_trace_area_light;
 
 typedef struct cg_trace_scene cg_trace_scene;
 
@@ -143,7 +135,11 @@ cg_status cg_trace_scene_add_sphere(cg_trace_scene *scene, cg_vec3 center, doubl
 /* An infinite plane through point with normal (need not be unit). */
 cg_status cg_trace_scene_add_plane(cg_trace_scene *scene, cg_vec3 point, cg_vec3 normal,
                                    const cg_trace_material *material);
-cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_trace_light *light);
+/* A light of cg/light.h (ambient, point, directional, spot); point,
+ * directional and spot lights cast shadows.  CG_EINVAL when cg_light_check
+ * rejects it. */
+cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light);
+cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_area_light *light);
 /* Builds the acceleration structure; called by cg_trace_render when needed.
  * *seconds (may be NULL) receives the BVH build time. */
 cg_status cg_trace_scene_build(cg_trace_scene *scene, double *seconds);

@@ -63,8 +63,10 @@ typedef struct trace_object {
 struct cg_trace_scene {
     trace_object *objects;
     size_t object_count, object_capacity;
-    cg_trace_light *lights;
+    cg_light *lights;
     size_t light_count, light_capacity;
+    cg_trace_area_light *area_lights;
+    size_t area_light_count, area_light_capacity;
     /* Triangles of all meshes, in world space. */
     cg_vec3 *positions, *normals;
     size_t vertex_count, vertex_capacity, normal_capacity;

@@ -32,6 +32,8 @@ double cg_fresnel_schlick(double cos_incident, double n1, double n2)
 {
     if (!valid_index(n1) || !valid_index(n2))
         return 1;
+    if (n1 == n2)
+        return 0; /* no interface: nothing is reflected */
     double c = fabs(cos_incident);
     if (c > 1)
         c = 1;

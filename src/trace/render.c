@@ -58,45 +58,28 @@ typedef struct context {
     const cg_trace_scene *scene;
     const cg_trace_options *options;
     uint64_t rays;
+    double *visibility; /* one per scene light */
 } context;
 
 static cg_vec3 surface_color(const trace_object *o, cg_vec3 p)
 {
     const cg_trace_material *m = &o->material;
     if (!(m->checker_size > 0))
-        return m->color;
+        return m->surface.color;
     double s = m->checker_size;
-    long parity;
+    double parity;
     if (o->kind == TRACE_PLANE) {
+        /* In the plane's own axes, so a floor is not speckled by rounding of
+         * its height. */
         cg_vec3 d = cg_vec3_sub(p, o->center);
-        parity = (long)floor(cg_vec3_dot(d, o->axis_u) / s) + (long)floor(cg_vec3_dot(d, o->axis_v) / s);
+        parity = floor(cg_vec3_dot(d, o->axis_u) / s) + floor(cg_vec3_dot(d, o->axis_v) / s);
     } else {
-        parity = (long)floor(p.x / s) + (long)floor(p.y / s) + (long)floor(p.z / s);
+        parity = floor(p.x / s) + floor(p.y / s) + floor(p.z / s);
     }
-    return parity & 1 ? m->checker_color : m->color;
+    return fmod(fabs(parity), 2) == 1 ? m->checker_color : m->surface.color;
 }
 
-/* The local illumination of one light sample: Lambertian diffuse plus a
- * Blinn-Phong highlight.  n, to_viewer and to_light are unit vectors.  This is
- * the one place the illumination model enters the ray tracer. */
-static cg_vec3 shade_light(const cg_trace_material *m, cg_vec3 base, cg_vec3 n, cg_vec3 to_viewer,
-                           cg_vec3 to_light, cg_vec3 light_color)
-{
-    double diffuse = cg_vec3_dot(n, to_light);
-    if (diffuse <= 0)
-        return cg_vec3_make(0, 0, 0);
-    cg_vec3 c = cg_vec3_scale(base, m->diffuse * diffuse);
-    if (m->specular > 0) {
-        cg_vec3 half = cg_vec3_normalize(cg_vec3_add(to_viewer, to_light));
-        double h = cg_vec3_dot(n, half);
-        if (h > 0) {
-            double s = m->specular * pow(h, m->shininess);
-            c = cg_vec3_add(c, cg_vec3_make(s, s, s));
-        }
-    }
-    return cg_vec3_mul(c, light_color);
-}
-
+/* Is the light at distance along the unit vector to_light unobstructed? */
 static int visible(context *ctx, const trace_hit *hit, cg_vec3 n_geometric, cg_vec3 to_light,
                    double distance)
 {
@@ -107,43 +90,48 @@ static int visible(context *ctx, const trace_hit *hit, cg_vec3 n_geometric, cg_v
     return !trace_occluded(ctx->scene, origin, to_light, 0, distance);
 }
 
-static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const trace_object *o, cg_vec3 base,
+/* Local illumination at the hit through the shared model of cg/light.h,
+ * with each light's visibility found by a shadow ray; area lights are
+ * sampled as point lights on a jittered grid. */
+static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material *material,
                           cg_vec3 n, cg_vec3 n_geometric, cg_vec3 to_viewer, sampler *rng)
 {
-    const cg_trace_material *m = &o->material;
-    cg_vec3 sum = cg_vec3_scale(base, m->ambient);
-    if (m->diffuse == 0 && m->specular == 0)
-        return sum;
-    for (size_t i = 0; i < ctx->scene->light_count; i++) {
-        const cg_trace_light *l = &ctx->scene->lights[i];
-        if (l->kind == CG_LIGHT_DIRECTIONAL) {
-            if (cg_vec3_dot(n_geometric, l->direction) <= 0 && cg_vec3_dot(n, l->direction) <= 0)
-                continue;
-            if (visible(ctx, hit, n_geometric, l->direction, INFINITY))
-                sum = cg_vec3_add(sum, shade_light(m, base, n, to_viewer, l->direction, l->color));
-            continue;
+    const cg_trace_scene *scene = ctx->scene;
+    int lit = material->kd > 0 || material->ks > 0;
+    for (size_t i = 0; i < scene->light_count; i++) {
+        const cg_light *l = &scene->lights[i];
+        cg_vec3 to_light;
+        double distance;
+        if (l->kind == CG_LIGHT_AMBIENT) {
+            ctx->visibility[i] = 1;
+        } else if (!lit || !cg_light_vector(l, hit->point, &to_light, &distance)
+                   || cg_vec3_dot(n_geometric, to_light) <= 0 || cg_vec3_dot(n, to_light) <= 0) {
+            ctx->visibility[i] = 0;
+        } else {
+            ctx->visibility[i] = visible(ctx, hit, n_geometric, to_light, distance);
         }
-        int side = l->kind == CG_LIGHT_AREA ? l->samples : 1;
-        double weight = 1.0 / (side * side);
+    }
+    cg_vec3 sum = cg_shade_terms_sum(cg_light_shade_terms(hit->point, n, to_viewer, material,
+                                                          scene->lights, scene->light_count,
+                                                          ctx->visibility));
+    for (size_t i = 0; lit && i < scene->area_light_count; i++) {
+        const cg_trace_area_light *l = &scene->area_lights[i];
+        int side = l->samples;
+        cg_vec3 color = cg_vec3_scale(l->color, 1.0 / (side * side));
         for (int sy = 0; sy < side; sy++)
             for (int sx = 0; sx < side; sx++) {
-                cg_vec3 target = l->position;
-                if (l->kind == CG_LIGHT_AREA) {
-                    /* One jittered sample in each cell of a side x side grid. */
-                    double a = (sx + next_random(rng)) / side, b = (sy + next_random(rng)) / side;
-                    target = cg_vec3_add(target, cg_vec3_add(cg_vec3_scale(l->edge_u, a),
-                                                             cg_vec3_scale(l->edge_v, b)));
-                }
-                cg_vec3 d = cg_vec3_sub(target, hit->point);
-                double distance = cg_vec3_length(d);
-                if (!(distance > 0))
+                /* One jittered sample in each cell of a side x side grid. */
+                double a = (sx + next_random(rng)) / side, b = (sy + next_random(rng)) / side;
+                cg_vec3 target = cg_vec3_add(l->corner, cg_vec3_add(cg_vec3_scale(l->edge_u, a),
+                                                                    cg_vec3_scale(l->edge_v, b)));
+                cg_light point = cg_light_point(target, color);
+                cg_vec3 to_light;
+                double distance;
+                if (!cg_light_vector(&point, hit->point, &to_light, &distance)
+                    || cg_vec3_dot(n_geometric, to_light) <= 0 || cg_vec3_dot(n, to_light) <= 0)
                     continue;
-                d = cg_vec3_scale(d, 1 / distance);
-                if (cg_vec3_dot(n_geometric, d) <= 0)
-                    continue;
-                if (visible(ctx, hit, n_geometric, d, distance))
-                    sum = cg_vec3_add(sum, cg_vec3_scale(shade_light(m, base, n, to_viewer, d, l->color),
-                                                         weight));
+                if (visible(ctx, hit, n_geometric, to_light, distance))
+                    sum = cg_vec3_add(sum, cg_light_shade(hit->point, n, to_viewer, material, &point, 1));
             }
     }
     return sum;
@@ -164,7 +152,7 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, int depth,
     if (hit_any)
         *hit_any = 1;
     const trace_object *o = &ctx->scene->objects[hit.object];
-    const cg_trace_material *m = &o->material;
+    cg_material material = o->material.surface;
     /* Normals facing the incoming ray; entering tells which side we are on. */
     int entering = cg_vec3_dot(hit.normal, direction) < 0;
     cg_vec3 ng = entering ? hit.normal : cg_vec3_scale(hit.normal, -1);
@@ -172,29 +160,31 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, int depth,
     if (cg_vec3_dot(n, ng) < 0)
         n = cg_vec3_scale(n, -1);
     cg_vec3 to_viewer = cg_vec3_scale(direction, -1);
-    cg_vec3 base = surface_color(o, hit.point);
-    cg_vec3 color = illuminate(ctx, &hit, o, base, n, ng, to_viewer, rng);
+    material.color = surface_color(o, hit.point);
+    cg_vec3 color = illuminate(ctx, &hit, &material, n, ng, to_viewer, rng);
     if (depth >= opt->max_depth)
         return color;
     cg_vec3 mirror = cg_reflect(direction, n);
     if (cg_vec3_dot(mirror, ng) <= 0)
         mirror = cg_reflect(direction, ng);
-    double reflect_weight = m->reflect;
-    if (m->transmit > 0) {
-        double n1 = entering ? 1 : m->ior, n2 = entering ? m->ior : 1;
+    double reflect_weight = material.reflectance, transmit = material.transmittance;
+    if (transmit > 0) {
+        /* Refractive index 0 means 1 (cg/light.h): no bending. */
+        double ior = material.refractive_index > 0 ? material.refractive_index : 1;
+        double n1 = entering ? 1 : ior, n2 = entering ? ior : 1;
         cg_vec3 refracted;
         double cos_i = -cg_vec3_dot(direction, n);
         if (cg_refract(direction, n, n1, n2, &refracted) && cg_vec3_dot(refracted, ng) < 0) {
             double fresnel = cg_fresnel_schlick(cos_i, n1, n2);
-            reflect_weight += m->transmit * fresnel;
-            double w = m->transmit * (1 - fresnel);
+            reflect_weight += transmit * fresnel;
+            double w = transmit * (1 - fresnel);
             if (w * weight >= MIN_WEIGHT) {
                 cg_vec3 c = trace(ctx, trace_offset(&hit, cg_vec3_scale(ng, -1)), refracted,
                                   depth + 1, weight * w, rng, NULL);
                 color = cg_vec3_add(color, cg_vec3_scale(c, w));
             }
         } else {
-            reflect_weight += m->transmit; /* total internal reflection */
+            reflect_weight += transmit; /* total internal reflection */
         }
     }
     if (reflect_weight > 0 && reflect_weight * weight >= MIN_WEIGHT) {
@@ -218,6 +208,8 @@ typedef struct job {
     int next_tile, done_tiles;
     pthread_mutex_t lock;
     uint64_t rays;
+    double *visibility; /* light_count per thread */
+    int next_slot;
 } job;
 
 static void render_pixel(const job *j, context *ctx, int x, int y)
@@ -260,7 +252,10 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
 static void *worker(void *arg)
 {
     job *j = arg;
-    context ctx = {j->scene, j->options, 0};
+    pthread_mutex_lock(&j->lock);
+    size_t slot = (size_t)j->next_slot++;
+    pthread_mutex_unlock(&j->lock);
+    context ctx = {j->scene, j->options, 0, j->visibility + slot * j->scene->light_count};
     for (;;) {
         pthread_mutex_lock(&j->lock);
         int tile = j->next_tile++;
@@ -354,9 +349,14 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
     if ((double)j.tiles_x * tiles_y > 0x7fffffff)
         return CG_ERANGE;
     j.tiles_total = j.tiles_x * tiles_y;
-    if (pthread_mutex_init(&j.lock, NULL) != 0)
-        return CG_ENOMEM;
     int threads = opt.threads < j.tiles_total ? opt.threads : j.tiles_total;
+    j.visibility = malloc(((size_t)threads * scene->light_count + 1) * sizeof *j.visibility);
+    if (!j.visibility)
+        return CG_ENOMEM;
+    if (pthread_mutex_init(&j.lock, NULL) != 0) {
+        free(j.visibility);
+        return CG_ENOMEM;
+    }
     pthread_t ids[MAX_THREADS];
     int started = 0;
     for (int i = 1; i < threads; i++) {
@@ -368,6 +368,7 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
     for (int i = 0; i < started; i++)
         pthread_join(ids[i], NULL);
     pthread_mutex_destroy(&j.lock);
+    free(j.visibility);
     if (stats) {
         stats->build_seconds = build;
         stats->render_seconds = seconds_since(&start);
@@ -380,52 +381,48 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
 
 cg_status cg_trace_scene_classic(cg_trace_scene **out)
 {
+    if (!out)
+        return CG_EINVAL;
     cg_trace_scene *scene;
     cg_status s = cg_trace_scene_create(&scene);
     if (s != CG_OK)
         return s;
     cg_trace_material floor = cg_trace_material_default();
-    floor.color = cg_vec3_make(0.85, 0.85, 0.8);
+    floor.surface.color = cg_vec3_make(0.85, 0.85, 0.8);
+    floor.surface.ks = 0;
+    floor.surface.reflectance = 0.08;
     floor.checker_color = cg_vec3_make(0.08, 0.1, 0.25);
     floor.checker_size = 1;
-    floor.specular = 0;
-    floor.reflect = 0.08;
 
     cg_trace_material glass = cg_trace_material_default();
-    glass.color = cg_vec3_make(1, 1, 1);
-    glass.ambient = 0;
-    glass.diffuse = 0;
-    glass.specular = 0.8;
-    glass.shininess = 200;
-    glass.transmit = 1;
-    glass.ior = 1.5;
+    glass.surface.ka = 0;
+    glass.surface.kd = 0;
+    glass.surface.ks = 0.8;
+    glass.surface.shininess = 200;
+    glass.surface.transmittance = 1;
+    glass.surface.refractive_index = 1.5;
 
     cg_trace_material mirror = cg_trace_material_default();
-    mirror.color = cg_vec3_make(0.9, 0.9, 0.95);
-    mirror.ambient = 0.02;
-    mirror.diffuse = 0.05;
-    mirror.specular = 0.8;
-    mirror.shininess = 200;
-    mirror.reflect = 0.85;
+    mirror.surface.color = cg_vec3_make(0.9, 0.9, 0.95);
+    mirror.surface.ka = 0.2;
+    mirror.surface.kd = 0.05;
+    mirror.surface.ks = 0.8;
+    mirror.surface.shininess = 200;
+    mirror.surface.reflectance = 0.85;
 
     cg_trace_material red = cg_trace_material_default();
-    red.color = cg_vec3_make(0.8, 0.12, 0.08);
-    red.specular = 0.4;
-    red.shininess = 60;
+    red.surface.color = cg_vec3_make(0.8, 0.12, 0.08);
+    red.surface.ks = 0.4;
+    red.surface.shininess = 60;
 
-    cg_trace_light sun;
-    memset(&sun, 0, sizeof sun);
-    sun.kind = CG_LIGHT_AREA;
-    sun.color = cg_vec3_make(0.9, 0.88, 0.8);
-    sun.position = cg_vec3_make(-4, 8, 2);
+    cg_trace_area_light sun;
+    sun.corner = cg_vec3_make(-5, 8, 1);
     sun.edge_u = cg_vec3_make(2, 0, 0);
     sun.edge_v = cg_vec3_make(0, 0, 2);
+    sun.color = cg_vec3_make(0.9, 0.88, 0.8);
     sun.samples = 3;
-    cg_trace_light fill;
-    memset(&fill, 0, sizeof fill);
-    fill.kind = CG_LIGHT_DIRECTIONAL;
-    fill.color = cg_vec3_make(0.2, 0.22, 0.28);
-    fill.direction = cg_vec3_make(1, 2, 3);
+    cg_light ambient = cg_light_ambient(cg_vec3_make(0.12, 0.12, 0.14));
+    cg_light fill = cg_light_directional(cg_vec3_make(-1, -2, -3), cg_vec3_make(0.2, 0.22, 0.28));
 
     if ((s = cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &floor))
             != CG_OK
@@ -434,7 +431,8 @@ cg_status cg_trace_scene_classic(cg_trace_scene **out)
                != CG_OK
         || (s = cg_trace_scene_add_sphere(scene, cg_vec3_make(2.1, 0.7, -1.2), 0.7, NULL, &red))
                != CG_OK
-        || (s = cg_trace_scene_add_light(scene, &sun)) != CG_OK
+        || (s = cg_trace_scene_add_area_light(scene, &sun)) != CG_OK
+        || (s = cg_trace_scene_add_light(scene, &ambient)) != CG_OK
         || (s = cg_trace_scene_add_light(scene, &fill)) != CG_OK) {
         cg_trace_scene_free(scene);
         return s;

@@ -12,12 +12,8 @@ cg_trace_material cg_trace_material_default(void)
 {
     cg_trace_material m;
     memset(&m, 0, sizeof m);
-    m.color = cg_vec3_make(1, 1, 1);
-    m.ambient = 0.1;
-    m.diffuse = 0.9;
-    m.specular = 0.2;
-    m.shininess = 32;
-    m.ior = 1.5;
+    m.surface = cg_material_make(cg_vec3_make(1, 1, 1), 1, 0.9, 0.2, 32);
+    m.surface.specular = CG_SPECULAR_BLINN;
     return m;
 }
 
@@ -28,19 +24,12 @@ static int finite3(cg_vec3 v)
 
 static int material_valid(const cg_trace_material *m)
 {
-    if (!finite3(m->color) || !finite3(m->checker_color) || !isfinite(m->checker_size)
-        || m->checker_size < 0)
+    if (cg_material_check(&m->surface, NULL) != CG_OK)
         return 0;
-    const double k[] = {m->ambient, m->diffuse, m->specular, m->shininess, m->reflect, m->transmit};
-    for (size_t i = 0; i < sizeof k / sizeof k[0]; i++)
-        if (!isfinite(k[i]) || k[i] < 0)
-            return 0;
-    if (m->reflect > 1 || m->transmit > 1)
+    if (!finite3(m->checker_color) || m->checker_color.x < 0 || m->checker_color.y < 0
+        || m->checker_color.z < 0 || !isfinite(m->checker_size) || m->checker_size < 0)
         return 0;
-    /* The index of refraction matters only for transparent objects. */
-    if (m->transmit > 0 && !(isfinite(m->ior) && m->ior > 0))
-        return 0;
-    return 1;
+    return m->surface.reflectance <= 1 && m->surface.transmittance <= 1;
 }
 
 cg_status cg_trace_scene_create(cg_trace_scene **out)
@@ -57,6 +46,7 @@ void cg_trace_scene_free(cg_trace_scene *scene)
         return;
     free(scene->objects);
     free(scene->lights);
+    free(scene->area_lights);
     free(scene->positions);
     free(scene->normals);
     free(scene->indices);
@@ -240,33 +230,27 @@ cg_status cg_trace_scene_add_plane(cg_trace_scene *scene, cg_vec3 point, cg_vec3
     return add_object(scene, &o);
 }
 
-cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_trace_light *light)
+cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light)
 {
-    if (!scene || !light || !finite3(light->color))
+    if (!scene || !light || cg_light_check(light, NULL) != CG_OK)
         return CG_EINVAL;
-    cg_trace_light l = *light;
-    switch (l.kind) {
-    case CG_LIGHT_DIRECTIONAL:
-        if (!finite3(l.direction) || !(cg_vec3_length(l.direction) > 0))
-            return CG_EINVAL;
-        l.direction = cg_vec3_normalize(l.direction);
-        break;
-    case CG_LIGHT_POINT:
-        if (!finite3(l.position))
-            return CG_EINVAL;
-        break;
-    case CG_LIGHT_AREA:
-        if (!finite3(l.position) || !finite3(l.edge_u) || !finite3(l.edge_v) || l.samples < 1
-            || l.samples > 64)
-            return CG_EINVAL;
-        break;
-    default:
-        return CG_EINVAL;
-    }
     if (!reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count + 1,
                  sizeof *scene->lights))
         return CG_ENOMEM;
-    scene->lights[scene->light_count++] = l;
+    scene->lights[scene->light_count++] = *light;
+    return CG_OK;
+}
+
+cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_area_light *light)
+{
+    if (!scene || !light || !finite3(light->corner) || !finite3(light->edge_u)
+        || !finite3(light->edge_v) || !finite3(light->color) || light->color.x < 0
+        || light->color.y < 0 || light->color.z < 0 || light->samples < 1 || light->samples > 64)
+        return CG_EINVAL;
+    if (!reserve((void **)&scene->area_lights, &scene->area_light_capacity,
+                 scene->area_light_count + 1, sizeof *scene->area_lights))
+        return CG_ENOMEM;
+    scene->area_lights[scene->area_light_count++] = *light;
     return CG_OK;
 }
 

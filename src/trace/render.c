@@ -419,9 +419,9 @@ cg_status cg_trace_scene_classic(cg_trace_scene **out)
     sun.corner = cg_vec3_make(-5, 8, 1);
     sun.edge_u = cg_vec3_make(2, 0, 0);
     sun.edge_v = cg_vec3_make(0, 0, 2);
-    sun.color = cg_vec3_make(0.9, 0.88, 0.8);
+    sun.color = cg_vec3_make(1.0, 0.97, 0.9);
     sun.samples = 3;
-    cg_light ambient = cg_light_ambient(cg_vec3_make(0.12, 0.12, 0.14));
+    cg_light ambient = cg_light_ambient(cg_vec3_make(0.1, 0.1, 0.12));
     cg_light fill = cg_light_directional(cg_vec3_make(-1, -2, -3), cg_vec3_make(0.2, 0.22, 0.28));
 
     if ((s = cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &floor))

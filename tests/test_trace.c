@@ -4,6 +4,7 @@
 #include "check.h"
 #include "trace_meshes.h"
 #include "cg/trace.h"
+#include "../src/trace/internal.h" /* to compare trees node by node */
 
 #include <string.h>
 
@@ -131,6 +132,21 @@ static void test_bvh(void)
     check_against_brute("soup", &rand, 600000 / RAY_SCALE, &rng);
     check_watertight("sphere", &sphere, inside_sphere, 600000 / RAY_SCALE, &rng);
     check_watertight("torus", &ring, inside_torus, 600000 / RAY_SCALE, &rng);
+
+    /* Built on two threads: the very same tree, node for node. */
+    soup big = bumpy_sphere(&rng, 60, 90, 0.05);
+    cg_bvh *one, *two;
+    CHECK(cg_bvh_build(big.p, big.nv, big.idx, big.nt, &one) == CG_OK);
+    CHECK(cg_bvh_build_threads(big.p, big.nv, big.idx, big.nt, 2, &two) == CG_OK);
+    CHECK_EQ_INT(one->node_count, two->node_count);
+    CHECK(one->node_count == two->node_count
+          && memcmp(one->nodes, two->nodes, one->node_count * sizeof *one->nodes) == 0);
+    CHECK(memcmp(one->triangles, two->triangles, one->triangle_count * sizeof *one->triangles) == 0);
+    cg_bvh_free(one);
+    cg_bvh_free(two);
+    CHECK(cg_bvh_build_threads(big.p, big.nv, big.idx, big.nt, 0, &two) == CG_EINVAL);
+    check_against_brute("big sphere", &big, 8000 / RAY_SCALE, &rng);
+    soup_free(&big);
 
     /* The same closed mesh far from the origin and scaled up: still
      * watertight (rays from its centre). */

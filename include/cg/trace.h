@@ -42,6 +42,11 @@ typedef struct cg_bvh cg_bvh;
  * of range, CG_ERANGE above 2^31 - 1 triangles, CG_ENOMEM. */
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
                        size_t triangle_count, cg_bvh **out);
+/* The same tree built with up to threads threads (the root's two subtrees
+ * in parallel). */
+cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
+                               const uint32_t *indices, size_t triangle_count, int threads,
+                               cg_bvh **out);
 void cg_bvh_free(cg_bvh *bvh);
 
 typedef struct cg_bvh_stats {
@@ -140,9 +145,10 @@ cg_status cg_trace_scene_add_plane(cg_trace_scene *scene, cg_vec3 point, cg_vec3
  * rejects it. */
 cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light);
 cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_area_light *light);
-/* Builds the acceleration structure; called by cg_trace_render when needed.
- * *seconds (may be NULL) receives the BVH build time. */
-cg_status cg_trace_scene_build(cg_trace_scene *scene, double *seconds);
+/* Builds the acceleration structure on up to threads threads (the tree is the
+ * same for any count); cg_trace_render calls it when needed.  *seconds (may
+ * be NULL) receives the BVH build time. */
+cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *seconds);
 /* Bounds of the finite objects (planes excluded); CG_EEMPTY when none. */
 cg_status cg_trace_scene_bounds(const cg_trace_scene *scene, cg_vec3 *lo, cg_vec3 *hi);
 

@@ -4,52 +4,134 @@
 #include "internal.h"
 
 #include <float.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
 enum {
-    BINS = 32,        /* bins per axis for the SAH sweep */
+    BINS = 32,        /* most bins per axis for the SAH sweep */
     MAX_LEAF = 8,     /* a node with more triangles is always split */
     SAH_DEPTH = 48,   /* deeper than this, split at the object median */
-    STACK_SIZE = 128  /* > SAH_DEPTH + 32: the deepest possible tree */
+    STACK_SIZE = 128, /* > SAH_DEPTH + 32: the deepest possible tree */
+    PARALLEL_MIN = 4096 /* fewer triangles: build on one thread */
 };
+
+/* ---- four-float vectors: SSE2 where available, plain C elsewhere -------- */
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+typedef __m128 v4;
+static inline v4 v4_load(const float *p) { return _mm_loadu_ps(p); }
+static inline v4 v4_set(float x) { return _mm_set1_ps(x); }
+/* Lanes 0..2 of p, lane 3 zero: the fourth float of a node or reference
+ * holds integer bits, which as a float may be a denormal that slows
+ * arithmetic, so it is masked off before any. */
+static inline v4 v4_load3(const float *p)
+{
+    const __m128i mask = _mm_set_epi32(0, -1, -1, -1);
+    return _mm_and_ps(_mm_loadu_ps(p), _mm_castsi128_ps(mask));
+}
+static inline v4 v4_add(v4 a, v4 b) { return _mm_add_ps(a, b); }
+static inline v4 v4_sub(v4 a, v4 b) { return _mm_sub_ps(a, b); }
+static inline v4 v4_mul(v4 a, v4 b) { return _mm_mul_ps(a, b); }
+/* a < b ? a : b and a > b ? a : b per lane, as the instructions define. */
+static inline v4 v4_min(v4 a, v4 b) { return _mm_min_ps(a, b); }
+static inline v4 v4_max(v4 a, v4 b) { return _mm_max_ps(a, b); }
+static inline void v4_store(float *p, v4 a) { _mm_storeu_ps(p, a); }
+/* Lanes 0..2 truncated to integers. */
+static inline void v4_to_int(v4 a, int *out)
+{
+    _mm_storeu_si128((__m128i *)(void *)out, _mm_cvttps_epi32(a));
+}
+/* max(lanes 0..2 of a, x) and min(lanes 0..2 of a, x). */
+static inline float v4_max3(v4 a, float x)
+{
+    v4 b = _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)), c = _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
+    return _mm_cvtss_f32(_mm_max_ss(_mm_max_ss(a, b), _mm_max_ss(c, _mm_set_ss(x))));
+}
+static inline float v4_min3(v4 a, float x)
+{
+    v4 b = _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)), c = _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
+    return _mm_cvtss_f32(_mm_min_ss(_mm_min_ss(a, b), _mm_min_ss(c, _mm_set_ss(x))));
+}
+#else
+typedef struct v4 { float f[4]; } v4;
+static inline v4 v4_load(const float *p) { v4 r; memcpy(r.f, p, sizeof r.f); return r; }
+static inline v4 v4_set(float x) { v4 r = {{x, x, x, x}}; return r; }
+static inline v4 v4_load3(const float *p) { v4 r = {{p[0], p[1], p[2], 0}}; return r; }
+#define V4_OP(name, expr)                                        \
+    static inline v4 name(v4 a, v4 b)                            \
+    {                                                            \
+        v4 r;                                                    \
+        for (int i = 0; i < 4; i++)                              \
+            r.f[i] = (expr);                                     \
+        return r;                                                \
+    }
+V4_OP(v4_add, a.f[i] + b.f[i])
+V4_OP(v4_sub, a.f[i] - b.f[i])
+V4_OP(v4_mul, a.f[i] * b.f[i])
+V4_OP(v4_min, a.f[i] < b.f[i] ? a.f[i] : b.f[i])
+V4_OP(v4_max, a.f[i] > b.f[i] ? a.f[i] : b.f[i])
+#undef V4_OP
+static inline void v4_store(float *p, v4 a) { memcpy(p, a.f, sizeof a.f); }
+static inline void v4_to_int(v4 a, int *out)
+{
+    for (int i = 0; i < 4; i++)
+        out[i] = (a.f[i] > -2e9f && a.f[i] < 2e9f) ? (int)a.f[i] : 0;
+}
+static inline float v4_max3(v4 a, float x)
+{
+    float m = a.f[0] > a.f[1] ? a.f[0] : a.f[1];
+    m = m > a.f[2] ? m : a.f[2];
+    return m > x ? m : x;
+}
+static inline float v4_min3(v4 a, float x)
+{
+    float m = a.f[0] < a.f[1] ? a.f[0] : a.f[1];
+    m = m < a.f[2] ? m : a.f[2];
+    return m < x ? m : x;
+}
+#endif
 
 /* ---- building ------------------------------------------------------------ */
 
-/* A triangle's bounds and index while building. */
+/* A triangle's bounds while building: lanes 0..2 of lo and hi, its index in
+ * the fourth float of lo (as bits). */
 typedef struct prim_ref {
-    float lo[3];
-    uint32_t id;
-    float hi[3];
-    uint32_t pad;
+    float lo[4];
+    float hi[4];
 } prim_ref;
 
-typedef struct box {
-    float lo[3], hi[3];
-} box;
-
-static void box_empty(box *b)
+static inline uint32_t prim_id(const prim_ref *r)
 {
-    for (int a = 0; a < 3; a++) {
-        b->lo[a] = FLT_MAX;
-        b->hi[a] = -FLT_MAX;
-    }
+    uint32_t id;
+    memcpy(&id, &r->lo[3], sizeof id);
+    return id;
 }
 
-static void box_grow(box *b, const float *lo, const float *hi)
+typedef struct bbox {
+    v4 lo, hi;
+} bbox;
+
+static inline void bbox_empty(bbox *b)
 {
-    for (int a = 0; a < 3; a++) {
-        if (lo[a] < b->lo[a])
-            b->lo[a] = lo[a];
-        if (hi[a] > b->hi[a])
-            b->hi[a] = hi[a];
-    }
+    b->lo = v4_set(FLT_MAX);
+    b->hi = v4_set(-FLT_MAX);
 }
 
-/* Half the surface area (the factor cancels in the SAH). */
-static float box_area(const box *b)
+static inline void bbox_grow(bbox *b, v4 lo, v4 hi)
 {
-    float dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
+    b->lo = v4_min(b->lo, lo);
+    b->hi = v4_max(b->hi, hi);
+}
+
+/* Half the surface area (the factor cancels in the SAH); 0 when empty. */
+static inline float bbox_area(const bbox *b)
+{
+    float lo[4], hi[4];
+    v4_store(lo, b->lo);
+    v4_store(hi, b->hi);
+    float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
     if (dx < 0 || dy < 0 || dz < 0)
         return 0;
     return dx * dy + dy * dz + dz * dx;
@@ -62,155 +144,225 @@ typedef struct builder {
     int depth;
 } builder;
 
-static uint32_t make_node(builder *b, const box *bounds)
+static void set_node(bvh_node *node, const bbox *bounds)
 {
-    uint32_t index = (uint32_t)b->node_count++;
-    bvh_node *node = &b->nodes[index];
-    memcpy(node->lo, bounds->lo, sizeof node->lo);
-    memcpy(node->hi, bounds->hi, sizeof node->hi);
+    float lo[4], hi[4];
+    v4_store(lo, bounds->lo);
+    v4_store(hi, bounds->hi);
+    memcpy(node->lo, lo, sizeof node->lo);
+    memcpy(node->hi, hi, sizeof node->hi);
     node->offset = 0;
     node->count = 0;
+}
+
+static uint32_t make_node(builder *b, const bbox *bounds)
+{
+    uint32_t index = (uint32_t)b->node_count++;
+    set_node(&b->nodes[index], bounds);
     return index;
 }
 
-static void build_node(builder *b, uint32_t index, size_t begin, size_t end, int depth)
+/* Bin coordinates of a centroid (times 2: lo + hi) on the three axes. */
+static inline void bin_of(v4 centroid, v4 origin, v4 scale, int bins, int *k)
+{
+    v4_to_int(v4_mul(v4_sub(centroid, origin), scale), k);
+    for (int a = 0; a < 3; a++)
+        k[a] = k[a] < 0 ? 0 : k[a] >= bins ? bins - 1 : k[a];
+}
+
+/* The split of a node: where, and the children's bounds. */
+typedef struct split {
+    size_t mid;
+    bbox left, right, left_centroids, right_centroids;
+} split;
+
+/* Finds the binned-SAH split of refs[begin, end) (bounds and centroid
+ * bounds given) and partitions the range; 0 when a leaf is better. */
+static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bounds,
+                     const bbox *centroids, split *out)
+{
+    size_t count = end - begin;
+    int nb = count < 64 ? 8 : count < 1024 ? 16 : BINS;
+    float clo[4], chi[4], sc[4] = {0, 0, 0, 0};
+    v4_store(clo, centroids->lo);
+    v4_store(chi, centroids->hi);
+    int any = 0;
+    for (int a = 0; a < 3; a++) {
+        float extent = chi[a] - clo[a];
+        sc[a] = extent > 0 ? (float)nb * (1 - 1e-6f) / extent : 0;
+        any |= sc[a] > 0;
+    }
+    if (!any)
+        return 0;
+    v4 origin = centroids->lo, scale = v4_load(sc);
+    bbox bins[3][BINS];
+    uint32_t counts[3][BINS];
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < nb; k++) {
+            bbox_empty(&bins[a][k]);
+            counts[a][k] = 0;
+        }
+    for (size_t i = begin; i < end; i++) {
+        v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi);
+        int k[4];
+        bin_of(v4_add(lo, hi), origin, scale, nb, k);
+        for (int a = 0; a < 3; a++) {
+            bbox_grow(&bins[a][k[a]], lo, hi);
+            counts[a][k[a]]++;
+        }
+    }
+    int best_axis = -1, best_bin = 0;
+    float best_cost = FLT_MAX;
+    for (int a = 0; a < 3; a++) {
+        if (sc[a] == 0)
+            continue;
+        float right_area[BINS];
+        uint32_t right_count[BINS];
+        bbox acc;
+        bbox_empty(&acc);
+        uint32_t n = 0;
+        for (int k = nb - 1; k > 0; k--) {
+            bbox_grow(&acc, bins[a][k].lo, bins[a][k].hi);
+            n += counts[a][k];
+            right_area[k] = bbox_area(&acc);
+            right_count[k] = n;
+        }
+        bbox_empty(&acc);
+        n = 0;
+        for (int k = 0; k < nb - 1; k++) {
+            bbox_grow(&acc, bins[a][k].lo, bins[a][k].hi);
+            n += counts[a][k];
+            if (n == 0 || right_count[k + 1] == 0)
+                continue;
+            float cost = bbox_area(&acc) * (float)n + right_area[k + 1] * (float)right_count[k + 1];
+            if (cost < best_cost) {
+                best_cost = cost;
+                best_axis = a;
+                best_bin = k;
+            }
+        }
+    }
+    if (best_axis < 0)
+        return 0;
+    /* Splitting costs a traversal step (1) plus the children's triangles
+     * weighted by the chance of entering them; a leaf costs its count. */
+    float parent_area = bbox_area(bounds);
+    float split_cost = parent_area > 0 ? 1 + best_cost / parent_area : FLT_MAX;
+    if (count <= MAX_LEAF && split_cost >= (float)count)
+        return 0;
+    bbox_empty(&out->left);
+    bbox_empty(&out->right);
+    bbox_empty(&out->left_centroids);
+    bbox_empty(&out->right_centroids);
+    for (int k = 0; k < nb; k++) {
+        bbox *side = k <= best_bin ? &out->left : &out->right;
+        bbox_grow(side, bins[best_axis][k].lo, bins[best_axis][k].hi);
+    }
+    size_t i = begin, j = end;
+    while (i < j) {
+        v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi), c = v4_add(lo, hi);
+        int k[4];
+        bin_of(c, origin, scale, nb, k);
+        if (k[best_axis] <= best_bin) {
+            bbox_grow(&out->left_centroids, c, c);
+            i++;
+        } else {
+            j--;
+            bbox_grow(&out->right_centroids, c, c);
+            prim_ref t = refs[i];
+            refs[i] = refs[j];
+            refs[j] = t;
+        }
+    }
+    out->mid = i;
+    return 1;
+}
+
+static void range_bounds(const prim_ref *refs, size_t begin, size_t end, bbox *bounds,
+                         bbox *centroids)
+{
+    bbox_empty(bounds);
+    bbox_empty(centroids);
+    for (size_t i = begin; i < end; i++) {
+        v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi), c = v4_add(lo, hi);
+        bbox_grow(bounds, lo, hi);
+        bbox_grow(centroids, c, c);
+    }
+}
+
+/* Decides how node (bounds given) over refs[begin, end) splits: 0 for a
+ * leaf, else 1 with the split. */
+static int choose_split(prim_ref *refs, size_t begin, size_t end, const bbox *bounds,
+                        const bbox *centroids, int depth, split *sp)
+{
+    size_t count = end - begin;
+    if (count <= 2)
+        return 0;
+    if (depth < SAH_DEPTH && sah_split(refs, begin, end, bounds, centroids, sp))
+        return 1;
+    if (count <= MAX_LEAF)
+        return 0;
+    /* Many triangles with one centroid, or a tree deeper than SAH_DEPTH
+     * (only for pathological inputs): split the range in two halves, which
+     * bounds the depth by log2 of the count. */
+    sp->mid = begin + count / 2;
+    range_bounds(refs, begin, sp->mid, &sp->left, &sp->left_centroids);
+    range_bounds(refs, sp->mid, end, &sp->right, &sp->right_centroids);
+    return 1;
+}
+
+/* Builds the subtree of node index (its bounds already stored). */
+static void build_node(builder *b, uint32_t index, size_t begin, size_t end, bbox bounds,
+                       bbox centroids, int depth)
 {
     for (;;) {
-        size_t count = end - begin;
-        prim_ref *refs = b->refs;
         if (depth > b->depth)
             b->depth = depth;
-        box centroids;
-        box_empty(&centroids);
-        for (size_t i = begin; i < end; i++) {
-            float c[3];
-            for (int a = 0; a < 3; a++)
-                c[a] = refs[i].lo[a] + refs[i].hi[a];
-            box_grow(&centroids, c, c);
-        }
-        bvh_node *node = &b->nodes[index];
-        box parent;
-        memcpy(parent.lo, node->lo, sizeof parent.lo);
-        memcpy(parent.hi, node->hi, sizeof parent.hi);
-        float parent_area = box_area(&parent);
-
-        int best_axis = -1, best_bin = 0;
-        float best_cost = FLT_MAX;
-        float scale[3];
-        if (count > 2 && depth < SAH_DEPTH) {
-            box bins[3][BINS];
-            uint32_t counts[3][BINS];
-            for (int a = 0; a < 3; a++) {
-                float extent = centroids.hi[a] - centroids.lo[a];
-                scale[a] = extent > 0 ? (float)BINS * (1 - 1e-6f) / extent : 0;
-                for (int k = 0; k < BINS; k++) {
-                    box_empty(&bins[a][k]);
-                    counts[a][k] = 0;
-                }
-            }
-            for (size_t i = begin; i < end; i++) {
-                for (int a = 0; a < 3; a++) {
-                    float c = refs[i].lo[a] + refs[i].hi[a];
-                    int k = (int)((c - centroids.lo[a]) * scale[a]);
-                    k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-                    box_grow(&bins[a][k], refs[i].lo, refs[i].hi);
-                    counts[a][k]++;
-                }
-            }
-            for (int a = 0; a < 3; a++) {
-                if (scale[a] == 0)
-                    continue;
-                float right_area[BINS];
-                uint32_t right_count[BINS];
-                box acc;
-                box_empty(&acc);
-                uint32_t n = 0;
-                for (int k = BINS - 1; k > 0; k--) {
-                    box_grow(&acc, bins[a][k].lo, bins[a][k].hi);
-                    n += counts[a][k];
-                    right_area[k] = box_area(&acc);
-                    right_count[k] = n;
-                }
-                box_empty(&acc);
-                n = 0;
-                for (int k = 0; k < BINS - 1; k++) {
-                    box_grow(&acc, bins[a][k].lo, bins[a][k].hi);
-                    n += counts[a][k];
-                    if (n == 0 || right_count[k + 1] == 0)
-                        continue;
-                    float cost = box_area(&acc) * (float)n + right_area[k + 1] * (float)right_count[k + 1];
-                    if (cost < best_cost) {
-                        best_cost = cost;
-                        best_axis = a;
-                        best_bin = k;
-                    }
-                }
-            }
-        }
-
-        size_t mid;
-        if (best_axis >= 0) {
-            /* Cost of splitting relative to intersecting everything here
-             * (traversal cost 1, triangle cost 1). */
-            float split_cost = parent_area > 0 ? 1 + best_cost / parent_area : FLT_MAX;
-            if (count <= MAX_LEAF && split_cost >= (float)count)
-                best_axis = -1;
-        }
-        if (best_axis >= 0) {
-            size_t i = begin, j = end;
-            int a = best_axis;
-            while (i < j) {
-                float c = refs[i].lo[a] + refs[i].hi[a];
-                int k = (int)((c - centroids.lo[a]) * scale[a]);
-                k = k < 0 ? 0 : k >= BINS ? BINS - 1 : k;
-                if (k <= best_bin) {
-                    i++;
-                } else {
-                    j--;
-                    prim_ref t = refs[i];
-                    refs[i] = refs[j];
-                    refs[j] = t;
-                }
-            }
-            mid = i;
-        } else if (count <= MAX_LEAF) {
-            node->offset = (uint32_t)begin;
-            node->count = (uint32_t)count;
+        split sp;
+        if (!choose_split(b->refs, begin, end, &bounds, &centroids, depth, &sp)) {
+            b->nodes[index].offset = (uint32_t)begin;
+            b->nodes[index].count = (uint32_t)(end - begin);
             return;
-        } else {
-            /* Many triangles with one centroid, or a tree deeper than
-             * SAH_DEPTH (only for pathological inputs): split the range in
-             * two halves, which bounds the depth by log2 of the count. */
-            mid = begin + count / 2;
         }
-
-        box left, right;
-        box_empty(&left);
-        box_empty(&right);
-        for (size_t i = begin; i < mid; i++)
-            box_grow(&left, refs[i].lo, refs[i].hi);
-        for (size_t i = mid; i < end; i++)
-            box_grow(&right, refs[i].lo, refs[i].hi);
-        uint32_t left_index = make_node(b, &left);
-        /* Recurse into the left child (it must directly follow this node),
-         * loop on the right one; the recursion depth is the tree depth,
-         * at most SAH_DEPTH + 32. */
-        build_node(b, left_index, begin, mid, depth + 1);
-        uint32_t right_index = make_node(b, &right);
-        b->nodes[index].offset = right_index;
-        index = right_index;
-        begin = mid;
+        /* The left child directly follows its parent; the right one's index
+         * is known once the left subtree is built.  Recursing on the left and
+         * looping on the right keeps the recursion depth at the tree depth
+         * (at most SAH_DEPTH + 32). */
+        uint32_t left = make_node(b, &sp.left);
+        build_node(b, left, begin, sp.mid, sp.left, sp.left_centroids, depth + 1);
+        uint32_t right = make_node(b, &sp.right);
+        b->nodes[index].offset = right;
+        index = right;
+        begin = sp.mid;
+        bounds = sp.right;
+        centroids = sp.right_centroids;
         depth++;
     }
+}
+
+/* The right subtree of the root, built on a second thread into its own node
+ * array and appended afterwards. */
+typedef struct subtree_job {
+    builder b;
+    size_t begin, end;
+    bbox bounds, centroids;
+} subtree_job;
+
+static void *build_subtree(void *arg)
+{
+    subtree_job *j = arg;
+    uint32_t root = make_node(&j->b, &j->bounds);
+    build_node(&j->b, root, j->begin, j->end, j->bounds, j->centroids, 2);
+    return NULL;
 }
 
 static void sah_of(const cg_bvh *bvh, uint32_t index, double *cost)
 {
     const bvh_node *n = &bvh->nodes[index];
-    box b;
-    memcpy(b.lo, n->lo, sizeof b.lo);
-    memcpy(b.hi, n->hi, sizeof b.hi);
-    double area = box_area(&b);
+    bbox b;
+    b.lo = v4_load3(n->lo);
+    b.hi = v4_load3(n->hi);
+    double area = bbox_area(&b);
     if (n->count) {
         *cost += area * n->count;
         return;
@@ -220,13 +372,74 @@ static void sah_of(const cg_bvh *bvh, uint32_t index, double *cost)
     sah_of(bvh, n->offset, cost);
 }
 
+/* The tree of refs[0, n) into bvh->nodes; with threads > 1 the root's two
+ * subtrees are built at the same time.  The tree is the same either way. */
+static int build_tree(cg_bvh *bvh, prim_ref *refs, size_t n, int threads)
+{
+    bbox bounds, centroids;
+    range_bounds(refs, 0, n, &bounds, &centroids);
+    builder b = {refs, bvh->nodes, 0, 0};
+    uint32_t root = make_node(&b, &bounds);
+    split sp;
+    if (threads < 2 || n < PARALLEL_MIN || !choose_split(refs, 0, n, &bounds, &centroids, 1, &sp)) {
+        build_node(&b, root, 0, n, bounds, centroids, 1);
+        bvh->node_count = b.node_count;
+        bvh->depth = b.depth;
+        return 1;
+    }
+    size_t right_count = n - sp.mid;
+    subtree_job job;
+    job.b.refs = refs;
+    job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
+    job.b.node_count = 0;
+    job.b.depth = 0;
+    job.begin = sp.mid;
+    job.end = n;
+    job.bounds = sp.right;
+    job.centroids = sp.right_centroids;
+    pthread_t id;
+    int parallel = job.b.nodes && pthread_create(&id, NULL, build_subtree, &job) == 0;
+    uint32_t left = make_node(&b, &sp.left);
+    build_node(&b, left, 0, sp.mid, sp.left, sp.left_centroids, 2);
+    if (parallel) {
+        pthread_join(id, NULL);
+    } else {
+        /* No second thread: the same subtree on this one. */
+        if (!job.b.nodes)
+            job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
+        if (!job.b.nodes)
+            return 0;
+        build_subtree(&job);
+    }
+    /* Append the right subtree, shifting its child links. */
+    uint32_t shift = (uint32_t)b.node_count;
+    bvh->nodes[root].offset = shift;
+    for (size_t i = 0; i < job.b.node_count; i++) {
+        bvh_node node = job.b.nodes[i];
+        if (!node.count)
+            node.offset += shift;
+        bvh->nodes[shift + i] = node;
+    }
+    bvh->node_count = b.node_count + job.b.node_count;
+    bvh->depth = b.depth > job.b.depth ? b.depth : job.b.depth;
+    free(job.b.nodes);
+    return 1;
+}
+
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
                        size_t triangle_count, cg_bvh **out)
+{
+    return cg_bvh_build_threads(positions, vertex_count, indices, triangle_count, 1, out);
+}
+
+cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
+                               const uint32_t *indices, size_t triangle_count, int threads,
+                               cg_bvh **out)
 {
     if (!out)
         return CG_EINVAL;
     *out = NULL;
-    if ((!positions && vertex_count) || (triangle_count && !positions))
+    if ((!positions && vertex_count) || (triangle_count && !positions) || threads < 1)
         return CG_EINVAL;
     if (triangle_count > 0x7fffffffu)
         return CG_ERANGE;
@@ -245,8 +458,6 @@ cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint
     }
     /* Finite triangles only; coordinates rounded to float once, here. */
     size_t n = 0;
-    box root;
-    box_empty(&root);
     for (size_t i = 0; i < triangle_count; i++) {
         prim_ref r;
         int finite = 1;
@@ -270,29 +481,22 @@ cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint
         }
         if (!finite)
             continue;
-        r.id = (uint32_t)i;
-        r.pad = 0;
-        box_grow(&root, r.lo, r.hi);
+        uint32_t id = (uint32_t)i;
+        memcpy(&r.lo[3], &id, sizeof id);
+        r.hi[3] = 0;
         refs[n++] = r;
     }
     bvh->triangle_count = n;
     bvh->nodes = malloc((2 * n + 1) * sizeof *bvh->nodes);
     bvh->triangles = malloc((n ? n : 1) * sizeof *bvh->triangles);
-    if (!bvh->nodes || !bvh->triangles) {
+    if (!bvh->nodes || !bvh->triangles || (n && !build_tree(bvh, refs, n, threads))) {
         free(refs);
         cg_bvh_free(bvh);
         return CG_ENOMEM;
     }
-    if (n) {
-        builder b = {refs, bvh->nodes, 0, 0};
-        uint32_t root_index = make_node(&b, &root);
-        build_node(&b, root_index, 0, n, 1);
-        bvh->node_count = b.node_count;
-        bvh->depth = b.depth;
-    }
     for (size_t i = 0; i < n; i++) {
         bvh_triangle *t = &bvh->triangles[i];
-        uint32_t id = refs[i].id;
+        uint32_t id = prim_id(&refs[i]);
         float *corner[3] = {t->v0, t->v1, t->v2};
         for (int k = 0; k < 3; k++) {
             cg_vec3 p = positions[indices ? indices[3 * (size_t)id + k] : 3 * (size_t)id + k];
@@ -329,10 +533,10 @@ void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out)
     if (bvh->node_count) {
         double cost = 0;
         sah_of(bvh, 0, &cost);
-        box b;
-        memcpy(b.lo, bvh->nodes[0].lo, sizeof b.lo);
-        memcpy(b.hi, bvh->nodes[0].hi, sizeof b.hi);
-        double area = box_area(&b);
+        bbox b;
+        b.lo = v4_load3(bvh->nodes[0].lo);
+        b.hi = v4_load3(bvh->nodes[0].hi);
+        double area = bbox_area(&b);
         out->sah_cost = area > 0 ? cost / area : 0;
     }
 }
@@ -422,43 +626,44 @@ static inline int hit_triangle(const bvh_ray *ray, const bvh_triangle *tri, floa
     return 1;
 }
 
-/* Slab test; far distances grown by 1 + 2 gamma(3) (Ize 2013) so rounding
- * never rejects a box that the exact ray touches. */
-static inline int hit_box(const bvh_ray *ray, const bvh_node *node, float t_far_limit,
-                          float *t_near)
+/* The slab test for rays with a zero direction component: on such an axis
+ * the slab holds the whole ray or none of it, boundaries included. */
+static int hit_box_flat(const bvh_ray *ray, const bvh_node *node, float t_far_limit,
+                        float *t_near)
 {
     float tn = ray->t_min, tf = FLT_MAX;
     for (int a = 0; a < 3; a++) {
+        if (ray->flat_axes & (1 << a)) {
+            if (ray->origin[a] < node->lo[a] || ray->origin[a] > node->hi[a]) {
+                *t_near = FLT_MAX;
+                return 0;
+            }
+            continue;
+        }
         float t0 = (node->lo[a] - ray->origin[a]) * ray->inverse[a];
         float t1 = (node->hi[a] - ray->origin[a]) * ray->inverse[a];
         float n = t0 < t1 ? t0 : t1, f = t0 < t1 ? t1 : t0;
         tn = n > tn ? n : tn;
         tf = f < tf ? f : tf;
     }
-    if (ray->flat_axes) {
-        /* A direction component of zero: the slab holds the whole ray or
-         * none of it, boundaries included (the axis's t values were made
-         * harmless by a huge inverse and are overridden here). */
-        for (int a = 0; a < 3; a++)
-            if (ray->flat_axes & (1 << a)) {
-                if (ray->origin[a] < node->lo[a] || ray->origin[a] > node->hi[a]) {
-                    *t_near = FLT_MAX;
-                    return 0;
-                }
-            }
-        tn = ray->t_min;
-        tf = FLT_MAX;
-        for (int a = 0; a < 3; a++) {
-            if (ray->flat_axes & (1 << a))
-                continue;
-            float t0 = (node->lo[a] - ray->origin[a]) * ray->inverse[a];
-            float t1 = (node->hi[a] - ray->origin[a]) * ray->inverse[a];
-            float n = t0 < t1 ? t0 : t1, f = t0 < t1 ? t1 : t0;
-            tn = n > tn ? n : tn;
-            tf = f < tf ? f : tf;
-        }
-    }
     tf *= 1.0000003576f;
+    tf = tf < t_far_limit ? tf : t_far_limit;
+    *t_near = tn;
+    return tn <= tf;
+}
+
+/* Slab test; far distances grown by 1 + 2 gamma(3) (Ize 2013) so rounding
+ * never rejects a box that the exact ray touches.  origin and inverse hold
+ * the ray's origin and 1 / direction in lanes 0..2. */
+static inline int hit_box(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_node *node,
+                          float t_far_limit, float *t_near)
+{
+    if (ray->flat_axes)
+        return hit_box_flat(ray, node, t_far_limit, t_near);
+    v4 t0 = v4_mul(v4_sub(v4_load3(node->lo), origin), inverse);
+    v4 t1 = v4_mul(v4_sub(v4_load3(node->hi), origin), inverse);
+    float tn = v4_max3(v4_min(t0, t1), ray->t_min);
+    float tf = v4_min3(v4_max(t0, t1), FLT_MAX) * 1.0000003576f;
     tf = tf < t_far_limit ? tf : t_far_limit;
     *t_near = tn;
     return tn <= tf;
@@ -493,6 +698,9 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
         || !(t_max > t_min))
         return 0;
     float best_t = clamp_far(t_max), limit = cull_limit(best_t);
+    const float o3[4] = {ray.origin[0], ray.origin[1], ray.origin[2], 0};
+    const float i3[4] = {ray.inverse[0], ray.inverse[1], ray.inverse[2], 0};
+    v4 o4 = v4_load(o3), i4 = v4_load(i3);
     uint32_t best_id = UINT32_MAX;
     float best_u = 0, best_v = 0;
     int found = 0;
@@ -500,7 +708,7 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
     float stack_t[STACK_SIZE];
     int top = 0;
     float tn;
-    if (!hit_box(&ray, &bvh->nodes[0], limit, &tn))
+    if (!hit_box(&ray, o4, i4, &bvh->nodes[0], limit, &tn))
         return 0;
     uint32_t index = 0;
     for (;;) {
@@ -521,8 +729,8 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
         } else {
             uint32_t left = index + 1, right = node->offset;
             float tl, tr;
-            int hl = hit_box(&ray, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(&ray, &bvh->nodes[right], limit, &tr);
+            int hl = hit_box(&ray, o4, i4, &bvh->nodes[left], limit, &tl);
+            int hr = hit_box(&ray, o4, i4, &bvh->nodes[right], limit, &tr);
             if (hl && hr) {
                 if (tr < tl) {
                     uint32_t s = left;
@@ -575,10 +783,13 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
         || !(t_max > t_min))
         return 0;
     float far = clamp_far(t_max), limit = cull_limit(far);
+    const float o3[4] = {ray.origin[0], ray.origin[1], ray.origin[2], 0};
+    const float i3[4] = {ray.inverse[0], ray.inverse[1], ray.inverse[2], 0};
+    v4 o4 = v4_load(o3), i4 = v4_load(i3);
     uint32_t stack[STACK_SIZE];
     int top = 0;
     float tn;
-    if (!hit_box(&ray, &bvh->nodes[0], limit, &tn))
+    if (!hit_box(&ray, o4, i4, &bvh->nodes[0], limit, &tn))
         return 0;
     uint32_t index = 0;
     for (;;) {
@@ -593,8 +804,8 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
         } else {
             uint32_t left = index + 1, right = node->offset;
             float tl, tr;
-            int hl = hit_box(&ray, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(&ray, &bvh->nodes[right], limit, &tr);
+            int hl = hit_box(&ray, o4, i4, &bvh->nodes[left], limit, &tl);
+            int hr = hit_box(&ray, o4, i4, &bvh->nodes[right], limit, &tr);
             if (hl && hr) {
                 if (tr < tl) {
                     uint32_t s = left;

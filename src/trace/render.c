@@ -332,7 +332,7 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
     if (stats)
         memset(stats, 0, sizeof *stats);
     double build = 0;
-    cg_status s = cg_trace_scene_build(scene, &build);
+    cg_status s = cg_trace_scene_build(scene, opt.threads, &build);
     if (s != CG_OK)
         return s;
     struct timespec start;

@@ -254,17 +254,18 @@ cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_ar
     return CG_OK;
 }
 
-cg_status cg_trace_scene_build(cg_trace_scene *scene, double *seconds)
+cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *seconds)
 {
-    if (!scene)
+    if (!scene || threads < 1)
         return CG_EINVAL;
     struct timespec a, b;
     clock_gettime(CLOCK_MONOTONIC, &a);
     if (!scene->built) {
         cg_bvh_free(scene->bvh);
         scene->bvh = NULL;
-        cg_status status = cg_bvh_build(scene->positions, scene->vertex_count, scene->indices,
-                                        scene->triangle_count, &scene->bvh);
+        cg_status status = cg_bvh_build_threads(scene->positions, scene->vertex_count,
+                                                scene->indices, scene->triangle_count,
+                                                threads, &scene->bvh);
         if (status != CG_OK)
             return status;
         scene->built = 1;

@@ -330,7 +330,7 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
         add_floor(scene);
     add_lights(scene, s, &camera, !s->scene);
     double build = 0;
-    if ((st = cg_trace_scene_build(scene, &build)) != CG_OK) {
+    if ((st = cg_trace_scene_build(scene, s->threads, &build)) != CG_OK) {
         cg_trace_scene_free(scene);
         return cli_fail("%s: building the BVH: %s", command, cg_status_str(st));
     }

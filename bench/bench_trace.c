@@ -16,9 +16,6 @@
 #include "trace_embree_scene.h"
 #endif
 
-/* TEMPORARY until the mesh readers land on main: a weak reference. */
-cg_status cg_mesh_load(const char *path, cg_mesh **out, cg_error *err) __attribute__((weak));
-
 enum { WIDTH = 640, HEIGHT = 480, RUNS = 5 };
 
 typedef struct rays {
@@ -243,7 +240,7 @@ static int load_soup(const char *path, soup *s)
 {
     cg_mesh *mesh;
     cg_error err;
-    if (!cg_mesh_load || cg_mesh_load(path, &mesh, &err) != CG_OK) {
+    if (cg_mesh_load(path, &mesh, &err) != CG_OK) {
         fprintf(stderr, "bench_trace: cannot read %s\n", path);
         return 0;
     }

@@ -8,7 +8,12 @@
 #include "cg/light.h"
 #include "cg/xform.h"
 #include "cg/draw.h"
+#include "cg/curve.h"
+#include "cg/fill.h"
 #include "cg/mesh.h"
+#include "cg/clip.h"
+#include "cg/hemesh.h"
+#include "cg/render.h"
 #include "cg/trace.h"
 
 #endif

@@ -447,7 +447,7 @@ static void test_mesh_input(void)
     cg_trace_scene *scene;
     CHECK(cg_trace_scene_create(&scene) == CG_OK);
     cg_trace_material m = cg_trace_material_default();
-    CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, &m) == CG_OK);
+    CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, cg_radians(60), &m) == CG_OK);
     cg_light light = cg_light_directional(cg_vec3_make(0, 0, -1), cg_vec3_make(1, 1, 1));
     CHECK(cg_trace_scene_add_light(scene, &light) == CG_OK);
     light = cg_light_ambient(cg_vec3_make(0.1, 0.1, 0.1));
@@ -464,7 +464,7 @@ static void test_mesh_input(void)
     cg_rgbaf corner_px = cg_image_get(img, 0, 0);
     CHECK(corner_px.r == 0 && corner_px.a == 1); /* background: opaque black */
     mesh->face_indices[9] = 7; /* out of range */
-    CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, &m) == CG_EFORMAT);
+    CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, cg_radians(60), &m) == CG_EFORMAT);
     cg_mesh_free(mesh);
     cg_image_free(img);
     cg_trace_scene_free(scene);

@@ -67,6 +67,52 @@ cg_status cg_mesh_bounds(const cg_mesh *mesh, cg_vec3 *lo, cg_vec3 *hi);
 /* Number of triangles a fan triangulation of every face gives. */
 size_t cg_mesh_triangle_count(const cg_mesh *mesh);
 
+/* ---- mesh files ---------------------------------------------------------
+ * Readers for Wavefront OBJ (with MTL diffuse colours), OFF (and COFF, NOFF,
+ * STOFF and their combinations), PLY (ASCII, binary little- and big-endian)
+ * and STL (ASCII and binary); writers for OBJ and PLY.  Any of them may be
+ * gzip-compressed (detected by content).  See docs/mesh-io.md for the
+ * accepted variants, limits and messages. */
+typedef enum cg_mesh_format {
+    CG_MESH_FORMAT_AUTO = 0,    /* loading: by content, then by extension;
+                                   saving: by extension (.obj, .ply = binary) */
+    CG_MESH_FORMAT_OBJ,
+    CG_MESH_FORMAT_OFF,
+    CG_MESH_FORMAT_PLY,         /* loading: any PLY; saving: binary little-endian */
+    CG_MESH_FORMAT_PLY_ASCII,   /* saving: ASCII PLY (loading: same as CG_MESH_FORMAT_PLY) */
+    CG_MESH_FORMAT_PLY_BINARY,  /* saving: binary little-endian PLY */
+    CG_MESH_FORMAT_STL          /* loading only: ASCII or binary, told apart by content */
+} cg_mesh_format;
+
+/* Largest file accepted, after gzip decompression: 4 GiB. */
+#define CG_MESH_MAX_FILE_BYTES ((size_t)1 << 32)
+
+/* The format a file name's extension names (a trailing .gz is looked
+ * through); CG_MESH_FORMAT_AUTO when there is none. */
+cg_mesh_format cg_mesh_format_from_path(const char *path);
+
+/* Reads the mesh file at path.  OBJ material libraries (mtllib) are read
+ * from the file's directory; a missing library means no face colours, not
+ * an error.  On failure *out is NULL and err (may be NULL) says
+ * "file:line: what was expected" (text) or "file: byte N: ..." (binary):
+ * CG_EIO (cannot open or read), CG_EFORMAT (malformed), CG_ERANGE (more
+ * vertices or corners than cg_mesh holds), CG_EUNSUPPORTED (a variant cg
+ * does not read), CG_ENOMEM. */
+cg_status cg_mesh_load(const char *path, cg_mesh **out, cg_error *err);
+
+/* Reads a mesh file held in memory.  name is used in messages and, with
+ * CG_MESH_FORMAT_AUTO, for its extension.  Reads no other file: OBJ
+ * material libraries are ignored. */
+cg_status cg_mesh_load_memory(const void *bytes, size_t size, const char *name,
+                              cg_mesh_format format, cg_mesh **out, cg_error *err);
+
+/* Writes the mesh to path through a temporary file renamed into place, so
+ * an existing file is replaced only by a complete one.  Numbers are written
+ * so that they read back exactly (positions as doubles in PLY).  OBJ face
+ * colours go to a material library PATH-without-.obj.mtl beside it. */
+cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,
+                       cg_error *err);
+
 #ifdef __cplusplus
 }
 #endif

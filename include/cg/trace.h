@@ -127,11 +127,13 @@ cg_status cg_trace_scene_create(cg_trace_scene **out);
 void cg_trace_scene_free(cg_trace_scene *scene);
 
 /* Adds a mesh (every face fan-triangulated) under the model transform
- * (NULL: identity).  Smooth normals come from the mesh's normals, or else
- * from area-weighted face normals.  Faces with out-of-range indices give
- * CG_EFORMAT; NaN positions make their triangles invisible. */
+ * (NULL: identity).  Smooth normals come from the mesh's vertex normals, or
+ * else from cg_mesh_corner_normals with crease_angle (radians), as the
+ * rasterizer makes them.  Faces with out-of-range indices give CG_EFORMAT;
+ * NaN positions make their triangles invisible. */
 cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
-                                  const cg_mat4 *transform, const cg_trace_material *material);
+                                  const cg_mat4 *transform, double crease_angle,
+                                  const cg_trace_material *material);
 /* A sphere; under a transform (NULL: identity) it may become an ellipsoid.
  * Radius 0 gives an invisible sphere; a negative or non-finite radius, or a
  * singular transform, is CG_EINVAL. */

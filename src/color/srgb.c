@@ -2,22 +2,19 @@
 #include "cg/color.h"
 #include "srgb_tables.h"
 
-static double clamp_unit(double v)
-{
-    if (!(v > 0)) /* also NaN */
-        return 0;
-    return v < 1 ? v : 1;
-}
-
 double cg_srgb_to_linear(double encoded)
 {
-    double c = clamp_unit(encoded);
+    double c = cg_intensity_clamp(encoded);
+    if (c == 1)
+        return 1;
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
 
 double cg_linear_to_srgb(double linear)
 {
-    double l = clamp_unit(linear);
+    double l = cg_intensity_clamp(linear);
+    if (l == 1)
+        return 1;
     return l <= 0.0031308 ? l * 12.92 : 1.055 * pow(l, 1.0 / 2.4) - 0.055;
 }
 
@@ -26,19 +23,36 @@ float cg_srgb8_to_linear(uint8_t code)
     return cg_srgb_decode_table[code];
 }
 
+/* The bucket of linear / 4096 gives a lower bound on the code; at most one
+ * threshold lies inside a bucket (checked when the table was made), and the
+ * loop settles any case.  NaN and values <= 0 give 0, values >= 1 give 255. */
+static inline uint8_t encode_one(float linear)
+{
+    if (!(linear > 0))
+        return 0;
+    if (linear >= 1)
+        return 255;
+    unsigned code = cg_srgb_encode_start[(int)(linear * 4096.0f)];
+    while (code < 255 && linear >= cg_srgb_threshold_table[code])
+        code++;
+    return (uint8_t)code;
+}
+
 uint8_t cg_linear_to_srgb8(float linear)
 {
-    /* Binary search for the number of thresholds at or below linear; NaN
-     * compares false everywhere and lands on 0. */
-    int low = 0, high = 255;
-    while (low < high) {
-        int mid = (low + high) / 2;
-        if (linear >= cg_srgb_threshold_table[mid])
-            low = mid + 1;
-        else
-            high = mid;
-    }
-    return (uint8_t)low;
+    return encode_one(linear);
+}
+
+void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        out[i] = cg_srgb_decode_table[in[i]];
+}
+
+void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        out[i] = encode_one(in[i]);
 }
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)
@@ -62,4 +76,50 @@ cg_rgba8 cg_linear_to_rgba8(cg_rgbaf color)
     cg_rgba8 r = {cg_linear_to_srgb8(color.r), cg_linear_to_srgb8(color.g),
                   cg_linear_to_srgb8(color.b), alpha_to_8(color.a)};
     return r;
+}
+
+cg_status cg_image_decode_srgb(const cg_image *src, cg_image **out)
+{
+    if (!out)
+        return CG_EINVAL;
+    *out = NULL;
+    if (!src || src->format != CG_PIXEL_RGBA8)
+        return CG_EINVAL;
+    cg_status status = cg_image_create(out, src->width, src->height, CG_PIXEL_RGBAF);
+    if (status != CG_OK)
+        return status;
+    for (int y = 0; y < src->height; y++) {
+        const cg_rgba8 *in = cg_image_row_rgba8((cg_image *)src, y);
+        cg_rgbaf *o = cg_image_row_rgbaf(*out, y);
+        for (int x = 0; x < src->width; x++) {
+            o[x].r = cg_srgb_decode_table[in[x].r];
+            o[x].g = cg_srgb_decode_table[in[x].g];
+            o[x].b = cg_srgb_decode_table[in[x].b];
+            o[x].a = in[x].a * (1.0f / 255.0f);
+        }
+    }
+    return CG_OK;
+}
+
+cg_status cg_image_encode_srgb(const cg_image *src, cg_image **out)
+{
+    if (!out)
+        return CG_EINVAL;
+    *out = NULL;
+    if (!src || src->format != CG_PIXEL_RGBAF)
+        return CG_EINVAL;
+    cg_status status = cg_image_create(out, src->width, src->height, CG_PIXEL_RGBA8);
+    if (status != CG_OK)
+        return status;
+    for (int y = 0; y < src->height; y++) {
+        const cg_rgbaf *in = cg_image_row_rgbaf((cg_image *)src, y);
+        cg_rgba8 *o = cg_image_row_rgba8(*out, y);
+        for (int x = 0; x < src->width; x++) {
+            o[x].r = encode_one(in[x].r);
+            o[x].g = encode_one(in[x].g);
+            o[x].b = encode_one(in[x].b);
+            o[x].a = alpha_to_8(in[x].a);
+        }
+    }
+    return CG_OK;
 }

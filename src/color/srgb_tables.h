@@ -2,7 +2,10 @@
 #ifndef CG_SRGB_TABLES_H
 #define CG_SRGB_TABLES_H
 
+#include <stdint.h>
+
 extern const float cg_srgb_decode_table[256];
 extern const float cg_srgb_threshold_table[255];
+extern const uint8_t cg_srgb_encode_start[4097];
 
 #endif

@@ -67,7 +67,7 @@ struct cg_trace_scene {
     size_t light_count, light_capacity;
     cg_trace_area_light *area_lights;
     size_t area_light_count, area_light_capacity;
-    /* Triangles of all meshes, in world space. */
+    /* Triangles of all meshes, in world space; normals per triangle corner. */
     cg_vec3 *positions, *normals;
     size_t vertex_count, vertex_capacity, normal_capacity;
     uint32_t *indices; /* 3 per triangle */

@@ -3,6 +3,7 @@
  * Triangles of every mesh share one BVH (in world space); spheres and planes
  * are few and tested one by one. */
 #include "internal.h"
+#include "cg/render.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -106,9 +107,10 @@ static int affine(const cg_mat4 *m)
 }
 
 cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
-                                  const cg_mat4 *transform, const cg_trace_material *material)
+                                  const cg_mat4 *transform, double crease_angle,
+                                  const cg_trace_material *material)
 {
-    if (!scene || !mesh || !material || !material_valid(material))
+    if (!scene || !mesh || !material || !material_valid(material) || !(crease_angle >= 0))
         return CG_EINVAL;
     cg_mat4 model = transform ? *transform : cg_mat4_identity();
     cg_mat3 normal_matrix;
@@ -123,64 +125,57 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
     size_t v0 = scene->vertex_count, t0 = scene->triangle_count;
     if (mesh->vertex_count > UINT32_MAX - v0 || triangles > 0x7fffffff - t0)
         return CG_ERANGE;
-    if (!reserve((void **)&scene->positions, &scene->vertex_capacity, v0 + mesh->vertex_count,
-                 sizeof *scene->positions))
-        return CG_ENOMEM;
     size_t normal_capacity = scene->normal_capacity;
-    if (!reserve((void **)&scene->normals, &normal_capacity, v0 + mesh->vertex_count,
-                 sizeof *scene->normals))
+    size_t object_capacity = scene->triangle_object_capacity;
+    if (!reserve((void **)&scene->positions, &scene->vertex_capacity, v0 + mesh->vertex_count,
+                 sizeof *scene->positions)
+        || !reserve((void **)&scene->normals, &normal_capacity, 3 * (t0 + triangles),
+                    sizeof *scene->normals)
+        || !reserve((void **)&scene->indices, &scene->index_capacity, 3 * (t0 + triangles),
+                    sizeof *scene->indices)
+        || !reserve((void **)&scene->triangle_object, &object_capacity, t0 + triangles,
+                    sizeof *scene->triangle_object))
         return CG_ENOMEM;
     scene->normal_capacity = normal_capacity;
-    if (!reserve((void **)&scene->indices, &scene->index_capacity, 3 * (t0 + triangles),
-                 sizeof *scene->indices))
-        return CG_ENOMEM;
-    size_t object_capacity = scene->triangle_object_capacity;
-    if (!reserve((void **)&scene->triangle_object, &object_capacity, t0 + triangles,
-                 sizeof *scene->triangle_object))
-        return CG_ENOMEM;
     scene->triangle_object_capacity = object_capacity;
+    /* Normals at face corners: the file's vertex normals, or the
+     * renderer's crease-angle normals (cg/render.h) when it has none. */
+    cg_vec3 *corner = NULL;
+    if (!mesh->normals) {
+        corner = malloc((mesh->face_offsets[mesh->face_count] + 1) * sizeof *corner);
+        if (!corner)
+            return CG_ENOMEM;
+        if ((status = cg_mesh_corner_normals(mesh, crease_angle, corner)) != CG_OK) {
+            free(corner);
+            return status;
+        }
+    }
 
     trace_object object;
     memset(&object, 0, sizeof object);
     object.kind = TRACE_MESH;
     object.material = *material;
     uint32_t object_index = (uint32_t)scene->object_count;
-
-    cg_vec3 *p = scene->positions + v0, *n = scene->normals + v0;
-    for (size_t i = 0; i < mesh->vertex_count; i++) {
-        p[i] = cg_mat4_transform_point(model, mesh->positions[i]);
-        n[i] = cg_vec3_make(0, 0, 0);
-    }
+    for (size_t i = 0; i < mesh->vertex_count; i++)
+        scene->positions[v0 + i] = cg_mat4_transform_point(model, mesh->positions[i]);
     uint32_t *idx = scene->indices + 3 * t0;
+    cg_vec3 *n = scene->normals + 3 * t0;
     size_t t = 0;
     for (size_t f = 0; f < mesh->face_count; f++) {
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
         for (uint32_t k = begin + 1; k + 1 < end; k++) {
-            idx[3 * t] = (uint32_t)v0 + mesh->face_indices[begin];
-            idx[3 * t + 1] = (uint32_t)v0 + mesh->face_indices[k];
-            idx[3 * t + 2] = (uint32_t)v0 + mesh->face_indices[k + 1];
+            const uint32_t corners[3] = {begin, k, k + 1};
+            for (int j = 0; j < 3; j++) {
+                uint32_t vertex = mesh->face_indices[corners[j]];
+                idx[3 * t + j] = (uint32_t)v0 + vertex;
+                cg_vec3 normal = corner ? corner[corners[j]] : mesh->normals[vertex];
+                n[3 * t + j] = cg_vec3_normalize(cg_mat3_mul_vec3(normal_matrix, normal));
+            }
             scene->triangle_object[t0 + t] = object_index;
             t++;
         }
     }
-    if (mesh->normals) {
-        for (size_t i = 0; i < mesh->vertex_count; i++)
-            n[i] = cg_vec3_normalize(cg_mat3_mul_vec3(normal_matrix, mesh->normals[i]));
-    } else {
-        /* Area-weighted face normals: the unnormalized cross product of
-         * each triangle's edges, summed at its corners. */
-        for (size_t k = 0; k < triangles; k++) {
-            const uint32_t *c = idx + 3 * k;
-            cg_vec3 a = scene->positions[c[0]], b = scene->positions[c[1]], d = scene->positions[c[2]];
-            cg_vec3 fn = cg_vec3_cross(cg_vec3_sub(b, a), cg_vec3_sub(d, a));
-            if (!finite3(fn))
-                continue;
-            for (int j = 0; j < 3; j++)
-                scene->normals[c[j]] = cg_vec3_add(scene->normals[c[j]], fn);
-        }
-        for (size_t i = 0; i < mesh->vertex_count; i++)
-            n[i] = cg_vec3_normalize(n[i]);
-    }
+    free(corner);
     object.first_triangle = t0;
     object.triangle_count = triangles;
     status = add_object(scene, &object);
@@ -423,9 +418,9 @@ int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 directi
                                  cg_vec3_scale(p[2], hit->v));
         hit->normal = cg_vec3_normalize(
             cg_vec3_cross(cg_vec3_sub(p[1], p[0]), cg_vec3_sub(p[2], p[0])));
-        cg_vec3 sn = cg_vec3_add(cg_vec3_add(cg_vec3_scale(scene->normals[c[0]], w0),
-                                             cg_vec3_scale(scene->normals[c[1]], hit->u)),
-                                 cg_vec3_scale(scene->normals[c[2]], hit->v));
+        const cg_vec3 *cn = scene->normals + 3 * (size_t)hit->triangle;
+        cg_vec3 sn = cg_vec3_add(cg_vec3_add(cg_vec3_scale(cn[0], w0), cg_vec3_scale(cn[1], hit->u)),
+                                 cg_vec3_scale(cn[2], hit->v));
         sn = cg_vec3_normalize(sn);
         hit->smooth_normal = cg_vec3_length(sn) > 0 ? sn : hit->normal;
         hit->scale = fmax(max_abs(p[0]), fmax(max_abs(p[1]), max_abs(p[2])));

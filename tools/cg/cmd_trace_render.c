@@ -1,7 +1,7 @@
-/* cg trace-render MESH -o OUT.png: the ray tracer (see render_raytrace.c). */
+/* cg trace-render MESH -o OUT.png: the ray tracer (see trace_command.c). */
 #include "cli.h"
 #include "command.h"
-#include "render_raytrace.h"
+#include "trace_command.h"
 
 static int run(int argc, char **argv)
 {
@@ -31,9 +31,11 @@ const cg_command cg_command_trace_render = {
     "       cg trace-render --scene spheres -o OUT.png [options]\n\n"
     "Whitted ray tracing through a BVH: shadows, mirror reflection, refraction with\n"
     "Fresnel; the mesh (OBJ, OFF, PLY, STL) or the built-in scene 'spheres' (glass\n"
-    "and mirror spheres over a checkered plane, soft shadows from an area light).\n\n"
+    "and mirror spheres over a checkered plane, soft shadows from an area light).\n"
+    "The options of 'cg render' mean the same here (and 'cg render --algorithm\n"
+    "raytrace' is this ray tracer with its default --spp 1 --depth 5).\n\n"
     "  -o FILE              output image (.png, .ppm, .pgm)\n"
-    "  --size WxH           image size (default 640x480)\n"
+    "  --size WxH           image size (default 800x600)\n"
     "  --eye X,Y,Z          camera position (default: frames the whole mesh)\n"
     "  --target X,Y,Z       point looked at (default: the mesh's centre)\n"
     "  --up X,Y,Z           up direction (default 0,1,0)\n"
@@ -43,7 +45,7 @@ const cg_command cg_command_trace_render = {
     "                       default: one from the camera's upper left)\n"
     "  --ambient K          ambient coefficient (default 0.15)\n"
     "  --shading MODE       flat (face normals), gouraud or phong (interpolated normals)\n"
-    "  --color COLOR        the mesh's diffuse colour (default #c8c8c8)\n"
+    "  --color COLOR        the mesh's diffuse colour (default light grey)\n"
     "  --background COLOR   where no object is hit (default black)\n"
     "  --spp N              samples per pixel, stratified (default 1: pixel centres)\n"
     "  --depth N            reflection/refraction recursion limit, 0..64 (default 5)\n"

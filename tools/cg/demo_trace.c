@@ -1,7 +1,8 @@
 /* Gallery: ray tracing (section 5.4) - the classic scene of glass and mirror
  * spheres over a checkered floor, and a scanned mesh with shadows. */
 #include "demo.h"
-#include "render_raytrace.h"
+#include "trace_command.h"
+#include "cg/color.h"
 
 #include <stdio.h>
 
@@ -20,11 +21,11 @@ static int render(demo_context *context)
 {
     raytrace_settings s;
     raytrace_settings_default(&s);
-    s.scene = "spheres";
+    s.extra.classic_scene = 1;
     s.width = 480;
     s.height = 320;
-    s.samples = 4;
-    s.threads = 2;
+    s.extra.samples = 4;
+    s.render.threads = 2;
     s.quiet = 1;
     if (add(context, &s, "trace-spheres.png",
             "Whitted ray tracing through a SAH bounding volume hierarchy: a glass sphere "
@@ -33,22 +34,31 @@ static int render(demo_context *context)
             "cg trace-render --scene spheres -o trace-spheres.png --size 480x320 --spp 4"))
         return 1;
 #ifdef CG_DATA_DIR
+    FILE *probe = fopen(CG_DATA_DIR "/meshes/bunny.obj", "rb");
+    if (!probe)
+        return 0; /* the mesh is not there (an installed tool): no picture */
+    fclose(probe);
     raytrace_settings_default(&s);
     s.input = CG_DATA_DIR "/meshes/bunny.obj";
     s.width = 400;
     s.height = 320;
-    s.samples = 4;
-    s.threads = 2;
+    s.extra.samples = 4;
+    s.extra.floor = 1;
+    s.render.threads = 2;
+    s.render.color = cg_rgba8_to_linear((cg_rgba8){225, 190, 150, 255});
+    s.render.lights[0].direction = cg_vec3_make(-1, 1, 0.2);
+    s.eye = cg_vec3_make(5, 9, 18);
+    s.target = cg_vec3_make(0, 3.5, 0);
+    s.have_eye = s.have_target = 1;
+    s.render.lights[0].intensity = 1;
+    s.render.light_count = 1;
     s.quiet = 1;
-    s.floor = 1;
-    s.color = (cg_rgba8){225, 190, 150, 255};
-    s.light_dirs[0] = cg_vec3_normalize(cg_vec3_make(-0.6, 1, 0.5));
-    s.light_count = 1;
     if (add(context, &s, "trace-bunny.png",
             "A scanned mesh (Stanford bunny, 3,674 triangles) ray traced with hard shadows on a "
             "checkered floor, interpolated normals",
-            "cg trace-render data/meshes/bunny.obj --floor --light-dir=-0.6,1,0.5 "
-            "--color '#e1be96' --size 400x320 --spp 4 -o trace-bunny.png"))
+            "cg trace-render data/meshes/bunny.obj --floor --light-dir=-1,1,0.2 "
+            "--eye 5,9,18 --target 0,3.5,0 --color '#e1be96' --size 400x320 --spp 4 "
+            "-o trace-bunny.png"))
         return 1;
 #endif
     return 0;

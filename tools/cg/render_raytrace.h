@@ -1,53 +1,29 @@
-/* The ray tracer behind `cg trace-render` (and `cg render --algorithm
- * raytrace`): the settings of the shared render contract plus the ray
- * tracer's own, an option parser both commands can call one option at a
- * time, and the runner. */
+/* The dispatch point of `cg render --algorithm raytrace`.
+ *
+ * cmd_render.c parses the options, loads the mesh, fixes the camera (framed
+ * to the mesh unless --eye was given; options->frame_camera is then 0) and
+ * calls these three functions; render_raytrace.c implements them with the
+ * ray tracer (module trace).  Until the ray tracer is built in, create
+ * reports that the algorithm is not available. */
 #ifndef CG_TOOL_RENDER_RAYTRACE_H
 #define CG_TOOL_RENDER_RAYTRACE_H
 
-#include "cg/image.h"
-#include "cg/core.h"
+#include "cg/mesh.h"
+#include "cg/render.h"
 
-enum { RAYTRACE_MAX_LIGHTS = 8 };
+typedef struct render_raytracer render_raytracer;
 
-typedef struct raytrace_settings {
-    const char *input;  /* mesh file, or NULL with scene set */
-    const char *scene;  /* built-in scene name ("spheres"), or NULL */
-    const char *output; /* -o */
-    int width, height;  /* --size */
-    cg_vec3 eye, target, up;
-    int have_eye, have_target;
-    int orthographic;   /* --ortho given */
-    double fov_degrees, ortho_height;
-    cg_vec3 light_dirs[RAYTRACE_MAX_LIGHTS]; /* toward the lights */
-    int light_count;
-    double ambient;
-    int flat;           /* --shading flat (gouraud and phong interpolate normals) */
-    int threads;
-    cg_rgba8 background, color;
-    int have_background;
-    int repeat;
-    int samples, depth; /* --spp, --depth */
-    int stats;          /* --stats */
-    int shadows;        /* --no-shadows clears it */
-    int quiet;          /* --quiet: no progress */
-    int floor;          /* --floor: a checkered floor under the mesh */
-} raytrace_settings;
-
-void raytrace_settings_default(raytrace_settings *s);
-
-/* Parses the option at argv[*i] (advancing *i past its value) when it is one
- * of the settings above: returns 1 when consumed, 0 when not a ray-tracer
- * option, -1 after printing an error for a bad value. */
-int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
-                          raytrace_settings *s);
-
-/* Loads or builds the scene and renders it into a new image (settings.repeat
- * times when > 0, printing "frame: 12.3 ms"); returns an exit status. */
-int raytrace_render(const char *command, const raytrace_settings *s, cg_image **out);
-
-/* Loads or builds the scene, renders (settings.repeat times when > 0,
- * printing "frame: 12.3 ms"), writes settings.output; returns an exit status. */
-int raytrace_run(const char *command, const raytrace_settings *s);
+/* Prepares mesh (an acceleration structure, normals...) for tracing with the
+ * camera, lights (options->lights, or the default key light when
+ * light_count is 0), ambient, specular, shininess, colours, shading, culling
+ * and thread count of options.  Returns CLI_OK, or prints one line
+ * ("cg: render: ...") and returns CLI_FAILED. */
+int render_raytrace_create(const cg_mesh *mesh, const cg_render_options *options,
+                           render_raytracer **out);
+/* Renders one frame into image (RGBA8, the --size of the command); may be
+ * called many times (--repeat).  Returns CLI_OK or prints and returns
+ * CLI_FAILED. */
+int render_raytrace_draw(render_raytracer *tracer, cg_image *image);
+void render_raytrace_free(render_raytracer *tracer);
 
 #endif

@@ -1,0 +1,1168 @@
+/* Boolean operations on polygon sets by a sweep over scanbeams, in the manner
+ * of Vatti (11.2.2).
+ *
+ * Every ring of both operands is a closed path on a 64-bit integer grid.  The
+ * sweep visits the scanlines (the distinct y of the vertices) from bottom to
+ * top; between two scanlines (a scanbeam) the active edges are ordered by x.
+ *
+ *  1. Intersections.  Two edges whose order at the top of a beam is the
+ *     reverse of their order at the bottom cross inside the beam; an edge
+ *     that passes through a scanline exactly where another edge or a
+ *     horizontal edge is also needs a vertex there.  Such points are rounded
+ *     to the grid and the edges split there (both pieces keep the path
+ *     closed).  Rounding can move an edge by half a unit, so the sweep is
+ *     repeated until a pass finds nothing to split (two passes in practice).
+ *  2. Classification.  In the final pass no two edges cross inside a beam,
+ *     so walking a beam from left to right and summing the windings of the
+ *     subject's and the clip's edges tells, for every gap between edges,
+ *     whether it is in the result (fill rule per operand, then the
+ *     operation).  An edge (or a group of coincident edges) with the result
+ *     on one side only is a piece of the result's boundary, directed so the
+ *     result is on its left; the pieces of one edge over consecutive beams
+ *     join into a run.  On a scanline the result can only change from below
+ *     to above under horizontal edges; there the horizontal boundary pieces
+ *     come from comparing the two sides.
+ *  3. Assembly.  The directed pieces meet only at grid points; they are
+ *     linked into rings taking, at a vertex with several ways out, the
+ *     sharpest left turn, which keeps rings that touch at a point apart.
+ *     Counter-clockwise rings are outer contours, clockwise ones holes, each
+ *     hole going to the smallest outer contour around it.
+ *
+ * All decisions are exact (128-bit integer arithmetic, with a double filter
+ * for speed), so the result does not depend on rounding luck. */
+#include "internal.h"
+
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef clip_i128 i128;
+
+typedef struct bedge {
+    int64_t xb, yb, xt, yt; /* bottom and top, yb < yt */
+    int w;                  /* winding added when crossed from left to right */
+    int op;                 /* 0 subject, 1 clip */
+    double slope;           /* dx / dy */
+    int64_t ox0, oy0, ox1, oy1; /* the input edge it is a piece of */
+} bedge;
+
+typedef struct hseg { int64_t y, x0, x1; } hseg;
+typedef struct splitpt { uint32_t edge; int64_t x, y; } splitpt;
+typedef struct piece { int64_t x0, y0, x1, y1; } piece;
+
+#define GROW(arr, n, cap, fail)                                                \
+    do {                                                                       \
+        if ((n) == (cap)) {                                                    \
+            size_t c_ = (cap) ? (cap) * 2 : 64;                                \
+            void *p_ = realloc((arr), c_ * sizeof *(arr));                     \
+            if (!p_)                                                           \
+                fail;                                                          \
+            (arr) = p_;                                                        \
+            (cap) = c_;                                                        \
+        }                                                                      \
+    } while (0)
+
+typedef struct engine {
+    bedge *E;
+    size_t ne, cape;
+    hseg *H;
+    size_t nh, caph;
+    splitpt *S;
+    size_t ns, caps;
+    piece *P;
+    size_t np, capp;
+    cg_clip_op op;
+    cg_clip_fill fill[2];
+} engine;
+
+static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
+                     const int64_t orig[4])
+{
+    if (y0 == y1) {
+        if (x0 == x1)
+            return 1;
+        GROW(g->H, g->nh, g->caph, return 0);
+        g->H[g->nh++] = (hseg){y0, x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0};
+        return 1;
+    }
+    GROW(g->E, g->ne, g->cape, return 0);
+    bedge *e = &g->E[g->ne++];
+    if (y0 < y1) {
+        *e = (bedge){x0, y0, x1, y1, -1, op, 0, 0, 0, 0, 0};
+    } else {
+        *e = (bedge){x1, y1, x0, y0, 1, op, 0, 0, 0, 0, 0};
+    }
+    e->slope = (double)(e->xt - e->xb) / (double)(e->yt - e->yb);
+    if (orig) {
+        e->ox0 = orig[0];
+        e->oy0 = orig[1];
+        e->ox1 = orig[2];
+        e->oy1 = orig[3];
+    } else {
+        e->ox0 = e->xb;
+        e->oy0 = e->yb;
+        e->ox1 = e->xt;
+        e->oy1 = e->yt;
+    }
+    return 1;
+}
+
+static int add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op)
+{
+    return add_piece(g, x0, y0, x1, y1, op, NULL);
+}
+
+/* ---- exact helpers ------------------------------------------------------ */
+
+/* floor(n / d + 1/2) for d > 0 */
+static int64_t round_div(i128 n, i128 d)
+{
+    i128 q = n / d, r = n % d;
+    if (r < 0) {
+        q -= 1;
+        r += d;
+    }
+    if (2 * r >= d)
+        q += 1;
+    return (int64_t)q;
+}
+
+/* x of edge e at scanline y as num / den, den > 0 */
+static inline i128 x_num(const bedge *e, int64_t y)
+{
+    return (i128)e->xb * (e->yt - e->yb) + (i128)(y - e->yb) * (e->xt - e->xb);
+}
+static inline int64_t x_den(const bedge *e) { return e->yt - e->yb; }
+
+static inline double x_at(const bedge *e, int64_t y)
+{
+    if (y == e->yb)
+        return (double)e->xb;
+    if (y == e->yt)
+        return (double)e->xt;
+    return (double)e->xb + (double)(y - e->yb) * e->slope;
+}
+
+/* sign of x_a(y) - x_b(y); xa, xb are the double values */
+static inline int cmp_x(const bedge *a, const bedge *b, int64_t y, double xa, double xb)
+{
+    double d = xa - xb;
+    if (d > 0.01)
+        return 1;
+    if (d < -0.01)
+        return -1;
+    i128 l = x_num(a, y) * x_den(b), r = x_num(b, y) * x_den(a);
+    return (l > r) - (l < r);
+}
+
+static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
+{
+    i128 n = x_num(e, y), d = x_den(e);
+    *x = round_div(n, d);
+    return (i128)*x * d == n;
+}
+
+/* ---- the sweep ------------------------------------------------------------ */
+
+typedef struct sweep {
+    engine *g;
+    int64_t *ys;
+    size_t nys;
+    uint32_t *by_bottom; /* edges sorted by yb */
+    uint32_t *act, *nxt;
+    size_t nact;
+    double *xc, *xn; /* x at the current scanline, at the next one */
+    /* runs */
+    unsigned char *run_open, *run_up, *brk, *is_rep;
+    int64_t *run_x, *run_y;
+    int classify, changed;
+    int use_input_lines; /* round on the input edges (early passes) */
+} sweep;
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* merge sort of edge indices by (yb, xb) */
+static void sort_by_bottom(const bedge *E, uint32_t *idx, uint32_t *tmp, size_t n)
+{
+    if (n < 2)
+        return;
+    if (n < 16) {
+        for (size_t i = 1; i < n; i++) {
+            uint32_t v = idx[i];
+            size_t j = i;
+            while (j > 0 && (E[idx[j - 1]].yb > E[v].yb ||
+                             (E[idx[j - 1]].yb == E[v].yb && E[idx[j - 1]].xb > E[v].xb))) {
+                idx[j] = idx[j - 1];
+                j--;
+            }
+            idx[j] = v;
+        }
+        return;
+    }
+    size_t h = n / 2;
+    sort_by_bottom(E, idx, tmp, h);
+    sort_by_bottom(E, idx + h, tmp, n - h);
+    size_t i = 0, j = h, k = 0;
+    while (i < h && j < n) {
+        const bedge *a = &E[idx[i]], *b = &E[idx[j]];
+        if (b->yb < a->yb || (b->yb == a->yb && b->xb < a->xb))
+            tmp[k++] = idx[j++];
+        else
+            tmp[k++] = idx[i++];
+    }
+    while (i < h)
+        tmp[k++] = idx[i++];
+    while (j < n)
+        tmp[k++] = idx[j++];
+    memcpy(idx, tmp, n * sizeof *idx);
+}
+
+static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
+{
+    engine *g = s->g;
+    GROW(g->S, g->ns, g->caps, return 0);
+    g->S[g->ns++] = (splitpt){e, x, y};
+    s->changed = 1;
+    s->classify = 0; /* this pass will be repeated: stop classifying */
+    return 1;
+}
+
+/* Passing edge e meets something at scanline y: a vertex for it there. */
+static int meet(sweep *s, uint32_t e, int64_t y)
+{
+    int64_t x;
+    const bedge *ed = &s->g->E[e];
+    if (x_is_integer(ed, y, &x)) {
+        s->brk[e] = 1;
+        /* an exact split is not needed: the run breaks there */
+        return 1;
+    }
+    /* round the input edge's x there rather than the piece's, so that
+     * rounding errors do not add up along an edge split many times */
+    if (s->use_input_lines && ed->oy0 != ed->oy1) {
+        i128 dy = ed->oy1 - ed->oy0;
+        i128 n = (i128)ed->ox0 * dy + (i128)(y - ed->oy0) * (ed->ox1 - ed->ox0);
+        if (dy < 0) {
+            n = -n;
+            dy = -dy;
+        }
+        x = round_div(n, dy);
+    }
+    return add_split(s, e, x, y);
+}
+
+/* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
+ * parallel. */
+static int line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
+                             int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py)
+{
+    i128 dax = ax1 - ax0, day = ay1 - ay0, dbx = bx1 - bx0, dby = by1 - by0;
+    i128 den = dax * dby - day * dbx;
+    if (den == 0)
+        return 0;
+    i128 num = (i128)(bx0 - ax0) * dby - (i128)(by0 - ay0) * dbx;
+    if (den < 0) {
+        den = -den;
+        num = -num;
+    }
+    /* the point must be on segment a (0 <= t <= 1) for the products to fit */
+    if (num < 0 || num > den)
+        return 0;
+    *px = ax0 + round_div(num * dax, den);
+    *py = ay0 + round_div(num * day, den);
+    return 1;
+}
+
+static int fill_in(cg_clip_fill f, int64_t w)
+{
+    switch (f) {
+    case CG_CLIP_EVEN_ODD:
+        return (int)(w & 1);
+    case CG_CLIP_NON_ZERO:
+        return w != 0;
+    case CG_CLIP_POSITIVE:
+        return w > 0;
+    default:
+        return w < 0;
+    }
+}
+
+static int inside(const engine *g, int64_t wa, int64_t wb)
+{
+    int a = fill_in(g->fill[0], wa), b = fill_in(g->fill[1], wb);
+    switch (g->op) {
+    case CG_CLIP_INTERSECTION:
+        return a && b;
+    case CG_CLIP_UNION:
+        return a || b;
+    case CG_CLIP_DIFFERENCE:
+        return a && !b;
+    default:
+        return a != b;
+    }
+}
+
+static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
+{
+    if (x0 == x1 && y0 == y1)
+        return 1;
+    GROW(g->P, g->np, g->capp, return 0);
+    g->P[g->np++] = (piece){x0, y0, x1, y1};
+    return 1;
+}
+
+static int close_run(sweep *s, uint32_t e, int64_t y)
+{
+    const bedge *ed = &s->g->E[e];
+    int64_t x = y == ed->yt ? ed->xt : round_div(x_num(ed, y), x_den(ed));
+    s->run_open[e] = 0;
+    if (s->run_up[e])
+        return emit(s->g, s->run_x[e], s->run_y[e], x, y);
+    return emit(s->g, x, y, s->run_x[e], s->run_y[e]);
+}
+
+/* Horizontal boundary pieces on scanline y: between below[] (edges reaching
+ * y from below, x at y in xc) and above[] (edges leaving y upwards). */
+static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t nb,
+                             const uint32_t *above, size_t na)
+{
+    engine *g = s->g;
+    int64_t wb[2] = {0, 0}, wa[2] = {0, 0};
+    size_t i = 0, j = 0;
+    int have_prev = 0;
+    int64_t prev_x = 0;
+    while (i < nb || j < na) {
+        /* the leftmost next position */
+        const bedge *e;
+        uint32_t idx;
+        if (j >= na || (i < nb && cmp_x(&g->E[below[i]], &g->E[above[j]], y, s->xc[below[i]],
+                                        s->xc[above[j]]) <= 0))
+            idx = below[i];
+        else
+            idx = above[j];
+        e = &g->E[idx];
+        int64_t X = round_div(x_num(e, y), x_den(e));
+        if (have_prev) {
+            int sb = inside(g, wb[0], wb[1]), sa = inside(g, wa[0], wa[1]);
+            if (sb != sa && X != prev_x) {
+                if (sa ? !emit(g, prev_x, y, X, y) : !emit(g, X, y, prev_x, y))
+                    return 0;
+            }
+        }
+        /* apply everything at this position */
+        double xv = s->xc[idx];
+        while (i < nb && cmp_x(&g->E[below[i]], e, y, s->xc[below[i]], xv) == 0) {
+            wb[g->E[below[i]].op] += g->E[below[i]].w;
+            i++;
+        }
+        while (j < na && cmp_x(&g->E[above[j]], e, y, s->xc[above[j]], xv) == 0) {
+            wa[g->E[above[j]].op] += g->E[above[j]].w;
+            j++;
+        }
+        have_prev = 1;
+        prev_x = X;
+    }
+    return 1;
+}
+
+static int run_sweep(sweep *s)
+{
+    engine *g = s->g;
+    size_t ne = g->ne, nys = s->nys, ip = 0, nh = g->nh, ih = 0;
+    const bedge *E = g->E;
+    s->nact = 0;
+    for (size_t iy = 0; iy < nys; iy++) {
+        int64_t y = s->ys[iy];
+        int has_next = iy + 1 < nys;
+        int64_t yn = has_next ? s->ys[iy + 1] : y;
+        uint32_t *below = s->act;
+        size_t nb = s->nact;
+        for (size_t k = 0; k < nb; k++)
+            s->xc[below[k]] = x_at(&E[below[k]], y);
+        /* above: passing edges in their order, then the new ones merged in */
+        size_t na = 0;
+        uint32_t *above = s->nxt;
+        for (size_t k = 0; k < nb; k++)
+            if (E[below[k]].yt > y)
+                above[na++] = below[k];
+        size_t first_new = na;
+        while (ip < ne && E[s->by_bottom[ip]].yb == y) {
+            uint32_t e = s->by_bottom[ip++];
+            s->xc[e] = (double)E[e].xb;
+            above[na++] = e;
+        }
+        (void)first_new;
+        for (size_t k = 0; k < na; k++)
+            s->xn[above[k]] = x_at(&E[above[k]], yn);
+        /* insertion sort by (x at y, x at yn) */
+        for (size_t k = 1; k < na; k++) {
+            uint32_t v = above[k];
+            size_t m = k;
+            while (m > 0) {
+                uint32_t u = above[m - 1];
+                int c = cmp_x(&E[u], &E[v], y, s->xc[u], s->xc[v]);
+                if (c == 0 && has_next)
+                    c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                if (c <= 0)
+                    break;
+                above[m] = u;
+                m--;
+            }
+            above[m] = v;
+        }
+        /* edges meeting at y where one passes through: a vertex there */
+        for (size_t k = 0; k + 1 < nb; k++) {
+            uint32_t a = below[k], b = below[k + 1];
+            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
+                continue;
+            if (E[a].yt > y && !meet(s, a, y))
+                return 0;
+            if (E[b].yt > y && !meet(s, b, y))
+                return 0;
+        }
+        for (size_t k = 0; k + 1 < na; k++) {
+            uint32_t a = above[k], b = above[k + 1];
+            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
+                continue;
+            if (E[a].yb < y && !meet(s, a, y))
+                return 0;
+            if (E[b].yb < y && !meet(s, b, y))
+                return 0;
+        }
+        /* horizontal edges on this scanline */
+        while (ih < nh && g->H[ih].y < y)
+            ih++;
+        size_t h0 = ih;
+        while (ih < nh && g->H[ih].y == y)
+            ih++;
+        if (ih > h0) {
+            /* passing edges whose x lies within a horizontal edge (the
+             * horizontal edges are sorted by x0): a vertex there */
+            size_t hj = h0;
+            int64_t reach = INT64_MIN;
+            for (size_t k = 0; k < na; k++) {
+                uint32_t e = above[k];
+                if (E[e].yb == y)
+                    continue;
+                double xv = s->xc[e];
+                while (hj < ih && (double)g->H[hj].x0 <= xv + 0.5) {
+                    if (g->H[hj].x1 > reach)
+                        reach = g->H[hj].x1;
+                    hj++;
+                }
+                if ((double)reach >= xv - 0.5) {
+                    /* exact: x0 <= x(y) <= reach for some segment */
+                    i128 n = x_num(&E[e], y), d = x_den(&E[e]);
+                    int covered = 0;
+                    for (size_t q = h0; q < hj && !covered; q++)
+                        covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
+                    if (covered && !meet(s, e, y))
+                        return 0;
+                }
+            }
+            if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
+                return 0;
+        }
+        /* runs of edges ending here */
+        if (s->classify) {
+            for (size_t k = 0; k < nb; k++) {
+                uint32_t e = below[k];
+                if (E[e].yt == y && s->run_open[e] && !close_run(s, e, y))
+                    return 0;
+            }
+        }
+        /* the beam [y, yn] */
+        uint32_t *t = s->act;
+        s->act = above;
+        s->nxt = t;
+        s->nact = na;
+        if (!has_next)
+            break;
+        if (s->classify) {
+            int64_t w[2] = {0, 0};
+            int left = 0;
+            size_t k = 0;
+            while (k < na) {
+                size_t k2 = k + 1;
+                uint32_t rep = above[k];
+                w[E[rep].op] += E[rep].w;
+                while (k2 < na) {
+                    uint32_t a = above[k], b = above[k2];
+                    if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0 ||
+                        cmp_x(&E[a], &E[b], yn, s->xn[a], s->xn[b]) != 0)
+                        break;
+                    if (b < rep)
+                        rep = b;
+                    w[E[b].op] += E[b].w;
+                    k2++;
+                }
+                int right = inside(g, w[0], w[1]);
+                for (size_t q = k; q < k2; q++) {
+                    uint32_t e = above[q];
+                    int boundary = e == rep && left != right;
+                    int up = left; /* result on the left (-x side): go up */
+                    if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
+                        if (!close_run(s, e, y))
+                            return 0;
+                    }
+                    if (boundary && !s->run_open[e]) {
+                        s->run_open[e] = 1;
+                        s->run_up[e] = (unsigned char)up;
+                        s->run_y[e] = y;
+                        s->run_x[e] = y == E[e].yb ? E[e].xb
+                                                   : round_div(x_num(&E[e], y), x_den(&E[e]));
+                    }
+                    s->brk[e] = 0;
+                }
+                left = right;
+                k = k2;
+            }
+        } else {
+            for (size_t k = 0; k < na; k++)
+                s->brk[above[k]] = 0;
+        }
+        /* crossings inside the beam: inversions of the order at yn */
+        for (size_t k = 1; k < na; k++) {
+            uint32_t v = above[k];
+            size_t m = k;
+            while (m > 0) {
+                uint32_t u = above[m - 1];
+                if (cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]) <= 0)
+                    break;
+                /* u and v cross strictly inside the beam: the crossing of
+                 * the input edges they come from, rounded, when it lies in
+                 * the beam (no drift), else the crossing of the pieces */
+                const bedge *a = &E[u], *b = &E[v];
+                int64_t px, py;
+                if (!s->use_input_lines ||
+                    !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
+                                       b->oy1, &px, &py) ||
+                    py < y || py > yn) {
+                    line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px,
+                                      &py);
+                }
+                if (py < y)
+                    py = y;
+                if (py > yn)
+                    py = yn;
+                if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
+                    return 0;
+                above[m] = u;
+                m--;
+            }
+            above[m] = v;
+        }
+    }
+    return 1;
+}
+
+/* Replaces every edge that has split points by its pieces. */
+typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
+
+static int cmp_split(const void *a, const void *b)
+{
+    const splitpt *p = a, *q = b;
+    if (p->edge != q->edge)
+        return p->edge < q->edge ? -1 : 1;
+    return 0;
+}
+
+static int cmp_along(const void *a, const void *b)
+{
+    const split_sort *p = a, *q = b;
+    if (p->t != q->t)
+        return p->t < q->t ? -1 : 1;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+static int apply_splits(engine *g)
+{
+    qsort(g->S, g->ns, sizeof *g->S, cmp_split);
+    size_t old_ne = g->ne;
+    split_sort *buf = NULL;
+    size_t capbuf = 0;
+    unsigned char *dead = calloc(old_ne ? old_ne : 1, 1);
+    if (!dead)
+        return 0;
+    for (size_t i = 0; i < g->ns;) {
+        size_t j = i;
+        uint32_t ei = g->S[i].edge;
+        while (j < g->ns && g->S[j].edge == ei)
+            j++;
+        size_t n = j - i;
+        if (n + 2 > capbuf) {
+            capbuf = (n + 2) * 2;
+            split_sort *nb = realloc(buf, capbuf * sizeof *nb);
+            if (!nb) {
+                free(buf);
+                free(dead);
+                return 0;
+            }
+            buf = nb;
+        }
+        bedge e = g->E[ei];
+        i128 dx = e.xt - e.xb, dy = e.yt - e.yb;
+        size_t m = 0;
+        buf[m++] = (split_sort){e.xb, e.yb, -1};
+        for (size_t k = i; k < j; k++) {
+            int64_t x = g->S[k].x, y = g->S[k].y;
+            i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
+            buf[m++] = (split_sort){x, y, t};
+        }
+        qsort(buf + 1, m - 1, sizeof *buf, cmp_along);
+        buf[m++] = (split_sort){e.xt, e.yt, 0};
+        dead[ei] = 1;
+        /* the path direction of the edge: w == -1 means upwards */
+        for (size_t k = 0; k + 1 < m; k++) {
+            split_sort p = buf[k], q = buf[k + 1];
+            if (p.x == q.x && p.y == q.y)
+                continue;
+            int64_t orig[4] = {e.ox0, e.oy0, e.ox1, e.oy1};
+            int ok = e.w < 0 ? add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
+                             : add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
+            if (!ok) {
+                free(buf);
+                free(dead);
+                return 0;
+            }
+        }
+        i = j;
+    }
+    free(buf);
+    /* compact */
+    size_t w = 0;
+    for (size_t i = 0; i < g->ne; i++)
+        if (i >= old_ne || !dead[i])
+            g->E[w++] = g->E[i];
+    g->ne = w;
+    g->ns = 0;
+    free(dead);
+    return 1;
+}
+
+static int cmp_hseg(const void *a, const void *b)
+{
+    const hseg *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x0 > q->x0) - (p->x0 < q->x0);
+}
+
+/* ---- assembly -------------------------------------------------------------- */
+
+static int cmp_piece_start(const void *a, const void *b)
+{
+    const piece *p = a, *q = b;
+    if (p->y0 != q->y0)
+        return p->y0 < q->y0 ? -1 : 1;
+    if (p->x0 != q->x0)
+        return p->x0 < q->x0 ? -1 : 1;
+    return 0;
+}
+
+/* Clockwise angle from direction r to direction o, as an order key:
+ * returns <0 when o1 comes before o2 turning clockwise from r. */
+static int half_cw(i128 rx, i128 ry, i128 ox, i128 oy)
+{
+    i128 c = rx * oy - ry * ox, d = rx * ox + ry * oy;
+    if (c < 0)
+        return 0;
+    if (c == 0 && d < 0)
+        return 1;
+    if (c > 0)
+        return 2;
+    return 3;
+}
+
+static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
+{
+    i128 ax = a->x1 - a->x0, ay = a->y1 - a->y0, bx = b->x1 - b->x0, by = b->y1 - b->y0;
+    int ha = half_cw(rx, ry, ax, ay), hb = half_cw(rx, ry, bx, by);
+    if (ha != hb)
+        return ha < hb;
+    i128 c = ax * by - ay * bx;
+    return c < 0; /* b is clockwise of a */
+}
+
+typedef struct ringbuf {
+    cg_point64 *pts;
+    size_t n, cap;
+} ringbuf;
+
+static int assemble(engine *g, cg_polygon_set64 *result)
+{
+    size_t np = g->np;
+    piece *P = g->P;
+    if (np == 0)
+        return 1;
+    qsort(P, np, sizeof *P, cmp_piece_start);
+    unsigned char *used = calloc(np, 1);
+    /* rings collected first: points and ring boundaries */
+    cg_polygon_set64 rings = {0};
+    ringbuf rb = {0};
+    int ok = 0;
+    if (!used)
+        return 0;
+    for (size_t start = 0; start < np; start++) {
+        if (used[start])
+            continue;
+        rb.n = 0;
+        size_t cur = start;
+        used[cur] = 1;
+        for (;;) {
+            GROW(rb.pts, rb.n, rb.cap, goto fail);
+            rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
+            int64_t vx = P[cur].x1, vy = P[cur].y1;
+            /* outgoing pieces at v: binary search */
+            size_t lo = 0, hi = np;
+            while (lo < hi) {
+                size_t mid = (lo + hi) / 2;
+                if (P[mid].y0 < vy || (P[mid].y0 == vy && P[mid].x0 < vx))
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            size_t best = (size_t)-1;
+            i128 rx = P[cur].x0 - P[cur].x1, ry = P[cur].y0 - P[cur].y1;
+            for (size_t k = lo; k < np && P[k].y0 == vy && P[k].x0 == vx; k++) {
+                if (used[k] && k != start)
+                    continue;
+                if (best == (size_t)-1 || cw_before(rx, ry, &P[k], &P[best]))
+                    best = k;
+            }
+            if (best == (size_t)-1 || best == start)
+                break;
+            cur = best;
+            used[cur] = 1;
+        }
+        /* drop collinear vertices */
+        size_t n = rb.n;
+        int again = 1;
+        while (again && n >= 3) {
+            again = 0;
+            size_t m = 0;
+            for (size_t i = 0; i < n; i++) {
+                cg_point64 a = m ? rb.pts[m - 1] : rb.pts[n - 1], b = rb.pts[i],
+                           c = rb.pts[(i + 1) % n];
+                i128 cr = (i128)(b.x - a.x) * (c.y - b.y) - (i128)(b.y - a.y) * (c.x - b.x);
+                if (cr == 0) {
+                    again = 1;
+                    continue;
+                }
+                rb.pts[m++] = b;
+            }
+            n = m;
+        }
+        if (n < 3)
+            continue;
+        if (cg_polygon_set64_add_ring(&rings, rb.pts, n, 1) != CG_OK)
+            goto fail;
+    }
+    /* classify and nest */
+    {
+        size_t nr = rings.ring_count;
+        double *area = malloc((nr ? nr : 1) * sizeof *area);
+        int64_t(*bb)[4] = malloc((nr ? nr : 1) * sizeof *bb);
+        size_t *parent = malloc((nr ? nr : 1) * sizeof *parent);
+        size_t *order = malloc((nr ? nr : 1) * sizeof *order);
+        if (!area || !bb || !parent || !order) {
+            free(area);
+            free(bb);
+            free(parent);
+            free(order);
+            goto fail;
+        }
+        size_t nouter = 0;
+        for (size_t r = 0; r < nr; r++) {
+            size_t a = rings.ring_start[r], b = rings.ring_start[r + 1];
+            i128 s = 0;
+            int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+            for (size_t i = a; i < b; i++) {
+                cg_point64 p = rings.points[i], q = rings.points[i + 1 < b ? i + 1 : a];
+                s += (i128)p.x * q.y - (i128)q.x * p.y;
+                if (p.x < x0)
+                    x0 = p.x;
+                if (p.x > x1)
+                    x1 = p.x;
+                if (p.y < y0)
+                    y0 = p.y;
+                if (p.y > y1)
+                    y1 = p.y;
+            }
+            area[r] = (double)s;
+            bb[r][0] = x0;
+            bb[r][1] = y0;
+            bb[r][2] = x1;
+            bb[r][3] = y1;
+            parent[r] = (size_t)-1;
+            if (s > 0)
+                order[nouter++] = r;
+        }
+        /* outers by increasing area: the first that contains a hole is its parent */
+        for (size_t i = 1; i < nouter; i++) {
+            size_t v = order[i], j = i;
+            while (j > 0 && area[order[j - 1]] > area[v]) {
+                order[j] = order[j - 1];
+                j--;
+            }
+            order[j] = v;
+        }
+        for (size_t r = 0; r < nr; r++) {
+            if (area[r] > 0)
+                continue;
+            /* twice the midpoint of the hole's first edge: on no other ring */
+            size_t a = rings.ring_start[r];
+            cg_point64 p = rings.points[a], q = rings.points[a + 1];
+            i128 mx = (i128)p.x + q.x, my = (i128)p.y + q.y;
+            for (size_t oi = 0; oi < nouter; oi++) {
+                size_t o = order[oi];
+                if (mx < 2 * (i128)bb[o][0] || mx > 2 * (i128)bb[o][2] ||
+                    my < 2 * (i128)bb[o][1] || my > 2 * (i128)bb[o][3])
+                    continue;
+                size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
+                int in = 0;
+                for (size_t i = s0; i < s1; i++) {
+                    cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
+                    i128 uy = 2 * (i128)u.y, vy = 2 * (i128)v.y;
+                    if ((uy > my) != (vy > my)) {
+                        /* x of the edge at my compared with mx */
+                        i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
+                        i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
+                        if (vy > uy ? lhs < rhs : lhs > rhs)
+                            in = !in;
+                    }
+                }
+                if (in) {
+                    parent[r] = o;
+                    break;
+                }
+            }
+        }
+        /* output: each outer followed by its holes (a hole without an outer
+         * cannot happen; it would be dropped) */
+        size_t *first_hole = malloc((nr + 1) * sizeof *first_hole);
+        size_t *next_hole = malloc((nr + 1) * sizeof *next_hole);
+        int fail = !first_hole || !next_hole;
+        if (!fail) {
+            for (size_t r = 0; r < nr; r++)
+                first_hole[r] = (size_t)-1;
+            for (size_t r = nr; r-- > 0;) {
+                if (parent[r] != (size_t)-1) {
+                    next_hole[r] = first_hole[parent[r]];
+                    first_hole[parent[r]] = r;
+                }
+            }
+            for (size_t r = 0; r < nr && !fail; r++) {
+                if (area[r] <= 0)
+                    continue;
+                size_t a = rings.ring_start[r];
+                if (cg_polygon_set64_add_ring(result, rings.points + a,
+                                              rings.ring_start[r + 1] - a, 1) != CG_OK) {
+                    fail = 1;
+                    break;
+                }
+                for (size_t h = first_hole[r]; h != (size_t)-1; h = next_hole[h]) {
+                    size_t ha = rings.ring_start[h];
+                    if (cg_polygon_set64_add_ring(result, rings.points + ha,
+                                                  rings.ring_start[h + 1] - ha, 0) != CG_OK) {
+                        fail = 1;
+                        break;
+                    }
+                }
+            }
+        }
+        free(first_hole);
+        free(next_hole);
+        free(area);
+        free(bb);
+        free(parent);
+        free(order);
+        if (fail)
+            goto fail;
+    }
+    ok = 1;
+fail:
+    free(used);
+    free(rb.pts);
+    cg_polygon_set64_clear(&rings);
+    return ok;
+}
+
+#define MAX_PASSES 64
+
+static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
+{
+    sweep s;
+    memset(&s, 0, sizeof s);
+    s.g = g;
+    cg_status st = CG_ENOMEM;
+    for (int pass = 0;; pass++) {
+        if (pass == MAX_PASSES) {
+            st = CG_ERANGE;
+            break;
+        }
+        size_t ne = g->ne;
+        free(s.ys);
+        free(s.by_bottom);
+        free(s.act);
+        free(s.nxt);
+        free(s.xc);
+        free(s.xn);
+        free(s.run_open);
+        free(s.run_up);
+        free(s.brk);
+        free(s.run_x);
+        free(s.run_y);
+        free(s.is_rep);
+        memset(&s, 0, sizeof s);
+        s.g = g;
+        size_t n1 = ne ? ne : 1;
+        s.ys = malloc(2 * n1 * sizeof *s.ys);
+        s.by_bottom = malloc(n1 * sizeof *s.by_bottom);
+        s.act = malloc(n1 * sizeof *s.act);
+        s.nxt = malloc(n1 * sizeof *s.nxt);
+        s.xc = malloc(n1 * sizeof *s.xc);
+        s.xn = malloc(n1 * sizeof *s.xn);
+        s.run_open = calloc(n1, 1);
+        s.run_up = calloc(n1, 1);
+        s.brk = calloc(n1, 1);
+        s.run_x = malloc(n1 * sizeof *s.run_x);
+        s.run_y = malloc(n1 * sizeof *s.run_y);
+        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.xc || !s.xn || !s.run_open ||
+            !s.run_up || !s.brk || !s.run_x || !s.run_y)
+            break;
+        for (size_t i = 0; i < ne; i++) {
+            s.ys[2 * i] = g->E[i].yb;
+            s.ys[2 * i + 1] = g->E[i].yt;
+            s.by_bottom[i] = (uint32_t)i;
+        }
+        qsort(s.ys, 2 * ne, sizeof *s.ys, cmp_i64);
+        size_t u = 0;
+        for (size_t i = 0; i < 2 * ne; i++)
+            if (u == 0 || s.ys[u - 1] != s.ys[i])
+                s.ys[u++] = s.ys[i];
+        s.nys = u;
+        sort_by_bottom(g->E, s.by_bottom, s.act, ne);
+        qsort(g->H, g->nh, sizeof *g->H, cmp_hseg);
+        g->np = 0;
+        s.classify = 1;
+        s.changed = 0;
+        /* later passes round on the pieces themselves, which settles
+         * whatever the input-line rounding could not */
+        s.use_input_lines = pass < 8;
+        if (!run_sweep(&s))
+            break;
+        if (!s.changed) {
+            st = assemble(g, result) ? CG_OK : CG_ENOMEM;
+            break;
+        }
+        if (!apply_splits(g))
+            break;
+        if (g->ne > UINT32_MAX / 2)
+            break;
+    }
+    free(s.ys);
+    free(s.by_bottom);
+    free(s.act);
+    free(s.nxt);
+    free(s.xc);
+    free(s.xn);
+    free(s.run_open);
+    free(s.run_up);
+    free(s.brk);
+    free(s.run_x);
+    free(s.run_y);
+    free(s.is_rep);
+    return st;
+}
+
+static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
+{
+    if (!set)
+        return CG_OK;
+    if (set->ring_count && (!set->ring_start || !set->points))
+        return CG_EINVAL;
+    for (size_t r = 0; r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        if (b < a || b > set->point_count)
+            return CG_EINVAL;
+        for (size_t i = a; i < b; i++) {
+            cg_point64 p = set->points[i];
+            if (p.x > CG_CLIP_MAX_COORD || p.x < -CG_CLIP_MAX_COORD ||
+                p.y > CG_CLIP_MAX_COORD || p.y < -CG_CLIP_MAX_COORD)
+                return CG_ERANGE;
+        }
+        if (b - a < 2)
+            continue;
+        for (size_t i = a; i < b; i++) {
+            cg_point64 p = set->points[i], q = set->points[i + 1 < b ? i + 1 : a];
+            if (!add_edge(g, p.x, p.y, q.x, q.y, op))
+                return CG_ENOMEM;
+        }
+    }
+    return CG_OK;
+}
+
+cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
+                            cg_clip_fill subject_fill, const cg_polygon_set64 *clip,
+                            cg_clip_fill clip_fill, cg_polygon_set64 *result)
+{
+    if (!result)
+        return CG_EINVAL;
+    cg_polygon_set64_clear(result);
+    if ((unsigned)op > CG_CLIP_XOR || (unsigned)subject_fill > CG_CLIP_NEGATIVE ||
+        (unsigned)clip_fill > CG_CLIP_NEGATIVE)
+        return CG_EINVAL;
+    engine g;
+    memset(&g, 0, sizeof g);
+    g.op = op;
+    g.fill[0] = subject_fill;
+    g.fill[1] = clip_fill;
+    cg_status st = load(&g, subject, 0);
+    if (st == CG_OK)
+        st = load(&g, clip, 1);
+    if (st == CG_OK && g.ne > UINT32_MAX / 4)
+        st = CG_ERANGE;
+    if (st == CG_OK)
+        st = boolean_run(&g, result);
+    if (st != CG_OK)
+        cg_polygon_set64_clear(result);
+    free(g.E);
+    free(g.H);
+    free(g.S);
+    free(g.P);
+    return st;
+}
+
+/* ---- the double API ------------------------------------------------------------ */
+
+double clip_max_abs(const cg_polygon_set *set)
+{
+    double m = 0;
+    if (!set)
+        return 0;
+    for (size_t i = 0; i < set->point_count; i++) {
+        double a = fabs(set->points[i].x), b = fabs(set->points[i].y);
+        if (!isfinite(a) || !isfinite(b))
+            return NAN;
+        if (a > m)
+            m = a;
+        if (b > m)
+            m = b;
+    }
+    return m;
+}
+
+double clip_pick_scale(double scale, double max_abs)
+{
+    if (scale > 0)
+        return scale;
+    if (!(max_abs > 0))
+        return 1.0;
+    int e;
+    frexp(max_abs, &e); /* max_abs < 2^e */
+    if (e > 36 + 1000)
+        e = 36 + 1000;
+    return ldexp(1.0, 36 - e);
+}
+
+cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 *out)
+{
+    cg_polygon_set64_clear(out);
+    if (!in)
+        return CG_OK;
+    for (size_t r = 0; r < in->ring_count; r++) {
+        size_t a = in->ring_start[r], b = in->ring_start[r + 1];
+        if (b < a || b > in->point_count)
+            return CG_EINVAL;
+        cg_status st = cg_polygon_set64_add_ring(out, NULL, 0, 1);
+        if (st != CG_OK)
+            return st;
+        out->ring_count--; /* reopened below point by point */
+        for (size_t i = a; i < b; i++) {
+            double x = in->points[i].x * scale, y = in->points[i].y * scale;
+            if (!isfinite(x) || !isfinite(y))
+                return isfinite(in->points[i].x) && isfinite(in->points[i].y) ? CG_ERANGE
+                                                                              : CG_EINVAL;
+            if (fabs(x) > (double)CG_CLIP_MAX_COORD || fabs(y) > (double)CG_CLIP_MAX_COORD)
+                return CG_ERANGE;
+            cg_point64 p = {(int64_t)llround(x), (int64_t)llround(y)};
+            if (out->point_count == out->point_capacity) {
+                size_t cap = out->point_capacity ? out->point_capacity * 2 : 64;
+                cg_point64 *q = realloc(out->points, cap * sizeof *q);
+                if (!q)
+                    return CG_ENOMEM;
+                out->points = q;
+                out->point_capacity = cap;
+            }
+            out->points[out->point_count++] = p;
+        }
+        out->ring_count++;
+        out->ring_start[out->ring_count] = out->point_count;
+    }
+    return CG_OK;
+}
+
+cg_status clip_from_grid(const cg_polygon_set64 *in, double scale, cg_polygon_set *out)
+{
+    cg_polygon_set_clear(out);
+    for (size_t p = 0; p < in->polygon_count; p++) {
+        for (size_t r = in->polygon_start[p]; r < in->polygon_start[p + 1]; r++) {
+            size_t a = in->ring_start[r], b = in->ring_start[r + 1];
+            cg_status st = cg_polygon_set_add_ring(out, NULL, 0, r == in->polygon_start[p]);
+            if (st != CG_OK)
+                return st;
+            out->ring_count--;
+            for (size_t i = a; i < b; i++) {
+                if (out->point_count == out->point_capacity) {
+                    size_t cap = out->point_capacity ? out->point_capacity * 2 : 64;
+                    cg_vec2 *q = realloc(out->points, cap * sizeof *q);
+                    if (!q)
+                        return CG_ENOMEM;
+                    out->points = q;
+                    out->point_capacity = cap;
+                }
+                out->points[out->point_count++] =
+                    cg_vec2_make((double)in->points[i].x / scale, (double)in->points[i].y / scale);
+            }
+            out->ring_count++;
+            out->ring_start[out->ring_count] = out->point_count;
+        }
+    }
+    return CG_OK;
+}
+
+cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_fill subject_fill,
+                          const cg_polygon_set *clip, cg_clip_fill clip_fill, double scale,
+                          cg_polygon_set *result)
+{
+    if (!result)
+        return CG_EINVAL;
+    cg_polygon_set_clear(result);
+    if (isnan(scale) || isinf(scale))
+        return CG_EINVAL;
+    double m1 = clip_max_abs(subject), m2 = clip_max_abs(clip);
+    if (isnan(m1) || isnan(m2))
+        return CG_EINVAL;
+    double sc = clip_pick_scale(scale, m1 > m2 ? m1 : m2);
+    cg_polygon_set64 a = {0}, b = {0}, r = {0};
+    cg_status st = clip_to_grid(subject, sc, &a);
+    if (st == CG_OK)
+        st = clip_to_grid(clip, sc, &b);
+    if (st == CG_OK)
+        st = cg_clip_boolean64(op, &a, subject_fill, &b, clip_fill, &r);
+    if (st == CG_OK)
+        st = clip_from_grid(&r, sc, result);
+    if (st != CG_OK)
+        cg_polygon_set_clear(result);
+    cg_polygon_set64_clear(&a);
+    cg_polygon_set64_clear(&b);
+    cg_polygon_set64_clear(&r);
+    return st;
+}

@@ -1,0 +1,108 @@
+/* Polygon sets: the input and output type of the boolean operations. */
+#include "internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define DEFINE_SET(SET, POINT, PREFIX)                                                           \
+    void PREFIX##_clear(SET *set)                                                                \
+    {                                                                                            \
+        if (!set)                                                                                \
+            return;                                                                              \
+        free(set->points);                                                                       \
+        free(set->ring_start);                                                                   \
+        free(set->polygon_start);                                                                \
+        memset(set, 0, sizeof *set);                                                             \
+    }                                                                                            \
+    cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)       \
+    {                                                                                            \
+        if (!set || (!points && n))                                                              \
+            return CG_EINVAL;                                                                    \
+        if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                             \
+            return CG_ENOMEM;                                                                    \
+        if (set->point_count + n > set->point_capacity) {                                        \
+            size_t cap = set->point_capacity ? set->point_capacity : 64;                         \
+            while (cap < set->point_count + n)                                                   \
+                cap *= 2;                                                                        \
+            POINT *p = realloc(set->points, cap * sizeof *p);                                    \
+            if (!p)                                                                              \
+                return CG_ENOMEM;                                                                \
+            set->points = p;                                                                     \
+            set->point_capacity = cap;                                                           \
+        }                                                                                        \
+        if (set->ring_count + 2 > set->ring_capacity) {                                          \
+            size_t cap = set->ring_capacity ? set->ring_capacity * 2 : 16;                       \
+            size_t *r = realloc(set->ring_start, cap * sizeof *r);                               \
+            if (!r)                                                                              \
+                return CG_ENOMEM;                                                                \
+            set->ring_start = r;                                                                 \
+            set->ring_capacity = cap;                                                            \
+        }                                                                                        \
+        if (new_polygon || set->polygon_count == 0) {                                            \
+            if (set->polygon_count + 2 > set->polygon_capacity) {                                \
+                size_t cap = set->polygon_capacity ? set->polygon_capacity * 2 : 16;             \
+                size_t *q = realloc(set->polygon_start, cap * sizeof *q);                        \
+                if (!q)                                                                          \
+                    return CG_ENOMEM;                                                            \
+                set->polygon_start = q;                                                          \
+                set->polygon_capacity = cap;                                                     \
+            }                                                                                    \
+            if (set->polygon_count == 0)                                                         \
+                set->polygon_start[0] = 0;                                                       \
+            set->polygon_count++;                                                                \
+        }                                                                                        \
+        if (set->ring_count == 0)                                                                \
+            set->ring_start[0] = 0;                                                              \
+        if (n)                                                                                   \
+            memcpy(set->points + set->point_count, points, n * sizeof *points);                  \
+        set->point_count += n;                                                                   \
+        set->ring_count++;                                                                       \
+        set->ring_start[set->ring_count] = set->point_count;                                     \
+        set->polygon_start[set->polygon_count] = set->ring_count;                                \
+        return CG_OK;                                                                            \
+    }
+
+DEFINE_SET(cg_polygon_set, cg_vec2, cg_polygon_set)
+DEFINE_SET(cg_polygon_set64, cg_point64, cg_polygon_set64)
+
+double cg_polygon_set_ring_area(const cg_polygon_set *set, size_t r)
+{
+    if (!set || r >= set->ring_count)
+        return 0;
+    size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+    double s = 0;
+    if (b - a < 3)
+        return 0;
+    /* relative to the first point for accuracy */
+    cg_vec2 o = set->points[a];
+    for (size_t i = a + 1; i + 1 < b; i++)
+        s += cg_vec2_cross(cg_vec2_sub(set->points[i], o), cg_vec2_sub(set->points[i + 1], o));
+    return 0.5 * s;
+}
+
+double cg_polygon_set_area(const cg_polygon_set *set)
+{
+    double s = 0;
+    for (size_t r = 0; set && r < set->ring_count; r++)
+        s += cg_polygon_set_ring_area(set, r);
+    return s;
+}
+
+double cg_polygon_set64_area(const cg_polygon_set64 *set)
+{
+    double total = 0;
+    for (size_t r = 0; set && r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        if (b - a < 3)
+            continue;
+        clip_i128 s = 0;
+        cg_point64 o = set->points[a];
+        for (size_t i = a + 1; i + 1 < b; i++) {
+            clip_i128 x1 = set->points[i].x - o.x, y1 = set->points[i].y - o.y;
+            clip_i128 x2 = set->points[i + 1].x - o.x, y2 = set->points[i + 1].y - o.y;
+            s += x1 * y2 - x2 * y1;
+        }
+        total += 0.5 * (double)s;
+    }
+    return total;
+}

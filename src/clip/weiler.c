@@ -1,0 +1,256 @@
+/* Weiler-Atherton polygon clipping (11.2.2): both boundaries become lists of
+ * vertices with the intersection points inserted; the clipped polygons are
+ * traced by following the subject from each entering intersection and the
+ * window from each exiting one. */
+#include "cg/clip.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct wnode {
+    cg_vec2 p;
+    size_t next;   /* next node on the same boundary */
+    size_t twin;   /* the same intersection on the other boundary, or -1 */
+    int entering;  /* subject enters the window here */
+    int visited;
+} wnode;
+
+typedef struct xing {
+    size_t si, ci; /* subject and window edge */
+    double t, u;   /* parameters along them */
+    cg_vec2 p;
+    int entering;
+} xing;
+
+static double area2(const cg_vec2 *p, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0, j = n - 1; i < n; j = i++)
+        s += cg_vec2_cross(p[j], p[i]);
+    return s;
+}
+
+static int point_in(const cg_vec2 *p, size_t n, cg_vec2 q)
+{
+    int in = 0;
+    for (size_t i = 0, j = n - 1; i < n; j = i++)
+        if ((p[i].y > q.y) != (p[j].y > q.y) &&
+            q.x < p[j].x + (q.y - p[j].y) * (p[i].x - p[j].x) / (p[i].y - p[j].y))
+            in = !in;
+    return in;
+}
+
+/* copy without repeated points, counter-clockwise, shifted by d */
+static size_t prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
+{
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        cg_vec2 p = cg_vec2_add(in[i], d);
+        if (m && p.x == out[m - 1].x && p.y == out[m - 1].y)
+            continue;
+        out[m++] = p;
+    }
+    while (m > 1 && out[0].x == out[m - 1].x && out[0].y == out[m - 1].y)
+        m--;
+    if (m >= 3 && area2(out, m) < 0)
+        for (size_t i = 0; i < m / 2; i++) {
+            cg_vec2 t = out[i];
+            out[i] = out[m - 1 - i];
+            out[m - 1 - i] = t;
+        }
+    return m;
+}
+
+static int cmp_s(const void *a, const void *b)
+{
+    const xing *x = a, *y = b;
+    if (x->si != y->si)
+        return x->si < y->si ? -1 : 1;
+    return (x->t > y->t) - (x->t < y->t);
+}
+
+static int cmp_c(const void *a, const void *b)
+{
+    const xing *const *x = a, *const *y = b;
+    if ((*x)->ci != (*y)->ci)
+        return (*x)->ci < (*y)->ci ? -1 : 1;
+    return ((*x)->u > (*y)->u) - ((*x)->u < (*y)->u);
+}
+
+cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
+                                  size_t m, cg_polygon_set *result)
+{
+    if (!result)
+        return CG_EINVAL;
+    cg_polygon_set_clear(result);
+    if (!subject || !window || n < 3 || m < 3 || n > ((size_t)1 << 24) || m > ((size_t)1 << 24))
+        return CG_EINVAL;
+    double ext = 0;
+    for (size_t i = 0; i < n + m; i++) {
+        cg_vec2 p = i < n ? subject[i] : window[i - n];
+        if (!isfinite(p.x) || !isfinite(p.y))
+            return CG_EINVAL;
+        ext = fmax(ext, fmax(fabs(p.x), fabs(p.y)));
+    }
+    cg_status st = CG_ENOMEM;
+    cg_vec2 *S = malloc(n * sizeof *S), *C = malloc(m * sizeof *C), *ring = NULL;
+    xing *X = NULL, **XC = NULL;
+    wnode *sn = NULL, *cn = NULL;
+    size_t nx = 0, capx = 0;
+    if (!S || !C)
+        goto done;
+    /* the window moved off every degenerate contact (an irrational-looking
+     * direction, 1e-9 of the extent) */
+    double delta = (ext > 0 ? ext : 1) * 1e-9;
+    n = prepare(subject, n, cg_vec2_make(0, 0), S);
+    m = prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
+    if (n < 3 || m < 3 || area2(S, n) == 0 || area2(C, m) == 0) {
+        st = CG_OK; /* nothing with an area */
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        cg_vec2 a = S[i], b = S[(i + 1) % n], d = cg_vec2_sub(b, a);
+        for (size_t j = 0; j < m; j++) {
+            cg_vec2 c = C[j], e = cg_vec2_sub(C[(j + 1) % m], c);
+            double den = cg_vec2_cross(d, e);
+            if (den == 0)
+                continue;
+            cg_vec2 ac = cg_vec2_sub(c, a);
+            double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
+            if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
+                continue;
+            if (nx == capx) {
+                capx = capx ? capx * 2 : 64;
+                xing *q = realloc(X, capx * sizeof *q);
+                if (!q)
+                    goto done;
+                X = q;
+            }
+            X[nx++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+        }
+    }
+    if (nx == 0 || nx % 2) {
+        /* no crossing: one inside the other, or apart */
+        st = CG_OK;
+        if (point_in(C, m, S[0]))
+            st = cg_polygon_set_add_ring(result, S, n, 1);
+        else if (point_in(S, n, C[0]))
+            st = cg_polygon_set_add_ring(result, C, m, 1);
+        goto done;
+    }
+    /* subject list: vertices with the crossings in order */
+    qsort(X, nx, sizeof *X, cmp_s);
+    sn = calloc(n + nx, sizeof *sn);
+    cn = calloc(m + nx, sizeof *cn);
+    XC = malloc(nx * sizeof *XC);
+    size_t *sidx = malloc(nx * sizeof *sidx);
+    if (!sn || !cn || !XC || !sidx) {
+        free(sidx);
+        goto done;
+    }
+    size_t k = 0, ns = 0;
+    for (size_t i = 0; i < n; i++) {
+        sn[ns] = (wnode){S[i], 0, (size_t)-1, 0, 0};
+        ns++;
+        while (k < nx && X[k].si == i) {
+            sn[ns] = (wnode){X[k].p, 0, (size_t)-1, X[k].entering, 0};
+            sidx[k] = ns++;
+            k++;
+        }
+    }
+    for (size_t i = 0; i < ns; i++)
+        sn[i].next = (i + 1) % ns;
+    for (size_t i = 0; i < nx; i++)
+        XC[i] = &X[i];
+    qsort(XC, nx, sizeof *XC, cmp_c);
+    size_t nc = 0;
+    k = 0;
+    for (size_t j = 0; j < m; j++) {
+        cn[nc] = (wnode){C[j], 0, (size_t)-1, 0, 0};
+        nc++;
+        while (k < nx && XC[k]->ci == j) {
+            size_t s = sidx[XC[k] - X];
+            cn[nc] = (wnode){XC[k]->p, 0, s, XC[k]->entering, 0};
+            sn[s].twin = nc;
+            nc++;
+            k++;
+        }
+    }
+    free(sidx);
+    for (size_t i = 0; i < nc; i++)
+        cn[i].next = (i + 1) % nc;
+    ring = malloc((ns + nc) * sizeof *ring);
+    if (!ring)
+        goto done;
+    st = CG_OK;
+    for (size_t start = 0; start < ns && st == CG_OK; start++) {
+        if (sn[start].twin == (size_t)-1 || !sn[start].entering || sn[start].visited)
+            continue;
+        size_t len = 0, cur = start, guard = 0, limit = ns + nc;
+        wnode *list = sn;
+        do {
+            /* at a crossing: emit it, then follow this boundary to the next
+             * crossing (crossings alternate entering / exiting along each
+             * boundary) and continue on the other boundary from there */
+            list[cur].visited = 1;
+            (list == sn ? cn : sn)[list[cur].twin].visited = 1;
+            if (len < limit)
+                ring[len++] = list[cur].p;
+            cur = list[cur].next;
+            while (list[cur].twin == (size_t)-1 && guard++ < limit) {
+                if (len < limit)
+                    ring[len++] = list[cur].p;
+                cur = list[cur].next;
+            }
+            cur = list[cur].twin;
+            list = list == sn ? cn : sn;
+        } while (!(list == sn && cur == start) && guard++ < limit);
+        if (len >= 3)
+            st = cg_polygon_set_add_ring(result, ring, len, 1);
+    }
+    /* loops turning clockwise are holes: move each into the smallest
+     * counter-clockwise loop around it */
+    if (st == CG_OK && result->ring_count > 1) {
+        cg_polygon_set sorted = {0};
+        size_t nr = result->ring_count;
+        for (size_t r = 0; r < nr && st == CG_OK; r++) {
+            if (cg_polygon_set_ring_area(result, r) <= 0)
+                continue;
+            st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[r],
+                                         result->ring_start[r + 1] - result->ring_start[r], 1);
+            for (size_t h = 0; h < nr && st == CG_OK; h++) {
+                if (cg_polygon_set_ring_area(result, h) >= 0)
+                    continue;
+                cg_vec2 q = result->points[result->ring_start[h]];
+                /* smallest containing outer */
+                size_t best = (size_t)-1;
+                double best_area = INFINITY;
+                for (size_t o = 0; o < nr; o++) {
+                    double a = cg_polygon_set_ring_area(result, o);
+                    if (a > 0 && a < best_area &&
+                        point_in(result->points + result->ring_start[o],
+                                 result->ring_start[o + 1] - result->ring_start[o], q)) {
+                        best = o;
+                        best_area = a;
+                    }
+                }
+                if (best == r)
+                    st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[h],
+                                                 result->ring_start[h + 1] - result->ring_start[h], 0);
+            }
+        }
+        cg_polygon_set_clear(result);
+        *result = sorted;
+    }
+done:
+    if (st != CG_OK)
+        cg_polygon_set_clear(result);
+    free(S);
+    free(C);
+    free(X);
+    free(XC);
+    free(sn);
+    free(cn);
+    free(ring);
+    return st;
+}

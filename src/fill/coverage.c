@@ -1,0 +1,331 @@
+/* Anti-aliased fill by exact area coverage (signed-area accumulation).
+ *
+ * Every line segment of the outline adds, to each pixel of each row it
+ * crosses, the signed area of that pixel lying to the right of it within
+ * the row, times the segment's direction.  Deposited as differences along
+ * the row (a cell gets the part of the area in its own column, the next
+ * cell the rest, which every pixel further right inherits), a running sum
+ * over the row gives every pixel the integral of the winding number over its
+ * square.  The non-zero rule takes min(1, |sum|), even-odd folds the sum into
+ * [0, 1].  Rows are processed in bands so memory stays bounded.
+ *
+ * Lines are clipped to the image first: parts above or below are dropped,
+ * parts right of it are dropped (they only affect pixels further right),
+ * and parts left of it are replaced by vertical lines on its left edge,
+ * which cover the visible pixels the same way. */
+#include "internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void fill_aa_begin(struct cg_rasterizer *r, const cg_image *image)
+{
+    r->line_count = 0;
+    r->clip_width = image->width;
+    r->clip_height = image->height;
+    r->min_x = r->min_y = HUGE_VAL;
+    r->max_x = r->max_y = -HUGE_VAL;
+}
+
+static cg_status push_line(struct cg_rasterizer *r, double x0, double y0, double x1, double y1)
+{
+    if (y0 == y1)
+        return CG_OK;
+    if (!fill_reserve((void **)&r->lines, &r->line_capacity, r->line_count + 1, sizeof *r->lines))
+        return CG_ENOMEM;
+    fill_line l = {x0, y0, x1, y1};
+    r->lines[r->line_count++] = l;
+    if (x0 < r->min_x) r->min_x = x0;
+    if (x1 < r->min_x) r->min_x = x1;
+    if (x0 > r->max_x) r->max_x = x0;
+    if (x1 > r->max_x) r->max_x = x1;
+    if (y0 < r->min_y) r->min_y = y0;
+    if (y1 < r->min_y) r->min_y = y1;
+    if (y0 > r->max_y) r->max_y = y0;
+    if (y1 > r->max_y) r->max_y = y1;
+    return CG_OK;
+}
+
+static double clamp_between(double v, double a, double b)
+{
+    double lo = a < b ? a : b, hi = a < b ? b : a;
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+cg_status fill_aa_add_line(struct cg_rasterizer *r, cg_vec2 a, cg_vec2 b)
+{
+    double x0 = a.x, y0 = a.y, x1 = b.x, y1 = b.y;
+    double h = r->clip_height, w = r->clip_width;
+    if (y0 == y1 || (y0 <= 0 && y1 <= 0) || (y0 >= h && y1 >= h))
+        return CG_OK;
+    /* Vertical clipping. */
+    if (y0 < 0 || y0 > h) {
+        double yc = y0 < 0 ? 0 : h;
+        x0 = clamp_between(x0 + (yc - y0) * (x1 - x0) / (y1 - y0), x0, x1);
+        y0 = yc;
+    }
+    if (y1 < 0 || y1 > h) {
+        double yc = y1 < 0 ? 0 : h;
+        x1 = clamp_between(x1 + (yc - y1) * (x0 - x1) / (y0 - y1), x0, x1);
+        y1 = yc;
+    }
+    if (x0 >= w && x1 >= w) {
+        /* Dropped, but the coverage of lines left of it now reaches the
+         * right edge of the image. */
+        if (w > r->max_x)
+            r->max_x = w;
+        return CG_OK;
+    }
+    if (x0 <= 0 && x1 <= 0)
+        return push_line(r, 0, y0, 0, y1);
+    if (x0 < 0 || x1 < 0) {
+        double ym = clamp_between(y0 + (0 - x0) * (y1 - y0) / (x1 - x0), y0, y1);
+        cg_status status;
+        if (x0 < 0) {
+            status = push_line(r, 0, y0, 0, ym);
+            x0 = 0;
+            y0 = ym;
+        } else {
+            status = push_line(r, 0, ym, 0, y1);
+            x1 = 0;
+            y1 = ym;
+        }
+        if (status != CG_OK)
+            return status;
+    }
+    if (x0 > w || x1 > w) {
+        double ym = clamp_between(y0 + (w - x0) * (y1 - y0) / (x1 - x0), y0, y1);
+        if (x0 > w) {
+            x0 = w;
+            y0 = ym;
+        } else {
+            x1 = w;
+            y1 = ym;
+        }
+    }
+    return push_line(r, x0, y0, x1, y1);
+}
+
+cg_status fill_aa_add_polylines(struct cg_rasterizer *r, const fill_polylines *set)
+{
+    for (size_t i = 0; i < set->line_count; i++) {
+        const fill_polyline *l = &set->lines[i];
+        const cg_vec2 *p = set->points + l->start;
+        for (size_t k = 0; k < l->count; k++) {
+            cg_status status = fill_aa_add_line(r, p[k], p[(k + 1) % l->count]);
+            if (status != CG_OK)
+                return status;
+        }
+    }
+    return CG_OK;
+}
+
+/* Adds the part of a line within one row: x from xa to xb (relative to the
+ * row's first cell), signed height d. */
+static inline void deposit_row(float *row, double xa, double xb, double d)
+{
+    if (xa > xb) {
+        double t = xa;
+        xa = xb;
+        xb = t;
+    }
+    if (xa < 0)
+        xa = 0;
+    int c0 = (int)xa, c1 = (int)xb;
+    if (c0 == c1) {
+        double fx = 0.5 * (xa + xb) - c0;
+        row[c0] += (float)(d * (1 - fx));
+        row[c0 + 1] += (float)(d * fx);
+        return;
+    }
+    double s = d / (xb - xa);
+    double len0 = c0 + 1 - xa, d0 = s * len0;
+    row[c0] += (float)(d0 * len0 * 0.5);
+    double carry = d0 * (1 - len0 * 0.5), half = s * 0.5;
+    for (int c = c0 + 1; c < c1; c++) {
+        row[c] += (float)(carry + half);
+        carry = half;
+    }
+    double len1 = xb - c1, d1 = s * len1;
+    row[c1] += (float)(carry + d1 * (1 - len1 * 0.5));
+    row[c1 + 1] += (float)(d1 * len1 * 0.5);
+}
+
+/* Adds the part of line l within rows [band_top, band_bottom). */
+static void deposit_line(float *accumulation, size_t stride, int band_top, int band_bottom,
+                         double origin_x, const fill_line *l)
+{
+    double x0 = l->x0 - origin_x, y0 = l->y0, x1 = l->x1 - origin_x, y1 = l->y1, sign = 1;
+    if (y0 > y1) {
+        double t = x0; x0 = x1; x1 = t;
+        t = y0; y0 = y1; y1 = t;
+        sign = -1;
+    }
+    double ys = y0 > band_top ? y0 : band_top, ye = y1 < band_bottom ? y1 : band_bottom;
+    if (ys >= ye)
+        return;
+    double dxdy = (x1 - x0) / (y1 - y0);
+    int row = (int)floor(ys), row_end = (int)ceil(ye);
+    double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
+    for (; row < row_end; row++) {
+        double yb = row + 1 < ye ? row + 1 : ye;
+        double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
+        deposit_row(accumulation + (size_t)(row - band_top) * stride, xa, xb, sign * (yb - ya));
+        xa = xb;
+        ya = yb;
+    }
+}
+
+cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
+                         const cg_paint *paint)
+{
+    if (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO)
+        return CG_EINVAL;
+    fill_painter painter;
+    cg_status status = fill_painter_init(&painter, r, image, paint);
+    if (status != CG_OK)
+        return status;
+    fill_tables_prepare(r);
+    if (r->line_count == 0)
+        return CG_OK;
+    int origin_x = (int)floor(r->min_x), end_x = (int)ceil(r->max_x);
+    int top = (int)floor(r->min_y), bottom = (int)ceil(r->max_y);
+    if (end_x > image->width)
+        end_x = image->width;
+    if (bottom > image->height)
+        bottom = image->height;
+    if (origin_x < 0)
+        origin_x = 0;
+    if (top < 0)
+        top = 0;
+    int draw_width = end_x - origin_x;
+    size_t stride = (size_t)(end_x - origin_x) + 3;
+    int band = (int)(65536 / stride);
+    if (band < 1)
+        band = 1;
+    if (band > 64)
+        band = 64;
+    int band_count = (bottom - top + band - 1) / band;
+    if (draw_width <= 0 || band_count <= 0)
+        return CG_OK;
+    if (!fill_reserve((void **)&r->accumulation, &r->accumulation_capacity, stride * (size_t)band,
+                      sizeof *r->accumulation)
+        || !fill_reserve((void **)&r->cover, &r->cover_capacity, stride, 1)
+        || !fill_reserve((void **)&r->order, &r->order_capacity,
+                         r->line_count + (size_t)band_count + 1, sizeof *r->order)
+        || !fill_reserve((void **)&r->active, &r->active_capacity, r->line_count,
+                         sizeof *r->active))
+        return CG_ENOMEM;
+    memset(r->accumulation, 0, stride * (size_t)band * sizeof *r->accumulation);
+    /* Counting sort of the lines by the band of their top. */
+    size_t *first = r->order + r->line_count; /* band_count + 1 counters */
+    memset(first, 0, ((size_t)band_count + 1) * sizeof *first);
+    for (size_t i = 0; i < r->line_count; i++) {
+        const fill_line *l = &r->lines[i];
+        double ymin = l->y0 < l->y1 ? l->y0 : l->y1;
+        int b = ((int)floor(ymin) - top) / band;
+        first[b < 0 ? 0 : b]++;
+    }
+    size_t sum = 0;
+    for (int b = 0; b <= band_count; b++) {
+        size_t c = first[b];
+        first[b] = sum;
+        sum += c;
+    }
+    /* first[b] is now where band b's lines start; fill and shift. */
+    for (size_t i = 0; i < r->line_count; i++) {
+        const fill_line *l = &r->lines[i];
+        double ymin = l->y0 < l->y1 ? l->y0 : l->y1;
+        int b = ((int)floor(ymin) - top) / band;
+        r->order[first[b < 0 ? 0 : b]++] = i;
+    }
+    size_t next = 0, active_count = 0;
+    for (int b = 0; b < band_count; b++) {
+        int band_top = top + b * band, band_bottom = band_top + band;
+        if (band_bottom > bottom)
+            band_bottom = bottom;
+        while (next < first[b])
+            r->active[active_count++] = r->order[next++];
+        size_t kept = 0;
+        for (size_t i = 0; i < active_count; i++) {
+            const fill_line *l = &r->lines[r->active[i]];
+            deposit_line(r->accumulation, stride, band_top, band_bottom, origin_x, l);
+            double ymax = l->y0 > l->y1 ? l->y0 : l->y1;
+            if (ymax > band_bottom)
+                r->active[kept++] = r->active[i];
+        }
+        active_count = kept;
+        for (int y = band_top; y < band_bottom; y++) {
+            float *row = r->accumulation + (size_t)(y - band_top) * stride;
+            uint8_t *cover = r->cover;
+            float acc = 0;
+            int lo = draw_width, hi = -1;
+            for (int x = 0; x < draw_width; x++) {
+                acc += row[x];
+                row[x] = 0;
+                float a = fabsf(acc);
+                if (rule == CG_FILL_EVEN_ODD) {
+                    a -= 2.0f * floorf(a * 0.5f);
+                    if (a > 1)
+                        a = 2 - a;
+                }
+                int c = a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
+                cover[x] = (uint8_t)c;
+                if (c) {
+                    if (x < lo)
+                        lo = x;
+                    hi = x;
+                }
+            }
+            for (size_t x = (size_t)draw_width; x < stride; x++)
+                row[x] = 0;
+            if (hi >= lo)
+                fill_painter_span(&painter, y, origin_x + lo, hi - lo + 1, cover + lo);
+        }
+    }
+    return CG_OK;
+}
+
+static cg_status aa_polygon(cg_rasterizer *r, cg_image *image, const cg_vec2 *points,
+                            const int *contour_sizes, int contour_count, cg_fill_rule rule,
+                            const cg_paint *paint)
+{
+    size_t total;
+    cg_status status = fill_check_polygon(points, contour_sizes, contour_count, &total);
+    if (status != CG_OK)
+        return status;
+    fill_aa_begin(r, image);
+    size_t start = 0;
+    for (int c = 0; c < contour_count; c++) {
+        size_t n = (size_t)contour_sizes[c];
+        for (size_t i = 0; i < n; i++) {
+            status = fill_aa_add_line(r, points[start + i], points[start + (i + 1) % n]);
+            if (status != CG_OK)
+                return status;
+        }
+        start += n;
+    }
+    return fill_aa_render(r, image, rule, paint);
+}
+
+cg_status cg_rasterizer_fill_polygon_aa(cg_rasterizer *r, cg_image *image, const cg_vec2 *points,
+                                        const int *contour_sizes, int contour_count,
+                                        cg_fill_rule rule, const cg_paint *paint)
+{
+    if (!r || !image || !image->data || !paint)
+        return CG_EINVAL;
+    return aa_polygon(r, image, points, contour_sizes, contour_count, rule, paint);
+}
+
+cg_status cg_fill_polygon_aa(cg_image *image, const cg_vec2 *points, const int *contour_sizes,
+                             int contour_count, cg_fill_rule rule, const cg_paint *paint)
+{
+    cg_rasterizer *r;
+    cg_status status = cg_rasterizer_create(&r);
+    if (status != CG_OK)
+        return status;
+    status = cg_rasterizer_fill_polygon_aa(r, image, points, contour_sizes, contour_count, rule,
+                                           paint);
+    cg_rasterizer_free(r);
+    return status;
+}

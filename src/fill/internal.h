@@ -1,0 +1,157 @@
+/* Private pieces shared by the fill module's files. */
+#ifndef CG_FILL_INTERNAL_H
+#define CG_FILL_INTERNAL_H
+
+#include "cg/fill.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---- growing arrays of points ------------------------------------------- */
+
+/* A set of polylines: points of all of them in one array, and for each its
+ * first point, point count and whether it is closed. */
+typedef struct fill_polyline {
+    size_t start, count;
+    int closed;
+} fill_polyline;
+
+typedef struct fill_polylines {
+    cg_vec2 *points;
+    size_t point_count, point_capacity;
+    fill_polyline *lines;
+    size_t line_count, line_capacity;
+} fill_polylines;
+
+void fill_polylines_reset(fill_polylines *set);
+void fill_polylines_free(fill_polylines *set);
+/* Starts a new polyline. */
+cg_status fill_polylines_begin(fill_polylines *set);
+/* Appends a point to the current polyline. */
+cg_status fill_polylines_add(fill_polylines *set, cg_vec2 p);
+/* Marks the current polyline closed. */
+void fill_polylines_close(fill_polylines *set);
+
+/* A path's state, saved so that a failed parse can undo what it appended. */
+typedef struct fill_path_mark {
+    size_t verb_count, coord_count, drawing;
+    cg_vec2 current, start;
+    int has_current, after_close;
+} fill_path_mark;
+void fill_path_save(const cg_path *path, fill_path_mark *mark);
+void fill_path_restore(cg_path *path, const fill_path_mark *mark);
+/* The current point and the start of the current subpath ((0, 0) when none). */
+cg_vec2 fill_path_current(const cg_path *path);
+cg_vec2 fill_path_start(const cg_path *path);
+
+/* Flattens path into polylines (curves and arcs within tolerance). */
+cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out);
+
+/* Appends the points of the circular arc around c of radius r from angle a0
+ * to a1 (excluding the start point) within tolerance. */
+cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, double a1,
+                          double tolerance);
+
+/* The stroke outline of polylines as closed contours (for the non-zero rule). */
+cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style *style,
+                                double tolerance, fill_polylines *out);
+
+/* ---- painting spans ------------------------------------------------------ */
+
+typedef struct fill_painter {
+    cg_image *image;
+    const struct cg_rasterizer *tables;
+    int type;
+    /* solid: linear straight colour and its encoded form */
+    float r, g, b, a;
+    uint32_t encoded;
+    int opaque;
+    /* gradients */
+    double gx, gy, gdx, gdy, gc; /* linear: t = gx * x + gy * y + gc */
+    double cx, cy, inv_radius;   /* radial */
+    cg_rgbaf ramp[256];
+} fill_painter;
+
+/* CG_EINVAL for a malformed paint. */
+cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *image,
+                            const cg_paint *paint);
+/* Paints pixels x0 .. x0+n-1 of row y with coverage cover[i] / 255 (cover
+ * NULL: full coverage).  The span must be inside the image. */
+void fill_painter_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover);
+
+/* ---- the rasterizer ------------------------------------------------------- */
+
+typedef struct fill_line {
+    double x0, y0, x1, y1;
+} fill_line;
+
+typedef struct fill_edge {
+    double x0, y0, slope; /* x = x0 + (y - y0) * slope */
+    int first_row, last_row, dir;
+} fill_edge;
+
+typedef struct fill_crossing {
+    double x;
+    int dir;
+} fill_crossing;
+
+struct cg_rasterizer {
+    double tolerance;
+    /* anti-aliased: lines clipped to the image, and their bounds */
+    fill_line *lines;
+    size_t line_count, line_capacity;
+    double min_x, min_y, max_x, max_y;
+    int clip_width, clip_height;
+    float *accumulation;
+    size_t accumulation_capacity;
+    uint8_t *cover;
+    size_t cover_capacity;
+    size_t *order;
+    size_t order_capacity;
+    size_t *active;
+    size_t active_capacity;
+    /* aliased: edge table and active edges */
+    fill_edge *edges;
+    size_t edge_count, edge_capacity;
+    fill_crossing *crossings;
+    size_t crossing_capacity;
+    /* path scratch */
+    fill_polylines flat, outline;
+    /* sRGB tables, built on first use */
+    int tables_ready;
+    float decode[256];
+    float threshold[256]; /* code k+1 starts at threshold[k]; threshold[255] = +inf */
+    uint8_t encode[4097]; /* code at linear i / 4096 */
+};
+
+void fill_tables_prepare(struct cg_rasterizer *r);
+
+/* Linear-light value to sRGB code, correctly rounded in the encoded domain. */
+static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
+{
+    if (!(v > 0))
+        return 0;
+    if (v >= 1)
+        return 255;
+    int c = r->encode[(int)(v * 4096.0f)];
+    while (v >= r->threshold[c])
+        c++;
+    return (uint8_t)c;
+}
+
+/* Grows *array (of element size) to hold at least need elements. */
+int fill_reserve(void **array, size_t *capacity, size_t need, size_t size);
+
+/* Checks every point of a polygon (finite, within CG_FILL_MAX_COORD) and the
+ * contour sizes; *total receives the number of points. */
+cg_status fill_check_polygon(const cg_vec2 *points, const int *contour_sizes, int contour_count,
+                             size_t *total);
+
+/* Anti-aliased coverage: reset, add lines, then composite. */
+void fill_aa_begin(struct cg_rasterizer *r, const cg_image *image);
+cg_status fill_aa_add_line(struct cg_rasterizer *r, cg_vec2 a, cg_vec2 b);
+cg_status fill_aa_add_polylines(struct cg_rasterizer *r, const fill_polylines *set);
+cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
+                         const cg_paint *paint);
+
+#endif

@@ -1,0 +1,502 @@
+/* Paths: move, line, quadratic and cubic Bezier, arcs, close; flattening to
+ * polylines.  Beziers are flattened by the curve module; arcs (circular and
+ * SVG elliptical) are flattened here by stepping the angle so that the
+ * chord of each step stays within the tolerance of the ellipse. */
+#include "internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__has_include)
+#if __has_include("cg/curve.h")
+#include "cg/curve.h"
+#define FILL_HAVE_CURVES 1
+#endif
+#endif
+
+enum { VERB_MOVE, VERB_LINE, VERB_QUAD, VERB_CUBIC, VERB_ARC, VERB_CLOSE };
+
+/* Doubles stored per verb after the verb itself. */
+static const int verb_coords[] = {2, 2, 4, 6, 9, 0};
+
+struct cg_path {
+    unsigned char *verbs;
+    size_t verb_count, verb_capacity;
+    double *coords;
+    size_t coord_count, coord_capacity;
+    cg_vec2 current, start;
+    int has_current; /* a current point exists (after any segment or move) */
+    int after_close; /* the next segment must start a new subpath at start */
+    size_t drawing; /* verbs other than moves */
+};
+
+/* ---- polyline sets ---------------------------------------------------------- */
+
+void fill_polylines_reset(fill_polylines *set)
+{
+    set->point_count = 0;
+    set->line_count = 0;
+}
+
+void fill_polylines_free(fill_polylines *set)
+{
+    free(set->points);
+    free(set->lines);
+    memset(set, 0, sizeof *set);
+}
+
+cg_status fill_polylines_begin(fill_polylines *set)
+{
+    if (!fill_reserve((void **)&set->lines, &set->line_capacity, set->line_count + 1,
+                      sizeof *set->lines))
+        return CG_ENOMEM;
+    fill_polyline l = {set->point_count, 0, 0};
+    set->lines[set->line_count++] = l;
+    return CG_OK;
+}
+
+cg_status fill_polylines_add(fill_polylines *set, cg_vec2 p)
+{
+    if (!fill_reserve((void **)&set->points, &set->point_capacity, set->point_count + 1,
+                      sizeof *set->points))
+        return CG_ENOMEM;
+    set->points[set->point_count++] = p;
+    set->lines[set->line_count - 1].count++;
+    return CG_OK;
+}
+
+void fill_polylines_close(fill_polylines *set)
+{
+    if (set->line_count)
+        set->lines[set->line_count - 1].closed = 1;
+}
+
+/* ---- building paths ------------------------------------------------------------ */
+
+cg_status cg_path_create(cg_path **out)
+{
+    if (!out)
+        return CG_EINVAL;
+    *out = calloc(1, sizeof **out);
+    return *out ? CG_OK : CG_ENOMEM;
+}
+
+void cg_path_free(cg_path *path)
+{
+    if (!path)
+        return;
+    free(path->verbs);
+    free(path->coords);
+    free(path);
+}
+
+void cg_path_reset(cg_path *path)
+{
+    if (!path)
+        return;
+    path->verb_count = path->coord_count = 0;
+    path->has_current = path->after_close = 0;
+    path->drawing = 0;
+    path->current = path->start = cg_vec2_make(0, 0);
+}
+
+int cg_path_is_empty(const cg_path *path)
+{
+    return !path || path->drawing == 0;
+}
+
+static int valid_coord(double v)
+{
+    return fabs(v) <= CG_FILL_MAX_COORD; /* false for NaN */
+}
+
+static cg_status append(cg_path *path, int verb, const double *coords)
+{
+    int n = verb_coords[verb];
+    if (!fill_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1)
+        || !fill_reserve((void **)&path->coords, &path->coord_capacity,
+                         path->coord_count + (size_t)n, sizeof *path->coords))
+        return CG_ENOMEM;
+    path->verbs[path->verb_count++] = (unsigned char)verb;
+    memcpy(path->coords + path->coord_count, coords, (size_t)n * sizeof *coords);
+    path->coord_count += (size_t)n;
+    if (verb != VERB_MOVE)
+        path->drawing++;
+    return CG_OK;
+}
+
+cg_status cg_path_move_to(cg_path *path, double x, double y)
+{
+    if (!path || !valid_coord(x) || !valid_coord(y))
+        return CG_EINVAL;
+    double c[2] = {x, y};
+    cg_status status = append(path, VERB_MOVE, c);
+    if (status != CG_OK)
+        return status;
+    path->current = path->start = cg_vec2_make(x, y);
+    path->has_current = 1;
+    path->after_close = 0;
+    return CG_OK;
+}
+
+/* Before a drawing segment: a move to the current point (or the origin) when
+ * no subpath is open. */
+static cg_status ensure_subpath(cg_path *path)
+{
+    if (path->has_current && !path->after_close)
+        return CG_OK;
+    cg_vec2 p = path->has_current ? path->start : cg_vec2_make(0, 0);
+    return cg_path_move_to(path, p.x, p.y);
+}
+
+static cg_status segment(cg_path *path, int verb, const double *coords)
+{
+    for (int i = 0; i < verb_coords[verb]; i++)
+        if (!valid_coord(coords[i]))
+            return CG_EINVAL;
+    cg_status status = ensure_subpath(path);
+    if (status != CG_OK)
+        return status;
+    status = append(path, verb, coords);
+    if (status != CG_OK)
+        return status;
+    int n = verb_coords[verb];
+    path->current = cg_vec2_make(coords[n - 2], coords[n - 1]);
+    return CG_OK;
+}
+
+cg_status cg_path_line_to(cg_path *path, double x, double y)
+{
+    if (!path)
+        return CG_EINVAL;
+    double c[2] = {x, y};
+    return segment(path, VERB_LINE, c);
+}
+
+cg_status cg_path_quad_to(cg_path *path, double x1, double y1, double x, double y)
+{
+    if (!path)
+        return CG_EINVAL;
+    double c[4] = {x1, y1, x, y};
+    return segment(path, VERB_QUAD, c);
+}
+
+cg_status cg_path_cubic_to(cg_path *path, double x1, double y1, double x2, double y2, double x,
+                           double y)
+{
+    if (!path)
+        return CG_EINVAL;
+    double c[6] = {x1, y1, x2, y2, x, y};
+    return segment(path, VERB_CUBIC, c);
+}
+
+cg_status cg_path_close(cg_path *path)
+{
+    if (!path)
+        return CG_EINVAL;
+    if (!path->has_current || path->after_close)
+        return CG_OK;
+    cg_status status = append(path, VERB_CLOSE, NULL);
+    if (status != CG_OK)
+        return status;
+    path->current = path->start;
+    path->after_close = 1;
+    return CG_OK;
+}
+
+/* An arc of the ellipse centred at (cx, cy) with radii rx, ry rotated by phi,
+ * from parameter angle theta0 through dtheta, ending exactly at end. */
+static cg_status add_arc(cg_path *path, double cx, double cy, double rx, double ry, double phi,
+                         double theta0, double dtheta, cg_vec2 end)
+{
+    double c[9] = {cx, cy, rx, ry, phi, theta0, dtheta, end.x, end.y};
+    for (int i = 0; i < 9; i++)
+        if (!isfinite(c[i]))
+            return CG_EINVAL;
+    return segment(path, VERB_ARC, c);
+}
+
+cg_status cg_path_arc(cg_path *path, double cx, double cy, double r, double a0, double a1)
+{
+    if (!path || !valid_coord(cx) || !valid_coord(cy) || !(r >= 0) || !valid_coord(r)
+        || !isfinite(a0) || !isfinite(a1))
+        return CG_EINVAL;
+    double sweep = a1 - a0;
+    if (sweep > 2 * CG_PI)
+        sweep = 2 * CG_PI;
+    if (sweep < -2 * CG_PI)
+        sweep = -2 * CG_PI;
+    cg_vec2 from = cg_vec2_make(cx + r * cos(a0), cy + r * sin(a0));
+    cg_vec2 to = cg_vec2_make(cx + r * cos(a0 + sweep), cy + r * sin(a0 + sweep));
+    if (!valid_coord(from.x) || !valid_coord(from.y) || !valid_coord(to.x) || !valid_coord(to.y))
+        return CG_EINVAL;
+    cg_status status = path->has_current && !path->after_close
+                           ? cg_path_line_to(path, from.x, from.y)
+                           : cg_path_move_to(path, from.x, from.y);
+    if (status != CG_OK || r == 0 || sweep == 0)
+        return status;
+    return add_arc(path, cx, cy, r, r, 0, a0, sweep, to);
+}
+
+static double vector_angle(double ux, double uy, double vx, double vy)
+{
+    return atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+
+cg_status cg_path_svg_arc_to(cg_path *path, double rx, double ry, double rotation_degrees,
+                             int large_arc, int sweep, double x, double y)
+{
+    if (!path || !isfinite(rx) || !isfinite(ry) || !isfinite(rotation_degrees)
+        || !valid_coord(x) || !valid_coord(y))
+        return CG_EINVAL;
+    cg_vec2 p1 = path->has_current ? path->current : cg_vec2_make(0, 0);
+    if (p1.x == x && p1.y == y)
+        return CG_OK; /* SVG: the arc is omitted */
+    rx = fabs(rx);
+    ry = fabs(ry);
+    if (rx == 0 || ry == 0)
+        return cg_path_line_to(path, x, y);
+    /* SVG implementation notes, F.6.5: endpoint to centre parameterization. */
+    double phi = cg_radians(fmod(rotation_degrees, 360.0)), cp = cos(phi), sp = sin(phi);
+    double hx = (p1.x - x) / 2, hy = (p1.y - y) / 2;
+    double x1 = cp * hx + sp * hy, y1 = -sp * hx + cp * hy;
+    double lambda = (x1 * x1) / (rx * rx) + (y1 * y1) / (ry * ry);
+    if (lambda > 1) {
+        double s = sqrt(lambda);
+        rx *= s;
+        ry *= s;
+    }
+    double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
+    double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
+    double coef = den > 0 && num > 0 ? sqrt(num / den) : 0;
+    if ((large_arc != 0) == (sweep != 0))
+        coef = -coef;
+    double ccx = coef * rx * y1 / ry, ccy = -coef * ry * x1 / rx;
+    double cx = cp * ccx - sp * ccy + (p1.x + x) / 2, cy = sp * ccx + cp * ccy + (p1.y + y) / 2;
+    double ux = (x1 - ccx) / rx, uy = (y1 - ccy) / ry, vx = (-x1 - ccx) / rx, vy = (-y1 - ccy) / ry;
+    double theta0 = vector_angle(1, 0, ux, uy), dtheta = vector_angle(ux, uy, vx, vy);
+    if (!sweep && dtheta > 0)
+        dtheta -= 2 * CG_PI;
+    else if (sweep && dtheta < 0)
+        dtheta += 2 * CG_PI;
+    if (!valid_coord(cx) || !valid_coord(cy) || !valid_coord(rx) || !valid_coord(ry))
+        return CG_EINVAL;
+    return add_arc(path, cx, cy, rx, ry, phi, theta0, dtheta, cg_vec2_make(x, y));
+}
+
+/* ---- flattening ------------------------------------------------------------------ */
+
+/* Number of chords for an arc of radius r through |sweep| radians so that
+ * each chord's sagitta r (1 - cos(step / 2)) stays within tolerance. */
+static long arc_steps(double r, double sweep, double tolerance)
+{
+    double step = tolerance < r ? 2 * acos(1 - tolerance / r) : CG_PI / 2;
+    if (step > CG_PI / 2)
+        step = CG_PI / 2;
+    double n = ceil(fabs(sweep) / step);
+    if (!(n >= 1))
+        n = 1;
+    if (n > 100000)
+        n = 100000;
+    return (long)n;
+}
+
+static cg_status ellipse_points(fill_polylines *set, const double *a, double tolerance)
+{
+    double cx = a[0], cy = a[1], rx = a[2], ry = a[3], phi = a[4], t0 = a[5], dt = a[6];
+    double cp = cos(phi), sp = sin(phi);
+    long n = arc_steps(rx > ry ? rx : ry, dt, tolerance);
+    for (long i = 1; i < n; i++) {
+        double t = t0 + dt * (double)i / (double)n, ex = rx * cos(t), ey = ry * sin(t);
+        cg_status status = fill_polylines_add(set, cg_vec2_make(cx + cp * ex - sp * ey,
+                                                                cy + sp * ex + cp * ey));
+        if (status != CG_OK)
+            return status;
+    }
+    return fill_polylines_add(set, cg_vec2_make(a[7], a[8]));
+}
+
+cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, double a1,
+                          double tolerance)
+{
+    long n = arc_steps(r, a1 - a0, tolerance);
+    for (long i = 1; i < n; i++) {
+        double t = a0 + (a1 - a0) * (double)i / (double)n;
+        cg_status status = fill_polylines_add(set, cg_vec2_make(c.x + r * cos(t), c.y + r * sin(t)));
+        if (status != CG_OK)
+            return status;
+    }
+    return CG_OK;
+}
+
+#ifdef FILL_HAVE_CURVES
+static cg_status sink_point(void *user, cg_vec2 point)
+{
+    return fill_polylines_add(user, point);
+}
+#endif
+
+cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out)
+{
+    fill_polylines_reset(out);
+    const double *c = path->coords;
+    cg_vec2 current = cg_vec2_make(0, 0);
+    for (size_t i = 0; i < path->verb_count; i++) {
+        int verb = path->verbs[i];
+        cg_status status = CG_OK;
+        switch (verb) {
+        case VERB_MOVE:
+            status = fill_polylines_begin(out);
+            if (status == CG_OK)
+                status = fill_polylines_add(out, cg_vec2_make(c[0], c[1]));
+            break;
+        case VERB_LINE:
+            status = fill_polylines_add(out, cg_vec2_make(c[0], c[1]));
+            break;
+        case VERB_QUAD:
+        case VERB_CUBIC: {
+#ifdef FILL_HAVE_CURVES
+            cg_vec2 control[4] = {current, {c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]}};
+            status = cg_bezier_flatten(control, verb == VERB_QUAD ? 3 : 4, tolerance, sink_point,
+                                       out);
+#else
+            (void)current;
+            status = CG_EUNSUPPORTED;
+#endif
+            break;
+        }
+        case VERB_ARC:
+            status = ellipse_points(out, c, tolerance);
+            break;
+        case VERB_CLOSE: {
+            fill_polyline *l = &out->lines[out->line_count - 1];
+            if (l->count == 1) /* "M x y Z": a zero-length subpath */
+                status = fill_polylines_add(out, out->points[l->start]);
+            fill_polylines_close(out);
+            break;
+        }
+        }
+        if (status != CG_OK)
+            return status;
+        int n = verb_coords[verb];
+        if (n)
+            current = cg_vec2_make(c[n - 2], c[n - 1]);
+        c += n;
+    }
+    return CG_OK;
+}
+
+/* ---- drawing paths --------------------------------------------------------------- */
+
+cg_status cg_rasterizer_fill_path(cg_rasterizer *r, cg_image *image, const cg_path *path,
+                                  cg_fill_rule rule, const cg_paint *paint)
+{
+    if (!r || !image || !image->data || !path || !paint)
+        return CG_EINVAL;
+    cg_status status = fill_path_flatten(path, r->tolerance, &r->flat);
+    if (status != CG_OK)
+        return status;
+    fill_aa_begin(r, image);
+    status = fill_aa_add_polylines(r, &r->flat);
+    if (status != CG_OK)
+        return status;
+    return fill_aa_render(r, image, rule, paint);
+}
+
+cg_status cg_rasterizer_stroke_path(cg_rasterizer *r, cg_image *image, const cg_path *path,
+                                    const cg_stroke_style *style, const cg_paint *paint)
+{
+    if (!r || !image || !image->data || !path || !paint || !style)
+        return CG_EINVAL;
+    cg_status status = fill_path_flatten(path, r->tolerance, &r->flat);
+    if (status == CG_OK)
+        status = fill_stroke_polylines(&r->flat, style, r->tolerance, &r->outline);
+    if (status != CG_OK)
+        return status;
+    fill_aa_begin(r, image);
+    status = fill_aa_add_polylines(r, &r->outline);
+    if (status != CG_OK)
+        return status;
+    return fill_aa_render(r, image, CG_FILL_NONZERO, paint);
+}
+
+cg_status cg_fill_path(cg_image *image, const cg_path *path, cg_fill_rule rule,
+                       const cg_paint *paint)
+{
+    cg_rasterizer *r;
+    cg_status status = cg_rasterizer_create(&r);
+    if (status != CG_OK)
+        return status;
+    status = cg_rasterizer_fill_path(r, image, path, rule, paint);
+    cg_rasterizer_free(r);
+    return status;
+}
+
+cg_status cg_stroke_path(cg_image *image, const cg_path *path, const cg_stroke_style *style,
+                         const cg_paint *paint)
+{
+    cg_rasterizer *r;
+    cg_status status = cg_rasterizer_create(&r);
+    if (status != CG_OK)
+        return status;
+    status = cg_rasterizer_stroke_path(r, image, path, style, paint);
+    cg_rasterizer_free(r);
+    return status;
+}
+
+cg_status cg_stroke_to_path(const cg_path *path, const cg_stroke_style *style, double tolerance,
+                            cg_path *out)
+{
+    if (!path || !style || !out || !(tolerance >= 0.001 && tolerance <= 100))
+        return CG_EINVAL;
+    fill_polylines flat = {0}, outline = {0};
+    cg_status status = fill_path_flatten(path, tolerance, &flat);
+    if (status == CG_OK)
+        status = fill_stroke_polylines(&flat, style, tolerance, &outline);
+    for (size_t i = 0; status == CG_OK && i < outline.line_count; i++) {
+        const fill_polyline *l = &outline.lines[i];
+        for (size_t k = 0; status == CG_OK && k < l->count; k++) {
+            cg_vec2 p = outline.points[l->start + k];
+            status = k ? cg_path_line_to(out, p.x, p.y) : cg_path_move_to(out, p.x, p.y);
+        }
+        if (status == CG_OK)
+            status = cg_path_close(out);
+    }
+    fill_polylines_free(&flat);
+    fill_polylines_free(&outline);
+    return status;
+}
+
+/* ---- for the SVG parser: saving and restoring a path's state ------------------ */
+
+void fill_path_save(const cg_path *path, fill_path_mark *m)
+{
+    m->verb_count = path->verb_count;
+    m->coord_count = path->coord_count;
+    m->drawing = path->drawing;
+    m->current = path->current;
+    m->start = path->start;
+    m->has_current = path->has_current;
+    m->after_close = path->after_close;
+}
+
+void fill_path_restore(cg_path *path, const fill_path_mark *m)
+{
+    path->verb_count = m->verb_count;
+    path->coord_count = m->coord_count;
+    path->drawing = m->drawing;
+    path->current = m->current;
+    path->start = m->start;
+    path->has_current = m->has_current;
+    path->after_close = m->after_close;
+}
+
+cg_vec2 fill_path_current(const cg_path *path)
+{
+    return path->has_current ? path->current : cg_vec2_make(0, 0);
+}
+
+cg_vec2 fill_path_start(const cg_path *path)
+{
+    return path->has_current ? path->start : cg_vec2_make(0, 0);
+}

@@ -1,0 +1,169 @@
+/* Private pieces shared by the mesh file readers and writers: a growable
+ * mesh builder, number parsing and a cursor over text. */
+#ifndef CG_MESH_INTERNAL_H
+#define CG_MESH_INTERNAL_H
+
+#include "cg/mesh.h"
+
+#include <string.h>
+
+/* ---- the builder -----------------------------------------------------------
+ * Arrays grow geometrically with what is actually added; a reader may ask for
+ * room in advance (builder_reserve_*) only for what the data left in the file
+ * can hold, never for what a header claims. */
+typedef struct mesh_builder {
+    size_t vertex_count, vertex_capacity;
+    cg_vec3 *positions;
+    cg_vec3 *normals;    /* allocated when CG_MESH_NORMALS is in flags */
+    cg_vec2 *texcoords;  /* CG_MESH_TEXCOORDS */
+    cg_rgbaf *colors;    /* CG_MESH_COLORS */
+    size_t face_count, face_capacity;
+    uint32_t *face_offsets; /* face_count + 1 entries once a face is added */
+    cg_rgbaf *face_colors;  /* CG_MESH_FACE_COLORS */
+    size_t index_count, index_capacity;
+    uint32_t *face_indices;
+    unsigned flags;
+} mesh_builder;
+
+/* Starts an empty builder (no allocation yet). */
+void builder_init(mesh_builder *b);
+void builder_free(mesh_builder *b);
+/* Adds optional arrays (CG_MESH_* flags) to a builder that may already have
+ * vertices or faces; existing entries are filled with fill (normals,
+ * texcoords: zero; colours: the given colour). */
+cg_status builder_add_arrays(mesh_builder *b, unsigned flags, cg_rgbaf fill);
+/* Room for at least `more` further vertices / faces / corners. */
+cg_status builder_reserve_vertices(mesh_builder *b, size_t more);
+cg_status builder_reserve_faces(mesh_builder *b, size_t more);
+cg_status builder_reserve_indices(mesh_builder *b, size_t more);
+
+/* Appends a vertex (optional arrays zeroed / white) and returns its index. */
+static inline cg_status builder_push_vertex(mesh_builder *b, cg_vec3 p, size_t *index)
+{
+    if (b->vertex_count == b->vertex_capacity) {
+        cg_status s = builder_reserve_vertices(b, 1);
+        if (s != CG_OK)
+            return s;
+    }
+    size_t i = b->vertex_count++;
+    b->positions[i] = p;
+    if (b->normals)
+        b->normals[i] = cg_vec3_make(0, 0, 0);
+    if (b->texcoords)
+        b->texcoords[i] = cg_vec2_make(0, 0);
+    if (b->colors) {
+        cg_rgbaf white = {1, 1, 1, 1};
+        b->colors[i] = white;
+    }
+    if (index)
+        *index = i;
+    return CG_OK;
+}
+
+/* Appends one corner index to the face being built. */
+static inline cg_status builder_push_index(mesh_builder *b, uint32_t v)
+{
+    if (b->index_count == b->index_capacity) {
+        cg_status s = builder_reserve_indices(b, 1);
+        if (s != CG_OK)
+            return s;
+    }
+    b->face_indices[b->index_count++] = v;
+    return CG_OK;
+}
+
+/* Closes the face made of the corners pushed since the previous face (its
+ * colour, when the builder has face colours, is the reader's to set). */
+cg_status builder_end_face(mesh_builder *b);
+
+/* Corners pushed since the last builder_end_face. */
+static inline size_t builder_open_corners(const mesh_builder *b)
+{
+    return b->index_count - (b->face_count ? b->face_offsets[b->face_count] : 0);
+}
+
+/* Moves the arrays into a new cg_mesh (the builder is left empty). */
+cg_status builder_finish(mesh_builder *b, cg_mesh **out);
+
+/* ---- numbers ---------------------------------------------------------------
+ * Both parse a number starting exactly at *p (no leading blanks) and ending
+ * at a blank, a line end, '/', '#' or end; on success they advance *p past
+ * it and return 1, otherwise 0 with *p unchanged. */
+int parse_double(const char **p, const char *end, double *out);
+int parse_int64(const char **p, const char *end, int64_t *out);
+
+static inline int is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+static inline int is_line_end(char c) { return c == '\n' || c == '\r'; }
+static inline int is_space(char c) { return is_blank(c) || is_line_end(c); }
+
+/* ---- a cursor over text ------------------------------------------------ */
+typedef struct text_cursor {
+    const char *p, *end;
+    const char *name;
+    size_t line; /* 1-based line of p */
+} text_cursor;
+
+static inline void text_skip_blanks(text_cursor *t)
+{
+    while (t->p < t->end && is_blank(*t->p))
+        t->p++;
+}
+
+/* Moves past the current line's end ("\n", "\r\n" or "\r"). */
+static inline void text_next_line(text_cursor *t)
+{
+    const char *nl = memchr(t->p, '\n', (size_t)(t->end - t->p));
+    const char *cr = memchr(t->p, '\r', (size_t)((nl ? nl : t->end) - t->p));
+    if (cr && (cr + 1 == t->end || cr[1] != '\n')) {
+        t->p = cr + 1;
+    } else if (nl) {
+        t->p = nl + 1;
+    } else {
+        t->p = t->end;
+        return;
+    }
+    t->line++;
+}
+
+/* True at a line end, '#' comment or end of text (after blanks). */
+static inline int text_at_line_end(text_cursor *t)
+{
+    text_skip_blanks(t);
+    return t->p >= t->end || is_line_end(*t->p) || *t->p == '#';
+}
+
+/* Skips blanks, line ends and '#' comments; counts lines. */
+void text_skip_space_and_comments(text_cursor *t);
+
+/* Describes the text at the cursor for a message: "'abc'" (at most 24
+ * characters, non-printing ones as '?') or "the end of the line/file". */
+const char *text_describe(const text_cursor *t, char buffer[40]);
+
+/* Reads a number (after blanks) or fails with "name:line: expected WHAT, got ...". */
+cg_status text_double(text_cursor *t, double *out, const char *what, cg_error *err);
+
+/* ---- helpers ----------------------------------------------------------- */
+
+/* 0..255 (or 0..1 when is_float) encoded colour component to a linear one;
+ * alpha components are linear already. */
+float mesh_color_component(double value, int is_float, int is_alpha);
+
+/* Checks a loaded mesh's face indices against its vertex count; "name: face F
+ * refers to vertex I, but there are only N" otherwise. */
+cg_status mesh_check_indices(const mesh_builder *b, const char *name, cg_error *err);
+
+/* The readers.  bytes need not be NUL-terminated.  directory (may be NULL)
+ * is where OBJ material libraries are looked for. */
+cg_status obj_read(const char *bytes, size_t size, const char *name, const char *directory,
+                   cg_mesh **out, cg_error *err);
+cg_status ply_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
+                   cg_error *err);
+cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **out,
+                   cg_error *err);
+cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
+                   cg_error *err);
+
+/* A file read whole into memory (decompressed when gzip); free with free(). */
+cg_status mesh_read_file(const char *path, unsigned char **bytes, size_t *size, cg_error *err);
+
+#endif

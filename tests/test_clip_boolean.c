@@ -1,0 +1,429 @@
+/* Boolean operations (cg_clip_boolean64 / cg_clip_boolean) against their
+ * definition: a point is in the result exactly when the operation of the two
+ * operands' fill rules says so; results are simple, oriented and nested;
+ * areas obey the set identities; bad input gets a status. */
+#include "cg/clip.h"
+#include "check.h"
+
+#include <string.h>
+
+__extension__ typedef __int128 i128;
+
+static int fill_rule(cg_clip_fill f, long w)
+{
+    switch (f) {
+    case CG_CLIP_EVEN_ODD:
+        return (int)(w & 1);
+    case CG_CLIP_NON_ZERO:
+        return w != 0;
+    case CG_CLIP_POSITIVE:
+        return w > 0;
+    default:
+        return w < 0;
+    }
+}
+
+/* winding number of the paths of set around (px, py), a point on no edge */
+static long winding(const cg_polygon_set64 *set, double px, double py)
+{
+    long w = 0;
+    for (size_t r = 0; set && r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        for (size_t i = a; i < b; i++) {
+            cg_point64 p = set->points[i], q = set->points[i + 1 < b ? i + 1 : a];
+            if ((p.y <= py) != (q.y <= py)) {
+                double x = p.x + (py - p.y) * (double)(q.x - p.x) / (double)(q.y - p.y);
+                if (x < px)
+                    w += q.y > p.y ? -1 : 1;
+            }
+        }
+    }
+    return w;
+}
+
+static double seg_dist(double px, double py, cg_point64 a, cg_point64 b)
+{
+    double dx = (double)(b.x - a.x), dy = (double)(b.y - a.y);
+    double l = dx * dx + dy * dy, t = 0;
+    if (l > 0)
+        t = ((px - a.x) * dx + (py - a.y) * dy) / l;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    double ex = a.x + t * dx - px, ey = a.y + t * dy - py;
+    return sqrt(ex * ex + ey * ey);
+}
+
+static double dist_to_set(const cg_polygon_set64 *set, double px, double py)
+{
+    double d = INFINITY;
+    for (size_t r = 0; set && r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        for (size_t i = a; i < b; i++) {
+            double e = seg_dist(px, py, set->points[i], set->points[i + 1 < b ? i + 1 : a]);
+            if (e < d)
+                d = e;
+        }
+    }
+    return d;
+}
+
+static int inside_op(cg_clip_op op, int a, int b)
+{
+    switch (op) {
+    case CG_CLIP_INTERSECTION:
+        return a && b;
+    case CG_CLIP_UNION:
+        return a || b;
+    case CG_CLIP_DIFFERENCE:
+        return a && !b;
+    default:
+        return a != b;
+    }
+}
+
+static int orient(cg_point64 a, cg_point64 b, cg_point64 c)
+{
+    i128 v = (i128)(b.x - a.x) * (c.y - a.y) - (i128)(b.y - a.y) * (c.x - a.x);
+    return (v > 0) - (v < 0);
+}
+
+/* The result's edges: no two cross or overlap (they may meet at points). */
+static int result_is_simple(const cg_polygon_set64 *r)
+{
+    size_t n = r->point_count;
+    cg_point64 *A = malloc((n ? n : 1) * sizeof *A), *B = malloc((n ? n : 1) * sizeof *B);
+    size_t m = 0;
+    for (size_t k = 0; k < r->ring_count; k++) {
+        size_t a = r->ring_start[k], b = r->ring_start[k + 1];
+        for (size_t i = a; i < b; i++) {
+            A[m] = r->points[i];
+            B[m] = r->points[i + 1 < b ? i + 1 : a];
+            m++;
+        }
+    }
+    int ok = 1;
+    for (size_t i = 0; i < m && ok; i++) {
+        if (A[i].x == B[i].x && A[i].y == B[i].y)
+            ok = 0;
+        for (size_t j = i + 1; j < m && ok; j++) {
+            int o1 = orient(A[i], B[i], A[j]), o2 = orient(A[i], B[i], B[j]);
+            int o3 = orient(A[j], B[j], A[i]), o4 = orient(A[j], B[j], B[i]);
+            if (o1 * o2 < 0 && o3 * o4 < 0)
+                ok = 0; /* proper crossing */
+            else if (o1 == 0 && o2 == 0) {
+                /* collinear: overlap of positive length? project on the
+                 * dominant axis */
+                int ax = llabs(B[i].x - A[i].x) >= llabs(B[i].y - A[i].y);
+                int64_t a0 = ax ? A[i].x : A[i].y, a1 = ax ? B[i].x : B[i].y;
+                int64_t b0 = ax ? A[j].x : A[j].y, b1 = ax ? B[j].x : B[j].y;
+                if (a0 > a1) {
+                    int64_t t = a0;
+                    a0 = a1;
+                    a1 = t;
+                }
+                if (b0 > b1) {
+                    int64_t t = b0;
+                    b0 = b1;
+                    b1 = t;
+                }
+                if ((a1 < b1 ? a1 : b1) > (a0 > b0 ? a0 : b0))
+                    ok = 0;
+            }
+        }
+    }
+    free(A);
+    free(B);
+    return ok;
+}
+
+static i128 ring_area2(const cg_polygon_set64 *r, size_t k)
+{
+    i128 s = 0;
+    size_t a = r->ring_start[k], b = r->ring_start[k + 1];
+    for (size_t i = a; i < b; i++) {
+        cg_point64 p = r->points[i], q = r->points[i + 1 < b ? i + 1 : a];
+        s += (i128)p.x * q.y - (i128)q.x * p.y;
+    }
+    return s;
+}
+
+/* outer rings counter-clockwise, holes clockwise and inside their outer */
+static int result_is_oriented(const cg_polygon_set64 *r)
+{
+    for (size_t p = 0; p < r->polygon_count; p++) {
+        size_t r0 = r->polygon_start[p], r1 = r->polygon_start[p + 1];
+        if (r1 <= r0 || ring_area2(r, r0) <= 0)
+            return 0;
+        for (size_t h = r0 + 1; h < r1; h++) {
+            if (ring_area2(r, h) >= 0)
+                return 0;
+            /* a hole's edge midpoint is inside its outer ring */
+            size_t a = r->ring_start[h];
+            double mx = 0.5 * ((double)r->points[a].x + (double)r->points[a + 1].x);
+            double my = 0.5 * ((double)r->points[a].y + (double)r->points[a + 1].y);
+            cg_polygon_set64 outer = *r;
+            outer.ring_count = 1;
+            outer.ring_start = r->ring_start + r0;
+            if (winding(&outer, mx, my + 1e-3) == 0 && winding(&outer, mx, my - 1e-3) == 0)
+                return 0;
+        }
+    }
+    return 1;
+}
+
+static void random_ring(check_rng *rng, cg_polygon_set64 *set, int n, int grid, int64_t scale)
+{
+    cg_point64 pts[64];
+    n = n > 64 ? 64 : n;
+    for (int i = 0; i < n; i++)
+        pts[i] = (cg_point64){check_rng_int(rng, 0, grid) * scale, check_rng_int(rng, 0, grid) * scale};
+    cg_polygon_set64_add_ring(set, pts, (size_t)n, 1);
+}
+
+static void fixed_cases(void)
+{
+    cg_point64 A[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, B[] = {{5, 5}, {15, 5}, {15, 15}, {5, 15}};
+    cg_point64 C[] = {{10, 10}, {20, 10}, {20, 20}, {10, 20}};
+    cg_polygon_set64 a = {0}, b = {0}, c = {0}, r = {0};
+    cg_polygon_set64_add_ring(&a, A, 4, 1);
+    cg_polygon_set64_add_ring(&b, B, 4, 1);
+    cg_polygon_set64_add_ring(&c, C, 4, 1);
+    const double expect[4] = {25, 175, 75, 150};
+    for (int op = 0; op < 4; op++) {
+        CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+        CHECK_NEAR(cg_polygon_set64_area(&r), expect[op], 0);
+    }
+    /* xor of overlapping squares: two L shapes touching at two corners */
+    CHECK_EQ_INT(r.polygon_count, 2);
+    /* squares touching at a corner stay two polygons */
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &c, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_EQ_INT(r.polygon_count, 2);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 200, 0);
+    /* a bow tie under even-odd: two triangles */
+    cg_point64 T[] = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+    cg_polygon_set64 t = {0};
+    cg_polygon_set64_add_ring(&t, T, 4, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_EQ_INT(r.polygon_count, 2);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 50, 0);
+    /* a clockwise bow tie half: positive keeps only the counter-clockwise lobe */
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_POSITIVE, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 25, 0);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_NEGATIVE, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 25, 0);
+    /* a hole: outer counter-clockwise, inner clockwise */
+    cg_point64 H[] = {{2, 2}, {2, 8}, {8, 8}, {8, 2}};
+    cg_polygon_set64_add_ring(&a, H, 4, 0);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_EQ_INT(r.polygon_count, 1);
+    CHECK_EQ_INT(r.ring_count, 2);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 64, 0);
+    CHECK(result_is_oriented(&r));
+    /* the same square twice: non-zero sees winding 2, even-odd nothing */
+    cg_polygon_set64 d = {0};
+    cg_polygon_set64_add_ring(&d, A, 4, 1);
+    cg_polygon_set64_add_ring(&d, A, 4, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_EQ_INT(r.ring_count, 0);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    /* empty, a point, collinear points: empty results, no error */
+    cg_polygon_set64 e = {0};
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &e, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_EQ_INT(r.ring_count, 0);
+    cg_point64 P[] = {{3, 3}}, L[] = {{0, 0}, {5, 5}, {10, 10}};
+    cg_polygon_set64_add_ring(&e, P, 1, 1);
+    cg_polygon_set64_add_ring(&e, L, 3, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    /* out of range */
+    cg_point64 Big[] = {{0, 0}, {CG_CLIP_MAX_COORD + 1, 0}, {0, 5}};
+    cg_polygon_set64 big = {0};
+    cg_polygon_set64_add_ring(&big, Big, 3, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &big, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_ERANGE);
+    CHECK_EQ_INT(r.ring_count, 0);
+    /* the extreme corners of the range are fine */
+    cg_point64 Max[] = {{-CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD}, {CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD},
+                        {-CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD}, {CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD}};
+    cg_polygon_set64 mx = {0};
+    cg_polygon_set64_add_ring(&mx, Max, 4, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &mx, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 2.0 * (double)CG_CLIP_MAX_COORD * (double)CG_CLIP_MAX_COORD,
+               1e-6 * (double)CG_CLIP_MAX_COORD * (double)CG_CLIP_MAX_COORD);
+    CHECK(result_is_simple(&r));
+    CHECK(cg_clip_boolean64((cg_clip_op)9, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_EINVAL);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, (cg_clip_fill)7, NULL, CG_CLIP_NON_ZERO, &r) == CG_EINVAL);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, NULL) == CG_EINVAL);
+    cg_polygon_set64_clear(&a);
+    cg_polygon_set64_clear(&b);
+    cg_polygon_set64_clear(&c);
+    cg_polygon_set64_clear(&d);
+    cg_polygon_set64_clear(&e);
+    cg_polygon_set64_clear(&t);
+    cg_polygon_set64_clear(&r);
+    cg_polygon_set64_clear(&big);
+    cg_polygon_set64_clear(&mx);
+}
+
+static void double_api(void)
+{
+    cg_vec2 A[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, B[] = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+    cg_polygon_set a = {0}, b = {0}, r = {0};
+    cg_polygon_set_add_ring(&a, A, 4, 1);
+    cg_polygon_set_add_ring(&b, B, 4, 1);
+    CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set_area(&r), 0.25, 1e-12);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 1000, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set_area(&r), 1.75, 1e-12);
+    /* tiny and huge coordinates with the automatic scale */
+    for (int k = -200; k <= 200; k += 50) {
+        double s = ldexp(1.0, k);
+        cg_vec2 As[4], Bs[4];
+        for (int i = 0; i < 4; i++) {
+            As[i] = cg_vec2_scale(A[i], s);
+            Bs[i] = cg_vec2_scale(B[i], s);
+        }
+        cg_polygon_set as = {0}, bs = {0};
+        cg_polygon_set_add_ring(&as, As, 4, 1);
+        cg_polygon_set_add_ring(&bs, Bs, 4, 1);
+        CHECK(cg_clip_boolean(CG_CLIP_XOR, &as, CG_CLIP_NON_ZERO, &bs, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK_NEAR(cg_polygon_set_area(&r) / (s * s), 1.5, 1e-9);
+        cg_polygon_set_clear(&as);
+        cg_polygon_set_clear(&bs);
+    }
+    /* NaN, infinity, out of range with an explicit scale */
+    cg_vec2 N[] = {{0, 0}, {NAN, 0}, {1, 1}}, I[] = {{0, 0}, {INFINITY, 0}, {1, 1}}, Bg[] = {{0, 0}, {1e300, 0}, {1, 1}};
+    cg_polygon_set n = {0}, i = {0}, bg = {0};
+    cg_polygon_set_add_ring(&n, N, 3, 1);
+    cg_polygon_set_add_ring(&i, I, 3, 1);
+    cg_polygon_set_add_ring(&bg, Bg, 3, 1);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &n, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 0, &r) == CG_EINVAL);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &i, CG_CLIP_NON_ZERO, 0, &r) == CG_EINVAL);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 1e6, &r) == CG_ERANGE);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, NAN, &r) == CG_EINVAL);
+    CHECK_EQ_INT(r.ring_count, 0);
+    /* with the automatic scale a huge coordinate is fine */
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+    cg_polygon_set_clear(&a);
+    cg_polygon_set_clear(&b);
+    cg_polygon_set_clear(&n);
+    cg_polygon_set_clear(&i);
+    cg_polygon_set_clear(&bg);
+    cg_polygon_set_clear(&r);
+}
+
+/* Random polygons on coarse grids (many shared vertices, coincident and
+ * touching edges, self-intersections), all four operations, all fill rules. */
+static void fuzz(void)
+{
+    check_rng rng = {0x5eed1234abcdULL};
+    const int rounds = 1500;
+    long membership_checks = 0;
+    for (int it = 0; it < rounds; it++) {
+        int grid = it % 3 == 0 ? 4 : it % 3 == 1 ? 8 : 50;
+        int64_t scale = it % 2 ? 64 : 1024;
+        cg_polygon_set64 a = {0}, b = {0}, r[4] = {{0}};
+        int na = (int)check_rng_int(&rng, 1, 2), nb = (int)check_rng_int(&rng, 1, 2);
+        for (int k = 0; k < na; k++)
+            random_ring(&rng, &a, (int)check_rng_int(&rng, 3, it % 5 ? 10 : 40), grid, scale);
+        for (int k = 0; k < nb; k++)
+            random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 10), grid, scale);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        for (int op = 0; op < 4; op++) {
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r[op]);
+            CHECK_MSG(st == CG_OK, "round %d op %d: status %d", it, op, (int)st);
+            CHECK_MSG(result_is_simple(&r[op]), "round %d op %d: result edges cross", it, op);
+            CHECK_MSG(result_is_oriented(&r[op]), "round %d op %d: orientation or nesting", it, op);
+            /* membership at random points away from every input edge */
+            for (int s = 0; s < 12; s++) {
+                double px = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
+                double py = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
+                if (dist_to_set(&a, px, py) < 3 || dist_to_set(&b, px, py) < 3)
+                    continue;
+                int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(&a, px, py)),
+                                     fill_rule(fb, winding(&b, px, py)));
+                int got = (int)(winding(&r[op], px, py) & 1);
+                membership_checks++;
+                CHECK_MSG(want == got, "round %d op %d: point (%.2f, %.2f) in result %d, expected %d",
+                          it, op, px, py, got, want);
+            }
+        }
+        /* identities (rounding moves each crossing by under a unit: allow a
+         * little per edge) */
+        double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
+        double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
+        cg_polygon_set64 ra = {0}, rb = {0};
+        cg_clip_boolean64(CG_CLIP_UNION, &a, fa, NULL, fa, &ra);
+        cg_clip_boolean64(CG_CLIP_UNION, &b, fb, NULL, fb, &rb);
+        double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
+        double tol = 40.0 * (double)scale * grid;
+        CHECK_MSG(fabs(U - (A + B - I)) <= tol, "round %d: |AuB| %.0f, |A|+|B|-|AnB| %.0f", it, U, A + B - I);
+        CHECK_MSG(fabs(X - (U - I)) <= tol, "round %d: xor %.0f, union-intersection %.0f", it, X, U - I);
+        CHECK_MSG(fabs(D - (A - I)) <= tol, "round %d: difference %.0f, |A|-|AnB| %.0f", it, D, A - I);
+        cg_polygon_set64_clear(&ra);
+        cg_polygon_set64_clear(&rb);
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        for (int op = 0; op < 4; op++)
+            cg_polygon_set64_clear(&r[op]);
+    }
+    printf("fuzz: %d rounds, %ld membership checks\n", rounds, membership_checks);
+}
+
+/* Many vertices, random everywhere: heavy self-intersection. */
+static void stress(void)
+{
+    check_rng rng = {77};
+    for (int it = 0; it < 6; it++) {
+        cg_polygon_set64 a = {0}, b = {0}, r = {0};
+        cg_point64 pts[64];
+        for (int i = 0; i < 60; i++)
+            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000), check_rng_int(&rng, -1000000, 1000000)};
+        cg_polygon_set64_add_ring(&a, pts, 60, 1);
+        for (int i = 0; i < 60; i++)
+            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000), check_rng_int(&rng, -1000000, 1000000)};
+        cg_polygon_set64_add_ring(&b, pts, 60, 1);
+        for (int op = 0; op < 4; op++) {
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+            CHECK(result_is_simple(&r));
+            CHECK(result_is_oriented(&r));
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        cg_polygon_set64_clear(&r);
+    }
+}
+
+/* Unscaled tiny grids: every crossing is rounded, edges collapse onto each
+ * other; results must still be simple and well nested. */
+static void snapping(void)
+{
+    check_rng rng = {4242};
+    for (int it = 0; it < 3000; it++) {
+        cg_polygon_set64 a = {0}, b = {0}, r = {0};
+        int grid = (int)check_rng_int(&rng, 2, 7);
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 30), grid, 1);
+        random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 30), grid, 1);
+        if (it % 2)
+            random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 12), grid, 1);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        for (int op = 0; op < 4; op++) {
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r);
+            CHECK_MSG(st == CG_OK, "snap round %d op %d: status %d", it, op, (int)st);
+            CHECK_MSG(result_is_simple(&r), "snap round %d op %d: result edges cross", it, op);
+            CHECK_MSG(result_is_oriented(&r), "snap round %d op %d: orientation or nesting", it, op);
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        cg_polygon_set64_clear(&r);
+    }
+}
+
+int main(void)
+{
+    snapping();
+    fixed_cases();
+    double_api();
+    fuzz();
+    stress();
+    return check_finish();
+}

@@ -1,0 +1,532 @@
+/* Anti-aliased fill, paths and strokes: coverage against exact areas
+ * (polygons clipped to each pixel square), split polygons, strokes of
+ * straight segments, SVG path data, gradients, bad input. */
+#include "check.h"
+#include "cg/fill.h"
+#include "cg/color.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Signed area of polygon p[0..n). */
+static double area(const cg_vec2 *p, int n)
+{
+    double s = 0;
+    for (int i = 0; i < n; i++) {
+        cg_vec2 a = p[i], b = p[(i + 1) % n];
+        s += a.x * b.y - a.y * b.x;
+    }
+    return s / 2;
+}
+
+/* Sutherland-Hodgman clip of p against one half-plane (axis, bound, keep
+ * the side below when upper). */
+static int clip_half(const cg_vec2 *in, int n, cg_vec2 *out, int axis, double bound, int upper)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        cg_vec2 a = in[i], b = in[(i + 1) % n];
+        double va = axis ? a.y : a.x, vb = axis ? b.y : b.x;
+        int ina = upper ? va <= bound : va >= bound, inb = upper ? vb <= bound : vb >= bound;
+        if (ina)
+            out[m++] = a;
+        if (ina != inb) {
+            double t = (bound - va) / (vb - va);
+            out[m++] = cg_vec2_make(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t);
+        }
+    }
+    return m;
+}
+
+/* Integral of the winding number of polygon p over pixel (x, y): the signed
+ * area of p clipped to the square. */
+static double pixel_area(const cg_vec2 *p, int n, int x, int y)
+{
+    cg_vec2 a[256], b[256];
+    int m = clip_half(p, n, a, 0, x, 0);
+    m = clip_half(a, m, b, 0, x + 1, 1);
+    m = clip_half(b, m, a, 1, y, 0);
+    m = clip_half(a, m, b, 1, y + 1, 1);
+    return area(b, m);
+}
+
+static const cg_rgba8 white = {255, 255, 255, 255};
+
+/* A random simple polygon: star-shaped around a centre. */
+static int star_polygon(check_rng *rng, cg_vec2 *p, double cx, double cy, double rmin, double rmax)
+{
+    /* At least 4 vertices, each in its own quarter of the angular step, so
+     * that consecutive vertices are less than pi apart and the polygon is
+     * simple (star-shaped around the centre). */
+    int n = (int)check_rng_int(rng, 4, 24);
+    double base = check_rng_range(rng, 0, 2 * CG_PI);
+    for (int i = 0; i < n; i++) {
+        double a = base + 2 * CG_PI * (i + check_rng_range(rng, 0, 0.9)) / n;
+        double r = check_rng_range(rng, rmin, 1) * rmax;
+        p[i] = cg_vec2_make(cx + r * cos(a), cy + r * sin(a));
+    }
+    return n;
+}
+
+/* Each pixel's alpha equals the exact covered area within 1/256 (8-bit
+ * coverage), on random simple polygons of either orientation, both rules,
+ * some reaching outside the image. */
+static void coverage_is_area(void)
+{
+    check_rng rng = {31337};
+    int bad = 0, sum_bad = 0;
+    cg_rasterizer *r;
+    cg_rasterizer_create(&r);
+    for (int trial = 0; trial < 2000; trial++) {
+        int w = (int)check_rng_int(&rng, 1, 32), h = (int)check_rng_int(&rng, 1, 32);
+        cg_image *im;
+        cg_image_create(&im, w, h, CG_PIXEL_RGBAF);
+        cg_vec2 p[24];
+        int n = star_polygon(&rng, p, check_rng_range(&rng, -4, w + 4),
+                             check_rng_range(&rng, -4, h + 4), 0.2, check_rng_range(&rng, 0.3, 24));
+        if (trial % 2) /* reverse the orientation */
+            for (int i = 0; i < n / 2; i++) {
+                cg_vec2 t = p[i];
+                p[i] = p[n - 1 - i];
+                p[n - 1 - i] = t;
+            }
+        cg_fill_rule rule = trial % 4 < 2 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        cg_paint paint = cg_paint_solid(white);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, im, p, &n, 1, rule, &paint) == CG_OK);
+        double worst = 0, sum = 0, exact_sum = 0;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                double exact = fabs(pixel_area(p, n, x, y));
+                double got = cg_image_get(im, x, y).a;
+                sum += got;
+                exact_sum += exact;
+                if (fabs(got - exact) > worst)
+                    worst = fabs(got - exact);
+            }
+        if (worst > 1.0 / 256 && ++bad <= 5)
+            fprintf(stderr, "coverage trial %d: error %g\n", trial, worst);
+        if (fabs(sum - exact_sum) > (double)w * h / 256 + 1e-9)
+            sum_bad++;
+        cg_image_free(im);
+    }
+    cg_rasterizer_free(r);
+    CHECK_MSG(bad == 0, "%d polygons have a pixel off its exact area by more than 1/256", bad);
+    CHECK_MSG(sum_bad == 0, "%d polygons' summed coverage differs from their area", sum_bad);
+}
+
+/* A polygon with a hole: even-odd with any orientation, non-zero with the
+ * hole reversed; coverage equals outer minus hole per pixel. */
+static void holes(void)
+{
+    check_rng rng = {4};
+    int bad = 0;
+    for (int trial = 0; trial < 300; trial++) {
+        cg_vec2 p[48], outer[24], hole[24];
+        /* Outer vertices at radius 9..15, consecutive ones under 90 degrees
+         * apart (at least 8 of them), so every edge stays over 6 from the
+         * centre; the hole is a small regular polygon of radius under 6. */
+        int n1;
+        do
+            n1 = star_polygon(&rng, outer, 16, 16, 0.6, 15);
+        while (n1 < 8);
+        int n2 = (int)check_rng_int(&rng, 3, 10);
+        double hr = check_rng_range(&rng, 0.5, 5.9);
+        for (int i = 0; i < n2; i++) {
+            double a = 2 * CG_PI * i / n2;
+            hole[i] = cg_vec2_make(16 + hr * cos(a), 16 + hr * sin(a));
+        }
+        cg_fill_rule rule = trial % 2 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        int reverse = rule == CG_FILL_NONZERO ? (area(outer, n1) > 0) == (area(hole, n2) > 0)
+                                              : (int)check_rng_int(&rng, 0, 1);
+        memcpy(p, outer, sizeof(cg_vec2) * n1);
+        for (int i = 0; i < n2; i++)
+            p[n1 + i] = hole[reverse ? n2 - 1 - i : i];
+        int sizes[2] = {n1, n2};
+        cg_image *im;
+        cg_image_create(&im, 32, 32, CG_PIXEL_RGBAF);
+        cg_paint paint = cg_paint_solid(white);
+        cg_fill_polygon_aa(im, p, sizes, 2, rule, &paint);
+        double worst = 0;
+        for (int y = 0; y < 32; y++)
+            for (int x = 0; x < 32; x++) {
+                double exact = fabs(pixel_area(outer, n1, x, y)) - fabs(pixel_area(hole, n2, x, y));
+                double e = fabs(cg_image_get(im, x, y).a - exact);
+                if (e > worst)
+                    worst = e;
+            }
+        if (worst > 1.0 / 256 && ++bad <= 3)
+            fprintf(stderr, "hole trial %d: error %g\n", trial, worst);
+        cg_image_free(im);
+    }
+    CHECK_MSG(bad == 0, "%d polygons with holes are off", bad);
+}
+
+/* Split along a shared edge into two contours of one fill: identical. */
+static void split_aa(void)
+{
+    check_rng rng = {12};
+    int bad = 0;
+    for (int trial = 0; trial < 500; trial++) {
+        int n = (int)check_rng_int(&rng, 4, 12);
+        cg_vec2 p[12], both[26];
+        double cx = check_rng_range(&rng, 8, 24), cy = check_rng_range(&rng, 8, 24);
+        for (int i = 0; i < n; i++) {
+            double a = 2 * CG_PI * (i + check_rng_range(&rng, 0, 0.8)) / n;
+            p[i] = cg_vec2_make(cx + check_rng_range(&rng, 6, 7) * cos(a),
+                                cy + check_rng_range(&rng, 6, 7) * sin(a));
+        }
+        int k = (int)check_rng_int(&rng, 2, n - 2), m = 0;
+        for (int i = 0; i <= k; i++)
+            both[m++] = p[i];
+        int n1 = m;
+        for (int i = k; i <= n; i++)
+            both[m++] = p[i % n];
+        int sizes[2] = {n1, m - n1};
+        cg_image *a, *b;
+        cg_image_create(&a, 32, 32, CG_PIXEL_RGBA8);
+        cg_image_create(&b, 32, 32, CG_PIXEL_RGBA8);
+        cg_rgba8 c = {40, 120, 220, 255};
+        cg_paint paint = cg_paint_solid(c);
+        cg_fill_rule rule = trial % 2 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        cg_fill_polygon_aa(a, p, &n, 1, rule, &paint);
+        cg_fill_polygon_aa(b, both, sizes, 2, CG_FILL_NONZERO, &paint);
+        int worst = 0;
+        for (size_t i = 0; i < 32 * 32 * 4; i++) {
+            int d = abs(a->data[i] - b->data[i]);
+            if (d > worst)
+                worst = d;
+        }
+        if (worst > 1 && ++bad <= 3)
+            fprintf(stderr, "aa split trial %d: differs by %d\n", trial, worst);
+        cg_image_free(a);
+        cg_image_free(b);
+    }
+    CHECK_MSG(bad == 0, "%d split polygons drawn as two differ from the whole", bad);
+}
+
+static double total_alpha(const cg_image *im)
+{
+    double s = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++)
+            s += cg_image_get(im, x, y).a;
+    return s;
+}
+
+/* Coverage is stored in 8 bits: each partly covered pixel may be off by
+ * half a step. */
+static double quantization(const cg_image *im)
+{
+    int partial = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            float a = cg_image_get(im, x, y).a;
+            partial += a > 0 && a < 1;
+        }
+    return partial * 0.5 / 255 + 1e-6;
+}
+
+/* Strokes of straight segments: per pixel, a butt-capped segment is the
+ * rectangle around it; totals for caps and joins match their areas. */
+static void strokes(void)
+{
+    check_rng rng = {99};
+    int bad = 0;
+    cg_path *path;
+    cg_path_create(&path);
+    for (int trial = 0; trial < 500; trial++) {
+        cg_vec2 a = {check_rng_range(&rng, 4, 28), check_rng_range(&rng, 4, 28)};
+        cg_vec2 b = {check_rng_range(&rng, 4, 28), check_rng_range(&rng, 4, 28)};
+        double width = check_rng_range(&rng, 0.2, 6);
+        cg_path_reset(path);
+        cg_path_move_to(path, a.x, a.y);
+        cg_path_line_to(path, b.x, b.y);
+        cg_stroke_style style = cg_stroke_style_default();
+        style.width = width;
+        style.cap = (cg_line_cap)(trial % 3);
+        cg_image *im;
+        cg_image_create(&im, 32, 32, CG_PIXEL_RGBAF);
+        cg_paint paint = cg_paint_solid(white);
+        CHECK(cg_stroke_path(im, path, &style, &paint) == CG_OK);
+        cg_vec2 u = cg_vec2_normalize(cg_vec2_sub(b, a)), n = {-u.y * width / 2, u.x * width / 2};
+        double len = cg_vec2_length(cg_vec2_sub(b, a)), expect;
+        if (style.cap == CG_CAP_BUTT) {
+            cg_vec2 rect[4] = {cg_vec2_add(a, n), cg_vec2_add(b, n), cg_vec2_sub(b, n),
+                               cg_vec2_sub(a, n)};
+            double worst = 0;
+            for (int y = 0; y < 32; y++)
+                for (int x = 0; x < 32; x++) {
+                    double e = fabs(cg_image_get(im, x, y).a - fabs(pixel_area(rect, 4, x, y)));
+                    if (e > worst)
+                        worst = e;
+                }
+            if (worst > 1.0 / 256 && ++bad <= 3)
+                fprintf(stderr, "stroke trial %d: pixel error %g\n", trial, worst);
+            expect = len * width;
+        } else if (style.cap == CG_CAP_SQUARE) {
+            expect = (len + width) * width;
+        } else {
+            expect = len * width + CG_PI * width * width / 4;
+        }
+        /* Round caps are polygons within the 0.1 pixel tolerance. */
+        double slack = (style.cap == CG_CAP_ROUND ? 0.1 * CG_PI * width : 0) + quantization(im);
+        double got = total_alpha(im);
+        if (fabs(got - expect) > slack && ++bad <= 6)
+            fprintf(stderr, "stroke trial %d (cap %d): area %g expected %g\n", trial, style.cap,
+                    got, expect);
+        cg_image_free(im);
+    }
+    /* An L with each join: exact outline areas. */
+    for (int join = 0; join < 3; join++) {
+        double w = 4, l1 = 20, l2 = 16;
+        cg_path_reset(path);
+        cg_path_move_to(path, 4, 6);
+        cg_path_line_to(path, 4 + l1, 6);
+        cg_path_line_to(path, 4 + l1, 6 + l2);
+        cg_stroke_style style = cg_stroke_style_default();
+        style.width = w;
+        style.join = (cg_line_join)join;
+        cg_image *im;
+        cg_image_create(&im, 40, 40, CG_PIXEL_RGBAF);
+        cg_paint paint = cg_paint_solid(white);
+        cg_stroke_path(im, path, &style, &paint);
+        double expect = w * (l1 + l2);
+        if (join == CG_JOIN_BEVEL)
+            expect -= w * w / 8;
+        if (join == CG_JOIN_ROUND)
+            expect -= w * w / 4 - CG_PI * w * w / 16;
+        CHECK_NEAR(total_alpha(im), expect, (join == CG_JOIN_ROUND ? 0.2 : 0) + quantization(im));
+        cg_image_free(im);
+    }
+    /* A closed square outline: the annulus between the offsets. */
+    cg_path_reset(path);
+    cg_path_move_to(path, 8, 8);
+    cg_path_line_to(path, 28, 8);
+    cg_path_line_to(path, 28, 28);
+    cg_path_line_to(path, 8, 28);
+    cg_path_close(path);
+    cg_stroke_style style = cg_stroke_style_default();
+    style.width = 3;
+    cg_image *im;
+    cg_image_create(&im, 40, 40, CG_PIXEL_RGBAF);
+    cg_paint paint = cg_paint_solid(white);
+    cg_stroke_path(im, path, &style, &paint);
+    CHECK_NEAR(total_alpha(im), 23.0 * 23 - 17.0 * 17, quantization(im));
+    /* Dashes: on 4 off 2 along a 30-pixel line with butt caps: 5 dashes of 4. */
+    cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+    cg_path_reset(path);
+    cg_path_move_to(path, 2, 10);
+    cg_path_line_to(path, 32, 10);
+    double dashes[2] = {4, 2};
+    style.width = 2;
+    style.dashes = dashes;
+    style.dash_count = 2;
+    cg_stroke_path(im, path, &style, &paint);
+    CHECK_NEAR(total_alpha(im), 5 * 4 * 2, quantization(im));
+    CHECK(cg_image_get(im, 7, 10).a < 0.01f);  /* in the first gap: x 6..8 */
+    CHECK(cg_image_get(im, 4, 10).a > 0.99f);
+    /* Offset by 1: the pattern starts 1 into the first dash. */
+    cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+    style.dash_offset = 1;
+    cg_stroke_path(im, path, &style, &paint);
+    CHECK(cg_image_get(im, 4, 10).a > 0.99f); /* first dash 2..5, gap 5..7 */
+    CHECK(cg_image_get(im, 5, 10).a < 0.01f);
+    CHECK(cg_image_get(im, 7, 10).a > 0.99f);
+    cg_image_free(im);
+    CHECK_MSG(bad == 0, "%d strokes off their exact area", bad);
+    cg_path_free(path);
+}
+
+static void bad_strokes(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_path_move_to(path, 1, 1);
+    cg_path_line_to(path, 10, 10);
+    cg_image *im;
+    cg_image_create(&im, 16, 16, CG_PIXEL_RGBA8);
+    cg_paint paint = cg_paint_solid(white);
+    cg_stroke_style s = cg_stroke_style_default();
+    s.width = -1;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    s.width = NAN;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    s.width = 0;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    s.width = 1;
+    s.miter_limit = 0.5;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    s.miter_limit = 4;
+    double neg[2] = {1, -1};
+    s.dashes = neg;
+    s.dash_count = 2;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    double fine[1] = {1e-9};
+    s.dashes = fine;
+    s.dash_count = 1;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_ERANGE);
+    s.dash_count = 0;
+    s.join = (cg_line_join)9;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_EINVAL);
+    cg_paint bad_paint = cg_paint_linear(cg_vec2_make(0, 0), cg_vec2_make(1, 1), NULL, 0);
+    s = cg_stroke_style_default();
+    CHECK(cg_stroke_path(im, path, &s, &bad_paint) == CG_EINVAL);
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++)
+            CHECK(cg_image_get_rgba8(im, x, y).a == 0);
+    /* Paths refuse bad coordinates and stay unchanged. */
+    CHECK(cg_path_line_to(path, NAN, 0) == CG_EINVAL);
+    CHECK(cg_path_move_to(path, 0, INFINITY) == CG_EINVAL);
+    CHECK(cg_path_line_to(path, 1e300, 0) == CG_EINVAL);
+    CHECK(cg_path_arc(path, 5, 5, -1, 0, 1) == CG_EINVAL);
+    CHECK(cg_path_arc(path, 5, 5, 1, 0, NAN) == CG_EINVAL);
+    /* An empty path fills and strokes nothing. */
+    cg_path_reset(path);
+    CHECK(cg_path_is_empty(path));
+    CHECK(cg_fill_path(im, path, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_OK);
+    cg_path_move_to(path, 3, 3); /* a bare move strokes nothing */
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_OK);
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++)
+            CHECK(cg_image_get_rgba8(im, x, y).a == 0);
+    /* A zero-length subpath with round caps is a dot. */
+    cg_path_line_to(path, 3, 3);
+    s.cap = CG_CAP_ROUND;
+    s.width = 4;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_OK);
+    CHECK(cg_image_get_rgba8(im, 3, 3).a == 255);
+    cg_image_free(im);
+    cg_path_free(path);
+}
+
+static void svg_paths(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_error err;
+    cg_image *a, *b;
+    cg_image_create(&a, 32, 32, CG_PIXEL_RGBAF);
+    cg_image_create(&b, 32, 32, CG_PIXEL_RGBAF);
+    cg_paint paint = cg_paint_solid(white);
+    /* The same square five ways. */
+    const char *squares[] = {"M 4 4 L 20 4 L 20 20 L 4 20 Z", "M4,4 20,4 20,20 4,20z",
+                             "m4 4 h16 v16 h-16 z", "M4 4H20V20H4Z", "M 4e0 .4e1 l 16 0 0 16 -16 0 Z"};
+    for (int i = 0; i < 5; i++) {
+        cg_path_reset(path);
+        CHECK_MSG(cg_path_append_svg(path, squares[i], &err) == CG_OK, "%s: %s", squares[i], err.message);
+        cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
+        cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
+        CHECK_NEAR(total_alpha(a), 256, 1e-3);
+        CHECK(cg_image_get(a, 4, 4).a == 1 && cg_image_get(a, 20, 4).a == 0);
+    }
+    /* A circle from two SVG arcs: area pi r^2 within the flattening. */
+    cg_path_reset(path);
+    CHECK(cg_path_append_svg(path, "M 6 16 A 10 10 0 0 1 26 16 A 10 10 0 1 1 6 16 Z", &err) == CG_OK);
+    cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
+    cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
+    CHECK_NEAR(total_alpha(a), CG_PI * 100, 0.1 * 2 * CG_PI * 10);
+    /* Arcs with radii too small are scaled up: a half circle of radius 5. */
+    cg_path_reset(path);
+    CHECK(cg_path_append_svg(path, "M 6 16 a 1 1 0 0 0 10 0 z", &err) == CG_OK);
+    cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
+    cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
+    CHECK_NEAR(total_alpha(a), CG_PI * 25 / 2, 0.1 * CG_PI * 5 + 0.1);
+    CHECK(cg_image_get(a, 11, 19).a > 0.99f); /* sweep 0 from left to right bulges down (+y) */
+    /* cg_path_arc: a full circle. */
+    cg_path_reset(path);
+    cg_path_arc(path, 16, 16, 8, 0, 2 * CG_PI);
+    cg_image_clear_rgba8(b, (cg_rgba8){0, 0, 0, 0});
+    cg_fill_path(b, path, CG_FILL_EVEN_ODD, &paint);
+    CHECK_NEAR(total_alpha(b), CG_PI * 64, 0.1 * 2 * CG_PI * 8);
+    /* Malformed data: a clear message, the path unchanged. */
+    const char *bad[] = {"L 10 10", "M 10", "M 10 10 L 5", "M 1e999 0", "M 10 10 A 5 5 0 2 1 0 0",
+                         "M 10 10 X 4", "M nan 4", "M 0x10 4", "M 10 10 L 4 4 Q"};
+    for (int i = 0; i < (int)(sizeof bad / sizeof bad[0]); i++) {
+        cg_path_reset(path);
+        cg_path_move_to(path, 1, 1);
+        CHECK_MSG(cg_path_append_svg(path, bad[i], &err) == CG_EFORMAT, "'%s' accepted", bad[i]);
+        CHECK_MSG(strstr(err.message, "offset") != NULL, "'%s': message '%s'", bad[i], err.message);
+        CHECK(cg_path_is_empty(path));
+    }
+    CHECK(cg_path_append_svg(path, "", &err) == CG_OK);
+    CHECK(cg_path_append_svg(path, "  ", &err) == CG_OK);
+    cg_image_free(a);
+    cg_image_free(b);
+    cg_path_free(path);
+}
+
+/* Even-odd against non-zero on a pentagram; gradients; linear light. */
+static void rules_and_paints(void)
+{
+    cg_vec2 star[5];
+    for (int i = 0; i < 5; i++) {
+        double a = -CG_PI / 2 + i * 4 * CG_PI / 5;
+        star[i] = cg_vec2_make(16 + 14 * cos(a), 16 + 14 * sin(a));
+    }
+    int five = 5;
+    cg_image *im;
+    cg_image_create(&im, 32, 32, CG_PIXEL_RGBA8);
+    cg_paint paint = cg_paint_solid(white);
+    cg_fill_polygon_aa(im, star, &five, 1, CG_FILL_EVEN_ODD, &paint);
+    CHECK(cg_image_get_rgba8(im, 16, 16).a == 0);
+    CHECK(cg_image_get_rgba8(im, 15, 8).a == 255 && cg_image_get_rgba8(im, 16, 8).a == 255);
+    cg_fill_polygon_aa(im, star, &five, 1, CG_FILL_NONZERO, &paint);
+    CHECK(cg_image_get_rgba8(im, 16, 16).a == 255);
+    /* Half coverage of white over opaque black is linear 0.5: code 188. */
+    cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 255});
+    cg_vec2 half[4] = {{0, 0}, {10.5, 0}, {10.5, 32}, {0, 32}};
+    int four = 4;
+    cg_fill_polygon_aa(im, half, &four, 1, CG_FILL_NONZERO, &paint);
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 10, 5).r, 188);
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 9, 5).r, 255);
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 11, 5).r, 0);
+    /* Linear gradient black to white along x: monotonic, ends pinned. */
+    cg_gradient_stop stops[2] = {{0, {0, 0, 0, 255}}, {1, {255, 255, 255, 255}}};
+    cg_paint lin = cg_paint_linear(cg_vec2_make(4, 0), cg_vec2_make(28, 0), stops, 2);
+    cg_vec2 all[4] = {{0, 0}, {32, 0}, {32, 32}, {0, 32}};
+    CHECK(cg_fill_polygon_aa(im, all, &four, 1, CG_FILL_NONZERO, &lin) == CG_OK);
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 0, 3).r, 0);
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 31, 3).r, 255);
+    int monotonic = 1;
+    for (int x = 1; x < 32; x++)
+        monotonic &= cg_image_get_rgba8(im, x, 3).r >= cg_image_get_rgba8(im, x - 1, 3).r;
+    CHECK(monotonic);
+    /* Middle of the gradient is linear 0.5 (interpolated in linear light). */
+    for (int x = 4; x < 28; x++)
+        CHECK(abs(cg_image_get_rgba8(im, x, 3).r - cg_linear_to_srgb8((float)((x + 0.5 - 4) / 24))) <= 2);
+    /* Radial: centre is the first stop, far corner the last. */
+    cg_paint rad = cg_paint_radial(cg_vec2_make(16, 16), 10, stops, 2);
+    CHECK(cg_fill_polygon_aa(im, all, &four, 1, CG_FILL_NONZERO, &rad) == CG_OK);
+    CHECK(cg_image_get_rgba8(im, 16, 16).r <= cg_linear_to_srgb8(0.08f));
+    CHECK_EQ_INT(cg_image_get_rgba8(im, 0, 0).r, 255);
+    /* Bad gradients. */
+    cg_gradient_stop backwards[2] = {{0.8, {0, 0, 0, 255}}, {0.2, {255, 255, 255, 255}}};
+    cg_paint bad = cg_paint_linear(cg_vec2_make(0, 0), cg_vec2_make(1, 0), backwards, 2);
+    CHECK(cg_fill_polygon_aa(im, all, &four, 1, CG_FILL_NONZERO, &bad) == CG_EINVAL);
+    bad = cg_paint_radial(cg_vec2_make(0, 0), -1, stops, 2);
+    CHECK(cg_fill_polygon_aa(im, all, &four, 1, CG_FILL_NONZERO, &bad) == CG_EINVAL);
+    /* NaN polygon: refused, nothing drawn. */
+    cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+    cg_vec2 nan_poly[3] = {{1, 1}, {20, NAN}, {3, 20}};
+    int three = 3;
+    CHECK(cg_fill_polygon_aa(im, nan_poly, &three, 1, CG_FILL_NONZERO, &paint) == CG_EINVAL);
+    CHECK(total_alpha(im) == 0);
+    /* Huge valid coordinates: a triangle covering everything. */
+    cg_vec2 big[3] = {{-1e11, -1e11}, {1e11, -1e9}, {-1e9, 1e11}};
+    CHECK(cg_fill_polygon_aa(im, big, &three, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK_NEAR(total_alpha(im), 32 * 32, 1e-3);
+    cg_image_free(im);
+}
+
+int main(void)
+{
+    coverage_is_area();
+    holes();
+    split_aa();
+    strokes();
+    bad_strokes();
+    svg_paths();
+    rules_and_paints();
+    return check_finish();
+}

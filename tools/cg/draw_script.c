@@ -1,0 +1,334 @@
+/* The `cg draw` script interpreter: reading, tokenising, command lookup and
+ * the argument helpers of draw_script.h. */
+#include "draw_script_run.h"
+#include "cg/color.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Every command group, listed by the build from tools/cg/drawcmds_*.c. */
+#define DRAW_COMMANDS(name) extern const draw_command_table draw_commands_##name;
+#include "drawcmds.inc"
+#undef DRAW_COMMANDS
+#define DRAW_COMMANDS(name) &draw_commands_##name,
+static const draw_command_table *const tables[] = {
+#include "drawcmds.inc"
+};
+#undef DRAW_COMMANDS
+
+enum { MAX_SCRIPT_BYTES = 256 << 20 };
+
+int draw_error(const draw_state *state, const char *format, ...)
+{
+    va_list args;
+    fprintf(stderr, "%s:%d: ", state->file, state->line);
+    va_start(args, format);
+    vfprintf(stderr, format, args);
+    va_end(args);
+    fputc('\n', stderr);
+    return 1;
+}
+
+int draw_arg_count(const draw_state *state, int argc, char **argv, int n, const char *usage)
+{
+    if (argc - 1 == n)
+        return 0;
+    return draw_error(state, "'%s' expects %d argument%s (%s), got %d", argv[0], n,
+                      n == 1 ? "" : "s", usage, argc - 1);
+}
+
+int draw_arg_int(const draw_state *state, const char *text, const char *what, int *out)
+{
+    char *end;
+    errno = 0;
+    long long v = strtoll(text, &end, 10);
+    if (end == text || *end != '\0')
+        return draw_error(state, "expected an integer for %s, got '%s'", what, text);
+    if (errno == ERANGE || v < INT_MIN || v > INT_MAX)
+        return draw_error(state, "%s = %s is outside the int range [%d, %d]", what, text, INT_MIN,
+                          INT_MAX);
+    *out = (int)v;
+    return 0;
+}
+
+int draw_arg_double(const draw_state *state, const char *text, const char *what, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0')
+        return draw_error(state, "expected a number for %s, got '%s'", what, text);
+    if (!isfinite(v) || errno == ERANGE)
+        return draw_error(state, "expected a finite number for %s, got '%s'", what, text);
+    *out = v;
+    return 0;
+}
+
+int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what,
+                         double *out)
+{
+    if (draw_arg_double(state, text, what, out))
+        return 1;
+    if (*out < 0)
+        return draw_error(state, "expected %s >= 0, got '%s'", what, text);
+    return 0;
+}
+
+int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out)
+{
+    cg_error err;
+    if (cg_color_parse(text, out, &err) != CG_OK)
+        return draw_error(state, "expected a colour (#rrggbb, #rrggbbaa or a name), got '%s'",
+                          text);
+    return 0;
+}
+
+int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,
+                    const char *usage, cg_vec2 **out, int *count)
+{
+    int numbers = argc - first;
+    if (numbers < 2 * min_points || numbers % 2)
+        return draw_error(state, "'%s' expects %s X Y pairs (%s), got %d number%s", argv[0],
+                          min_points == 2 ? "two or more" : min_points == 4 ? "four or more" : "more",
+                          usage, numbers, numbers == 1 ? "" : "s");
+    cg_vec2 *points = malloc((size_t)(numbers / 2) * sizeof *points);
+    if (!points)
+        return draw_error(state, "out of memory");
+    for (int i = 0; i < numbers / 2; i++) {
+        char what[32];
+        snprintf(what, sizeof what, "X%d", i);
+        if (draw_arg_double(state, argv[first + 2 * i], what, &points[i].x)) {
+            free(points);
+            return 1;
+        }
+        snprintf(what, sizeof what, "Y%d", i);
+        if (draw_arg_double(state, argv[first + 2 * i + 1], what, &points[i].y)) {
+            free(points);
+            return 1;
+        }
+    }
+    *out = points;
+    *count = numbers / 2;
+    return 0;
+}
+
+cg_image *draw_canvas(const draw_state *state)
+{
+    if (!state->canvas)
+        draw_error(state, "expected 'size W H' before the first drawing command");
+    return state->canvas;
+}
+
+int draw_check(const draw_state *state, cg_status status)
+{
+    if (status == CG_OK)
+        return 0;
+    return draw_error(state, "cannot draw: %s", cg_status_str(status));
+}
+
+/* ---- scripts ------------------------------------------------------------- */
+
+static const draw_command *find_command(const char *name)
+{
+    for (size_t t = 0; t < sizeof tables / sizeof tables[0]; t++)
+        for (int i = 0; i < tables[t]->count; i++)
+            if (strcmp(tables[t]->commands[i].name, name) == 0)
+                return &tables[t]->commands[i];
+    return NULL;
+}
+
+static char *read_all(const char *path, size_t *size)
+{
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 4096, n = 0;
+    char *text = malloc(cap);
+    while (text) {
+        if (n + 1 >= cap) {
+            if (cap >= MAX_SCRIPT_BYTES) {
+                free(text);
+                text = NULL;
+                errno = EFBIG;
+                break;
+            }
+            char *grown = realloc(text, cap * 2);
+            if (!grown) {
+                free(text);
+                text = NULL;
+                break;
+            }
+            text = grown;
+            cap *= 2;
+        }
+        size_t got = fread(text + n, 1, cap - n - 1, f);
+        n += got;
+        if (got == 0) {
+            if (ferror(f)) {
+                free(text);
+                text = NULL;
+            }
+            break;
+        }
+    }
+    if (f != stdin)
+        fclose(f);
+    if (text) {
+        text[n] = '\0';
+        *size = n;
+    }
+    return text;
+}
+
+/* A word starting with '#' is a colour when '#' is followed by 3, 4, 6 or 8
+ * hexadecimal digits; otherwise it starts a comment. */
+static int is_hex_colour(const char *word, size_t length)
+{
+    if (length != 4 && length != 5 && length != 7 && length != 9)
+        return 0;
+    for (size_t i = 1; i < length; i++) {
+        char c = word[i];
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')))
+            return 0;
+    }
+    return 1;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+void draw_script_free(draw_script *script)
+{
+    if (!script)
+        return;
+    for (int i = 0; i < script->count; i++)
+        free(script->lines[i].argv);
+    free(script->lines);
+    free(script->text);
+    memset(script, 0, sizeof *script);
+}
+
+int draw_script_load(const char *path, draw_script *script)
+{
+    memset(script, 0, sizeof *script);
+    script->file = strcmp(path, "-") == 0 ? "<stdin>" : path;
+    size_t size = 0;
+    script->text = read_all(path, &size);
+    if (!script->text) {
+        fprintf(stderr, "cg: draw: %s: cannot read: %s\n", script->file, strerror(errno));
+        return 1;
+    }
+    if (memchr(script->text, '\0', size)) {
+        fprintf(stderr, "cg: draw: %s: not a text file (contains a NUL byte)\n", script->file);
+        draw_script_free(script);
+        return 1;
+    }
+    int capacity = 0, number = 0;
+    char *p = script->text;
+    draw_state where = {0};
+    where.file = script->file;
+    while (*p) {
+        number++;
+        char *end = strchr(p, '\n');
+        char *next = end ? end + 1 : p + strlen(p);
+        if (end)
+            *end = '\0';
+        /* Split into words, stopping at a comment. */
+        int argc = 0, cap = 8;
+        char **argv = malloc((size_t)cap * sizeof *argv);
+        if (!argv)
+            goto out_of_memory;
+        char *q = p;
+        for (;;) {
+            while (is_blank(*q))
+                q++;
+            if (!*q)
+                break;
+            char *word = q;
+            while (*q && !is_blank(*q))
+                q++;
+            size_t length = (size_t)(q - word);
+            if (word[0] == '#' && (argc == 0 || !is_hex_colour(word, length)))
+                break;
+            if (*q)
+                *q++ = '\0';
+            if (argc + 1 >= cap) {
+                cap *= 2;
+                char **grown = realloc(argv, (size_t)cap * sizeof *grown);
+                if (!grown) {
+                    free(argv);
+                    goto out_of_memory;
+                }
+                argv = grown;
+            }
+            argv[argc++] = word;
+        }
+        p = next;
+        if (argc == 0) {
+            free(argv);
+            continue;
+        }
+        argv[argc] = NULL;
+        where.line = number;
+        const draw_command *command = find_command(argv[0]);
+        if (!command) {
+            draw_error(&where, "unknown command '%s' (expected a command such as size, color, "
+                               "line, circle, bezier; see docs/draw-script.md)",
+                       argv[0]);
+            free(argv);
+            draw_script_free(script);
+            return 1;
+        }
+        if (script->count == capacity) {
+            capacity = capacity ? capacity * 2 : 64;
+            draw_line *grown = realloc(script->lines, (size_t)capacity * sizeof *grown);
+            if (!grown) {
+                free(argv);
+                goto out_of_memory;
+            }
+            script->lines = grown;
+        }
+        draw_line *line = &script->lines[script->count++];
+        line->number = number;
+        line->argc = argc;
+        line->argv = argv;
+        line->command = command;
+    }
+    return 0;
+out_of_memory:
+    fprintf(stderr, "cg: draw: %s: out of memory\n", script->file);
+    draw_script_free(script);
+    return 1;
+}
+
+int draw_script_run(const draw_script *script, draw_state *state)
+{
+    memset(state, 0, sizeof *state);
+    state->file = script->file;
+    state->background = (cg_rgba8){255, 255, 255, 255};
+    state->color = (cg_rgba8){0, 0, 0, 255};
+    state->tolerance = 0.25;
+    for (int i = 0; i < script->count; i++) {
+        const draw_line *line = &script->lines[i];
+        state->line = line->number;
+        if (line->command->run(state, line->argc, line->argv))
+            return 1;
+    }
+    if (!state->canvas) {
+        state->line = script->count ? script->lines[script->count - 1].number : 1;
+        return draw_error(state, "expected a 'size W H' command: the script draws no canvas");
+    }
+    return 0;
+}
+
+void draw_state_release(draw_state *state)
+{
+    cg_image_free(state->canvas);
+    state->canvas = NULL;
+}

@@ -1,0 +1,83 @@
+/* The interpreter of `cg draw` scripts (docs/draw-script.md).
+ *
+ * A script is plain text, one command a line: the command's name and its
+ * arguments separated by blanks; `#` starts a comment.  The interpreter reads
+ * the whole script first (tokenising each line once), then runs the commands
+ * in order on a draw_state; with --repeat N it runs them N times, each time
+ * from a fresh state.
+ *
+ * Commands come in groups, one file each: tools/cg/drawcmds_<group>.c defines
+ *     const draw_command_table draw_commands_<group> = {"group", list, count};
+ * and the build lists every such file (cmake/registry.cmake, macro
+ * DRAW_COMMANDS), so a new group touches no shared file.  A command's run
+ * function checks and converts its arguments with the draw_arg_* helpers
+ * below (which print "FILE:LINE: ..." on failure) and draws on the canvas.
+ * Every field a command group needs lives in draw_state, in this header. */
+#ifndef CG_TOOL_DRAW_SCRIPT_H
+#define CG_TOOL_DRAW_SCRIPT_H
+
+#include "cg/core.h"
+#include "cg/image.h"
+
+typedef struct draw_state {
+    /* where we are, for messages */
+    const char *file; /* script name as given ("-" shows as "<stdin>") */
+    int line;         /* line number of the command being run */
+
+    /* the canvas: NULL until `size W H` */
+    cg_image *canvas;
+    cg_rgba8 background; /* default white; `background` fills the canvas */
+
+    /* drawing attributes */
+    cg_rgba8 color;   /* default black */
+    double tolerance; /* flattening tolerance in pixels, default 0.25 */
+    int antialias;    /* curves drawn with anti-aliased lines (`antialias on`) */
+} draw_state;
+
+/* A command: run returns 0 on success, non-zero after printing an error
+ * (with draw_error).  argv[0] is the command name, argc counts it. */
+typedef struct draw_command {
+    const char *name;
+    const char *usage; /* "line X0 Y0 X1 Y1": shown when arguments are wrong */
+    int (*run)(draw_state *state, int argc, char **argv);
+} draw_command;
+
+typedef struct draw_command_table {
+    const char *group;
+    const draw_command *commands;
+    int count;
+} draw_command_table;
+
+/* Prints "FILE:LINE: message" on stderr and returns 1. */
+int draw_error(const draw_state *state, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Argument helpers: each returns 0, or prints an error naming the line and
+ * what was expected and returns 1.  `what` names the argument ("X0"). */
+/* argc must be exactly n + 1 (min/max: between min + 1 and max + 1). */
+int draw_arg_count(const draw_state *state, int argc, char **argv, int n, const char *usage);
+/* A whole int in [INT_MIN, INT_MAX]. */
+int draw_arg_int(const draw_state *state, const char *text, const char *what, int *out);
+/* A finite decimal number. */
+int draw_arg_double(const draw_state *state, const char *text, const char *what, double *out);
+/* A finite decimal number >= 0. */
+int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what,
+                         double *out);
+/* A colour: #rgb, #rrggbb, #rrggbbaa or a name. */
+int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out);
+/* Points given as X Y pairs from argv[first] to argv[argc - 1]: at least
+ * min_points, an even number of numbers.  *out is malloc'ed (caller frees). */
+int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,
+                    const char *usage, cg_vec2 **out, int *count);
+
+/* The canvas, or an error "expected 'size W H' before drawing" (NULL). */
+cg_image *draw_canvas(const draw_state *state);
+
+/* Reports a library failure of a drawing call: 0 for CG_OK, else an error
+ * naming the status. */
+int draw_check(const draw_state *state, cg_status status);
+
+#endif

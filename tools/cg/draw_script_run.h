@@ -1,0 +1,33 @@
+/* Loading and running whole `cg draw` scripts (used by cmd_draw.c and the
+ * gallery). */
+#ifndef CG_TOOL_DRAW_SCRIPT_RUN_H
+#define CG_TOOL_DRAW_SCRIPT_RUN_H
+
+#include "draw_script.h"
+
+typedef struct draw_line {
+    int number;
+    int argc;
+    char **argv; /* words of the line, pointing into the script's text */
+    const draw_command *command;
+} draw_line;
+
+typedef struct draw_script {
+    const char *file;
+    char *text;
+    draw_line *lines;
+    int count;
+} draw_script;
+
+/* Reads and tokenises a script ("-" for stdin); unknown commands are
+ * reported here.  Returns 0, or prints the error and returns 1. */
+int draw_script_load(const char *path, draw_script *script);
+void draw_script_free(draw_script *script);
+
+/* Runs every command on a fresh state (defaults: white background, black,
+ * tolerance 0.25, aliased curves).  Returns 0, or 1 after printing the
+ * error.  The caller releases the canvas with draw_state_release. */
+int draw_script_run(const draw_script *script, draw_state *state);
+void draw_state_release(draw_state *state);
+
+#endif

@@ -690,16 +690,15 @@ static float clamp_far(double t_max)
     return (float)t_max;
 }
 
-int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double t_min,
-                     double t_max, cg_bvh_hit *hit)
+/* Ordered traversal.  Nearest hit (any_hit 0): the best (t, index) with t in
+ * (t_min, t_max].  Shadow query (any_hit 1): stops at the first t in
+ * (t_min, t_max). */
+static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, int any_hit,
+                           cg_bvh_hit *hit)
 {
-    bvh_ray ray;
-    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
-        || !(t_max > t_min))
-        return 0;
-    float best_t = clamp_far(t_max), limit = cull_limit(best_t);
-    const float o3[4] = {ray.origin[0], ray.origin[1], ray.origin[2], 0};
-    const float i3[4] = {ray.inverse[0], ray.inverse[1], ray.inverse[2], 0};
+    float best_t = t_max, limit = cull_limit(best_t);
+    const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
+    const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
     v4 o4 = v4_load(o3), i4 = v4_load(i3);
     uint32_t best_id = UINT32_MAX;
     float best_u = 0, best_v = 0;
@@ -708,7 +707,7 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
     float stack_t[STACK_SIZE];
     int top = 0;
     float tn;
-    if (!hit_box(&ray, o4, i4, &bvh->nodes[0], limit, &tn))
+    if (!hit_box(ray, o4, i4, &bvh->nodes[0], limit, &tn))
         return 0;
     uint32_t index = 0;
     for (;;) {
@@ -717,7 +716,12 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
             const bvh_triangle *tri = bvh->triangles + node->offset;
             for (uint32_t k = 0; k < node->count; k++) {
                 float t, u, v;
-                if (hit_triangle(&ray, &tri[k], &t, &u, &v) && better(t, tri[k].id, best_t, best_id)) {
+                if (!hit_triangle(ray, &tri[k], &t, &u, &v))
+                    continue;
+                if (any_hit) {
+                    if (t < t_max)
+                        return 1;
+                } else if (better(t, tri[k].id, best_t, best_id)) {
                     best_t = t;
                     best_id = tri[k].id;
                     best_u = u;
@@ -729,8 +733,8 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
         } else {
             uint32_t left = index + 1, right = node->offset;
             float tl, tr;
-            int hl = hit_box(&ray, o4, i4, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(&ray, o4, i4, &bvh->nodes[right], limit, &tr);
+            int hl = hit_box(ray, o4, i4, &bvh->nodes[left], limit, &tl);
+            int hr = hit_box(ray, o4, i4, &bvh->nodes[right], limit, &tr);
             if (hl && hr) {
                 if (tr < tl) {
                     uint32_t s = left;
@@ -746,12 +750,8 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
                 index = left;
                 continue;
             }
-            if (hl) {
-                index = left;
-                continue;
-            }
-            if (hr) {
-                index = right;
+            if (hl || hr) {
+                index = hl ? left : right;
                 continue;
             }
         }
@@ -775,6 +775,16 @@ done:
     return found;
 }
 
+int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double t_min,
+                     double t_max, cg_bvh_hit *hit)
+{
+    bvh_ray ray;
+    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
+        || !(t_max > t_min))
+        return 0;
+    return traverse(bvh, &ray, clamp_far(t_max), 0, hit);
+}
+
 int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double t_min,
                     double t_max)
 {
@@ -782,49 +792,7 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
     if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
-    float far = clamp_far(t_max), limit = cull_limit(far);
-    const float o3[4] = {ray.origin[0], ray.origin[1], ray.origin[2], 0};
-    const float i3[4] = {ray.inverse[0], ray.inverse[1], ray.inverse[2], 0};
-    v4 o4 = v4_load(o3), i4 = v4_load(i3);
-    uint32_t stack[STACK_SIZE];
-    int top = 0;
-    float tn;
-    if (!hit_box(&ray, o4, i4, &bvh->nodes[0], limit, &tn))
-        return 0;
-    uint32_t index = 0;
-    for (;;) {
-        const bvh_node *node = &bvh->nodes[index];
-        if (node->count) {
-            const bvh_triangle *tri = bvh->triangles + node->offset;
-            for (uint32_t k = 0; k < node->count; k++) {
-                float t, u, v;
-                if (hit_triangle(&ray, &tri[k], &t, &u, &v) && t < far)
-                    return 1;
-            }
-        } else {
-            uint32_t left = index + 1, right = node->offset;
-            float tl, tr;
-            int hl = hit_box(&ray, o4, i4, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(&ray, o4, i4, &bvh->nodes[right], limit, &tr);
-            if (hl && hr) {
-                if (tr < tl) {
-                    uint32_t s = left;
-                    left = right;
-                    right = s;
-                }
-                stack[top++] = right;
-                index = left;
-                continue;
-            }
-            if (hl || hr) {
-                index = hl ? left : right;
-                continue;
-            }
-        }
-        if (top == 0)
-            return 0;
-        index = stack[--top];
-    }
+    return traverse(bvh, &ray, clamp_far(t_max), 1, NULL);
 }
 
 int cg_bvh_intersect_brute(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double t_min,

@@ -16,6 +16,11 @@ enum {
     PARALLEL_MIN = 4096 /* fewer triangles: build on one thread */
 };
 
+/* Cost of visiting a node relative to testing one triangle, for the SAH. */
+#ifndef TRAVERSAL_COST
+#define TRAVERSAL_COST 1.0f
+#endif
+
 /* ---- four-float vectors: SSE2 where available, plain C elsewhere -------- */
 
 #if defined(__SSE2__)
@@ -247,7 +252,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     /* Splitting costs a traversal step (1) plus the children's triangles
      * weighted by the chance of entering them; a leaf costs its count. */
     float parent_area = bbox_area(bounds);
-    float split_cost = parent_area > 0 ? 1 + best_cost / parent_area : FLT_MAX;
+    float split_cost = parent_area > 0 ? TRAVERSAL_COST + best_cost / parent_area : FLT_MAX;
     if (count <= MAX_LEAF && split_cost >= (float)count)
         return 0;
     bbox_empty(&out->left);

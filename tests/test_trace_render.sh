@@ -8,18 +8,7 @@ cg="$1"
 src="$2"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
-expect() { # expect STATUS DESCRIPTION COMMAND...
-  local want=$1 what=$2; shift 2
-  "$@" >"$work/out" 2>"$work/err"; local got=$?
-  if [ "$got" = "$want" ]; then pass; else fail "$what: exit $got, want $want: $(cat "$work/err")"; fi
-}
-one_line() { [ "$(wc -l < "$work/err")" = 1 ] && pass || fail "$1: expected one line on stderr, got: $(cat "$work/err")"; }
-png_size() {
-  od -An -tu1 -j16 -N8 "$1" | awk '{printf "%dx%d", $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'
-}
+. "$src/tests/cli_checks.sh"
 
 bunny="$src/data/meshes/bunny.obj"
 small="--size 64x48 --quiet"
@@ -72,5 +61,4 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n' > "$work/flat.off"
 expect 0 "degenerate triangle" "$cg" trace-render "$work/flat.off" -o "$work/flat.png" $small
 [ ! -e "$work/x.png" ] && pass || fail "a failed run wrote its output"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

@@ -197,6 +197,8 @@ static int radix_sort(keyval *a, size_t n)
         memset(count, 0, sizeof count);
         for (size_t i = 0; i < n; i++)
             count[(src[i].key >> shift) & ((1u << bits) - 1)]++;
+        if (count[(src[0].key >> shift) & ((1u << bits) - 1)] == n)
+            continue; /* every key has this digit */
         size_t sum = 0;
         for (size_t d = 0; d < (1u << bits); d++) {
             size_t c = count[d];
@@ -215,26 +217,52 @@ static int radix_sort(keyval *a, size_t n)
     return 1;
 }
 
-/* grid coordinate as an unsigned key preserving order */
-static inline uint64_t ukey(int64_t v) { return (uint64_t)(v + CG_CLIP_MAX_COORD); }
 
-/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n */
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n.
+ * Both keys are packed into one when their ranges fit in 64 bits. */
 static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                          uint32_t *idx, keyval *scratch)
 {
-    for (size_t i = 0; i < n; i++)
-        scratch[i] = (keyval){ukey(*(const int64_t *)((const char *)k2 + i * stride)), (uint32_t)i};
-    if (!radix_sort(scratch, n))
-        return 0;
-    for (size_t i = 0; i < n; i++) {
-        uint32_t v = scratch[i].val;
-        scratch[i] = (keyval){ukey(*(const int64_t *)((const char *)k1 + v * stride)), v};
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (i) * stride))
+    if (n == 0)
+        return 1;
+    int64_t lo1 = KEY(k1, 0), hi1 = lo1, lo2 = KEY(k2, 0), hi2 = lo2;
+    for (size_t i = 1; i < n; i++) {
+        int64_t a = KEY(k1, i), b = KEY(k2, i);
+        lo1 = a < lo1 ? a : lo1;
+        hi1 = a > hi1 ? a : hi1;
+        lo2 = b < lo2 ? b : lo2;
+        hi2 = b > hi2 ? b : hi2;
     }
-    if (!radix_sort(scratch, n))
-        return 0;
+    int bits2 = 0;
+    while (bits2 < 63 && ((uint64_t)(hi2 - lo2) >> bits2))
+        bits2++;
+    int bits1 = 0;
+    while (bits1 < 63 && ((uint64_t)(hi1 - lo1) >> bits1))
+        bits1++;
+    if (bits1 + bits2 <= 64) {
+        for (size_t i = 0; i < n; i++)
+            scratch[i] = (keyval){((uint64_t)(KEY(k1, i) - lo1) << bits2) |
+                                      (uint64_t)(KEY(k2, i) - lo2),
+                                  (uint32_t)i};
+        if (!radix_sort(scratch, n))
+            return 0;
+    } else {
+        for (size_t i = 0; i < n; i++)
+            scratch[i] = (keyval){(uint64_t)(KEY(k2, i) - lo2), (uint32_t)i};
+        if (!radix_sort(scratch, n))
+            return 0;
+        for (size_t i = 0; i < n; i++) {
+            uint32_t v = scratch[i].val;
+            scratch[i] = (keyval){(uint64_t)(KEY(k1, v) - lo1), v};
+        }
+        if (!radix_sort(scratch, n))
+            return 0;
+    }
     for (size_t i = 0; i < n; i++)
         idx[i] = scratch[i].val;
     return 1;
+#undef KEY
 }
 
 /* ---- the sweep ------------------------------------------------------------ */
@@ -414,8 +442,10 @@ static int run_sweep(sweep *s)
         int64_t yn = has_next ? s->ys[iy + 1] : y;
         uint32_t *below = s->act;
         size_t nb = s->nact;
-        for (size_t k = 0; k < nb; k++)
-            s->xc[below[k]] = x_at(&E[below[k]], y);
+        /* x at y of the edges of the last beam: computed there as its top */
+        double *swap = s->xc;
+        s->xc = s->xn;
+        s->xn = swap;
         /* above: passing edges in their order, then the new ones merged in */
         size_t na = 0;
         uint32_t *above = s->nxt;
@@ -1059,12 +1089,15 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         keyval *scratch = malloc(nscratch * sizeof *scratch);
         if (!scratch)
             break;
+        int64_t ymin = INT64_MAX;
         for (size_t i = 0; i < 2 * ne; i++)
-            scratch[i] = (keyval){ukey(s.ys[i]), 0};
+            ymin = s.ys[i] < ymin ? s.ys[i] : ymin;
+        for (size_t i = 0; i < 2 * ne; i++)
+            scratch[i] = (keyval){(uint64_t)(s.ys[i] - ymin), 0};
         int sorted = radix_sort(scratch, 2 * ne);
         size_t u = 0;
         for (size_t i = 0; sorted && i < 2 * ne; i++) {
-            int64_t y = (int64_t)scratch[i].key - CG_CLIP_MAX_COORD;
+            int64_t y = (int64_t)scratch[i].key + ymin;
             if (u == 0 || s.ys[u - 1] != y)
                 s.ys[u++] = y;
         }

@@ -1,6 +1,6 @@
 /* Boolean operations: cg_clip_boolean64 against Clipper 6.4 and GEOS on the
  * same integer polygons (random star-shaped polygons of 10 to 100,000
- * vertices, smooth ellipses, many small squares against a circle, a plate
+ * vertices, spiky ones, smooth ellipses, many small squares against a circle, a plate
  * with holes), with the result areas side by side. */
 #include "bench.h"
 #include "bench_clip_peers.h"
@@ -140,17 +140,34 @@ int main(int argc, char **argv)
 {
     size_t max_n = argc > 1 ? (size_t)atol(argv[1]) : 100000;
     for (size_t n = 10; n <= max_n; n *= 10) {
+        /* random star-shaped polygons: vertex k at angle 2 pi (k + jitter) / n,
+         * radius uniform in [0.9, 1] x 10^6 */
         shape a = {0}, b = {0};
-        star(&a, n, 0, 0, 5e5, 1e6);
-        star(&b, n, 3e5, 2e5, 5e5, 1e6);
+        star(&a, n, 0, 0, 9e5, 1e6);
+        star(&b, n, 3e5, 2e5, 9e5, 1e6);
         finish(&a);
         finish(&b);
-        char what[64];
-        snprintf(what, sizeof what, "random star polygons, %zu vertices each", n);
+        char what[80];
+        snprintf(what, sizeof what, "random polygons, %zu vertices each", n);
         int runs = n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1;
         for (int op = 0; op < 4; op++)
             if (n <= 1000 || op < 2)
                 compare(what, &a, &b, op, runs);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    {
+        /* spiky: radius uniform in [0.5, 1]: a scanline meets a third of the edges */
+        shape a = {0}, b = {0};
+        size_t n = max_n < 1000 ? max_n : 1000;
+        star(&a, n, 0, 0, 5e5, 1e6);
+        star(&b, n, 3e5, 2e5, 5e5, 1e6);
+        finish(&a);
+        finish(&b);
+        char what[80];
+        snprintf(what, sizeof what, "spiky random polygons, %zu vertices each", n);
+        for (int op = 0; op < 4; op++)
+            compare(what, &a, &b, op, 5);
         free_shape(&a);
         free_shape(&b);
     }

@@ -167,8 +167,8 @@ static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 
 typedef struct keyval { uint64_t key; uint32_t val; } keyval;
 
-/* Stable LSD radix sort of a[0..n) by key (11-bit digits, only as many
- * passes as the largest key needs). */
+/* Stable LSD radix sort of a[0..n) by key (6- or 11-bit digits, only as
+ * many passes as the largest key needs). */
 static int radix_sort(keyval *a, size_t n)
 {
     if (n < 2)
@@ -176,25 +176,14 @@ static int radix_sort(keyval *a, size_t n)
     uint64_t all = 0;
     for (size_t i = 0; i < n; i++)
         all |= a[i].key;
-    if (n < 64) {
-        for (size_t i = 1; i < n; i++) {
-            keyval v = a[i];
-            size_t j = i;
-            while (j > 0 && a[j - 1].key > v.key) {
-                a[j] = a[j - 1];
-                j--;
-            }
-            a[j] = v;
-        }
-        return 1;
-    }
     keyval *t = malloc(n * sizeof *t), *src = a, *dst = t;
     if (!t)
         return 0;
-    static const int bits = 11;
+    /* small inputs: small digit tables */
+    const int bits = n < 2048 ? 6 : 11;
     for (int shift = 0; shift < 64 && (all >> shift); shift += bits) {
         size_t count[1 << 11];
-        memset(count, 0, sizeof count);
+        memset(count, 0, ((size_t)1 << bits) * sizeof count[0]);
         for (size_t i = 0; i < n; i++)
             count[(src[i].key >> shift) & ((1u << bits) - 1)]++;
         if (count[(src[0].key >> shift) & ((1u << bits) - 1)] == n)
@@ -760,6 +749,20 @@ static int cmp_hole_y(const void *a, const void *b)
     return (p->ring > q->ring) - (p->ring < q->ring);
 }
 
+/* first index of a (sorted by x, or by y) whose x (y) is >= v */
+static size_t first_at_least(const hole_point *a, size_t n, int64_t v, int by_y)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if ((by_y ? a[mid].y : a[mid].x) < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 typedef struct ringbuf {
     cg_point64 *pts;
     size_t n, cap;
@@ -920,14 +923,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 size_t o = ra[oi].ring;
                 int64_t bx0 = 2 * bb[o][0], by0 = 2 * bb[o][1], bx1 = 2 * bb[o][2], by1 = 2 * bb[o][3];
                 /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
-                size_t lo = 0, hi = nholes;
-                while (lo < hi) {
-                    size_t mid = (lo + hi) / 2;
-                    if (hp[mid].x < bx0)
-                        lo = mid + 1;
-                    else
-                        hi = mid;
-                }
+                size_t lo = first_at_least(hp, nholes, bx0, 0);
                 size_t nc = 0;
                 for (size_t k = lo; k < nholes && hp[k].x <= bx1; k++)
                     if (hp[k].parent == 0 && hp[k].y >= by0 && hp[k].y <= by1) {
@@ -951,14 +947,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                         continue;
                     int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
                     /* candidates with ylo <= y < yhi */
-                    size_t l = 0, rr = nc;
-                    while (l < rr) {
-                        size_t mid = (l + rr) / 2;
-                        if (cand[mid].y < ylo)
-                            l = mid + 1;
-                        else
-                            rr = mid;
-                    }
+                    size_t l = first_at_least(cand, nc, ylo, 1);
                     i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
                     for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
                         i128 mx = cand[k].x, my = cand[k].y;

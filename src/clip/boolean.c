@@ -176,6 +176,16 @@ static int radix_sort(keyval *a, size_t n)
     uint64_t all = 0;
     for (size_t i = 0; i < n; i++)
         all |= a[i].key;
+    if (n <= 48) { /* few keys: straight insertion (stable) */
+        for (size_t i = 1; i < n; i++) {
+            keyval v = a[i];
+            size_t j = i;
+            for (; j > 0 && a[j - 1].key > v.key; j--)
+                a[j] = a[j - 1];
+            a[j] = v;
+        }
+        return 1;
+    }
     keyval *t = malloc(n * sizeof *t), *src = a, *dst = t;
     if (!t)
         return 0;

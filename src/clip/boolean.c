@@ -467,8 +467,14 @@ static int run_sweep(sweep *s)
             while (m > 0) {
                 uint32_t u = above[m - 1];
                 int c = cmp_x(&E[u], &E[v], y, s->xc[u], s->xc[v]);
-                if (c == 0 && has_next)
-                    c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                if (c == 0) {
+                    /* they meet at y: an edge passing through needs a vertex
+                     * there (every pair adjacent at the end was compared) */
+                    if ((E[u].yb < y && !meet(s, u, y)) || (E[v].yb < y && !meet(s, v, y)))
+                        return 0;
+                    if (has_next)
+                        c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                }
                 if (c <= 0)
                     break;
                 above[m] = u;
@@ -476,25 +482,8 @@ static int run_sweep(sweep *s)
             }
             above[m] = v;
         }
-        /* edges meeting at y where one passes through: a vertex there */
-        for (size_t k = 0; k + 1 < nb; k++) {
-            uint32_t a = below[k], b = below[k + 1];
-            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
-                continue;
-            if (E[a].yt > y && !meet(s, a, y))
-                return 0;
-            if (E[b].yt > y && !meet(s, b, y))
-                return 0;
-        }
-        for (size_t k = 0; k + 1 < na; k++) {
-            uint32_t a = above[k], b = above[k + 1];
-            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
-                continue;
-            if (E[a].yb < y && !meet(s, a, y))
-                return 0;
-            if (E[b].yb < y && !meet(s, b, y))
-                return 0;
-        }
+        /* (edges meeting at y were found by the sorts: at the top of the
+         * last beam and just above) */
         /* horizontal edges on this scanline */
         while (ih < nh && g->H[ih].y < y)
             ih++;
@@ -593,7 +582,10 @@ static int run_sweep(sweep *s)
             size_t m = k;
             while (m > 0) {
                 uint32_t u = above[m - 1];
-                if (cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]) <= 0)
+                int c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn)) || (E[v].yt > yn && !meet(s, v, yn))))
+                    return 0;
+                if (c <= 0)
                     break;
                 /* u and v cross strictly inside the beam: the crossing of
                  * the input edges they come from, rounded, when it lies in

@@ -74,6 +74,7 @@ typedef struct engine {
     size_t np, capp;
     cg_clip_op op;
     cg_clip_fill fill[2];
+    unsigned char table[4]; /* in the result, by (in subject, in clip) */
 } engine;
 
 static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
@@ -337,7 +338,7 @@ static int line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1,
     return 1;
 }
 
-static int fill_in(cg_clip_fill f, int64_t w)
+static inline int fill_in(cg_clip_fill f, int64_t w)
 {
     switch (f) {
     case CG_CLIP_EVEN_ODD:
@@ -351,19 +352,9 @@ static int fill_in(cg_clip_fill f, int64_t w)
     }
 }
 
-static int inside(const engine *g, int64_t wa, int64_t wb)
+static inline int inside(const engine *g, int64_t wa, int64_t wb)
 {
-    int a = fill_in(g->fill[0], wa), b = fill_in(g->fill[1], wb);
-    switch (g->op) {
-    case CG_CLIP_INTERSECTION:
-        return a && b;
-    case CG_CLIP_UNION:
-        return a || b;
-    case CG_CLIP_DIFFERENCE:
-        return a && !b;
-    default:
-        return a != b;
-    }
+    return g->table[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
 }
 
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
@@ -1188,6 +1179,12 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
     g.op = op;
     g.fill[0] = subject_fill;
     g.fill[1] = clip_fill;
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++)
+            g.table[a * 2 + b] = (unsigned char)(op == CG_CLIP_INTERSECTION ? a && b
+                                                 : op == CG_CLIP_UNION      ? a || b
+                                                 : op == CG_CLIP_DIFFERENCE ? a && !b
+                                                                            : a != b);
     cg_status st = load(&g, subject, 0);
     if (st == CG_OK)
         st = load(&g, clip, 1);

@@ -153,7 +153,13 @@ static void row(const char *name, double cg_time, const char *peer, double peer_
     bench_row(name, cg_time, peer, peer_time, note);
 }
 
-int main(void)
+/* `bench_draw ONLY` runs one job once, for instruction counts under
+ * valgrind --tool=callgrind: ONLY is cg-lines, ocv-lines, cairo-lines,
+ * cg-aalines, ocv-aalines, cairo-aalines, cg-circles, ocv-circles,
+ * cairo-circles. */
+static int only(const char *what, job *j);
+
+int main(int argc, char **argv)
 {
     for (int i = 0; i < LINES; i++) {
         for (int k = 0; k < 4; k++) {
@@ -181,6 +187,8 @@ int main(void)
     cairo_set_source_rgb(j.cr, 0.98, 0.7, 0.16);
     cairo_set_line_width(j.cr, 1.0);
 #endif
+    if (argc == 2)
+        return only(argv[1], &j);
     struct { const char *name; const int *ints; const double *doubles; int n, aa; double pixels; } line_cases[] = {
         {"draw: 20k Bresenham lines inside", lines, NULL, LINES, 0, line_pixels(lines, LINES)},
         {"draw: 20k Bresenham lines, clipped", far_lines, NULL, LINES, 0, 0},
@@ -253,5 +261,55 @@ int main(void)
     cairo_surface_destroy(j.surface);
 #endif
     cg_image_free(image);
+    return 0;
+}
+
+static int only(const char *what, job *j)
+{
+    j->n = LINES;
+    j->ints = lines;
+    j->doubles = aa_lines;
+    if (strcmp(what, "cg-lines") == 0)
+        cg_lines(j);
+    else if (strcmp(what, "cg-aalines") == 0)
+        cg_lines_aa(j);
+#ifdef HAVE_OPENCV
+    else if (strcmp(what, "ocv-lines") == 0)
+        ocv_lines_job(j);
+    else if (strcmp(what, "ocv-aalines") == 0) {
+        j->ints = fixed_lines;
+        ocv_lines_aa_job(j);
+    }
+#endif
+#ifdef HAVE_CAIRO
+    else if (strcmp(what, "cairo-lines") == 0) {
+        cairo_set_antialias(j->cr, CAIRO_ANTIALIAS_NONE);
+        cairo_lines_job(j);
+    } else if (strcmp(what, "cairo-aalines") == 0) {
+        j->ints = NULL;
+        cairo_lines_job(j);
+    }
+#endif
+    else {
+        j->ints = circles;
+        j->n = CIRCLES;
+        j->mode = 0;
+        if (strcmp(what, "cg-circles") == 0)
+            cg_circles(j);
+#ifdef HAVE_OPENCV
+        else if (strcmp(what, "ocv-circles") == 0)
+            ocv_circles_job(j);
+#endif
+#ifdef HAVE_CAIRO
+        else if (strcmp(what, "cairo-circles") == 0) {
+            cairo_set_antialias(j->cr, CAIRO_ANTIALIAS_NONE);
+            cairo_circles_job(j);
+        }
+#endif
+        else {
+            fprintf(stderr, "bench_draw: unknown job '%s'\n", what);
+            return 2;
+        }
+    }
     return 0;
 }

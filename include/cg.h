@@ -12,5 +12,8 @@
 #include "cg/fill.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
+#include "cg/hemesh.h"
+#include "cg/render.h"
+#include "cg/scene.h"
 
 #endif

@@ -335,9 +335,12 @@ int draw_script_run(const draw_script *script, draw_state *state)
     state->background = (cg_rgba8){255, 255, 255, 255};
     state->color = (cg_rgba8){0, 0, 0, 255};
     state->tolerance = 0.25;
+    state->fill_rule = 1; /* CG_FILL_NONZERO, as in SVG */
+    state->line_width = 1;
     for (int i = 0; i < script->count; i++) {
         const draw_line *line = &script->lines[i];
         state->line = line->number;
+        state->command = i;
         if (line->command->run(state, line->argc, line->argv))
             return 1;
     }
@@ -350,6 +353,7 @@ int draw_script_run(const draw_script *script, draw_state *state)
 
 void draw_state_release(draw_state *state)
 {
+    draw_fill_release(state);
     cg_image_free(state->canvas);
     state->canvas = NULL;
 }

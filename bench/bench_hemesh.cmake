@@ -1,0 +1,26 @@
+# bench_hemesh: the half-edge structure against OpenMesh (libopenmesh-dev).
+# Without OpenMesh the benchmark still runs cg alone and says so.
+pkg_check_modules(OPENMESH QUIET openmesh)
+if(NOT OPENMESH_FOUND)
+  find_path(OPENMESH_INCLUDE_DIRS OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh)
+  find_library(OPENMESH_CORE OpenMeshCore)
+  if(OPENMESH_INCLUDE_DIRS AND OPENMESH_CORE)
+    set(OPENMESH_FOUND 1)
+    set(OPENMESH_LINK_LIBRARIES ${OPENMESH_CORE})
+  endif()
+endif()
+if(OPENMESH_FOUND)
+  add_executable(bench_hemesh ${CMAKE_CURRENT_SOURCE_DIR}/bench_hemesh.c
+                              ${CMAKE_CURRENT_SOURCE_DIR}/hemesh_openmesh.cpp)
+  target_include_directories(bench_hemesh PRIVATE ${OPENMESH_INCLUDE_DIRS})
+  target_link_libraries(bench_hemesh PRIVATE cg_static ${OPENMESH_LINK_LIBRARIES})
+  target_compile_definitions(bench_hemesh PRIVATE _USE_MATH_DEFINES)
+else()
+  message(STATUS "bench_hemesh: OpenMesh not found, benchmarking cg alone")
+  add_executable(bench_hemesh ${CMAKE_CURRENT_SOURCE_DIR}/bench_hemesh.c
+                              ${CMAKE_CURRENT_SOURCE_DIR}/hemesh_nopeer.c)
+  target_link_libraries(bench_hemesh PRIVATE cg_static)
+endif()
+target_include_directories(bench_hemesh PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+target_compile_definitions(bench_hemesh PRIVATE CG_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_options(bench_hemesh PRIVATE $<$<COMPILE_LANGUAGE:C>:${CG_WARNINGS}>)

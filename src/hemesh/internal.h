@@ -1,0 +1,30 @@
+/* Private pieces shared by the half-edge files. */
+#ifndef CG_HEMESH_INTERNAL_H
+#define CG_HEMESH_INTERNAL_H
+
+#include "cg/hemesh.h"
+
+/* Attribute arrays to allocate, as the CG_MESH_* flags of cg_mesh_create. */
+cg_status hm_create(cg_hemesh **out, size_t vertices, size_t halfedges, size_t faces,
+                    unsigned attribute_flags);
+/* The CG_MESH_* flags of the attributes m has. */
+unsigned hm_attribute_flags(const cg_hemesh *m);
+
+/* Room for `extra` more elements; CG_ENOMEM or CG_ERANGE (indices would
+ * reach CG_HEMESH_DELETED) on failure, leaving m unchanged. */
+cg_status hm_reserve(cg_hemesh *m, size_t extra_vertices, size_t extra_edges, size_t extra_faces);
+/* Appends elements (room must have been reserved); returns the index (the
+ * first half-edge for an edge).  New elements are zeroed / NONE. */
+uint32_t hm_add_vertex(cg_hemesh *m, cg_vec3 position);
+uint32_t hm_add_edge(cg_hemesh *m, uint32_t origin, uint32_t destination);
+uint32_t hm_add_face(cg_hemesh *m, uint32_t halfedge, uint32_t color_from);
+
+/* Vertex attributes of dst become the weighted sum of those of src (n terms). */
+void hm_blend_attributes(cg_hemesh *m, uint32_t dst, const uint32_t *src, const double *weight,
+                         size_t n);
+
+/* Points vertex_halfedge[v] at a boundary outgoing half-edge when there is
+ * one, rotating from its current (live) half-edge. */
+void hm_fix_vertex_halfedge(cg_hemesh *m, uint32_t v);
+
+#endif

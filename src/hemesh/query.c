@@ -1,0 +1,526 @@
+/* Traversals, counts, geometry and validation of the half-edge structure. */
+#include "internal.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+uint32_t cg_hemesh_find_halfedge(const cg_hemesh *m, uint32_t u, uint32_t v)
+{
+    if (!m || u >= m->vertex_count || v >= m->vertex_count)
+        return CG_HEMESH_NONE;
+    uint32_t h0 = m->vertex_halfedge[u];
+    if (h0 >= CG_HEMESH_DELETED)
+        return CG_HEMESH_NONE;
+    uint32_t h = h0;
+    do {
+        if (m->halfedges[h ^ 1u].origin == v)
+            return h;
+        h = cg_hemesh_cw(m, h);
+    } while (h != h0);
+    return CG_HEMESH_NONE;
+}
+
+static int face_ok(const cg_hemesh *m, uint32_t f)
+{
+    return m && f < m->face_count && m->face_halfedge[f] < CG_HEMESH_DELETED;
+}
+
+static int vertex_ok(const cg_hemesh *m, uint32_t v)
+{
+    return m && v < m->vertex_count && m->vertex_halfedge[v] < CG_HEMESH_DELETED;
+}
+
+size_t cg_hemesh_face_halfedges(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    if (!face_ok(m, f))
+        return 0;
+    size_t n = 0;
+    uint32_t h0 = m->face_halfedge[f], h = h0;
+    do {
+        if (n < capacity)
+            out[n] = h;
+        n++;
+        h = m->halfedges[h].next;
+    } while (h != h0);
+    return n;
+}
+
+size_t cg_hemesh_face_vertices(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    if (!face_ok(m, f))
+        return 0;
+    size_t n = 0;
+    uint32_t h0 = m->face_halfedge[f], h = h0;
+    do {
+        if (n < capacity)
+            out[n] = m->halfedges[h].origin;
+        n++;
+        h = m->halfedges[h].next;
+    } while (h != h0);
+    return n;
+}
+
+size_t cg_hemesh_face_neighbors(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    if (!face_ok(m, f))
+        return 0;
+    size_t n = 0;
+    uint32_t h0 = m->face_halfedge[f], h = h0;
+    do {
+        uint32_t g = m->halfedges[h ^ 1u].face;
+        if (g != CG_HEMESH_NONE) {
+            if (n < capacity)
+                out[n] = g;
+            n++;
+        }
+        h = m->halfedges[h].next;
+    } while (h != h0);
+    return n;
+}
+
+size_t cg_hemesh_face_size(const cg_hemesh *m, uint32_t f)
+{
+    return cg_hemesh_face_halfedges(m, f, NULL, 0);
+}
+
+/* what: 0 outgoing half-edges, 1 neighbours, 2 faces */
+static size_t around(const cg_hemesh *m, uint32_t v, int direction, int what, uint32_t *out,
+                     size_t capacity)
+{
+    if (!vertex_ok(m, v))
+        return 0;
+    size_t n = 0;
+    uint32_t h0 = m->vertex_halfedge[v], h = h0;
+    do {
+        uint32_t x = what == 0 ? h : what == 1 ? m->halfedges[h ^ 1u].origin : m->halfedges[h].face;
+        if (x != CG_HEMESH_NONE || what != 2) {
+            if (n < capacity)
+                out[n] = x;
+            n++;
+        }
+        h = direction > 0 ? cg_hemesh_ccw(m, h) : cg_hemesh_cw(m, h);
+    } while (h != h0);
+    return n;
+}
+
+size_t cg_hemesh_vertex_outgoing(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
+                                 size_t capacity)
+{
+    return around(m, v, direction, 0, out, capacity);
+}
+
+size_t cg_hemesh_vertex_neighbors(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
+                                  size_t capacity)
+{
+    return around(m, v, direction, 1, out, capacity);
+}
+
+size_t cg_hemesh_vertex_faces(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
+                              size_t capacity)
+{
+    return around(m, v, direction, 2, out, capacity);
+}
+
+size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v)
+{
+    return around(m, v, 1, 0, NULL, 0);
+}
+
+cg_status cg_hemesh_neighbor_average(const cg_hemesh *m, cg_vec3 *out)
+{
+    if (!m || !out)
+        return CG_EINVAL;
+    const cg_hemesh_halfedge *he = m->halfedges;
+    const cg_vec3 *p = m->positions;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        uint32_t h0 = m->vertex_halfedge[v];
+        if (h0 >= CG_HEMESH_DELETED) {
+            out[v] = p[v];
+            continue;
+        }
+        /* clockwise: next(twin(h)) reads the pair h, h ^ 1 only */
+        double x = 0, y = 0, z = 0;
+        size_t n = 0;
+        uint32_t h = h0;
+        do {
+            const cg_vec3 *q = &p[he[h ^ 1u].origin];
+            x += q->x;
+            y += q->y;
+            z += q->z;
+            n++;
+            h = he[h ^ 1u].next;
+        } while (h != h0);
+        double s = 1.0 / (double)n;
+        out[v] = cg_vec3_make(x * s, y * s, z * s);
+    }
+    return CG_OK;
+}
+
+/* ---- geometry ------------------------------------------------------------ */
+
+cg_vec3 cg_hemesh_face_newell(const cg_hemesh *m, uint32_t f)
+{
+    cg_vec3 n = {0, 0, 0};
+    if (!face_ok(m, f))
+        return n;
+    uint32_t h0 = m->face_halfedge[f], h = h0;
+    do {
+        cg_vec3 a = m->positions[m->halfedges[h].origin];
+        cg_vec3 b = m->positions[m->halfedges[h ^ 1u].origin];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+        h = m->halfedges[h].next;
+    } while (h != h0);
+    return n;
+}
+
+cg_vec3 cg_hemesh_face_normal(const cg_hemesh *m, uint32_t f)
+{
+    return cg_vec3_normalize(cg_hemesh_face_newell(m, f));
+}
+
+double cg_hemesh_face_area(const cg_hemesh *m, uint32_t f)
+{
+    return 0.5 * cg_vec3_length(cg_hemesh_face_newell(m, f));
+}
+
+cg_vec3 cg_hemesh_vertex_normal(const cg_hemesh *m, uint32_t v)
+{
+    cg_vec3 n = {0, 0, 0};
+    if (!vertex_ok(m, v))
+        return n;
+    uint32_t h0 = m->vertex_halfedge[v], h = h0;
+    do {
+        uint32_t f = m->halfedges[h].face;
+        if (f != CG_HEMESH_NONE)
+            n = cg_vec3_add(n, cg_hemesh_face_newell(m, f));
+        h = cg_hemesh_ccw(m, h);
+    } while (h != h0);
+    return cg_vec3_normalize(n);
+}
+
+cg_status cg_hemesh_compute_normals(cg_hemesh *m)
+{
+    if (!m)
+        return CG_EINVAL;
+    if (!m->normals) {
+        m->normals = calloc(m->vertex_capacity ? m->vertex_capacity : 1, sizeof *m->normals);
+        if (!m->normals)
+            return CG_ENOMEM;
+    }
+    /* each face's Newell vector added to its corners: O(corners) */
+    for (size_t v = 0; v < m->vertex_count; v++)
+        m->normals[v] = cg_vec3_make(0, 0, 0);
+    for (size_t f = 0; f < m->face_count; f++) {
+        if (m->face_halfedge[f] >= CG_HEMESH_DELETED)
+            continue;
+        cg_vec3 n = cg_hemesh_face_newell(m, (uint32_t)f);
+        uint32_t h0 = m->face_halfedge[f], h = h0;
+        do {
+            uint32_t v = m->halfedges[h].origin;
+            m->normals[v] = cg_vec3_add(m->normals[v], n);
+            h = m->halfedges[h].next;
+        } while (h != h0);
+    }
+    for (size_t v = 0; v < m->vertex_count; v++)
+        m->normals[v] = cg_vec3_normalize(m->normals[v]);
+    return CG_OK;
+}
+
+/* ---- counts -------------------------------------------------------------- */
+
+static uint32_t find_root(uint32_t *parent, uint32_t x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long **component_genus,
+                                  size_t *component_genus_count)
+{
+    if (component_genus)
+        *component_genus = NULL;
+    if (component_genus_count)
+        *component_genus_count = 0;
+    if (!m || !out)
+        return CG_EINVAL;
+    memset(out, 0, sizeof *out);
+    size_t V = m->vertex_count, H = m->halfedge_count;
+    uint32_t *parent = malloc((V ? V : 1) * sizeof *parent);
+    uint8_t *seen = calloc(H ? H : 1, 1);
+    if (!parent || !seen) {
+        free(parent);
+        free(seen);
+        return CG_ENOMEM;
+    }
+    out->vertices = m->live_vertices;
+    out->edges = m->live_edges;
+    out->faces = m->live_faces;
+    out->all_triangles = out->all_quads = 1;
+    for (size_t v = 0; v < V; v++) {
+        parent[v] = (uint32_t)v;
+        uint32_t h = m->vertex_halfedge[v];
+        if (h == CG_HEMESH_NONE)
+            out->isolated_vertices++;
+    }
+    /* components by union-find over the edges */
+    for (size_t h = 0; h < H; h += 2) {
+        if (m->halfedges[h].origin == CG_HEMESH_DELETED)
+            continue;
+        uint32_t a = find_root(parent, m->halfedges[h].origin);
+        uint32_t b = find_root(parent, m->halfedges[h + 1].origin);
+        if (a != b) {
+            if (a < b)
+                parent[b] = a;
+            else
+                parent[a] = b;
+        }
+    }
+    /* boundary loops and complex vertices */
+    for (size_t h = 0; h < H; h++) {
+        if (seen[h] || m->halfedges[h].origin == CG_HEMESH_DELETED
+            || m->halfedges[h].face != CG_HEMESH_NONE)
+            continue;
+        out->boundary_loops++;
+        uint32_t x = (uint32_t)h;
+        do {
+            seen[x] = 1;
+            x = m->halfedges[x].next;
+        } while (x != h && !seen[x]);
+    }
+    for (size_t v = 0; v < V; v++) {
+        uint32_t h0 = m->vertex_halfedge[v];
+        if (h0 >= CG_HEMESH_DELETED || m->halfedges[h0].face != CG_HEMESH_NONE)
+            continue;
+        size_t gaps = 0;
+        uint32_t h = h0;
+        do {
+            gaps += m->halfedges[h].face == CG_HEMESH_NONE;
+            h = cg_hemesh_ccw(m, h);
+        } while (h != h0);
+        out->complex_vertices += gaps > 1;
+    }
+    for (size_t f = 0; f < m->face_count; f++) {
+        if (m->face_halfedge[f] >= CG_HEMESH_DELETED)
+            continue;
+        size_t k = cg_hemesh_face_size(m, (uint32_t)f);
+        out->all_triangles &= k == 3;
+        out->all_quads &= k == 4;
+    }
+    out->euler_characteristic = (long)out->vertices - (long)out->edges + (long)out->faces;
+    /* per component: chi and boundary loops, indexed by root */
+    long *chi = calloc(V ? V : 1, sizeof *chi);
+    long *loops = calloc(V ? V : 1, sizeof *loops);
+    uint8_t *has_face = calloc(V ? V : 1, 1);
+    if (!chi || !loops || !has_face) {
+        free(parent);
+        free(seen);
+        free(chi);
+        free(loops);
+        free(has_face);
+        return CG_ENOMEM;
+    }
+    for (size_t v = 0; v < V; v++) {
+        if (m->vertex_halfedge[v] == CG_HEMESH_DELETED)
+            continue;
+        uint32_t r = find_root(parent, (uint32_t)v);
+        if (r == v)
+            out->components++;
+        chi[r]++;
+    }
+    for (size_t h = 0; h < H; h += 2)
+        if (m->halfedges[h].origin != CG_HEMESH_DELETED)
+            chi[find_root(parent, m->halfedges[h].origin)]--;
+    for (size_t f = 0; f < m->face_count; f++) {
+        if (m->face_halfedge[f] >= CG_HEMESH_DELETED)
+            continue;
+        uint32_t r = find_root(parent, m->halfedges[m->face_halfedge[f]].origin);
+        chi[r]++;
+        has_face[r] = 1;
+    }
+    memset(seen, 0, H ? H : 1);
+    for (size_t h = 0; h < H; h++) {
+        if (seen[h] || m->halfedges[h].origin == CG_HEMESH_DELETED
+            || m->halfedges[h].face != CG_HEMESH_NONE)
+            continue;
+        loops[find_root(parent, m->halfedges[h].origin)]++;
+        uint32_t x = (uint32_t)h;
+        do {
+            seen[x] = 1;
+            x = m->halfedges[x].next;
+        } while (x != h && !seen[x]);
+    }
+    /* genus per component with faces, in order of the lowest vertex */
+    size_t count = 0;
+    long common = -2;
+    long *list = NULL;
+    int failed = 0;
+    for (size_t v = 0; v < V; v++) {
+        if (m->vertex_halfedge[v] == CG_HEMESH_DELETED || parent[v] != v || !has_face[v])
+            continue;
+        long g = (2 - chi[v] - loops[v]) / 2;
+        common = common == -2 ? g : common == g ? g : -1;
+        if (component_genus) {
+            if ((count & (count - 1)) == 0) {
+                long *p = realloc(list, (count ? 2 * count : 1) * sizeof *p);
+                if (!p) {
+                    failed = 1;
+                    break;
+                }
+                list = p;
+            }
+            list[count] = g;
+        }
+        count++;
+    }
+    out->genus = common < 0 ? -1 : common;
+    free(parent);
+    free(seen);
+    free(chi);
+    free(loops);
+    free(has_face);
+    if (failed) {
+        free(list);
+        return CG_ENOMEM;
+    }
+    if (component_genus)
+        *component_genus = list;
+    if (component_genus_count)
+        *component_genus_count = count;
+    return CG_OK;
+}
+
+/* ---- validation ------------------------------------------------------------ */
+
+#define FAIL(...)                                                       \
+    do {                                                                \
+        status = cg_error_set(err, CG_EFORMAT, "hemesh: " __VA_ARGS__); \
+        goto done;                                                      \
+    } while (0)
+
+cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
+{
+    if (!m)
+        return cg_error_set(err, CG_EINVAL, "hemesh: none given");
+    size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
+    if (H % 2 || V > m->vertex_capacity || H > m->halfedge_capacity || F > m->face_capacity)
+        return cg_error_set(err, CG_EFORMAT, "hemesh: array sizes are inconsistent");
+    cg_status status = CG_OK;
+    uint32_t *out_count = calloc(V ? V : 1, sizeof *out_count);
+    uint32_t *face_sides = calloc(F ? F : 1, sizeof *face_sides);
+    uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
+    if (!out_count || !face_sides || !stamp) {
+        status = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");
+        goto done;
+    }
+    memset(stamp, 0xff, (V ? V : 1) * sizeof *stamp);
+    size_t live_v = 0, live_e = 0, live_f = 0;
+    for (size_t e = 0; e < H / 2; e++) {
+        const cg_hemesh_halfedge *a = &m->halfedges[2 * e], *b = &m->halfedges[2 * e + 1];
+        if ((a->origin == CG_HEMESH_DELETED) != (b->origin == CG_HEMESH_DELETED))
+            FAIL("edge %zu is half deleted", e);
+        if (a->origin == CG_HEMESH_DELETED)
+            continue;
+        live_e++;
+        if (a->face == CG_HEMESH_NONE && b->face == CG_HEMESH_NONE)
+            FAIL("edge %zu has no face on either side", e);
+    }
+    for (size_t i = 0; i < H; i++) {
+        const cg_hemesh_halfedge *x = &m->halfedges[i];
+        if (x->origin == CG_HEMESH_DELETED)
+            continue;
+        uint32_t h = (uint32_t)i;
+        if (x->origin >= V || m->vertex_halfedge[x->origin] >= CG_HEMESH_DELETED)
+            FAIL("half-edge %u starts at vertex %u, which is out of range, deleted or isolated",
+                 h, x->origin);
+        if (x->next >= H || x->prev >= H || m->halfedges[x->next].origin == CG_HEMESH_DELETED
+            || m->halfedges[x->prev].origin == CG_HEMESH_DELETED)
+            FAIL("half-edge %u has next %u / prev %u out of range or deleted", h, x->next, x->prev);
+        if (m->halfedges[x->next].prev != h || m->halfedges[x->prev].next != h)
+            FAIL("half-edge %u: prev(next) or next(prev) is not itself", h);
+        if (x->origin == m->halfedges[h ^ 1u].origin)
+            FAIL("half-edge %u and its twin start at the same vertex %u", h, x->origin);
+        if (m->halfedges[x->next].origin != m->halfedges[h ^ 1u].origin)
+            FAIL("half-edge %u ends at %u but its next starts at %u", h,
+                 m->halfedges[h ^ 1u].origin, m->halfedges[x->next].origin);
+        if (m->halfedges[x->next].face != x->face)
+            FAIL("half-edge %u and its next lie on different faces", h);
+        if (x->face != CG_HEMESH_NONE) {
+            if (x->face >= F || m->face_halfedge[x->face] >= CG_HEMESH_DELETED)
+                FAIL("half-edge %u lies on face %u, out of range or deleted", h, x->face);
+            face_sides[x->face]++;
+        }
+        out_count[x->origin]++;
+    }
+    for (size_t f = 0; f < F; f++) {
+        uint32_t h0 = m->face_halfedge[f];
+        if (h0 == CG_HEMESH_DELETED)
+            continue;
+        live_f++;
+        if (h0 >= H || m->halfedges[h0].origin == CG_HEMESH_DELETED || m->halfedges[h0].face != f)
+            FAIL("face %zu points at half-edge %u, which is not on it", f, h0);
+        size_t n = 0;
+        uint32_t h = h0;
+        do {
+            uint32_t v = m->halfedges[h].origin;
+            if (n > 0 && stamp[v] == (uint32_t)f)
+                FAIL("face %zu visits vertex %u twice", f, v);
+            stamp[v] = (uint32_t)f;
+            n++;
+            h = m->halfedges[h].next;
+        } while (h != h0 && n <= face_sides[f]);
+        if (h != h0 || n != face_sides[f])
+            FAIL("the loop of face %zu does not close over its %u half-edges", f, face_sides[f]);
+        if (n < 3)
+            FAIL("face %zu has %zu sides", f, n);
+        /* reset the stamps of this face (a vertex may come back in a later face) */
+        h = h0;
+        do {
+            stamp[m->halfedges[h].origin] = CG_HEMESH_NONE;
+            h = m->halfedges[h].next;
+        } while (h != h0);
+    }
+    for (size_t v = 0; v < V; v++) {
+        uint32_t h0 = m->vertex_halfedge[v];
+        if (h0 == CG_HEMESH_DELETED) {
+            if (out_count[v])
+                FAIL("deleted vertex %zu still has half-edges", v);
+            continue;
+        }
+        live_v++;
+        if (h0 == CG_HEMESH_NONE) {
+            if (out_count[v])
+                FAIL("vertex %zu has no half-edge but %u half-edges start there", v, out_count[v]);
+            continue;
+        }
+        if (h0 >= H || m->halfedges[h0].origin != v)
+            FAIL("vertex %zu points at half-edge %u, which does not start there", v, h0);
+        size_t n = 0, boundary = 0;
+        uint32_t h = h0;
+        do {
+            if (m->halfedges[h].origin != v)
+                FAIL("rotating about vertex %zu reaches half-edge %u from vertex %u", v, h,
+                     m->halfedges[h].origin);
+            boundary += m->halfedges[h].face == CG_HEMESH_NONE;
+            n++;
+            h = cg_hemesh_ccw(m, h);
+        } while (h != h0 && n <= out_count[v]);
+        if (h != h0 || n != out_count[v])
+            FAIL("rotating about vertex %zu visits %zu of its %u half-edges", v, n, out_count[v]);
+        if (boundary && m->halfedges[h0].face != CG_HEMESH_NONE)
+            FAIL("boundary vertex %zu points at an interior half-edge", v);
+    }
+    if (live_v != m->live_vertices || live_e != m->live_edges || live_f != m->live_faces)
+        FAIL("live counts %zu/%zu/%zu differ from the stored %zu/%zu/%zu", live_v, live_e, live_f,
+             m->live_vertices, m->live_edges, m->live_faces);
+done:
+    free(out_count);
+    free(face_sides);
+    free(stamp);
+    return status;
+}

@@ -141,17 +141,25 @@ static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
     return (uint8_t)c;
 }
 
-/* The same for v known to be in [0, 1] (a blend of such values; tiny
- * rounding outside is harmless): one table look-up and one comparison,
- * as a table step (1/4096) is smaller than the smallest code step. */
+/* The same for v in [0, 1] up to rounding (a blend of such values): one
+ * table look-up and one comparison, as a table step (1/4096) is smaller
+ * than the smallest code step.  The index is clamped, so values outside
+ * still give 0 or 255. */
 static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
 {
-    int c = r->encode[(int)(v * 4096.0f)];
+    int i = (int)(v * 4096.0f);
+    i = i < 0 ? 0 : (i > 4096 ? 4096 : i);
+    int c = r->encode[i];
     return (uint8_t)(c + (v >= r->threshold[c]));
 }
 
-/* Grows *array (of element size) to hold at least need elements. */
-int fill_reserve(void **array, size_t *capacity, size_t need, size_t size);
+/* Grows *array (of element size) to hold at least need elements; 0 when
+ * memory runs out (the array is then unchanged). */
+int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size);
+static inline int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
+{
+    return need <= *capacity || fill_reserve_grow(array, capacity, need, size);
+}
 
 /* Checks every point of a polygon (finite, within CG_FILL_MAX_COORD) and the
  * contour sizes; *total receives the number of points. */

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
+int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size)
 {
     if (need <= *capacity)
         return 1;
@@ -190,10 +190,10 @@ static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, f
     float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;
     if (a <= 0)
         return;
-    float inv = 1 / a;
-    d->r = fill_encode(t, (r * as + t->decode[d->r] * ad) * inv);
-    d->g = fill_encode(t, (g * as + t->decode[d->g] * ad) * inv);
-    d->b = fill_encode(t, (b * as + t->decode[d->b] * ad) * inv);
+    float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
+    d->r = fill_encode_unit(t, (r * as + t->decode[d->r] * ad) * inv);
+    d->g = fill_encode_unit(t, (g * as + t->decode[d->g] * ad) * inv);
+    d->b = fill_encode_unit(t, (b * as + t->decode[d->b] * ad) * inv);
     d->a = (uint8_t)(a * 255.0f + 0.5f);
 }
 

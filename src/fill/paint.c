@@ -187,6 +187,15 @@ static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, f
         d->b = fill_encode_unit(t, db + (b - db) * as);
         return;
     }
+    if (d->a == 0) { /* over nothing: the source colour, with its alpha */
+        if (!(as > 0))
+            return;
+        d->r = fill_encode_unit(t, r);
+        d->g = fill_encode_unit(t, g);
+        d->b = fill_encode_unit(t, b);
+        d->a = (uint8_t)(as * 255.0f + 0.5f);
+        return;
+    }
     float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;
     if (a <= 0)
         return;
@@ -243,7 +252,15 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
                 memcpy(&row[i], &p->encoded, 4);
                 continue;
             }
-            blend8(t, &row[i], p->r, p->g, p->b, p->a * (c * (1.0f / 255.0f)));
+            float as = p->a * (c * (1.0f / 255.0f));
+            if (!(as > 0))
+                continue;
+            if (row[i].a == 0) { /* over nothing: the colour itself, with its alpha */
+                memcpy(&row[i], &p->encoded, 4);
+                row[i].a = (uint8_t)(as * 255.0f + 0.5f);
+                continue;
+            }
+            blend8(t, &row[i], p->r, p->g, p->b, as);
         }
         return;
     }

@@ -239,9 +239,10 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
     if (image->format == CG_PIXEL_RGBA8) {
         cg_rgba8 *row = cg_image_row_rgba8(image, y) + x0;
         if (!cover && p->opaque) {
-            uint32_t *w = (uint32_t *)row;
+            /* a local copy: the stores cannot alias it, so the loop vectorizes */
+            uint32_t *w = (uint32_t *)row, value = p->encoded;
             for (int i = 0; i < n; i++)
-                w[i] = p->encoded;
+                w[i] = value;
             return;
         }
         for (int i = 0; i < n; i++) {

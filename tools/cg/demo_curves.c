@@ -71,7 +71,7 @@ static int casteljau(demo_context *context)
                           "interpolates the one before; the last point is Q(0.4), and the "
                           "intermediate points are the control polygons of the two halves "
                           "(subdivision: red and dark)",
-                          NULL);
+                          "cg demo --only 'Parametric curves'");
     cg_image_free(image);
     return status;
 }
@@ -108,7 +108,7 @@ static int flattening(demo_context *context)
                           "Adaptive flattening of one cubic Bezier within 8, 2 and 0.25 pixels (grey: "
                           "the exact curve): halves are split only where the control points are "
                           "farther than the tolerance from the chord, so flat parts get few points",
-                          NULL);
+                          "cg demo --only 'Parametric curves'");
     cg_image_free(image);
     return status;
 }
@@ -144,7 +144,7 @@ static int continuity(demo_context *context)
                           "Two Bezier segments joined at a knot: G0 only (left, red), a G1 join built "
                           "by cg_cubic2_join_g1 (middle: P3, P4, P5 collinear) and a C1 join built by "
                           "cg_cubic2_join_c1 (right: P4 - P3 = P5 - P4), as cg_cubic2_continuity reports",
-                          NULL);
+                          "cg demo --only 'Parametric curves'");
     cg_image_free(image);
     return status;
 }

@@ -522,6 +522,49 @@ static void curves(void)
     cg_path_free(path);
 }
 
+/* Curves and arcs far larger than the image: only the part near it costs
+ * anything, and the part inside is right. */
+static void huge_curves(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_image *im;
+    cg_image_create(&im, 32, 32, CG_PIXEL_RGBAF);
+    cg_paint paint = cg_paint_solid(white);
+    for (int kind = 0; kind < 2; kind++) {
+        double r = 1e11, cx = 16.5 + r, cy = 16; /* leftmost point at x = 16.5 */
+        cg_path_reset(path);
+        if (kind == 0) {
+            cg_path_arc(path, cx, cy, r, 0, 2 * CG_PI);
+        } else {
+            double k = 0.5522847498 * r;
+            cg_path_move_to(path, cx + r, cy);
+            cg_path_cubic_to(path, cx + r, cy + k, cx + k, cy + r, cx, cy + r);
+            cg_path_cubic_to(path, cx - k, cy + r, cx - r, cy + k, cx - r, cy);
+            cg_path_cubic_to(path, cx - r, cy - k, cx - k, cy - r, cx, cy - r);
+            cg_path_cubic_to(path, cx + k, cy - r, cx + r, cy - k, cx + r, cy);
+        }
+        cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+        CHECK(cg_fill_path(im, path, CG_FILL_NONZERO, &paint) == CG_OK);
+        int wrong = 0;
+        for (int y = 0; y < 32; y++)
+            for (int x = 0; x < 32; x++) {
+                float a = cg_image_get(im, x, y).a, want = x < 16 ? 0.0f : x == 16 ? 0.5f : 1.0f;
+                wrong += fabsf(a - want) > 0.01f;
+            }
+        CHECK_MSG(wrong == 0, "huge %s: %d pixels wrong", kind ? "cubics" : "arc", wrong);
+        /* and its stroke: a band 4 wide around x = 16.5 */
+        cg_stroke_style style = cg_stroke_style_default();
+        style.width = 4;
+        cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+        CHECK(cg_stroke_path(im, path, &style, &paint) == CG_OK);
+        CHECK(cg_image_get(im, 16, 10).a > 0.99f && cg_image_get(im, 13, 10).a < 0.01f
+              && cg_image_get(im, 20, 10).a < 0.01f);
+    }
+    cg_image_free(im);
+    cg_path_free(path);
+}
+
 /* Partial coverage blends like cg_image_blend with alpha scaled by the
  * coverage, over opaque, translucent and transparent pixels. */
 static void aa_blending(void)
@@ -629,6 +672,7 @@ int main(void)
     svg_paths();
     curves();
     aa_blending();
+    huge_curves();
     rules_and_paints();
     return check_finish();
 }

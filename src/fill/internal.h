@@ -44,8 +44,17 @@ void fill_path_restore(cg_path *path, const fill_path_mark *mark);
 cg_vec2 fill_path_current(const cg_path *path);
 cg_vec2 fill_path_start(const cg_path *path);
 
-/* Flattens path into polylines (curves and arcs within tolerance). */
-cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out);
+/* A box beyond which geometry cannot show: x0 <= x <= x1, y0 <= y <= y1. */
+typedef struct fill_clip {
+    double x0, y0, x1, y1;
+} fill_clip;
+
+/* Flattens path into polylines (curves and arcs within tolerance).  With a
+ * box, curve and arc pieces wholly beyond it become straight lines (which
+ * changes nothing inside it), so huge curves cost time and memory in
+ * proportion to their visible part. */
+cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_clip *box,
+                            fill_polylines *out);
 
 /* Appends the points of the circular arc around c of radius r from angle a0
  * to a1 (excluding the start point) within tolerance. */

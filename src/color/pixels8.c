@@ -1,5 +1,6 @@
 /* Colour models on 8-bit pixels: the byte encodings of each model, and whole
- * buffers with integer / table fast paths for HSV, HSL and L*a*b*. */
+ * buffers, with SIMD-friendly exact kernels for HSV and HSL and a fast
+ * L*a*b* kernel. */
 /* Floating-point selects in the kernels below must become blends: allow it
  * (no code here relies on floating-point traps). */
 #if defined(__GNUC__) && !defined(__clang__)
@@ -118,18 +119,20 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *b, double *v)
     }
 }
 
-/* ---- vectorizable HSV kernels ------------------------------------------------
- * The same exact rational formulas in float on planar blocks, so that the
- * compiler can use SIMD (with a run-time choice of AVX2 where available).
- * Every numerator is an integer below 2^24, hence exact in float, and a
+/* ---- vectorizable HSV / HSL kernels ------------------------------------------
+ * The exact rational formulas of the byte encodings, e.g. H8 =
+ * floor((512 t + 6 delta) / (12 delta)) with t the hue numerator in units of
+ * delta, S8 = floor((510 delta + max) / (2 max)), in float on planar blocks,
+ * so that the compiler can use SIMD (with a run-time choice of AVX2 where
+ * available).  Every numerator is an integer below 2^24, hence exact in float, and a
  * correctly rounded float quotient never crosses the integer above the true
  * quotient (the gap, at least 1/d, exceeds half an ulp of the result), so
  * truncation gives the exact floor. */
 #define BLOCK 512
 
 /* Each kernel reads m pixels of CH bytes from in and writes them to out
- * (never the same memory: callers copy a block first); alpha is copied. */
-/* Deinterleaving to planar bytes first lets the arithmetic loop load
+ * (never the same memory: callers copy a block first); alpha is copied.
+ * Deinterleaving to planar bytes first lets the arithmetic loop load
  * contiguous vectors. */
 #define HSV_FORWARD(NAME, CH, HSL)                                                   \
     CG_SIMD_CLONES static void NAME(const uint8_t *restrict in, uint8_t *restrict out, \
@@ -171,8 +174,7 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *b, double *v)
     }
 
 /* (H8, S8, V8) -> RGB: round(255 x) of the double formula with h / 60 =
- * 6 H / 256, as exact integer quotients. */
-/* One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
+ * 6 H / 256, as exact integer quotients.  One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
  * w = clamp(min(k, 4 - k), 0, 1) (n = 5, 3, 1 for R, G, B), all in units of
  * 1/256 of a sector: round(v (65280 - s W) / 65280) with W = 256 w, that is
  * floor(X / 65280) with X = v (65280 - s W) + 32640 < 2^24.  As 65280 =

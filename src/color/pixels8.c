@@ -134,9 +134,8 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *b, double *v)
  * (never the same memory: callers copy a block first); alpha is copied.
  * Deinterleaving to planar bytes first lets the arithmetic loop load
  * contiguous vectors. */
-#define HSV_FORWARD(NAME, CH, HSL)                                                   \
-    CG_SIMD_CLONES static void NAME(const uint8_t *restrict in, uint8_t *restrict out, \
-                                    int m)                                           \
+#define HSV_FORWARD(NAME, ATTR, CH, HSL)                                             \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
     {                                                                                \
         uint8_t pr[BLOCK], pg[BLOCK], pb[BLOCK], ph[BLOCK], ps[BLOCK];               \
         for (int i = 0; i < m; i++) {                                                \
@@ -192,9 +191,8 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
     return (u + 1 + (u >> 8)) >> 8;
 }
 
-#define HSV_INVERSE(CH)                                                              \
-    CG_SIMD_CLONES static void hsv_inverse_##CH(const uint8_t *restrict in,          \
-                                                 uint8_t *restrict out, int m)        \
+#define HSV_INVERSE(NAME, ATTR, CH)                                                  \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
     {                                                                                \
         uint8_t ph[BLOCK], ps[BLOCK], pv[BLOCK], pr[BLOCK], pg[BLOCK], pb[BLOCK];    \
         for (int i = 0; i < m; i++) {                                                \
@@ -217,12 +215,24 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
         }                                                                            \
     }
 
-HSV_FORWARD(hsv_forward_3, 3, 0)
-HSV_FORWARD(hsv_forward_4, 4, 0)
-HSV_FORWARD(hsl_forward_3, 3, 1)
-HSV_FORWARD(hsl_forward_4, 4, 1)
-HSV_INVERSE(3)
-HSV_INVERSE(4)
+HSV_FORWARD(hsv_forward_3, , 3, 0)
+HSV_FORWARD(hsv_forward_3_avx2, CG_TARGET_AVX2, 3, 0)
+HSV_FORWARD(hsv_forward_3_avx512, CG_TARGET_AVX512, 3, 0)
+HSV_FORWARD(hsv_forward_4, , 4, 0)
+HSV_FORWARD(hsv_forward_4_avx2, CG_TARGET_AVX2, 4, 0)
+HSV_FORWARD(hsv_forward_4_avx512, CG_TARGET_AVX512, 4, 0)
+HSV_FORWARD(hsl_forward_3, , 3, 1)
+HSV_FORWARD(hsl_forward_3_avx2, CG_TARGET_AVX2, 3, 1)
+HSV_FORWARD(hsl_forward_3_avx512, CG_TARGET_AVX512, 3, 1)
+HSV_FORWARD(hsl_forward_4, , 4, 1)
+HSV_FORWARD(hsl_forward_4_avx2, CG_TARGET_AVX2, 4, 1)
+HSV_FORWARD(hsl_forward_4_avx512, CG_TARGET_AVX512, 4, 1)
+HSV_INVERSE(hsv_inverse_3, , 3)
+HSV_INVERSE(hsv_inverse_3_avx2, CG_TARGET_AVX2, 3)
+HSV_INVERSE(hsv_inverse_3_avx512, CG_TARGET_AVX512, 3)
+HSV_INVERSE(hsv_inverse_4, , 4)
+HSV_INVERSE(hsv_inverse_4_avx2, CG_TARGET_AVX2, 4)
+HSV_INVERSE(hsv_inverse_4_avx512, CG_TARGET_AVX512, 4)
 
 typedef void (*block_kernel)(const uint8_t *restrict, uint8_t *restrict, int);
 
@@ -249,17 +259,20 @@ static void run_blocks(const uint8_t *in, uint8_t *out, size_t n, int ch, block_
 
 static void rgb8_to_hsv8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? hsv_forward_4 : hsv_forward_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_forward_4, hsv_forward_4_avx2, hsv_forward_4_avx512)
+                                   : CG_SIMD_PICK(hsv_forward_3, hsv_forward_3_avx2, hsv_forward_3_avx512));
 }
 
 static void rgb8_to_hsl8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? hsl_forward_4 : hsl_forward_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsl_forward_4, hsl_forward_4_avx2, hsl_forward_4_avx512)
+                                   : CG_SIMD_PICK(hsl_forward_3, hsl_forward_3_avx2, hsl_forward_3_avx512));
 }
 
 static void hsv8_to_rgb8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? hsv_inverse_4 : hsv_inverse_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_inverse_4, hsv_inverse_4_avx2, hsv_inverse_4_avx512)
+                                   : CG_SIMD_PICK(hsv_inverse_3, hsv_inverse_3_avx2, hsv_inverse_3_avx512));
 }
 
 /* ---- L*a*b* ---------------------------------------------------------------- */
@@ -295,9 +308,8 @@ static inline float clamp_byte(float v)
 
 /* Decoding goes to planar arrays first (table lookups), then the
  * arithmetic runs on contiguous floats, which vectorizes. */
-#define LAB_FORWARD(CH)                                                                \
-    CG_SIMD_CLONES static void lab_forward_##CH(const uint8_t *restrict in,            \
-                                                 uint8_t *restrict out, int m)          \
+#define LAB_FORWARD(NAME, ATTR, CH)                                                    \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)    \
     {                                                                                  \
         const float *dec = cg_srgb_decode_table;                                       \
         float lr[BLOCK], lg[BLOCK], lb[BLOCK];                                         \
@@ -329,12 +341,17 @@ static inline float clamp_byte(float v)
 #define LAB_MZ1 ((float)(0.1192 / CG_COLOR_WHITE_Z))
 #define LAB_MZ2 ((float)(0.9505 / CG_COLOR_WHITE_Z))
 
-LAB_FORWARD(3)
-LAB_FORWARD(4)
+LAB_FORWARD(lab_forward_3, , 3)
+LAB_FORWARD(lab_forward_3_avx2, CG_TARGET_AVX2, 3)
+LAB_FORWARD(lab_forward_3_avx512, CG_TARGET_AVX512, 3)
+LAB_FORWARD(lab_forward_4, , 4)
+LAB_FORWARD(lab_forward_4_avx2, CG_TARGET_AVX2, 4)
+LAB_FORWARD(lab_forward_4_avx512, CG_TARGET_AVX512, 4)
 
 static void rgb8_to_lab8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? lab_forward_4 : lab_forward_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(lab_forward_4, lab_forward_4_avx2, lab_forward_4_avx512)
+                                   : CG_SIMD_PICK(lab_forward_3, lab_forward_3_avx2, lab_forward_3_avx512));
 }
 
 /* ---- generic paths through double ----------------------------------------- */

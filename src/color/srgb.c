@@ -1,10 +1,5 @@
 /* sRGB transfer curves. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math") /* let selects become blends */
-#endif
-
 #include "cg/color.h"
-#include "internal.h"
 #include "srgb_tables.h"
 
 double cg_srgb_to_linear(double encoded)
@@ -54,10 +49,10 @@ void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
         out[i] = cg_srgb_decode_table[in[i]];
 }
 
-/* The same as encode_one without branches, for SIMD: at most one threshold
+/* The same as encode_one without branches: at most one threshold
  * lies in a bucket (checked when the table was made), so one comparison
  * settles the code. */
-CG_SIMD_CLONES static void encode_block(const float *restrict in, uint8_t *restrict out, size_t n)
+void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         float x = in[i];
@@ -68,11 +63,6 @@ CG_SIMD_CLONES static void encode_block(const float *restrict in, uint8_t *restr
         code += x >= cg_srgb_threshold_table[index]; /* at 255 this gives 256 */
         out[i] = (uint8_t)(code < 255 ? code : 255);
     }
-}
-
-void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
-{
-    encode_block(in, out, n);
 }
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)

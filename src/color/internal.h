@@ -35,6 +35,13 @@ static inline int cg_simd_level(void)
     return 0;
 }
 
+/* Defines the three variants NAME, NAME_avx2 and NAME_avx512 with a macro
+ * DEFINE(NAME, ATTRIBUTES, ...). */
+#define CG_SIMD_VARIANTS(DEFINE, NAME, ...)                                                \
+    DEFINE(NAME, , __VA_ARGS__)                                                            \
+    DEFINE(NAME##_avx2, CG_TARGET_AVX2, __VA_ARGS__)                                       \
+    DEFINE(NAME##_avx512, CG_TARGET_AVX512, __VA_ARGS__)
+
 /* The one of three variants for this CPU. */
 #define CG_SIMD_PICK(base, avx2, avx512)                                                  \
     (cg_simd_level() == 2 ? (avx512) : cg_simd_level() == 1 ? (avx2) : (base))

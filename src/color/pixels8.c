@@ -215,24 +215,12 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
         }                                                                            \
     }
 
-HSV_FORWARD(hsv_forward_3, , 3, 0)
-HSV_FORWARD(hsv_forward_3_avx2, CG_TARGET_AVX2, 3, 0)
-HSV_FORWARD(hsv_forward_3_avx512, CG_TARGET_AVX512, 3, 0)
-HSV_FORWARD(hsv_forward_4, , 4, 0)
-HSV_FORWARD(hsv_forward_4_avx2, CG_TARGET_AVX2, 4, 0)
-HSV_FORWARD(hsv_forward_4_avx512, CG_TARGET_AVX512, 4, 0)
-HSV_FORWARD(hsl_forward_3, , 3, 1)
-HSV_FORWARD(hsl_forward_3_avx2, CG_TARGET_AVX2, 3, 1)
-HSV_FORWARD(hsl_forward_3_avx512, CG_TARGET_AVX512, 3, 1)
-HSV_FORWARD(hsl_forward_4, , 4, 1)
-HSV_FORWARD(hsl_forward_4_avx2, CG_TARGET_AVX2, 4, 1)
-HSV_FORWARD(hsl_forward_4_avx512, CG_TARGET_AVX512, 4, 1)
-HSV_INVERSE(hsv_inverse_3, , 3)
-HSV_INVERSE(hsv_inverse_3_avx2, CG_TARGET_AVX2, 3)
-HSV_INVERSE(hsv_inverse_3_avx512, CG_TARGET_AVX512, 3)
-HSV_INVERSE(hsv_inverse_4, , 4)
-HSV_INVERSE(hsv_inverse_4_avx2, CG_TARGET_AVX2, 4)
-HSV_INVERSE(hsv_inverse_4_avx512, CG_TARGET_AVX512, 4)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsv_forward_3, 3, 0)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsv_forward_4, 4, 0)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsl_forward_3, 3, 1)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsl_forward_4, 4, 1)
+CG_SIMD_VARIANTS(HSV_INVERSE, hsv_inverse_3, 3)
+CG_SIMD_VARIANTS(HSV_INVERSE, hsv_inverse_4, 4)
 
 typedef void (*block_kernel)(const uint8_t *restrict, uint8_t *restrict, int);
 
@@ -341,12 +329,8 @@ static inline float clamp_byte(float v)
 #define LAB_MZ1 ((float)(0.1192 / CG_COLOR_WHITE_Z))
 #define LAB_MZ2 ((float)(0.9505 / CG_COLOR_WHITE_Z))
 
-LAB_FORWARD(lab_forward_3, , 3)
-LAB_FORWARD(lab_forward_3_avx2, CG_TARGET_AVX2, 3)
-LAB_FORWARD(lab_forward_3_avx512, CG_TARGET_AVX512, 3)
-LAB_FORWARD(lab_forward_4, , 4)
-LAB_FORWARD(lab_forward_4_avx2, CG_TARGET_AVX2, 4)
-LAB_FORWARD(lab_forward_4_avx512, CG_TARGET_AVX512, 4)
+CG_SIMD_VARIANTS(LAB_FORWARD, lab_forward_3, 3)
+CG_SIMD_VARIANTS(LAB_FORWARD, lab_forward_4, 4)
 
 static void rgb8_to_lab8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {

@@ -14,5 +14,7 @@
 #include "cg/clip.h"
 #include "cg/hemesh.h"
 #include "cg/render.h"
+#include "cg/scene.h"
+#include "cg/trace.h"
 
 #endif

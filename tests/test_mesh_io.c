@@ -338,6 +338,14 @@ static void test_ply(void)
         CHECK(cg_mesh_load_memory(bytes, n + 1, "b.ply", CG_MESH_FORMAT_PLY, &m, &err)
               == CG_EFORMAT);
     }
+    /* a face property cg keeps no array for (alpha alone) is read past */
+    m = load_ok("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                "property uchar alpha\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n",
+                "alpha.ply");
+    if (m)
+        CHECK(m->face_colors == NULL && m->face_count == 1);
+    cg_mesh_free(m);
     /* a face element before the vertex element */
     m = load_ok("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar uint vertex_indices\n"
                 "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"

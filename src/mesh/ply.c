@@ -288,6 +288,8 @@ static void store(ply_reader *r, enum ply_target target, enum ply_type type, dou
     mesh_builder *b = &r->b;
     int is_float = type >= PLY_FLOAT32;
     if (face) {
+        if (!b->face_colors) /* no colour, or alpha alone */
+            return;
         cg_rgbaf *c = &b->face_colors[i];
         switch (target) {
         case T_R: c->r = mesh_color_component(value, is_float, 0); break;

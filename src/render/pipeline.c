@@ -88,7 +88,20 @@ static inline size_t raster_mode(const render_frame *f, const setup_triangle *t,
     for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
              e.w[2] += e.step_y[2]) {
         int begin, end;
-        row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        if (x1 - x0 <= 8) {
+            /* Narrow: test the few pixels instead of dividing. */
+            int64_t a = e.w[0], b = e.w[1], c = e.w[2];
+            begin = x1 - x0;
+            end = 0;
+            for (int i = 0; i < x1 - x0; i++, a += e.step_x[0], b += e.step_x[1], c += e.step_x[2])
+                if ((a | b | c) >= 0) {
+                    if (i < begin)
+                        begin = i;
+                    end = i + 1;
+                }
+        } else {
+            row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        }
         if (begin >= end)
             continue;
         fragments += (size_t)(end - begin);

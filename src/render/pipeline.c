@@ -58,6 +58,8 @@ static inline void row_span(const int64_t w[3], const int64_t step[3], int width
             hi = 0;
         }
     }
+    if (lo > width)
+        lo = width;
     *begin = (int)lo;
     *end = (int)(hi > lo ? hi : lo);
 }

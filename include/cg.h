@@ -14,5 +14,6 @@
 #include "cg/clip.h"
 #include "cg/hemesh.h"
 #include "cg/render.h"
+#include "cg/scene.h"
 
 #endif

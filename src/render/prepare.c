@@ -159,8 +159,8 @@ static void corner_color(const cg_mesh *mesh, const cg_render_options *options, 
     cg_rgbaf c = options->color;
     if (mesh->colors)
         c = mesh->colors[mesh->face_indices[k]];
-    else if (mesh->face_colors)
-        c = mesh->face_colors[f];
+    else if (mesh->face_colors && mesh->face_colors[f].a > 0)
+        c = mesh->face_colors[f]; /* alpha 0: the file gives this face no colour */
     out[0] = c.r;
     out[1] = c.g;
     out[2] = c.b;

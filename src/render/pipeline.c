@@ -233,17 +233,32 @@ static void *grow(void *buffer, size_t *capacity, size_t needed, size_t size)
     return p;
 }
 
-static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t)
+/* Room for one more set-up triangle at the end of the chunk's list (with a
+ * whole setup_triangle of slack after it, so that it may be written through
+ * that type); NULL when memory runs out.  emit_setup keeps it. */
+static setup_triangle *next_setup(render_frame *f, render_chunk *c)
 {
     if (c->failed)
-        return;
-    void *p = grow(c->setups, &c->setup_capacity, c->setup_count + 1, f->stride);
+        return NULL;
+    size_t needed = c->setup_count + 1 + f->setup_slack;
+    if (needed <= c->setup_capacity)
+        return (setup_triangle *)(c->setups + c->setup_count * f->stride);
+    void *p = grow(c->setups, &c->setup_capacity, needed, f->stride);
     if (!p) {
         c->failed = 1;
-        return;
+        return NULL;
     }
     c->setups = p;
-    memcpy(c->setups + c->setup_count * f->stride, t, f->stride);
+    return (setup_triangle *)(c->setups + c->setup_count * f->stride);
+}
+
+static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t)
+{
+    setup_triangle *slot = next_setup(f, c);
+    if (!slot)
+        return;
+    if (slot != t)
+        memcpy(slot, t, f->stride);
     c->setup_count++;
 }
 
@@ -334,8 +349,11 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
                 corner[k].a = v[k]->a;
             }
             const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
-            setup_triangle t;
-            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, &t);
+            /* Set up in place at the end of the chunk's list. */
+            setup_triangle *t = next_setup(f, c);
+            if (!t)
+                continue;
+            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, t);
             if (result < 0) {
                 c->culled++;
                 continue;
@@ -346,8 +364,8 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             }
             float color[3];
             triangle_color(f, i, color);
-            render_finish_setup(f, &t, color);
-            emit_setup(f, c, &t);
+            render_finish_setup(f, t, color);
+            emit_setup(f, c, t);
             continue;
         }
         clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
@@ -681,6 +699,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     f.background[3] = o->background.a;
     f.background8 = cg_linear_to_rgba8(o->background);
     f.stride = SETUP_SIZE(f.attribute_count);
+    f.setup_slack = (sizeof(setup_triangle) + f.stride - 1) / f.stride;
     f.tiles_x = (f.width + RENDER_TILE - 1) / RENDER_TILE;
     f.tiles_y = (f.height + RENDER_TILE - 1) / RENDER_TILE;
     f.tile_count = f.tiles_x * f.tiles_y;

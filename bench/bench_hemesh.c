@@ -26,7 +26,7 @@ static double median(double *t, int n)
     return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
 }
 
-static void run_case(const char *name, cg_mesh *mesh)
+static void run_case(const char *name, cg_mesh *mesh, unsigned flags)
 {
     size_t F = mesh->face_count;
     int runs = F > 500000 ? 3 : F > 50000 ? 5 : 9;
@@ -38,7 +38,7 @@ static void run_case(const char *name, cg_mesh *mesh)
     for (int i = 0; i < runs; i++) {
         cg_hemesh *h = NULL;
         double t0 = bench_now();
-        cg_status s = cg_hemesh_build(mesh, 0, &h, NULL, NULL);
+        cg_status s = cg_hemesh_build(mesh, flags, &h, NULL, NULL);
         t_cg[i] = bench_now() - t0;
         if (s != CG_OK) {
             fprintf(stderr, "bench_hemesh: %s: build failed\n", name);
@@ -54,7 +54,7 @@ static void run_case(const char *name, cg_mesh *mesh)
     }
     size_t before = heap_bytes();
     cg_hemesh *h = NULL;
-    cg_hemesh_build(mesh, 0, &h, NULL, NULL);
+    cg_hemesh_build(mesh, flags, &h, NULL, NULL);
     size_t cg_bytes = heap_bytes() - before;
     before = heap_bytes();
     void *om = peer ? peer_build(mesh) : NULL;
@@ -70,8 +70,8 @@ static void run_case(const char *name, cg_mesh *mesh)
               note);
 
     /* one-ring of every vertex */
-    size_t V = mesh->vertex_count;
-    cg_vec3 *a = malloc(V * sizeof *a), *b = malloc(V * sizeof *b);
+    size_t V = mesh->vertex_count, room = h->vertex_count > V ? h->vertex_count : V;
+    cg_vec3 *a = malloc(room * sizeof *a), *b = malloc(room * sizeof *b);
     for (int i = 0; i < runs; i++) {
         double t0 = bench_now();
         cg_hemesh_neighbor_average(h, a);
@@ -108,7 +108,7 @@ static void run_case(const char *name, cg_mesh *mesh)
             t_peer[i] = bench_now() - t0;
             size_t pv, pe;
             peer_faces = peer_counts(copy, &pv, &pe);
-            for (size_t v = 0; v < V && r; v++) {
+            for (size_t v = 0; v < V && r && pv == r->vertex_count; v++) {
                 cg_vec3 p;
                 peer_point(copy, v, &p);
                 old_diff = fmax(old_diff, cg_vec3_length(cg_vec3_sub(p, r->positions[v])));
@@ -139,17 +139,38 @@ int main(int argc, char **argv)
         {"icosphere level 8", shape_icosphere, 8},
         {"grid 1024x1024", NULL, 1024},
     };
+    /* --quick: the two small cases; any other argument: only the cases whose
+     * name contains it */
     int only = argc > 1 && strcmp(argv[1], "--quick") == 0;
+    const char *filter = argc > 1 && !only ? argv[1] : NULL;
+    peer_quiet();
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        if (only && i >= 2)
-            break;
+        if ((only && i >= 2) || (filter && !strstr(cases[i].name, filter)))
+            continue;
         cg_mesh *mesh = cases[i].make ? cases[i].make(cases[i].arg)
                                       : shape_grid(cases[i].arg, cases[i].arg, 1);
         if (!mesh) {
             fprintf(stderr, "bench_hemesh: cannot make %s\n", cases[i].name);
             return 1;
         }
-        run_case(cases[i].name, mesh);
+        run_case(cases[i].name, mesh, 0);
+        cg_mesh_free(mesh);
+    }
+    /* the real meshes: the dragon has non-manifold edges and vertices, which
+     * cg repairs (CG_HEMESH_REPAIR) and OpenMesh's add_face skips */
+    static const char *real[] = {"bunny.obj", "dragon_vrip_res3.ply.gz"};
+    for (size_t i = 0; !only && i < sizeof real / sizeof real[0]; i++) {
+        if (filter && !strstr(real[i], filter))
+            continue;
+        char path[1024];
+        snprintf(path, sizeof path, "%s/data/meshes/%s", CG_SOURCE_DIR, real[i]);
+        cg_mesh *mesh = NULL;
+        cg_error err;
+        if (cg_mesh_load(path, &mesh, &err) != CG_OK) {
+            fprintf(stderr, "bench_hemesh: %s\n", err.message);
+            continue;
+        }
+        run_case(real[i], mesh, CG_HEMESH_REPAIR);
         cg_mesh_free(mesh);
     }
     return 0;

@@ -10,6 +10,8 @@ extern "C" {
 #endif
 
 int peer_available(void);
+/* Silences the peer's own error printing (complex edges of broken meshes). */
+void peer_quiet(void);
 void *peer_build(const cg_mesh *mesh);
 void peer_free(void *mesh);
 void *peer_copy(const void *mesh);

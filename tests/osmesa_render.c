@@ -12,6 +12,7 @@
 #include "cg/mesh.h"
 #include "cg/render.h"
 #include "check.h"
+#include "gl_camera.h"
 
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -20,13 +21,6 @@
 
 #define WIDTH 480
 #define HEIGHT 360
-
-static void gl_matrix(cg_mat4 m, GLdouble out[16])
-{
-    for (int r = 0; r < 4; r++)
-        for (int c = 0; c < 4; c++)
-            out[c * 4 + r] = m.m[r][c]; /* OpenGL is column-major */
-}
 
 static void compare(const char *path, cg_vec3 view_direction)
 {
@@ -74,17 +68,8 @@ static void compare(const char *path, cg_vec3 view_direction)
     CHECK(context != NULL);
     unsigned char *buffer = calloc((size_t)WIDTH * HEIGHT, 4);
     CHECK(OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT));
-    cg_mat4 view, projection;
-    cg_camera_view(&camera, &view);
-    cg_camera_projection(&camera, (double)WIDTH / HEIGHT, &projection);
-    GLdouble m[16];
-    glViewport(0, 0, WIDTH, HEIGHT);
-    glMatrixMode(GL_PROJECTION);
-    gl_matrix(projection, m);
-    glLoadMatrixd(m);
-    glMatrixMode(GL_MODELVIEW);
-    gl_matrix(view, m);
-    glLoadMatrixd(m);
+    GLdouble view[16];
+    CHECK(gl_load_camera(&camera, WIDTH, HEIGHT, 0, view) == 0);
     glClearColor(0, 0, 0, 1);
     glClearDepth(1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

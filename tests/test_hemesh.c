@@ -331,7 +331,8 @@ static cg_mesh *faces_mesh(size_t vertex_count, const uint32_t *sizes, size_t fa
         m->positions[v] = cg_vec3_make((double)(v % 3), (double)(v / 3 % 3), (double)(v / 9));
     for (size_t f = 0; f < face_count; f++)
         m->face_offsets[f + 1] = m->face_offsets[f] + sizes[f];
-    memcpy(m->face_indices, indices, total * sizeof *indices);
+    if (total)
+        memcpy(m->face_indices, indices, total * sizeof *indices);
     return m;
 }
 

@@ -81,7 +81,7 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
     int done[7] = {0};
     for (int step = 0; step < steps && h->live_faces > 2; step++) {
         size_t V = h->live_vertices, E = h->live_edges, F = h->live_faces;
-        int op = (int)check_rng_int(&rng, 0, 5);
+        int op = (int)check_rng_int(&rng, 0, 6);
         uint32_t e = random_live_edge(h, &rng);
         if (e == CG_HEMESH_NONE)
             break;
@@ -144,7 +144,32 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
             CHECK_EQ_INT(h->live_edges, E + k);
             CHECK_EQ_INT(h->live_faces, F + k - 1);
             CHECK_EQ_INT(cg_hemesh_valence(h, v), k);
-        } else if (op == 4 && step % 5 == 0) { /* remove a face (rarely: it changes chi) */
+        } else if (op == 6) { /* split a face along a diagonal */
+            uint32_t f = random_live_face(h, &rng);
+            if (f == CG_HEMESH_NONE)
+                continue;
+            uint32_t sides[64];
+            size_t k = cg_hemesh_face_halfedges(h, f, sides, 64);
+            if (k > 64)
+                continue;
+            uint32_t p = sides[check_rng_int(&rng, 0, (long long)k - 1)];
+            uint32_t q = sides[check_rng_int(&rng, 0, (long long)k - 1)];
+            uint32_t u = cg_hemesh_origin(h, p), w = cg_hemesh_origin(h, q);
+            int allowed = p != q && cg_hemesh_next(h, p) != q && cg_hemesh_next(h, q) != p
+                          && cg_hemesh_find_halfedge(h, u, w) == CG_HEMESH_NONE;
+            uint32_t g;
+            cg_status s = cg_hemesh_split_face_between(h, p, q, &g);
+            CHECK((s == CG_OK) == allowed);
+            if (s == CG_OK) {
+                done[6]++;
+                CHECK_EQ_INT(h->live_edges, E + 1);
+                CHECK_EQ_INT(h->live_faces, F + 1);
+                CHECK_EQ_INT(cg_hemesh_face_size(h, f) + cg_hemesh_face_size(h, g), k + 2);
+                CHECK(cg_hemesh_find_halfedge(h, u, w) != CG_HEMESH_NONE);
+            } else {
+                CHECK(h->live_edges == E && h->live_faces == F);
+            }
+        } else if (op == 4 && step % 5 == 0 && F > 8) { /* remove a face (rarely: it changes chi) */
             uint32_t f = random_live_face(h, &rng);
             if (f == CG_HEMESH_NONE)
                 continue;
@@ -153,7 +178,7 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
             CHECK_EQ_INT(h->live_faces, F - 1);
             done[4]++;
             chi0 = chi(h);
-        } else if (op == 5 && step % 7 == 0) { /* remove a vertex */
+        } else if (op == 5 && step % 7 == 0 && F > 8) { /* remove a vertex */
             uint32_t v = cg_hemesh_origin(h, 2 * e);
             size_t nf = cg_hemesh_vertex_faces(h, v, 1, NULL, 0);
             CHECK(cg_hemesh_remove_vertex(h, v) == CG_OK);
@@ -169,7 +194,7 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
         CHECK_MSG(chi(h) == chi0, "%s: chi %ld, was %ld", what, chi(h), chi0);
     }
     if (getenv("HEMESH_VERBOSE"))
-        fprintf(stderr, "%s: flips %d splits %d collapses %d face splits %d face removals %d vertex removals %d\n", name, done[0], done[1], done[2], done[3], done[4], done[5]);
+        fprintf(stderr, "%s: flips %d splits %d collapses %d face splits %d face removals %d vertex removals %d diagonals %d\n", name, done[0], done[1], done[2], done[3], done[4], done[5], done[6]);
     CHECK_MSG(done[0] + done[1] + done[2] + done[3] > steps / 4, "%s: too few operations done", name);
     /* compaction keeps the counts and the invariants */
     cg_hemesh_stats before, after;
@@ -272,6 +297,13 @@ static void test_tetrahedron_refusals(void)
 
 /* Removing a face of a closed mesh opens one boundary loop; removing a face
  * that touches the boundary at one vertex only makes a complex vertex. */
+static void check_counts_plain(const cg_hemesh *h, size_t V, size_t E, size_t F)
+{
+    CHECK_EQ_INT(h->live_vertices, V);
+    CHECK_EQ_INT(h->live_edges, E);
+    CHECK_EQ_INT(h->live_faces, F);
+}
+
 static void test_removal_boundary(void)
 {
     cg_hemesh *h = build(shape_cube(0));
@@ -308,6 +340,32 @@ static void test_removal_boundary(void)
     uint32_t x = h->vertex_halfedge[v];
     CHECK(!cg_hemesh_collapse_ok(h, x));
     CHECK(!cg_hemesh_collapse_ok(h, x ^ 1u));
+    cg_hemesh_free(h);
+}
+
+/* Splitting every quad of a grid along a diagonal gives the triangulated
+ * grid; a quad refuses a split between neighbouring corners. */
+static void test_diagonals(void)
+{
+    cg_hemesh *h = build(shape_grid(4, 3, 0));
+    size_t E = h->live_edges, F = h->live_faces;
+    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0], cg_hemesh_next(h, h->face_halfedge[0]), NULL)
+          == CG_EINVAL);
+    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0], h->face_halfedge[1], NULL) == CG_EINVAL);
+    for (uint32_t f = 0; f < F; f++) {
+        uint32_t p = h->face_halfedge[f], q = cg_hemesh_next(h, cg_hemesh_next(h, p)), g;
+        CHECK(cg_hemesh_split_face_between(h, p, q, &g) == CG_OK);
+        CHECK_EQ_INT(cg_hemesh_face_size(h, f), 3);
+        CHECK_EQ_INT(cg_hemesh_face_size(h, g), 3);
+        valid(h, "diagonal split");
+    }
+    check_counts_plain(h, 20, E + F, 2 * F);
+    cg_hemesh_stats st;
+    cg_hemesh_stats_compute(h, &st, NULL, NULL);
+    CHECK(st.all_triangles && st.boundary_loops == 1 && st.euler_characteristic == 1);
+    /* a triangle has no diagonal */
+    uint32_t p = h->face_halfedge[0];
+    CHECK(cg_hemesh_split_face_between(h, p, cg_hemesh_prev(h, p), NULL) == CG_EINVAL);
     cg_hemesh_free(h);
 }
 
@@ -493,6 +551,7 @@ int main(void)
     test_random_operations();
     test_tetrahedron_refusals();
     test_removal_boundary();
+    test_diagonals();
     test_loop();
     test_catmull_clark();
     return check_finish();

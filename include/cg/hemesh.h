@@ -232,9 +232,8 @@ cg_vec3 cg_hemesh_vertex_normal(const cg_hemesh *m, uint32_t v);
 cg_status cg_hemesh_compute_normals(cg_hemesh *m);
 
 /* ---- operations ----------------------------------------------------------
- * Each leaves a valid structure and returns CG_EINVAL, changing nothing,
- * when the operation is not allowed there (the reason in cg_hemesh_validate
- * terms is given by the documentation of each). */
+ * Each leaves a valid structure, or returns CG_EINVAL (not allowed there,
+ * for the reasons listed with each) or CG_ENOMEM, changing nothing. */
 
 /* Turns the edge e between two triangles (a, b, c) and (b, a, d) into the
  * edge (c, d).  Refused on boundary edges, non-triangles, and when c and d
@@ -262,10 +261,17 @@ int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h);
  * a k-gon becomes k triangles. */
 cg_status cg_hemesh_split_face(cg_hemesh *m, uint32_t f, cg_vec3 position, uint32_t *new_vertex);
 
+/* Splits the face of half-edges p and q by a new edge from origin(p) to
+ * origin(q): p's side keeps the face, q's side becomes a new face
+ * (*new_face, may be NULL).  Refused unless p and q lie on the same face,
+ * their origins are not neighbours along it and not already joined. */
+cg_status cg_hemesh_split_face_between(cg_hemesh *m, uint32_t p, uint32_t q, uint32_t *new_face);
+
 /* Removes face f; its edges become boundary, edges left with no face and
  * vertices left with no edge are deleted. */
 cg_status cg_hemesh_remove_face(cg_hemesh *m, uint32_t f);
-/* Removes vertex v with every face and edge around it, leaving a hole. */
+/* Removes vertex v with every face and edge around it, leaving a hole (on
+ * CG_ENOMEM some of its faces may already be gone; the structure stays valid). */
 cg_status cg_hemesh_remove_vertex(cg_hemesh *m, uint32_t v);
 
 /* ---- subdivision ---------------------------------------------------------
@@ -273,8 +279,11 @@ cg_status cg_hemesh_remove_vertex(cg_hemesh *m, uint32_t v);
  * one new vertex per edge (and per face for Catmull-Clark), each old
  * half-edge split in two.  Boundaries follow the cubic B-spline rules
  * (boundary edge point: midpoint; boundary vertex: 3/4 v + 1/8 of its two
- * boundary neighbours).  Vertex attributes are interpolated with the same
- * weights, face colours inherited, normals recomputed when present. */
+ * boundary neighbours).  Texture coordinates and colours of new vertices
+ * are interpolated linearly (edge midpoints, face centroids), old vertices
+ * keep theirs, face colours are inherited and normals recomputed when
+ * present.  A structure with deleted elements is compacted (on a copy)
+ * first.  CG_ERANGE when the result would not fit 32-bit indices. */
 
 /* Loop (1987): interior vertex (1 - n beta) v + beta sum of neighbours with
  * beta = (5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n; interior edge point

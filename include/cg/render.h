@@ -153,10 +153,16 @@ cg_status cg_renderer_set_options(cg_renderer *renderer, const cg_render_options
  * CG_RASTER_MAX_SIDE, CG_ENOMEM. */
 cg_status cg_renderer_draw(cg_renderer *renderer, cg_image *image);
 
-/* The depth buffer of the last z-buffer frame: width * height floats, row
- * by row, window depth in [0, 1], +infinity where nothing was drawn.  NULL
- * before the first frame or after a painter's frame. */
+/* The depth buffer of the last frame: width * height floats, row by row,
+ * window depth in [0, 1], +infinity where nothing was drawn (painter's: the
+ * depth of the polygon painted last at each pixel).  NULL before the first
+ * frame, after a failed one, and after a wireframe frame (no faces drawn). */
 const float *cg_renderer_depth(const cg_renderer *renderer);
+/* Shows the last frame's depth buffer in image (RGBA8 or RGBAF, the size of
+ * the frame): grey levels from light (nearest drawn depth) to dark (farthest),
+ * black where nothing was drawn.  CG_EINVAL without a depth buffer or for a
+ * different size. */
+cg_status cg_renderer_depth_image(const cg_renderer *renderer, cg_image *image);
 /* The counts of the last frame. */
 cg_render_stats cg_renderer_stats(const cg_renderer *renderer);
 /* The camera the last frame used (after framing). */

@@ -144,12 +144,12 @@ static cg_status check_faces(builder *b)
                             kept_corners);
     b->faces = mesh->face_count - bad;
     b->corners = kept_corners;
-    if (!bad && !(b->flags & CG_HEMESH_ORIENT)) {
+    if (!bad) {
         b->offsets = mesh->face_offsets;
         b->indices = mesh->face_indices;
         return CG_OK;
     }
-    /* A private copy: dropped faces left out, and room to reverse faces. */
+    /* A private copy without the dropped faces. */
     b->own_offsets = malloc((b->faces + 1) * sizeof *b->own_offsets);
     b->own_indices = malloc((kept_corners ? kept_corners : 1) * sizeof *b->own_indices);
     b->face_map = malloc(b->faces * sizeof *b->face_map);
@@ -224,6 +224,7 @@ static cg_status match(builder *b, int record)
     uint32_t *current = malloc(vn * sizeof *current);
     uint32_t *uses = malloc(vn * sizeof *uses);
     uint8_t *occupied = malloc(vn);
+    uint32_t *same_way = malloc(vn * sizeof *same_way);
     uint32_t *first = b->partner ? malloc(vn * sizeof *first) : NULL;
     uint32_t *second = b->partner ? malloc(vn * sizeof *second) : NULL;
     cg_status status = CG_OK;
@@ -232,7 +233,7 @@ static cg_status match(builder *b, int record)
     free(b->edge_vertices);
     b->corner_halfedge = malloc((C ? C : 1) * sizeof *b->corner_halfedge);
     b->edge_vertices = malloc((C ? C : 1) * 2 * sizeof *b->edge_vertices);
-    if (!start || !bucket || !stamp || !current || !uses || !occupied
+    if (!start || !bucket || !stamp || !current || !uses || !occupied || !same_way
         || (b->partner && (!first || !second)) || !b->corner_halfedge || !b->edge_vertices) {
         status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
         goto done;
@@ -260,6 +261,7 @@ static cg_status match(builder *b, int record)
     }
     /* bucket v now ends at start[v] and begins at start[v - 1] */
     memset(stamp, 0xff, vn * sizeof *stamp);
+    memset(same_way, 0xff, vn * sizeof *same_way);
     size_t edges = 0, nonmanifold = 0, misoriented = 0, cut = 0, entries = 0;
     for (size_t a = 0; a < V; a++) {
         size_t begin = a ? start[a - 1] : 0, end = start[a];
@@ -288,6 +290,7 @@ static cg_status match(builder *b, int record)
                             b->first_misoriented[1] = other;
                         }
                         misoriented++;
+                        same_way[other] = (uint32_t)a;
                     }
                     if (first) {
                         second[other] = corner;
@@ -295,6 +298,9 @@ static cg_status match(builder *b, int record)
                         b->partner[corner] = first[other];
                     }
                 } else if (n == 3) {
+                    /* a non-manifold edge is not counted as misoriented too */
+                    if (same_way[other] == (uint32_t)a)
+                        misoriented--;
                     if (!nonmanifold) {
                         b->first_nonmanifold[0] = (uint32_t)a;
                         b->first_nonmanifold[1] = other;
@@ -338,6 +344,7 @@ done:
     free(current);
     free(uses);
     free(occupied);
+    free(same_way);
     free(first);
     free(second);
     return status;
@@ -348,6 +355,13 @@ done:
 static cg_status orient(builder *b)
 {
     size_t F = b->faces, C = b->corners;
+    if (!b->own_indices) { /* reversing faces needs a private copy */
+        b->own_indices = malloc((C ? C : 1) * sizeof *b->own_indices);
+        if (!b->own_indices)
+            return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
+        memcpy(b->own_indices, b->indices, C * sizeof *b->own_indices);
+        b->indices = b->own_indices;
+    }
     uint32_t *face_of = malloc((C ? C : 1) * sizeof *face_of);
     uint8_t *state = calloc(F ? F : 1, 1); /* 0 unvisited, 1 keep, 2 flip */
     uint32_t *queue = malloc((F ? F : 1) * sizeof *queue);
@@ -427,6 +441,18 @@ static cg_status assemble(builder *b, cg_hemesh **out)
         x.origin = b->edge_vertices[2 * e + 1];
         he[2 * e + 1] = x;
     }
+    /* The fan walk below jumps around memory, so it runs on a compact copy
+     * of the rotation h -> twin(prev(h)) (4 bytes a half-edge) and two
+     * bitmaps, filled while linking, rather than on the 16-byte half-edges. */
+    size_t words = H / 64 + 1;
+    /* the edge vertices (2 per edge = H entries) are read above and no longer
+     * needed: their memory, already mapped, holds the rotation */
+    uint32_t *rotation = b->edge_vertices;
+    uint64_t *seen = calloc(2 * words, sizeof *seen), *on_boundary = seen ? seen + words : NULL;
+    if (!seen) {
+        cg_hemesh_free(m);
+        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
+    }
     /* face loops */
     for (size_t f = 0; f < F; f++) {
         uint32_t begin = b->offsets[f], end = b->offsets[f + 1];
@@ -435,6 +461,7 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             uint32_t h = b->corner_halfedge[k];
             he[h].face = (uint32_t)f;
             he[h].prev = prev;
+            rotation[h] = prev ^ 1u;
             he[prev].next = h;
             prev = h;
         }
@@ -451,15 +478,12 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             h = he[h].prev ^ 1u;
         he[x].next = h;
         he[h].prev = (uint32_t)x;
+        rotation[h] = (uint32_t)x ^ 1u;
+        on_boundary[x >> 6] |= (uint64_t)1 << (x & 63);
     }
-    /* fans: cycles of the rotation h -> twin(prev(h)) */
+    /* fans: the cycles of the rotation */
     for (size_t v = 0; v < V; v++)
         m->vertex_halfedge[v] = CG_HEMESH_NONE;
-    uint8_t *seen = calloc(H ? H : 1, 1);
-    if (!seen) {
-        cg_hemesh_free(m);
-        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    }
     size_t nonmanifold_vertices = 0, added = 0;
     uint32_t first_bad_vertex = 0;
     int failed = 0;
@@ -467,14 +491,14 @@ static cg_status assemble(builder *b, cg_hemesh **out)
     size_t extra_count = 0;
     cg_hemesh_report *rep = b->report;
     for (size_t h0 = 0; h0 < H; h0++) {
-        if (seen[h0])
+        if (seen[h0 >> 6] >> (h0 & 63) & 1)
             continue;
         uint32_t v = he[h0].origin, h = (uint32_t)h0, boundary = CG_HEMESH_NONE;
         do {
-            seen[h] = 1;
-            if (he[h].face == CG_HEMESH_NONE)
+            seen[h >> 6] |= (uint64_t)1 << (h & 63);
+            if (on_boundary[h >> 6] >> (h & 63) & 1)
                 boundary = h;
-            h = he[h].prev ^ 1u;
+            h = rotation[h];
         } while (h != h0);
         uint32_t pick = boundary != CG_HEMESH_NONE ? boundary : (uint32_t)h0;
         if (m->vertex_halfedge[v] == CG_HEMESH_NONE) {

@@ -209,6 +209,23 @@ cg_status cg_hemesh_split_face(cg_hemesh *m, uint32_t f, cg_vec3 position, uint3
     return CG_OK;
 }
 
+cg_status cg_hemesh_split_face_between(cg_hemesh *m, uint32_t p, uint32_t q, uint32_t *new_face)
+{
+    if (!halfedge_live(m, p) || !halfedge_live(m, q) || p == q)
+        return CG_EINVAL;
+    uint32_t f = m->halfedges[p].face;
+    if (f == CG_HEMESH_NONE || m->halfedges[q].face != f || m->halfedges[p].next == q
+        || m->halfedges[q].next == p
+        || cg_hemesh_find_halfedge(m, m->halfedges[p].origin, m->halfedges[q].origin) != CG_HEMESH_NONE)
+        return CG_EINVAL;
+    if (hm_reserve(m, 0, 1, 1) != CG_OK)
+        return CG_ENOMEM;
+    connect(m, p, q);
+    if (new_face)
+        *new_face = (uint32_t)m->face_count - 1;
+    return CG_OK;
+}
+
 /* ---- collapse ----------------------------------------------------------------- */
 
 /* Appends the neighbours of v to a malloc'ed list; NULL on failure. */

@@ -4,6 +4,7 @@
 
 #include "cg/render.h"
 #include "cg/light.h"
+#include "cg/color.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -32,10 +33,22 @@ void render_shade(const render_lighting *lighting, const float position[3], cons
 /* sRGB encoding with a lookup that is exact (same result as
  * cg_linear_to_srgb8) and fast. */
 typedef struct render_encoder {
-    uint8_t code[4097];
+    uint8_t code[4098]; /* code of i / 4096 for i <= 4096, and 255 once more */
 } render_encoder;
+#define RENDER_ENCODER_STEPS 4096
 void render_encoder_init(render_encoder *encoder);
-uint8_t render_encode(const render_encoder *encoder, float linear);
+static inline uint8_t render_encode(const render_encoder *encoder, float linear)
+{
+    /* Clamped to [0, 1] (NaN to 0) without branches. */
+    float x = linear > 0 ? linear : 0;
+    x = x < 1 ? x : 1;
+    int i = (int)(x * RENDER_ENCODER_STEPS);
+    uint8_t code = encoder->code[i];
+    /* The code is monotonic: when both ends of the step agree it is exact. */
+    if (code == encoder->code[i + 1])
+        return code;
+    return cg_linear_to_srgb8(x);
+}
 
 /* ---- clipping in homogeneous coordinates -------------------------------- */
 
@@ -89,13 +102,25 @@ typedef struct setup_triangle {
 #define SETUP_SIZE(attribute_count) \
     ((offsetof(setup_triangle, a) + 3 * (size_t)(attribute_count) * sizeof(float) + 7) & ~(size_t)7)
 
-/* Snaps and orients the triangle a, b, c; returns 0 when it covers no pixel
+/* A corner ready for setup: snapped position, depth, 1 / w, attributes. */
+typedef struct render_corner {
+    int32_t x, y;
+    float z, iw;
+    const float *a;
+} render_corner;
+
+/* Rounds a pixel coordinate to the 1/256 grid (clamped to the guard band). */
+int32_t render_snap(double value, int size);
+void render_corner_from_screen(const screen_vertex *s, int width, int height,
+                               render_corner *out);
+/* Orients the triangle for the rasterizer; returns 0 when it covers no pixel
  * centre (zero area after snapping, or box empty), -1 when it is back-facing
- * and cull is set, 1 when out is ready.  back, when not NULL, is set to
- * whether the triangle was seen clockwise. */
+ * (seen clockwise) and cull is set, 1 when out is ready. */
+int render_setup_fixed(const render_corner *const v[3], int width, int height,
+                       int attribute_count, int cull, setup_triangle *out);
+/* The same from screen vertices (snapped here). */
 int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
-                 int width, int height, int attribute_count, int cull, setup_triangle *out,
-                 int *back);
+                 int width, int height, int attribute_count, int cull, setup_triangle *out);
 
 /* Edge functions of a set-up triangle at the centre of pixel (x, y), with
  * the top-left bias folded in (a pixel is covered when all three are >= 0),
@@ -130,6 +155,7 @@ struct cg_renderer {
     float *depth;
     size_t depth_size;
     int depth_valid;
+    int depth_width, depth_height;
     cg_render_stats stats;
 };
 
@@ -139,6 +165,8 @@ typedef struct frame_vertex {
     float world[3];    /* world position */
     unsigned outcode;  /* render_outcode */
     float a[RENDER_MAX_ATTRIBUTES];
+    int32_t sx, sy;    /* snapped screen position, when outcode is 0 */
+    float sz, siw;     /* window depth and 1 / w, when outcode is 0 */
 } frame_vertex;
 
 /* A clipped polygon in screen space, for the painter's algorithm. */
@@ -186,6 +214,8 @@ typedef struct render_frame {
     size_t splits;
 } render_frame;
 
+/* Stores the flat (or Phong base) colour of a set-up triangle, encoded too. */
+void render_finish_setup(const render_frame *frame, setup_triangle *t, const float color[3]);
 /* Rasterizes t inside [x0, x1) x [y0, y1) with the frame's shading: with
  * depth_test, only nearer fragments are written (and their depth); without,
  * every fragment overwrites colour and depth (painter's).  Returns the

@@ -252,13 +252,9 @@ static void paint(painter *pt, int i)
     for (int k = 1; k + 1 < p->n; k++) {
         setup_triangle t;
         if (render_setup(&p->v[0], &p->v[k], &p->v[k + 1], f->width, f->height,
-                         f->attribute_count, 0, &t, NULL) != 1)
+                         f->attribute_count, 0, &t) != 1)
             continue;
-        memcpy(t.color, p->color, sizeof t.color);
-        t.color8.r = render_encode(&f->r->encoder, p->color[0]);
-        t.color8.g = render_encode(&f->r->encoder, p->color[1]);
-        t.color8.b = render_encode(&f->r->encoder, p->color[2]);
-        t.color8.a = 255;
+        render_finish_setup(f, &t, p->color);
         f->r->stats.rasterized++;
         f->r->stats.fragments += render_raster(f, &t, 0, 0, f->width, f->height, 0);
     }

@@ -14,9 +14,10 @@
 
 enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
 
-static inline void store(const render_frame *f, unsigned char *row, int x, const float c[3])
+static inline void store(const render_frame *f, unsigned char *row, int x, const float c[3],
+                         const int rgba8)
 {
-    if (f->image->format == CG_PIXEL_RGBA8) {
+    if (rgba8) {
         cg_rgba8 *p = (cg_rgba8 *)row + x;
         p->r = render_encode(&f->r->encoder, c[0]);
         p->g = render_encode(&f->r->encoder, c[1]);
@@ -31,8 +32,39 @@ static inline void store(const render_frame *f, unsigned char *row, int x, const
     }
 }
 
+/* The covered run [*begin, *end) of a row whose edge functions are w at
+ * pixel offset 0 and change by step per pixel, within [0, width): exact
+ * integer bounds of where all three are >= 0. */
+static inline void row_span(const int64_t w[3], const int64_t step[3], int width, int *begin,
+                            int *end)
+{
+    int64_t lo = 0, hi = width; /* exclusive */
+    for (int k = 0; k < 3; k++) {
+        if (step[k] > 0) {
+            if (w[k] < 0) {
+                int64_t first = (-w[k] + step[k] - 1) / step[k];
+                if (first > lo)
+                    lo = first;
+            }
+        } else if (step[k] < 0) {
+            if (w[k] < 0) {
+                hi = 0;
+            } else {
+                int64_t last = w[k] / -step[k] + 1;
+                if (last < hi)
+                    hi = last;
+            }
+        } else if (w[k] < 0) {
+            hi = 0;
+        }
+    }
+    *begin = (int)lo;
+    *end = (int)(hi > lo ? hi : lo);
+}
+
 static inline size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0, int y0,
-                                 int x1, int y1, const int mode, const int depth_test)
+                                 int x1, int y1, const int mode, const int depth_test,
+                                 const int rgba8)
 {
     if (t->box[0] > x0) x0 = t->box[0];
     if (t->box[1] > y0) y0 = t->box[1];
@@ -43,71 +75,83 @@ static inline size_t raster_mode(const render_frame *f, const setup_triangle *t,
     raster_edges e;
     render_edges_at(t, x0, y0, &e);
     const float ia = t->inverse_area, z0 = t->z[0], dz1 = t->z[1] - z0, dz2 = t->z[2] - z0;
-    const int n = f->attribute_count;
-    const int rgba8 = f->image->format == CG_PIXEL_RGBA8;
-    size_t fragments = 0;
-    for (int y = y0; y < y1; y++) {
-        int64_t w0 = e.w[0], w1 = e.w[1], w2 = e.w[2];
-        float *zrow = f->depth + (size_t)y * f->width;
-        unsigned char *row = f->image->data + (size_t)y * f->image->stride;
-        for (int x = x0; x < x1; x++) {
-            if ((w0 | w1 | w2) >= 0) {
-                fragments++;
-                float l1 = (float)w1 * ia, l2 = (float)w2 * ia;
-                float z = z0 + l1 * dz1 + l2 * dz2;
-                if (!depth_test || z < zrow[x]) {
-                    zrow[x] = z;
-                    if (mode == MODE_FLAT) {
-                        if (rgba8)
-                            ((cg_rgba8 *)row)[x] = t->color8;
-                        else
-                            store(f, row, x, t->color);
-                    } else {
-                        float q0 = (1 - l1 - l2) * t->iw[0], q1 = l1 * t->iw[1],
-                              q2 = l2 * t->iw[2];
-                        float s = 1 / (q0 + q1 + q2);
-                        q0 *= s;
-                        q1 *= s;
-                        q2 *= s;
-                        float v[RENDER_MAX_ATTRIBUTES];
-                        for (int j = 0; j < n; j++)
-                            v[j] = q0 * t->a[j] + q1 * t->a[n + j] + q2 * t->a[2 * n + j];
-                        if (mode == MODE_GOURAUD) {
-                            store(f, row, x, v);
-                        } else {
-                            float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-                            float inv = len > 0 ? 1 / len : 0;
-                            float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv}, c[3];
-                            render_shade(&f->lighting, v + 3, normal, n > 6 ? v + 6 : t->color, c);
-                            store(f, row, x, c);
-                        }
-                    }
-                }
-            }
-            w0 += e.step_x[0];
-            w1 += e.step_x[1];
-            w2 += e.step_x[2];
+    const int n = mode == MODE_GOURAUD ? 3 : f->attribute_count;
+    float w_base = t->iw[0], w_d1 = t->iw[1] - t->iw[0], w_d2 = t->iw[2] - t->iw[0];
+    float p_base[RENDER_MAX_ATTRIBUTES], p_d1[RENDER_MAX_ATTRIBUTES], p_d2[RENDER_MAX_ATTRIBUTES];
+    if (mode != MODE_FLAT)
+        for (int j = 0; j < n; j++) {
+            p_base[j] = t->a[j] * t->iw[0];
+            p_d1[j] = t->a[n + j] * t->iw[1] - p_base[j];
+            p_d2[j] = t->a[2 * n + j] * t->iw[2] - p_base[j];
         }
-        e.w[0] += e.step_y[0];
-        e.w[1] += e.step_y[1];
-        e.w[2] += e.step_y[2];
+    size_t fragments = 0;
+    for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
+             e.w[2] += e.step_y[2]) {
+        int begin, end;
+        row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        if (begin >= end)
+            continue;
+        fragments += (size_t)(end - begin);
+        int64_t w1 = e.w[1] + begin * e.step_x[1], w2 = e.w[2] + begin * e.step_x[2];
+        float *zrow = f->depth + (size_t)y * f->width + x0;
+        unsigned char *row = f->image->data + (size_t)y * f->image->stride;
+        for (int i = begin; i < end; i++, w1 += e.step_x[1], w2 += e.step_x[2]) {
+            float l1 = (float)w1 * ia, l2 = (float)w2 * ia;
+            float z = z0 + l1 * dz1 + l2 * dz2;
+            if (depth_test && !(z < zrow[i]))
+                continue;
+            zrow[i] = z;
+            int x = x0 + i;
+            if (mode == MODE_FLAT) {
+                if (rgba8)
+                    ((cg_rgba8 *)row)[x] = t->color8;
+                else
+                    store(f, row, x, t->color, rgba8);
+                continue;
+            }
+            /* Perspective-correct: attribute / w and 1 / w are affine on
+             * the screen; divide their interpolants. */
+            float r = 1 / (w_base + l1 * w_d1 + l2 * w_d2);
+            float v[RENDER_MAX_ATTRIBUTES];
+            if (mode == MODE_GOURAUD) {
+                v[0] = (p_base[0] + l1 * p_d1[0] + l2 * p_d2[0]) * r;
+                v[1] = (p_base[1] + l1 * p_d1[1] + l2 * p_d2[1]) * r;
+                v[2] = (p_base[2] + l1 * p_d1[2] + l2 * p_d2[2]) * r;
+            } else {
+                for (int j = 0; j < n; j++)
+                    v[j] = (p_base[j] + l1 * p_d1[j] + l2 * p_d2[j]) * r;
+            }
+            if (mode == MODE_GOURAUD) {
+                store(f, row, x, v, rgba8);
+            } else {
+                float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                float inv = len > 0 ? 1 / len : 0;
+                float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv}, c[3];
+                render_shade(&f->lighting, v + 3, normal, n > 6 ? v + 6 : t->color, c);
+                store(f, row, x, c, rgba8);
+            }
+        }
     }
     return fragments;
 }
 
+#define RASTER_CASE(mode)                                                                  \
+    (rgba8 ? (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 1)                     \
+                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 1))                    \
+           : (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 0)                     \
+                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 0)))
+
 size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int y0, int x1,
                      int y1, int depth_test)
 {
+    int rgba8 = f->image->format == CG_PIXEL_RGBA8;
     switch (f->shading) {
     case MODE_FLAT:
-        return depth_test ? raster_mode(f, t, x0, y0, x1, y1, MODE_FLAT, 1)
-                          : raster_mode(f, t, x0, y0, x1, y1, MODE_FLAT, 0);
+        return RASTER_CASE(MODE_FLAT);
     case MODE_GOURAUD:
-        return depth_test ? raster_mode(f, t, x0, y0, x1, y1, MODE_GOURAUD, 1)
-                          : raster_mode(f, t, x0, y0, x1, y1, MODE_GOURAUD, 0);
+        return RASTER_CASE(MODE_GOURAUD);
     default:
-        return depth_test ? raster_mode(f, t, x0, y0, x1, y1, MODE_PHONG, 1)
-                          : raster_mode(f, t, x0, y0, x1, y1, MODE_PHONG, 0);
+        return RASTER_CASE(MODE_PHONG);
     }
 }
 
@@ -126,6 +170,18 @@ static void vertex_stage(render_frame *f, size_t begin, size_t end)
             v->world[k] = (float)(f->model.m[k][0] * x + f->model.m[k][1] * y
                                   + f->model.m[k][2] * z + f->model.m[k][3]);
         v->outcode = render_outcode(v->c);
+        if (v->outcode == 0 && v->c[3] > 0) {
+            /* Projected and snapped once here for all the triangles that
+             * need no clipping (the clipped ones project the same way). */
+            clip_vertex cv;
+            screen_vertex s;
+            memcpy(cv.c, v->c, sizeof cv.c);
+            render_project(&cv, f->width, f->height, 0, &s);
+            v->sx = render_snap(s.x, f->width);
+            v->sy = render_snap(s.y, f->height);
+            v->sz = (float)s.z;
+            v->siw = (float)s.iw;
+        }
         if (f->shading == MODE_FLAT)
             continue;
         double n[3];
@@ -222,6 +278,16 @@ static void triangle_color(const render_frame *f, size_t i, float out[3])
     render_shade(&f->lighting, centre, normal, p0->color, out);
 }
 
+void render_finish_setup(const render_frame *f, setup_triangle *t, const float color[3])
+{
+    memcpy(t->color, color, sizeof t->color);
+    t->color8.r = render_encode(&f->r->encoder, color[0]);
+    t->color8.g = render_encode(&f->r->encoder, color[1]);
+    t->color8.b = render_encode(&f->r->encoder, color[2]);
+    t->color8.a = 255;
+}
+
+
 static void triangle_stage(render_frame *f, render_chunk *c, int painter)
 {
     const int n = f->attribute_count;
@@ -233,6 +299,40 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
         unsigned any = v[0]->outcode | v[1]->outcode | v[2]->outcode;
         if ((any & 0x40) || all) {
             c->rejected++;
+            continue;
+        }
+        if (!any && !painter && v[0]->c[3] > 0 && v[1]->c[3] > 0 && v[2]->c[3] > 0) {
+            /* Inside the frustum: set up from the snapped vertices; back
+             * faces leave before anything else is read. */
+            int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
+                           - (int64_t)(v[1]->sy - v[0]->sy) * (v[2]->sx - v[0]->sx);
+            if (area > 0 && f->cull) {
+                c->culled++;
+                continue;
+            }
+            render_corner corner[3];
+            for (int k = 0; k < 3; k++) {
+                corner[k].x = v[k]->sx;
+                corner[k].y = v[k]->sy;
+                corner[k].z = v[k]->sz;
+                corner[k].iw = v[k]->siw;
+                corner[k].a = v[k]->a;
+            }
+            const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
+            setup_triangle t;
+            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, &t);
+            if (result < 0) {
+                c->culled++;
+                continue;
+            }
+            if (result == 0) {
+                c->rejected++;
+                continue;
+            }
+            float color[3];
+            triangle_color(f, i, color);
+            render_finish_setup(f, &t, color);
+            emit_setup(f, c, &t);
             continue;
         }
         clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
@@ -259,8 +359,9 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             continue;
         }
         float color[3];
-        triangle_color(f, i, color);
+        int colored = 0;
         if (painter) {
+            triangle_color(f, i, color);
             /* Culling by the orientation of the whole polygon. */
             double area = 0;
             for (int k = 0; k < count; k++) {
@@ -279,16 +380,17 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
         for (int k = 1; k + 1 < count; k++) {
             setup_triangle t;
             int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->cull,
-                                      &t, NULL);
+                                      &t);
             if (result < 0)
                 culled = 1;
             if (result != 1)
                 continue;
-            memcpy(t.color, color, sizeof color);
-            t.color8.r = render_encode(&f->r->encoder, color[0]);
-            t.color8.g = render_encode(&f->r->encoder, color[1]);
-            t.color8.b = render_encode(&f->r->encoder, color[2]);
-            t.color8.a = 255;
+            if (!colored) {
+                /* Lit only once the triangle is known to be visible. */
+                triangle_color(f, i, color);
+                colored = 1;
+            }
+            render_finish_setup(f, &t, color);
             emit_setup(f, c, &t);
             emitted++;
         }
@@ -366,17 +468,28 @@ typedef struct worker {
 
 static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
 {
-    for (int y = y0; y < y1; y++) {
-        float *z = f->depth + (size_t)y * f->width;
-        unsigned char *row = f->image->data + (size_t)y * f->image->stride;
-        for (int x = x0; x < x1; x++) {
-            z[x] = INFINITY;
-            if (f->image->format == CG_PIXEL_RGBA8)
-                ((cg_rgba8 *)row)[x] = f->background8;
-            else
-                ((cg_rgbaf *)row)[x] = (cg_rgbaf){f->background[0], f->background[1],
-                                                  f->background[2], f->background[3]};
-        }
+    const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
+                                 f->background[3]};
+    size_t width = (size_t)(x1 - x0);
+    /* The first row by hand, the others copied from it. */
+    float *z0 = f->depth + (size_t)y0 * f->width + x0;
+    for (size_t x = 0; x < width; x++)
+        z0[x] = INFINITY;
+    if (f->image->format == CG_PIXEL_RGBA8) {
+        cg_rgba8 *row = cg_image_row_rgba8(f->image, y0) + x0;
+        for (size_t x = 0; x < width; x++)
+            row[x] = f->background8;
+    } else {
+        cg_rgbaf *row = cg_image_row_rgbaf(f->image, y0) + x0;
+        for (size_t x = 0; x < width; x++)
+            row[x] = background;
+    }
+    size_t pixel = f->image->format == CG_PIXEL_RGBA8 ? sizeof(cg_rgba8) : sizeof(cg_rgbaf);
+    const unsigned char *first = f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel;
+    for (int y = y0 + 1; y < y1; y++) {
+        memcpy(f->depth + (size_t)y * f->width + x0, z0, width * sizeof *z0);
+        memcpy(f->image->data + (size_t)y * f->image->stride + (size_t)x0 * pixel, first,
+               width * pixel);
     }
 }
 
@@ -461,6 +574,8 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular,
                                    o->shininess);
     l->material.specular = CG_SPECULAR_BLINN;
+    if (o->specular == 0)
+        l->material.shininess = 1; /* the term is zero anyway: spare its power */
     l->orthographic = camera->orthographic;
     l->eye[0] = (float)camera->eye.x;
     l->eye[1] = (float)camera->eye.y;
@@ -563,6 +678,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         r->depth_size = pixels;
     }
     f.depth = r->depth;
+    r->depth_width = f.width;
+    r->depth_height = f.height;
 
     /* Whole-object culling: the bounding box against the six planes. */
     unsigned all = 0x3f;

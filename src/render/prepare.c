@@ -159,8 +159,8 @@ static void corner_color(const cg_mesh *mesh, const cg_render_options *options, 
     cg_rgbaf c = options->color;
     if (mesh->colors)
         c = mesh->colors[mesh->face_indices[k]];
-    else if (mesh->face_colors)
-        c = mesh->face_colors[f];
+    else if (mesh->face_colors && mesh->face_colors[f].a > 0)
+        c = mesh->face_colors[f]; /* alpha 0: the file gives this face no colour */
     out[0] = c.r;
     out[1] = c.g;
     out[2] = c.b;
@@ -341,6 +341,33 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
 const float *cg_renderer_depth(const cg_renderer *renderer)
 {
     return renderer && renderer->depth_valid ? renderer->depth : NULL;
+}
+
+cg_status cg_renderer_depth_image(const cg_renderer *r, cg_image *image)
+{
+    if (!r || !r->depth_valid || !image || !image->data || image->width != r->depth_width
+        || image->height != r->depth_height)
+        return CG_EINVAL;
+    size_t pixels = (size_t)image->width * (size_t)image->height;
+    float lo = INFINITY, hi = -INFINITY;
+    for (size_t i = 0; i < pixels; i++)
+        if (isfinite(r->depth[i])) {
+            lo = r->depth[i] < lo ? r->depth[i] : lo;
+            hi = r->depth[i] > hi ? r->depth[i] : hi;
+        }
+    for (int y = 0; y < image->height; y++)
+        for (int x = 0; x < image->width; x++) {
+            float d = r->depth[(size_t)y * image->width + x];
+            uint8_t v = 0;
+            if (isfinite(d))
+                v = (uint8_t)(235 - (hi > lo ? 200 * (d - lo) / (hi - lo) : 0));
+            cg_rgba8 grey = {v, v, v, 255};
+            if (image->format == CG_PIXEL_RGBA8)
+                cg_image_set_rgba8(image, x, y, grey);
+            else
+                cg_image_set(image, x, y, cg_rgba8_to_linear(grey));
+        }
+    return CG_OK;
 }
 
 cg_render_stats cg_renderer_stats(const cg_renderer *renderer)

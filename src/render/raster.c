@@ -26,7 +26,14 @@ void render_project(const clip_vertex *v, int width, int height, int attribute_c
 /* Rounds to the 1/256 grid and clamps to the guard band. */
 static int32_t snap(double value, int size)
 {
-    double s = floor(value * SUBPIXEL + 0.5);
+    double s = value * SUBPIXEL + 0.5;
+    /* floor without a library call (NaN is not possible here). */
+    if (s > -4e9 && s < 4e9) {
+        double t = (double)(int64_t)s;
+        s = t > s ? t - 1 : t;
+    } else {
+        s = floor(s);
+    }
     double lo = -(double)GUARD_BAND * SUBPIXEL, hi = ((double)size + GUARD_BAND) * SUBPIXEL;
     if (!(s >= lo))
         s = lo;
@@ -41,32 +48,28 @@ static int64_t floor_div(int64_t a, int64_t b)
     return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
 }
 
-int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
-                 int width, int height, int attribute_count, int cull, setup_triangle *out,
-                 int *back)
+int32_t render_snap(double value, int size)
 {
-    const screen_vertex *v[3] = {a, b, c};
-    int32_t x[3], y[3];
-    for (int k = 0; k < 3; k++) {
-        x[k] = snap(v[k]->x, width);
-        y[k] = snap(v[k]->y, height);
-    }
+    return snap(value, size);
+}
+
+int render_setup_fixed(const render_corner *const v[3], int width, int height,
+                       int attribute_count, int cull, setup_triangle *out)
+{
+    int32_t x[3] = {v[0]->x, v[1]->x, v[2]->x}, y[3] = {v[0]->y, v[1]->y, v[2]->y};
     int64_t area = (int64_t)(x[1] - x[0]) * (y[2] - y[0]) - (int64_t)(y[1] - y[0]) * (x[2] - x[0]);
     /* The camera sees front faces counter-clockwise; on the y-down screen
      * that makes this edge function negative.  The rasterizer wants it
      * positive: front faces are turned around, back faces culled or turned. */
-    if (back)
-        *back = area > 0;
     if (area == 0)
         return 0;
     if (area > 0 && cull)
         return -1;
-    if (area < 0) {
-        const screen_vertex *t = v[1];
-        v[1] = v[2];
-        v[2] = t;
-        int32_t s = x[1]; x[1] = x[2]; x[2] = s;
-        s = y[1]; y[1] = y[2]; y[2] = s;
+    int order[3] = {0, 2, 1};
+    if (area > 0) {
+        order[1] = 1;
+        order[2] = 2;
+    } else {
         area = -area;
     }
     int32_t min_x = x[0], max_x = x[0], min_y = y[0], max_y = y[0];
@@ -88,11 +91,12 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
     if (x0 >= x1 || y0 >= y1)
         return 0;
     for (int k = 0; k < 3; k++) {
-        out->x[k] = x[k];
-        out->y[k] = y[k];
-        out->z[k] = (float)v[k]->z;
-        out->iw[k] = (float)v[k]->iw;
-        memcpy(&out->a[k * attribute_count], v[k]->a, sizeof(float) * (size_t)attribute_count);
+        const render_corner *c = v[order[k]];
+        out->x[k] = c->x;
+        out->y[k] = c->y;
+        out->z[k] = c->z;
+        out->iw[k] = c->iw;
+        memcpy(&out->a[k * attribute_count], c->a, sizeof(float) * (size_t)attribute_count);
     }
     out->box[0] = (int32_t)x0;
     out->box[1] = (int32_t)y0;
@@ -100,6 +104,27 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
     out->box[3] = (int32_t)y1;
     out->inverse_area = (float)(1.0 / (double)area);
     return 1;
+}
+
+void render_corner_from_screen(const screen_vertex *s, int width, int height,
+                               render_corner *out)
+{
+    out->x = snap(s->x, width);
+    out->y = snap(s->y, height);
+    out->z = (float)s->z;
+    out->iw = (float)s->iw;
+    out->a = s->a;
+}
+
+int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
+                 int width, int height, int attribute_count, int cull, setup_triangle *out)
+{
+    render_corner corners[3];
+    render_corner_from_screen(a, width, height, &corners[0]);
+    render_corner_from_screen(b, width, height, &corners[1]);
+    render_corner_from_screen(c, width, height, &corners[2]);
+    const render_corner *v[3] = {&corners[0], &corners[1], &corners[2]};
+    return render_setup_fixed(v, width, height, attribute_count, cull, out);
 }
 
 void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out)
@@ -161,7 +186,7 @@ cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_
     }
     for (int k = 1; k + 1 < n; k++) {
         setup_triangle t;
-        if (render_setup(&s[0], &s[k], &s[k + 1], width, height, 0, 0, &t, NULL) != 1)
+        if (render_setup(&s[0], &s[k], &s[k + 1], width, height, 0, 0, &t) != 1)
             continue;
         raster_edges e;
         render_edges_at(&t, t.box[0], t.box[1], &e);

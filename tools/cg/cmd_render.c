@@ -59,13 +59,14 @@ static cg_rgbaf linear(cg_rgba8 c)
 static int run(int argc, char **argv)
 {
     const char *mesh_path = NULL, *out_path = NULL;
-    int width = 800, height = 600, have_eye = 0, have_target = 0, algorithm = 0;
+    int width = 800, height = 600, have_eye = 0, have_target = 0, have_from = 0, algorithm = 0;
     long repeat = 0, threads = 1;
+    int output_depth = 0;
     cg_render_options o;
     cg_render_options_default(&o);
     o.frame_camera = 0;
     double fov = 45, ortho = 0, crease = 60;
-    cg_vec3 eye = {0, 0, 1}, target = {0, 0, 0}, up = {0, 1, 0};
+    cg_vec3 eye = {0, 0, 1}, target = {0, 0, 0}, up = {0, 1, 0}, from = {0, 0, 1};
     static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", "depth-sort"};
     static const char *const shadings[] = {"flat", "gouraud", "phong"};
     static const char *const culls[] = {"none", "back"};
@@ -92,6 +93,13 @@ static int run(int argc, char **argv)
             if (cli_parse_vec3(NAME, "--eye", v, &eye))
                 return CLI_USAGE;
             have_eye = 1;
+        } else if (cli_option_is(a, "--view-from")) {
+            VALUE();
+            if (cli_parse_vec3(NAME, "--view-from", v, &from))
+                return CLI_USAGE;
+            if (!(cg_vec3_length(from) > 0))
+                return cli_usage_error(NAME, "--view-from: the direction must not be zero");
+            have_from = 1;
         } else if (cli_option_is(a, "--target")) {
             VALUE();
             if (cli_parse_vec3(NAME, "--target", v, &target))
@@ -167,6 +175,8 @@ static int run(int argc, char **argv)
             o.edges = CG_EDGES_WIREFRAME;
         } else if (cli_option_is(a, "--hidden-line")) {
             o.edges = CG_EDGES_HIDDEN_LINE;
+        } else if (cli_option_is(a, "--output-depth")) {
+            output_depth = 1;
         } else if (cli_option_is(a, "--edges")) {
             o.edges = CG_EDGES_OVERLAY;
         } else if (cli_option_is(a, "--threads")) {
@@ -198,6 +208,8 @@ static int run(int argc, char **argv)
     }
     if (!mesh_path)
         return cli_usage_error(NAME, "expected a MESH file");
+    if (have_eye && have_from)
+        return cli_usage_error(NAME, "--eye and --view-from exclude each other");
     if (!out_path)
         return cli_usage_error(NAME, "expected -o OUT (.png, .ppm or .pgm)");
     if (cg_file_format_from_path(out_path) == CG_FILE_UNKNOWN)
@@ -240,7 +252,7 @@ static int run(int argc, char **argv)
     } else {
         if (have_target)
             camera.target = target;
-        camera.eye = cg_vec3_add(camera.target, cg_vec3_make(0, 0, 1));
+        camera.eye = cg_vec3_add(camera.target, from);
         if (bounded) {
             cg_camera_frame(&camera, lo, hi, aspect);
             if (have_target) {
@@ -303,6 +315,10 @@ static int run(int argc, char **argv)
     }
     if (status == CLI_OK && repeat > 0)
         fprintf(stderr, "frame: %.1f ms\n", cli_median(times, frames) * 1e3);
+    if (status == CLI_OK && output_depth) {
+        if (!renderer || cg_renderer_depth_image(renderer, image) != CG_OK)
+            status = cli_fail("render: --output-depth needs --algorithm zbuffer or painter");
+    }
     if (status == CLI_OK)
         status = cli_write_image(image, out_path);
     free(times);
@@ -321,6 +337,7 @@ const cg_command cg_command_render = {
     "Camera (default: looking along -z, placed so the whole mesh fills the view):\n"
     "  --size WxH            image size (default 800x600)\n"
     "  --eye X,Y,Z           camera position (then no automatic framing)\n"
+    "  --view-from X,Y,Z     direction from the mesh toward a framed camera (default 0,0,1)\n"
     "  --target X,Y,Z        point looked at (default: the centre of the mesh)\n"
     "  --up X,Y,Z            up direction (default 0,1,0)\n"
     "  --fov DEGREES         vertical field of view, perspective (default 45)\n"
@@ -346,6 +363,7 @@ const cg_command cg_command_render = {
     "  --wireframe           every edge, no faces\n"
     "  --hidden-line         visible edges only\n"
     "  --edges               shaded faces with their visible edges\n"
+    "  --output-depth        write the depth buffer (near light, far dark) instead\n"
     "  --threads N           worker threads, 1 to 64; the picture is the same for any N\n"
     "  --repeat N            render N frames after loading and print the median time\n"
     "                        on stderr as 'frame: 12.3 ms'\n"

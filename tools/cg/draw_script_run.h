@@ -22,6 +22,8 @@ typedef struct draw_script {
 /* Reads and tokenises a script ("-" for stdin); unknown commands are
  * reported here.  Returns 0, or prints the error and returns 1. */
 int draw_script_load(const char *path, draw_script *script);
+/* The same from a NUL-terminated text; name is used in messages. */
+int draw_script_parse(const char *name, const char *text, draw_script *script);
 void draw_script_free(draw_script *script);
 
 /* Runs every command on a fresh state (defaults: white background, black,

@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# cg mesh info / subdivide / repair: the output contract and bad input.
+# Usage: test_mesh.sh CG_BINARY SOURCE_DIR BUILD_DIR
+set -u
+cg="$1"
+src="$2"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+# value KEY FILE: the value of "KEY: value" in FILE
+value() { sed -n "s/^$1: //p" "$2" | head -1; }
+expect() { # expect FILE KEY VALUE
+  local got
+  got=$(value "$2" "$1")
+  [ "$got" = "$3" ] || fail "$1: $2 is '$got', expected '$3'"
+}
+
+cat > "$tmp/cube.obj" <<'EOF'
+v -1 -1 -1
+v 1 -1 -1
+v -1 1 -1
+v 1 1 -1
+v -1 -1 1
+v 1 -1 1
+v -1 1 1
+v 1 1 1
+f 1 3 4 2
+f 5 6 8 7
+f 1 2 6 5
+f 3 7 8 4
+f 1 5 7 3
+f 2 4 8 6
+EOF
+cat > "$tmp/tetra.obj" <<'EOF'
+v 1 1 1
+v 1 -1 -1
+v -1 1 -1
+v -1 -1 1
+f 1 2 3
+f 1 3 4
+f 1 4 2
+f 2 4 3
+EOF
+# a torus of 8 x 6 quads plus, as a second component, a tetrahedron
+awk 'BEGIN { n = 8; m = 6; pi = 3.14159265358979
+  for (i = 0; i < n; i++) for (j = 0; j < m; j++) {
+    u = 2 * pi * i / n; v = 2 * pi * j / m; r = 1 + 0.3 * cos(v)
+    printf("v %.6f %.6f %.6f\n", r * cos(u), r * sin(u), 0.3 * sin(v)) }
+  for (i = 0; i < n; i++) for (j = 0; j < m; j++) {
+    a = i * m + j; b = ((i + 1) % n) * m + j; c = ((i + 1) % n) * m + (j + 1) % m; d = i * m + (j + 1) % m
+    printf("f %d %d %d %d\n", a + 1, b + 1, c + 1, d + 1) }
+  print "v 5 5 5"; print "v 5 4 4"; print "v 4 5 4"; print "v 4 4 5"
+  print "f 49 50 51"; print "f 49 51 52"; print "f 49 52 50"; print "f 50 52 51" }' > "$tmp/mixed.obj"
+# two triangles meeting at one vertex, and two running along an edge the same way
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n' > "$tmp/bowtie.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nf 1 2 3\nf 1 2 4\n' > "$tmp/flipped.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' > "$tmp/nofaces.obj"
+
+# ---- info: every key of the contract, one "key: value" a line
+"$cg" mesh info "$tmp/cube.obj" > "$tmp/cube.txt" 2> "$tmp/err.txt" || fail "info cube exited $?"
+for key in vertices edges faces boundary_loops components euler_characteristic genus manifold \
+           oriented bounding_box_min bounding_box_max; do
+  grep -q "^$key: ." "$tmp/cube.txt" || fail "info: no '$key: value' line"
+done
+grep -v -q '^[a-z_]*: ' "$tmp/cube.txt" && fail "info: a line that is not 'key: value'"
+expect "$tmp/cube.txt" vertices 8
+expect "$tmp/cube.txt" edges 12
+expect "$tmp/cube.txt" faces 6
+expect "$tmp/cube.txt" boundary_loops 0
+expect "$tmp/cube.txt" components 1
+expect "$tmp/cube.txt" euler_characteristic 2
+expect "$tmp/cube.txt" genus 0
+expect "$tmp/cube.txt" manifold yes
+expect "$tmp/cube.txt" oriented yes
+expect "$tmp/cube.txt" bounding_box_min "-1 -1 -1"
+[ -s "$tmp/err.txt" ] && fail "info wrote to stderr without --repeat"
+
+"$cg" mesh info "$tmp/mixed.obj" > "$tmp/mixed.txt" || fail "info mixed exited $?"
+expect "$tmp/mixed.txt" genus mixed
+expect "$tmp/mixed.txt" genus_per_component "1 0"
+expect "$tmp/mixed.txt" components 2
+expect "$tmp/mixed.txt" euler_characteristic 2
+
+"$cg" mesh info "$tmp/bowtie.obj" > "$tmp/bowtie.txt" || fail "info bowtie exited $?"
+expect "$tmp/bowtie.txt" manifold no
+expect "$tmp/bowtie.txt" oriented yes
+"$cg" mesh info "$tmp/flipped.obj" > "$tmp/flipped.txt" || fail "info flipped exited $?"
+expect "$tmp/flipped.txt" manifold yes
+expect "$tmp/flipped.txt" oriented no
+
+# --repeat: medians on stderr in the contract's format
+"$cg" mesh info "$tmp/cube.obj" --repeat 3 > /dev/null 2> "$tmp/times.txt" || fail "--repeat exited $?"
+grep -Eq '^build: [0-9]+(\.[0-9]+)? ms$' "$tmp/times.txt" || fail "--repeat: no 'build: N ms' line"
+grep -Eq '^one-ring: [0-9]+(\.[0-9]+)? ms$' "$tmp/times.txt" || fail "--repeat: no 'one-ring: N ms' line"
+
+if [ -f "$src/data/meshes/bunny.obj" ]; then
+  "$cg" mesh info "$src/data/meshes/bunny.obj" > "$tmp/bunny.txt" || fail "info bunny exited $?"
+  expect "$tmp/bunny.txt" faces 3674
+  expect "$tmp/bunny.txt" genus 0
+  expect "$tmp/bunny.txt" manifold yes
+fi
+
+# ---- subdivide: counts worked by hand
+"$cg" mesh subdivide --loop 2 "$tmp/tetra.obj" "$tmp/tetra2.obj" || fail "subdivide --loop exited $?"
+"$cg" mesh info "$tmp/tetra2.obj" > "$tmp/t2.txt"
+expect "$tmp/t2.txt" vertices 34   # 4 -> 4 + 6 = 10 -> 10 + 24 = 34
+expect "$tmp/t2.txt" edges 96      # 6 -> 2*6 + 3*4 = 24 -> 2*24 + 3*16 = 96
+expect "$tmp/t2.txt" faces 64
+expect "$tmp/t2.txt" genus 0
+"$cg" mesh subdivide --catmull-clark 1 "$tmp/cube.obj" "$tmp/cube1.ply" || fail "subdivide --catmull-clark exited $?"
+"$cg" mesh info "$tmp/cube1.ply" > "$tmp/c1.txt"
+expect "$tmp/c1.txt" vertices 26
+expect "$tmp/c1.txt" edges 48
+expect "$tmp/c1.txt" faces 24
+"$cg" mesh subdivide --loop 1 "$tmp/cube.obj" "$tmp/no.obj" 2> "$tmp/err.txt" && fail "Loop on quads succeeded"
+grep -q "triangle" "$tmp/err.txt" || fail "Loop on quads: unclear message: $(cat "$tmp/err.txt")"
+[ -e "$tmp/no.obj" ] && fail "Loop on quads left an output file"
+
+# ---- repair: reorients and reports it; the result is oriented
+"$cg" mesh repair "$tmp/flipped.obj" "$tmp/fixed.obj" > "$tmp/repair.txt" || fail "repair exited $?"
+grep -q "reversed 1 face" "$tmp/repair.txt" || fail "repair did not report the reversal"
+"$cg" mesh info "$tmp/fixed.obj" > "$tmp/fixed.txt"
+expect "$tmp/fixed.txt" oriented yes
+"$cg" mesh repair "$tmp/bowtie.obj" "$tmp/bowtie2.obj" > "$tmp/repair.txt" || fail "repair bowtie exited $?"
+"$cg" mesh info "$tmp/bowtie2.obj" > "$tmp/b2.txt"
+expect "$tmp/b2.txt" manifold yes
+expect "$tmp/b2.txt" vertices 6
+
+# ---- bad input: clear one-line errors, non-zero exits, no crash
+"$cg" mesh info "$tmp/nofaces.obj" > /dev/null 2> "$tmp/err.txt"
+[ $? -eq 1 ] || fail "no faces: expected exit 1"
+grep -q "no faces" "$tmp/err.txt" || fail "no faces: message '$(cat "$tmp/err.txt")'"
+"$cg" mesh info "$tmp/missing.obj" > /dev/null 2>&1 && fail "missing file accepted"
+"$cg" mesh info > /dev/null 2>&1; [ $? -eq 2 ] || fail "no FILE: expected usage exit 2"
+"$cg" mesh info "$tmp/cube.obj" --repeat 0 > /dev/null 2>&1; [ $? -eq 2 ] || fail "--repeat 0 accepted"
+"$cg" mesh info "$tmp/cube.obj" --frobnicate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown option accepted"
+"$cg" mesh subdivide --loop -1 "$tmp/tetra.obj" "$tmp/x.obj" > /dev/null 2>&1; [ $? -eq 2 ] || fail "negative levels accepted"
+"$cg" mesh subdivide --loop 1 "$tmp/tetra.obj" "$tmp/x.off" > /dev/null 2>&1; [ $? -eq 2 ] || fail ".off output accepted"
+"$cg" mesh subdivide "$tmp/tetra.obj" "$tmp/x.obj" > /dev/null 2>&1; [ $? -eq 2 ] || fail "no scheme accepted"
+"$cg" mesh frobnicate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown action accepted"
+
+exit $failed

@@ -14,7 +14,7 @@
 #include "cg/clip.h"
 #include "cg/hemesh.h"
 #include "cg/render.h"
-#include "cg/trace.h"
 #include "cg/scene.h"
+#include "cg/trace.h"
 
 #endif

@@ -15,6 +15,14 @@ render_scene_overrides render_scene_no_overrides(void)
     return o;
 }
 
+int render_scene_option_given(int argc, char **argv, const char *name)
+{
+    for (int i = 1; i < argc; i++)
+        if (cli_option_is(argv[i], name))
+            return 1;
+    return 0;
+}
+
 int render_scene_is_scene(const char *path)
 {
     size_t n = strlen(path);

@@ -17,6 +17,9 @@ typedef struct render_scene_overrides {
 /* Nothing overridden. */
 render_scene_overrides render_scene_no_overrides(void);
 
+/* True when an option named name appears in argv (alone or as name=...). */
+int render_scene_option_given(int argc, char **argv, const char *name);
+
 /* True when path names a scene file (ends in .json). */
 int render_scene_is_scene(const char *path);
 

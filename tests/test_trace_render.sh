@@ -36,6 +36,10 @@ grep -Eq '^bvh build: [0-9.]+ ms$' "$work/err" && pass || fail "--stats prints t
 grep -Eq 'Mrays/s$' "$work/err" && pass || fail "--stats prints rays per second"
 expect 0 "depth 0, no shadows, floor" "$cg" trace-render "$bunny" -o "$work/d.png" $small --depth 0 --no-shadows --floor
 
+# A scene file, ray traced with the command line's size and samples.
+expect 0 "scene file" "$cg" trace-render "$src/examples/scenes/spheres.json" -o "$work/sc.png" --size 48x32 --spp 2
+[ "$(png_size "$work/sc.png")" = 48x32 ] && pass || fail "scene file: --size overrides the scene's"
+
 # cg render --algorithm raytrace is the same ray tracer.
 expect 0 "render raytrace" "$cg" render "$bunny" --algorithm raytrace -o "$work/rr.ppm" --size 64x48
 expect 0 "trace-render" "$cg" trace-render "$bunny" -o "$work/tr.ppm" --size 64x48 --quiet

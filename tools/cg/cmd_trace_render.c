@@ -28,12 +28,15 @@ const cg_command cg_command_trace_render = {
     "trace-render",
     "render a mesh or the classic scene by ray tracing",
     "usage: cg trace-render MESH -o OUT.png [options]\n"
+    "       cg trace-render SCENE.json -o OUT.png [options]\n"
     "       cg trace-render --scene spheres -o OUT.png [options]\n\n"
     "Whitted ray tracing through a BVH: shadows, mirror reflection, refraction with\n"
     "Fresnel; the mesh (OBJ, OFF, PLY, STL) or the built-in scene 'spheres' (glass\n"
     "and mirror spheres over a checkered plane, soft shadows from an area light).\n"
     "The options of 'cg render' mean the same here (and 'cg render --algorithm\n"
-    "raytrace' is this ray tracer with its default --spp 1 --depth 5).\n\n"
+    "raytrace' is this ray tracer with its default --spp 1 --depth 5).  A scene file\n"
+    "(docs/scene-format.md) is ray traced with its own camera, lights and\n"
+    "materials; --size, --shading, --threads, --spp, --depth and --repeat override it.\n\n"
     "  -o FILE              output image (.png, .ppm, .pgm)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --eye X,Y,Z          camera position (default: frames the whole mesh)\n"

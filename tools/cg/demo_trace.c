@@ -33,13 +33,13 @@ static int render(demo_context *context)
             "sphere, soft shadows from an area light, 4 stratified samples per pixel",
             "cg trace-render --scene spheres -o trace-spheres.png --size 480x320 --spp 4"))
         return 1;
-#ifdef CG_DATA_DIR
-    FILE *probe = fopen(CG_DATA_DIR "/meshes/bunny.obj", "rb");
+#ifdef CG_SOURCE_DIR
+    FILE *probe = fopen(CG_SOURCE_DIR "/data/meshes/bunny.obj", "rb");
     if (!probe)
         return 0; /* the mesh is not there (an installed tool): no picture */
     fclose(probe);
     raytrace_settings_default(&s);
-    s.input = CG_DATA_DIR "/meshes/bunny.obj";
+    s.input = CG_SOURCE_DIR "/data/meshes/bunny.obj";
     s.width = 400;
     s.height = 320;
     s.extra.samples = 4;

@@ -3,6 +3,7 @@
 #include "trace_command.h"
 
 #include "cli.h"
+#include "render_scene.h"
 #include "cg/color.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
@@ -50,6 +51,7 @@ int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
         VALUE();
         if (cli_parse_size(command, "--size", v, &s->width, &s->height))
             return -1;
+        s->have_size = 1;
     } else if (cli_option_is(arg, "--eye") || cli_option_is(arg, "--target")
                || cli_option_is(arg, "--up")) {
         int which = cli_option_is(arg, "--eye") ? 0 : cli_option_is(arg, "--target") ? 1 : 2;
@@ -111,11 +113,13 @@ int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
             cli_usage_error(command, "--shading: expected flat, gouraud or phong, got '%s'", v);
             return -1;
         }
+        s->have_shading = 1;
     } else if (cli_option_is(arg, "--threads")) {
         VALUE();
         if (cli_parse_long(command, "--threads", v, 1, 64, &n))
             return -1;
         o->threads = (int)n;
+        s->have_threads = 1;
     } else if (cli_option_is(arg, "--background") || cli_option_is(arg, "--color")) {
         int background = cli_option_is(arg, "--background");
         VALUE();
@@ -136,6 +140,8 @@ int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
         if (cli_parse_long(command, names[which], v, lo[which], hi[which], &n))
             return -1;
         *(which == 0 ? &s->repeat : which == 1 ? &s->extra.samples : &s->extra.depth) = (int)n;
+        s->have_samples |= which == 1;
+        s->have_depth |= which == 2;
     } else if (cli_option_is(arg, "--stats")) {
         s->stats = 1;
     } else if (cli_option_is(arg, "--no-shadows")) {
@@ -277,6 +283,28 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     return CLI_OK;
 }
 
+/* A scene file through render_scene.h, with the ray tracer. */
+static int run_scene(const raytrace_settings *s)
+{
+    render_scene_overrides o = render_scene_no_overrides();
+    o.algorithm = 2;
+    if (s->have_size) {
+        o.width = s->width;
+        o.height = s->height;
+    }
+    if (s->have_shading)
+        o.shading = s->render.shading == CG_SHADING_FLAT ? 0
+                    : s->render.shading == CG_SHADING_GOURAUD ? 1 : 2;
+    if (s->have_threads)
+        o.threads = s->render.threads;
+    if (s->have_samples)
+        o.samples = s->extra.samples;
+    if (s->have_depth)
+        o.depth = s->extra.depth;
+    o.repeat = s->repeat;
+    return render_scene_file(s->input, s->output, &o);
+}
+
 int raytrace_run(const char *command, const raytrace_settings *s)
 {
     if (!s->output)
@@ -284,6 +312,8 @@ int raytrace_run(const char *command, const raytrace_settings *s)
     if (cg_file_format_from_path(s->output) == CG_FILE_UNKNOWN)
         return cli_usage_error(command, "%s: unknown output format (expected .png, .ppm or .pgm)",
                                s->output);
+    if (s->input && !s->extra.classic_scene && render_scene_is_scene(s->input))
+        return run_scene(s);
     cg_image *image;
     int status = raytrace_render(command, s, &image);
     if (status != CLI_OK)

@@ -28,7 +28,9 @@ int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *o
 void render_raytrace_stats(const render_raytracer *tracer, double *build_seconds,
                            unsigned long long *rays, double *render_seconds);
 
-/* Everything `cg trace-render` is asked to do. */
+/* Everything `cg trace-render` is asked to do.  A scene file (.json) is
+ * rendered by render_scene.h with the ray tracer and the options given here
+ * (size, shading, threads, --spp, --depth, --repeat) taking precedence. */
 typedef struct raytrace_settings {
     const char *input;  /* mesh file, or NULL with extra.classic_scene */
     const char *output; /* -o */
@@ -40,6 +42,9 @@ typedef struct raytrace_settings {
     int stats;          /* --stats */
     int quiet;          /* --quiet: no progress */
     int have_background;
+    /* Which settings the command line gave (a scene file keeps its own
+     * for the others). */
+    int have_size, have_shading, have_threads, have_samples, have_depth;
     cg_render_options render; /* lights, ambient, shading, colours, threads */
     raytrace_extra extra;
 } raytrace_settings;

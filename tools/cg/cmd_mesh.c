@@ -23,8 +23,10 @@ static int load(const char *path, cg_mesh **mesh)
 static int build(const char *what, const cg_mesh *mesh, cg_hemesh **out, cg_hemesh_report *report)
 {
     cg_error err;
-    if (cg_hemesh_build(mesh, repair_flags, out, report, &err) != CG_OK)
+    if (cg_hemesh_build(mesh, repair_flags, out, report, &err) != CG_OK) {
+        cg_hemesh_report_clear(report);
         return cli_fail("mesh %s: %s", what, err.message);
+    }
     return CLI_OK;
 }
 

@@ -11,7 +11,10 @@
 #include "cg/curve.h"
 #include "cg/fill.h"
 #include "cg/mesh.h"
-#include "cg/hemesh.h"
 #include "cg/clip.h"
+#include "cg/hemesh.h"
+#include "cg/render.h"
+#include "cg/scene.h"
+#include "cg/trace.h"
 
 #endif

@@ -457,6 +457,8 @@ static void antialiased(void)
     /* Far away and huge: nothing visible, no hang. */
     CHECK(cg_draw_line_aa(image, -1e15, 3, 1e15, 5, white) == CG_OK);
     CHECK(cg_draw_line_aa(image, -1e300, -1e300, 1e300, 1e300, white) == CG_OK);
+    CHECK(cg_draw_circle_aa(image, 1e12, 5, 3, white) == CG_OK);
+    CHECK(cg_draw_circle_aa(image, 100, 100, 1e12, white) == CG_ERANGE);
     cg_image_free(image);
 }
 

@@ -252,6 +252,18 @@ static void edge_cases(void)
         CHECK_MSG(n == cases[i].count, "case %zu: %d pixels, expected %d", i, n, cases[i].count);
     }
     CHECK(cg_draw_line(NULL, 0, 0, 1, 1, white) == CG_EINVAL);
+    /* Float images get the same pixels. */
+    cg_image *f;
+    cg_image_create(&f, 16, 12, CG_PIXEL_RGBAF);
+    cg_image_clear_rgba8(image, black);
+    cg_draw_line(image, -3, 2, 19, 9, white);
+    cg_draw_line(f, -3, 2, 19, 9, white);
+    int same = 1;
+    for (int y = 0; y < 12; y++)
+        for (int x = 0; x < 16; x++)
+            same &= is_set(image, x, y) == (cg_image_get(f, x, y).r > 0.5f);
+    CHECK(same);
+    cg_image_free(f);
     cg_image_free(image);
 }
 

@@ -456,6 +456,72 @@ static void svg_paths(void)
     cg_path_free(path);
 }
 
+static int same_image(const cg_image *a, const cg_image *b)
+{
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            cg_rgbaf p = cg_image_get(a, x, y), q = cg_image_get(b, x, y);
+            if (fabsf(p.a - q.a) > 1e-6f)
+                return 0;
+        }
+    return 1;
+}
+
+/* Quadratic and cubic Beziers, flattened by the curve module: areas of a
+ * parabolic segment and of the four-cubic circle; the SVG smooth and
+ * relative forms draw the same shapes as the absolute ones. */
+static void curves(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_image *a, *b;
+    cg_image_create(&a, 64, 64, CG_PIXEL_RGBAF);
+    cg_image_create(&b, 64, 64, CG_PIXEL_RGBAF);
+    cg_paint paint = cg_paint_solid(white);
+    cg_error err;
+    /* Parabolic segment: chord 40, apex 20 above it (control 40 above):
+     * area 2/3 * 40 * 20. */
+    CHECK(cg_path_append_svg(path, "M 10 50 Q 30 10 50 50 Z", &err) == CG_OK);
+    CHECK(cg_fill_path(a, path, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK_NEAR(total_alpha(a), 2.0 / 3 * 40 * 20, 0.1 * 80 + quantization(a));
+    /* A circle of radius 25 from four cubics (k = 0.5523): pi r^2 within
+     * the approximation (about 3e-4 of the radius) and the flattening. */
+    double r = 25, k = 0.5522847498 * r;
+    cg_path_reset(path);
+    cg_path_move_to(path, 32 + r, 32);
+    cg_path_cubic_to(path, 32 + r, 32 + k, 32 + k, 32 + r, 32, 32 + r);
+    cg_path_cubic_to(path, 32 - k, 32 + r, 32 - r, 32 + k, 32 - r, 32);
+    cg_path_cubic_to(path, 32 - r, 32 - k, 32 - k, 32 - r, 32, 32 - r);
+    cg_path_cubic_to(path, 32 + k, 32 - r, 32 + r, 32 - k, 32 + r, 32);
+    cg_path_close(path);
+    cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
+    CHECK(cg_fill_path(a, path, CG_FILL_EVEN_ODD, &paint) == CG_OK);
+    CHECK_NEAR(total_alpha(a), CG_PI * r * r, 0.1 * 2 * CG_PI * r + quantization(a));
+    /* Smooth and relative forms. */
+    const char *pairs[][2] = {
+        {"M 8 40 C 8 10 30 10 30 40 C 30 70 56 70 56 40 Z", "M 8 40 c 0 -30 22 -30 22 0 s 26 30 26 0 z"},
+        {"M 8 40 Q 20 10 32 40 Q 44 70 56 40 Z", "m 8 40 q 12 -30 24 0 t 24 0 z"},
+        {"M 8 8 L 40 8 L 40 40 Z", "M 8 8 H 40 V 40 z"},
+    };
+    for (int i = 0; i < 3; i++) {
+        cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
+        cg_image_clear_rgba8(b, (cg_rgba8){0, 0, 0, 0});
+        cg_path_reset(path);
+        CHECK(cg_path_append_svg(path, pairs[i][0], &err) == CG_OK);
+        cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
+        cg_path_reset(path);
+        CHECK(cg_path_append_svg(path, pairs[i][1], &err) == CG_OK);
+        cg_fill_path(b, path, CG_FILL_NONZERO, &paint);
+        CHECK_MSG(same_image(a, b), "'%s' and '%s' differ", pairs[i][0], pairs[i][1]);
+        CHECK(total_alpha(a) > 100);
+    }
+    /* A curve with NaN control points is refused. */
+    CHECK(cg_path_cubic_to(path, NAN, 0, 1, 1, 2, 2) == CG_EINVAL);
+    cg_image_free(a);
+    cg_image_free(b);
+    cg_path_free(path);
+}
+
 /* Even-odd against non-zero on a pentagram; gradients; linear light. */
 static void rules_and_paints(void)
 {
@@ -527,6 +593,7 @@ int main(void)
     strokes();
     bad_strokes();
     svg_paths();
+    curves();
     rules_and_paints();
     return check_finish();
 }

@@ -1,6 +1,7 @@
 /* Flood fill and boundary fill against a breadth-first search over pixels. */
 #include "check.h"
 #include "cg/fill.h"
+#include "maze.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -128,43 +129,13 @@ static void random_images(void)
     CHECK_MSG(mismatches == 0, "%d of %d random fills differ from the BFS reference", mismatches, runs);
 }
 
-/* A perfect maze (randomised depth-first search) on a grid of cells. */
+/* A perfect maze on a grid of cells. */
 static cg_image *maze(check_rng *rng, int cells_x, int cells_y)
 {
-    int w = 2 * cells_x + 1, h = 2 * cells_y + 1;
     cg_image *im;
-    cg_image_create(&im, w, h, CG_PIXEL_RGBA8);
+    cg_image_create(&im, 2 * cells_x + 1, 2 * cells_y + 1, CG_PIXEL_RGBA8);
     cg_rgba8 wall = {0, 0, 0, 255}, floor_ = {255, 255, 255, 255};
-    cg_image_clear_rgba8(im, wall);
-    int n = cells_x * cells_y;
-    unsigned char *seen = calloc((size_t)n, 1);
-    int *stack = malloc(sizeof(int) * (size_t)n);
-    int top = 0;
-    stack[top++] = 0;
-    seen[0] = 1;
-    cg_image_set_rgba8(im, 1, 1, floor_);
-    while (top) {
-        int c = stack[top - 1], cx = c % cells_x, cy = c / cells_x;
-        int options[4], k = 0;
-        static const int d[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-        for (int i = 0; i < 4; i++) {
-            int nx = cx + d[i][0], ny = cy + d[i][1];
-            if (nx >= 0 && ny >= 0 && nx < cells_x && ny < cells_y && !seen[ny * cells_x + nx])
-                options[k++] = i;
-        }
-        if (!k) {
-            top--;
-            continue;
-        }
-        int i = options[check_rng_int(rng, 0, k - 1)];
-        int nx = cx + d[i][0], ny = cy + d[i][1];
-        seen[ny * cells_x + nx] = 1;
-        cg_image_set_rgba8(im, 2 * cx + 1 + d[i][0], 2 * cy + 1 + d[i][1], floor_);
-        cg_image_set_rgba8(im, 2 * nx + 1, 2 * ny + 1, floor_);
-        stack[top++] = ny * cells_x + nx;
-    }
-    free(seen);
-    free(stack);
+    maze_draw(im, cells_x, cells_y, check_rng_next(rng), 0, wall, floor_);
     return im;
 }
 

@@ -473,13 +473,13 @@ static void test_malformed(void)
 static void test_numbers(void)
 {
     check_rng rng = {0x5eed1234abcdULL};
-    enum { N = 3000 };
+    enum { N = 20000 };
     char *text = malloc((size_t)N * 3 * 48 + 64);
     double *expected = malloc(sizeof(double) * N * 3);
     size_t at = 0;
     for (int i = 0; i < N * 3; i++) {
         char number[40];
-        int form = (int)check_rng_int(&rng, 0, 5);
+        int form = (int)check_rng_int(&rng, 0, 7);
         double x = check_rng_range(&rng, -1, 1) * pow(10, (double)check_rng_int(&rng, -30, 30));
         switch (form) {
         case 0: snprintf(number, sizeof number, "%.17g", x); break;
@@ -487,7 +487,15 @@ static void test_numbers(void)
         case 2: snprintf(number, sizeof number, "%.9e", x); break;
         case 3: snprintf(number, sizeof number, "%lld", (long long)check_rng_int(&rng, -99999999, 99999999)); break;
         case 4: snprintf(number, sizeof number, "%.25g", x); break; /* beyond 19 digits */
-        default: snprintf(number, sizeof number, "%.3g", x * 1e280); break; /* huge / denormal */
+        case 5: snprintf(number, sizeof number, "%.3g", x * 1e280); break; /* huge / denormal */
+        case 6: /* 16 to 19 significant digits, the long-double path */
+            snprintf(number, sizeof number, "%.*e", (int)check_rng_int(&rng, 15, 18), x);
+            break;
+        default: /* a 19-digit integer with a decimal point somewhere */
+            snprintf(number, sizeof number, "%llu", (unsigned long long)(check_rng_next(&rng) >> 1));
+            memmove(number + 4, number + 3, strlen(number + 3) + 1);
+            number[3] = '.';
+            break;
         }
         expected[i] = strtod(number, NULL);
         at += (size_t)sprintf(text + at, i % 3 == 0 ? "v %s" : i % 3 == 2 ? " %s\n" : " %s", number);
@@ -642,6 +650,15 @@ static void test_round_trips(void)
         }
         cg_mesh_free(m);
     }
+    /* a new file gets the usual permissions (not mkstemp's 0600) */
+    {
+        mode_t mask = umask(022);
+        umask(mask);
+        char path[512];
+        snprintf(path, sizeof path, "%s/round.obj", temp_dir);
+        struct stat st;
+        CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == (0666 & ~mask));
+    }
     /* saving never leaves a partial file: an unwritable place fails cleanly, and a
      * mesh that does not validate is refused before anything is written */
     cg_mesh *m = random_mesh(&rng, 0);
@@ -707,11 +724,11 @@ static void test_prefixes(void)
     const char *texts[] = {
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n",
         "COFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n3 0 1 2 1 0 0\n",
-        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-        "endloop\nendfacet\nendsolid t\n",
+        ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+        ("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+         "endloop\nendfacet\nendsolid t\n"),
     };
     const char *names[] = {"p.obj", "p.off", "p.ply", "p.stl"};
     for (int i = 0; i < 4; i++) {

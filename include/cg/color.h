@@ -170,12 +170,14 @@ void cg_color_to_bytes(cg_color_model model, const double *value, uint8_t *bytes
 void cg_color_from_bytes(cg_color_model model, const uint8_t *bytes, double *value);
 
 /* n pixels of `channels` bytes (3 or 4: the 4th, alpha, is copied) from RGB
- * to a model or back.  Fast paths (table- and integer-based) for HSV, HSL and
- * Lab, exactly equal to cg_color_to_bytes / cg_color_from_bytes of the double
- * conversion for HSV and HSL, within 1 unit for Lab; the other models go
- * through double.  CMYK is not available here (4 components).  in and out may
- * be the same buffer.  CG_EINVAL for CMYK, an unknown model or channels not
- * 3 or 4. */
+ * to a model or back.  Fast SIMD-friendly paths for RGB->HSV, HSV->RGB,
+ * RGB->HSL and RGB->Lab; the others go through double per pixel.  HSV and HSL
+ * results are exactly the rounding (half up) of the exact rational value of
+ * the byte encodings above, which is also what the double conversion gives
+ * except on exact ties (k + 1/2), where double rounding may pick either
+ * neighbour; Lab is within 1 unit of the double conversion (99.9 % equal).
+ * CMYK is not available here (4 components).  in and out may be the same
+ * buffer.  CG_EINVAL for CMYK, an unknown model or channels not 3 or 4. */
 cg_status cg_rgb8_to_model8(cg_color_model model, const uint8_t *in, uint8_t *out, size_t n,
                             int channels);
 cg_status cg_model8_to_rgb8(cg_color_model model, const uint8_t *in, uint8_t *out, size_t n,

@@ -84,7 +84,8 @@ cg_status cg_draw_ellipse_arc(cg_image *image, int cx, int cy, int rx, int ry, d
 /* Anti-aliased circle and ellipse one pixel wide, centred on an image-plane
  * point: each pixel gets coverage max(0, 1 - |d|) where d is the distance of
  * its centre from the real curve (for ellipses, the first-order estimate
- * F / |grad F|).  Blended in linear light. */
+ * F / |grad F|).  Blended in linear light.  Radii up to 1e9 (CG_ERANGE
+ * beyond, unless the ring misses the image). */
 cg_status cg_draw_circle_aa(cg_image *image, double cx, double cy, double r, cg_rgba8 color);
 cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, double ry,
                              cg_rgba8 color);
@@ -127,7 +128,8 @@ typedef struct cg_line_step {
 
 /* Calls step(user, &s) for every pixel of the line, in drawing order, and
  * fills the octant description: *dx, *dy (first-octant values), *de, *dne.
- * Any out-pointer may be NULL.  A non-zero callback result stops the walk. */
+ * Any out-pointer may be NULL, and step too (only the description is
+ * filled then).  A non-zero callback result stops the walk. */
 cg_status cg_line_trace(int x0, int y0, int x1, int y1,
                         int (*step)(void *user, const cg_line_step *s), void *user,
                         long long *dx, long long *dy, long long *de, long long *dne);

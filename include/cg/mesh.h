@@ -30,7 +30,8 @@ typedef struct cg_mesh {
     size_t face_count;
     uint32_t *face_offsets;  /* face_count + 1; face_offsets[0] == 0 */
     uint32_t *face_indices;  /* face_offsets[face_count] corners */
-    cg_rgbaf *face_colors;   /* face_count diffuse colours (OBJ usemtl), or NULL */
+    cg_rgbaf *face_colors;   /* face_count diffuse colours (OBJ usemtl, PLY, OFF), or NULL;
+                                alpha 0 marks a face the file gives no colour */
 } cg_mesh;
 
 /* Which optional arrays cg_mesh_create allocates. */

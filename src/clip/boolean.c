@@ -33,6 +33,7 @@
 #include "internal.h"
 
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -958,6 +959,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.use_input_lines = pass < 8;
         if (!run_sweep(&s))
             break;
+#ifdef CLIP_DEBUG
+        fprintf(stderr, "pass %d: %zu edges, %zu splits, %zu scanlines\n", pass, g->ne, g->ns, s.nys);
+#endif
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;

@@ -1,5 +1,10 @@
 /* sRGB transfer curves. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("no-trapping-math") /* let selects become blends */
+#endif
+
 #include "cg/color.h"
+#include "internal.h"
 #include "srgb_tables.h"
 
 double cg_srgb_to_linear(double encoded)
@@ -49,10 +54,25 @@ void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
         out[i] = cg_srgb_decode_table[in[i]];
 }
 
+/* The same as encode_one without branches, for SIMD: at most one threshold
+ * lies in a bucket (checked when the table was made), so one comparison
+ * settles the code. */
+CG_SIMD_CLONES static void encode_block(const float *restrict in, uint8_t *restrict out, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        float x = in[i];
+        x = x > 0 ? x : 0; /* also NaN */
+        x = x < 1 ? x : 1;
+        int code = cg_srgb_encode_start[(int)(x * 4096.0f)];
+        int index = code < 255 ? code : 254;
+        code += x >= cg_srgb_threshold_table[index]; /* at 255 this gives 256 */
+        out[i] = (uint8_t)(code < 255 ? code : 255);
+    }
+}
+
 void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
 {
-    for (size_t i = 0; i < n; i++)
-        out[i] = encode_one(in[i]);
+    encode_block(in, out, n);
 }
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)

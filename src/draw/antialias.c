@@ -17,11 +17,14 @@ static int finite4(double a, double b, double c, double d)
     return isfinite(a) && isfinite(b) && isfinite(c) && isfinite(d);
 }
 
-static void cover(const cg_painter *painter, int swap, long long u, long long v, double c)
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* floor for the finite values used here (well inside the long long range). */
+static inline long long floor_ll(double v)
 {
-    long long x = swap ? v : u, y = swap ? u : v;
-    if (cg_painter_visible(painter, x, y))
-        cg_painter_cover(painter, (int)x, (int)y, (float)c);
+    long long i = (long long)v;
+    return (double)i > v ? i - 1 : i;
 }
 
 static void line_aa(const cg_painter *painter, double x0, double y0, double x1, double y1)
@@ -36,35 +39,49 @@ static void line_aa(const cg_painter *painter, double x0, double y0, double x1, 
     if (!(du > 0))
         return; /* zero length: no area */
     double m = (v1 - v0) / du, h = sqrt(1 + m * m);
-    double umax = swap ? painter->image->height : painter->image->width;
-    double vmax = swap ? painter->image->width : painter->image->height;
+    long long umax = swap ? painter->image->height : painter->image->width;
+    long long vmax = swap ? painter->image->width : painter->image->height;
     /* Columns where the band is within the image's extent along v too. */
-    double lo = fmax(u0, 0), hi = fmin(u1, umax);
+    double lo = max2(u0, 0), hi = min2(u1, (double)umax);
     if (m != 0) {
-        double ua = u0 + (-h - v0) / m, ub = u0 + (vmax + h - v0) / m;
+        double ua = u0 + (-h - v0) / m, ub = u0 + ((double)vmax + h - v0) / m;
         if (ua > ub) {
             double t = ua; ua = ub; ub = t;
         }
-        lo = fmax(lo, ua - 1);
-        hi = fmin(hi, ub + 1);
-    } else if (v0 + h < 0 || v0 - h > vmax) {
+        lo = max2(lo, ua - 1);
+        hi = min2(hi, ub + 1);
+    } else if (v0 + h < 0 || v0 - h > (double)vmax) {
         return;
     }
     if (!(lo < hi))
         return;
-    long long c0 = (long long)floor(lo), c1 = (long long)ceil(hi) - 1;
+    long long c0 = floor_ll(lo), c1 = floor_ll(hi);
+    if ((double)c1 == hi)
+        c1--;
+    cg_cover_batch batch;
+    batch.painter = painter;
+    batch.count = 0;
+    double half = 0.5 * h;
     for (long long c = c0; c <= c1; c++) {
-        double a = fmax((double)c, u0), b = fmin((double)c + 1, u1);
-        if (!(b > a))
-            continue;
-        double w = b - a, uc = 0.5 * (a + b);
-        double vc = v0 + m * (uc - u0), top = vc - 0.5 * h, bottom = vc + 0.5 * h;
-        for (long long r = (long long)floor(top); r <= (long long)floor(bottom); r++) {
-            double overlap = fmin(bottom, (double)r + 1) - fmax(top, (double)r);
-            if (overlap > 0)
-                cover(painter, swap, c, r, overlap * w);
+        double a = (double)c, b = a + 1, w = 1;
+        if (a < u0 || b > u1) { /* an end column: only part of it is covered */
+            a = max2(a, u0);
+            b = min2(b, u1);
+            if (!(b > a))
+                continue;
+            w = b - a;
         }
+        double top = v0 + m * (0.5 * (a + b) - u0) - half;
+        long long r = floor_ll(top);
+        /* The band [top, top + h] is at most sqrt(2) tall: rows r, r+1, r+2. */
+        double first = min2((double)(r + 1) - top, h), rest = h - first;
+        double second = min2(rest, 1), third = rest - second;
+        double cover[3] = {first * w, second * w, third * w};
+        for (int k = 0; k < 3; k++, r++)
+            if (cover[k] > 0 && r >= 0 && r < vmax)
+                cg_cover_add(&batch, (int)(swap ? r : c), (int)(swap ? c : r), (float)cover[k]);
     }
+    cg_cover_flush(&batch);
 }
 
 cg_status cg_draw_line_aa(cg_image *image, double x0, double y0, double x1, double y1,
@@ -102,6 +119,9 @@ static void ring_aa(const cg_painter *painter, double cx, double cy, double rx, 
     const cg_image *image = painter->image;
     double ox = rx + 1, oy = ry + 1, ix = rx - 1, iy = ry - 1;
     double top = fmax(floor(cy - oy), 0), bottom = fmin(ceil(cy + oy), image->height - 1.0);
+    cg_cover_batch batch;
+    batch.painter = painter;
+    batch.count = 0;
     for (double row = top; row <= bottom; row++) {
         double dy = row + 0.5 - cy;
         if (fabs(dy) >= oy)
@@ -123,19 +143,20 @@ static void ring_aa(const cg_painter *painter, double cx, double cy, double rx, 
             for (double col = a; col <= b; col++) {
                 double dx = col + 0.5 - cx, d;
                 if (rx == ry) {
-                    d = hypot(dx, dy) - rx;
+                    d = sqrt(dx * dx + dy * dy) - rx;
                 } else {
                     double fx = dx / rx, fy = dy / ry;
                     double f = fx * fx + fy * fy - 1;
-                    double gx = 2 * fx / rx, gy = 2 * fy / ry, g = hypot(gx, gy);
+                    double gx = 2 * fx / rx, gy = 2 * fy / ry, g = sqrt(gx * gx + gy * gy);
                     d = g > 0 ? f / g : -fmin(rx, ry);
                 }
                 double c = 1 - fabs(d);
                 if (c > 0)
-                    cg_painter_cover(painter, (int)col, (int)row, (float)c);
+                    cg_cover_add(&batch, (int)col, (int)row, (float)c);
             }
         }
     }
+    cg_cover_flush(&batch);
 }
 
 cg_status cg_draw_circle_aa(cg_image *image, double cx, double cy, double r, cg_rgba8 color)
@@ -148,7 +169,11 @@ cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, d
 {
     if (!image || !image->data || !finite4(cx, cy, rx, ry) || rx < 0 || ry < 0)
         return CG_EINVAL;
-    if (rx > 1e7 || ry > 1e7 || fabs(cx) > 1e9 || fabs(cy) > 1e9)
+    /* Nothing to do when the ring misses the image. */
+    if (cx + rx + 1 < 0 || cy + ry + 1 < 0 || cx - rx - 1 > image->width
+        || cy - ry - 1 > image->height)
+        return CG_OK;
+    if (rx > 1e9 || ry > 1e9)
         return CG_ERANGE;
     cg_painter painter;
     cg_painter_init(&painter, image, color);

@@ -53,6 +53,45 @@ void cg_painter_span(const cg_painter *painter, int x0, int x1, int y);
  * (x, y), which must be inside the image. */
 void cg_painter_cover(const cg_painter *painter, int x, int y, float coverage);
 
+/* Coverage blending in batches: the sRGB decoding and encoding of many
+ * opaque RGBA8 pixels is done in one pass each.  Pixels must be inside the
+ * image and distinct within a batch; others formats and translucent pixels
+ * are blended at once. */
+enum { CG_COVER_BATCH = 256 };
+typedef struct cg_cover_batch {
+    const cg_painter *painter;
+    int count;
+    uint8_t *pixel[CG_COVER_BATCH];
+    float alpha[CG_COVER_BATCH];
+} cg_cover_batch;
+
+void cg_cover_flush(cg_cover_batch *batch);
+static inline void cg_cover_add(cg_cover_batch *batch, int x, int y, float coverage)
+{
+    const cg_painter *painter = batch->painter;
+    cg_image *image = painter->image;
+    if (!(coverage > 0))
+        return;
+    if (image->format != CG_PIXEL_RGBA8) {
+        cg_painter_cover(painter, x, y, coverage);
+        return;
+    }
+    uint8_t *d = image->data + (size_t)y * image->stride + (size_t)x * 4;
+    if (d[3] != 255) {
+        cg_painter_cover(painter, x, y, coverage);
+        return;
+    }
+    float a = painter->linear.a * (coverage < 1 ? coverage : 1);
+    if (a >= 1) {
+        memcpy(d, &painter->packed, 4);
+        return;
+    }
+    batch->pixel[batch->count] = d;
+    batch->alpha[batch->count] = a;
+    if (++batch->count == CG_COVER_BATCH)
+        cg_cover_flush(batch);
+}
+
 /* The Bresenham line with the options polylines need: skip_first leaves out
  * the pixel (x0, y0) (already drawn as the end of the previous segment). */
 void cg_draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,

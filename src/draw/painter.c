@@ -27,9 +27,23 @@ void cg_painter_cover(const cg_painter *painter, int x, int y, float coverage)
 {
     if (!(coverage > 0))
         return;
+    cg_image *image = painter->image;
     cg_rgbaf c = painter->linear;
     c.a *= coverage < 1 ? coverage : 1;
-    cg_image_blend(painter->image, x, y, c);
+    if (image->format == CG_PIXEL_RGBA8) {
+        uint8_t *d = image->data + (size_t)y * image->stride + (size_t)x * 4;
+        if (d[3] == 255) {
+            /* Over an opaque pixel source-over is a plain mix in linear light. */
+            float dst[3], out[3];
+            cg_srgb8_decode(d, dst, 3);
+            out[0] = c.r * c.a + dst[0] * (1 - c.a);
+            out[1] = c.g * c.a + dst[1] * (1 - c.a);
+            out[2] = c.b * c.a + dst[2] * (1 - c.a);
+            cg_srgb8_encode(out, d, 3);
+            return;
+        }
+    }
+    cg_image_blend(image, x, y, c);
 }
 
 long long cg_isqrt(long long n)
@@ -42,4 +56,28 @@ long long cg_isqrt(long long n)
     while ((cg_wide)(r + 1) * (r + 1) <= n)
         r++;
     return r;
+}
+
+void cg_cover_flush(cg_cover_batch *batch)
+{
+    int n = batch->count;
+    if (n == 0)
+        return;
+    uint8_t bytes[CG_COVER_BATCH * 3] = {0};
+    float linear[CG_COVER_BATCH * 3];
+    for (int i = 0; i < n; i++)
+        memcpy(bytes + 3 * i, batch->pixel[i], 3);
+    cg_srgb8_decode(bytes, linear, (size_t)n * 3);
+    cg_rgbaf c = batch->painter->linear;
+    for (int i = 0; i < n; i++) {
+        float a = batch->alpha[i], keep = 1 - a;
+        float *l = linear + 3 * i;
+        l[0] = c.r * a + l[0] * keep;
+        l[1] = c.g * a + l[1] * keep;
+        l[2] = c.b * a + l[2] * keep;
+    }
+    cg_srgb8_encode(linear, bytes, (size_t)n * 3);
+    for (int i = 0; i < n; i++)
+        memcpy(batch->pixel[i], bytes + 3 * i, 3);
+    batch->count = 0;
 }

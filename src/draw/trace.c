@@ -5,8 +5,6 @@ cg_status cg_line_trace(int x0, int y0, int x1, int y1,
                         int (*step)(void *user, const cg_line_step *s), void *user,
                         long long *dx, long long *dy, long long *de, long long *dne)
 {
-    if (!step)
-        return CG_EINVAL;
     cg_line_frame l;
     cg_line_frame_make(x0, y0, x1, y1, &l);
     long long e = 2 * l.dv, ne = 2 * (l.dv - l.du), f = 2 * l.dv - l.du;
@@ -18,6 +16,8 @@ cg_status cg_line_trace(int x0, int y0, int x1, int y1,
         *de = e;
     if (dne)
         *dne = ne;
+    if (!step)
+        return CG_OK;
     long long u = l.u0, v = l.v0;
     cg_line_step s = {0, 0, "start", f, f};
     for (long long k = 0; k <= l.du; k++) {

@@ -120,9 +120,40 @@ cg_status fill_aa_add_polylines(struct cg_rasterizer *r, const fill_polylines *s
     return CG_OK;
 }
 
+/* A bit per cell says which cells of a row were touched, so that a row is
+ * swept in time proportional to its touched cells: the pixels between them
+ * have constant coverage and are painted as spans. */
+static inline void mark_cells(uint64_t *bits, int a, int b)
+{
+    int wa = a >> 6, wb = b >> 6;
+    uint64_t ma = ~0ULL << (a & 63), mb = ~0ULL >> (63 - (b & 63));
+    if (wa == wb) {
+        bits[wa] |= ma & mb;
+        return;
+    }
+    bits[wa] |= ma;
+    for (int w = wa + 1; w < wb; w++)
+        bits[w] = ~0ULL;
+    bits[wb] |= mb;
+}
+
+static inline int lowest_bit(uint64_t m)
+{
+#if defined(__GNUC__)
+    return __builtin_ctzll(m);
+#else
+    int n = 0;
+    while (!(m & 1)) {
+        m >>= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
 /* Adds the part of a line within one row: x from xa to xb (relative to the
  * row's first cell), signed height d. */
-static inline void deposit_row(float *row, double xa, double xb, double d)
+static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d)
 {
     if (xa > xb) {
         double t = xa;
@@ -132,6 +163,7 @@ static inline void deposit_row(float *row, double xa, double xb, double d)
     if (xa < 0)
         xa = 0;
     int c0 = (int)xa, c1 = (int)xb;
+    mark_cells(touched, c0, c1 + 1);
     if (c0 == c1) {
         double fx = 0.5 * (xa + xb) - c0;
         row[c0] += (float)(d * (1 - fx));
@@ -152,8 +184,8 @@ static inline void deposit_row(float *row, double xa, double xb, double d)
 }
 
 /* Adds the part of line l within rows [band_top, band_bottom). */
-static void deposit_line(float *accumulation, size_t stride, int band_top, int band_bottom,
-                         double origin_x, const fill_line *l)
+static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
+                         int band_top, int band_bottom, double origin_x, const fill_line *l)
 {
     double x0 = l->x0 - origin_x, y0 = l->y0, x1 = l->x1 - origin_x, y1 = l->y1, sign = 1;
     if (y0 > y1) {
@@ -170,10 +202,73 @@ static void deposit_line(float *accumulation, size_t stride, int band_top, int b
     for (; row < row_end; row++) {
         double yb = row + 1 < ye ? row + 1 : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
-        deposit_row(accumulation + (size_t)(row - band_top) * stride, xa, xb, sign * (yb - ya));
+        size_t k = (size_t)(row - band_top);
+        deposit_row(accumulation + k * stride, touched + k * blocks, xa, xb, sign * (yb - ya));
         xa = xb;
         ya = yb;
     }
+}
+
+static inline int coverage_of(float acc, cg_fill_rule rule)
+{
+    float a = fabsf(acc);
+    if (rule == CG_FILL_EVEN_ODD && a > 1) {
+        a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
+        if (a > 1)
+            a = 2 - a;
+    }
+    return a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
+}
+
+/* Paints x0 .. x1 - 1 of row y with constant coverage c. */
+static void constant_span(const fill_painter *painter, int y, int x0, int x1, int c,
+                          uint8_t *cover)
+{
+    if (x1 <= x0 || c == 0)
+        return;
+    if (c == 255) {
+        fill_painter_span(painter, y, x0, x1 - x0, NULL);
+        return;
+    }
+    memset(cover, c, (size_t)(x1 - x0));
+    fill_painter_span(painter, y, x0, x1 - x0, cover);
+}
+
+/* Sums one row of the accumulation buffer into coverage and paints it,
+ * clearing the cells and bits behind it.  Runs of touched cells are
+ * painted with their own coverage, the gaps between them as spans of the
+ * coverage left by the run before. */
+static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
+                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+{
+    float acc = 0;
+    int c = 0, run_start = 0, run_end = 0;
+    for (size_t w = 0; w < words; w++) {
+        uint64_t m = touched[w];
+        if (!m)
+            continue;
+        touched[w] = 0;
+        while (m) {
+            int x = (int)(w << 6) + lowest_bit(m);
+            m &= m - 1;
+            if (x >= width) { /* deposits right of the last pixel */
+                row[x] = 0;
+                continue;
+            }
+            if (x != run_end) {
+                fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
+                constant_span(painter, y, origin_x + run_end, origin_x + x, c, cover);
+                run_start = x;
+            }
+            acc += row[x];
+            row[x] = 0;
+            c = coverage_of(acc, rule);
+            cover[x - run_start] = (uint8_t)c;
+            run_end = x + 1;
+        }
+    }
+    fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
+    constant_span(painter, y, origin_x + run_end, origin_x + width, c, cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
@@ -208,15 +303,26 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     int band_count = (bottom - top + band - 1) / band;
     if (draw_width <= 0 || band_count <= 0)
         return CG_OK;
+    if (band > bottom - top)
+        band = bottom - top;
+    size_t blocks = (stride + 63) >> 6; /* 64-bit words of touched bits per row */
+    /* The accumulation cells and block flags are all zero between calls:
+     * rendering clears what it reads.  Only new memory needs clearing. */
+    size_t cells_before = r->accumulation_capacity, flags_before = r->touched_capacity;
     if (!fill_reserve((void **)&r->accumulation, &r->accumulation_capacity, stride * (size_t)band,
                       sizeof *r->accumulation)
+        || !fill_reserve((void **)&r->touched, &r->touched_capacity, blocks * (size_t)band,
+                         sizeof *r->touched)
         || !fill_reserve((void **)&r->cover, &r->cover_capacity, stride, 1)
         || !fill_reserve((void **)&r->order, &r->order_capacity,
                          r->line_count + (size_t)band_count + 1, sizeof *r->order)
         || !fill_reserve((void **)&r->active, &r->active_capacity, r->line_count,
                          sizeof *r->active))
         return CG_ENOMEM;
-    memset(r->accumulation, 0, stride * (size_t)band * sizeof *r->accumulation);
+    if (r->accumulation_capacity != cells_before)
+        memset(r->accumulation, 0, r->accumulation_capacity * sizeof *r->accumulation);
+    if (r->touched_capacity != flags_before)
+        memset(r->touched, 0, r->touched_capacity * sizeof *r->touched);
     /* Counting sort of the lines by the band of their top. */
     size_t *first = r->order + r->line_count; /* band_count + 1 counters */
     memset(first, 0, ((size_t)band_count + 1) * sizeof *first);
@@ -249,38 +355,17 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         size_t kept = 0;
         for (size_t i = 0; i < active_count; i++) {
             const fill_line *l = &r->lines[r->active[i]];
-            deposit_line(r->accumulation, stride, band_top, band_bottom, origin_x, l);
+            deposit_line(r->accumulation, r->touched, stride, blocks, band_top, band_bottom,
+                         origin_x, l);
             double ymax = l->y0 > l->y1 ? l->y0 : l->y1;
             if (ymax > band_bottom)
                 r->active[kept++] = r->active[i];
         }
         active_count = kept;
         for (int y = band_top; y < band_bottom; y++) {
-            float *row = r->accumulation + (size_t)(y - band_top) * stride;
-            uint8_t *cover = r->cover;
-            float acc = 0;
-            int lo = draw_width, hi = -1;
-            for (int x = 0; x < draw_width; x++) {
-                acc += row[x];
-                row[x] = 0;
-                float a = fabsf(acc);
-                if (rule == CG_FILL_EVEN_ODD) {
-                    a -= 2.0f * floorf(a * 0.5f);
-                    if (a > 1)
-                        a = 2 - a;
-                }
-                int c = a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
-                cover[x] = (uint8_t)c;
-                if (c) {
-                    if (x < lo)
-                        lo = x;
-                    hi = x;
-                }
-            }
-            for (size_t x = (size_t)draw_width; x < stride; x++)
-                row[x] = 0;
-            if (hi >= lo)
-                fill_painter_span(&painter, y, origin_x + lo, hi - lo + 1, cover + lo);
+            size_t k = (size_t)(y - band_top);
+            render_row(&painter, r->accumulation + k * stride, r->touched + k * blocks, draw_width,
+                       blocks, y, origin_x, rule, r->cover);
         }
     }
     return CG_OK;

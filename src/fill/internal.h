@@ -67,7 +67,7 @@ typedef struct fill_painter {
     uint32_t encoded;
     int opaque;
     /* gradients */
-    double gx, gy, gdx, gdy, gc; /* linear: t = gx * x + gy * y + gc */
+    double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
     cg_rgbaf ramp[256];
 } fill_painter;
@@ -104,6 +104,8 @@ struct cg_rasterizer {
     int clip_width, clip_height;
     float *accumulation;
     size_t accumulation_capacity;
+    uint64_t *touched; /* a bit per accumulation cell */
+    size_t touched_capacity;
     uint8_t *cover;
     size_t cover_capacity;
     size_t *order;
@@ -137,6 +139,15 @@ static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
     while (v >= r->threshold[c])
         c++;
     return (uint8_t)c;
+}
+
+/* The same for v known to be in [0, 1] (a blend of such values; tiny
+ * rounding outside is harmless): one table look-up and one comparison,
+ * as a table step (1/4096) is smaller than the smallest code step. */
+static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
+{
+    int c = r->encode[(int)(v * 4096.0f)];
+    return (uint8_t)(c + (v >= r->threshold[c]));
 }
 
 /* Grows *array (of element size) to hold at least need elements. */

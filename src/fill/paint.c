@@ -130,7 +130,12 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
 {
     if (!paint)
         return CG_EINVAL;
-    memset(p, 0, sizeof *p);
+    /* Field by field: the ramp (4 KiB) is only written for gradients. */
+    p->r = p->g = p->b = p->a = 0;
+    p->encoded = 0;
+    p->opaque = 0;
+    p->gx = p->gy = p->gc = 0;
+    p->cx = p->cy = p->inv_radius = 0;
     p->image = image;
     p->tables = r;
     p->type = paint->type;
@@ -176,10 +181,10 @@ static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, f
                           float as)
 {
     if (d->a == 255) {
-        float k = 1 - as;
-        d->r = fill_encode(t, r * as + t->decode[d->r] * k);
-        d->g = fill_encode(t, g * as + t->decode[d->g] * k);
-        d->b = fill_encode(t, b * as + t->decode[d->b] * k);
+        float dr = t->decode[d->r], dg = t->decode[d->g], db = t->decode[d->b];
+        d->r = fill_encode_unit(t, dr + (r - dr) * as);
+        d->g = fill_encode_unit(t, dg + (g - dg) * as);
+        d->b = fill_encode_unit(t, db + (b - db) * as);
         return;
     }
     float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;

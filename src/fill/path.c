@@ -7,12 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__has_include)
-#if __has_include("cg/curve.h")
 #include "cg/curve.h"
-#define FILL_HAVE_CURVES 1
-#endif
-#endif
 
 enum { VERB_MOVE, VERB_LINE, VERB_QUAD, VERB_CUBIC, VERB_ARC, VERB_CLOSE };
 
@@ -118,7 +113,8 @@ static cg_status append(cg_path *path, int verb, const double *coords)
                          path->coord_count + (size_t)n, sizeof *path->coords))
         return CG_ENOMEM;
     path->verbs[path->verb_count++] = (unsigned char)verb;
-    memcpy(path->coords + path->coord_count, coords, (size_t)n * sizeof *coords);
+    if (n)
+        memcpy(path->coords + path->coord_count, coords, (size_t)n * sizeof *coords);
     path->coord_count += (size_t)n;
     if (verb != VERB_MOVE)
         path->drawing++;
@@ -329,12 +325,10 @@ cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, d
     return CG_OK;
 }
 
-#ifdef FILL_HAVE_CURVES
 static cg_status sink_point(void *user, cg_vec2 point)
 {
     return fill_polylines_add(user, point);
 }
-#endif
 
 cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out)
 {
@@ -355,14 +349,9 @@ cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polyline
             break;
         case VERB_QUAD:
         case VERB_CUBIC: {
-#ifdef FILL_HAVE_CURVES
             cg_vec2 control[4] = {current, {c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]}};
             status = cg_bezier_flatten(control, verb == VERB_QUAD ? 3 : 4, tolerance, sink_point,
                                        out);
-#else
-            (void)current;
-            status = CG_EUNSUPPORTED;
-#endif
             break;
         }
         case VERB_ARC:

@@ -32,6 +32,7 @@ void cg_rasterizer_free(cg_rasterizer *r)
     free(r->lines);
     free(r->accumulation);
     free(r->cover);
+    free(r->touched);
     free(r->order);
     free(r->active);
     free(r->edges);
@@ -102,21 +103,41 @@ static cg_status add_edge(cg_rasterizer *r, cg_vec2 a, cg_vec2 b, int height)
 }
 
 /* Pixel index of the first centre at or right of x, clamped to [0, width]. */
-static int first_pixel_at(double x, int width)
+static inline int first_pixel_at(double x, int width)
 {
-    double p = ceil(x - 0.5);
+    double p = x - 0.5; /* exact for |x| < 2^52 */
     if (!(p > 0))
         return 0;
-    if (p > width)
+    if (p >= width)
         return width;
-    return (int)p;
+    int i = (int)p; /* p > 0: truncation is floor; ceil is one more unless integral */
+    return i + (i < p);
 }
 
 typedef struct active_edge {
     double x;
     int dir;
-    size_t edge;
+    unsigned edge;
 } active_edge;
+
+/* Sorts edges by first row: insertion sort for the few edges of most
+ * polygons, qsort beyond. */
+static void sort_edges(fill_edge *edges, size_t n)
+{
+    if (n > 48) {
+        qsort(edges, n, sizeof *edges, compare_edges);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        fill_edge e = edges[i];
+        size_t j = i;
+        while (j > 0 && edges[j - 1].first_row > e.first_row) {
+            edges[j] = edges[j - 1];
+            j--;
+        }
+        edges[j] = e;
+    }
+}
 
 cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg_vec2 *points,
                                      const int *contour_sizes, int contour_count,
@@ -141,7 +162,9 @@ cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg
     }
     if (r->edge_count == 0)
         return CG_OK;
-    qsort(r->edges, r->edge_count, sizeof *r->edges, compare_edges);
+    if (r->edge_count > 0xffffffffu)
+        return CG_ERANGE;
+    sort_edges(r->edges, r->edge_count);
     /* The active list reuses the crossing buffer's memory as active_edge
      * records. */
     if (!fill_reserve((void **)&r->crossings, &r->crossing_capacity,
@@ -166,17 +189,19 @@ cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg
         double yc = y + 0.5;
         size_t kept = 0;
         for (size_t i = 0; i < active_count; i++) {
-            const fill_edge *e = &r->edges[active[i].edge];
+            unsigned index = active[i].edge;
+            const fill_edge *e = &r->edges[index];
             if (e->last_row < y)
                 continue;
-            active[kept] = active[i];
             active[kept].x = e->x0 + (yc - e->y0) * e->slope;
+            active[kept].dir = e->dir;
+            active[kept].edge = index;
             kept++;
         }
         active_count = kept;
         while (next < r->edge_count && r->edges[next].first_row == y) {
             const fill_edge *e = &r->edges[next];
-            active_edge a = {e->x0 + (yc - e->y0) * e->slope, e->dir, next};
+            active_edge a = {e->x0 + (yc - e->y0) * e->slope, e->dir, (unsigned)next};
             active[active_count++] = a;
             next++;
         }

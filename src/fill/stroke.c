@@ -192,12 +192,13 @@ static cg_status cut_dashes(const cg_stroke_style *style, const cg_vec2 *p, size
     period = 0;
     for (int i = 0; i < count; i++)
         period += pattern[i];
-    /* Bounded work: refuse patterns absurdly fine for the path's length. */
+    /* Bounded work and memory: refuse patterns so fine for the path's length
+     * that it would need over 400,000 dashes. */
     double length = 0;
     size_t segments = closed ? m : m - 1;
     for (size_t i = 0; i < segments; i++)
         length += cg_vec2_length(cg_vec2_sub(p[(i + 1) % m], p[i]));
-    if (length / period > 1e6)
+    if (length / period * (count / 2) > 4e5)
         return CG_ERANGE;
     double phase = fmod(style->dash_offset, period);
     if (phase < 0)

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 static int has_suffix(const char *name, size_t length, const char *suffix)
@@ -131,7 +132,19 @@ cg_status mesh_read_file(const char *path, unsigned char **bytes, size_t *size, 
     unsigned char *buffer = NULL, chunk[65536];
     size_t used = 0, capacity = 0, got;
     cg_status s = CG_OK;
-    while ((got = fread(chunk, 1, sizeof chunk, file)) > 0)
+    /* a regular file is read straight into a buffer of its size; anything
+     * else (a pipe, a file growing meanwhile) through growing chunks */
+    struct stat st;
+    if (fstat(fileno(file), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0
+        && (uint64_t)st.st_size <= CG_MESH_MAX_FILE_BYTES) {
+        capacity = (size_t)st.st_size;
+        if (!(buffer = malloc(capacity + 1)))
+            s = CG_ENOMEM;
+        while (s == CG_OK && used < capacity
+               && (got = fread(buffer + used, 1, capacity - used, file)) > 0)
+            used += got;
+    }
+    while (s == CG_OK && (got = fread(chunk, 1, sizeof chunk, file)) > 0)
         if ((s = append(&buffer, &used, &capacity, chunk, got)) != CG_OK)
             break;
     int failed = ferror(file);

@@ -362,21 +362,28 @@ static cg_status ascii_fail(ply_reader *r, text_cursor *t, const char *what, uin
 /* Reads one number of the given type, skipping blanks and line ends. */
 static int ascii_value(text_cursor *t, enum ply_type type, double *value)
 {
-    while (t->p < t->end && is_space(*t->p)) {
-        if (is_line_end(*t->p))
-            text_next_line(t);
-        else
-            t->p++;
+    const char *p = t->p, *end = t->end;
+    while (p < end && is_space(*p)) {
+        if (*p == '\n' || (*p == '\r' && (p + 1 == end || p[1] != '\n')))
+            t->line++;
+        p++;
     }
-    if (t->p >= t->end || !parse_double(&t->p, t->end, value))
+    t->p = p;
+    if (p >= end)
         return 0;
+    double lo, hi;
     if (type < PLY_FLOAT32) {
-        double lo, hi;
         type_range(type, &lo, &hi);
-        if (!valid_integer(type, *value) || *value < lo || *value > hi)
-            return 0;
+        int64_t i;
+        if (parse_int64(&t->p, end, &i)) {
+            *value = (double)i;
+            return *value >= lo && *value <= hi;
+        }
     }
-    return 1;
+    if (!parse_double(&t->p, end, value))
+        return 0;
+    /* an integer property written as "3.0" is still a whole number */
+    return type >= PLY_FLOAT32 || (valid_integer(type, *value) && *value >= lo && *value <= hi);
 }
 
 static const char *kind_name(const ply_element *e)
@@ -400,8 +407,12 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                                     "%s: the face element has no vertex_indices list", r->name);
             continue; /* items without properties take no text */
         }
-        /* each item takes at least 2 bytes a property ("0 "): reserve no more */
-        size_t room = (size_t)(t.end - t.p) / (2 * (e->property_count ? e->property_count : 1));
+        /* each item takes at least 2 bytes a value ("0 "), a face's corner list
+         * at least 4 values: reserve no more than the text left can hold */
+        size_t least = 2 * e->property_count;
+        for (size_t k = 0; k < e->property_count; k++)
+            least += props[k].target == T_CORNERS ? 6 : 0;
+        size_t room = (size_t)(t.end - t.p) / least;
         size_t guess = e->count < room ? (size_t)e->count : room;
         if (e->kind == E_VERTEX && builder_reserve_vertices(&r->b, guess) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
@@ -551,7 +562,13 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
             at += (size_t)e->count * fixed;
             continue;
         }
-        size_t guess = fixed ? (size_t)e->count : 0;
+        /* room for what the bytes left can hold: a face's list has 3 or more indices */
+        size_t least = fixed;
+        for (size_t k = 0; k < e->property_count; k++)
+            least += props[k].target == T_CORNERS ? 3 * type_size[props[k].type] : 0;
+        size_t guess = least && e->count < (size - at) / least ? (size_t)e->count
+                       : least                                 ? (size - at) / least
+                                                               : 0;
         if (e->kind == E_VERTEX && builder_reserve_vertices(&r->b, guess) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
         if (e->kind == E_FACE && builder_reserve_faces(&r->b, guess) != CG_OK)

@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 typedef struct out_file {
@@ -15,6 +16,29 @@ typedef struct out_file {
     char *temporary;
     const char *path;
 } out_file;
+
+/* The permissions a new file gets: an existing file's own, otherwise
+ * 0666 less the process umask (read from /proc, since umask() cannot be read
+ * without changing it), or 0644 where /proc is not there. */
+static mode_t new_file_mode(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0)
+        return st.st_mode & 07777;
+    mode_t mode = 0644;
+    FILE *status = fopen("/proc/self/status", "r");
+    if (status) {
+        char line[128];
+        unsigned mask;
+        while (fgets(line, sizeof line, status))
+            if (sscanf(line, "Umask: %o", &mask) == 1) {
+                mode = 0666 & ~(mode_t)mask;
+                break;
+            }
+        fclose(status);
+    }
+    return mode;
+}
 
 static cg_status out_open(out_file *o, const char *path, cg_error *err)
 {
@@ -27,6 +51,8 @@ static cg_status out_open(out_file *o, const char *path, cg_error *err)
     memcpy(o->temporary, path, length);
     memcpy(o->temporary + length, ".tmp-XXXXXX", 12);
     int fd = mkstemp(o->temporary);
+    if (fd >= 0)
+        (void)fchmod(fd, new_file_mode(path)); /* mkstemp gives 0600 */
     if (fd >= 0 && !(o->file = fdopen(fd, "wb")))
         close(fd);
     if (!o->file) {

@@ -184,11 +184,11 @@ static char *read_all(const char *path, size_t *size)
     return text;
 }
 
-/* A word starting with '#' is a colour when '#' is followed by 3, 4, 6 or 8
- * hexadecimal digits; otherwise it starts a comment. */
+/* A word of '#' and one or more hexadecimal digits is a colour (checked
+ * later by the command); any other word starting with '#' starts a comment. */
 static int is_hex_colour(const char *word, size_t length)
 {
-    if (length != 4 && length != 5 && length != 7 && length != 9)
+    if (length < 2)
         return 0;
     for (size_t i = 1; i < length; i++) {
         char c = word[i];
@@ -214,6 +214,8 @@ void draw_script_free(draw_script *script)
     memset(script, 0, sizeof *script);
 }
 
+static int parse(draw_script *script, size_t size);
+
 int draw_script_load(const char *path, draw_script *script)
 {
     memset(script, 0, sizeof *script);
@@ -224,6 +226,25 @@ int draw_script_load(const char *path, draw_script *script)
         fprintf(stderr, "cg: draw: %s: cannot read: %s\n", script->file, strerror(errno));
         return 1;
     }
+    return parse(script, size);
+}
+
+int draw_script_parse(const char *name, const char *text, draw_script *script)
+{
+    memset(script, 0, sizeof *script);
+    script->file = name;
+    size_t size = strlen(text);
+    script->text = malloc(size + 1);
+    if (!script->text) {
+        fprintf(stderr, "cg: draw: %s: out of memory\n", name);
+        return 1;
+    }
+    memcpy(script->text, text, size + 1);
+    return parse(script, size);
+}
+
+static int parse(draw_script *script, size_t size)
+{
     if (memchr(script->text, '\0', size)) {
         fprintf(stderr, "cg: draw: %s: not a text file (contains a NUL byte)\n", script->file);
         draw_script_free(script);
@@ -307,19 +328,34 @@ out_of_memory:
     return 1;
 }
 
-int draw_script_run(const draw_script *script, draw_state *state)
+static void state_init(const draw_script *script, draw_state *state)
 {
     memset(state, 0, sizeof *state);
     state->file = script->file;
     state->background = (cg_rgba8){255, 255, 255, 255};
     state->color = (cg_rgba8){0, 0, 0, 255};
     state->tolerance = 0.25;
+    state->fill_rule = 1; /* CG_FILL_NONZERO, as in SVG */
+    state->line_width = 1;
+}
+
+static int run_lines(const draw_script *script, draw_state *state)
+{
     for (int i = 0; i < script->count; i++) {
         const draw_line *line = &script->lines[i];
         state->line = line->number;
+        state->command = i;
         if (line->command->run(state, line->argc, line->argv))
             return 1;
     }
+    return 0;
+}
+
+int draw_script_run(const draw_script *script, draw_state *state)
+{
+    state_init(script, state);
+    if (run_lines(script, state))
+        return 1;
     if (!state->canvas) {
         state->line = script->count ? script->lines[script->count - 1].number : 1;
         return draw_error(state, "expected a 'size W H' command: the script draws no canvas");
@@ -327,8 +363,20 @@ int draw_script_run(const draw_script *script, draw_state *state)
     return 0;
 }
 
+int draw_script_run_on(const draw_script *script, cg_image *canvas)
+{
+    draw_state state;
+    state_init(script, &state);
+    state.canvas = canvas;
+    int status = run_lines(script, &state);
+    state.canvas = NULL; /* the caller's; `size` refuses to replace it */
+    draw_state_release(&state);
+    return status;
+}
+
 void draw_state_release(draw_state *state)
 {
+    draw_fill_release(state);
     cg_image_free(state->canvas);
     state->canvas = NULL;
 }

@@ -32,7 +32,20 @@ typedef struct draw_state {
     cg_rgba8 color;   /* default black */
     double tolerance; /* flattening tolerance in pixels, default 0.25 */
     int antialias;    /* curves drawn with anti-aliased lines (`antialias on`) */
+
+    /* filling (tools/cg/drawcmds_fill.c) */
+    int command;         /* index of the running command in the script */
+    int fill_rule;       /* cg_fill_rule of polygon, aapolygon, fill; default non-zero */
+    double line_width;   /* `width W` of stroke, default 1 */
+    int line_join;       /* cg_line_join, default miter */
+    int line_cap;        /* cg_line_cap, default butt */
+    double dashes[32];   /* `dash ON OFF ...`, dash_count 0: solid */
+    int dash_count;
+    struct draw_fill *fill; /* polygon being built, current path, scratch */
 } draw_state;
+
+/* Releases state->fill (drawcmds_fill.c); called by draw_state_release. */
+void draw_fill_release(draw_state *state);
 
 /* A command: run returns 0 on success, non-zero after printing an error
  * (with draw_error).  argv[0] is the command name, argc counts it. */

@@ -22,6 +22,8 @@ typedef struct draw_script {
 /* Reads and tokenises a script ("-" for stdin); unknown commands are
  * reported here.  Returns 0, or prints the error and returns 1. */
 int draw_script_load(const char *path, draw_script *script);
+/* The same from a NUL-terminated text; name is used in messages. */
+int draw_script_parse(const char *name, const char *text, draw_script *script);
 void draw_script_free(draw_script *script);
 
 /* Runs every command on a fresh state (defaults: white background, black,
@@ -29,5 +31,10 @@ void draw_script_free(draw_script *script);
  * error.  The caller releases the canvas with draw_state_release. */
 int draw_script_run(const draw_script *script, draw_state *state);
 void draw_state_release(draw_state *state);
+
+/* Runs the commands on an existing canvas (which stays the caller's), as
+ * overlays on a rendered picture; `size` is an error there, since the canvas
+ * is already set.  Returns 0, or 1 after printing the error. */
+int draw_script_run_on(const draw_script *script, cg_image *canvas);
 
 #endif

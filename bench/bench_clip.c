@@ -1,0 +1,201 @@
+/* Boolean operations: cg_clip_boolean64 against Clipper 6.4 and GEOS on the
+ * same integer polygons (random star-shaped polygons of 10 to 100,000
+ * vertices, smooth ellipses, many small squares against a circle, a plate
+ * with holes), with the result areas side by side. */
+#include "bench.h"
+#include "bench_clip_peers.h"
+#include "cg/clip.h"
+
+#include <math.h>
+#include <string.h>
+
+typedef struct shape {
+    cg_polygon_set64 set;
+    int64_t *xy;
+    size_t *len;
+} shape;
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
+static double rnd(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void add_ring(shape *s, const cg_point64 *p, size_t n, int new_polygon)
+{
+    cg_polygon_set64_add_ring(&s->set, p, n, new_polygon);
+}
+
+static void finish(shape *s)
+{
+    s->xy = malloc(2 * (s->set.point_count + 1) * sizeof *s->xy);
+    s->len = malloc((s->set.ring_count + 1) * sizeof *s->len);
+    for (size_t i = 0; i < s->set.point_count; i++) {
+        s->xy[2 * i] = s->set.points[i].x;
+        s->xy[2 * i + 1] = s->set.points[i].y;
+    }
+    for (size_t r = 0; r < s->set.ring_count; r++)
+        s->len[r] = s->set.ring_start[r + 1] - s->set.ring_start[r];
+}
+
+static void star(shape *s, size_t n, double cx, double cy, double r0, double r1)
+{
+    cg_point64 *p = malloc(n * sizeof *p);
+    for (size_t i = 0; i < n; i++) {
+        double a = 2 * M_PI * ((double)i + 0.8 * rnd()) / (double)n, r = r0 + (r1 - r0) * rnd();
+        p[i] = (cg_point64){(int64_t)llround(cx + r * cos(a)), (int64_t)llround(cy + r * sin(a))};
+    }
+    add_ring(s, p, n, 1);
+    free(p);
+}
+
+static void ellipse(shape *s, size_t n, double cx, double cy, double rx, double ry, double rot, int cw)
+{
+    cg_point64 *p = malloc(n * sizeof *p);
+    for (size_t i = 0; i < n; i++) {
+        double a = 2 * M_PI * (double)(cw ? n - i : i) / (double)n;
+        double x = rx * cos(a), y = ry * sin(a);
+        p[i] = (cg_point64){(int64_t)llround(cx + x * cos(rot) - y * sin(rot)),
+                            (int64_t)llround(cy + x * sin(rot) + y * cos(rot))};
+    }
+    add_ring(s, p, n, cw ? 0 : 1);
+    free(p);
+}
+
+static void square(shape *s, int64_t x, int64_t y, int64_t side, int cw)
+{
+    cg_point64 p[4] = {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+    if (cw) {
+        cg_point64 t = p[1];
+        p[1] = p[3];
+        p[3] = t;
+    }
+    add_ring(s, p, 4, !cw);
+}
+
+typedef struct job { const shape *a, *b; int op; cg_polygon_set64 result; void *peer; double area; } job;
+
+static void run_cg(void *c)
+{
+    job *j = c;
+    cg_clip_boolean64((cg_clip_op)j->op, &j->a->set, CG_CLIP_NON_ZERO, &j->b->set, CG_CLIP_NON_ZERO,
+                      &j->result);
+}
+static void run_clipper(void *c)
+{
+    job *j = c;
+    j->area = peer_clipper_run(j->peer, j->op);
+}
+static void run_geos(void *c)
+{
+    job *j = c;
+    j->area = peer_geos_run(j->peer, j->op);
+}
+
+static const char *op_name[4] = {"intersection", "union", "difference", "xor"};
+
+static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
+{
+    char name[128], note[160];
+    snprintf(name, sizeof name, "clip %s: %s", op_name[op], what);
+    job j = {a, b, op, {0}, NULL, 0};
+    double t_cg = bench_median(run_cg, &j, runs);
+    double area_cg = cg_polygon_set64_area(&j.result);
+    size_t nv = j.result.point_count;
+    cg_polygon_set64_clear(&j.result);
+    peer_input pa = {a->xy, a->len, a->set.ring_count}, pb = {b->xy, b->len, b->set.ring_count};
+    if (peer_clipper_available()) {
+        j.peer = peer_clipper_prepare(&pa, &pb);
+        double t = bench_median(run_clipper, &j, runs);
+        snprintf(note, sizeof note, "area cg %.6e, Clipper %.6e (diff %.1e); %zu result vertices",
+                 area_cg, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
+        bench_row(name, t_cg, "Clipper 6.4", t, note);
+        peer_clipper_free(j.peer);
+    } else {
+        bench_row(name, t_cg, "-", 0, "Clipper (libpolyclipping-dev) not installed");
+    }
+    if (peer_geos_available()) {
+        j.peer = peer_geos_prepare(&pa, &pb);
+        double t = bench_median(run_geos, &j, runs > 3 ? 3 : runs);
+        snprintf(note, sizeof note, "area cg %.6e, GEOS %.6e (diff %.1e)", area_cg, j.area,
+                 fabs(area_cg - j.area) / fmax(1, fabs(j.area)));
+        bench_row(name, t_cg, "GEOS", t, note);
+        peer_geos_free(j.peer);
+    } else {
+        bench_row(name, t_cg, "-", 0, "GEOS (libgeos-dev) not installed");
+    }
+}
+
+static void free_shape(shape *s)
+{
+    cg_polygon_set64_clear(&s->set);
+    free(s->xy);
+    free(s->len);
+}
+
+int main(int argc, char **argv)
+{
+    size_t max_n = argc > 1 ? (size_t)atol(argv[1]) : 100000;
+    for (size_t n = 10; n <= max_n; n *= 10) {
+        shape a = {0}, b = {0};
+        star(&a, n, 0, 0, 5e5, 1e6);
+        star(&b, n, 3e5, 2e5, 5e5, 1e6);
+        finish(&a);
+        finish(&b);
+        char what[64];
+        snprintf(what, sizeof what, "random star polygons, %zu vertices each", n);
+        int runs = n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1;
+        for (int op = 0; op < 4; op++)
+            if (n <= 1000 || op < 2)
+                compare(what, &a, &b, op, runs);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    for (size_t n = 100; n <= max_n; n *= 10) {
+        shape a = {0}, b = {0};
+        ellipse(&a, n, 0, 0, 1e6, 6e5, 0, 0);
+        ellipse(&b, n, 2e5, 1e5, 1e6, 5e5, 0.7, 0);
+        finish(&a);
+        finish(&b);
+        char what[64];
+        snprintf(what, sizeof what, "ellipses, %zu vertices each", n);
+        compare(what, &a, &b, 0, n <= 10000 ? 5 : 3);
+        compare(what, &a, &b, 1, n <= 10000 ? 5 : 3);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    {
+        /* a layout: 60 x 60 small squares against a disc of 2,000 vertices */
+        shape a = {0}, b = {0};
+        for (int i = 0; i < 60; i++)
+            for (int k = 0; k < 60; k++)
+                square(&a, i * 10000, k * 10000, 7000, 0);
+        ellipse(&b, 2000, 300000, 300000, 280000, 280000, 0, 0);
+        finish(&a);
+        finish(&b);
+        for (int op = 0; op < 4; op++)
+            compare("3,600 squares and a disc", &a, &b, op, 5);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    {
+        /* a plate with 400 round holes against a rotated plate */
+        shape a = {0}, b = {0};
+        cg_point64 plate[4] = {{0, 0}, {2000000, 0}, {2000000, 2000000}, {0, 2000000}};
+        add_ring(&a, plate, 4, 1);
+        for (int i = 0; i < 20; i++)
+            for (int k = 0; k < 20; k++)
+                ellipse(&a, 32, 50000 + i * 100000, 50000 + k * 100000, 30000, 30000, 0, 1);
+        ellipse(&b, 4, 1000000, 1000000, 1200000, 1200000, 0.3, 0);
+        finish(&a);
+        finish(&b);
+        for (int op = 0; op < 4; op++)
+            compare("plate with 400 holes and a square", &a, &b, op, 5);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    return 0;
+}

@@ -1,0 +1,230 @@
+/* Private pieces shared by the files of the render module. */
+#ifndef CG_RENDER_INTERNAL_H
+#define CG_RENDER_INTERNAL_H
+
+#include "cg/render.h"
+#include "cg/light.h"
+#include "cg/color.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define RENDER_MAX_ATTRIBUTES 9 /* interpolated floats per vertex */
+#define RENDER_MAX_POLYGON 9    /* a triangle clipped by 6 planes */
+#define RENDER_TILE 64          /* tile side in pixels */
+
+/* ---- shading: the one place that computes the colour of a point --------- */
+
+typedef struct render_lighting {
+    int count;                  /* lights[0] is the ambient light */
+    cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
+    cg_material material;       /* colour replaced per point */
+    int orthographic;
+    float eye[3];       /* perspective: viewer position */
+    float view_dir[3];  /* orthographic: unit direction toward the viewer */
+} render_lighting;
+
+/* Colour (linear) of a surface point with unit normal n and diffuse colour
+ * base, seen from the camera and lit by the lights: the local illumination
+ * model of cg/light.h. */
+void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
+                  const float base[3], float out[3]);
+
+/* sRGB encoding with a lookup that is exact (same result as
+ * cg_linear_to_srgb8) and fast. */
+typedef struct render_encoder {
+    uint8_t code[4098]; /* code of i / 4096 for i <= 4096, and 255 once more */
+} render_encoder;
+#define RENDER_ENCODER_STEPS 4096
+void render_encoder_init(render_encoder *encoder);
+static inline uint8_t render_encode(const render_encoder *encoder, float linear)
+{
+    /* Clamped to [0, 1] (NaN to 0) without branches. */
+    float x = linear > 0 ? linear : 0;
+    x = x < 1 ? x : 1;
+    int i = (int)(x * RENDER_ENCODER_STEPS);
+    uint8_t code = encoder->code[i];
+    /* The code is monotonic: when both ends of the step agree it is exact. */
+    if (code == encoder->code[i + 1])
+        return code;
+    return cg_linear_to_srgb8(x);
+}
+
+/* ---- clipping in homogeneous coordinates -------------------------------- */
+
+typedef struct clip_vertex {
+    double c[4]; /* clip coordinates x, y, z, w */
+    float a[RENDER_MAX_ATTRIBUTES];
+} clip_vertex;
+
+/* Outcode bits: one per plane -w<=x, x<=w, -w<=y, y<=w, -w<=z, z<=w that the
+ * point violates. */
+unsigned render_outcode(const double c[4]);
+/* Sutherland-Hodgman against the planes in mask, in homogeneous coordinates;
+ * in[] (n vertices) is clipped into out (room for RENDER_MAX_POLYGON); returns
+ * the new count (0 when nothing is left).  Intersections are computed from
+ * the inside endpoint, so an edge shared by two polygons is cut at the same
+ * point in both. */
+int render_clip_polygon(const clip_vertex *in, int n, unsigned mask, int attribute_count,
+                        clip_vertex *out);
+/* Clips the segment a-b against all six planes; returns 0 when nothing is
+ * left, else 1 with a and b replaced by the ends of the visible part. */
+int render_clip_segment(clip_vertex *a, clip_vertex *b, int attribute_count);
+
+/* ---- screen-space vertices and triangle setup --------------------------- */
+
+typedef struct screen_vertex {
+    double x, y;  /* continuous pixel coordinates */
+    double z;     /* window depth in [0, 1] */
+    double iw;    /* 1 / w */
+    float a[RENDER_MAX_ATTRIBUTES]; /* attributes (not divided by w) */
+} screen_vertex;
+
+/* Maps a clipped vertex to the screen of a width x height image. */
+void render_project(const clip_vertex *v, int width, int height, int attribute_count,
+                    screen_vertex *out);
+
+/* A triangle ready to rasterize: fixed-point vertices ordered clockwise as
+ * seen on the screen (positive edge functions inside), the
+ * pixel box it may cover, and the values to interpolate. */
+typedef struct setup_triangle {
+    int32_t x[3], y[3];  /* 1/256 pixel */
+    int32_t box[4];      /* pixels x0, y0, x1, y1 (exclusive) */
+    float z[3], iw[3];
+    float color[3];      /* flat colour, or the base colour for Phong */
+    cg_rgba8 color8;     /* the flat colour encoded */
+    float inverse_area;  /* 1 / (twice the area in fixed-point units squared) */
+    /* attributes of vertex k at a[k * attribute_count + j]; only the first
+     * 3 * attribute_count floats are stored in the binned copies */
+    float a[3 * RENDER_MAX_ATTRIBUTES];
+} setup_triangle;
+
+#define SETUP_SIZE(attribute_count) \
+    ((offsetof(setup_triangle, a) + 3 * (size_t)(attribute_count) * sizeof(float) + 7) & ~(size_t)7)
+
+/* A corner ready for setup: snapped position, depth, 1 / w, attributes. */
+typedef struct render_corner {
+    int32_t x, y;
+    float z, iw;
+    const float *a;
+} render_corner;
+
+/* Rounds a pixel coordinate to the 1/256 grid (clamped to the guard band). */
+int32_t render_snap(double value, int size);
+void render_corner_from_screen(const screen_vertex *s, int width, int height,
+                               render_corner *out);
+/* Orients the triangle for the rasterizer; returns 0 when it covers no pixel
+ * centre (zero area after snapping, or box empty), -1 when it is back-facing
+ * (seen clockwise) and cull is set, 1 when out is ready. */
+int render_setup_fixed(const render_corner *const v[3], int width, int height,
+                       int attribute_count, int cull, setup_triangle *out);
+/* The same from screen vertices (snapped here). */
+int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
+                 int width, int height, int attribute_count, int cull, setup_triangle *out);
+
+/* Edge functions of a set-up triangle at the centre of pixel (x, y), with
+ * the top-left bias folded in (a pixel is covered when all three are >= 0),
+ * and their steps per pixel right and down. */
+typedef struct raster_edges {
+    int64_t w[3], step_x[3], step_y[3];
+} raster_edges;
+void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out);
+
+/* ---- the renderer ------------------------------------------------------- */
+
+typedef struct prepared_vertex {
+    float position[3], normal[3], color[3];
+} prepared_vertex;
+
+struct cg_renderer {
+    cg_render_options options;
+    size_t vertex_count;
+    prepared_vertex *vertices;
+    size_t triangle_count;
+    uint32_t (*triangles)[3];
+    uint32_t *triangle_face;  /* face each triangle comes from */
+    size_t edge_count;
+    uint32_t (*edges)[3];     /* prepared vertex a, b, face */
+    size_t face_count;
+    int varying_color;        /* vertices differ in base colour */
+    int has_bounds;
+    cg_vec3 lo, hi;           /* bounds of the finite positions */
+    render_encoder encoder;
+    /* frame state */
+    cg_camera camera;
+    float *depth;
+    size_t depth_size;
+    int depth_valid;
+    int depth_width, depth_height;
+    cg_render_stats stats;
+};
+
+/* A mesh vertex after the vertex stage. */
+typedef struct frame_vertex {
+    double c[4];       /* clip coordinates */
+    float world[3];    /* world position */
+    unsigned outcode;  /* render_outcode */
+    float a[RENDER_MAX_ATTRIBUTES];
+    int32_t sx, sy;    /* snapped screen position, when outcode is 0 */
+    float sz, siw;     /* window depth and 1 / w, when outcode is 0 */
+} frame_vertex;
+
+/* A clipped polygon in screen space, for the painter's algorithm. */
+typedef struct painter_polygon {
+    int n;
+    float color[3];
+    screen_vertex v[RENDER_MAX_POLYGON];
+} painter_polygon;
+
+/* The triangles of one contiguous range of the mesh, processed by one
+ * thread; ranges are concatenated in order so that results do not depend on
+ * the number of threads. */
+typedef struct render_chunk {
+    size_t begin, end;          /* triangle range */
+    unsigned char *setups;      /* setup triangles, frame->stride bytes each */
+    size_t setup_count, setup_capacity;
+    uint32_t *bin_start;        /* tile_count + 1 */
+    uint32_t *bin_list;         /* setup indices by tile */
+    size_t bin_capacity;
+    painter_polygon *polygons;  /* painter's only */
+    size_t polygon_count, polygon_capacity;
+    size_t culled, clipped, rejected, rasterized;
+    int failed;                 /* out of memory */
+} render_chunk;
+
+/* Frame context shared by the pipeline stages. */
+typedef struct render_frame {
+    cg_renderer *r;
+    const cg_render_options *o;
+    cg_image *image;
+    int width, height;
+    cg_mat4 mvp, model;
+    double normal_matrix[3][3];
+    render_lighting lighting;
+    int shading, attribute_count, cull;
+    int fill_background;        /* hidden-line: faces drawn in the background colour */
+    float background[4];
+    cg_rgba8 background8;
+    float *depth;
+    frame_vertex *vertices;
+    int thread_count;
+    render_chunk *chunks;
+    size_t stride;
+    int tiles_x, tiles_y, tile_count;
+    size_t splits;
+} render_frame;
+
+/* Stores the flat (or Phong base) colour of a set-up triangle, encoded too. */
+void render_finish_setup(const render_frame *frame, setup_triangle *t, const float color[3]);
+/* Rasterizes t inside [x0, x1) x [y0, y1) with the frame's shading: with
+ * depth_test, only nearer fragments are written (and their depth); without,
+ * every fragment overwrites colour and depth (painter's).  Returns the
+ * number of covered pixels. */
+size_t render_raster(const render_frame *frame, const setup_triangle *t, int x0, int y0, int x1,
+                     int y1, int depth_test);
+
+/* Painter's algorithm and edge drawing, in their own files. */
+cg_status render_painter(render_frame *frame);
+cg_status render_edges(render_frame *frame);
+
+#endif

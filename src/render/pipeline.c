@@ -1,0 +1,781 @@
+/* The z-buffer pipeline: vertex stage, triangle stage (culling, clipping,
+ * setup, binning into tiles) and the tiled rasterizer, run by a small team
+ * of threads.  Every tile is drawn by one thread from the triangles in mesh
+ * order, so the picture does not depend on the number of threads. */
+#include "internal.h"
+#include "cg/color.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- fragments ---------------------------------------------------------- */
+
+enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
+
+static inline void store(const render_frame *f, unsigned char *row, int x, const float c[3],
+                         const int rgba8)
+{
+    if (rgba8) {
+        cg_rgba8 *p = (cg_rgba8 *)row + x;
+        p->r = render_encode(&f->r->encoder, c[0]);
+        p->g = render_encode(&f->r->encoder, c[1]);
+        p->b = render_encode(&f->r->encoder, c[2]);
+        p->a = 255;
+    } else {
+        cg_rgbaf *p = (cg_rgbaf *)row + x;
+        p->r = c[0];
+        p->g = c[1];
+        p->b = c[2];
+        p->a = 1;
+    }
+}
+
+/* The covered run [*begin, *end) of a row whose edge functions are w at
+ * pixel offset 0 and change by step per pixel, within [0, width): exact
+ * integer bounds of where all three are >= 0. */
+static inline void row_span(const int64_t w[3], const int64_t step[3], int width, int *begin,
+                            int *end)
+{
+    int64_t lo = 0, hi = width; /* exclusive */
+    for (int k = 0; k < 3; k++) {
+        if (step[k] > 0) {
+            if (w[k] < 0) {
+                int64_t first = (-w[k] + step[k] - 1) / step[k];
+                if (first > lo)
+                    lo = first;
+            }
+        } else if (step[k] < 0) {
+            if (w[k] < 0) {
+                hi = 0;
+            } else {
+                int64_t last = w[k] / -step[k] + 1;
+                if (last < hi)
+                    hi = last;
+            }
+        } else if (w[k] < 0) {
+            hi = 0;
+        }
+    }
+    *begin = (int)lo;
+    *end = (int)(hi > lo ? hi : lo);
+}
+
+static inline size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0, int y0,
+                                 int x1, int y1, const int mode, const int depth_test,
+                                 const int rgba8)
+{
+    if (t->box[0] > x0) x0 = t->box[0];
+    if (t->box[1] > y0) y0 = t->box[1];
+    if (t->box[2] < x1) x1 = t->box[2];
+    if (t->box[3] < y1) y1 = t->box[3];
+    if (x0 >= x1 || y0 >= y1)
+        return 0;
+    raster_edges e;
+    render_edges_at(t, x0, y0, &e);
+    const float ia = t->inverse_area, z0 = t->z[0], dz1 = t->z[1] - z0, dz2 = t->z[2] - z0;
+    const int n = mode == MODE_GOURAUD ? 3 : f->attribute_count;
+    float w_base = t->iw[0], w_d1 = t->iw[1] - t->iw[0], w_d2 = t->iw[2] - t->iw[0];
+    float p_base[RENDER_MAX_ATTRIBUTES], p_d1[RENDER_MAX_ATTRIBUTES], p_d2[RENDER_MAX_ATTRIBUTES];
+    if (mode != MODE_FLAT)
+        for (int j = 0; j < n; j++) {
+            p_base[j] = t->a[j] * t->iw[0];
+            p_d1[j] = t->a[n + j] * t->iw[1] - p_base[j];
+            p_d2[j] = t->a[2 * n + j] * t->iw[2] - p_base[j];
+        }
+    size_t fragments = 0;
+    for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
+             e.w[2] += e.step_y[2]) {
+        int begin, end;
+        row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        if (begin >= end)
+            continue;
+        fragments += (size_t)(end - begin);
+        int64_t w1 = e.w[1] + begin * e.step_x[1], w2 = e.w[2] + begin * e.step_x[2];
+        float *zrow = f->depth + (size_t)y * f->width + x0;
+        unsigned char *row = f->image->data + (size_t)y * f->image->stride;
+        for (int i = begin; i < end; i++, w1 += e.step_x[1], w2 += e.step_x[2]) {
+            float l1 = (float)w1 * ia, l2 = (float)w2 * ia;
+            float z = z0 + l1 * dz1 + l2 * dz2;
+            if (depth_test && !(z < zrow[i]))
+                continue;
+            zrow[i] = z;
+            int x = x0 + i;
+            if (mode == MODE_FLAT) {
+                if (rgba8)
+                    ((cg_rgba8 *)row)[x] = t->color8;
+                else
+                    store(f, row, x, t->color, rgba8);
+                continue;
+            }
+            /* Perspective-correct: attribute / w and 1 / w are affine on
+             * the screen; divide their interpolants. */
+            float r = 1 / (w_base + l1 * w_d1 + l2 * w_d2);
+            float v[RENDER_MAX_ATTRIBUTES];
+            if (mode == MODE_GOURAUD) {
+                v[0] = (p_base[0] + l1 * p_d1[0] + l2 * p_d2[0]) * r;
+                v[1] = (p_base[1] + l1 * p_d1[1] + l2 * p_d2[1]) * r;
+                v[2] = (p_base[2] + l1 * p_d1[2] + l2 * p_d2[2]) * r;
+            } else {
+                for (int j = 0; j < n; j++)
+                    v[j] = (p_base[j] + l1 * p_d1[j] + l2 * p_d2[j]) * r;
+            }
+            if (mode == MODE_GOURAUD) {
+                store(f, row, x, v, rgba8);
+            } else {
+                float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                float inv = len > 0 ? 1 / len : 0;
+                float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv}, c[3];
+                render_shade(&f->lighting, v + 3, normal, n > 6 ? v + 6 : t->color, c);
+                store(f, row, x, c, rgba8);
+            }
+        }
+    }
+    return fragments;
+}
+
+#define RASTER_CASE(mode)                                                                  \
+    (rgba8 ? (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 1)                     \
+                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 1))                    \
+           : (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 0)                     \
+                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 0)))
+
+size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int y0, int x1,
+                     int y1, int depth_test)
+{
+    int rgba8 = f->image->format == CG_PIXEL_RGBA8;
+    switch (f->shading) {
+    case MODE_FLAT:
+        return RASTER_CASE(MODE_FLAT);
+    case MODE_GOURAUD:
+        return RASTER_CASE(MODE_GOURAUD);
+    default:
+        return RASTER_CASE(MODE_PHONG);
+    }
+}
+
+/* ---- vertex stage --------------------------------------------------------- */
+
+static void vertex_stage(render_frame *f, size_t begin, size_t end)
+{
+    const cg_renderer *r = f->r;
+    for (size_t i = begin; i < end; i++) {
+        const prepared_vertex *p = &r->vertices[i];
+        frame_vertex *v = &f->vertices[i];
+        double x = p->position[0], y = p->position[1], z = p->position[2];
+        for (int k = 0; k < 4; k++)
+            v->c[k] = f->mvp.m[k][0] * x + f->mvp.m[k][1] * y + f->mvp.m[k][2] * z + f->mvp.m[k][3];
+        for (int k = 0; k < 3; k++)
+            v->world[k] = (float)(f->model.m[k][0] * x + f->model.m[k][1] * y
+                                  + f->model.m[k][2] * z + f->model.m[k][3]);
+        v->outcode = render_outcode(v->c);
+        if (v->outcode == 0 && v->c[3] > 0) {
+            /* Projected and snapped once here for all the triangles that
+             * need no clipping (the clipped ones project the same way). */
+            clip_vertex cv;
+            screen_vertex s;
+            memcpy(cv.c, v->c, sizeof cv.c);
+            render_project(&cv, f->width, f->height, 0, &s);
+            v->sx = render_snap(s.x, f->width);
+            v->sy = render_snap(s.y, f->height);
+            v->sz = (float)s.z;
+            v->siw = (float)s.iw;
+        }
+        if (f->shading == MODE_FLAT)
+            continue;
+        double n[3];
+        for (int k = 0; k < 3; k++)
+            n[k] = f->normal_matrix[k][0] * p->normal[0] + f->normal_matrix[k][1] * p->normal[1]
+                   + f->normal_matrix[k][2] * p->normal[2];
+        double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        float normal[3] = {0, 0, 0};
+        if (length > 0)
+            for (int k = 0; k < 3; k++)
+                normal[k] = (float)(n[k] / length);
+        if (f->shading == MODE_GOURAUD) {
+            render_shade(&f->lighting, v->world, normal, p->color, v->a);
+        } else {
+            memcpy(v->a, normal, sizeof normal);
+            memcpy(v->a + 3, v->world, sizeof v->world);
+            memcpy(v->a + 6, p->color, sizeof p->color);
+        }
+    }
+}
+
+/* ---- triangle stage --------------------------------------------------------- */
+
+static void *grow(void *buffer, size_t *capacity, size_t needed, size_t size)
+{
+    if (needed <= *capacity)
+        return buffer;
+    size_t capacity2 = *capacity ? *capacity : 64;
+    while (capacity2 < needed)
+        capacity2 *= 2;
+    void *p = realloc(buffer, capacity2 * size);
+    if (p)
+        *capacity = capacity2;
+    return p;
+}
+
+static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t)
+{
+    if (c->failed)
+        return;
+    void *p = grow(c->setups, &c->setup_capacity, c->setup_count + 1, f->stride);
+    if (!p) {
+        c->failed = 1;
+        return;
+    }
+    c->setups = p;
+    memcpy(c->setups + c->setup_count * f->stride, t, f->stride);
+    c->setup_count++;
+}
+
+static void emit_polygon(render_chunk *c, const screen_vertex *v, int n, const float color[3])
+{
+    if (c->failed)
+        return;
+    painter_polygon *p = grow(c->polygons, &c->polygon_capacity, c->polygon_count + 1,
+                              sizeof *p);
+    if (!p) {
+        c->failed = 1;
+        return;
+    }
+    c->polygons = p;
+    painter_polygon *out = &c->polygons[c->polygon_count++];
+    out->n = n;
+    memcpy(out->color, color, sizeof out->color);
+    memcpy(out->v, v, sizeof *v * (size_t)n);
+}
+
+/* Flat colour (or Phong base colour) of triangle i. */
+static void triangle_color(const render_frame *f, size_t i, float out[3])
+{
+    const uint32_t *tri = f->r->triangles[i];
+    const prepared_vertex *p0 = &f->r->vertices[tri[0]];
+    if (f->fill_background) {
+        memcpy(out, f->background, 3 * sizeof(float));
+        return;
+    }
+    if (f->shading != MODE_FLAT) {
+        memcpy(out, p0->color, 3 * sizeof(float));
+        return;
+    }
+    const float *a = f->vertices[tri[0]].world, *b = f->vertices[tri[1]].world,
+                *c = f->vertices[tri[2]].world;
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    float normal[3] = {0, 0, 0};
+    if (length > 0)
+        for (int k = 0; k < 3; k++)
+            normal[k] = (float)(n[k] / length);
+    float centre[3];
+    for (int k = 0; k < 3; k++)
+        centre[k] = (a[k] + b[k] + c[k]) / 3;
+    render_shade(&f->lighting, centre, normal, p0->color, out);
+}
+
+void render_finish_setup(const render_frame *f, setup_triangle *t, const float color[3])
+{
+    memcpy(t->color, color, sizeof t->color);
+    t->color8.r = render_encode(&f->r->encoder, color[0]);
+    t->color8.g = render_encode(&f->r->encoder, color[1]);
+    t->color8.b = render_encode(&f->r->encoder, color[2]);
+    t->color8.a = 255;
+}
+
+
+static void triangle_stage(render_frame *f, render_chunk *c, int painter)
+{
+    const int n = f->attribute_count;
+    for (size_t i = c->begin; i < c->end; i++) {
+        const uint32_t *tri = f->r->triangles[i];
+        const frame_vertex *v[3] = {&f->vertices[tri[0]], &f->vertices[tri[1]],
+                                    &f->vertices[tri[2]]};
+        unsigned all = v[0]->outcode & v[1]->outcode & v[2]->outcode;
+        unsigned any = v[0]->outcode | v[1]->outcode | v[2]->outcode;
+        if ((any & 0x40) || all) {
+            c->rejected++;
+            continue;
+        }
+        if (!any && !painter && v[0]->c[3] > 0 && v[1]->c[3] > 0 && v[2]->c[3] > 0) {
+            /* Inside the frustum: set up from the snapped vertices; back
+             * faces leave before anything else is read. */
+            int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
+                           - (int64_t)(v[1]->sy - v[0]->sy) * (v[2]->sx - v[0]->sx);
+            if (area > 0 && f->cull) {
+                c->culled++;
+                continue;
+            }
+            render_corner corner[3];
+            for (int k = 0; k < 3; k++) {
+                corner[k].x = v[k]->sx;
+                corner[k].y = v[k]->sy;
+                corner[k].z = v[k]->sz;
+                corner[k].iw = v[k]->siw;
+                corner[k].a = v[k]->a;
+            }
+            const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
+            setup_triangle t;
+            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, &t);
+            if (result < 0) {
+                c->culled++;
+                continue;
+            }
+            if (result == 0) {
+                c->rejected++;
+                continue;
+            }
+            float color[3];
+            triangle_color(f, i, color);
+            render_finish_setup(f, &t, color);
+            emit_setup(f, c, &t);
+            continue;
+        }
+        clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
+        for (int k = 0; k < 3; k++) {
+            memcpy(in[k].c, v[k]->c, sizeof in[k].c);
+            memcpy(in[k].a, v[k]->a, sizeof(float) * (size_t)n);
+        }
+        int count = 3;
+        const clip_vertex *corners = in;
+        if (any) {
+            c->clipped++;
+            count = render_clip_polygon(in, 3, any, n, polygon);
+            corners = polygon;
+        }
+        screen_vertex s[RENDER_MAX_POLYGON];
+        int usable = count >= 3;
+        for (int k = 0; k < count; k++) {
+            if (!(corners[k].c[3] > 0))
+                usable = 0;
+            render_project(&corners[k], f->width, f->height, n, &s[k]);
+        }
+        if (!usable) {
+            c->rejected++;
+            continue;
+        }
+        float color[3];
+        int colored = 0;
+        if (painter) {
+            triangle_color(f, i, color);
+            /* Culling by the orientation of the whole polygon. */
+            double area = 0;
+            for (int k = 0; k < count; k++) {
+                const screen_vertex *p = &s[k], *q = &s[(k + 1) % count];
+                area += (q->x - p->x) * (q->y + p->y);
+            }
+            /* area > 0 for polygons the camera sees counter-clockwise (front). */
+            if (f->cull && area <= 0) {
+                c->culled++;
+                continue;
+            }
+            emit_polygon(c, s, count, color);
+            continue;
+        }
+        int culled = 0, emitted = 0;
+        for (int k = 1; k + 1 < count; k++) {
+            setup_triangle t;
+            int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->cull,
+                                      &t);
+            if (result < 0)
+                culled = 1;
+            if (result != 1)
+                continue;
+            if (!colored) {
+                /* Lit only once the triangle is known to be visible. */
+                triangle_color(f, i, color);
+                colored = 1;
+            }
+            render_finish_setup(f, &t, color);
+            emit_setup(f, c, &t);
+            emitted++;
+        }
+        if (culled && !emitted)
+            c->culled++;
+        else if (!emitted)
+            c->rejected++;
+    }
+}
+
+/* Tile lists of one chunk (counting sort by tile, mesh order kept). */
+static void bin_chunk(render_frame *f, render_chunk *c)
+{
+    if (c->failed)
+        return;
+    c->bin_start = calloc((size_t)f->tile_count + 1, sizeof *c->bin_start);
+    if (!c->bin_start) {
+        c->failed = 1;
+        return;
+    }
+    size_t total = 0;
+    for (size_t i = 0; i < c->setup_count; i++) {
+        const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
+        int tx0 = t->box[0] / RENDER_TILE, tx1 = (t->box[2] - 1) / RENDER_TILE;
+        int ty0 = t->box[1] / RENDER_TILE, ty1 = (t->box[3] - 1) / RENDER_TILE;
+        for (int ty = ty0; ty <= ty1; ty++)
+            for (int tx = tx0; tx <= tx1; tx++)
+                c->bin_start[ty * f->tiles_x + tx + 1]++;
+        total += (size_t)(tx1 - tx0 + 1) * (size_t)(ty1 - ty0 + 1);
+    }
+    if (total > UINT32_MAX) {
+        c->failed = 1;
+        return;
+    }
+    for (int t = 0; t < f->tile_count; t++)
+        c->bin_start[t + 1] += c->bin_start[t];
+    c->bin_list = malloc((total ? total : 1) * sizeof *c->bin_list);
+    uint32_t *fill = malloc((size_t)f->tile_count * sizeof *fill);
+    if (!c->bin_list || !fill) {
+        free(fill);
+        c->failed = 1;
+        return;
+    }
+    memcpy(fill, c->bin_start, (size_t)f->tile_count * sizeof *fill);
+    for (size_t i = 0; i < c->setup_count; i++) {
+        const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
+        int tx0 = t->box[0] / RENDER_TILE, tx1 = (t->box[2] - 1) / RENDER_TILE;
+        int ty0 = t->box[1] / RENDER_TILE, ty1 = (t->box[3] - 1) / RENDER_TILE;
+        for (int ty = ty0; ty <= ty1; ty++)
+            for (int tx = tx0; tx <= tx1; tx++)
+                c->bin_list[fill[ty * f->tiles_x + tx]++] = (uint32_t)i;
+    }
+    free(fill);
+}
+
+/* ---- the team of threads ------------------------------------------------------ */
+
+typedef struct team {
+    render_frame *frame;
+    pthread_mutex_t lock;
+    pthread_cond_t go;
+    int ready;                  /* set once every thread that could start has */
+    int workers;                /* threads actually running */
+    pthread_barrier_t barrier;
+    atomic_int next_tile;
+    atomic_int tiles_done;
+    int painter;
+    size_t fragments[64];
+} team;
+
+typedef struct worker {
+    team *team;
+    int index;
+} worker;
+
+static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
+{
+    const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
+                                 f->background[3]};
+    size_t width = (size_t)(x1 - x0);
+    /* The first row by hand, the others copied from it. */
+    float *z0 = f->depth + (size_t)y0 * f->width + x0;
+    for (size_t x = 0; x < width; x++)
+        z0[x] = INFINITY;
+    if (f->image->format == CG_PIXEL_RGBA8) {
+        cg_rgba8 *row = cg_image_row_rgba8(f->image, y0) + x0;
+        for (size_t x = 0; x < width; x++)
+            row[x] = f->background8;
+    } else {
+        cg_rgbaf *row = cg_image_row_rgbaf(f->image, y0) + x0;
+        for (size_t x = 0; x < width; x++)
+            row[x] = background;
+    }
+    size_t pixel = f->image->format == CG_PIXEL_RGBA8 ? sizeof(cg_rgba8) : sizeof(cg_rgbaf);
+    const unsigned char *first = f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel;
+    for (int y = y0 + 1; y < y1; y++) {
+        memcpy(f->depth + (size_t)y * f->width + x0, z0, width * sizeof *z0);
+        memcpy(f->image->data + (size_t)y * f->image->stride + (size_t)x0 * pixel, first,
+               width * pixel);
+    }
+}
+
+static void *work(void *argument)
+{
+    worker *w = argument;
+    team *tm = w->team;
+    render_frame *f = tm->frame;
+    pthread_mutex_lock(&tm->lock);
+    while (!tm->ready)
+        pthread_cond_wait(&tm->go, &tm->lock);
+    pthread_mutex_unlock(&tm->lock);
+    int workers = tm->workers, threads = f->thread_count;
+    /* Vertex stage over an even share of the vertices. */
+    size_t vertices = f->r->vertex_count;
+    vertex_stage(f, vertices * (size_t)w->index / (size_t)workers,
+                 vertices * (size_t)(w->index + 1) / (size_t)workers);
+    pthread_barrier_wait(&tm->barrier);
+    for (int i = w->index; i < threads; i += workers) {
+        render_chunk *chunk = &f->chunks[i];
+        triangle_stage(f, chunk, tm->painter);
+        if (!tm->painter)
+            bin_chunk(f, chunk);
+    }
+    pthread_barrier_wait(&tm->barrier);
+    if (tm->painter)
+        return NULL;
+    int failed = 0;
+    for (int i = 0; i < threads; i++)
+        failed |= f->chunks[i].failed;
+    if (failed)
+        return NULL;
+    size_t fragments = 0;
+    for (;;) {
+        int tile = atomic_fetch_add(&tm->next_tile, 1);
+        if (tile >= f->tile_count)
+            break;
+        int x0 = tile % f->tiles_x * RENDER_TILE, y0 = tile / f->tiles_x * RENDER_TILE;
+        int x1 = x0 + RENDER_TILE < f->width ? x0 + RENDER_TILE : f->width;
+        int y1 = y0 + RENDER_TILE < f->height ? y0 + RENDER_TILE : f->height;
+        clear_tile(f, x0, y0, x1, y1);
+        for (int i = 0; i < threads; i++) {
+            const render_chunk *c = &f->chunks[i];
+            for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++) {
+                const setup_triangle *t =
+                    (const setup_triangle *)(c->setups + (size_t)c->bin_list[k] * f->stride);
+                fragments += render_raster(f, t, x0, y0, x1, y1, 1);
+            }
+        }
+        int done = atomic_fetch_add(&tm->tiles_done, 1) + 1;
+        if (w->index == 0 && f->o->progress)
+            f->o->progress(f->o->progress_user, (double)done / f->tile_count);
+    }
+    tm->fragments[w->index] = fragments;
+    return NULL;
+}
+
+/* ---- a frame ---------------------------------------------------------------------- */
+
+static cg_status frame_camera(cg_renderer *r, double aspect, cg_camera *camera)
+{
+    *camera = r->options.camera;
+    if (!r->options.frame_camera || !r->has_bounds)
+        return CG_OK;
+    /* World bounds of the model-space box. */
+    cg_vec3 lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < 8; i++) {
+        cg_vec3 p = {(i & 1) ? r->hi.x : r->lo.x, (i & 2) ? r->hi.y : r->lo.y,
+                     (i & 4) ? r->hi.z : r->lo.z};
+        p = cg_mat4_transform_point(r->options.model, p);
+        lo = cg_vec3_make(fmin(lo.x, p.x), fmin(lo.y, p.y), fmin(lo.z, p.z));
+        hi = cg_vec3_make(fmax(hi.x, p.x), fmax(hi.y, p.y), fmax(hi.z, p.z));
+    }
+    return cg_camera_frame(camera, lo, hi, aspect);
+}
+
+static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_mat4 *view)
+{
+    const cg_render_options *o = f->o;
+    render_lighting *l = &f->lighting;
+    /* White lights; ka, kd = 1 and ks of the options; Blinn-Phong. */
+    l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular,
+                                   o->shininess);
+    l->material.specular = CG_SPECULAR_BLINN;
+    if (o->specular == 0)
+        l->material.shininess = 1; /* the term is zero anyway: spare its power */
+    l->orthographic = camera->orthographic;
+    l->eye[0] = (float)camera->eye.x;
+    l->eye[1] = (float)camera->eye.y;
+    l->eye[2] = (float)camera->eye.z;
+    cg_vec3 back = cg_vec3_normalize(cg_vec3_sub(camera->eye, camera->target));
+    l->view_dir[0] = (float)back.x;
+    l->view_dir[1] = (float)back.y;
+    l->view_dir[2] = (float)back.z;
+    l->lights[0] = cg_light_ambient(cg_vec3_make(1, 1, 1));
+    if (o->light_count == 0) {
+        /* A key light from the camera's upper left, a little in front. */
+        cg_vec3 d = cg_vec3_normalize(cg_vec3_make(-1, 1, 1.5));
+        /* View-space direction to world: the view's rotation is orthonormal,
+         * so its inverse is its transpose. */
+        cg_vec3 world = {view->m[0][0] * d.x + view->m[1][0] * d.y + view->m[2][0] * d.z,
+                         view->m[0][1] * d.x + view->m[1][1] * d.y + view->m[2][1] * d.z,
+                         view->m[0][2] * d.x + view->m[1][2] * d.y + view->m[2][2] * d.z};
+        l->lights[1] = cg_light_directional(cg_vec3_scale(world, -1), cg_vec3_make(0.85, 0.85, 0.85));
+        l->count = 2;
+        return;
+    }
+    /* The options name the direction toward each light; cg_light the way
+     * its light travels. */
+    for (int i = 0; i < o->light_count; i++) {
+        double k = o->lights[i].intensity;
+        l->lights[i + 1] = cg_light_directional(cg_vec3_scale(o->lights[i].direction, -1),
+                                                cg_vec3_make(k, k, k));
+    }
+    l->count = o->light_count + 1;
+}
+
+static void free_chunks(render_frame *f)
+{
+    if (!f->chunks)
+        return;
+    for (int i = 0; i < f->thread_count; i++) {
+        free(f->chunks[i].setups);
+        free(f->chunks[i].bin_start);
+        free(f->chunks[i].bin_list);
+        free(f->chunks[i].polygons);
+    }
+    free(f->chunks);
+    f->chunks = NULL;
+}
+
+cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
+{
+    if (!r || !image || !image->data || image->width <= 0 || image->height <= 0
+        || (image->format != CG_PIXEL_RGBA8 && image->format != CG_PIXEL_RGBAF))
+        return CG_EINVAL;
+    if (image->width > CG_RASTER_MAX_SIDE || image->height > CG_RASTER_MAX_SIDE)
+        return CG_ERANGE;
+    const cg_render_options *o = &r->options;
+    memset(&r->stats, 0, sizeof r->stats);
+    r->stats.triangles = r->triangle_count;
+    r->depth_valid = 0;
+    render_frame f;
+    memset(&f, 0, sizeof f);
+    f.r = r;
+    f.o = o;
+    f.image = image;
+    f.width = image->width;
+    f.height = image->height;
+    double aspect = (double)f.width / f.height;
+    cg_camera camera;
+    cg_mat4 view, projection;
+    if (frame_camera(r, aspect, &camera) != CG_OK || cg_camera_view(&camera, &view) != CG_OK
+        || cg_camera_projection(&camera, aspect, &projection) != CG_OK)
+        return CG_EINVAL;
+    r->camera = camera;
+    f.model = o->model;
+    f.mvp = cg_mat4_mul(projection, cg_mat4_mul(view, o->model));
+    cg_mat4 inverse;
+    if (cg_mat4_inverse(o->model, &inverse) != CG_OK)
+        return CG_EINVAL;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            f.normal_matrix[i][j] = inverse.m[j][i];
+    setup_lighting(&f, &camera, &view);
+    f.fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
+    f.shading = f.fill_background ? MODE_FLAT : (int)o->shading;
+    f.attribute_count = f.shading == MODE_FLAT ? 0 : f.shading == MODE_GOURAUD ? 3
+                        : r->varying_color ? 9 : 6;
+    f.cull = o->cull == CG_CULL_BACK;
+    f.background[0] = o->background.r;
+    f.background[1] = o->background.g;
+    f.background[2] = o->background.b;
+    f.background[3] = o->background.a;
+    f.background8 = cg_linear_to_rgba8(o->background);
+    f.stride = SETUP_SIZE(f.attribute_count);
+    f.tiles_x = (f.width + RENDER_TILE - 1) / RENDER_TILE;
+    f.tiles_y = (f.height + RENDER_TILE - 1) / RENDER_TILE;
+    f.tile_count = f.tiles_x * f.tiles_y;
+    size_t pixels = (size_t)f.width * (size_t)f.height;
+    if (r->depth_size < pixels) {
+        float *depth = realloc(r->depth, pixels * sizeof *depth);
+        if (!depth)
+            return CG_ENOMEM;
+        r->depth = depth;
+        r->depth_size = pixels;
+    }
+    f.depth = r->depth;
+    r->depth_width = f.width;
+    r->depth_height = f.height;
+
+    /* Whole-object culling: the bounding box against the six planes. */
+    unsigned all = 0x3f;
+    if (r->has_bounds) {
+        for (int i = 0; i < 8; i++) {
+            cg_vec3 p = {(i & 1) ? r->hi.x : r->lo.x, (i & 2) ? r->hi.y : r->lo.y,
+                         (i & 4) ? r->hi.z : r->lo.z};
+            cg_vec4 c = cg_mat4_mul_vec4(f.mvp, cg_vec4_from_point(p));
+            double cc[4] = {c.x, c.y, c.z, c.w};
+            all &= render_outcode(cc);
+        }
+    }
+    if (all || r->triangle_count == 0 || o->edges == CG_EDGES_WIREFRAME) {
+        r->stats.object_culled = all != 0 && r->has_bounds;
+        clear_tile(&f, 0, 0, f.width, f.height);
+        r->depth_valid = 1;
+        if (o->edges == CG_EDGES_WIREFRAME && !all && r->triangle_count) {
+            f.vertices = malloc(r->vertex_count * sizeof *f.vertices);
+            if (!f.vertices)
+                return CG_ENOMEM;
+            vertex_stage(&f, 0, r->vertex_count);
+            r->depth_valid = 0;
+            cg_status status = render_edges(&f);
+            free(f.vertices);
+            return status;
+        }
+        return CG_OK;
+    }
+
+    f.thread_count = o->threads;
+    if ((size_t)f.thread_count > r->triangle_count)
+        f.thread_count = (int)r->triangle_count;
+    f.vertices = malloc(r->vertex_count * sizeof *f.vertices);
+    f.chunks = calloc((size_t)f.thread_count, sizeof *f.chunks);
+    if (!f.vertices || !f.chunks) {
+        free(f.vertices);
+        free(f.chunks);
+        return CG_ENOMEM;
+    }
+    for (int i = 0; i < f.thread_count; i++) {
+        f.chunks[i].begin = r->triangle_count * (size_t)i / (size_t)f.thread_count;
+        f.chunks[i].end = r->triangle_count * (size_t)(i + 1) / (size_t)f.thread_count;
+    }
+    team tm;
+    memset(&tm, 0, sizeof tm);
+    tm.frame = &f;
+    tm.painter = o->algorithm != CG_RENDER_ZBUFFER;
+    atomic_init(&tm.next_tile, 0);
+    atomic_init(&tm.tiles_done, 0);
+    pthread_mutex_init(&tm.lock, NULL);
+    pthread_cond_init(&tm.go, NULL);
+    worker workers[64];
+    pthread_t threads[64];
+    int started = 1;
+    for (int i = 0; i < f.thread_count; i++) {
+        workers[i].team = &tm;
+        workers[i].index = i;
+    }
+    /* Threads that cannot be started leave their chunks to the others. */
+    for (int i = 1; i < f.thread_count; i++) {
+        if (pthread_create(&threads[i], NULL, work, &workers[i]) != 0)
+            break;
+        started++;
+    }
+    tm.workers = started;
+    pthread_barrier_init(&tm.barrier, NULL, (unsigned)started);
+    pthread_mutex_lock(&tm.lock);
+    tm.ready = 1;
+    pthread_cond_broadcast(&tm.go);
+    pthread_mutex_unlock(&tm.lock);
+    work(&workers[0]);
+    for (int i = 1; i < started; i++)
+        pthread_join(threads[i], NULL);
+    pthread_barrier_destroy(&tm.barrier);
+    pthread_cond_destroy(&tm.go);
+    pthread_mutex_destroy(&tm.lock);
+    cg_status status = CG_OK;
+    for (int i = 0; i < f.thread_count && status == CG_OK; i++) {
+        render_chunk *c = &f.chunks[i];
+        if (c->failed)
+            status = CG_ENOMEM;
+        r->stats.culled += c->culled;
+        r->stats.clipped += c->clipped;
+        r->stats.rejected += c->rejected;
+        r->stats.rasterized += c->setup_count;
+        r->stats.fragments += tm.fragments[i];
+    }
+    if (status == CG_OK && tm.painter)
+        status = render_painter(&f);
+    if (status == CG_OK) {
+        r->depth_valid = 1;
+        r->stats.splits = f.splits;
+        if (o->edges == CG_EDGES_HIDDEN_LINE || o->edges == CG_EDGES_OVERLAY)
+            status = render_edges(&f);
+    }
+    free_chunks(&f);
+    free(f.vertices);
+    return status;
+}

@@ -1,0 +1,215 @@
+/* Triangle setup and the edge-function rasterizer with fixed-point vertices
+ * and the top-left fill rule. */
+#include "internal.h"
+
+#include <string.h>
+
+#define SUBPIXEL (1 << CG_RASTER_SUBPIXEL_BITS)
+#define HALF (SUBPIXEL / 2)
+
+void render_project(const clip_vertex *v, int width, int height, int attribute_count,
+                    screen_vertex *out)
+{
+    double iw = 1.0 / v->c[3];
+    out->x = (v->c[0] * iw + 1.0) * 0.5 * width;
+    out->y = (1.0 - v->c[1] * iw) * 0.5 * height;
+    out->z = v->c[2] * iw * 0.5 + 0.5;
+    out->iw = iw;
+    for (int i = 0; i < attribute_count; i++)
+        out->a[i] = v->a[i];
+}
+
+/* Vertices within this many pixels around the image are rasterized exactly;
+ * fixed-point values then stay below 2^29 and edge functions within 64 bits. */
+#define GUARD_BAND (1 << 20)
+
+/* Rounds to the 1/256 grid and clamps to the guard band. */
+static int32_t snap(double value, int size)
+{
+    double s = value * SUBPIXEL + 0.5;
+    /* floor without a library call (NaN is not possible here). */
+    if (s > -4e9 && s < 4e9) {
+        double t = (double)(int64_t)s;
+        s = t > s ? t - 1 : t;
+    } else {
+        s = floor(s);
+    }
+    double lo = -(double)GUARD_BAND * SUBPIXEL, hi = ((double)size + GUARD_BAND) * SUBPIXEL;
+    if (!(s >= lo))
+        s = lo;
+    if (s > hi)
+        s = hi;
+    return (int32_t)s;
+}
+
+static int64_t floor_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+}
+
+int32_t render_snap(double value, int size)
+{
+    return snap(value, size);
+}
+
+int render_setup_fixed(const render_corner *const v[3], int width, int height,
+                       int attribute_count, int cull, setup_triangle *out)
+{
+    int32_t x[3] = {v[0]->x, v[1]->x, v[2]->x}, y[3] = {v[0]->y, v[1]->y, v[2]->y};
+    int64_t area = (int64_t)(x[1] - x[0]) * (y[2] - y[0]) - (int64_t)(y[1] - y[0]) * (x[2] - x[0]);
+    /* The camera sees front faces counter-clockwise; on the y-down screen
+     * that makes this edge function negative.  The rasterizer wants it
+     * positive: front faces are turned around, back faces culled or turned. */
+    if (area == 0)
+        return 0;
+    if (area > 0 && cull)
+        return -1;
+    int order[3] = {0, 2, 1};
+    if (area > 0) {
+        order[1] = 1;
+        order[2] = 2;
+    } else {
+        area = -area;
+    }
+    int32_t min_x = x[0], max_x = x[0], min_y = y[0], max_y = y[0];
+    for (int k = 1; k < 3; k++) {
+        if (x[k] < min_x) min_x = x[k];
+        if (x[k] > max_x) max_x = x[k];
+        if (y[k] < min_y) min_y = y[k];
+        if (y[k] > max_y) max_y = y[k];
+    }
+    /* Pixels whose centres p * 256 + 128 lie within the box. */
+    int64_t x0 = floor_div((int64_t)min_x - HALF + SUBPIXEL - 1, SUBPIXEL);
+    int64_t x1 = floor_div((int64_t)max_x - HALF, SUBPIXEL) + 1;
+    int64_t y0 = floor_div((int64_t)min_y - HALF + SUBPIXEL - 1, SUBPIXEL);
+    int64_t y1 = floor_div((int64_t)max_y - HALF, SUBPIXEL) + 1;
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > width) x1 = width;
+    if (y1 > height) y1 = height;
+    if (x0 >= x1 || y0 >= y1)
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        const render_corner *c = v[order[k]];
+        out->x[k] = c->x;
+        out->y[k] = c->y;
+        out->z[k] = c->z;
+        out->iw[k] = c->iw;
+        memcpy(&out->a[k * attribute_count], c->a, sizeof(float) * (size_t)attribute_count);
+    }
+    out->box[0] = (int32_t)x0;
+    out->box[1] = (int32_t)y0;
+    out->box[2] = (int32_t)x1;
+    out->box[3] = (int32_t)y1;
+    out->inverse_area = (float)(1.0 / (double)area);
+    return 1;
+}
+
+void render_corner_from_screen(const screen_vertex *s, int width, int height,
+                               render_corner *out)
+{
+    out->x = snap(s->x, width);
+    out->y = snap(s->y, height);
+    out->z = (float)s->z;
+    out->iw = (float)s->iw;
+    out->a = s->a;
+}
+
+int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
+                 int width, int height, int attribute_count, int cull, setup_triangle *out)
+{
+    render_corner corners[3];
+    render_corner_from_screen(a, width, height, &corners[0]);
+    render_corner_from_screen(b, width, height, &corners[1]);
+    render_corner_from_screen(c, width, height, &corners[2]);
+    const render_corner *v[3] = {&corners[0], &corners[1], &corners[2]};
+    return render_setup_fixed(v, width, height, attribute_count, cull, out);
+}
+
+void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out)
+{
+    int64_t px = (int64_t)x * SUBPIXEL + HALF, py = (int64_t)y * SUBPIXEL + HALF;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int64_t dx = (int64_t)t->x[j] - t->x[i], dy = (int64_t)t->y[j] - t->y[i];
+        /* With positive area (clockwise on a y-down screen) the interior is
+         * where every edge function is positive.  Top edges run in +x with
+         * dy == 0, left edges go up (dy < 0); pixel centres on other edges
+         * belong to the neighbour: bias -1. */
+        int top_left = dy < 0 || (dy == 0 && dx > 0);
+        out->w[k] = dx * (py - t->y[i]) - dy * (px - t->x[i]) - (top_left ? 0 : 1);
+        out->step_x[k] = -dy * SUBPIXEL;
+        out->step_y[k] = dx * SUBPIXEL;
+    }
+}
+
+cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_fn span,
+                             void *user)
+{
+    if (!v || !span || width < 0 || height < 0)
+        return CG_EINVAL;
+    if (width > CG_RASTER_MAX_SIDE || height > CG_RASTER_MAX_SIDE)
+        return CG_ERANGE;
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(v[k].x) || !isfinite(v[k].y))
+            return CG_EINVAL;
+    if (width == 0 || height == 0)
+        return CG_OK;
+    /* Vertices beyond the guard band are first clipped to it (as points of
+     * the plane w = 1); edges shared by two triangles are cut alike. */
+    double hx = 0.5 * width + GUARD_BAND, hy = 0.5 * height + GUARD_BAND;
+    clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
+    unsigned any = 0;
+    for (int k = 0; k < 3; k++) {
+        in[k].c[0] = (v[k].x - 0.5 * width) / hx;
+        in[k].c[1] = (0.5 * height - v[k].y) / hy;
+        in[k].c[2] = 0;
+        in[k].c[3] = 1;
+        any |= render_outcode(in[k].c);
+    }
+    int n = 3;
+    if (any)
+        n = render_clip_polygon(in, 3, 0x0f, 0, polygon);
+    else
+        memcpy(polygon, in, sizeof in);
+    screen_vertex s[RENDER_MAX_POLYGON];
+    for (int k = 0; k < n; k++) {
+        if (any) {
+            s[k].x = polygon[k].c[0] * hx + 0.5 * width;
+            s[k].y = 0.5 * height - polygon[k].c[1] * hy;
+        } else {
+            s[k].x = v[k].x;
+            s[k].y = v[k].y;
+        }
+        s[k].z = s[k].iw = 0;
+    }
+    for (int k = 1; k + 1 < n; k++) {
+        setup_triangle t;
+        if (render_setup(&s[0], &s[k], &s[k + 1], width, height, 0, 0, &t) != 1)
+            continue;
+        raster_edges e;
+        render_edges_at(&t, t.box[0], t.box[1], &e);
+        for (int y = t.box[1]; y < t.box[3]; y++) {
+            int64_t w0 = e.w[0], w1 = e.w[1], w2 = e.w[2];
+            int run = -1;
+            for (int x = t.box[0]; x < t.box[2]; x++) {
+                int inside = (w0 | w1 | w2) >= 0;
+                if (inside && run < 0)
+                    run = x;
+                else if (!inside && run >= 0) {
+                    span(user, y, run, x);
+                    run = -1;
+                }
+                w0 += e.step_x[0];
+                w1 += e.step_x[1];
+                w2 += e.step_x[2];
+            }
+            if (run >= 0)
+                span(user, y, run, t.box[2]);
+            for (int k2 = 0; k2 < 3; k2++)
+                e.w[k2] += e.step_y[k2];
+        }
+    }
+    return CG_OK;
+}

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# cg clip: the contract of line and boolean, pictures, bad input.
+set -u
+cg="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+pass=0
+check() { # description, command output, expected
+    if [ "$2" == "$3" ]; then pass=$((pass + 1)); else
+        echo "FAIL: $1: got '$2', expected '$3'"; fail=$((fail + 1)); fi
+}
+status() { # description, expected status, command...
+    local want=$2; shift 2
+    "$@" > "$tmp/out" 2> "$tmp/err"
+    local got=$?
+    if [ "$got" == "$want" ]; then pass=$((pass + 1)); else
+        echo "FAIL: $*: status $got, expected $want"; cat "$tmp/err"; fail=$((fail + 1)); fi
+}
+
+check "line inside" "$("$cg" clip line 0 0 10 10 1 2 3 4)" "1 2 3 4"
+check "line clipped" "$("$cg" clip line 0 0 10 10 -5 5 15 8)" "0 5.75 10 7.25"
+check "line liang-barsky" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --algorithm liang-barsky)" "0 5.75 10 7.25"
+check "line rejected" "$("$cg" clip line 0 0 10 10 -5 15 15 18)" "rejected"
+check "line rejected lb" "$("$cg" clip line 0 0 10 10 11 0 11 10 --algorithm=liang-barsky)" "rejected"
+check "line point" "$("$cg" clip line 0 0 10 10 5 5 5 5)" "5 5 5 5"
+check "line on edge" "$("$cg" clip line 0 0 10 10 -3 10 13 10)" "0 10 10 10"
+check "trace last line" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --trace | tail -1)" "0 5.75 10 7.25"
+check "trace first step" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --trace | head -1)" \
+    "step 1: P0 (-5, 5) rCode 0001, P1 (15, 8) rCode 0010: clip left"
+check "trace reject" "$("$cg" clip line 0 0 10 10 -5 11 -1 20 --trace | head -1)" \
+    "step 1: P0 (-5, 11) rCode 1001, P1 (-1, 20) rCode 1001: trivial reject"
+status "line bad number" 2 "$cg" clip line 0 0 10 10 1 2 3 x
+status "line too few" 2 "$cg" clip line 0 0 10 10 1 2 3
+status "line nan" 2 "$cg" clip line 0 0 10 10 1 2 3 nan
+status "line bad window" 2 "$cg" clip line 10 0 0 10 1 2 3 4
+status "line bad algorithm" 2 "$cg" clip line 0 0 10 10 1 2 3 4 --algorithm foo
+
+echo "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))" > "$tmp/a.wkt"
+echo "MULTIPOLYGON (((5 5, 15 5, 15 15, 5 15, 5 5)))" > "$tmp/b.wkt"
+check "intersection" "$("$cg" clip boolean intersection "$tmp/a.wkt" "$tmp/b.wkt")" \
+    "MULTIPOLYGON (((5 5, 10 5, 10 10, 5 10, 5 5)))"
+check "union" "$("$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt")" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 5, 15 5, 15 15, 5 15, 5 10, 0 10, 0 0)))"
+check "difference" "$("$cg" clip boolean difference "$tmp/a.wkt" "$tmp/b.wkt")" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 5, 5 5, 5 10, 0 10, 0 0)))"
+check "stdin" "$("$cg" clip boolean intersection - "$tmp/b.wkt" < "$tmp/a.wkt")" \
+    "MULTIPOLYGON (((5 5, 10 5, 10 10, 5 10, 5 5)))"
+echo "MULTIPOLYGON EMPTY" > "$tmp/e.wkt"
+check "empty" "$("$cg" clip boolean intersection "$tmp/a.wkt" "$tmp/e.wkt")" "MULTIPOLYGON EMPTY"
+check "empty union" "$("$cg" clip boolean union "$tmp/e.wkt" "$tmp/a.wkt")" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
+# a hole given clockwise: even-odd and non-zero agree; both rings counter-clockwise: they differ
+echo "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2))" > "$tmp/h.wkt"
+check "evenodd hole" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill evenodd)" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 8 2, 2 2)))"
+check "nonzero same direction" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill nonzero)" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
+check "negative" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill negative)" "MULTIPOLYGON EMPTY"
+"$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" --repeat 5 > /dev/null 2> "$tmp/time"
+if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass=$((pass + 1)); else
+    echo "FAIL: --repeat line: $(cat "$tmp/time")"; fail=$((fail + 1)); fi
+status "picture" 0 "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" -o "$tmp/x.png"
+if [ -s "$tmp/x.png" ]; then pass=$((pass + 1)); else echo "FAIL: no picture"; fail=$((fail + 1)); fi
+status "polygon sh" 0 "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt"
+check "polygon sh output" "$(cat "$tmp/out")" "MULTIPOLYGON (((5 5, 10 5, 10 10, 5 10, 5 5)))"
+status "polygon wa" 0 "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
+
+echo "POLYGON ((0 0, 1 x))" > "$tmp/bad.wkt"
+status "bad wkt" 1 "$cg" clip boolean union "$tmp/bad.wkt" "$tmp/a.wkt"
+grep -q "offset" "$tmp/err" && pass=$((pass + 1)) || { echo "FAIL: no offset in message"; fail=$((fail + 1)); }
+echo "POLYGON ((0 0, 1e999 0, 1 1, 0 0))" > "$tmp/inf.wkt"
+status "infinite" 1 "$cg" clip boolean union "$tmp/inf.wkt" "$tmp/a.wkt"
+echo "LINESTRING (0 0, 1 1)" > "$tmp/line.wkt"
+status "not a polygon" 1 "$cg" clip boolean union "$tmp/line.wkt" "$tmp/a.wkt"
+status "missing file" 1 "$cg" clip boolean union "$tmp/nothere.wkt" "$tmp/a.wkt"
+status "bad op" 2 "$cg" clip boolean merge "$tmp/a.wkt" "$tmp/b.wkt"
+status "bad fill" 2 "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --fill odd
+status "bad repeat" 2 "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --repeat 0
+status "bad sub" 2 "$cg" clip circle
+echo "POLYGON ((0 0, 10 0, 5 3, 0 10, 0 0))" > "$tmp/c.wkt"
+status "concave window sh" 1 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt"
+status "concave window wa" 0 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
+echo "$pass passed, $fail failed"
+[ "$fail" == 0 ]

@@ -1,0 +1,210 @@
+/* Gallery: filling (chapter 10) - even-odd against non-zero, joins and caps,
+ * dashes and gradients, a flood-filled maze, 4- against 8-connectivity. */
+#include "demo.h"
+#include "draw_demo.h"
+#include "cg/fill.h"
+#include "../../tests/maze.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#define COMMAND "cg demo --only Filling"
+
+static const cg_rgba8 paper = {250, 248, 242, 255}, ink = {40, 40, 48, 255};
+
+static int save(demo_context *context, const char *file, cg_image *image, const char *caption)
+{
+    int status = demo_add(context, file, image, caption, COMMAND);
+    cg_image_free(image);
+    return status;
+}
+
+static cg_image *canvas(int width, int height)
+{
+    cg_image *image;
+    if (cg_image_create(&image, width, height, CG_PIXEL_RGBA8) != CG_OK)
+        return NULL;
+    cg_image_clear_rgba8(image, paper);
+    return image;
+}
+
+/* A pentagram and two overlapping rings traced the same way, filled
+ * even-odd (left) and non-zero (right): a `cg draw` script. */
+static int fill_rules(demo_context *context)
+{
+    script_text t = {{0}, 0};
+    script_add(&t, "# even-odd (left) against non-zero (right)\nsize 520 260\n"
+                   "background #faf8f2\nwidth 1.2\n");
+    static const char *const rules[2] = {"evenodd", "nonzero"};
+    for (int half = 0; half < 2; half++) {
+        int dx = 260 * half;
+        script_add(&t, "fillrule %s\n", rules[half]);
+        script_add(&t, "path M %d 20 l 60 195 l -165 -120 l 210 0 l -165 120 Z\n", 130 + dx);
+        script_add(&t, "color #d65c3e\nfill\ncolor #282830\nstroke\n");
+        script_add(&t, "path M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z "
+                       "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z\n",
+                   62 + dx, 100 + dx);
+        script_add(&t, "color #3a76be\nfill\ncolor #282830\nstroke\n");
+    }
+    return draw_demo_script(context, "fill-rules", t.text,
+                            "Even-odd (left) against non-zero winding (right): a pentagram and "
+                            "two rings traced the same way; anti-aliased by exact area coverage");
+}
+
+/* Thick zig-zags with each join and segments with each cap over their
+ * centre lines, and dashed arcs: a `cg draw` script. */
+static int joins_and_caps(demo_context *context)
+{
+    static const char *const joins[3] = {"miter", "round", "bevel"};
+    static const char *const caps[3] = {"butt", "round", "square"};
+    static const char *const colors[3] = {"#408c6e", "#d68034", "#705cbe"};
+    script_text t = {{0}, 0};
+    script_add(&t, "# joins (top), caps (middle), dashes (bottom)\nsize 540 330\n"
+                   "background #faf8f2\n");
+    for (int j = 0; j < 3; j++) {
+        double x = 30 + 175 * j;
+        char zig[160], segment[96];
+        snprintf(zig, sizeof zig, "M %g 150 L %g 50 L %g 150 L %g 70 L %g 140", x, x + 35,
+                 x + 70, x + 105, x + 140);
+        snprintf(segment, sizeof segment, "M %g 215 L %g 215", x + 25, x + 115);
+        script_add(&t, "color %s\nwidth 22\njoin %s\ncap butt\ndash\npath %s\nstroke\n",
+                   colors[j], joins[j], zig);
+        script_add(&t, "color #dc2828\nwidth 1.5\njoin round\nstroke\n");
+        script_add(&t, "color %s\nwidth 26\ncap %s\npath %s\nstroke\n", colors[j], caps[j],
+                   segment);
+        script_add(&t, "color #dc2828\nwidth 1.5\ncap butt\nstroke\n");
+        script_add(&t, "color %s\nwidth 9\ncap %s\ndash 14 12\n"
+                       "path M %g 290 A 70 30 0 0 1 %g 290\nstroke\n",
+                   colors[j], caps[j], x + 5, x + 135);
+    }
+    return draw_demo_script(context, "fill-joins-caps", t.text,
+                            "Strokes turned into polygons: miter, round and bevel joins (top), "
+                            "butt, round and square caps (middle; centre lines in red), dashed "
+                            "arcs with each cap");
+}
+
+/* A glyph-like outline of arcs and lines: solid, linear and radial
+ * gradients. */
+static int gradients(demo_context *context, cg_rasterizer *r)
+{
+    cg_image *image = canvas(540, 175);
+    if (!image)
+        return 1;
+    cg_gradient_stop warm[3] = {{0, {250, 200, 60, 255}}, {0.5, {230, 80, 60, 255}},
+                                {1, {120, 30, 110, 255}}};
+    cg_gradient_stop cool[2] = {{0, {255, 255, 255, 255}}, {1, {30, 90, 170, 255}}};
+    /* the same ring with a notch, three times */
+    for (int k = 0; k < 3; k++) {
+        double cx = 90 + 180 * k;
+        char d[512];
+        snprintf(d, sizeof d,
+                 "M %g 110 A 80 80 0 1 1 %g 110 L %g 110 A 42 42 0 1 0 %g 110 Z "
+                 "M %g 60 L %g 110 L %g 160 Z",
+                 cx - 80, cx + 80, cx + 42, cx - 42, cx - 24, cx + 30, cx - 24);
+        cg_path *path;
+        if (cg_path_create(&path) != CG_OK)
+            break;
+        cg_path_append_svg(path, d, NULL);
+        cg_paint paint = k == 0   ? cg_paint_solid(ink)
+                         : k == 1 ? cg_paint_linear(cg_vec2_make(cx - 80, 30),
+                                                    cg_vec2_make(cx + 80, 190), warm, 3)
+                                  : cg_paint_radial(cg_vec2_make(cx - 20, 80), 110, cool, 2);
+        cg_rasterizer_fill_path(r, image, path, CG_FILL_EVEN_ODD, &paint);
+        cg_path_free(path);
+    }
+    return save(context, "fill-gradients.png", image,
+                "Paths of arcs and lines filled even-odd: solid, a linear gradient and a radial "
+                "gradient, interpolated in linear light");
+}
+
+/* A random maze with a few passages walled up, each separate region
+ * flood-filled from one seed in its own colour. */
+static int maze(demo_context *context)
+{
+    enum { CELLS = 40, SCALE = 6 };
+    int side = 2 * CELLS + 1;
+    cg_image *small;
+    if (cg_image_create(&small, side, side, CG_PIXEL_RGBA8) != CG_OK)
+        return 1;
+    cg_rgba8 wall = {44, 44, 54, 255}, open = {255, 255, 255, 255};
+    /* every 97th passage stays walled: the maze falls into regions */
+    if (maze_draw(small, CELLS, CELLS, 12345, 97, wall, open) != 0) {
+        cg_image_free(small);
+        return 1;
+    }
+    static const cg_rgba8 palette[] = {{230, 90, 70, 255},  {70, 150, 220, 255}, {90, 180, 100, 255},
+                                       {240, 180, 50, 255}, {160, 100, 200, 255}, {60, 190, 180, 255},
+                                       {220, 120, 170, 255}, {150, 150, 60, 255}};
+    int regions = 0;
+    for (int y = 1; y < side; y += 2)
+        for (int x = 1; x < side; x += 2) {
+            cg_rgba8 p = cg_image_get_rgba8(small, x, y);
+            if (p.r == 255 && p.g == 255 && p.b == 255)
+                cg_flood_fill(small, x, y, palette[regions++ % 8], CG_CONNECT_4, 0, NULL);
+        }
+    cg_image *image;
+    if (cg_image_create(&image, side * SCALE, side * SCALE, CG_PIXEL_RGBA8) != CG_OK) {
+        cg_image_free(small);
+        return 1;
+    }
+    for (int y = 0; y < side * SCALE; y++)
+        for (int x = 0; x < side * SCALE; x++)
+            cg_image_set_rgba8(image, x, y, cg_image_get_rgba8(small, x / SCALE, y / SCALE));
+    cg_image_free(small);
+    return save(context, "fill-maze.png", image,
+                "Flood fill: a random maze with some passages walled up; each region filled "
+                "from one seed by the scan-line span algorithm (4-connected), in its own colour");
+}
+
+/* One-pixel diagonal gaps: a 4-connected fill stops, an 8-connected one
+ * leaks through.  Shown magnified. */
+static int connectivity(demo_context *context)
+{
+    enum { N = 24 };
+    cg_rgba8 white = {255, 255, 255, 255}, wall = {44, 44, 54, 255};
+    cg_rgba8 fills[2] = {{70, 150, 220, 255}, {230, 90, 70, 255}};
+    const char *files[2] = {"fill-connect4.png", "fill-connect8.png"};
+    const char *captions[2] = {
+        "Seed fill from the top-left pixel, 4-connected: it stops at the one-pixel diagonal wall",
+        "The same seed fill, 8-connected: it slips through the diagonal wall's corners"};
+    int failed = 0;
+    for (int k = 0; k < 2; k++) {
+        cg_image *small;
+        zoom z;
+        if (cg_image_create(&small, N, N, CG_PIXEL_RGBA8) != CG_OK)
+            return 1;
+        if (zoom_create(&z, N, N, 11)) {
+            cg_image_free(small);
+            return 1;
+        }
+        cg_image_clear_rgba8(small, white);
+        for (int i = 0; i < N; i++) { /* a diagonal wall and short stairs */
+            cg_image_set_rgba8(small, i, N - 1 - i, wall);
+            if (i % 6 < 3)
+                cg_image_set_rgba8(small, (i + N / 2) % N, i, wall);
+        }
+        cg_flood_fill(small, 1, 1, fills[k], k ? CG_CONNECT_8 : CG_CONNECT_4, 0, NULL);
+        for (int y = 0; y < N; y++)
+            for (int x = 0; x < N; x++)
+                zoom_fill(&z, x, y, cg_image_get_rgba8(small, x, y));
+        cg_image_free(small);
+        failed |= zoom_add(context, &z, files[k], captions[k], COMMAND);
+    }
+    return failed;
+}
+
+static int render(demo_context *context)
+{
+    cg_rasterizer *r;
+    if (cg_rasterizer_create(&r) != CG_OK)
+        return 1;
+    int failed = fill_rules(context);
+    failed |= joins_and_caps(context);
+    failed |= gradients(context, r);
+    failed |= maze(context);
+    failed |= connectivity(context);
+    cg_rasterizer_free(r);
+    return failed;
+}
+
+const demo_section demo_section_fill = {10, "Filling", render};

@@ -127,25 +127,30 @@ size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v)
     return around(m, v, 1, 0, NULL, 0);
 }
 
-/* The average of the neighbours of one vertex, walking clockwise: next(twin(h))
+/* Adds the neighbours from half-edge h on until the rotation returns to h0. */
+static void ring_rest(const cg_hemesh_halfedge *he, const cg_vec3 *p, uint32_t h, uint32_t h0,
+                      double *x, double *y, double *z, size_t *n)
+{
+    do {
+        const cg_hemesh_halfedge *t = &he[h ^ 1u];
+        *x += p[t->origin].x;
+        *y += p[t->origin].y;
+        *z += p[t->origin].z;
+        ++*n;
+        h = t->next;
+    } while (h != h0);
+}
+
+/* The average of the neighbours of v, walking clockwise: next(twin(h))
  * reads only the pair h, h ^ 1. */
 static cg_vec3 neighbor_average(const cg_hemesh *m, uint32_t v)
 {
-    const cg_hemesh_halfedge *he = m->halfedges;
     uint32_t h0 = m->vertex_halfedge[v];
     if (h0 >= CG_HEMESH_DELETED)
         return m->positions[v];
     double x = 0, y = 0, z = 0;
     size_t n = 0;
-    uint32_t h = h0;
-    do {
-        const cg_vec3 *q = &m->positions[he[h ^ 1u].origin];
-        x += q->x;
-        y += q->y;
-        z += q->z;
-        n++;
-        h = he[h ^ 1u].next;
-    } while (h != h0);
+    ring_rest(m->halfedges, m->positions, h0, h0, &x, &y, &z, &n);
     double s = 1.0 / (double)n;
     return cg_vec3_make(x * s, y * s, z * s);
 }
@@ -181,22 +186,10 @@ cg_status cg_hemesh_neighbor_average(const cg_hemesh *m, cg_vec3 *out)
             a_more = a != a0;
             b_more = b != b0;
         }
-        while (a_more) {
-            const cg_hemesh_halfedge *ta = &he[a ^ 1u];
-            const cg_vec3 *qa = &p[ta->origin];
-            a = ta->next;
-            ax += qa->x, ay += qa->y, az += qa->z;
-            an++;
-            a_more = a != a0;
-        }
-        while (b_more) {
-            const cg_hemesh_halfedge *tb = &he[b ^ 1u];
-            const cg_vec3 *qb = &p[tb->origin];
-            b = tb->next;
-            bx += qb->x, by += qb->y, bz += qb->z;
-            bn++;
-            b_more = b != b0;
-        }
+        if (a_more)
+            ring_rest(he, p, a, a0, &ax, &ay, &az, &an);
+        if (b_more)
+            ring_rest(he, p, b, b0, &bx, &by, &bz, &bn);
         double sa = 1.0 / (double)an, sb = 1.0 / (double)bn;
         out[v] = cg_vec3_make(ax * sa, ay * sa, az * sa);
         out[v + 1] = cg_vec3_make(bx * sb, by * sb, bz * sb);

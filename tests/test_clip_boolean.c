@@ -290,6 +290,20 @@ static void double_api(void)
         cg_polygon_set_clear(&as);
         cg_polygon_set_clear(&bs);
     }
+    /* the smallest normal numbers: a finite scale, no error */
+    {
+        cg_vec2 T[3] = {{0, 0}, {1e-300, 0}, {0, 1e-300}};
+        cg_polygon_set t = {0};
+        cg_polygon_set_add_ring(&t, T, 3, 1);
+        CHECK(cg_clip_boolean(CG_CLIP_UNION, &t, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        /* (the area itself underflows: check the vertices) */
+        CHECK_EQ_INT(r.point_count, 3);
+        double big = 0;
+        for (size_t i = 0; i < r.point_count; i++)
+            big = fmax(big, fmax(r.points[i].x, r.points[i].y));
+        CHECK_NEAR(big / 1e-300, 1, 1e-10);
+        cg_polygon_set_clear(&t);
+    }
     /* NaN, infinity, out of range with an explicit scale */
     cg_vec2 N[] = {{0, 0}, {NAN, 0}, {1, 1}}, I[] = {{0, 0}, {INFINITY, 0}, {1, 1}}, Bg[] = {{0, 0}, {1e300, 0}, {1, 1}};
     cg_polygon_set n = {0}, i = {0}, bg = {0};

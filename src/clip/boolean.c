@@ -1119,8 +1119,10 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         if (!apply_splits(g))
             break;
-        if (g->ne > UINT32_MAX / 2)
+        if (g->ne > UINT32_MAX / 2) {
+            st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
             break;
+        }
     }
     free(s.ys);
     free(s.by_bottom);
@@ -1203,7 +1205,11 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
 
 /* ---- the double API ------------------------------------------------------------ */
 
-double clip_max_abs(const cg_polygon_set *set)
+/* The grid of the double API: multiply by an explicit scale, or (automatic)
+ * by 2^exponent with ldexp, which reaches every double's range exactly. */
+typedef struct grid { double scale; int exponent; } grid;
+
+static double max_abs(const cg_polygon_set *set)
 {
     double m = 0;
     if (!set)
@@ -1220,20 +1226,24 @@ double clip_max_abs(const cg_polygon_set *set)
     return m;
 }
 
-double clip_pick_scale(double scale, double max_abs)
+static grid pick_grid(double scale, double largest)
 {
-    if (scale > 0)
-        return scale;
-    if (!(max_abs > 0))
-        return 1.0;
+    grid g = {scale > 0 ? scale : 0, 0};
+    if (scale > 0 || !(largest > 0))
+        return g;
     int e;
-    frexp(max_abs, &e); /* max_abs < 2^e */
-    if (e > 36 + 1000)
-        e = 36 + 1000;
-    return ldexp(1.0, 36 - e);
+    frexp(largest, &e); /* largest < 2^e: 2^(36 - e) maps it below 2^36 */
+    g.exponent = 36 - e;
+    return g;
 }
 
-cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 *out)
+static double to_grid(grid g, double v) { return g.scale > 0 ? v * g.scale : ldexp(v, g.exponent); }
+static double from_grid(grid g, int64_t v)
+{
+    return g.scale > 0 ? (double)v / g.scale : ldexp((double)v, -g.exponent);
+}
+
+static cg_status grid_points(const cg_polygon_set *in, grid g, cg_polygon_set64 *out)
 {
     cg_polygon_set64_clear(out);
     if (!in)
@@ -1247,7 +1257,7 @@ cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 
             return st;
         out->ring_count--; /* reopened below point by point */
         for (size_t i = a; i < b; i++) {
-            double x = in->points[i].x * scale, y = in->points[i].y * scale;
+            double x = to_grid(g, in->points[i].x), y = to_grid(g, in->points[i].y);
             if (!isfinite(x) || !isfinite(y))
                 return isfinite(in->points[i].x) && isfinite(in->points[i].y) ? CG_ERANGE
                                                                               : CG_EINVAL;
@@ -1270,7 +1280,7 @@ cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 
     return CG_OK;
 }
 
-cg_status clip_from_grid(const cg_polygon_set64 *in, double scale, cg_polygon_set *out)
+static cg_status ungrid_points(const cg_polygon_set64 *in, grid g, cg_polygon_set *out)
 {
     cg_polygon_set_clear(out);
     for (size_t p = 0; p < in->polygon_count; p++) {
@@ -1290,7 +1300,7 @@ cg_status clip_from_grid(const cg_polygon_set64 *in, double scale, cg_polygon_se
                     out->point_capacity = cap;
                 }
                 out->points[out->point_count++] =
-                    cg_vec2_make((double)in->points[i].x / scale, (double)in->points[i].y / scale);
+                    cg_vec2_make(from_grid(g, in->points[i].x), from_grid(g, in->points[i].y));
             }
             out->ring_count++;
             out->ring_start[out->ring_count] = out->point_count;
@@ -1308,18 +1318,18 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
     cg_polygon_set_clear(result);
     if (isnan(scale) || isinf(scale))
         return CG_EINVAL;
-    double m1 = clip_max_abs(subject), m2 = clip_max_abs(clip);
+    double m1 = max_abs(subject), m2 = max_abs(clip);
     if (isnan(m1) || isnan(m2))
         return CG_EINVAL;
-    double sc = clip_pick_scale(scale, m1 > m2 ? m1 : m2);
+    grid g = pick_grid(scale, m1 > m2 ? m1 : m2);
     cg_polygon_set64 a = {0}, b = {0}, r = {0};
-    cg_status st = clip_to_grid(subject, sc, &a);
+    cg_status st = grid_points(subject, g, &a);
     if (st == CG_OK)
-        st = clip_to_grid(clip, sc, &b);
+        st = grid_points(clip, g, &b);
     if (st == CG_OK)
         st = cg_clip_boolean64(op, &a, subject_fill, &b, clip_fill, &r);
     if (st == CG_OK)
-        st = clip_from_grid(&r, sc, result);
+        st = ungrid_points(&r, g, result);
     if (st != CG_OK)
         cg_polygon_set_clear(result);
     cg_polygon_set64_clear(&a);

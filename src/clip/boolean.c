@@ -33,7 +33,6 @@
 #include "internal.h"
 
 #include <limits.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -276,7 +275,7 @@ typedef struct sweep {
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
-    unsigned char *run_open, *run_up, *brk, *is_rep;
+    unsigned char *run_open, *run_up, *brk;
     int64_t *run_x, *run_y;
     int classify, changed;
     int use_input_lines; /* round on the input edges (early passes) */
@@ -442,13 +441,11 @@ static int run_sweep(sweep *s)
         for (size_t k = 0; k < nb; k++)
             if (E[below[k]].yt > y)
                 above[na++] = below[k];
-        size_t first_new = na;
         while (ip < ne && E[s->by_bottom[ip]].yb == y) {
             uint32_t e = s->by_bottom[ip++];
             s->xc[e] = (double)E[e].xb;
             above[na++] = e;
         }
-        (void)first_new;
         for (size_t k = 0; k < na; k++)
             s->xn[above[k]] = x_at(&E[above[k]], yn);
         /* insertion sort by (x at y, x at yn) */
@@ -1044,7 +1041,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(s.brk);
         free(s.run_x);
         free(s.run_y);
-        free(s.is_rep);
         memset(&s, 0, sizeof s);
         s.g = g;
         size_t n1 = ne ? ne : 1;
@@ -1110,9 +1106,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.use_input_lines = pass < 8;
         if (!run_sweep(&s))
             break;
-#ifdef CLIP_DEBUG
-        fprintf(stderr, "pass %d: %zu edges, %zu splits, %zu scanlines\n", pass, g->ne, g->ns, s.nys);
-#endif
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
@@ -1135,7 +1128,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(s.brk);
     free(s.run_x);
     free(s.run_y);
-    free(s.is_rep);
     return st;
 }
 

@@ -623,6 +623,83 @@ static int cmp_along(const void *a, const void *b)
     return (p->x > q->x) - (p->x < q->x);
 }
 
+/* Does the segment a-b meet the closed unit square centred on p (the "hot
+ * pixel" of a rounded point)?  Exact, on doubled coordinates. */
+static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py)
+{
+    i128 x0 = 2 * (i128)px - 1, x1 = 2 * (i128)px + 1, y0 = 2 * (i128)py - 1, y1 = 2 * (i128)py + 1;
+    i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
+    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
+        return 0;
+    int pos = 0, neg = 0;
+    i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    for (int k = 0; k < 4; k++) {
+        i128 o = (Bx - Ax) * (cy[k] - Ay) - (By - Ay) * (cx[k] - Ax);
+        pos |= o > 0;
+        neg |= o < 0;
+    }
+    return !(pos && !neg) && !(neg && !pos);
+}
+
+/* Snap rounding (Hobby): every edge that passes through the pixel of a
+ * rounded split point is split there too, so that nearly parallel edges
+ * meet at one grid point instead of crossing again a little further on.
+ * Used from the second pass on; the points are sorted by y and each edge
+ * looks only at those within its y range. */
+static int cmp_split_y(const void *a, const void *b)
+{
+    const splitpt *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+static int add_hot_pixel_splits(engine *g)
+{
+    size_t ns = g->ns;
+    if (ns == 0)
+        return 1;
+    splitpt *pts = malloc(ns * sizeof *pts);
+    if (!pts)
+        return 0;
+    memcpy(pts, g->S, ns * sizeof *pts);
+    qsort(pts, ns, sizeof *pts, cmp_split_y);
+    for (size_t i = 0; i < g->ne; i++) {
+        const bedge *e = &g->E[i];
+        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
+        size_t lo = 0, hi = ns;
+        while (lo < hi) {
+            size_t mid = (lo + hi) / 2;
+            if (pts[mid].y < e->yb - 1)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        for (size_t q = lo; q < ns && pts[q].y <= e->yt + 1; q++) {
+            int64_t px = pts[q].x, py = pts[q].y;
+            if (px < xlo - 1 || px > xhi + 1 || (q > lo && px == pts[q - 1].x && py == pts[q - 1].y))
+                continue;
+            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))
+                continue;
+            if (!meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py))
+                continue;
+            if (g->ns == g->caps) {
+                size_t c = g->caps * 2;
+                splitpt *ns2 = realloc(g->S, c * sizeof *ns2);
+                if (!ns2) {
+                    free(pts);
+                    return 0;
+                }
+                g->S = ns2;
+                g->caps = c;
+            }
+            g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+        }
+    }
+    free(pts);
+    return 1;
+}
+
 static int apply_splits(engine *g)
 {
     qsort(g->S, g->ns, sizeof *g->S, cmp_split);
@@ -1110,6 +1187,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
         }
+        if (pass >= 1 && !add_hot_pixel_splits(g))
+            break;
         if (!apply_splits(g))
             break;
         if (g->ne > UINT32_MAX / 2) {

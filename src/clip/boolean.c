@@ -11,7 +11,9 @@
  *     horizontal edge is also needs a vertex there.  Such points are rounded
  *     to the grid and the edges split there (both pieces keep the path
  *     closed).  Rounding can move an edge by half a unit, so the sweep is
- *     repeated until a pass finds nothing to split (two passes in practice).
+ *     repeated until a pass finds nothing to split (two passes in practice);
+ *     from the second pass on, edges through the pixel of a rounded point are
+ *     split there too (snap rounding), which settles nearly parallel fans.
  *  2. Classification.  In the final pass no two edges cross inside a beam,
  *     so walking a beam from left to right and summing the windings of the
  *     subject's and the clip's edges tells, for every gap between edges,

@@ -412,7 +412,7 @@ static void stress(void)
 static void snapping(void)
 {
     check_rng rng = {4242};
-    for (int it = 0; it < 2000; it++) {
+    for (int it = 0; it < 1500; it++) {
         cg_polygon_set64 a = {0}, b = {0}, r = {0};
         int grid = (int)check_rng_int(&rng, 2, 7);
         random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 30), grid, 1);

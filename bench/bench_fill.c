@@ -339,6 +339,205 @@ static void polygon_cases(int runs)
     cg_image_free(image);
 }
 
+/* ---- curved paths: each library flattens its own curves ------------------- */
+
+/* Two glyph-like outlines in the unit square: an "o" (four cubics out, four
+ * back in) and an "S" stroke outline of cubics. */
+static const char glyph_o_verbs[] = "MCCCCZMCCCCZ";
+static const char glyph_s_verbs[] = "MCCCLCCCZ";
+static double glyph_o[2 * 26], glyph_s[2 * 20];
+
+static void glyphs_init(void)
+{
+    const double k = 0.5522847498;
+    double rings[2][2] = {{0.4, 0.5}, {0.25, 0.37}};
+    double *p = glyph_o;
+    for (int r = 0; r < 2; r++) {
+        double rx = rings[r][0], ry = rings[r][1], s = r ? -1 : 1; /* inner ring reversed */
+        double pts[13][2] = {{1, 0},  {1, k * s},  {k, s},  {0, s},  {-k, s},  {-1, k * s},
+                             {-1, 0}, {-1, -k * s}, {-k, -s}, {0, -s}, {k, -s}, {1, -k * s},
+                             {1, 0}};
+        for (int i = 0; i < 13; i++) {
+            *p++ = 0.5 + rx * pts[i][0];
+            *p++ = 0.5 + ry * pts[i][1];
+        }
+    }
+    static const double s[2 * 20] = {
+        0.80, 0.20, 0.60, 0.00, 0.20, 0.05, 0.20, 0.30, 0.20, 0.55, 0.80, 0.45, 0.80, 0.70,
+        0.80, 0.95, 0.40, 1.00, 0.15, 0.82, 0.28, 0.72, 0.45, 0.86, 0.66, 0.84, 0.66, 0.70,
+        0.66, 0.55, 0.05, 0.62, 0.05, 0.30, 0.05, -0.05, 0.60, -0.10, 0.90, 0.10};
+    memcpy(glyph_s, s, sizeof s);
+}
+
+typedef struct curve_set {
+    bench_curve_path *paths;
+    double *xy;
+    int count;
+} curve_set;
+
+static void build_glyphs(curve_set *set, double size, int count)
+{
+    set->paths = malloc(sizeof *set->paths * (size_t)count);
+    set->xy = malloc(sizeof(double) * 2 * 26 * (size_t)count);
+    set->count = count;
+    for (int i = 0; i < count; i++) {
+        int o = i % 2 == 0;
+        const double *src = o ? glyph_o : glyph_s;
+        int n = o ? 26 : 20;
+        double x0 = unit() * (SIZE - size), y0 = unit() * (SIZE - size);
+        double *dst = set->xy + 2 * 26 * (size_t)i;
+        for (int k = 0; k < n; k++) {
+            dst[2 * k] = x0 + src[2 * k] * size;
+            dst[2 * k + 1] = y0 + src[2 * k + 1] * size;
+        }
+        set->paths[i].verbs = o ? glyph_o_verbs : glyph_s_verbs;
+        set->paths[i].xy = dst;
+    }
+}
+
+typedef struct curve_job {
+    const curve_set *set;
+    cg_image *image;
+    cg_rasterizer *rasterizer;
+    cg_path *path;
+    unsigned char *peer_pixels;
+#ifdef CG_BENCH_HAVE_CAIRO
+    cairo_t *cairo;
+#endif
+} curve_job;
+
+static void run_curves_cg(void *context)
+{
+    curve_job *j = context;
+    cg_paint paint = cg_paint_solid(ink);
+    for (int i = 0; i < j->set->count; i++) {
+        const bench_curve_path *c = &j->set->paths[i];
+        const double *p = c->xy;
+        cg_path_reset(j->path);
+        for (const char *v = c->verbs; *v; v++) {
+            if (*v == 'M') {
+                cg_path_move_to(j->path, p[0], p[1]);
+                p += 2;
+            } else if (*v == 'L') {
+                cg_path_line_to(j->path, p[0], p[1]);
+                p += 2;
+            } else if (*v == 'C') {
+                cg_path_cubic_to(j->path, p[0], p[1], p[2], p[3], p[4], p[5]);
+                p += 6;
+            } else {
+                cg_path_close(j->path);
+            }
+        }
+        cg_rasterizer_fill_path(j->rasterizer, j->image, j->path, CG_FILL_EVEN_ODD, &paint);
+    }
+}
+
+#ifdef CG_BENCH_HAVE_CAIRO
+static void run_curves_cairo(void *context)
+{
+    curve_job *j = context;
+    cairo_t *cr = j->cairo;
+    for (int i = 0; i < j->set->count; i++) {
+        const bench_curve_path *c = &j->set->paths[i];
+        const double *p = c->xy;
+        for (const char *v = c->verbs; *v; v++) {
+            if (*v == 'M') {
+                cairo_move_to(cr, p[0], p[1]);
+                p += 2;
+            } else if (*v == 'L') {
+                cairo_line_to(cr, p[0], p[1]);
+                p += 2;
+            } else if (*v == 'C') {
+                cairo_curve_to(cr, p[0], p[1], p[2], p[3], p[4], p[5]);
+                p += 6;
+            } else {
+                cairo_close_path(cr);
+            }
+        }
+        cairo_fill(cr);
+    }
+}
+#endif
+
+#ifdef CG_BENCH_HAVE_AGG
+static void run_curves_agg(void *context)
+{
+    curve_job *j = context;
+    peer_agg_fill_curves(j->peer_pixels, SIZE, SIZE, SIZE * 4, j->set->paths, j->set->count,
+                         ink_rgba);
+}
+#endif
+
+/* Glyph outlines of cubic Beziers, anti-aliased, even-odd; cg flattens
+ * within 0.1 pixel, as Cairo does by default. */
+static void curve_cases(int runs)
+{
+    const double sizes[] = {16, 64, 256};
+    const int counts[] = {4000, 1000, 100};
+    glyphs_init();
+    cg_image *image;
+    cg_image_create(&image, SIZE, SIZE, CG_PIXEL_RGBA8);
+    unsigned char *peer = calloc((size_t)SIZE * SIZE, 4);
+    curve_job j;
+    memset(&j, 0, sizeof j);
+    j.image = image;
+    j.peer_pixels = peer;
+    cg_rasterizer_create(&j.rasterizer);
+    cg_path_create(&j.path);
+#ifdef CG_BENCH_HAVE_CAIRO
+    cairo_surface_t *surface = cairo_image_surface_create_for_data(peer, CAIRO_FORMAT_ARGB32, SIZE,
+                                                                   SIZE, SIZE * 4);
+    j.cairo = cairo_create(surface);
+    cairo_set_fill_rule(j.cairo, CAIRO_FILL_RULE_EVEN_ODD);
+    cairo_set_tolerance(j.cairo, 0.1);
+    cairo_set_source_rgb(j.cairo, 30 / 255.0, 60 / 255.0, 200 / 255.0);
+#endif
+    for (int s = 0; s < 3; s++) {
+        char name[96];
+        snprintf(name, sizeof name, "fill aa glyph curves %gpx x%d", sizes[s], counts[s]);
+        if (!wanted(name))
+            continue;
+        curve_set set;
+        build_glyphs(&set, sizes[s], counts[s]);
+        j.set = &set;
+        double pixels = 0;
+        for (int i = 0; i < set.count && i < 100; i++) {
+            curve_set one = {set.paths + i, NULL, 1};
+            curve_job o = j;
+            o.set = &one;
+            memset(image->data, 0, (size_t)SIZE * SIZE * 4);
+            run_curves_cg(&o);
+            pixels += (double)painted(image);
+        }
+        pixels *= (double)set.count / (set.count < 100 ? set.count : 100);
+        double t_cg = timed(run_curves_cg, &j, runs);
+        if (cg_alone) {
+            row(name, t_cg, "-", 0, pixels);
+        } else {
+#ifdef CG_BENCH_HAVE_CAIRO
+            row(name, t_cg, "cairo", timed(run_curves_cairo, &j, runs), pixels);
+#else
+            row(name, t_cg, "cairo", 0, pixels);
+#endif
+#ifdef CG_BENCH_HAVE_AGG
+            row(name, t_cg, "agg", timed(run_curves_agg, &j, runs), pixels);
+#else
+            row(name, t_cg, "agg", 0, pixels);
+#endif
+        }
+        free(set.paths);
+        free(set.xy);
+    }
+#ifdef CG_BENCH_HAVE_CAIRO
+    cairo_destroy(j.cairo);
+    cairo_surface_destroy(surface);
+#endif
+    cg_path_free(j.path);
+    cg_rasterizer_free(j.rasterizer);
+    free(peer);
+    cg_image_free(image);
+}
+
 /* ---- flood fill ---------------------------------------------------------- */
 
 #define FLOOD 2048
@@ -436,6 +635,7 @@ int main(int argc, char **argv)
     only = argc > 2 ? argv[2] : NULL;
     cg_alone = argc > 3 && strcmp(argv[3], "cg") == 0;
     polygon_cases(runs);
+    curve_cases(runs);
     flood_cases(runs);
     return 0;
 }

@@ -11,6 +11,8 @@
 #include <agg_rendering_buffer.h>
 #include <agg_scanline_bin.h>
 #include <agg_scanline_u.h>
+#include <agg_conv_curve.h>
+#include <agg_path_storage.h>
 #endif
 
 #ifdef CG_BENCH_HAVE_OPENCV
@@ -50,6 +52,43 @@ extern "C" int peer_agg_fill(unsigned char *pixels, int width, int height, int s
 #else
     (void)pixels; (void)width; (void)height; (void)stride; (void)shapes; (void)count;
     (void)even_odd; (void)antialias; (void)rgba;
+    return 0;
+#endif
+}
+
+extern "C" int peer_agg_fill_curves(unsigned char *pixels, int width, int height, int stride,
+                                    const bench_curve_path *paths, int count,
+                                    const unsigned char rgba[4])
+{
+#ifdef CG_BENCH_HAVE_AGG
+    agg::rendering_buffer buffer(pixels, width, height, stride);
+    agg::pixfmt_rgba32 format(buffer);
+    agg::renderer_base<agg::pixfmt_rgba32> base(format);
+    agg::rasterizer_scanline_aa<> ras;
+    ras.filling_rule(agg::fill_even_odd);
+    agg::rgba8 color(rgba[0], rgba[1], rgba[2], rgba[3]);
+    agg::scanline_u8 sl;
+    agg::path_storage path;
+    for (int s = 0; s < count; s++) {
+        path.remove_all();
+        const double *p = paths[s].xy;
+        for (const char *v = paths[s].verbs; *v; v++) {
+            switch (*v) {
+            case 'M': path.move_to(p[0], p[1]); p += 2; break;
+            case 'L': path.line_to(p[0], p[1]); p += 2; break;
+            case 'C': path.curve4(p[0], p[1], p[2], p[3], p[4], p[5]); p += 6; break;
+            default: path.close_polygon(); break;
+            }
+        }
+        agg::conv_curve<agg::path_storage> curves(path);
+        curves.approximation_scale(5.0); // within 0.5 / 5 = 0.1 pixel, as cg and Cairo here
+        ras.reset();
+        ras.add_path(curves);
+        agg::render_scanlines_aa_solid(ras, sl, base, color);
+    }
+    return 1;
+#else
+    (void)pixels; (void)width; (void)height; (void)stride; (void)paths; (void)count; (void)rgba;
     return 0;
 #endif
 }

@@ -14,6 +14,18 @@ typedef struct bench_shape {
     int contours;
 } bench_shape;
 
+/* A path of verbs 'M' (one point), 'L' (one), 'C' (three: a cubic Bezier)
+ * and 'Z'; points as x, y pairs in order. */
+typedef struct bench_curve_path {
+    const char *verbs;
+    const double *xy;
+} bench_curve_path;
+
+/* Fills the curved paths (even-odd, anti-aliased) with AGG's own curve
+ * flattening (conv_curve). */
+int peer_agg_fill_curves(unsigned char *pixels, int width, int height, int stride,
+                         const bench_curve_path *paths, int count, const unsigned char rgba[4]);
+
 /* Fills the shapes into an RGBA 8-bit buffer with an opaque colour. */
 int peer_agg_fill(unsigned char *pixels, int width, int height, int stride,
                   const bench_shape *shapes, int count, int even_odd, int antialias,

@@ -4,7 +4,9 @@
  * step, on generated meshes from 10 thousand to 2 million triangles (and
  * the real meshes of data/meshes when given as arguments).  Memory per face
  * is the heap growth (mallinfo2) of one built structure, both libraries
- * measured the same way. */
+ * measured the same way.  Times are process CPU time (both libraries run
+ * single-threaded), which a loaded machine disturbs less than wall time;
+ * each is the median of several runs. */
 #include "bench.h"
 #include "cg.h"
 #include "hemesh_peer.h"
@@ -13,6 +15,13 @@
 #include <malloc.h>
 #include <stdio.h>
 #include <string.h>
+
+static double cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
 
 static size_t heap_bytes(void)
 {
@@ -29,7 +38,7 @@ static double median(double *t, int n)
 static void run_case(const char *name, cg_mesh *mesh, unsigned flags)
 {
     size_t F = mesh->face_count;
-    int runs = F > 500000 ? 3 : F > 50000 ? 5 : 9;
+    int runs = F > 500000 ? 5 : F > 50000 ? 9 : 15;
     int peer = peer_available();
     char label[160], note[200];
     double t_cg[16], t_peer[16];
@@ -37,18 +46,18 @@ static void run_case(const char *name, cg_mesh *mesh, unsigned flags)
     /* build */
     for (int i = 0; i < runs; i++) {
         cg_hemesh *h = NULL;
-        double t0 = bench_now();
+        double t0 = cpu_now();
         cg_status s = cg_hemesh_build(mesh, flags, &h, NULL, NULL);
-        t_cg[i] = bench_now() - t0;
+        t_cg[i] = cpu_now() - t0;
         if (s != CG_OK) {
             fprintf(stderr, "bench_hemesh: %s: build failed\n", name);
             return;
         }
         cg_hemesh_free(h);
         if (peer) {
-            t0 = bench_now();
+            t0 = cpu_now();
             void *om = peer_build(mesh);
-            t_peer[i] = bench_now() - t0;
+            t_peer[i] = cpu_now() - t0;
             peer_free(om);
         }
     }
@@ -73,13 +82,13 @@ static void run_case(const char *name, cg_mesh *mesh, unsigned flags)
     size_t V = mesh->vertex_count, room = h->vertex_count > V ? h->vertex_count : V;
     cg_vec3 *a = malloc(room * sizeof *a), *b = malloc(room * sizeof *b);
     for (int i = 0; i < runs; i++) {
-        double t0 = bench_now();
+        double t0 = cpu_now();
         cg_hemesh_neighbor_average(h, a);
-        t_cg[i] = bench_now() - t0;
+        t_cg[i] = cpu_now() - t0;
         if (peer) {
-            t0 = bench_now();
+            t0 = cpu_now();
             peer_neighbor_average(om, b);
-            t_peer[i] = bench_now() - t0;
+            t_peer[i] = cpu_now() - t0;
         }
     }
     double diff = 0;
@@ -93,19 +102,19 @@ static void run_case(const char *name, cg_mesh *mesh, unsigned flags)
     free(b);
 
     /* one Loop step (OpenMesh subdivides a fresh copy in place) */
-    int loop_runs = runs > 5 ? 5 : runs;
+    int loop_runs = runs > 9 ? 9 : runs;
     size_t cg_faces = 0, peer_faces = 0;
     double old_diff = 0;
     for (int i = 0; i < loop_runs; i++) {
         cg_hemesh *r = NULL;
-        double t0 = bench_now();
+        double t0 = cpu_now();
         cg_hemesh_subdivide_loop(h, &r);
-        t_cg[i] = bench_now() - t0;
+        t_cg[i] = cpu_now() - t0;
         if (peer) {
             void *copy = peer_copy(om);
-            t0 = bench_now();
+            t0 = cpu_now();
             peer_loop(copy);
-            t_peer[i] = bench_now() - t0;
+            t_peer[i] = cpu_now() - t0;
             size_t pv, pe;
             peer_faces = peer_counts(copy, &pv, &pe);
             for (size_t v = 0; v < V && r && pv == r->vertex_count; v++) {

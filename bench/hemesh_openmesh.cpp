@@ -26,7 +26,9 @@ void *peer_build(const cg_mesh *m)
 {
     Mesh *mesh = new Mesh;
     size_t corners = m->face_offsets[m->face_count];
-    mesh->reserve(m->vertex_count, corners / 2, m->face_count);
+    /* edges: half the corners plus room for boundary edges, so that no
+     * array has to grow (and double its capacity) while building */
+    mesh->reserve(m->vertex_count, corners / 2 + corners / 64 + 64, m->face_count);
     std::vector<Mesh::VertexHandle> vh(m->vertex_count);
     for (size_t v = 0; v < m->vertex_count; v++) {
         const cg_vec3 &p = m->positions[v];

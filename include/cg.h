@@ -15,5 +15,6 @@
 #include "cg/hemesh.h"
 #include "cg/render.h"
 #include "cg/scene.h"
+#include "cg/trace.h"
 
 #endif

@@ -522,6 +522,83 @@ static void curves(void)
     cg_path_free(path);
 }
 
+/* Curves and arcs far larger than the image: only the part near it costs
+ * anything, and the part inside is right. */
+static void huge_curves(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_image *im;
+    cg_image_create(&im, 32, 32, CG_PIXEL_RGBAF);
+    cg_paint paint = cg_paint_solid(white);
+    for (int kind = 0; kind < 2; kind++) {
+        double r = 1e11, cx = 16.5 + r, cy = 16; /* leftmost point at x = 16.5 */
+        cg_path_reset(path);
+        if (kind == 0) {
+            cg_path_arc(path, cx, cy, r, 0, 2 * CG_PI);
+        } else {
+            double k = 0.5522847498 * r;
+            cg_path_move_to(path, cx + r, cy);
+            cg_path_cubic_to(path, cx + r, cy + k, cx + k, cy + r, cx, cy + r);
+            cg_path_cubic_to(path, cx - k, cy + r, cx - r, cy + k, cx - r, cy);
+            cg_path_cubic_to(path, cx - r, cy - k, cx - k, cy - r, cx, cy - r);
+            cg_path_cubic_to(path, cx + k, cy - r, cx + r, cy - k, cx + r, cy);
+        }
+        cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+        CHECK(cg_fill_path(im, path, CG_FILL_NONZERO, &paint) == CG_OK);
+        int wrong = 0;
+        for (int y = 0; y < 32; y++)
+            for (int x = 0; x < 32; x++) {
+                float a = cg_image_get(im, x, y).a, want = x < 16 ? 0.0f : x == 16 ? 0.5f : 1.0f;
+                wrong += fabsf(a - want) > 0.01f;
+            }
+        CHECK_MSG(wrong == 0, "huge %s: %d pixels wrong", kind ? "cubics" : "arc", wrong);
+        /* and its stroke: a band 4 wide around x = 16.5 */
+        cg_stroke_style style = cg_stroke_style_default();
+        style.width = 4;
+        cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
+        CHECK(cg_stroke_path(im, path, &style, &paint) == CG_OK);
+        CHECK(cg_image_get(im, 16, 10).a > 0.99f && cg_image_get(im, 13, 10).a < 0.01f
+              && cg_image_get(im, 20, 10).a < 0.01f);
+    }
+    cg_image_free(im);
+    cg_path_free(path);
+}
+
+/* Partial coverage blends like cg_image_blend with alpha scaled by the
+ * coverage, over opaque, translucent and transparent pixels. */
+static void aa_blending(void)
+{
+    check_rng rng = {21};
+    int bad = 0;
+    for (int t = 0; t < 300; t++) {
+        cg_rgba8 bg = {(uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255),
+                       (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)(t % 3 == 0 ? 0 : t % 3 == 1 ? 255 : check_rng_int(&rng, 1, 254))};
+        cg_rgba8 fg = {(uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255),
+                       (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)(t % 2 ? 255 : check_rng_int(&rng, 0, 255))};
+        double cover = check_rng_range(&rng, 0.05, 0.95);
+        cg_image *a, *b;
+        cg_image_create(&a, 2, 1, CG_PIXEL_RGBA8);
+        cg_image_clear_rgba8(a, bg);
+        cg_image_copy(a, &b);
+        cg_vec2 rect[4] = {{0, 0}, {cover, 0}, {cover, 1}, {0, 1}};
+        int four = 4;
+        cg_paint paint = cg_paint_solid(fg);
+        cg_fill_polygon_aa(a, rect, &four, 1, CG_FILL_NONZERO, &paint);
+        cg_rgbaf src = cg_rgba8_to_linear(fg);
+        src.a *= (float)(floor(cover * 255 + 0.5) / 255); /* coverage is kept in 8 bits */
+        cg_image_blend(b, 0, 0, src);
+        cg_rgba8 p = cg_image_get_rgba8(a, 0, 0), q = cg_image_get_rgba8(b, 0, 0);
+        if ((abs(p.r - q.r) > 1 || abs(p.g - q.g) > 1 || abs(p.b - q.b) > 1 || abs(p.a - q.a) > 1)
+            && ++bad <= 5)
+            fprintf(stderr, "aa blend %d: %d,%d,%d,%d vs %d,%d,%d,%d\n", t, p.r, p.g, p.b, p.a, q.r,
+                    q.g, q.b, q.a);
+        cg_image_free(a);
+        cg_image_free(b);
+    }
+    CHECK_MSG(bad == 0, "%d partly covered pixels blend differently from cg_image_blend", bad);
+}
+
 /* Even-odd against non-zero on a pentagram; gradients; linear light. */
 static void rules_and_paints(void)
 {
@@ -594,6 +671,8 @@ int main(void)
     bad_strokes();
     svg_paths();
     curves();
+    aa_blending();
+    huge_curves();
     rules_and_paints();
     return check_finish();
 }

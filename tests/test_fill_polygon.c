@@ -257,6 +257,12 @@ static void blending(void)
                        (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255)};
         cg_rgba8 fg = {(uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255),
                        (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255)};
+        if (t % 10 == 3)
+            bg.a = 0; /* over nothing */
+        if (t % 10 == 7)
+            fg.a = 0; /* nothing to draw */
+        if (t % 10 == 9)
+            bg.a = 255;
         cg_image_clear_rgba8(a, bg);
         cg_image_copy(a, &b);
         cg_vec2 sq[4] = {{0, 0}, {4, 0}, {4, 1}, {0, 1}};

@@ -5,16 +5,16 @@ set -u
 cg="$1"
 src="$2"
 tmp=$(mktemp -d)
+work="$tmp"
 trap 'rm -rf "$tmp"' EXIT
-failed=0
-fail() { echo "FAIL: $*"; failed=1; }
+. "$src/tests/cli_checks.sh"
 
 # value KEY FILE: the value of "KEY: value" in FILE
 value() { sed -n "s/^$1: //p" "$2" | head -1; }
-expect() { # expect FILE KEY VALUE
+expect_key() { # expect_key FILE KEY VALUE
   local got
   got=$(value "$2" "$1")
-  [ "$got" = "$3" ] || fail "$1: $2 is '$got', expected '$3'"
+  [ "$got" = "$3" ] && pass || fail "$1: $2 is '$got', expected '$3'"
 }
 
 cat > "$tmp/cube.obj" <<'EOF'
@@ -65,30 +65,30 @@ for key in vertices edges faces boundary_loops components euler_characteristic g
   grep -q "^$key: ." "$tmp/cube.txt" || fail "info: no '$key: value' line"
 done
 grep -v -q '^[a-z_]*: ' "$tmp/cube.txt" && fail "info: a line that is not 'key: value'"
-expect "$tmp/cube.txt" vertices 8
-expect "$tmp/cube.txt" edges 12
-expect "$tmp/cube.txt" faces 6
-expect "$tmp/cube.txt" boundary_loops 0
-expect "$tmp/cube.txt" components 1
-expect "$tmp/cube.txt" euler_characteristic 2
-expect "$tmp/cube.txt" genus 0
-expect "$tmp/cube.txt" manifold yes
-expect "$tmp/cube.txt" oriented yes
-expect "$tmp/cube.txt" bounding_box_min "-1 -1 -1"
+expect_key "$tmp/cube.txt" vertices 8
+expect_key "$tmp/cube.txt" edges 12
+expect_key "$tmp/cube.txt" faces 6
+expect_key "$tmp/cube.txt" boundary_loops 0
+expect_key "$tmp/cube.txt" components 1
+expect_key "$tmp/cube.txt" euler_characteristic 2
+expect_key "$tmp/cube.txt" genus 0
+expect_key "$tmp/cube.txt" manifold yes
+expect_key "$tmp/cube.txt" oriented yes
+expect_key "$tmp/cube.txt" bounding_box_min "-1 -1 -1"
 [ -s "$tmp/err.txt" ] && fail "info wrote to stderr without --repeat"
 
 "$cg" mesh info "$tmp/mixed.obj" > "$tmp/mixed.txt" || fail "info mixed exited $?"
-expect "$tmp/mixed.txt" genus mixed
-expect "$tmp/mixed.txt" genus_per_component "1 0"
-expect "$tmp/mixed.txt" components 2
-expect "$tmp/mixed.txt" euler_characteristic 2
+expect_key "$tmp/mixed.txt" genus mixed
+expect_key "$tmp/mixed.txt" genus_per_component "1 0"
+expect_key "$tmp/mixed.txt" components 2
+expect_key "$tmp/mixed.txt" euler_characteristic 2
 
 "$cg" mesh info "$tmp/bowtie.obj" > "$tmp/bowtie.txt" || fail "info bowtie exited $?"
-expect "$tmp/bowtie.txt" manifold no
-expect "$tmp/bowtie.txt" oriented yes
+expect_key "$tmp/bowtie.txt" manifold no
+expect_key "$tmp/bowtie.txt" oriented yes
 "$cg" mesh info "$tmp/flipped.obj" > "$tmp/flipped.txt" || fail "info flipped exited $?"
-expect "$tmp/flipped.txt" manifold yes
-expect "$tmp/flipped.txt" oriented no
+expect_key "$tmp/flipped.txt" manifold yes
+expect_key "$tmp/flipped.txt" oriented no
 
 # --repeat: medians on stderr in the contract's format
 "$cg" mesh info "$tmp/cube.obj" --repeat 3 > /dev/null 2> "$tmp/times.txt" || fail "--repeat exited $?"
@@ -97,23 +97,23 @@ grep -Eq '^one-ring: [0-9]+(\.[0-9]+)? ms$' "$tmp/times.txt" || fail "--repeat: 
 
 if [ -f "$src/data/meshes/bunny.obj" ]; then
   "$cg" mesh info "$src/data/meshes/bunny.obj" > "$tmp/bunny.txt" || fail "info bunny exited $?"
-  expect "$tmp/bunny.txt" faces 3674
-  expect "$tmp/bunny.txt" genus 0
-  expect "$tmp/bunny.txt" manifold yes
+  expect_key "$tmp/bunny.txt" faces 3674
+  expect_key "$tmp/bunny.txt" genus 0
+  expect_key "$tmp/bunny.txt" manifold yes
 fi
 
 # ---- subdivide: counts worked by hand
 "$cg" mesh subdivide --loop 2 "$tmp/tetra.obj" "$tmp/tetra2.obj" || fail "subdivide --loop exited $?"
 "$cg" mesh info "$tmp/tetra2.obj" > "$tmp/t2.txt"
-expect "$tmp/t2.txt" vertices 34   # 4 -> 4 + 6 = 10 -> 10 + 24 = 34
-expect "$tmp/t2.txt" edges 96      # 6 -> 2*6 + 3*4 = 24 -> 2*24 + 3*16 = 96
-expect "$tmp/t2.txt" faces 64
-expect "$tmp/t2.txt" genus 0
+expect_key "$tmp/t2.txt" vertices 34   # 4 -> 4 + 6 = 10 -> 10 + 24 = 34
+expect_key "$tmp/t2.txt" edges 96      # 6 -> 2*6 + 3*4 = 24 -> 2*24 + 3*16 = 96
+expect_key "$tmp/t2.txt" faces 64
+expect_key "$tmp/t2.txt" genus 0
 "$cg" mesh subdivide --catmull-clark 1 "$tmp/cube.obj" "$tmp/cube1.ply" || fail "subdivide --catmull-clark exited $?"
 "$cg" mesh info "$tmp/cube1.ply" > "$tmp/c1.txt"
-expect "$tmp/c1.txt" vertices 26
-expect "$tmp/c1.txt" edges 48
-expect "$tmp/c1.txt" faces 24
+expect_key "$tmp/c1.txt" vertices 26
+expect_key "$tmp/c1.txt" edges 48
+expect_key "$tmp/c1.txt" faces 24
 "$cg" mesh subdivide --loop 1 "$tmp/cube.obj" "$tmp/no.obj" 2> "$tmp/err.txt" && fail "Loop on quads succeeded"
 grep -q "triangle" "$tmp/err.txt" || fail "Loop on quads: unclear message: $(cat "$tmp/err.txt")"
 [ -e "$tmp/no.obj" ] && fail "Loop on quads left an output file"
@@ -122,23 +122,27 @@ grep -q "triangle" "$tmp/err.txt" || fail "Loop on quads: unclear message: $(cat
 "$cg" mesh repair "$tmp/flipped.obj" "$tmp/fixed.obj" > "$tmp/repair.txt" || fail "repair exited $?"
 grep -q "reversed 1 face" "$tmp/repair.txt" || fail "repair did not report the reversal"
 "$cg" mesh info "$tmp/fixed.obj" > "$tmp/fixed.txt"
-expect "$tmp/fixed.txt" oriented yes
+expect_key "$tmp/fixed.txt" oriented yes
 "$cg" mesh repair "$tmp/bowtie.obj" "$tmp/bowtie2.obj" > "$tmp/repair.txt" || fail "repair bowtie exited $?"
 "$cg" mesh info "$tmp/bowtie2.obj" > "$tmp/b2.txt"
-expect "$tmp/b2.txt" manifold yes
-expect "$tmp/b2.txt" vertices 6
+expect_key "$tmp/b2.txt" manifold yes
+expect_key "$tmp/b2.txt" vertices 6
 
 # ---- bad input: clear one-line errors, non-zero exits, no crash
-"$cg" mesh info "$tmp/nofaces.obj" > /dev/null 2> "$tmp/err.txt"
-[ $? -eq 1 ] || fail "no faces: expected exit 1"
-grep -q "no faces" "$tmp/err.txt" || fail "no faces: message '$(cat "$tmp/err.txt")'"
-"$cg" mesh info "$tmp/missing.obj" > /dev/null 2>&1 && fail "missing file accepted"
-"$cg" mesh info > /dev/null 2>&1; [ $? -eq 2 ] || fail "no FILE: expected usage exit 2"
-"$cg" mesh info "$tmp/cube.obj" --repeat 0 > /dev/null 2>&1; [ $? -eq 2 ] || fail "--repeat 0 accepted"
-"$cg" mesh info "$tmp/cube.obj" --frobnicate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown option accepted"
-"$cg" mesh subdivide --loop -1 "$tmp/tetra.obj" "$tmp/x.obj" > /dev/null 2>&1; [ $? -eq 2 ] || fail "negative levels accepted"
-"$cg" mesh subdivide --loop 1 "$tmp/tetra.obj" "$tmp/x.off" > /dev/null 2>&1; [ $? -eq 2 ] || fail ".off output accepted"
-"$cg" mesh subdivide "$tmp/tetra.obj" "$tmp/x.obj" > /dev/null 2>&1; [ $? -eq 2 ] || fail "no scheme accepted"
-"$cg" mesh frobnicate > /dev/null 2>&1; [ $? -eq 2 ] || fail "unknown action accepted"
+expect 1 "no faces" "$cg" mesh info "$tmp/nofaces.obj"
+one_line "no faces"
+grep -q "no faces" "$work/err" && pass || fail "no faces: message '$(cat "$work/err")'"
+expect 1 "missing file" "$cg" mesh info "$tmp/missing.obj"
+one_line "missing file"
+expect 2 "no FILE" "$cg" mesh info
+expect 2 "--repeat 0" "$cg" mesh info "$tmp/cube.obj" --repeat 0
+expect 2 "unknown option" "$cg" mesh info "$tmp/cube.obj" --frobnicate
+one_line "unknown option"
+expect 2 "negative levels" "$cg" mesh subdivide --loop -1 "$tmp/tetra.obj" "$tmp/x.obj"
+expect 2 ".off output" "$cg" mesh subdivide --loop 1 "$tmp/tetra.obj" "$tmp/x.off"
+expect 2 "no scheme" "$cg" mesh subdivide "$tmp/tetra.obj" "$tmp/x.obj"
+expect 2 "two schemes" "$cg" mesh subdivide --loop 1 --catmull-clark 1 "$tmp/tetra.obj" "$tmp/x.obj"
+expect 2 "unknown action" "$cg" mesh frobnicate
+expect 2 "repair without OUT" "$cg" mesh repair "$tmp/cube.obj"
 
-exit $failed
+finish

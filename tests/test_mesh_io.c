@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 static cg_mesh *load_text(const char *text, const char *name, cg_mesh_format format,
                           cg_status *status, cg_error *err)
@@ -180,6 +181,19 @@ static void test_obj_materials(void)
     if (m)
         CHECK(m->face_colors == NULL && m->face_count == 4);
     cg_mesh_free(m);
+    /* several libraries on one mtllib line, and a library name with a blank */
+    const char *a = "newmtl a\nKd 0 1 0\n", *b = "newmtl b\nKd 0 0 1\n";
+    write_file("one.mtl", a, strlen(a));
+    write_file("two words.mtl", b, strlen(b));
+    const char *two = "mtllib one.mtl missing.mtl\nmtllib two words.mtl\nv 0 0 0\nv 1 0 0\n"
+                      "v 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n";
+    write_file("two.obj", two, strlen(two));
+    snprintf(path, sizeof path, "%s/two.obj", temp_dir);
+    CHECK_MSG(cg_mesh_load(path, &m, &err) == CG_OK, "%s", err.message);
+    if (m) {
+        CHECK(m->face_colors && m->face_colors[0].g == 1 && m->face_colors[1].b == 1);
+        cg_mesh_free(m);
+    }
     /* a malformed Kd in a library is an error naming the library's line */
     const char *bad = "newmtl red\nKd 1 zero 0\n";
     write_file("bad.mtl", bad, strlen(bad));
@@ -338,6 +352,14 @@ static void test_ply(void)
         CHECK(cg_mesh_load_memory(bytes, n + 1, "b.ply", CG_MESH_FORMAT_PLY, &m, &err)
               == CG_EFORMAT);
     }
+    /* a face property cg keeps no array for (alpha alone) is read past */
+    m = load_ok("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                "property uchar alpha\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n",
+                "alpha.ply");
+    if (m)
+        CHECK(m->face_colors == NULL && m->face_count == 1);
+    cg_mesh_free(m);
     /* a face element before the vertex element */
     m = load_ok("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar uint vertex_indices\n"
                 "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
@@ -379,6 +401,15 @@ static void test_stl(void)
         CHECK(face_is(m, 1, f, 3));
         cg_mesh_free(m);
     }
+    /* two solids in one file; the second one's triangle shares no vertex */
+    m = load_ok("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                "vertex 0 1 0\nendloop\nendfacet\nendsolid a\nsolid b\nfacet normal 0 0 1\n"
+                "outer loop\nvertex 5 0 0\nvertex 6 0 0\nvertex 5 1 0\nendloop\nendfacet\n"
+                "endsolid b\n",
+                "two.stl");
+    if (m)
+        CHECK(m->vertex_count == 6 && m->face_count == 2);
+    cg_mesh_free(m);
     unsigned char bytes[256];
     const char *headers[] = {"binary", "solid but binary all the same"};
     for (int h = 0; h < 2; h++) {
@@ -439,14 +470,14 @@ static void test_malformed(void)
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n5\n", CG_EFORMAT, "a.ply:9: expected the end of the file"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", CG_EFORMAT, "a.ply:13: face 0 refers to vertex 3"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n", CG_EFORMAT, "a.ply:13: face 0 refers to vertex -1"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n", CG_EFORMAT, "a.ply:13: expected a list length"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar x\nproperty float y\nproperty float z\nend_header\n0.5 0 0\n", CG_EFORMAT, "a.ply:8: expected an integer of vertex 0"},
+        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n", CG_EFORMAT, "a.ply:13: expected a list length (a whole number, 0 or more) of face 0, got '300'"},
+        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar x\nproperty float y\nproperty float z\nend_header\n0.5 0 0\n", CG_EFORMAT, "a.ply:8: expected an integer of vertex 0, got '0.5'"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n", CG_EFORMAT, "properties x, y and z"},
         {"a.ply", "ply\nformat ascii 2.0\n", CG_EFORMAT, "a.ply:2: expected version 1.0"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float32x x\n", CG_EFORMAT, "a.ply:4: expected a property type"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", CG_EFORMAT, "expected 'end_header'"},
         {"a.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999999\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n", CG_EFORMAT, "a.ply:9: expected a number of vertex 1"},
-        {"a.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0123456789ab", CG_EFORMAT, "byte 124: the header says 4000000000 items"},
+        {"a.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0123456789ab", CG_EFORMAT, "byte 124: the header says 4000000000 items of element 'vertex' (line 3)"},
         {"a.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n0123456789ab\xff\xff\xff\xff", CG_EFORMAT, "byte 184: the file ends inside face 0"},
         {"a.ply", "ply\nformat ascii 1.0\nbogus line\n", CG_EFORMAT, "a.ply:3: expected a header keyword"},
         {"a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid\n", CG_EFORMAT, "a.stl:6: expected another 'vertex'"},
@@ -718,6 +749,53 @@ static void test_real_meshes(void)
     free(bytes);
 }
 
+/* bytes gzip-compressed into out; returns the compressed size. */
+static size_t gzip_bytes(const void *bytes, size_t size, unsigned char *out, size_t room)
+{
+    z_stream z;
+    memset(&z, 0, sizeof z);
+    if (deflateInit2(&z, 9, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+        return 0;
+    z.next_in = (unsigned char *)(uintptr_t)bytes;
+    z.avail_in = (uInt)size;
+    z.next_out = out;
+    z.avail_out = (uInt)room;
+    int rc = deflate(&z, Z_FINISH);
+    size_t n = room - z.avail_out;
+    deflateEnd(&z);
+    return rc == Z_STREAM_END ? n : 0;
+}
+
+static void test_gzip(void)
+{
+    const char *obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    unsigned char packed[512], twice[1024], nested[1024];
+    size_t n = gzip_bytes(obj, strlen(obj), packed, sizeof packed);
+    CHECK(n > 0);
+    cg_mesh *m = NULL;
+    cg_error err;
+    CHECK_MSG(cg_mesh_load_memory(packed, n, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err) == CG_OK,
+              "%s", err.message);
+    if (m)
+        CHECK(m->vertex_count == 3 && m->face_count == 1);
+    cg_mesh_free(m);
+    /* two gzip members one after the other read as their concatenation */
+    memcpy(twice, packed, n);
+    memcpy(twice + n, packed, n);
+    CHECK_MSG(cg_mesh_load_memory(twice, 2 * n, "t.obj.gz", CG_MESH_FORMAT_OBJ, &m, &err) == CG_OK,
+              "%s", err.message);
+    if (m)
+        CHECK(m->vertex_count == 6 && m->face_count == 2);
+    cg_mesh_free(m);
+    /* gzip inside gzip is refused; garbage after the data is an error */
+    size_t nn = gzip_bytes(packed, n, nested, sizeof nested);
+    CHECK(cg_mesh_load_memory(nested, nn, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err) == CG_EFORMAT);
+    CHECK_MSG(strstr(err.message, "gzip data inside gzip data") != NULL, "%s", err.message);
+    memcpy(twice + n, "junk", 4);
+    CHECK(cg_mesh_load_memory(twice, n + 4, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err) == CG_EFORMAT);
+    CHECK_MSG(strstr(err.message, "4 more bytes follow") != NULL, "%s", err.message);
+}
+
 /* Every prefix of each small text fixture loads or fails cleanly. */
 static void test_prefixes(void)
 {
@@ -760,6 +838,7 @@ int main(void)
     test_numbers();
     test_round_trips();
     test_real_meshes();
+    test_gzip();
     test_prefixes();
     remove_temp_dir();
     return check_finish();

@@ -245,10 +245,11 @@ static void test_render(void)
     if (!s)
         return;
     cg_rgba8 black = {0, 0, 0, 255};
-    cg_image *z = NULL, *painter = NULL;
+    cg_image *z = NULL, *painter = NULL, *traced = NULL;
     CHECK_EQ_INT(cg_scene_render_with(s, CG_SCENE_ZBUFFER, &z, &err), CG_OK);
     CHECK_EQ_INT(cg_scene_render_with(s, CG_SCENE_PAINTER, &painter, &err), CG_OK);
-    if (z && painter) {
+    CHECK_EQ_INT(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &traced, &err), CG_OK);
+    if (z && painter && traced) {
         CHECK(z->width == 96 && z->height == 72);
         /* A unit sphere 6 units away under a 40 degree view covers about
          * pi (1/ (6 tan 20))^2 / 4 * 72/96... just check it is there and that
@@ -256,9 +257,13 @@ static void test_render(void)
         double cz = coverage(z, black), cp = coverage(painter, black);
         CHECK_MSG(cz > 0.05 && cz < 0.6, "coverage %g", cz);
         CHECK_NEAR(cz, cp, 0.01);
+        /* The ray tracer sees the same objects through the same camera (the
+         * rasterizer's sphere is a tessellation: a little smaller). */
+        CHECK_NEAR(coverage(traced, black), cz, 0.01);
     }
     cg_image_free(z);
     cg_image_free(painter);
+    cg_image_free(traced);
     /* Every projection kind renders something with the rasterizer. */
     const char *kinds[] = {"perspective", "orthographic", "isometric", "dimetric", "trimetric",
                            "cavalier", "cabinet", "oblique"};
@@ -273,6 +278,14 @@ static void test_render(void)
             CHECK_MSG(c > 0.05 && c < 0.95, "%s covers %g", kinds[k], c);
         }
         cg_image_free(img);
+        if (k >= 5) { /* oblique kinds: the ray tracer says it cannot */
+            img = NULL;
+            CHECK_EQ_INT(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &img, &err), CG_EUNSUPPORTED);
+            CHECK(img == NULL && strstr(err.message, "oblique"));
+        } else if (k > 0) {
+            CHECK_MSG(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &img, &err) == CG_OK, "%s traced: %s", kinds[k], err.message);
+            cg_image_free(img);
+        }
     }
     cg_scene_free(s);
     /* An empty scene renders the background. */

@@ -105,8 +105,9 @@ void cg_hemesh_report_clear(cg_hemesh_report *report);
 
 /* Builds the half-edge structure of mesh in linear time.  flags is a set of
  * CG_HEMESH_* options (0 is strict: any defect is an error).  report (may be
- * NULL) receives what was found; err (may be NULL) a one-line message naming
- * the first defect and the option that repairs it.
+ * NULL) receives what was found, also on failure (free its lists with
+ * cg_hemesh_report_clear either way); err (may be NULL) a one-line message
+ * naming the first defect and the option that repairs it.
  * Errors: CG_EINVAL (NULL mesh), CG_EEMPTY (no usable face), CG_EFORMAT
  * (a defect the flags do not repair), CG_ERANGE, CG_ENOMEM. */
 cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,

@@ -183,6 +183,19 @@ static inline void deposit_row(float *row, uint64_t *touched, double xa, double 
     row[c1 + 1] += (float)(d1 * len1 * 0.5);
 }
 
+/* floor and ceil of a clipped coordinate (0 <= v <= 2^24): inline, where
+ * the library calls would cost more than the work around them. */
+static inline int floor_clipped(double v)
+{
+    return (int)v;
+}
+
+static inline int ceil_clipped(double v)
+{
+    int i = (int)v;
+    return i + (i < v);
+}
+
 /* Adds the part of line l within rows [band_top, band_bottom). */
 static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
                          int band_top, int band_bottom, double origin_x, const fill_line *l)
@@ -197,7 +210,7 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     if (ys >= ye)
         return;
     double dxdy = (x1 - x0) / (y1 - y0);
-    int row = (int)floor(ys), row_end = (int)ceil(ye);
+    int row = floor_clipped(ys), row_end = ceil_clipped(ye);
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
     for (; row < row_end; row++) {
         double yb = row + 1 < ye ? row + 1 : ye;
@@ -283,8 +296,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     fill_tables_prepare(r);
     if (r->line_count == 0)
         return CG_OK;
-    int origin_x = (int)floor(r->min_x), end_x = (int)ceil(r->max_x);
-    int top = (int)floor(r->min_y), bottom = (int)ceil(r->max_y);
+    int origin_x = floor_clipped(r->min_x), end_x = ceil_clipped(r->max_x);
+    int top = floor_clipped(r->min_y), bottom = ceil_clipped(r->max_y);
     if (end_x > image->width)
         end_x = image->width;
     if (bottom > image->height)
@@ -329,7 +342,7 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     for (size_t i = 0; i < r->line_count; i++) {
         const fill_line *l = &r->lines[i];
         double ymin = l->y0 < l->y1 ? l->y0 : l->y1;
-        int b = ((int)floor(ymin) - top) / band;
+        int b = (floor_clipped(ymin) - top) / band;
         first[b < 0 ? 0 : b]++;
     }
     size_t sum = 0;
@@ -342,7 +355,7 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     for (size_t i = 0; i < r->line_count; i++) {
         const fill_line *l = &r->lines[i];
         double ymin = l->y0 < l->y1 ? l->y0 : l->y1;
-        int b = ((int)floor(ymin) - top) / band;
+        int b = (floor_clipped(ymin) - top) / band;
         r->order[first[b < 0 ? 0 : b]++] = i;
     }
     size_t next = 0, active_count = 0;

@@ -44,8 +44,17 @@ void fill_path_restore(cg_path *path, const fill_path_mark *mark);
 cg_vec2 fill_path_current(const cg_path *path);
 cg_vec2 fill_path_start(const cg_path *path);
 
-/* Flattens path into polylines (curves and arcs within tolerance). */
-cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out);
+/* A box beyond which geometry cannot show: x0 <= x <= x1, y0 <= y <= y1. */
+typedef struct fill_clip {
+    double x0, y0, x1, y1;
+} fill_clip;
+
+/* Flattens path into polylines (curves and arcs within tolerance).  With a
+ * box, curve and arc pieces wholly beyond it become straight lines (which
+ * changes nothing inside it), so huge curves cost time and memory in
+ * proportion to their visible part. */
+cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_clip *box,
+                            fill_polylines *out);
 
 /* Appends the points of the circular arc around c of radius r from angle a0
  * to a1 (excluding the start point) within tolerance. */
@@ -141,17 +150,25 @@ static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
     return (uint8_t)c;
 }
 
-/* The same for v known to be in [0, 1] (a blend of such values; tiny
- * rounding outside is harmless): one table look-up and one comparison,
- * as a table step (1/4096) is smaller than the smallest code step. */
+/* The same for v in [0, 1] up to rounding (a blend of such values): one
+ * table look-up and one comparison, as a table step (1/4096) is smaller
+ * than the smallest code step.  The index is clamped, so values outside
+ * still give 0 or 255. */
 static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
 {
-    int c = r->encode[(int)(v * 4096.0f)];
+    int i = (int)(v * 4096.0f);
+    i = i < 0 ? 0 : (i > 4096 ? 4096 : i);
+    int c = r->encode[i];
     return (uint8_t)(c + (v >= r->threshold[c]));
 }
 
-/* Grows *array (of element size) to hold at least need elements. */
-int fill_reserve(void **array, size_t *capacity, size_t need, size_t size);
+/* Grows *array (of element size) to hold at least need elements; 0 when
+ * memory runs out (the array is then unchanged). */
+int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size);
+static inline int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
+{
+    return need <= *capacity || fill_reserve_grow(array, capacity, need, size);
+}
 
 /* Checks every point of a polygon (finite, within CG_FILL_MAX_COORD) and the
  * contour sizes; *total receives the number of points. */

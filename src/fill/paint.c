@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
+int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size)
 {
     if (need <= *capacity)
         return 1;
@@ -187,13 +187,22 @@ static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, f
         d->b = fill_encode_unit(t, db + (b - db) * as);
         return;
     }
+    if (d->a == 0) { /* over nothing: the source colour, with its alpha */
+        if (!(as > 0))
+            return;
+        d->r = fill_encode_unit(t, r);
+        d->g = fill_encode_unit(t, g);
+        d->b = fill_encode_unit(t, b);
+        d->a = (uint8_t)(as * 255.0f + 0.5f);
+        return;
+    }
     float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;
     if (a <= 0)
         return;
-    float inv = 1 / a;
-    d->r = fill_encode(t, (r * as + t->decode[d->r] * ad) * inv);
-    d->g = fill_encode(t, (g * as + t->decode[d->g] * ad) * inv);
-    d->b = fill_encode(t, (b * as + t->decode[d->b] * ad) * inv);
+    float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
+    d->r = fill_encode_unit(t, (r * as + t->decode[d->r] * ad) * inv);
+    d->g = fill_encode_unit(t, (g * as + t->decode[d->g] * ad) * inv);
+    d->b = fill_encode_unit(t, (b * as + t->decode[d->b] * ad) * inv);
     d->a = (uint8_t)(a * 255.0f + 0.5f);
 }
 
@@ -230,9 +239,10 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
     if (image->format == CG_PIXEL_RGBA8) {
         cg_rgba8 *row = cg_image_row_rgba8(image, y) + x0;
         if (!cover && p->opaque) {
-            uint32_t *w = (uint32_t *)row;
+            /* a local copy: the stores cannot alias it, so the loop vectorizes */
+            uint32_t *w = (uint32_t *)row, value = p->encoded;
             for (int i = 0; i < n; i++)
-                w[i] = p->encoded;
+                w[i] = value;
             return;
         }
         for (int i = 0; i < n; i++) {
@@ -243,7 +253,15 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
                 memcpy(&row[i], &p->encoded, 4);
                 continue;
             }
-            blend8(t, &row[i], p->r, p->g, p->b, p->a * (c * (1.0f / 255.0f)));
+            float as = p->a * (c * (1.0f / 255.0f));
+            if (!(as > 0))
+                continue;
+            if (row[i].a == 0) { /* over nothing: the colour itself, with its alpha */
+                memcpy(&row[i], &p->encoded, 4);
+                row[i].a = (uint8_t)(as * 255.0f + 0.5f);
+                continue;
+            }
+            blend8(t, &row[i], p->r, p->g, p->b, as);
         }
         return;
     }

@@ -297,19 +297,98 @@ static long arc_steps(double r, double sweep, double tolerance)
     return (long)n;
 }
 
-static cg_status ellipse_points(fill_polylines *set, const double *a, double tolerance)
+/* ---- culling what cannot be seen ----------------------------------------------- */
+
+/* Whether every point lies beyond one side of the box. */
+static int outside(const cg_vec2 *p, int n, const fill_clip *box)
 {
-    double cx = a[0], cy = a[1], rx = a[2], ry = a[3], phi = a[4], t0 = a[5], dt = a[6];
-    double cp = cos(phi), sp = sin(phi);
-    long n = arc_steps(rx > ry ? rx : ry, dt, tolerance);
+    int left = 1, right = 1, above = 1, below = 1;
+    for (int i = 0; i < n; i++) {
+        left &= p[i].x < box->x0;
+        right &= p[i].x > box->x1;
+        above &= p[i].y < box->y0;
+        below &= p[i].y > box->y1;
+    }
+    return left || right || above || below;
+}
+
+static double extent(const cg_vec2 *p, int n)
+{
+    double x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
+    for (int i = 1; i < n; i++) {
+        x0 = fmin(x0, p[i].x);
+        x1 = fmax(x1, p[i].x);
+        y0 = fmin(y0, p[i].y);
+        y1 = fmax(y1, p[i].y);
+    }
+    return fmax(x1 - x0, y1 - y0);
+}
+
+static cg_vec2 ellipse_at(const double *a, double t)
+{
+    double ex = a[2] * cos(t), ey = a[3] * sin(t), cp = cos(a[4]), sp = sin(a[4]);
+    return cg_vec2_make(a[0] + cp * ex - sp * ey, a[1] + sp * ex + cp * ey);
+}
+
+/* Points of the ellipse arc a (centre, radii, rotation) from parameter t0
+ * through dt, ending with end.  Pieces entirely outside the box (the chord's
+ * bounds grown by the sagitta) become their end point: the loop between
+ * piece and chord lies outside the box, so no visible pixel's winding
+ * changes.  Pieces much larger than the box are halved first. */
+static cg_status ellipse_piece(fill_polylines *set, const double *a, double t0, double dt,
+                               cg_vec2 end, double tolerance, const fill_clip *box, int depth)
+{
+    double r = fmax(a[2], a[3]);
+    if (box) {
+        cg_vec2 ends[2] = {ellipse_at(a, t0), end};
+        double h = fabs(dt) < CG_PI ? r * (1 - cos(dt / 2)) + 1e-9 * r : 2 * r;
+        fill_clip grown = {box->x0 - h, box->y0 - h, box->x1 + h, box->y1 + h};
+        if (outside(ends, 2, &grown))
+            return fill_polylines_add(set, end);
+        double size = fmax(box->x1 - box->x0, box->y1 - box->y0);
+        if (depth < 64 && r * fabs(dt) > 4 * size + 64) {
+            double half = dt / 2;
+            cg_status status = ellipse_piece(set, a, t0, half, ellipse_at(a, t0 + half), tolerance,
+                                             box, depth + 1);
+            return status != CG_OK ? status
+                                   : ellipse_piece(set, a, t0 + half, dt - half, end, tolerance,
+                                                   box, depth + 1);
+        }
+    }
+    long n = arc_steps(r, dt, tolerance);
     for (long i = 1; i < n; i++) {
-        double t = t0 + dt * (double)i / (double)n, ex = rx * cos(t), ey = ry * sin(t);
-        cg_status status = fill_polylines_add(set, cg_vec2_make(cx + cp * ex - sp * ey,
-                                                                cy + sp * ex + cp * ey));
+        cg_status status = fill_polylines_add(set, ellipse_at(a, t0 + dt * (double)i / (double)n));
         if (status != CG_OK)
             return status;
     }
-    return fill_polylines_add(set, cg_vec2_make(a[7], a[8]));
+    return fill_polylines_add(set, end);
+}
+
+static cg_status sink_point(void *user, cg_vec2 point)
+{
+    return fill_polylines_add(user, point);
+}
+
+/* The same for Bezier curves: pieces whose control points all lie beyond
+ * one side of the box become their end point (the curve and its chord lie
+ * in the control points' hull); pieces much larger than the box are split
+ * in two (de Casteljau) before being flattened by the curve module. */
+static cg_status bezier_piece(fill_polylines *set, const cg_vec2 *c, int n, double tolerance,
+                              const fill_clip *box, int depth)
+{
+    if (box) {
+        if (outside(c, n, box))
+            return fill_polylines_add(set, c[n - 1]);
+        double size = fmax(box->x1 - box->x0, box->y1 - box->y0);
+        if (depth < 64 && extent(c, n) > 4 * size + 64) {
+            cg_vec2 left[4], right[4];
+            cg_status status = cg_bezier_split(c, n, 0.5, left, right);
+            if (status == CG_OK)
+                status = bezier_piece(set, left, n, tolerance, box, depth + 1);
+            return status != CG_OK ? status : bezier_piece(set, right, n, tolerance, box, depth + 1);
+        }
+    }
+    return cg_bezier_flatten(c, n, tolerance, sink_point, set);
 }
 
 cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, double a1,
@@ -325,12 +404,8 @@ cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, d
     return CG_OK;
 }
 
-static cg_status sink_point(void *user, cg_vec2 point)
-{
-    return fill_polylines_add(user, point);
-}
-
-cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polylines *out)
+cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_clip *box,
+                            fill_polylines *out)
 {
     fill_polylines_reset(out);
     const double *c = path->coords;
@@ -350,12 +425,11 @@ cg_status fill_path_flatten(const cg_path *path, double tolerance, fill_polyline
         case VERB_QUAD:
         case VERB_CUBIC: {
             cg_vec2 control[4] = {current, {c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]}};
-            status = cg_bezier_flatten(control, verb == VERB_QUAD ? 3 : 4, tolerance, sink_point,
-                                       out);
+            status = bezier_piece(out, control, verb == VERB_QUAD ? 3 : 4, tolerance, box, 0);
             break;
         }
         case VERB_ARC:
-            status = ellipse_points(out, c, tolerance);
+            status = ellipse_piece(out, c, c[5], c[6], cg_vec2_make(c[7], c[8]), tolerance, box, 0);
             break;
         case VERB_CLOSE: {
             fill_polyline *l = &out->lines[out->line_count - 1];
@@ -382,7 +456,9 @@ cg_status cg_rasterizer_fill_path(cg_rasterizer *r, cg_image *image, const cg_pa
 {
     if (!r || !image || !image->data || !path || !paint)
         return CG_EINVAL;
-    cg_status status = fill_path_flatten(path, r->tolerance, &r->flat);
+    /* curves wholly outside the image (and a pixel around it) are culled */
+    fill_clip box = {-1, -1, image->width + 1.0, image->height + 1.0};
+    cg_status status = fill_path_flatten(path, r->tolerance, &box, &r->flat);
     if (status != CG_OK)
         return status;
     fill_aa_begin(r, image);
@@ -397,7 +473,12 @@ cg_status cg_rasterizer_stroke_path(cg_rasterizer *r, cg_image *image, const cg_
 {
     if (!r || !image || !image->data || !path || !paint || !style)
         return CG_EINVAL;
-    cg_status status = fill_path_flatten(path, r->tolerance, &r->flat);
+    /* Curves farther from the image than the stroke reaches are culled;
+     * not under dashes, whose phase follows the true length. */
+    double reach = fabs(style->width) / 2 * fmax(style->miter_limit, 1.5) + 1;
+    fill_clip box = {-reach, -reach, image->width + reach, image->height + reach};
+    int culled = style->dash_count == 0 && isfinite(reach);
+    cg_status status = fill_path_flatten(path, r->tolerance, culled ? &box : NULL, &r->flat);
     if (status == CG_OK)
         status = fill_stroke_polylines(&r->flat, style, r->tolerance, &r->outline);
     if (status != CG_OK)
@@ -439,7 +520,7 @@ cg_status cg_stroke_to_path(const cg_path *path, const cg_stroke_style *style, d
     if (!path || !style || !out || !(tolerance >= 0.001 && tolerance <= 100))
         return CG_EINVAL;
     fill_polylines flat = {0}, outline = {0};
-    cg_status status = fill_path_flatten(path, tolerance, &flat);
+    cg_status status = fill_path_flatten(path, tolerance, NULL, &flat);
     if (status == CG_OK)
         status = fill_stroke_polylines(&flat, style, tolerance, &outline);
     for (size_t i = 0; status == CG_OK && i < outline.line_count; i++) {

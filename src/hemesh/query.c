@@ -127,33 +127,75 @@ size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v)
     return around(m, v, 1, 0, NULL, 0);
 }
 
+/* Adds the neighbours from half-edge h on until the rotation returns to h0. */
+static void ring_rest(const cg_hemesh_halfedge *he, const cg_vec3 *p, uint32_t h, uint32_t h0,
+                      double *x, double *y, double *z, size_t *n)
+{
+    do {
+        const cg_hemesh_halfedge *t = &he[h ^ 1u];
+        *x += p[t->origin].x;
+        *y += p[t->origin].y;
+        *z += p[t->origin].z;
+        ++*n;
+        h = t->next;
+    } while (h != h0);
+}
+
+/* The average of the neighbours of v, walking clockwise: next(twin(h))
+ * reads only the pair h, h ^ 1. */
+static cg_vec3 neighbor_average(const cg_hemesh *m, uint32_t v)
+{
+    uint32_t h0 = m->vertex_halfedge[v];
+    if (h0 >= CG_HEMESH_DELETED)
+        return m->positions[v];
+    double x = 0, y = 0, z = 0;
+    size_t n = 0;
+    ring_rest(m->halfedges, m->positions, h0, h0, &x, &y, &z, &n);
+    double s = 1.0 / (double)n;
+    return cg_vec3_make(x * s, y * s, z * s);
+}
+
 cg_status cg_hemesh_neighbor_average(const cg_hemesh *m, cg_vec3 *out)
 {
     if (!m || !out)
         return CG_EINVAL;
     const cg_hemesh_halfedge *he = m->halfedges;
     const cg_vec3 *p = m->positions;
-    for (size_t v = 0; v < m->vertex_count; v++) {
-        uint32_t h0 = m->vertex_halfedge[v];
-        if (h0 >= CG_HEMESH_DELETED) {
-            out[v] = p[v];
+    size_t V = m->vertex_count, v = 0;
+    /* Two vertices at a time: each rotation is a chain of dependent loads,
+     * and walking two chains side by side keeps two misses in flight. */
+    for (; v + 1 < V; v += 2) {
+        uint32_t a0 = m->vertex_halfedge[v], b0 = m->vertex_halfedge[v + 1];
+        if (a0 >= CG_HEMESH_DELETED || b0 >= CG_HEMESH_DELETED) {
+            out[v] = neighbor_average(m, (uint32_t)v);
+            out[v + 1] = neighbor_average(m, (uint32_t)v + 1);
             continue;
         }
-        /* clockwise: next(twin(h)) reads the pair h, h ^ 1 only */
-        double x = 0, y = 0, z = 0;
-        size_t n = 0;
-        uint32_t h = h0;
-        do {
-            const cg_vec3 *q = &p[he[h ^ 1u].origin];
-            x += q->x;
-            y += q->y;
-            z += q->z;
-            n++;
-            h = he[h ^ 1u].next;
-        } while (h != h0);
-        double s = 1.0 / (double)n;
-        out[v] = cg_vec3_make(x * s, y * s, z * s);
+        double ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
+        size_t an = 0, bn = 0;
+        uint32_t a = a0, b = b0;
+        int a_more = 1, b_more = 1;
+        while (a_more & b_more) {
+            const cg_hemesh_halfedge *ta = &he[a ^ 1u], *tb = &he[b ^ 1u];
+            const cg_vec3 *qa = &p[ta->origin], *qb = &p[tb->origin];
+            a = ta->next;
+            b = tb->next;
+            ax += qa->x, ay += qa->y, az += qa->z;
+            bx += qb->x, by += qb->y, bz += qb->z;
+            an++, bn++;
+            a_more = a != a0;
+            b_more = b != b0;
+        }
+        if (a_more)
+            ring_rest(he, p, a, a0, &ax, &ay, &az, &an);
+        if (b_more)
+            ring_rest(he, p, b, b0, &bx, &by, &bz, &bn);
+        double sa = 1.0 / (double)an, sb = 1.0 / (double)bn;
+        out[v] = cg_vec3_make(ax * sa, ay * sa, az * sa);
+        out[v + 1] = cg_vec3_make(bx * sb, by * sb, bz * sb);
     }
+    if (v < V)
+        out[v] = neighbor_average(m, (uint32_t)v);
     return CG_OK;
 }
 

@@ -36,6 +36,7 @@ typedef struct ply_element {
     uint64_t count;
     size_t first_property, property_count;
     size_t header_line;
+    char name[32]; /* for messages; longer names are cut */
 } ply_element;
 
 enum ply_format { PLY_ASCII, PLY_LITTLE, PLY_BIG };
@@ -158,6 +159,10 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
             length = next_word(&t, &word);
             if (length == 0)
                 return header_fail(r, &t, "an element name");
+            size_t kept = length < sizeof e->name - 1 ? length : sizeof e->name - 1;
+            for (size_t i = 0; i < kept; i++)
+                e->name[i] = word[i] >= 0x20 && word[i] < 0x7f ? word[i] : '?';
+            e->name[kept] = '\0';
             e->kind = word_is(word, length, "vertex") ? E_VERTEX
                       : word_is(word, length, "face") ? E_FACE
                                                      : E_OTHER;
@@ -288,6 +293,8 @@ static void store(ply_reader *r, enum ply_target target, enum ply_type type, dou
     mesh_builder *b = &r->b;
     int is_float = type >= PLY_FLOAT32;
     if (face) {
+        if (!b->face_colors) /* no colour, or alpha alone */
+            return;
         cg_rgbaf *c = &b->face_colors[i];
         switch (target) {
         case T_R: c->r = mesh_color_component(value, is_float, 0); break;
@@ -377,18 +384,24 @@ static int ascii_value(text_cursor *t, enum ply_type type, double *value)
         int64_t i;
         if (parse_int64(&t->p, end, &i)) {
             *value = (double)i;
-            return *value >= lo && *value <= hi;
+            if (*value >= lo && *value <= hi)
+                return 1;
+            t->p = p;
+            return 0;
         }
     }
     if (!parse_double(&t->p, end, value))
         return 0;
     /* an integer property written as "3.0" is still a whole number */
-    return type >= PLY_FLOAT32 || (valid_integer(type, *value) && *value >= lo && *value <= hi);
+    if (type >= PLY_FLOAT32 || (valid_integer(type, *value) && *value >= lo && *value <= hi))
+        return 1;
+    t->p = p; /* the message shows the number */
+    return 0;
 }
 
 static const char *kind_name(const ply_element *e)
 {
-    return e->kind == E_VERTEX ? "vertex" : e->kind == E_FACE ? "face" : "element item";
+    return e->name;
 }
 
 static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t size, size_t body,
@@ -553,9 +566,9 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
         if (fixed && e->count > left / fixed) {
             uint64_t fits = left / fixed;
             return cg_error_set(r->err, CG_EFORMAT,
-                                "%s: byte %zu: the header says %llu items of element %zu (line "
+                                "%s: byte %zu: the header says %llu items of element '%s' (line "
                                 "%zu) but only %zu bytes remain, room for at most %llu",
-                                r->name, at, (unsigned long long)e->count, ei,
+                                r->name, at, (unsigned long long)e->count, e->name,
                                 e->header_line, left, (unsigned long long)fits);
         }
         if (e->kind == E_OTHER && !has_list) {

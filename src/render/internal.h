@@ -210,6 +210,7 @@ typedef struct render_frame {
     int thread_count;
     render_chunk *chunks;
     size_t stride;
+    size_t setup_slack;         /* setups of room kept after the last one */
     int tiles_x, tiles_y, tile_count;
     size_t splits;
 } render_frame;

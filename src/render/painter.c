@@ -312,7 +312,7 @@ cg_status render_painter(render_frame *f)
     for (size_t i = pt.count; i-- > 0;)
         push_front(&pt, &list, keys[i].index);
     free(keys);
-    size_t splits = 0;
+    size_t splits = 0, painted = 0;
     int naive = f->o->algorithm == CG_RENDER_DEPTH_SORT;
     while (list >= 0 && status == CG_OK) {
         if (naive) {
@@ -376,6 +376,8 @@ cg_status render_painter(render_frame *f)
             continue;
         unlink_node(&pt, &list, p);
         paint(&pt, p);
+        if (++painted % 4096 == 0 && f->o->progress)
+            f->o->progress(f->o->progress_user, (double)painted / (double)pt.count);
     }
     f->splits = splits;
     free(pt.polygons);

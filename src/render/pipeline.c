@@ -58,6 +58,8 @@ static inline void row_span(const int64_t w[3], const int64_t step[3], int width
             hi = 0;
         }
     }
+    if (lo > width)
+        lo = width;
     *begin = (int)lo;
     *end = (int)(hi > lo ? hi : lo);
 }
@@ -88,7 +90,20 @@ static inline size_t raster_mode(const render_frame *f, const setup_triangle *t,
     for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
              e.w[2] += e.step_y[2]) {
         int begin, end;
-        row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        if (x1 - x0 <= 8) {
+            /* Narrow: test the few pixels instead of dividing. */
+            int64_t a = e.w[0], b = e.w[1], c = e.w[2];
+            begin = x1 - x0;
+            end = 0;
+            for (int i = 0; i < x1 - x0; i++, a += e.step_x[0], b += e.step_x[1], c += e.step_x[2])
+                if ((a | b | c) >= 0) {
+                    if (i < begin)
+                        begin = i;
+                    end = i + 1;
+                }
+        } else {
+            row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+        }
         if (begin >= end)
             continue;
         fragments += (size_t)(end - begin);
@@ -218,17 +233,32 @@ static void *grow(void *buffer, size_t *capacity, size_t needed, size_t size)
     return p;
 }
 
-static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t)
+/* Room for one more set-up triangle at the end of the chunk's list (with a
+ * whole setup_triangle of slack after it, so that it may be written through
+ * that type); NULL when memory runs out.  emit_setup keeps it. */
+static setup_triangle *next_setup(render_frame *f, render_chunk *c)
 {
     if (c->failed)
-        return;
-    void *p = grow(c->setups, &c->setup_capacity, c->setup_count + 1, f->stride);
+        return NULL;
+    size_t needed = c->setup_count + 1 + f->setup_slack;
+    if (needed <= c->setup_capacity)
+        return (setup_triangle *)(c->setups + c->setup_count * f->stride);
+    void *p = grow(c->setups, &c->setup_capacity, needed, f->stride);
     if (!p) {
         c->failed = 1;
-        return;
+        return NULL;
     }
     c->setups = p;
-    memcpy(c->setups + c->setup_count * f->stride, t, f->stride);
+    return (setup_triangle *)(c->setups + c->setup_count * f->stride);
+}
+
+static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t)
+{
+    setup_triangle *slot = next_setup(f, c);
+    if (!slot)
+        return;
+    if (slot != t)
+        memcpy(slot, t, f->stride);
     c->setup_count++;
 }
 
@@ -319,8 +349,11 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
                 corner[k].a = v[k]->a;
             }
             const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
-            setup_triangle t;
-            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, &t);
+            /* Set up in place at the end of the chunk's list. */
+            setup_triangle *t = next_setup(f, c);
+            if (!t)
+                continue;
+            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, t);
             if (result < 0) {
                 c->culled++;
                 continue;
@@ -331,8 +364,8 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             }
             float color[3];
             triangle_color(f, i, color);
-            render_finish_setup(f, &t, color);
-            emit_setup(f, c, &t);
+            render_finish_setup(f, t, color);
+            emit_setup(f, c, t);
             continue;
         }
         clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
@@ -666,6 +699,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     f.background[3] = o->background.a;
     f.background8 = cg_linear_to_rgba8(o->background);
     f.stride = SETUP_SIZE(f.attribute_count);
+    f.setup_slack = (sizeof(setup_triangle) + f.stride - 1) / f.stride;
     f.tiles_x = (f.width + RENDER_TILE - 1) / RENDER_TILE;
     f.tiles_y = (f.height + RENDER_TILE - 1) / RENDER_TILE;
     f.tile_count = f.tiles_x * f.tiles_y;

@@ -96,7 +96,8 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
         out->y[k] = c->y;
         out->z[k] = c->z;
         out->iw[k] = c->iw;
-        memcpy(&out->a[k * attribute_count], c->a, sizeof(float) * (size_t)attribute_count);
+        for (int j = 0; j < attribute_count; j++)
+            out->a[k * attribute_count + j] = c->a[j];
     }
     out->box[0] = (int32_t)x0;
     out->box[1] = (int32_t)y0;

@@ -1,9 +1,103 @@
-/* A scene through the ray tracer. */
+/* A scene through the ray tracer: objects, materials and lights map one to
+ * one onto cg/trace.h's scene. */
 #include "internal.h"
+#include "view.h"
+#include "cg/render.h"
+#include "cg/trace.h"
+
+/* The crease angle the rasterizer uses by default, so smooth normals agree. */
+#define CREASE_ANGLE (60.0 * CG_PI / 180.0)
+
+static cg_trace_material trace_material(const cg_scene_material *m)
+{
+    cg_trace_material t = cg_trace_material_default();
+    t.surface = m->surface;
+    t.checker_color = m->checker_color;
+    t.checker_size = m->checker_size;
+    return t;
+}
+
+static cg_status add_object(cg_trace_scene *trace, const cg_scene *scene, const cg_scene_object *o)
+{
+    cg_trace_material material = trace_material(&scene->materials[o->material]);
+    switch (o->kind) {
+    case CG_SCENE_MESH:
+        return cg_trace_scene_add_mesh(trace, o->mesh, &o->transform, CREASE_ANGLE, &material);
+    case CG_SCENE_SPHERE:
+        return cg_trace_scene_add_sphere(trace, o->center, o->radius, &o->transform, &material);
+    case CG_SCENE_BOX: {
+        cg_mesh *box;
+        cg_status s = cg_mesh_box(o->lo, o->hi, &box);
+        if (s == CG_OK)
+            s = cg_trace_scene_add_mesh(trace, box, &o->transform, CREASE_ANGLE, &material);
+        cg_mesh_free(box);
+        return s;
+    }
+    case CG_SCENE_PLANE: {
+        /* Points move with the transform; normals with its inverse transpose. */
+        cg_mat4 inverse;
+        cg_status s = cg_mat4_inverse(o->transform, &inverse);
+        if (s != CG_OK)
+            return CG_EINVAL;
+        cg_vec3 point = cg_mat4_transform_point(o->transform, o->point);
+        cg_vec3 normal = cg_mat4_transform_vector(cg_mat4_transpose(inverse), o->normal);
+        return cg_trace_scene_add_plane(trace, point, normal, &material);
+    }
+    }
+    return CG_EINVAL;
+}
 
 cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *err)
 {
-    (void)scene;
-    (void)image;
-    return cg_error_set(err, CG_EUNSUPPORTED, "scene: the ray tracer is not part of this build");
+    if (scene_is_oblique(scene))
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: the ray tracer draws perspective and orthogonal views only; "
+                            "render cavalier, cabinet and oblique projections with zbuffer or painter");
+    cg_camera camera;
+    cg_mat4 model;
+    cg_status s = scene_view(scene, &camera, &model);
+    if (s != CG_OK)
+        return cg_error_set(err, s, "scene: the camera cannot see the scene");
+    cg_trace_scene *trace;
+    if ((s = cg_trace_scene_create(&trace)) != CG_OK)
+        return cg_error_set(err, s, "scene: cannot create the ray-tracing scene");
+    for (size_t i = 0; i < scene->object_count && s == CG_OK; i++)
+        if ((s = add_object(trace, scene, &scene->objects[i])) != CG_OK)
+            cg_error_set(err, s, "scene: objects[%zu]: the ray tracer refused it (%s)", i,
+                         cg_status_str(s));
+    for (size_t i = 0; i < scene->light_count && s == CG_OK; i++)
+        if ((s = cg_trace_scene_add_light(trace, &scene->lights[i])) != CG_OK)
+            cg_error_set(err, s, "scene: lights[%zu]: the ray tracer refused it", i);
+    for (size_t i = 0; i < scene->area_light_count && s == CG_OK; i++) {
+        const cg_scene_area_light *a = &scene->area_lights[i];
+        cg_trace_area_light light = {a->corner, a->edge_u, a->edge_v, a->color, a->samples};
+        if ((s = cg_trace_scene_add_area_light(trace, &light)) != CG_OK)
+            cg_error_set(err, s, "scene: an area light was refused");
+    }
+    if (s == CG_OK && scene->light_count + scene->area_light_count == 0) {
+        /* No lights given: the rasterizer's default, a light from the camera's
+         * upper left, and a little ambient. */
+        cg_vec3 forward = cg_vec3_normalize(cg_vec3_sub(camera.target, camera.eye));
+        cg_vec3 side = cg_vec3_normalize(cg_vec3_cross(forward, camera.up));
+        cg_vec3 up = cg_vec3_cross(side, forward);
+        cg_vec3 travel = cg_vec3_add(forward, cg_vec3_scale(cg_vec3_sub(side, up), 0.5));
+        cg_light key = cg_light_directional(travel, cg_vec3_make(1, 1, 1));
+        cg_light fill = cg_light_ambient(cg_vec3_make(1, 1, 1));
+        s = cg_trace_scene_add_light(trace, &key);
+        if (s == CG_OK)
+            s = cg_trace_scene_add_light(trace, &fill);
+    }
+    if (s == CG_OK) {
+        cg_trace_options options = cg_trace_options_default();
+        options.samples = scene->samples;
+        options.max_depth = scene->max_depth;
+        options.threads = scene->threads;
+        options.shadows = scene->shadows;
+        options.normals = scene->shading == CG_SCENE_FLAT ? CG_TRACE_FLAT : CG_TRACE_SMOOTH;
+        options.background = scene->background;
+        if ((s = cg_trace_render(trace, &camera, &options, image, NULL)) != CG_OK)
+            cg_error_set(err, s, "scene: ray tracing failed: %s", cg_status_str(s));
+    }
+    cg_trace_scene_free(trace);
+    return s;
 }

@@ -23,8 +23,10 @@ static int load(const char *path, cg_mesh **mesh)
 static int build(const char *what, const cg_mesh *mesh, cg_hemesh **out, cg_hemesh_report *report)
 {
     cg_error err;
-    if (cg_hemesh_build(mesh, repair_flags, out, report, &err) != CG_OK)
+    if (cg_hemesh_build(mesh, repair_flags, out, report, &err) != CG_OK) {
+        cg_hemesh_report_clear(report);
         return cli_fail("mesh %s: %s", what, err.message);
+    }
     return CLI_OK;
 }
 
@@ -170,8 +172,11 @@ static int info(int argc, char **argv)
                 ring_times[i] = cli_now() - t0;
             }
             if (status == CLI_OK) {
-                fprintf(stderr, "build: %.3f ms\n", 1e3 * cli_median(build_times, (int)repeat));
-                fprintf(stderr, "one-ring: %.3f ms\n", 1e3 * cli_median(ring_times, (int)repeat));
+                /* as `build: 12.3 ms`; three decimals below a millisecond */
+                double b = 1e3 * cli_median(build_times, (int)repeat);
+                double r = 1e3 * cli_median(ring_times, (int)repeat);
+                fprintf(stderr, b >= 1 ? "build: %.1f ms\n" : "build: %.3f ms\n", b);
+                fprintf(stderr, r >= 1 ? "one-ring: %.1f ms\n" : "one-ring: %.3f ms\n", r);
             }
         }
         free(build_times);

@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "command.h"
 #include "render_raytrace.h"
+#include "render_scene.h"
 #include "cg/color.h"
 #include "cg/mesh.h"
 #include "cg/render.h"
@@ -215,6 +216,22 @@ static int run(int argc, char **argv)
     if (cg_file_format_from_path(out_path) == CG_FILE_UNKNOWN)
         return cli_usage_error(NAME, "%s: unknown output format (expected .png, .ppm or .pgm)",
                                out_path);
+    if (render_scene_is_scene(mesh_path)) {
+        /* A scene file: the options given on the command line win over its own. */
+        render_scene_overrides so = render_scene_no_overrides();
+        if (render_scene_option_given(argc, argv, "--algorithm"))
+            so.algorithm = algorithm == 3 ? 1 : algorithm;
+        if (render_scene_option_given(argc, argv, "--shading"))
+            so.shading = (int)o.shading;
+        if (render_scene_option_given(argc, argv, "--size")) {
+            so.width = width;
+            so.height = height;
+        }
+        if (render_scene_option_given(argc, argv, "--threads"))
+            so.threads = (int)threads;
+        so.repeat = (int)repeat;
+        return render_scene_file(mesh_path, out_path, &so);
+    }
     o.threads = (int)threads;
     o.crease_angle = cg_radians(crease);
 

@@ -13,17 +13,17 @@
 #define H 240
 #define BUNNY "data/meshes/bunny.obj"
 
-/* The bunny from the source tree (or the working directory). */
+/* The bunny from the project's data folder (or the working directory);
+ * NULL when neither has it (an installed tool): its pictures are skipped. */
 static cg_mesh *load_bunny(void)
 {
     cg_mesh *mesh = NULL;
-    if (cg_mesh_load(BUNNY, &mesh, NULL) == CG_OK)
-        return mesh;
-#ifdef CG_SOURCE_DIR
-    if (cg_mesh_load(CG_SOURCE_DIR "/" BUNNY, &mesh, NULL) == CG_OK)
+#ifdef CG_DATA_DIR
+    if (cg_mesh_load(CG_DATA_DIR "/meshes/bunny.obj", &mesh, NULL) == CG_OK)
         return mesh;
 #endif
-    fprintf(stderr, "cg: demo: %s not found\n", BUNNY);
+    if (cg_mesh_load(BUNNY, &mesh, NULL) == CG_OK)
+        return mesh;
     return NULL;
 }
 
@@ -115,8 +115,6 @@ static void save(demo_context *context, const cg_mesh *mesh, const char *name)
 static int render_pipeline(demo_context *context)
 {
     cg_mesh *bunny = load_bunny();
-    if (!bunny)
-        return 1;
     int status = 0;
     /* The bunny under each option of the pipeline. */
     static const struct variant {
@@ -145,7 +143,7 @@ static int render_pipeline(demo_context *context)
          CG_CULL_BACK, CG_SHADING_FLAT},
     };
     cg_render_options o;
-    for (size_t i = 0; i < sizeof variants / sizeof variants[0]; i++) {
+    for (size_t i = 0; bunny && i < sizeof variants / sizeof variants[0]; i++) {
         const struct variant *v = &variants[i];
         o = base_options();
         o.algorithm = v->algorithm;
@@ -162,7 +160,7 @@ static int render_pipeline(demo_context *context)
     o = base_options();
     o.camera.orthographic = 1;
     o.camera.eye = cg_vec3_make(1, 0.6, 1);
-    {
+    if (bunny) {
         /* The height framing chose, so that the command repeats the view. */
         cg_renderer *framed;
         cg_image *probe;
@@ -187,7 +185,7 @@ static int render_pipeline(demo_context *context)
     o = base_options();
     cg_renderer *r;
     cg_image *image = NULL;
-    if (cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
+    if (bunny && cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
         if (cg_image_create(&image, W, H, CG_PIXEL_RGBA8) == CG_OK
             && cg_renderer_draw(r, image) == CG_OK && cg_renderer_depth_image(r, image) == CG_OK)
             status |= demo_add(context, "render-depth.png", image,
@@ -266,7 +264,7 @@ int demo_render_shading(demo_context *context)
 {
     int status = 0;
     cg_mesh *sphere = NULL, *bunny = load_bunny();
-    if (!bunny || cg_mesh_sphere(14, 8, 1, &sphere) != CG_OK) {
+    if (cg_mesh_sphere(14, 8, 1, &sphere) != CG_OK) {
         cg_mesh_free(bunny);
         return 1;
     }
@@ -291,6 +289,8 @@ int demo_render_shading(demo_context *context)
                  "cg render sphere.obj --size 320x240 --view-from 0,0.5,2 --specular 0.5 --shininess 40 "
                  "--shading %s -o %s", names[s], file);
         status |= shot(context, sphere, &o, file, captions[s][0], command);
+        if (!bunny)
+            continue;
         o = base_options();
         o.shading = (cg_shading)s;
         snprintf(file, sizeof file, "shading-bunny-%s.png", names[s]);

@@ -328,7 +328,7 @@ out_of_memory:
     return 1;
 }
 
-int draw_script_run(const draw_script *script, draw_state *state)
+static void state_init(const draw_script *script, draw_state *state)
 {
     memset(state, 0, sizeof *state);
     state->file = script->file;
@@ -337,6 +337,10 @@ int draw_script_run(const draw_script *script, draw_state *state)
     state->tolerance = 0.25;
     state->fill_rule = 1; /* CG_FILL_NONZERO, as in SVG */
     state->line_width = 1;
+}
+
+static int run_lines(const draw_script *script, draw_state *state)
+{
     for (int i = 0; i < script->count; i++) {
         const draw_line *line = &script->lines[i];
         state->line = line->number;
@@ -344,11 +348,30 @@ int draw_script_run(const draw_script *script, draw_state *state)
         if (line->command->run(state, line->argc, line->argv))
             return 1;
     }
+    return 0;
+}
+
+int draw_script_run(const draw_script *script, draw_state *state)
+{
+    state_init(script, state);
+    if (run_lines(script, state))
+        return 1;
     if (!state->canvas) {
         state->line = script->count ? script->lines[script->count - 1].number : 1;
         return draw_error(state, "expected a 'size W H' command: the script draws no canvas");
     }
     return 0;
+}
+
+int draw_script_run_on(const draw_script *script, cg_image *canvas)
+{
+    draw_state state;
+    state_init(script, &state);
+    state.canvas = canvas;
+    int status = run_lines(script, &state);
+    state.canvas = NULL; /* the caller's; `size` refuses to replace it */
+    draw_state_release(&state);
+    return status;
 }
 
 void draw_state_release(draw_state *state)

@@ -32,4 +32,9 @@ void draw_script_free(draw_script *script);
 int draw_script_run(const draw_script *script, draw_state *state);
 void draw_state_release(draw_state *state);
 
+/* Runs the commands on an existing canvas (which stays the caller's), as
+ * overlays on a rendered picture; `size` is an error there, since the canvas
+ * is already set.  Returns 0, or 1 after printing the error. */
+int draw_script_run_on(const draw_script *script, cg_image *canvas);
+
 #endif

@@ -1,6 +1,7 @@
-/* libFuzzer target for the mesh readers.  Compiled once per reader with
- * FUZZ_FORMAT set to a cg_mesh_format (CG_MESH_FORMAT_AUTO also tries gzip
- * and the format detection).  A mesh that loads must validate. */
+/* The body of the mesh-reader fuzz targets: each fuzz_mesh_<format>.c sets
+ * FUZZ_FORMAT to a cg_mesh_format (CG_MESH_FORMAT_AUTO also tries gzip and
+ * the format detection) and includes this.  A mesh that loads must
+ * validate; a failure must come with a message. */
 #include "cg/mesh.h"
 
 #include <stdlib.h>

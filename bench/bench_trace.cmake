@@ -1,0 +1,13 @@
+# Ray tracer benchmark against Embree 3 (libembree-dev) when it is installed.
+find_package(embree 3 QUIET)
+add_executable(bench_trace ${CMAKE_CURRENT_LIST_DIR}/bench_trace.c)
+target_compile_options(bench_trace PRIVATE ${CG_WARNINGS})
+target_include_directories(bench_trace PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+target_compile_definitions(bench_trace PRIVATE CG_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
+target_link_libraries(bench_trace PRIVATE cg_static)
+if(embree_FOUND AND TARGET embree)
+  target_compile_definitions(bench_trace PRIVATE CG_HAVE_EMBREE=1)
+  target_link_libraries(bench_trace PRIVATE embree)
+else()
+  message(STATUS "Embree 3 not found: bench_trace runs without its peer (install libembree-dev)")
+endif()

@@ -1,0 +1,99 @@
+/* Private pieces shared by the ray tracer's files. */
+#ifndef CG_TRACE_INTERNAL_H
+#define CG_TRACE_INTERNAL_H
+
+#include "cg/trace.h"
+
+/* A 32-byte node: bounds, and either two children (count == 0: the left
+ * child follows this node, the right one is at offset) or a leaf of count
+ * triangles starting at offset in the reordered triangle array. */
+typedef struct bvh_node {
+    float lo[3];
+    uint32_t offset;
+    float hi[3];
+    uint32_t count;
+} bvh_node;
+
+/* A triangle as the test reads it, in leaf order. */
+typedef struct bvh_triangle {
+    float v0[3], v1[3], v2[3];
+    uint32_t id;
+} bvh_triangle;
+
+struct cg_bvh {
+    bvh_node *nodes;
+    size_t node_count;
+    bvh_triangle *triangles;
+    size_t triangle_count;
+    int depth;
+};
+
+/* A ray prepared for the watertight test and the slab test. */
+typedef struct bvh_ray {
+    float origin[3];
+    float inverse[3]; /* 1 / direction, with zero components made tiny */
+    float shear_x, shear_y, shear_z;
+    int kx, ky, kz;
+    int flat_axes; /* bit a: direction component a is zero */
+    float t_min;
+    double dorigin[3], ddirection[3]; /* for the double-precision fallback */
+} bvh_ray;
+
+/* Prepares the ray; 0 when it is not finite or has zero direction. */
+int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min);
+
+/* ---- scenes ---- */
+
+typedef enum trace_kind { TRACE_MESH, TRACE_SPHERE, TRACE_PLANE } trace_kind;
+
+typedef struct trace_object {
+    trace_kind kind;
+    cg_trace_material material;
+    /* TRACE_MESH: its triangles in the scene's arrays */
+    size_t first_triangle, triangle_count;
+    /* TRACE_SPHERE: center and radius in object space, and the transforms;
+     * TRACE_PLANE: center is a point on it */
+    cg_vec3 center;
+    double radius;
+    cg_mat4 to_world, to_object;
+    cg_mat3 normal_to_world;
+    cg_vec3 plane_normal, axis_u, axis_v;
+} trace_object;
+
+struct cg_trace_scene {
+    trace_object *objects;
+    size_t object_count, object_capacity;
+    cg_light *lights;
+    size_t light_count, light_capacity;
+    cg_trace_area_light *area_lights;
+    size_t area_light_count, area_light_capacity;
+    /* Triangles of all meshes, in world space; normals per triangle corner. */
+    cg_vec3 *positions, *normals;
+    size_t vertex_count, vertex_capacity, normal_capacity;
+    uint32_t *indices; /* 3 per triangle */
+    uint32_t *triangle_object;
+    size_t triangle_count, index_capacity, triangle_object_capacity;
+    cg_bvh *bvh;
+    int built;
+};
+
+typedef struct trace_hit {
+    double t;
+    int object;
+    uint32_t triangle;
+    double u, v;
+    cg_vec3 point;         /* on the surface */
+    cg_vec3 normal;        /* geometric, unit */
+    cg_vec3 smooth_normal; /* interpolated, unit */
+    double scale;          /* largest coordinate magnitude involved */
+} trace_hit;
+
+int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
+                    double t_min, double t_max, trace_hit *hit);
+int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
+                   double t_min, double t_max);
+/* The hit point moved off the surface along normal (unit) by an amount
+ * relative to the magnitude of the coordinates. */
+cg_vec3 trace_offset(const trace_hit *hit, cg_vec3 normal);
+
+#endif

@@ -1,0 +1,20 @@
+# Helpers for the shell tests of the cg tool; source it after setting $work
+# (a scratch folder).  Counts in $passed and $failed.
+passed=0 failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
+# expect STATUS DESCRIPTION COMMAND...: runs COMMAND (stdout in $work/out,
+# stderr in $work/err) and checks its exit status.
+expect() {
+  local want=$1 what=$2; shift 2
+  "$@" >"$work/out" 2>"$work/err"; local got=$?
+  if [ "$got" = "$want" ]; then pass; else fail "$what: exit $got, want $want: $(cat "$work/err")"; fi
+}
+# one_line DESCRIPTION: the last command printed exactly one line on stderr.
+one_line() { [ "$(wc -l < "$work/err")" = 1 ] && pass || fail "$1: expected one line on stderr, got: $(cat "$work/err")"; }
+# png_size FILE: WIDTHxHEIGHT from the PNG's IHDR.
+png_size() {
+  od -An -tu1 -j16 -N8 "$1" | awk '{printf "%dx%d", $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'
+}
+# finish: prints the counts; the script's exit status.
+finish() { echo "$passed passed, $failed failed"; [ "$failed" = 0 ]; }

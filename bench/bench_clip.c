@@ -165,8 +165,11 @@ int main(int argc, char **argv)
     size_t max_n = argc > 1 ? (size_t)atol(argv[1]) : 100000;
     size_t min_n = argc > 2 ? (size_t)atol(argv[2]) : 10;
     /* random star-shaped polygons: vertex k at angle 2 pi (k + jitter) / n,
-     * radius uniform in [0.9, 1] x 10^6 */
-    for (size_t n = 10; n <= max_n; n *= 10)
+     * radius uniform in [0.9, 1] x 10^6.  The boundaries cross about n^2 / 10^5
+     * times (5,951 result rings at 20,000 vertices), so the output itself grows
+     * quadratically: the sweep stops at 10,000 (100,000 would take minutes for
+     * every library); the smooth ellipses below go to 100,000. */
+    for (size_t n = 10; n <= max_n && n <= 10000; n *= 10)
         if (n >= min_n)
                 star_case(n, 9e5, "random polygons", n <= 1000 ? 4 : 2,
                       n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1);

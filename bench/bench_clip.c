@@ -1,6 +1,6 @@
 /* Boolean operations: cg_clip_boolean64 against Clipper 6.4 and GEOS on the
  * same integer polygons (random star-shaped polygons of 10 to 100,000
- * vertices, smooth ellipses, many small squares against a circle, a plate
+ * vertices, spiky ones, smooth ellipses, many small squares against a circle, a plate
  * with holes), with the result areas side by side. */
 #include "bench.h"
 #include "bench_clip_peers.h"
@@ -95,6 +95,15 @@ static void run_geos(void *c)
     j->area = peer_geos_run(j->peer, j->op);
 }
 
+typedef struct peer {
+    const char *name, *missing;
+    int (*available)(void);
+    void *(*prepare)(const peer_input *, const peer_input *);
+    void (*run)(void *);
+    void (*release)(void *);
+    int runs;
+} peer;
+
 static const char *op_name[4] = {"intersection", "union", "difference", "xor"};
 
 static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
@@ -107,25 +116,24 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
     size_t nv = j.result.point_count;
     cg_polygon_set64_clear(&j.result);
     peer_input pa = {a->xy, a->len, a->set.ring_count}, pb = {b->xy, b->len, b->set.ring_count};
-    if (peer_clipper_available()) {
-        j.peer = peer_clipper_prepare(&pa, &pb);
-        double t = bench_median(run_clipper, &j, runs);
-        snprintf(note, sizeof note, "area cg %.6e, Clipper %.6e (diff %.1e); %zu result vertices",
-                 area_cg, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
-        bench_row(name, t_cg, "Clipper 6.4", t, note);
-        peer_clipper_free(j.peer);
-    } else {
-        bench_row(name, t_cg, "-", 0, "Clipper (libpolyclipping-dev) not installed");
-    }
-    if (peer_geos_available()) {
-        j.peer = peer_geos_prepare(&pa, &pb);
-        double t = bench_median(run_geos, &j, runs > 3 ? 3 : runs);
-        snprintf(note, sizeof note, "area cg %.6e, GEOS %.6e (diff %.1e)", area_cg, j.area,
-                 fabs(area_cg - j.area) / fmax(1, fabs(j.area)));
-        bench_row(name, t_cg, "GEOS", t, note);
-        peer_geos_free(j.peer);
-    } else {
-        bench_row(name, t_cg, "-", 0, "GEOS (libgeos-dev) not installed");
+    const peer peers[2] = {
+        {"Clipper 6.4", "Clipper (libpolyclipping-dev) not installed", peer_clipper_available,
+         peer_clipper_prepare, run_clipper, peer_clipper_free, runs},
+        {"GEOS", "GEOS (libgeos-dev) not installed", peer_geos_available, peer_geos_prepare,
+         run_geos, peer_geos_free, runs > 3 ? 3 : runs},
+    };
+    for (int k = 0; k < 2; k++) {
+        const peer *p = &peers[k];
+        if (!p->available()) {
+            bench_row(name, t_cg, "-", 0, p->missing);
+            continue;
+        }
+        j.peer = p->prepare(&pa, &pb);
+        double t = bench_median(p->run, &j, p->runs);
+        snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
+                 area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
+        bench_row(name, t_cg, p->name, t, note);
+        p->release(j.peer);
     }
 }
 
@@ -136,24 +144,31 @@ static void free_shape(shape *s)
     free(s->len);
 }
 
+static void star_case(size_t n, double r0, const char *label, int ops, int runs)
+{
+    shape a = {0}, b = {0};
+    star(&a, n, 0, 0, r0, 1e6);
+    star(&b, n, 3e5, 2e5, r0, 1e6);
+    finish(&a);
+    finish(&b);
+    char what[80];
+    snprintf(what, sizeof what, "%s, %zu vertices each", label, n);
+    for (int op = 0; op < ops; op++)
+        compare(what, &a, &b, op, runs);
+    free_shape(&a);
+    free_shape(&b);
+}
+
 int main(int argc, char **argv)
 {
     size_t max_n = argc > 1 ? (size_t)atol(argv[1]) : 100000;
-    for (size_t n = 10; n <= max_n; n *= 10) {
-        shape a = {0}, b = {0};
-        star(&a, n, 0, 0, 5e5, 1e6);
-        star(&b, n, 3e5, 2e5, 5e5, 1e6);
-        finish(&a);
-        finish(&b);
-        char what[64];
-        snprintf(what, sizeof what, "random star polygons, %zu vertices each", n);
-        int runs = n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1;
-        for (int op = 0; op < 4; op++)
-            if (n <= 1000 || op < 2)
-                compare(what, &a, &b, op, runs);
-        free_shape(&a);
-        free_shape(&b);
-    }
+    /* random star-shaped polygons: vertex k at angle 2 pi (k + jitter) / n,
+     * radius uniform in [0.9, 1] x 10^6 */
+    for (size_t n = 10; n <= max_n; n *= 10)
+        star_case(n, 9e5, "random polygons", n <= 1000 ? 4 : 2,
+                  n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1);
+    /* spiky: radius uniform in [0.5, 1]: a scanline meets a third of the edges */
+    star_case(max_n < 1000 ? max_n : 1000, 5e5, "spiky random polygons", 4, 5);
     for (size_t n = 100; n <= max_n; n *= 10) {
         shape a = {0}, b = {0};
         ellipse(&a, n, 0, 0, 1e6, 6e5, 0, 0);

@@ -30,7 +30,7 @@ static uint64_t next(void)
 }
 static int uniform(int lo, int hi) { return lo + (int)(next() % (uint64_t)(hi - lo + 1)); }
 
-static int lines[LINES * 4], far_lines[LINES * 4], fixed_lines[LINES * 4], circles[CIRCLES * 3];
+static int lines[LINES * 4], small_lines[LINES * 4], far_lines[LINES * 4], fixed_lines[LINES * 4], circles[CIRCLES * 3];
 static double aa_lines[LINES * 4];
 static const cg_rgba8 color = {250, 180, 40, 255};
 
@@ -153,7 +153,13 @@ static void row(const char *name, double cg_time, const char *peer, double peer_
     bench_row(name, cg_time, peer, peer_time, note);
 }
 
-int main(void)
+/* `bench_draw ONLY` runs one job once, for instruction counts under
+ * valgrind --tool=callgrind: ONLY is cg-lines, ocv-lines, cairo-lines,
+ * cg-aalines, ocv-aalines, cairo-aalines, cg-circles, ocv-circles,
+ * cairo-circles. */
+static int only(const char *what, job *j);
+
+int main(int argc, char **argv)
 {
     for (int i = 0; i < LINES; i++) {
         for (int k = 0; k < 4; k++) {
@@ -163,6 +169,8 @@ int main(void)
             fixed_lines[4 * i + k] = (int)(aa_lines[4 * i + k] * 16) - 8; /* OpenCV: centre at +0 */
         }
     }
+    for (int i = 0; i < LINES * 4; i++)
+        small_lines[i] = lines[i] / 4; /* the same lines scaled into 256 x 256 */
     for (int i = 0; i < CIRCLES; i++) {
         circles[3 * i] = uniform(0, SIZE - 1);
         circles[3 * i + 1] = uniform(0, SIZE - 1);
@@ -181,6 +189,8 @@ int main(void)
     cairo_set_source_rgb(j.cr, 0.98, 0.7, 0.16);
     cairo_set_line_width(j.cr, 1.0);
 #endif
+    if (argc == 2)
+        return only(argv[1], &j);
     struct { const char *name; const int *ints; const double *doubles; int n, aa; double pixels; } line_cases[] = {
         {"draw: 20k Bresenham lines inside", lines, NULL, LINES, 0, line_pixels(lines, LINES)},
         {"draw: 20k Bresenham lines, clipped", far_lines, NULL, LINES, 0, 0},
@@ -218,6 +228,42 @@ int main(void)
         if (!printed)
             row(line_cases[c].name, t_cg, "-", 0, pixels);
     }
+    /* The same lines scaled into a 256 x 256 image that stays in cache: the
+     * drawing code itself rather than memory traffic. */
+    {
+        cg_image *small;
+        cg_image_create(&small, SIZE / 4, SIZE / 4, CG_PIXEL_RGBA8);
+        job s = j;
+        s.image = small;
+        s.ints = small_lines;
+        s.n = LINES;
+        double t_cg = bench_median(cg_lines, &s, RUNS), pixels = line_pixels(small_lines, LINES);
+        char note[160];
+        snprintf(note, sizeof note, "256 x 256 RGBA8 (in cache); cg %.0f Mpx/s", pixels / t_cg * 1e-6);
+        int printed = 0;
+#ifdef HAVE_OPENCV
+        s.ocv = ocv_create(SIZE / 4, SIZE / 4);
+        bench_row("draw: 20k Bresenham lines, small image", t_cg, "OpenCV LINE_8",
+                  bench_median(ocv_lines_job, &s, RUNS), note);
+        ocv_free(s.ocv);
+        printed = 1;
+#endif
+#ifdef HAVE_CAIRO
+        s.surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, SIZE / 4, SIZE / 4);
+        s.cr = cairo_create(s.surface);
+        cairo_set_source_rgb(s.cr, 0.98, 0.7, 0.16);
+        cairo_set_line_width(s.cr, 1.0);
+        cairo_set_antialias(s.cr, CAIRO_ANTIALIAS_NONE);
+        bench_row("draw: 20k Bresenham lines, small image", t_cg, "Cairo no-AA",
+                  bench_median(cairo_lines_job, &s, RUNS), note);
+        cairo_destroy(s.cr);
+        cairo_surface_destroy(s.surface);
+        printed = 1;
+#endif
+        if (!printed)
+            bench_row("draw: 20k Bresenham lines, small image", t_cg, "-", 0, note);
+        cg_image_free(small);
+    }
     const char *circle_names[3] = {"draw: 2k Bresenham circles r 1-300", "draw: 2k anti-aliased circles r 1-300",
                                    "draw: 2k filled discs r 1-300"};
     for (int mode = 0; mode < 3; mode++) {
@@ -253,5 +299,55 @@ int main(void)
     cairo_surface_destroy(j.surface);
 #endif
     cg_image_free(image);
+    return 0;
+}
+
+static int only(const char *what, job *j)
+{
+    j->n = LINES;
+    j->ints = lines;
+    j->doubles = aa_lines;
+    if (strcmp(what, "cg-lines") == 0)
+        cg_lines(j);
+    else if (strcmp(what, "cg-aalines") == 0)
+        cg_lines_aa(j);
+#ifdef HAVE_OPENCV
+    else if (strcmp(what, "ocv-lines") == 0)
+        ocv_lines_job(j);
+    else if (strcmp(what, "ocv-aalines") == 0) {
+        j->ints = fixed_lines;
+        ocv_lines_aa_job(j);
+    }
+#endif
+#ifdef HAVE_CAIRO
+    else if (strcmp(what, "cairo-lines") == 0) {
+        cairo_set_antialias(j->cr, CAIRO_ANTIALIAS_NONE);
+        cairo_lines_job(j);
+    } else if (strcmp(what, "cairo-aalines") == 0) {
+        j->ints = NULL;
+        cairo_lines_job(j);
+    }
+#endif
+    else {
+        j->ints = circles;
+        j->n = CIRCLES;
+        j->mode = 0;
+        if (strcmp(what, "cg-circles") == 0)
+            cg_circles(j);
+#ifdef HAVE_OPENCV
+        else if (strcmp(what, "ocv-circles") == 0)
+            ocv_circles_job(j);
+#endif
+#ifdef HAVE_CAIRO
+        else if (strcmp(what, "cairo-circles") == 0) {
+            cairo_set_antialias(j->cr, CAIRO_ANTIALIAS_NONE);
+            cairo_circles_job(j);
+        }
+#endif
+        else {
+            fprintf(stderr, "bench_draw: unknown job '%s'\n", what);
+            return 2;
+        }
+    }
     return 0;
 }

@@ -316,7 +316,7 @@ static void double_api(void)
 static void fuzz(void)
 {
     check_rng rng = {0x5eed1234abcdULL};
-    const int rounds = 1500;
+    const int rounds = 1000;
     long membership_checks = 0;
     for (int it = 0; it < rounds; it++) {
         int grid = it % 3 == 0 ? 4 : it % 3 == 1 ? 8 : 50;
@@ -398,7 +398,7 @@ static void stress(void)
 static void snapping(void)
 {
     check_rng rng = {4242};
-    for (int it = 0; it < 3000; it++) {
+    for (int it = 0; it < 2000; it++) {
         cg_polygon_set64 a = {0}, b = {0}, r = {0};
         int grid = (int)check_rng_int(&rng, 2, 7);
         random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 30), grid, 1);

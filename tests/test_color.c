@@ -92,6 +92,23 @@ static void test_srgb(void)
     cg_srgb8_encode(lin, again, 256);
     CHECK(memcmp(codes, again, 256) == 0);
     CHECK(lin[128] == cg_srgb8_to_linear(128));
+    /* A large buffer (the streaming path), misaligned by one float. */
+    size_t big = ((size_t)4 << 20) + 37;
+    uint8_t *bytes = malloc(big), *back = malloc(big);
+    float *floats = malloc((big + 1) * sizeof *floats);
+    if (bytes && back && floats) {
+        for (size_t i = 0; i < big; i++)
+            bytes[i] = (uint8_t)(i * 2654435761u >> 13);
+        cg_srgb8_decode(bytes, floats + 1, big);
+        cg_srgb8_encode(floats + 1, back, big);
+        size_t wrong = 0;
+        for (size_t i = 0; i < big; i++)
+            wrong += floats[i + 1] != cg_srgb8_to_linear(bytes[i]) || back[i] != bytes[i];
+        CHECK_EQ_INT(wrong, 0);
+    }
+    free(bytes);
+    free(back);
+    free(floats);
 
     /* CRT power law. */
     CHECK_NEAR(cg_gamma_decode(0.5, 2.2), pow(0.5, 2.2), 1e-15);

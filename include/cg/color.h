@@ -177,7 +177,8 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *bytes, double *val
  * except on exact ties (k + 1/2), where double rounding may pick either
  * neighbour; Lab is within 1 unit of the double conversion (99.9 % equal).
  * CMYK is not available here (4 components).  in and out may be the same
- * buffer.  CG_EINVAL for CMYK, an unknown model or channels not 3 or 4. */
+ * buffer, but must not overlap otherwise.  CG_EINVAL for CMYK, an unknown
+ * model or channels not 3 or 4. */
 cg_status cg_rgb8_to_model8(cg_color_model model, const uint8_t *in, uint8_t *out, size_t n,
                             int channels);
 cg_status cg_model8_to_rgb8(cg_color_model model, const uint8_t *in, uint8_t *out, size_t n,

@@ -13,6 +13,7 @@
 #include "cg/image.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
+#include "cg/render.h"
 #include "cg/xform.h"
 
 #ifdef __cplusplus
@@ -143,6 +144,15 @@ cg_status cg_scene_render(const cg_scene *scene, cg_image **out, cg_error *err);
 /* The same with another algorithm than the scene's. */
 cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorithm,
                                cg_image **out, cg_error *err);
+
+/* The pieces the rasterizer gets, for programs that render a scene many
+ * times (the viewer): every object as one world-space mesh with per-face
+ * colours from the materials (spheres and boxes tessellated, planes as a
+ * large square around the scene), and the renderer options for the scene's
+ * camera, lights and settings with the given algorithm (zbuffer or painter). */
+cg_status cg_scene_world_mesh(const cg_scene *scene, cg_mesh **out, cg_error *err);
+cg_status cg_scene_raster_options(const cg_scene *scene, cg_scene_algorithm algorithm,
+                                  cg_render_options *options, cg_error *err);
 
 #ifdef __cplusplus
 }

@@ -74,6 +74,7 @@ typedef struct engine {
     size_t np, capp;
     cg_clip_op op;
     cg_clip_fill fill[2];
+    unsigned char table[4]; /* in the result, by (in subject, in clip) */
 } engine;
 
 static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
@@ -163,6 +164,107 @@ static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
     return (i128)*x * d == n;
 }
 
+/* ---- sorting ------------------------------------------------------------ */
+
+typedef struct keyval { uint64_t key; uint32_t val; } keyval;
+
+/* Stable LSD radix sort of a[0..n) by key (6- or 11-bit digits, only as
+ * many passes as the largest key needs). */
+static int radix_sort(keyval *a, size_t n)
+{
+    if (n < 2)
+        return 1;
+    uint64_t all = 0;
+    for (size_t i = 0; i < n; i++)
+        all |= a[i].key;
+    if (n <= 48) { /* few keys: straight insertion (stable) */
+        for (size_t i = 1; i < n; i++) {
+            keyval v = a[i];
+            size_t j = i;
+            for (; j > 0 && a[j - 1].key > v.key; j--)
+                a[j] = a[j - 1];
+            a[j] = v;
+        }
+        return 1;
+    }
+    keyval *t = malloc(n * sizeof *t), *src = a, *dst = t;
+    if (!t)
+        return 0;
+    /* small inputs: small digit tables */
+    const int bits = n < 2048 ? 6 : 11;
+    for (int shift = 0; shift < 64 && (all >> shift); shift += bits) {
+        size_t count[1 << 11];
+        memset(count, 0, ((size_t)1 << bits) * sizeof count[0]);
+        for (size_t i = 0; i < n; i++)
+            count[(src[i].key >> shift) & ((1u << bits) - 1)]++;
+        if (count[(src[0].key >> shift) & ((1u << bits) - 1)] == n)
+            continue; /* every key has this digit */
+        size_t sum = 0;
+        for (size_t d = 0; d < (1u << bits); d++) {
+            size_t c = count[d];
+            count[d] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++)
+            dst[count[(src[i].key >> shift) & ((1u << bits) - 1)]++] = src[i];
+        keyval *x = src;
+        src = dst;
+        dst = x;
+    }
+    if (src != a)
+        memcpy(a, src, n * sizeof *a);
+    free(t);
+    return 1;
+}
+
+
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n.
+ * Both keys are packed into one when their ranges fit in 64 bits. */
+static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                         uint32_t *idx, keyval *scratch)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (i) * stride))
+    if (n == 0)
+        return 1;
+    int64_t lo1 = KEY(k1, 0), hi1 = lo1, lo2 = KEY(k2, 0), hi2 = lo2;
+    for (size_t i = 1; i < n; i++) {
+        int64_t a = KEY(k1, i), b = KEY(k2, i);
+        lo1 = a < lo1 ? a : lo1;
+        hi1 = a > hi1 ? a : hi1;
+        lo2 = b < lo2 ? b : lo2;
+        hi2 = b > hi2 ? b : hi2;
+    }
+    int bits2 = 0;
+    while (bits2 < 63 && ((uint64_t)(hi2 - lo2) >> bits2))
+        bits2++;
+    int bits1 = 0;
+    while (bits1 < 63 && ((uint64_t)(hi1 - lo1) >> bits1))
+        bits1++;
+    if (bits1 + bits2 <= 64) {
+        for (size_t i = 0; i < n; i++)
+            scratch[i] = (keyval){((uint64_t)(KEY(k1, i) - lo1) << bits2) |
+                                      (uint64_t)(KEY(k2, i) - lo2),
+                                  (uint32_t)i};
+        if (!radix_sort(scratch, n))
+            return 0;
+    } else {
+        for (size_t i = 0; i < n; i++)
+            scratch[i] = (keyval){(uint64_t)(KEY(k2, i) - lo2), (uint32_t)i};
+        if (!radix_sort(scratch, n))
+            return 0;
+        for (size_t i = 0; i < n; i++) {
+            uint32_t v = scratch[i].val;
+            scratch[i] = (keyval){(uint64_t)(KEY(k1, v) - lo1), v};
+        }
+        if (!radix_sort(scratch, n))
+            return 0;
+    }
+    for (size_t i = 0; i < n; i++)
+        idx[i] = scratch[i].val;
+    return 1;
+#undef KEY
+}
+
 /* ---- the sweep ------------------------------------------------------------ */
 
 typedef struct sweep {
@@ -179,48 +281,6 @@ typedef struct sweep {
     int classify, changed;
     int use_input_lines; /* round on the input edges (early passes) */
 } sweep;
-
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* merge sort of edge indices by (yb, xb) */
-static void sort_by_bottom(const bedge *E, uint32_t *idx, uint32_t *tmp, size_t n)
-{
-    if (n < 2)
-        return;
-    if (n < 16) {
-        for (size_t i = 1; i < n; i++) {
-            uint32_t v = idx[i];
-            size_t j = i;
-            while (j > 0 && (E[idx[j - 1]].yb > E[v].yb ||
-                             (E[idx[j - 1]].yb == E[v].yb && E[idx[j - 1]].xb > E[v].xb))) {
-                idx[j] = idx[j - 1];
-                j--;
-            }
-            idx[j] = v;
-        }
-        return;
-    }
-    size_t h = n / 2;
-    sort_by_bottom(E, idx, tmp, h);
-    sort_by_bottom(E, idx + h, tmp, n - h);
-    size_t i = 0, j = h, k = 0;
-    while (i < h && j < n) {
-        const bedge *a = &E[idx[i]], *b = &E[idx[j]];
-        if (b->yb < a->yb || (b->yb == a->yb && b->xb < a->xb))
-            tmp[k++] = idx[j++];
-        else
-            tmp[k++] = idx[i++];
-    }
-    while (i < h)
-        tmp[k++] = idx[i++];
-    while (j < n)
-        tmp[k++] = idx[j++];
-    memcpy(idx, tmp, n * sizeof *idx);
-}
 
 static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 {
@@ -278,7 +338,7 @@ static int line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1,
     return 1;
 }
 
-static int fill_in(cg_clip_fill f, int64_t w)
+static inline int fill_in(cg_clip_fill f, int64_t w)
 {
     switch (f) {
     case CG_CLIP_EVEN_ODD:
@@ -292,19 +352,9 @@ static int fill_in(cg_clip_fill f, int64_t w)
     }
 }
 
-static int inside(const engine *g, int64_t wa, int64_t wb)
+static inline int inside(const engine *g, int64_t wa, int64_t wb)
 {
-    int a = fill_in(g->fill[0], wa), b = fill_in(g->fill[1], wb);
-    switch (g->op) {
-    case CG_CLIP_INTERSECTION:
-        return a && b;
-    case CG_CLIP_UNION:
-        return a || b;
-    case CG_CLIP_DIFFERENCE:
-        return a && !b;
-    default:
-        return a != b;
-    }
+    return g->table[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
 }
 
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
@@ -382,8 +432,10 @@ static int run_sweep(sweep *s)
         int64_t yn = has_next ? s->ys[iy + 1] : y;
         uint32_t *below = s->act;
         size_t nb = s->nact;
-        for (size_t k = 0; k < nb; k++)
-            s->xc[below[k]] = x_at(&E[below[k]], y);
+        /* x at y of the edges of the last beam: computed there as its top */
+        double *swap = s->xc;
+        s->xc = s->xn;
+        s->xn = swap;
         /* above: passing edges in their order, then the new ones merged in */
         size_t na = 0;
         uint32_t *above = s->nxt;
@@ -406,8 +458,14 @@ static int run_sweep(sweep *s)
             while (m > 0) {
                 uint32_t u = above[m - 1];
                 int c = cmp_x(&E[u], &E[v], y, s->xc[u], s->xc[v]);
-                if (c == 0 && has_next)
-                    c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                if (c == 0) {
+                    /* they meet at y: an edge passing through needs a vertex
+                     * there (every pair adjacent at the end was compared) */
+                    if ((E[u].yb < y && !meet(s, u, y)) || (E[v].yb < y && !meet(s, v, y)))
+                        return 0;
+                    if (has_next)
+                        c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                }
                 if (c <= 0)
                     break;
                 above[m] = u;
@@ -415,25 +473,8 @@ static int run_sweep(sweep *s)
             }
             above[m] = v;
         }
-        /* edges meeting at y where one passes through: a vertex there */
-        for (size_t k = 0; k + 1 < nb; k++) {
-            uint32_t a = below[k], b = below[k + 1];
-            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
-                continue;
-            if (E[a].yt > y && !meet(s, a, y))
-                return 0;
-            if (E[b].yt > y && !meet(s, b, y))
-                return 0;
-        }
-        for (size_t k = 0; k + 1 < na; k++) {
-            uint32_t a = above[k], b = above[k + 1];
-            if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0)
-                continue;
-            if (E[a].yb < y && !meet(s, a, y))
-                return 0;
-            if (E[b].yb < y && !meet(s, b, y))
-                return 0;
-        }
+        /* (edges meeting at y were found by the sorts: at the top of the
+         * last beam and just above) */
         /* horizontal edges on this scanline */
         while (ih < nh && g->H[ih].y < y)
             ih++;
@@ -532,7 +573,10 @@ static int run_sweep(sweep *s)
             size_t m = k;
             while (m > 0) {
                 uint32_t u = above[m - 1];
-                if (cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]) <= 0)
+                int c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
+                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn)) || (E[v].yt > yn && !meet(s, v, yn))))
+                    return 0;
+                if (c <= 0)
                     break;
                 /* u and v cross strictly inside the beam: the crossing of
                  * the input edges they come from, rounded, when it lies in
@@ -647,25 +691,7 @@ static int apply_splits(engine *g)
     return 1;
 }
 
-static int cmp_hseg(const void *a, const void *b)
-{
-    const hseg *p = a, *q = b;
-    if (p->y != q->y)
-        return p->y < q->y ? -1 : 1;
-    return (p->x0 > q->x0) - (p->x0 < q->x0);
-}
-
 /* ---- assembly -------------------------------------------------------------- */
-
-static int cmp_piece_start(const void *a, const void *b)
-{
-    const piece *p = a, *q = b;
-    if (p->y0 != q->y0)
-        return p->y0 < q->y0 ? -1 : 1;
-    if (p->x0 != q->x0)
-        return p->x0 < q->x0 ? -1 : 1;
-    return 0;
-}
 
 /* Clockwise angle from direction r to direction o, as an order key:
  * returns <0 when o1 comes before o2 turning clockwise from r. */
@@ -691,6 +717,45 @@ static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
     return c < 0; /* b is clockwise of a */
 }
 
+typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
+static int cmp_area(const void *a, const void *b)
+{
+    const ring_by_area *x = a, *y = b;
+    if (x->area != y->area)
+        return x->area < y->area ? -1 : 1;
+    return (x->ring > y->ring) - (x->ring < y->ring);
+}
+
+typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
+static int cmp_hole_x(const void *a, const void *b)
+{
+    const hole_point *p = a, *q = b;
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    return (p->ring > q->ring) - (p->ring < q->ring);
+}
+static int cmp_hole_y(const void *a, const void *b)
+{
+    const hole_point *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->ring > q->ring) - (p->ring < q->ring);
+}
+
+/* first index of a (sorted by x, or by y) whose x (y) is >= v */
+static size_t first_at_least(const hole_point *a, size_t n, int64_t v, int by_y)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if ((by_y ? a[mid].y : a[mid].x) < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 typedef struct ringbuf {
     cg_point64 *pts;
     size_t n, cap;
@@ -702,7 +767,23 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     piece *P = g->P;
     if (np == 0)
         return 1;
-    qsort(P, np, sizeof *P, cmp_piece_start);
+    {
+        keyval *scratch = malloc(np * sizeof *scratch);
+        uint32_t *order = malloc(np * sizeof *order);
+        piece *sorted = malloc(np * sizeof *sorted);
+        int ok2 = scratch && order && sorted &&
+                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch);
+        if (ok2) {
+            for (size_t i = 0; i < np; i++)
+                sorted[i] = P[order[i]];
+            memcpy(P, sorted, np * sizeof *P);
+        }
+        free(scratch);
+        free(order);
+        free(sorted);
+        if (!ok2)
+            return 0;
+    }
     unsigned char *used = calloc(np, 1);
     /* rings collected first: points and ring boundaries */
     cg_polygon_set64 rings = {0};
@@ -805,45 +886,88 @@ static int assemble(engine *g, cg_polygon_set64 *result)
             if (s > 0)
                 order[nouter++] = r;
         }
-        /* outers by increasing area: the first that contains a hole is its parent */
-        for (size_t i = 1; i < nouter; i++) {
-            size_t v = order[i], j = i;
-            while (j > 0 && area[order[j - 1]] > area[v]) {
-                order[j] = order[j - 1];
-                j--;
-            }
-            order[j] = v;
-        }
-        for (size_t r = 0; r < nr; r++) {
-            if (area[r] > 0)
-                continue;
-            /* twice the midpoint of the hole's first edge: on no other ring */
-            size_t a = rings.ring_start[r];
-            cg_point64 p = rings.points[a], q = rings.points[a + 1];
-            i128 mx = (i128)p.x + q.x, my = (i128)p.y + q.y;
-            for (size_t oi = 0; oi < nouter; oi++) {
-                size_t o = order[oi];
-                if (mx < 2 * (i128)bb[o][0] || mx > 2 * (i128)bb[o][2] ||
-                    my < 2 * (i128)bb[o][1] || my > 2 * (i128)bb[o][3])
+        /* Each hole goes to the smallest outer containing the midpoint of its
+         * first edge (twice the midpoint: integers; on no other ring).  The
+         * outers are taken by increasing area; for each, the still unplaced
+         * holes within its box are tested together: the outer's edges are
+         * matched with the hole points sorted by y. */
+        int fail_nest = 0;
+        ring_by_area *ra = malloc((nouter ? nouter : 1) * sizeof *ra);
+        size_t nholes = nr - nouter;
+        hole_point *hp = malloc((nholes ? nholes : 1) * sizeof *hp);
+        hole_point *cand = malloc((nholes ? nholes : 1) * sizeof *cand);
+        if (!ra || !hp || !cand) {
+            fail_nest = 1;
+        } else {
+            for (size_t i = 0; i < nouter; i++)
+                ra[i] = (ring_by_area){area[order[i]], order[i]};
+            qsort(ra, nouter, sizeof *ra, cmp_area);
+            size_t h = 0;
+            for (size_t r = 0; r < nr; r++) {
+                if (area[r] > 0)
                     continue;
-                size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
-                int in = 0;
-                for (size_t i = s0; i < s1; i++) {
-                    cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
-                    i128 uy = 2 * (i128)u.y, vy = 2 * (i128)v.y;
-                    if ((uy > my) != (vy > my)) {
-                        /* x of the edge at my compared with mx */
-                        i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
-                        i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
-                        if (vy > uy ? lhs < rhs : lhs > rhs)
-                            in = !in;
+                size_t a0 = rings.ring_start[r];
+                cg_point64 p = rings.points[a0], q = rings.points[a0 + 1];
+                hp[h++] = (hole_point){p.x + q.x, p.y + q.y, r, 0};
+            }
+            qsort(hp, nholes, sizeof *hp, cmp_hole_x);
+            size_t unplaced = nholes;
+            for (size_t oi = 0; oi < nouter && unplaced; oi++) {
+                size_t o = ra[oi].ring;
+                int64_t bx0 = 2 * bb[o][0], by0 = 2 * bb[o][1], bx1 = 2 * bb[o][2], by1 = 2 * bb[o][3];
+                /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
+                size_t lo = first_at_least(hp, nholes, bx0, 0);
+                size_t nc = 0;
+                for (size_t k = lo; k < nholes && hp[k].x <= bx1; k++)
+                    if (hp[k].parent == 0 && hp[k].y >= by0 && hp[k].y <= by1) {
+                        cand[nc] = hp[k];
+                        cand[nc].parent = k; /* index back into hp */
+                        nc++;
                     }
-                }
-                if (in) {
-                    parent[r] = o;
+                if (!nc)
+                    continue;
+                qsort(cand, nc, sizeof *cand, cmp_hole_y);
+                unsigned char *in = calloc(nc, 1);
+                if (!in) {
+                    fail_nest = 1;
                     break;
                 }
+                size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
+                for (size_t i = s0; i < s1; i++) {
+                    cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
+                    int64_t uy = 2 * u.y, vy = 2 * v.y;
+                    if (uy == vy)
+                        continue;
+                    int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
+                    /* candidates with ylo <= y < yhi */
+                    size_t l = first_at_least(cand, nc, ylo, 1);
+                    i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
+                    for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
+                        i128 mx = cand[k].x, my = cand[k].y;
+                        i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
+                        if (vy > uy ? lhs < rhs : lhs > rhs)
+                            in[k] = !in[k];
+                    }
+                }
+                for (size_t k = 0; k < nc; k++)
+                    if (in[k]) {
+                        hole_point *hpk = &hp[cand[k].parent];
+                        hpk->parent = o + 1;
+                        parent[hpk->ring] = o;
+                        unplaced--;
+                    }
+                free(in);
             }
+        }
+        free(ra);
+        free(hp);
+        free(cand);
+        if (fail_nest) {
+            free(area);
+            free(bb);
+            free(parent);
+            free(order);
+            goto fail;
         }
         /* output: each outer followed by its holes (a hole without an outer
          * cannot happen; it would be dropped) */
@@ -943,14 +1067,41 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             s.ys[2 * i + 1] = g->E[i].yt;
             s.by_bottom[i] = (uint32_t)i;
         }
-        qsort(s.ys, 2 * ne, sizeof *s.ys, cmp_i64);
-        size_t u = 0;
+        size_t nscratch = 2 * n1 > g->nh ? 2 * n1 : g->nh;
+        keyval *scratch = malloc(nscratch * sizeof *scratch);
+        if (!scratch)
+            break;
+        int64_t ymin = INT64_MAX;
         for (size_t i = 0; i < 2 * ne; i++)
-            if (u == 0 || s.ys[u - 1] != s.ys[i])
-                s.ys[u++] = s.ys[i];
+            ymin = s.ys[i] < ymin ? s.ys[i] : ymin;
+        for (size_t i = 0; i < 2 * ne; i++)
+            scratch[i] = (keyval){(uint64_t)(s.ys[i] - ymin), 0};
+        int sorted = radix_sort(scratch, 2 * ne);
+        size_t u = 0;
+        for (size_t i = 0; sorted && i < 2 * ne; i++) {
+            int64_t y = (int64_t)scratch[i].key + ymin;
+            if (u == 0 || s.ys[u - 1] != y)
+                s.ys[u++] = y;
+        }
         s.nys = u;
-        sort_by_bottom(g->E, s.by_bottom, s.act, ne);
-        qsort(g->H, g->nh, sizeof *g->H, cmp_hseg);
+        if (sorted && ne)
+            sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s.by_bottom, scratch);
+        if (sorted && g->nh > 1) {
+            hseg *h2 = malloc(g->nh * sizeof *h2);
+            uint32_t *order = malloc(g->nh * sizeof *order);
+            sorted = h2 && order &&
+                     sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, order, scratch);
+            if (sorted) {
+                for (size_t i = 0; i < g->nh; i++)
+                    h2[i] = g->H[order[i]];
+                memcpy(g->H, h2, g->nh * sizeof *h2);
+            }
+            free(h2);
+            free(order);
+        }
+        free(scratch);
+        if (!sorted)
+            break;
         g->np = 0;
         s.classify = 1;
         s.changed = 0;
@@ -1028,6 +1179,12 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
     g.op = op;
     g.fill[0] = subject_fill;
     g.fill[1] = clip_fill;
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++)
+            g.table[a * 2 + b] = (unsigned char)(op == CG_CLIP_INTERSECTION ? a && b
+                                                 : op == CG_CLIP_UNION      ? a || b
+                                                 : op == CG_CLIP_DIFFERENCE ? a && !b
+                                                                            : a != b);
     cg_status st = load(&g, subject, 0);
     if (st == CG_OK)
         st = load(&g, clip, 1);

@@ -1,5 +1,6 @@
 /* Colour models on 8-bit pixels: the byte encodings of each model, and whole
- * buffers with integer / table fast paths for HSV, HSL and L*a*b*. */
+ * buffers, with SIMD-friendly exact kernels for HSV and HSL and a fast
+ * L*a*b* kernel. */
 /* Floating-point selects in the kernels below must become blends: allow it
  * (no code here relies on floating-point traps). */
 #if defined(__GNUC__) && !defined(__clang__)
@@ -9,7 +10,6 @@
 #include "cg/color.h"
 #include "internal.h"
 #include "srgb_tables.h"
-#include "tables.h"
 
 #include <string.h>
 
@@ -119,50 +119,23 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *b, double *v)
     }
 }
 
-/* ---- exact integer division by small divisors ------------------------------
- * floor(n / d) == (n * ceil(2^32 / d)) >> 32 whenever n d < 2^32: the error
- * n (ceil(2^32/d) - 2^32/d) / 2^32 < n / 2^32 stays below 1/d, the smallest
- * gap between n/d and the next integer.  Here n < 2^20 and d <= 3060. */
-static inline uint32_t divide(uint32_t n, uint32_t d)
-{
-    return (uint32_t)(((uint64_t)n * cg_color_reciprocal[d]) >> 32);
-}
-
-/* Hue byte: round(256 h / 360) mod 256 with h / 60 = sector + x / delta:
- * round((512 t + 6 delta) / (12 delta)) with t = sector delta + x in
- * [0, 6 delta) (x < 0 in sector 0 wraps by 6 delta). */
-static inline uint8_t hue8(int r, int g, int b, int max, int delta)
-{
-    int s;
-    if (max == r) {
-        s = g - b;
-        if (s < 0)
-            s += 6 * delta;
-    } else if (max == g) {
-        s = 2 * delta + b - r;
-    } else {
-        s = 4 * delta + r - g;
-    }
-    uint32_t q = divide((uint32_t)(512 * s + 6 * delta), (uint32_t)(12 * delta));
-    return (uint8_t)q; /* 256 wraps to 0 */
-}
-
-/* ---- vectorizable HSV kernels ------------------------------------------------
- * The same exact rational formulas in float on planar blocks, so that the
- * compiler can use SIMD (with a run-time choice of AVX2 where available).
- * Every numerator is an integer below 2^24, hence exact in float, and a
+/* ---- vectorizable HSV / HSL kernels ------------------------------------------
+ * The exact rational formulas of the byte encodings, e.g. H8 =
+ * floor((512 t + 6 delta) / (12 delta)) with t the hue numerator in units of
+ * delta, S8 = floor((510 delta + max) / (2 max)), in float on planar blocks,
+ * so that the compiler can use SIMD (with a run-time choice of AVX2 where
+ * available).  Every numerator is an integer below 2^24, hence exact in float, and a
  * correctly rounded float quotient never crosses the integer above the true
  * quotient (the gap, at least 1/d, exceeds half an ulp of the result), so
  * truncation gives the exact floor. */
 #define BLOCK 512
 
 /* Each kernel reads m pixels of CH bytes from in and writes them to out
- * (never the same memory: callers copy a block first); alpha is copied. */
-/* Deinterleaving to planar bytes first lets the arithmetic loop load
+ * (never the same memory: callers copy a block first); alpha is copied.
+ * Deinterleaving to planar bytes first lets the arithmetic loop load
  * contiguous vectors. */
-#define HSV_FORWARD(CH)                                                              \
-    CG_SIMD_CLONES static void hsv_forward_##CH(const uint8_t *restrict in,          \
-                                                 uint8_t *restrict out, int m)        \
+#define HSV_FORWARD(NAME, ATTR, CH, HSL)                                             \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
     {                                                                                \
         uint8_t pr[BLOCK], pg[BLOCK], pb[BLOCK], ph[BLOCK], ps[BLOCK];               \
         for (int i = 0; i < m; i++) {                                                \
@@ -181,10 +154,14 @@ static inline uint8_t hue8(int r, int g, int b, int max, int delta)
             t = t < 0 ? t + 6 * d : t;                                               \
             float dd = d > 0 ? d : 1;                                                \
             int h = (int)((512 * t + 6 * dd) / (12 * dd));                           \
-            float mm = mx > 0 ? mx : 1;                                              \
+            /* saturation denominator: max (HSV); max + min or 510 - max - min  \
+             * (HSL, by the lightness) */                                           \
+            float sum = mx + mn;                                                     \
+            float den = HSL ? (sum <= 255 ? sum : 510 - sum) : mx;                   \
+            den = den > 0 ? den : 1;                                                 \
             ph[i] = (uint8_t)h; /* 256 wraps to 0 */                                 \
-            ps[i] = (uint8_t)(int)((510 * d + mx) / (2 * mm));                       \
-            pb[i] = (uint8_t)(int)mx;                                                \
+            ps[i] = (uint8_t)(int)((510 * d + den) / (2 * den));                     \
+            pb[i] = (uint8_t)(int)(HSL ? (sum + 1) * 0.5f : mx);                     \
         }                                                                            \
         for (int i = 0; i < m; i++) {                                                \
             out[CH * i] = ph[i];                                                     \
@@ -196,8 +173,7 @@ static inline uint8_t hue8(int r, int g, int b, int max, int delta)
     }
 
 /* (H8, S8, V8) -> RGB: round(255 x) of the double formula with h / 60 =
- * 6 H / 256, as exact integer quotients. */
-/* One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
+ * 6 H / 256, as exact integer quotients.  One channel of HSV -> RGB as x = V - V S w(k), k = (n + h / 60) mod 6,
  * w = clamp(min(k, 4 - k), 0, 1) (n = 5, 3, 1 for R, G, B), all in units of
  * 1/256 of a sector: round(v (65280 - s W) / 65280) with W = 256 w, that is
  * floor(X / 65280) with X = v (65280 - s W) + 32640 < 2^24.  As 65280 =
@@ -215,9 +191,8 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
     return (u + 1 + (u >> 8)) >> 8;
 }
 
-#define HSV_INVERSE(CH)                                                              \
-    CG_SIMD_CLONES static void hsv_inverse_##CH(const uint8_t *restrict in,          \
-                                                 uint8_t *restrict out, int m)        \
+#define HSV_INVERSE(NAME, ATTR, CH)                                                  \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
     {                                                                                \
         uint8_t ph[BLOCK], ps[BLOCK], pv[BLOCK], pr[BLOCK], pg[BLOCK], pb[BLOCK];    \
         for (int i = 0; i < m; i++) {                                                \
@@ -240,10 +215,12 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
         }                                                                            \
     }
 
-HSV_FORWARD(3)
-HSV_FORWARD(4)
-HSV_INVERSE(3)
-HSV_INVERSE(4)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsv_forward_3, 3, 0)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsv_forward_4, 4, 0)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsl_forward_3, 3, 1)
+CG_SIMD_VARIANTS(HSV_FORWARD, hsl_forward_4, 4, 1)
+CG_SIMD_VARIANTS(HSV_INVERSE, hsv_inverse_3, 3)
+CG_SIMD_VARIANTS(HSV_INVERSE, hsv_inverse_4, 4)
 
 typedef void (*block_kernel)(const uint8_t *restrict, uint8_t *restrict, int);
 
@@ -270,38 +247,20 @@ static void run_blocks(const uint8_t *in, uint8_t *out, size_t n, int ch, block_
 
 static void rgb8_to_hsv8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? hsv_forward_4 : hsv_forward_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_forward_4, hsv_forward_4_avx2, hsv_forward_4_avx512)
+                                   : CG_SIMD_PICK(hsv_forward_3, hsv_forward_3_avx2, hsv_forward_3_avx512));
 }
 
 static void rgb8_to_hsl8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    for (size_t i = 0; i < n; i++, in += ch, out += ch) {
-        int r = in[0], g = in[1], b = in[2];
-        int max = r > g ? r : g, min = r < g ? r : g;
-        if (b > max)
-            max = b;
-        if (b < min)
-            min = b;
-        int delta = max - min, sum = max + min;
-        uint8_t a = ch == 4 ? in[3] : 0;
-        if (delta == 0) {
-            out[0] = 0;
-            out[1] = 0;
-        } else {
-            out[0] = hue8(r, g, b, max, delta);
-            int d = sum <= 255 ? sum : 510 - sum;
-            uint32_t s = divide((uint32_t)(510 * delta + d), (uint32_t)(2 * d));
-            out[1] = (uint8_t)(s > 255 ? 255 : s);
-        }
-        out[2] = (uint8_t)((sum + 1) >> 1);
-        if (ch == 4)
-            out[3] = a;
-    }
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsl_forward_4, hsl_forward_4_avx2, hsl_forward_4_avx512)
+                                   : CG_SIMD_PICK(hsl_forward_3, hsl_forward_3_avx2, hsl_forward_3_avx512));
 }
 
 static void hsv8_to_rgb8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? hsv_inverse_4 : hsv_inverse_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_inverse_4, hsv_inverse_4_avx2, hsv_inverse_4_avx512)
+                                   : CG_SIMD_PICK(hsv_inverse_3, hsv_inverse_3_avx2, hsv_inverse_3_avx512));
 }
 
 /* ---- L*a*b* ---------------------------------------------------------------- */
@@ -337,9 +296,8 @@ static inline float clamp_byte(float v)
 
 /* Decoding goes to planar arrays first (table lookups), then the
  * arithmetic runs on contiguous floats, which vectorizes. */
-#define LAB_FORWARD(CH)                                                                \
-    CG_SIMD_CLONES static void lab_forward_##CH(const uint8_t *restrict in,            \
-                                                 uint8_t *restrict out, int m)          \
+#define LAB_FORWARD(NAME, ATTR, CH)                                                    \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)    \
     {                                                                                  \
         const float *dec = cg_srgb_decode_table;                                       \
         float lr[BLOCK], lg[BLOCK], lb[BLOCK];                                         \
@@ -371,12 +329,13 @@ static inline float clamp_byte(float v)
 #define LAB_MZ1 ((float)(0.1192 / CG_COLOR_WHITE_Z))
 #define LAB_MZ2 ((float)(0.9505 / CG_COLOR_WHITE_Z))
 
-LAB_FORWARD(3)
-LAB_FORWARD(4)
+CG_SIMD_VARIANTS(LAB_FORWARD, lab_forward_3, 3)
+CG_SIMD_VARIANTS(LAB_FORWARD, lab_forward_4, 4)
 
 static void rgb8_to_lab8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? lab_forward_4 : lab_forward_3);
+    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(lab_forward_4, lab_forward_4_avx2, lab_forward_4_avx512)
+                                   : CG_SIMD_PICK(lab_forward_3, lab_forward_3_avx2, lab_forward_3_avx512));
 }
 
 /* ---- generic paths through double ----------------------------------------- */

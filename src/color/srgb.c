@@ -1,11 +1,10 @@
 /* sRGB transfer curves. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("no-trapping-math") /* let selects become blends */
-#endif
-
 #include "cg/color.h"
-#include "internal.h"
 #include "srgb_tables.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 double cg_srgb_to_linear(double encoded)
 {
@@ -48,16 +47,32 @@ uint8_t cg_linear_to_srgb8(float linear)
     return encode_one(linear);
 }
 
+/* Outputs larger than this many floats (16 MiB) are written with streaming
+ * stores where available: they bypass the caches, which the result would
+ * not fit anyway, and save reading every destination line first. */
+#define STREAM_THRESHOLD ((size_t)4 << 20)
+
 void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
 {
-    for (size_t i = 0; i < n; i++)
-        out[i] = cg_srgb_decode_table[in[i]];
+    const float *t = cg_srgb_decode_table;
+    size_t i = 0;
+#if defined(__SSE2__)
+    if (n >= STREAM_THRESHOLD) {
+        for (; i < n && ((uintptr_t)(out + i) & 15) != 0; i++)
+            out[i] = t[in[i]];
+        for (; i + 4 <= n; i += 4)
+            _mm_stream_ps(out + i, _mm_setr_ps(t[in[i]], t[in[i + 1]], t[in[i + 2]], t[in[i + 3]]));
+        _mm_sfence();
+    }
+#endif
+    for (; i < n; i++)
+        out[i] = t[in[i]];
 }
 
-/* The same as encode_one without branches, for SIMD: at most one threshold
+/* The same as encode_one without branches: at most one threshold
  * lies in a bucket (checked when the table was made), so one comparison
  * settles the code. */
-CG_SIMD_CLONES static void encode_block(const float *restrict in, uint8_t *restrict out, size_t n)
+void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         float x = in[i];
@@ -68,11 +83,6 @@ CG_SIMD_CLONES static void encode_block(const float *restrict in, uint8_t *restr
         code += x >= cg_srgb_threshold_table[index]; /* at 255 this gives 256 */
         out[i] = (uint8_t)(code < 255 ? code : 255);
     }
-}
-
-void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
-{
-    encode_block(in, out, n);
 }
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)

@@ -58,6 +58,7 @@ typedef cg_pixel_fn pixel_fn;
 typedef struct circle_walk {
     long long cx, cy, r, last; /* last: octant_end(r) */
     long long width, height;
+    const cg_painter *fast; /* an opaque RGBA8 painter: plot directly */
 } circle_walk;
 
 /* Columns x in [lo, hi] of the octant with row(x) in [ylo, yhi] (row is
@@ -113,6 +114,34 @@ static void walk_mirror(const circle_walk *w, mirror m, pixel_fn plot, void *con
     long long x = lo, y = octant_row(w->r, x);
     long long f = (x + 1) * (x + 1) + y * y - y - w->r * w->r;
     long long de = 2 * x + 3, dse = 2 * x - 2 * y + 5;
+    if (w->fast) {
+        /* Opaque RGBA8: walk a pointer.  x + 1 moves the pixel by sa in x
+         * (or -sa in y when swapped); y - 1 by sb in y (or -sb in x). */
+        const cg_image *image = w->fast->image;
+        ptrdiff_t stride = (ptrdiff_t)image->stride;
+        long long px = m.swap ? w->cx + m.sb * y : w->cx + m.sa * x;
+        long long py = m.swap ? w->cy - m.sa * x : w->cy - m.sb * y;
+        ptrdiff_t step_x = m.swap ? -m.sa * stride : m.sa * 4;
+        ptrdiff_t step_y = m.swap ? -m.sb * 4 : m.sb * stride;
+        unsigned char *p = image->data + (ptrdiff_t)py * stride + (ptrdiff_t)px * 4;
+        uint32_t packed = w->fast->packed;
+        for (; x <= hi; x++) {
+            if (!(m.swap && x == y))
+                memcpy(p, &packed, 4);
+            p += step_x;
+            if (f < 0) {
+                f += de;
+                dse += 2;
+            } else {
+                f += dse;
+                dse += 4;
+                y--;
+                p += step_y;
+            }
+            de += 2;
+        }
+        return;
+    }
     for (; x <= hi; x++) {
         if (!(m.swap && x == y)) {
             if (m.swap)
@@ -133,14 +162,15 @@ static void walk_mirror(const circle_walk *w, mirror m, pixel_fn plot, void *con
     }
 }
 
-static void walk_circle(const cg_image *image, int cx, int cy, int r, pixel_fn plot, void *context)
+static void walk_circle(const cg_image *image, int cx, int cy, int r, pixel_fn plot, void *context,
+                        const cg_painter *fast)
 {
     if (r == 0) {
         if (cg_image_contains(image, cx, cy))
             plot(context, cx, cy);
         return;
     }
-    circle_walk w = {cx, cy, r, octant_end(r), image->width, image->height};
+    circle_walk w = {cx, cy, r, octant_end(r), image->width, image->height, fast};
     for (int i = 0; i < 8; i++)
         walk_mirror(&w, mirrors[i], plot, context);
 }
@@ -158,7 +188,7 @@ cg_status cg_draw_circle(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
     cg_painter_init(&painter, image, color);
     if ((long long)cx - r < 0 || (long long)cy - r < 0 || (long long)cx + r >= image->width
         || (long long)cy + r >= image->height) {
-        walk_circle(image, cx, cy, r, plot_painter, &painter);
+        walk_circle(image, cx, cy, r, plot_painter, &painter, painter.opaque ? &painter : NULL);
         return CG_OK;
     }
     /* Entirely inside: one walk, eight stores per column. */
@@ -283,6 +313,6 @@ cg_status cg_draw_arc(cg_image *image, int cx, int cy, int r, double start_deg, 
     a.painter = &painter;
     a.cx = cx;
     a.cy = cy;
-    walk_circle(image, cx, cy, r, cg_arc_plot, &a);
+    walk_circle(image, cx, cy, r, cg_arc_plot, &a, NULL);
     return CG_OK;
 }

@@ -32,17 +32,21 @@ void cg_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame)
     frame->dv = dv < 0 ? -dv : dv;
 }
 
-/* floor(a / b) and ceil(a / b) for b > 0. */
+/* floor(a / b) and ceil(a / b) for b > 0, in 64-bit arithmetic when both
+ * fit (the common case: 128-bit division is a slow library call). */
 static cg_wide floor_div(cg_wide a, cg_wide b)
 {
+    if (a >= INT64_MIN && a <= INT64_MAX && b <= INT64_MAX) {
+        long long x = (long long)a, y = (long long)b, q = x / y;
+        return (x % y != 0 && x < 0) ? q - 1 : q;
+    }
     cg_wide q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
 
 static cg_wide ceil_div(cg_wide a, cg_wide b)
 {
-    cg_wide q = a / b;
-    return (a % b != 0 && a > 0) ? q + 1 : q;
+    return -floor_div(-a, b);
 }
 
 void cg_draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
@@ -98,15 +102,13 @@ void cg_draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int
         long long x = l.x_major ? u : v, y = l.x_major ? v : u;
         unsigned char *p = image->data + (ptrdiff_t)y * stride + (ptrdiff_t)x * 4;
         uint32_t packed = painter->packed;
+        ptrdiff_t step_uv = step_u + step_v;
+        /* Branch-free: the E/NE choice of a random line is unpredictable. */
         for (long long i = 0; i <= n; i++) {
             memcpy(p, &packed, 4);
-            p += step_u;
-            if (f > 0) {
-                p += step_v;
-                f += dne;
-            } else {
-                f += de;
-            }
+            int diagonal = f > 0;
+            p += diagonal ? step_uv : step_u;
+            f += diagonal ? dne : de;
         }
         return;
     }

@@ -108,8 +108,10 @@ static void reverse_faces(cg_mesh *all, size_t first_face, size_t face_count)
     }
 }
 
-static cg_status build_world_mesh(const cg_scene *scene, cg_mesh **out, cg_error *err)
+cg_status cg_scene_world_mesh(const cg_scene *scene, cg_mesh **out, cg_error *err)
 {
+    if (!scene || !out)
+        return cg_error_set(err, CG_EINVAL, "scene: no scene or output given");
     cg_vec3 lo, hi;
     scene_bounds(scene, &lo, &hi);
     cg_vec3 center = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
@@ -197,26 +199,37 @@ static void renderer_lights(const cg_scene *scene, cg_render_options *o)
     o->shininess = m->shininess;
 }
 
+cg_status cg_scene_raster_options(const cg_scene *scene, cg_scene_algorithm algorithm,
+                                  cg_render_options *o, cg_error *err)
+{
+    if (!scene || !o)
+        return cg_error_set(err, CG_EINVAL, "scene: no scene or options given");
+    cg_render_options_default(o);
+    cg_status s = scene_view(scene, &o->camera, &o->model);
+    if (s != CG_OK)
+        return cg_error_set(err, s, "scene: the camera cannot see the scene (eye, target and up "
+                                    "must not be degenerate)");
+    o->frame_camera = 0;
+    o->algorithm = algorithm == CG_SCENE_PAINTER ? CG_RENDER_PAINTER : CG_RENDER_ZBUFFER;
+    o->shading = scene->shading == CG_SCENE_FLAT ? CG_SHADING_FLAT
+               : scene->shading == CG_SCENE_PHONG ? CG_SHADING_PHONG : CG_SHADING_GOURAUD;
+    o->cull = scene->cull_back ? CG_CULL_BACK : CG_CULL_NONE;
+    o->edges = (cg_edge_mode)scene->edges;
+    o->threads = scene->threads;
+    o->background = scene->background;
+    renderer_lights(scene, o);
+    return CG_OK;
+}
+
 cg_status scene_render_raster(const cg_scene *scene, cg_scene_algorithm algorithm, cg_image *image,
                               cg_error *err)
 {
     cg_render_options o;
-    cg_render_options_default(&o);
-    cg_status s = scene_view(scene, &o.camera, &o.model);
+    cg_status s = cg_scene_raster_options(scene, algorithm, &o, err);
     if (s != CG_OK)
-        return cg_error_set(err, s, "scene: the camera cannot see the scene (eye, target and up "
-                                    "must not be degenerate)");
-    o.frame_camera = 0;
-    o.algorithm = algorithm == CG_SCENE_PAINTER ? CG_RENDER_PAINTER : CG_RENDER_ZBUFFER;
-    o.shading = scene->shading == CG_SCENE_FLAT ? CG_SHADING_FLAT
-              : scene->shading == CG_SCENE_PHONG ? CG_SHADING_PHONG : CG_SHADING_GOURAUD;
-    o.cull = scene->cull_back ? CG_CULL_BACK : CG_CULL_NONE;
-    o.edges = (cg_edge_mode)scene->edges;
-    o.threads = scene->threads;
-    o.background = scene->background;
-    renderer_lights(scene, &o);
+        return s;
     cg_mesh *world = NULL;
-    if ((s = build_world_mesh(scene, &world, err)) != CG_OK)
+    if ((s = cg_scene_world_mesh(scene, &world, err)) != CG_OK)
         return s;
     s = cg_render(world, &o, image, err);
     cg_mesh_free(world);

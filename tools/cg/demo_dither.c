@@ -59,7 +59,7 @@ done:
 
 static int halftone(demo_context *context)
 {
-    enum { W = 85, H = 12, CELL = 3, SCALE = 2 };
+    enum { W = 56, H = 10, CELL = 3, SCALE = 3 };
     float plane[W * H];
     uint8_t cells[W * CELL * H * CELL];
     for (int y = 0; y < H; y++)
@@ -76,7 +76,7 @@ static int halftone(demo_context *context)
             cg_image_set_rgba8(image, x, y, (cg_rgba8){g, g, g, 255});
         }
     return add(context, "halftone-3x3.png", image,
-               "Halftoning with 3x3 cells (10 intensity levels from two), pixels doubled",
+               "Halftoning with 3x3 cells (10 intensity levels from two) on a ramp, each pixel drawn 3x3",
                "cg demo --only 'Intensity to pixel'");
 }
 

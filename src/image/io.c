@@ -1,12 +1,12 @@
 /* Reading and writing image files: format detection and safe replacement. */
 #include "internal.h"
+#include "../core/safe_file.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <unistd.h>
 
 cg_status byte_buffer_append(byte_buffer *buffer, const void *bytes, size_t size)
 {
@@ -115,36 +115,13 @@ cg_status cg_image_read(const char *path, cg_image **out, cg_error *err)
 /* Writes bytes to a temporary file beside path, then renames it over path. */
 static cg_status replace_file(const char *path, const byte_buffer *contents, cg_error *err)
 {
-    size_t length = strlen(path);
-    char *temporary = malloc(length + 16);
-    if (!temporary)
-        return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
-    memcpy(temporary, path, length);
-    memcpy(temporary + length, ".tmp-XXXXXX", 12);
-    int fd = mkstemp(temporary);
-    if (fd < 0) {
-        cg_status s = cg_error_set(err, CG_EIO, "%s: cannot create a temporary file: %s", path,
-                                   strerror(errno));
-        free(temporary);
-        return s;
-    }
-    FILE *file = fdopen(fd, "wb");
-    int ok = file != NULL;
-    if (ok)
-        ok = fwrite(contents->bytes, 1, contents->size, file) == contents->size;
-    if (file)
-        ok = (fclose(file) == 0) && ok;
-    else
-        close(fd);
-    if (ok)
-        ok = rename(temporary, path) == 0;
-    cg_status status = CG_OK;
-    if (!ok) {
+    safe_file o;
+    cg_status status = safe_file_open(&o, path, err);
+    if (status != CG_OK)
+        return status;
+    if (fwrite(contents->bytes, 1, contents->size, o.file) != contents->size)
         status = cg_error_set(err, CG_EIO, "%s: cannot write: %s", path, strerror(errno));
-        remove(temporary);
-    }
-    free(temporary);
-    return status;
+    return safe_file_close(&o, status, err);
 }
 
 cg_status cg_image_write(const cg_image *image, const char *path, cg_file_format format,

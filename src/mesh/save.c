@@ -1,91 +1,14 @@
 /* Mesh writers: OBJ (with an MTL library for face colours) and PLY (ASCII
  * or binary little-endian).  Each file is streamed to a temporary file
- * beside its destination and renamed over it only when complete. */
+ * beside its destination and renamed over it only when complete
+ * (src/core/safe_file.c). */
 #include "internal.h"
+#include "../core/safe_file.h"
 
 #include "cg/color.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-typedef struct out_file {
-    FILE *file;
-    char *temporary;
-    const char *path;
-} out_file;
-
-/* The permissions a new file gets: an existing file's own, otherwise
- * 0666 less the process umask (read from /proc, since umask() cannot be read
- * without changing it), or 0644 where /proc is not there. */
-static mode_t new_file_mode(const char *path)
-{
-    struct stat st;
-    if (stat(path, &st) == 0)
-        return st.st_mode & 07777;
-    mode_t mode = 0644;
-    FILE *status = fopen("/proc/self/status", "r");
-    if (status) {
-        char line[128];
-        unsigned mask;
-        while (fgets(line, sizeof line, status))
-            if (sscanf(line, "Umask: %o", &mask) == 1) {
-                mode = 0666 & ~(mode_t)mask;
-                break;
-            }
-        fclose(status);
-    }
-    return mode;
-}
-
-static cg_status out_open(out_file *o, const char *path, cg_error *err)
-{
-    size_t length = strlen(path);
-    o->path = path;
-    o->file = NULL;
-    o->temporary = malloc(length + 16);
-    if (!o->temporary)
-        return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
-    memcpy(o->temporary, path, length);
-    memcpy(o->temporary + length, ".tmp-XXXXXX", 12);
-    int fd = mkstemp(o->temporary);
-    if (fd >= 0)
-        (void)fchmod(fd, new_file_mode(path)); /* mkstemp gives 0600 */
-    if (fd >= 0 && !(o->file = fdopen(fd, "wb")))
-        close(fd);
-    if (!o->file) {
-        cg_status s = cg_error_set(err, CG_EIO, "%s: cannot create a temporary file: %s", path,
-                                   strerror(errno));
-        if (fd >= 0)
-            remove(o->temporary);
-        free(o->temporary);
-        o->temporary = NULL;
-        return s;
-    }
-    setvbuf(o->file, NULL, _IOFBF, 1 << 16);
-    return CG_OK;
-}
-
-/* Closes the file; renames it into place when ok, removes it otherwise. */
-static cg_status out_close(out_file *o, cg_status status, cg_error *err)
-{
-    if (!o->temporary)
-        return status;
-    int ok = status == CG_OK && !ferror(o->file);
-    ok = fclose(o->file) == 0 && ok;
-    if (ok)
-        ok = rename(o->temporary, o->path) == 0;
-    if (!ok) {
-        if (status == CG_OK)
-            status = cg_error_set(err, CG_EIO, "%s: cannot write: %s", o->path, strerror(errno));
-        remove(o->temporary);
-    }
-    free(o->temporary);
-    o->temporary = NULL;
-    return status;
-}
 
 /* Shortest of %.15g / %.17g that reads back as exactly v. */
 static int format_double(char *buffer, double v)
@@ -181,8 +104,8 @@ static char *library_path(const char *path)
 
 static cg_status write_library(const char *path, const color_table *t, cg_error *err)
 {
-    out_file o;
-    cg_status s = out_open(&o, path, err);
+    safe_file o;
+    cg_status s = safe_file_open(&o, path, err);
     if (s != CG_OK)
         return s;
     fputs("# material library written by cg: one diffuse colour per material\n", o.file);
@@ -193,7 +116,7 @@ static cg_status write_library(const char *path, const color_table *t, cg_error 
         put_numbers(o.file, "Kd", kd, 3);
         put_numbers(o.file, "d", &d, 1);
     }
-    return out_close(&o, CG_OK, err);
+    return safe_file_close(&o, CG_OK, err);
 }
 
 static cg_status save_obj(const cg_mesh *m, const char *path, cg_error *err)
@@ -214,9 +137,9 @@ static cg_status save_obj(const cg_mesh *m, const char *path, cg_error *err)
         if (s == CG_OK)
             s = write_library(library, &colors, err);
     }
-    out_file o;
+    safe_file o;
     if (s == CG_OK)
-        s = out_open(&o, path, err);
+        s = safe_file_open(&o, path, err);
     if (s == CG_OK) {
         FILE *f = o.file;
         fprintf(f, "# written by cg: %zu vertices, %zu faces\n", m->vertex_count, m->face_count);
@@ -257,7 +180,7 @@ static cg_status save_obj(const cg_mesh *m, const char *path, cg_error *err)
             }
             putc('\n', f);
         }
-        s = out_close(&o, CG_OK, err);
+        s = safe_file_close(&o, CG_OK, err);
     }
     free(colors.colors);
     free(colors.slots);
@@ -350,8 +273,8 @@ static cg_status save_ply(const cg_mesh *m, const char *path, int binary, cg_err
             largest = cg_mesh_face_size(m, face);
     int count_bytes = largest > 255 ? 4 : 1;
     int index_bytes = 4;
-    out_file o;
-    cg_status s = out_open(&o, path, err);
+    safe_file o;
+    cg_status s = safe_file_open(&o, path, err);
     if (s != CG_OK)
         return s;
     FILE *f = o.file;
@@ -399,7 +322,7 @@ static cg_status save_ply(const cg_mesh *m, const char *path, int binary, cg_err
             put_color(&w, m->face_colors[face]);
         end_item(&w);
     }
-    return out_close(&o, CG_OK, err);
+    return safe_file_close(&o, CG_OK, err);
 }
 
 cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,

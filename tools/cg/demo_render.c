@@ -18,8 +18,8 @@
 static cg_mesh *load_bunny(void)
 {
     cg_mesh *mesh = NULL;
-#ifdef CG_DATA_DIR
-    if (cg_mesh_load(CG_DATA_DIR "/meshes/bunny.obj", &mesh, NULL) == CG_OK)
+#ifdef CG_SOURCE_DIR
+    if (cg_mesh_load(CG_SOURCE_DIR "/" BUNNY, &mesh, NULL) == CG_OK)
         return mesh;
 #endif
     if (cg_mesh_load(BUNNY, &mesh, NULL) == CG_OK)

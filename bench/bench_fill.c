@@ -634,6 +634,7 @@ int main(int argc, char **argv)
     int runs = argc > 1 ? atoi(argv[1]) : 7;
     only = argc > 2 ? argv[2] : NULL;
     cg_alone = argc > 3 && strcmp(argv[3], "cg") == 0;
+    (void)ink_rgba; /* unused when no peer is built in */
     polygon_cases(runs);
     curve_cases(runs);
     flood_cases(runs);

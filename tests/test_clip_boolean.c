@@ -290,6 +290,20 @@ static void double_api(void)
         cg_polygon_set_clear(&as);
         cg_polygon_set_clear(&bs);
     }
+    /* the smallest normal numbers: a finite scale, no error */
+    {
+        cg_vec2 T[3] = {{0, 0}, {1e-300, 0}, {0, 1e-300}};
+        cg_polygon_set t = {0};
+        cg_polygon_set_add_ring(&t, T, 3, 1);
+        CHECK(cg_clip_boolean(CG_CLIP_UNION, &t, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        /* (the area itself underflows: check the vertices) */
+        CHECK_EQ_INT(r.point_count, 3);
+        double big = 0;
+        for (size_t i = 0; i < r.point_count; i++)
+            big = fmax(big, fmax(r.points[i].x, r.points[i].y));
+        CHECK_NEAR(big / 1e-300, 1, 1e-10);
+        cg_polygon_set_clear(&t);
+    }
     /* NaN, infinity, out of range with an explicit scale */
     cg_vec2 N[] = {{0, 0}, {NAN, 0}, {1, 1}}, I[] = {{0, 0}, {INFINITY, 0}, {1, 1}}, Bg[] = {{0, 0}, {1e300, 0}, {1, 1}};
     cg_polygon_set n = {0}, i = {0}, bg = {0};
@@ -398,7 +412,7 @@ static void stress(void)
 static void snapping(void)
 {
     check_rng rng = {4242};
-    for (int it = 0; it < 2000; it++) {
+    for (int it = 0; it < 1500; it++) {
         cg_polygon_set64 a = {0}, b = {0}, r = {0};
         int grid = (int)check_rng_int(&rng, 2, 7);
         random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 30), grid, 1);
@@ -418,8 +432,75 @@ static void snapping(void)
     }
 }
 
+/* Coordinates at the edge of the range (the 128-bit products at their
+ * largest) and many copies of one ring (huge groups of coincident edges). */
+static void extremes(void)
+{
+    check_rng rng = {31};
+    const int64_t M = CG_CLIP_MAX_COORD;
+    for (int it = 0; it < 300; it++) {
+        cg_polygon_set64 a = {0}, b = {0}, r = {0};
+        cg_point64 pts[12];
+        int n = (int)check_rng_int(&rng, 3, 12);
+        for (int i = 0; i < n; i++)
+            pts[i] = (cg_point64){check_rng_int(&rng, 0, 1) ? M - check_rng_int(&rng, 0, 3) : -M + check_rng_int(&rng, 0, 3),
+                                  check_rng_int(&rng, -M, M)};
+        cg_polygon_set64_add_ring(&a, pts, (size_t)n, 1);
+        for (int i = 0; i < n; i++)
+            pts[i] = (cg_point64){check_rng_int(&rng, -M, M), check_rng_int(&rng, -M, M)};
+        cg_polygon_set64_add_ring(&b, pts, (size_t)n, 1);
+        for (int op = 0; op < 4; op++) {
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r);
+            CHECK_MSG(st == CG_OK, "extreme round %d op %d: status %d", it, op, (int)st);
+            CHECK(result_is_simple(&r));
+            CHECK(result_is_oriented(&r));
+            double A = cg_polygon_set64_area(&r);
+            CHECK(A >= 0 && A <= 4.0 * (double)M * (double)M * (1 + 1e-12));
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        cg_polygon_set64_clear(&r);
+    }
+    /* fans of nearly vertical edges (x within 3 units, y over the whole
+     * range): rounding a crossing moves such edges a lot along their length,
+     * the case that needs snap rounding through hot pixels to settle */
+    for (int it = 0; it < 100; it++) {
+        cg_polygon_set64 a = {0}, b = {0}, r = {0};
+        cg_point64 pts[30];
+        for (int k = 0; k < 2; k++) {
+            for (int i = 0; i < 30; i++)
+                pts[i] = (cg_point64){check_rng_int(&rng, -3, 3), check_rng_int(&rng, -M, M)};
+            cg_polygon_set64_add_ring(k ? &b : &a, pts, 30, 1);
+        }
+        for (int op = 0; op < 4; op++) {
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r);
+            CHECK_MSG(st == CG_OK, "fan round %d op %d: status %d", it, op, (int)st);
+            CHECK(result_is_simple(&r));
+            CHECK(result_is_oriented(&r));
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        cg_polygon_set64_clear(&r);
+    }
+    /* 2,000 copies of one square and one of a shifted square */
+    cg_polygon_set64 a = {0}, b = {0}, r = {0};
+    cg_point64 S[4] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}}, T[4] = {{50, 50}, {150, 50}, {150, 150}, {50, 150}};
+    for (int i = 0; i < 2000; i++)
+        cg_polygon_set64_add_ring(&a, S, 4, 1);
+    cg_polygon_set64_add_ring(&b, T, 4, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 10000, 0); /* even count: a is empty */
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_POSITIVE, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 17500, 0);
+    CHECK_EQ_INT(r.ring_count, 1);
+    cg_polygon_set64_clear(&a);
+    cg_polygon_set64_clear(&b);
+    cg_polygon_set64_clear(&r);
+}
+
 int main(void)
 {
+    extremes();
     snapping();
     fixed_cases();
     double_api();

@@ -81,5 +81,23 @@ status "bad sub" 2 "$cg" clip circle
 echo "POLYGON ((0 0, 10 0, 5 3, 0 10, 0 0))" > "$tmp/c.wkt"
 status "concave window sh" 1 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt"
 status "concave window wa" 0 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
+# mutated WKT: every run ends with status 0 or 1 (never a crash)
+base="MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 2 2)), ((20 20, 30 20, 25 30)))"
+RANDOM=7
+bad_exit=0
+for i in $(seq 1 60); do
+    text="$base"
+    for k in 1 2 3; do
+        pos=$((RANDOM % ${#text}))
+        chars='(),. -e9x'
+        c=${chars:$((RANDOM % ${#chars})):1}
+        if [ $((RANDOM % 2)) == 0 ]; then text="${text:0:pos}$c${text:pos+1}"; else text="${text:0:pos}${text:pos+1}"; fi
+    done
+    printf '%s' "$text" > "$tmp/m.wkt"
+    "$cg" clip boolean union "$tmp/m.wkt" "$tmp/a.wkt" > /dev/null 2>&1
+    st=$?
+    if [ $st -gt 1 ]; then echo "FAIL: status $st on '$text'"; bad_exit=1; fi
+done
+[ $bad_exit == 0 ] && pass=$((pass + 1)) || fail=$((fail + 1))
 echo "$pass passed, $fail failed"
 [ "$fail" == 0 ]

@@ -153,8 +153,8 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
 
 /* The same on doubles: coordinates are multiplied by scale and rounded to
  * integers, and the result divided by scale.  scale <= 0 picks the largest
- * power of two that maps the largest |coordinate| of both inputs to at most
- * 2^36 (so about 11 significant digits are kept).  CG_EINVAL for a NaN or
+ * power of two that maps the largest |coordinate| of both inputs below 2^36
+ * (so about 11 significant digits are kept, at any magnitude).  CG_EINVAL for a NaN or
  * infinite coordinate or scale, CG_ERANGE when a scaled coordinate exceeds
  * CG_CLIP_MAX_COORD. */
 cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_fill subject_fill,

@@ -11,7 +11,9 @@
  *     horizontal edge is also needs a vertex there.  Such points are rounded
  *     to the grid and the edges split there (both pieces keep the path
  *     closed).  Rounding can move an edge by half a unit, so the sweep is
- *     repeated until a pass finds nothing to split (two passes in practice).
+ *     repeated until a pass finds nothing to split (two passes in practice);
+ *     from the second pass on, edges through the pixel of a rounded point are
+ *     split there too (snap rounding), which settles nearly parallel fans.
  *  2. Classification.  In the final pass no two edges cross inside a beam,
  *     so walking a beam from left to right and summing the windings of the
  *     subject's and the clip's edges tells, for every gap between edges,
@@ -33,7 +35,6 @@
 #include "internal.h"
 
 #include <limits.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -276,7 +277,7 @@ typedef struct sweep {
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
-    unsigned char *run_open, *run_up, *brk, *is_rep;
+    unsigned char *run_open, *run_up, *brk;
     int64_t *run_x, *run_y;
     int classify, changed;
     int use_input_lines; /* round on the input edges (early passes) */
@@ -442,13 +443,11 @@ static int run_sweep(sweep *s)
         for (size_t k = 0; k < nb; k++)
             if (E[below[k]].yt > y)
                 above[na++] = below[k];
-        size_t first_new = na;
         while (ip < ne && E[s->by_bottom[ip]].yb == y) {
             uint32_t e = s->by_bottom[ip++];
             s->xc[e] = (double)E[e].xb;
             above[na++] = e;
         }
-        (void)first_new;
         for (size_t k = 0; k < na; k++)
             s->xn[above[k]] = x_at(&E[above[k]], yn);
         /* insertion sort by (x at y, x at yn) */
@@ -624,6 +623,83 @@ static int cmp_along(const void *a, const void *b)
     if (p->y != q->y)
         return p->y < q->y ? -1 : 1;
     return (p->x > q->x) - (p->x < q->x);
+}
+
+/* Does the segment a-b meet the closed unit square centred on p (the "hot
+ * pixel" of a rounded point)?  Exact, on doubled coordinates. */
+static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py)
+{
+    i128 x0 = 2 * (i128)px - 1, x1 = 2 * (i128)px + 1, y0 = 2 * (i128)py - 1, y1 = 2 * (i128)py + 1;
+    i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
+    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
+        return 0;
+    int pos = 0, neg = 0;
+    i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    for (int k = 0; k < 4; k++) {
+        i128 o = (Bx - Ax) * (cy[k] - Ay) - (By - Ay) * (cx[k] - Ax);
+        pos |= o > 0;
+        neg |= o < 0;
+    }
+    return !(pos && !neg) && !(neg && !pos);
+}
+
+/* Snap rounding (Hobby): every edge that passes through the pixel of a
+ * rounded split point is split there too, so that nearly parallel edges
+ * meet at one grid point instead of crossing again a little further on.
+ * Used from the second pass on; the points are sorted by y and each edge
+ * looks only at those within its y range. */
+static int cmp_split_y(const void *a, const void *b)
+{
+    const splitpt *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+static int add_hot_pixel_splits(engine *g)
+{
+    size_t ns = g->ns;
+    if (ns == 0)
+        return 1;
+    splitpt *pts = malloc(ns * sizeof *pts);
+    if (!pts)
+        return 0;
+    memcpy(pts, g->S, ns * sizeof *pts);
+    qsort(pts, ns, sizeof *pts, cmp_split_y);
+    for (size_t i = 0; i < g->ne; i++) {
+        const bedge *e = &g->E[i];
+        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
+        size_t lo = 0, hi = ns;
+        while (lo < hi) {
+            size_t mid = (lo + hi) / 2;
+            if (pts[mid].y < e->yb - 1)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        for (size_t q = lo; q < ns && pts[q].y <= e->yt + 1; q++) {
+            int64_t px = pts[q].x, py = pts[q].y;
+            if (px < xlo - 1 || px > xhi + 1 || (q > lo && px == pts[q - 1].x && py == pts[q - 1].y))
+                continue;
+            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))
+                continue;
+            if (!meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py))
+                continue;
+            if (g->ns == g->caps) {
+                size_t c = g->caps * 2;
+                splitpt *ns2 = realloc(g->S, c * sizeof *ns2);
+                if (!ns2) {
+                    free(pts);
+                    return 0;
+                }
+                g->S = ns2;
+                g->caps = c;
+            }
+            g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+        }
+    }
+    free(pts);
+    return 1;
 }
 
 static int apply_splits(engine *g)
@@ -1044,7 +1120,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(s.brk);
         free(s.run_x);
         free(s.run_y);
-        free(s.is_rep);
         memset(&s, 0, sizeof s);
         s.g = g;
         size_t n1 = ne ? ne : 1;
@@ -1110,17 +1185,18 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.use_input_lines = pass < 8;
         if (!run_sweep(&s))
             break;
-#ifdef CLIP_DEBUG
-        fprintf(stderr, "pass %d: %zu edges, %zu splits, %zu scanlines\n", pass, g->ne, g->ns, s.nys);
-#endif
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
         }
+        if (pass >= 1 && !add_hot_pixel_splits(g))
+            break;
         if (!apply_splits(g))
             break;
-        if (g->ne > UINT32_MAX / 2)
+        if (g->ne > UINT32_MAX / 2) {
+            st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
             break;
+        }
     }
     free(s.ys);
     free(s.by_bottom);
@@ -1133,7 +1209,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(s.brk);
     free(s.run_x);
     free(s.run_y);
-    free(s.is_rep);
     return st;
 }
 
@@ -1203,7 +1278,11 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
 
 /* ---- the double API ------------------------------------------------------------ */
 
-double clip_max_abs(const cg_polygon_set *set)
+/* The grid of the double API: multiply by an explicit scale, or (automatic)
+ * by 2^exponent with ldexp, which reaches every double's range exactly. */
+typedef struct grid { double scale; int exponent; } grid;
+
+static double max_abs(const cg_polygon_set *set)
 {
     double m = 0;
     if (!set)
@@ -1220,20 +1299,24 @@ double clip_max_abs(const cg_polygon_set *set)
     return m;
 }
 
-double clip_pick_scale(double scale, double max_abs)
+static grid pick_grid(double scale, double largest)
 {
-    if (scale > 0)
-        return scale;
-    if (!(max_abs > 0))
-        return 1.0;
+    grid g = {scale > 0 ? scale : 0, 0};
+    if (scale > 0 || !(largest > 0))
+        return g;
     int e;
-    frexp(max_abs, &e); /* max_abs < 2^e */
-    if (e > 36 + 1000)
-        e = 36 + 1000;
-    return ldexp(1.0, 36 - e);
+    frexp(largest, &e); /* largest < 2^e: 2^(36 - e) maps it below 2^36 */
+    g.exponent = 36 - e;
+    return g;
 }
 
-cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 *out)
+static double to_grid(grid g, double v) { return g.scale > 0 ? v * g.scale : ldexp(v, g.exponent); }
+static double from_grid(grid g, int64_t v)
+{
+    return g.scale > 0 ? (double)v / g.scale : ldexp((double)v, -g.exponent);
+}
+
+static cg_status grid_points(const cg_polygon_set *in, grid g, cg_polygon_set64 *out)
 {
     cg_polygon_set64_clear(out);
     if (!in)
@@ -1247,7 +1330,7 @@ cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 
             return st;
         out->ring_count--; /* reopened below point by point */
         for (size_t i = a; i < b; i++) {
-            double x = in->points[i].x * scale, y = in->points[i].y * scale;
+            double x = to_grid(g, in->points[i].x), y = to_grid(g, in->points[i].y);
             if (!isfinite(x) || !isfinite(y))
                 return isfinite(in->points[i].x) && isfinite(in->points[i].y) ? CG_ERANGE
                                                                               : CG_EINVAL;
@@ -1270,7 +1353,7 @@ cg_status clip_to_grid(const cg_polygon_set *in, double scale, cg_polygon_set64 
     return CG_OK;
 }
 
-cg_status clip_from_grid(const cg_polygon_set64 *in, double scale, cg_polygon_set *out)
+static cg_status ungrid_points(const cg_polygon_set64 *in, grid g, cg_polygon_set *out)
 {
     cg_polygon_set_clear(out);
     for (size_t p = 0; p < in->polygon_count; p++) {
@@ -1290,7 +1373,7 @@ cg_status clip_from_grid(const cg_polygon_set64 *in, double scale, cg_polygon_se
                     out->point_capacity = cap;
                 }
                 out->points[out->point_count++] =
-                    cg_vec2_make((double)in->points[i].x / scale, (double)in->points[i].y / scale);
+                    cg_vec2_make(from_grid(g, in->points[i].x), from_grid(g, in->points[i].y));
             }
             out->ring_count++;
             out->ring_start[out->ring_count] = out->point_count;
@@ -1308,18 +1391,18 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
     cg_polygon_set_clear(result);
     if (isnan(scale) || isinf(scale))
         return CG_EINVAL;
-    double m1 = clip_max_abs(subject), m2 = clip_max_abs(clip);
+    double m1 = max_abs(subject), m2 = max_abs(clip);
     if (isnan(m1) || isnan(m2))
         return CG_EINVAL;
-    double sc = clip_pick_scale(scale, m1 > m2 ? m1 : m2);
+    grid g = pick_grid(scale, m1 > m2 ? m1 : m2);
     cg_polygon_set64 a = {0}, b = {0}, r = {0};
-    cg_status st = clip_to_grid(subject, sc, &a);
+    cg_status st = grid_points(subject, g, &a);
     if (st == CG_OK)
-        st = clip_to_grid(clip, sc, &b);
+        st = grid_points(clip, g, &b);
     if (st == CG_OK)
         st = cg_clip_boolean64(op, &a, subject_fill, &b, clip_fill, &r);
     if (st == CG_OK)
-        st = clip_from_grid(&r, sc, result);
+        st = ungrid_points(&r, g, result);
     if (st != CG_OK)
         cg_polygon_set_clear(result);
     cg_polygon_set64_clear(&a);

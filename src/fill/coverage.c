@@ -256,6 +256,10 @@ static void render_row(const fill_painter *painter, float *row, uint64_t *touche
 {
     float acc = 0;
     int c = 0, run_start = 0, run_end = 0;
+    /* solid paint on RGBA8: touched pixels are painted as they are summed */
+    cg_rgba8 *pixels = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8
+                           ? cg_image_row_rgba8(painter->image, y) + origin_x
+                           : NULL;
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
@@ -269,18 +273,24 @@ static void render_row(const fill_painter *painter, float *row, uint64_t *touche
                 continue;
             }
             if (x != run_end) {
-                fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
+                if (!pixels)
+                    fill_painter_span(painter, y, origin_x + run_start, run_end - run_start,
+                                      cover);
                 constant_span(painter, y, origin_x + run_end, origin_x + x, c, cover);
                 run_start = x;
             }
             acc += row[x];
             row[x] = 0;
             c = coverage_of(acc, rule);
-            cover[x - run_start] = (uint8_t)c;
+            if (pixels)
+                fill_solid_pixel(painter, pixels + x, c);
+            else
+                cover[x - run_start] = (uint8_t)c;
             run_end = x + 1;
         }
     }
-    fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
+    if (!pixels)
+        fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
     constant_span(painter, y, origin_x + run_end, origin_x + width, c, cover);
 }
 

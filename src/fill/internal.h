@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 /* ---- growing arrays of points ------------------------------------------- */
 
@@ -160,6 +161,56 @@ static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
     i = i < 0 ? 0 : (i > 4096 ? 4096 : i);
     int c = r->encode[i];
     return (uint8_t)(c + (v >= r->threshold[c]));
+}
+
+/* Source-over of a straight linear colour with alpha as onto an encoded pixel. */
+static inline void fill_blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, float g, float b,
+                          float as)
+{
+    if (d->a == 255) {
+        float dr = t->decode[d->r], dg = t->decode[d->g], db = t->decode[d->b];
+        d->r = fill_encode_unit(t, dr + (r - dr) * as);
+        d->g = fill_encode_unit(t, dg + (g - dg) * as);
+        d->b = fill_encode_unit(t, db + (b - db) * as);
+        return;
+    }
+    if (d->a == 0) { /* over nothing: the source colour, with its alpha */
+        if (!(as > 0))
+            return;
+        d->r = fill_encode_unit(t, r);
+        d->g = fill_encode_unit(t, g);
+        d->b = fill_encode_unit(t, b);
+        d->a = (uint8_t)(as * 255.0f + 0.5f);
+        return;
+    }
+    float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;
+    if (a <= 0)
+        return;
+    float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
+    d->r = fill_encode_unit(t, (r * as + t->decode[d->r] * ad) * inv);
+    d->g = fill_encode_unit(t, (g * as + t->decode[d->g] * ad) * inv);
+    d->b = fill_encode_unit(t, (b * as + t->decode[d->b] * ad) * inv);
+    d->a = (uint8_t)(a * 255.0f + 0.5f);
+}
+
+/* Paints one RGBA8 pixel with a solid paint at coverage c / 255. */
+static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
+{
+    if (c == 0)
+        return;
+    if (c == 255 && p->opaque) {
+        memcpy(d, &p->encoded, 4);
+        return;
+    }
+    float as = p->a * (c * (1.0f / 255.0f));
+    if (!(as > 0))
+        return;
+    if (d->a == 0) { /* over nothing: the colour itself, with its alpha */
+        memcpy(d, &p->encoded, 4);
+        d->a = (uint8_t)(as * 255.0f + 0.5f);
+        return;
+    }
+    fill_blend8(p->tables, d, p->r, p->g, p->b, as);
 }
 
 /* Grows *array (of element size) to hold at least need elements; 0 when

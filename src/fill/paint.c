@@ -176,36 +176,6 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
-/* Source-over of a straight linear colour with alpha as onto an encoded pixel. */
-static inline void blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, float g, float b,
-                          float as)
-{
-    if (d->a == 255) {
-        float dr = t->decode[d->r], dg = t->decode[d->g], db = t->decode[d->b];
-        d->r = fill_encode_unit(t, dr + (r - dr) * as);
-        d->g = fill_encode_unit(t, dg + (g - dg) * as);
-        d->b = fill_encode_unit(t, db + (b - db) * as);
-        return;
-    }
-    if (d->a == 0) { /* over nothing: the source colour, with its alpha */
-        if (!(as > 0))
-            return;
-        d->r = fill_encode_unit(t, r);
-        d->g = fill_encode_unit(t, g);
-        d->b = fill_encode_unit(t, b);
-        d->a = (uint8_t)(as * 255.0f + 0.5f);
-        return;
-    }
-    float ad = d->a * (1.0f / 255.0f) * (1 - as), a = as + ad;
-    if (a <= 0)
-        return;
-    float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
-    d->r = fill_encode_unit(t, (r * as + t->decode[d->r] * ad) * inv);
-    d->g = fill_encode_unit(t, (g * as + t->decode[d->g] * ad) * inv);
-    d->b = fill_encode_unit(t, (b * as + t->decode[d->b] * ad) * inv);
-    d->a = (uint8_t)(a * 255.0f + 0.5f);
-}
-
 static inline void blendf(cg_rgbaf *d, float r, float g, float b, float as)
 {
     float ad = d->a * (1 - as), a = as + ad;
@@ -234,7 +204,6 @@ static inline const cg_rgbaf *ramp_at(const fill_painter *p, double t)
 
 static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)
 {
-    const struct cg_rasterizer *t = p->tables;
     cg_image *image = p->image;
     if (image->format == CG_PIXEL_RGBA8) {
         cg_rgba8 *row = cg_image_row_rgba8(image, y) + x0;
@@ -245,24 +214,8 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
                 w[i] = value;
             return;
         }
-        for (int i = 0; i < n; i++) {
-            int c = cover ? cover[i] : 255;
-            if (c == 0)
-                continue;
-            if (c == 255 && p->opaque) {
-                memcpy(&row[i], &p->encoded, 4);
-                continue;
-            }
-            float as = p->a * (c * (1.0f / 255.0f));
-            if (!(as > 0))
-                continue;
-            if (row[i].a == 0) { /* over nothing: the colour itself, with its alpha */
-                memcpy(&row[i], &p->encoded, 4);
-                row[i].a = (uint8_t)(as * 255.0f + 0.5f);
-                continue;
-            }
-            blend8(t, &row[i], p->r, p->g, p->b, as);
-        }
+        for (int i = 0; i < n; i++)
+            fill_solid_pixel(p, &row[i], cover ? cover[i] : 255);
         return;
     }
     cg_rgbaf *row = cg_image_row_rgbaf(image, y) + x0;
@@ -306,7 +259,7 @@ static void gradient_span(const fill_painter *p, int y, int x0, int n, const uin
                 d->b = fill_encode(t, s->b);
                 d->a = 255;
             } else {
-                blend8(t, d, s->r, s->g, s->b, as);
+                fill_blend8(t, d, s->r, s->g, s->b, as);
             }
         } else {
             cg_rgbaf *d = cg_image_row_rgbaf(image, y) + x0 + i;

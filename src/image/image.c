@@ -60,13 +60,8 @@ cg_status cg_image_convert(const cg_image *image, cg_pixel_format format, cg_ima
         return CG_EINVAL;
     if (image->format == format)
         return cg_image_copy(image, out);
-    cg_status status = cg_image_create(out, image->width, image->height, format);
-    if (status != CG_OK)
-        return status;
-    for (int y = 0; y < image->height; y++)
-        for (int x = 0; x < image->width; x++)
-            cg_image_set(*out, x, y, cg_image_get(image, x, y));
-    return CG_OK;
+    return format == CG_PIXEL_RGBAF ? cg_image_decode_srgb(image, out)
+                                    : cg_image_encode_srgb(image, out);
 }
 
 void cg_image_clear(cg_image *image, cg_rgbaf color)

@@ -12,8 +12,10 @@
 
 /* Everything a parsing function needs to report an error. */
 typedef struct parser {
-    const char *name; /* file name for messages */
+    const char *name;     /* file name for messages */
     cg_error *err;
+    const char *base_dir; /* mesh paths are relative to it (NULL: current folder) */
+    int load_meshes;      /* 0: check mesh entries but read no files */
 } parser;
 
 #define PATH_SIZE 256
@@ -334,6 +336,19 @@ static cg_status parse_render(const parser *p, const cJSON *v, cg_scene *s)
     return CG_OK;
 }
 
+/* Makes room for one more item in a growing array of count items; the
+ * capacity doubles, so n appends cost O(n). */
+static cg_status reserve(const parser *p, void **items, size_t count, size_t item_size)
+{
+    if (count & (count - 1)) /* not a power of two: there is room */
+        return CG_OK;
+    void *grown = realloc(*items, (count ? 2 * count : 1) * item_size);
+    if (!grown)
+        return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
+    *items = grown;
+    return CG_OK;
+}
+
 static cg_status parse_light(const parser *p, const char *path, const cJSON *v, cg_scene *s)
 {
     static const char *const kinds[] = {"ambient", "point", "directional", "spot", "area", NULL};
@@ -368,10 +383,8 @@ static cg_status parse_light(const parser *p, const char *path, const cJSON *v, 
             return st;
         if (!(cg_vec3_length(cg_vec3_cross(a.edge_u, a.edge_v)) > 0))
             return fail(p, path, "expected edge_u and edge_v spanning a rectangle");
-        cg_scene_area_light *grown = realloc(s->area_lights, (s->area_light_count + 1) * sizeof *grown);
-        if (!grown)
-            return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-        s->area_lights = grown;
+        if ((st = reserve(p, (void **)&s->area_lights, s->area_light_count, sizeof a)))
+            return st;
         s->area_lights[s->area_light_count++] = a;
         return CG_OK;
     }
@@ -396,10 +409,8 @@ static cg_status parse_light(const parser *p, const char *path, const cJSON *v, 
     cg_error check;
     if (cg_light_check(&light, &check) != CG_OK)
         return fail(p, path, "%s", check.message);
-    cg_light *grown = realloc(s->lights, (s->light_count + 1) * sizeof *grown);
-    if (!grown)
-        return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-    s->lights = grown;
+    if ((st = reserve(p, (void **)&s->lights, s->light_count, sizeof light)))
+        return st;
     s->lights[s->light_count++] = light;
     return CG_OK;
 }
@@ -575,15 +586,19 @@ static char *resolve_path(const char *base_dir, const char *file)
     return path;
 }
 
-static cg_status parse_object(const parser *p, const char *path, const cJSON *v, cg_scene *s,
-                              const char *base_dir, int load_meshes, cg_scene_object *o)
+static cg_status parse_object(const parser *p, const char *path, const cJSON *v, cg_scene *s)
 {
     static const char *const kinds[] = {"mesh", "sphere", "plane", "box", NULL};
     static const char *const keys[] = {"type", "file", "center", "radius", "point", "normal",
                                        "lo", "hi", "material", "transform", NULL};
     cg_status st;
-    if ((st = need_object(p, path, v)) || (st = check_keys(p, path, v, keys)))
+    if ((st = need_object(p, path, v)) || (st = check_keys(p, path, v, keys))
+        || (st = reserve(p, (void **)&s->objects, s->object_count, sizeof *s->objects)))
         return st;
+    /* Counted before it is read so that cg_scene_free releases a half-read
+     * object too. */
+    cg_scene_object *o = &s->objects[s->object_count++];
+    memset(o, 0, sizeof *o);
     int kind = -1;
     if ((st = get_choice(p, path, v, "type", kinds, &kind)))
         return st;
@@ -633,9 +648,9 @@ static cg_status parse_object(const parser *p, const char *path, const cJSON *v,
         join(key_path, path, "file");
         if (!cJSON_IsString(file) || !file->valuestring[0])
             return expected(p, key_path, "the path of a mesh file", file);
-        if (!(o->file = resolve_path(base_dir, file->valuestring)))
+        if (!(o->file = resolve_path(p->base_dir, file->valuestring)))
             return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-        if (load_meshes) {
+        if (p->load_meshes) {
             cg_error mesh_error;
             cg_status ms = cg_mesh_load(o->file, &o->mesh, &mesh_error);
             if (ms != CG_OK)
@@ -648,17 +663,46 @@ static cg_status parse_object(const parser *p, const char *path, const cJSON *v,
     return CG_OK;
 }
 
-static cg_status parse_list(const parser *p, const char *name, const cJSON *v, int limit)
+static cg_status parse_overlay(const parser *p, const char *path, const cJSON *v, cg_scene *s)
 {
-    if (!cJSON_IsArray(v))
-        return expected(p, name, "an array", v);
-    if (cJSON_GetArraySize(v) > limit)
-        return fail(p, name, "%d entries, more than the limit of %d", cJSON_GetArraySize(v), limit);
+    if (!cJSON_IsString(v) || strchr(v->valuestring, '\n'))
+        return expected(p, path, "one line of a cg draw script", v);
+    cg_status st = reserve(p, (void **)&s->overlays, s->overlay_count, sizeof *s->overlays);
+    if (st)
+        return st;
+    size_t length = strlen(v->valuestring) + 1;
+    if (!(s->overlays[s->overlay_count] = malloc(length)))
+        return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
+    memcpy(s->overlays[s->overlay_count++], v->valuestring, length);
     return CG_OK;
 }
 
-static cg_status parse_scene(const parser *p, const cJSON *root, cg_scene *s, const char *base_dir,
-                             int load_meshes)
+typedef cg_status (*item_parser)(const parser *p, const char *path, const cJSON *v, cg_scene *s);
+
+/* Reads the array root[key] (when present) of at most limit items, each with
+ * parse_item, naming them key[0], key[1], ... in messages. */
+static cg_status parse_array(const parser *p, const cJSON *root, const char *key, int limit,
+                             item_parser parse_item, cg_scene *s)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(root, key);
+    if (!v)
+        return CG_OK;
+    if (!cJSON_IsArray(v))
+        return expected(p, key, "an array", v);
+    if (cJSON_GetArraySize(v) > limit)
+        return fail(p, key, "%d entries, more than the limit of %d", cJSON_GetArraySize(v), limit);
+    int i = 0;
+    for (const cJSON *item = v->child; item; item = item->next, i++) {
+        char path[PATH_SIZE];
+        path_format(path, "%s[%d]", key, i);
+        cg_status st = parse_item(p, path, item, s);
+        if (st)
+            return st;
+    }
+    return CG_OK;
+}
+
+static cg_status parse_scene(const parser *p, const cJSON *root, cg_scene *s)
 {
     static const char *const keys[] = {"comment", "image", "camera", "render", "lights",
                                        "materials", "objects", "overlays", NULL};
@@ -676,52 +720,10 @@ static cg_status parse_scene(const parser *p, const cJSON *root, cg_scene *s, co
         return st;
     if ((v = cJSON_GetObjectItemCaseSensitive(root, "materials")) && (st = parse_materials(p, v, s)))
         return st;
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "lights"))) {
-        if ((st = parse_list(p, "lights", v, CG_SCENE_MAX_LIGHTS)))
-            return st;
-        int i = 0;
-        for (const cJSON *item = v->child; item; item = item->next, i++) {
-            char path[PATH_SIZE];
-            path_format(path, "lights[%d]", i);
-            if ((st = parse_light(p, path, item, s)))
-                return st;
-        }
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "objects"))) {
-        if ((st = parse_list(p, "objects", v, CG_SCENE_MAX_OBJECTS)))
-            return st;
-        size_t n = (size_t)cJSON_GetArraySize(v);
-        s->objects = calloc(n ? n : 1, sizeof *s->objects);
-        if (!s->objects)
-            return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-        for (const cJSON *item = v->child; item; item = item->next) {
-            char path[PATH_SIZE];
-            path_format(path, "objects[%zu]", s->object_count);
-            /* Counted before parsing so that cg_scene_free releases a
-             * half-read object too. */
-            cg_scene_object *o = &s->objects[s->object_count++];
-            if ((st = parse_object(p, path, item, s, base_dir, load_meshes, o)))
-                return st;
-        }
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "overlays"))) {
-        if ((st = parse_list(p, "overlays", v, CG_SCENE_MAX_OVERLAYS)))
-            return st;
-        size_t n = (size_t)cJSON_GetArraySize(v);
-        s->overlays = calloc(n ? n : 1, sizeof *s->overlays);
-        if (!s->overlays)
-            return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-        for (const cJSON *item = v->child; item; item = item->next) {
-            char path[PATH_SIZE];
-            path_format(path, "overlays[%zu]", s->overlay_count);
-            if (!cJSON_IsString(item) || strchr(item->valuestring, '\n'))
-                return expected(p, path, "one line of a cg draw script", item);
-            size_t length = strlen(item->valuestring) + 1;
-            if (!(s->overlays[s->overlay_count] = malloc(length)))
-                return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-            memcpy(s->overlays[s->overlay_count++], item->valuestring, length);
-        }
-    }
+    if ((st = parse_array(p, root, "lights", CG_SCENE_MAX_LIGHTS, parse_light, s))
+        || (st = parse_array(p, root, "objects", CG_SCENE_MAX_OBJECTS, parse_object, s))
+        || (st = parse_array(p, root, "overlays", CG_SCENE_MAX_OVERLAYS, parse_overlay, s)))
+        return st;
     return CG_OK;
 }
 
@@ -757,8 +759,8 @@ cg_status cg_scene_parse(const char *text, size_t size, const char *name, const 
         cJSON_Delete(root);
         return cg_error_set(err, status, "%s: out of memory", name);
     }
-    parser p = {name, err};
-    status = parse_scene(&p, root, scene, base_dir, load_meshes);
+    parser p = {name, err, base_dir, load_meshes};
+    status = parse_scene(&p, root, scene);
     cJSON_Delete(root);
     if (status != CG_OK) {
         cg_scene_free(scene);

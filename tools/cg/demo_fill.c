@@ -193,12 +193,80 @@ static int connectivity(demo_context *context)
     return failed;
 }
 
+/* One triangle at pixel scale, magnified: the aliased scan-line fill paints
+ * the pixels whose centres are inside; the anti-aliased fill shades each
+ * pixel by the area it covers.  The true outline is drawn over both. */
+static int pixel_view(demo_context *context, cg_rasterizer *r)
+{
+    enum { W = 22, H = 14, CELL = 16 };
+    const cg_vec2 tri[3] = {{2.3, 1.6}, {19.6, 5.2}, {7.4, 12.7}};
+    int three = 3, failed = 0;
+    cg_rgba8 ink_cell = {58, 118, 190, 255}, red = {220, 40, 40, 255};
+    for (int aa = 0; aa < 2; aa++) {
+        cg_image *small;
+        zoom z;
+        if (cg_image_create(&small, W, H, CG_PIXEL_RGBA8) != CG_OK)
+            return 1;
+        if (zoom_create(&z, W, H, CELL)) {
+            cg_image_free(small);
+            return 1;
+        }
+        cg_paint paint = cg_paint_solid(ink_cell);
+        if (aa)
+            cg_rasterizer_fill_polygon_aa(r, small, tri, &three, 1, CG_FILL_NONZERO, &paint);
+        else
+            cg_rasterizer_fill_polygon(r, small, tri, &three, 1, CG_FILL_NONZERO, ink_cell);
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                cg_rgba8 p = cg_image_get_rgba8(small, x, y);
+                if (!p.a)
+                    continue;
+                /* the cell shows the pixel over white */
+                int k = p.a;
+                cg_rgba8 c = {(uint8_t)(255 - (255 - p.r) * k / 255),
+                              (uint8_t)(255 - (255 - p.g) * k / 255),
+                              (uint8_t)(255 - (255 - p.b) * k / 255), 255};
+                zoom_fill(&z, x, y, c);
+            }
+        cg_image_free(small);
+        /* the outline and the pixel centres on the magnified image */
+        cg_path *path;
+        if (cg_path_create(&path) == CG_OK) {
+            for (int i = 0; i < 3; i++)
+                (i ? cg_path_line_to : cg_path_move_to)(path, tri[i].x * CELL + 0.5,
+                                                        tri[i].y * CELL + 0.5);
+            cg_path_close(path);
+            cg_stroke_style style = cg_stroke_style_default();
+            style.width = 2;
+            cg_paint outline = cg_paint_solid(red);
+            cg_rasterizer_stroke_path(r, z.image, path, &style, &outline);
+            cg_paint dot = cg_paint_solid((cg_rgba8){40, 40, 48, 255});
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    cg_path_reset(path);
+                    cg_path_arc(path, (x + 0.5) * CELL + 0.5, (y + 0.5) * CELL + 0.5, 1.6, 0,
+                                2 * CG_PI);
+                    cg_rasterizer_fill_path(r, z.image, path, CG_FILL_NONZERO, &dot);
+                }
+            cg_path_free(path);
+        }
+        failed |= zoom_add(context, &z, aa ? "fill-pixels-aa.png" : "fill-pixels-aliased.png",
+                           aa ? "Anti-aliased fill, magnified: each pixel shaded by the exact area "
+                                "of it inside the triangle (signed-area accumulation)"
+                              : "Scan-line fill, magnified: a pixel is painted when its centre "
+                                "(dot) is inside the triangle (red)",
+                           COMMAND);
+    }
+    return failed;
+}
+
 static int render(demo_context *context)
 {
     cg_rasterizer *r;
     if (cg_rasterizer_create(&r) != CG_OK)
         return 1;
-    int failed = fill_rules(context);
+    int failed = pixel_view(context, r);
+    failed |= fill_rules(context);
     failed |= joins_and_caps(context);
     failed |= gradients(context, r);
     failed |= maze(context);

@@ -4,8 +4,6 @@
 set -u
 cg="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$src/tests/cli_checks.sh"
 
 expect 0 "--help" "$cg" --help

@@ -6,8 +6,6 @@
 set -u
 cg="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$src/tests/cli_checks.sh"
 
 # pixel FILE.ppm X Y -> "R G B" (binary P6 with a "P6\nW H\n255\n" header)

@@ -13,8 +13,6 @@ if [ -z "$browser" ]; then
   echo "0 passed, 0 failed, 1 skipped"
   exit 0
 fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$source_dir/tests/cli_checks.sh"
 
 "$cg" demo -o "$work/gallery" >/dev/null 2>"$work/demo.err" && pass || fail "cg demo: $(cat "$work/demo.err")"

@@ -5,8 +5,6 @@
 # Usage: test_scene_cli.sh CG SOURCE_DIR BUILD_DIR
 set -u
 cg="$1" source_dir="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$source_dir/tests/cli_checks.sh"
 
 for scene in "$source_dir"/examples/scenes/*.json; do

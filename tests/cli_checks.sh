@@ -1,5 +1,11 @@
-# Helpers for the shell tests of the cg tool; source it after setting $work
-# (a scratch folder).  Counts in $passed and $failed.
+# Helpers for the shell tests of the cg tool.  $work is their scratch folder:
+# set it in the script before sourcing this file, or leave it unset to get a
+# new one that is removed when the script exits (a $work inherited from the
+# environment is not used).  Counts in $passed and $failed.
+case "$(declare -p work 2>/dev/null)" in
+  "declare -- work="*) ;;
+  *) work=$(mktemp -d); trap 'rm -rf "$work"' EXIT ;;
+esac
 passed=0 failed=0
 pass() { passed=$((passed + 1)); }
 fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }

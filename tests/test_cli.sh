@@ -3,16 +3,8 @@
 # Usage: test_cli.sh CG SOURCE_DIR BUILD_DIR
 set -u
 cg="$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
-expect() { # expect STATUS DESCRIPTION COMMAND...
-  local want=$1 what=$2; shift 2
-  "$@" >"$work/out" 2>"$work/err"; local got=$?
-  if [ "$got" = "$want" ]; then pass; else fail "$what: exit $got, want $want: $(cat "$work/err")"; fi
-}
+src="$2"
+. "$src/tests/cli_checks.sh"
 
 expect 0 "--help" "$cg" --help
 grep -q "convert" "$work/out" && pass || fail "--help lists convert"
@@ -56,5 +48,4 @@ grep -q "empty" "$work/err" && pass || fail "message says empty"
 expect 2 "unknown output format" "$cg" convert "$work/b.png" "$work/x.gif"
 expect 1 "missing input" "$cg" convert "$work/nope.png" "$work/x.png"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

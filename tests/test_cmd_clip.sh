@@ -2,20 +2,13 @@
 # cg clip: the contract of line and boolean, pictures, bad input.
 set -u
 cg="$1"
+src="$2"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-pass=0
+work="$tmp"
+. "$src/tests/cli_checks.sh"
 check() { # description, command output, expected
-    if [ "$2" == "$3" ]; then pass=$((pass + 1)); else
-        echo "FAIL: $1: got '$2', expected '$3'"; fail=$((fail + 1)); fi
-}
-status() { # description, expected status, command...
-    local want=$2; shift 2
-    "$@" > "$tmp/out" 2> "$tmp/err"
-    local got=$?
-    if [ "$got" == "$want" ]; then pass=$((pass + 1)); else
-        echo "FAIL: $*: status $got, expected $want"; cat "$tmp/err"; fail=$((fail + 1)); fi
+    if [ "$2" == "$3" ]; then pass; else fail "$1: got '$2', expected '$3'"; fi
 }
 
 check "line inside" "$("$cg" clip line 0 0 10 10 1 2 3 4)" "1 2 3 4"
@@ -30,11 +23,11 @@ check "trace first step" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --trace | head -
     "step 1: P0 (-5, 5) rCode 0001, P1 (15, 8) rCode 0010: clip left"
 check "trace reject" "$("$cg" clip line 0 0 10 10 -5 11 -1 20 --trace | head -1)" \
     "step 1: P0 (-5, 11) rCode 1001, P1 (-1, 20) rCode 1001: trivial reject"
-status "line bad number" 2 "$cg" clip line 0 0 10 10 1 2 3 x
-status "line too few" 2 "$cg" clip line 0 0 10 10 1 2 3
-status "line nan" 2 "$cg" clip line 0 0 10 10 1 2 3 nan
-status "line bad window" 2 "$cg" clip line 10 0 0 10 1 2 3 4
-status "line bad algorithm" 2 "$cg" clip line 0 0 10 10 1 2 3 4 --algorithm foo
+expect 2 "line bad number" "$cg" clip line 0 0 10 10 1 2 3 x
+expect 2 "line too few" "$cg" clip line 0 0 10 10 1 2 3
+expect 2 "line nan" "$cg" clip line 0 0 10 10 1 2 3 nan
+expect 2 "line bad window" "$cg" clip line 10 0 0 10 1 2 3 4
+expect 2 "line bad algorithm" "$cg" clip line 0 0 10 10 1 2 3 4 --algorithm foo
 
 echo "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))" > "$tmp/a.wkt"
 echo "MULTIPOLYGON (((5 5, 15 5, 15 15, 5 15, 5 5)))" > "$tmp/b.wkt"
@@ -58,29 +51,29 @@ check "nonzero same direction" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.
     "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
 check "negative" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill negative)" "MULTIPOLYGON EMPTY"
 "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" --repeat 5 > /dev/null 2> "$tmp/time"
-if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass=$((pass + 1)); else
-    echo "FAIL: --repeat line: $(cat "$tmp/time")"; fail=$((fail + 1)); fi
-status "picture" 0 "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" -o "$tmp/x.png"
-if [ -s "$tmp/x.png" ]; then pass=$((pass + 1)); else echo "FAIL: no picture"; fail=$((fail + 1)); fi
-status "polygon sh" 0 "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt"
+if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass; else
+    fail "--repeat line: $(cat "$tmp/time")"; fi
+expect 0 "picture" "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" -o "$tmp/x.png"
+if [ -s "$tmp/x.png" ]; then pass; else fail "no picture"; fi
+expect 0 "polygon sh" "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt"
 check "polygon sh output" "$(cat "$tmp/out")" "MULTIPOLYGON (((5 5, 10 5, 10 10, 5 10, 5 5)))"
-status "polygon wa" 0 "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
+expect 0 "polygon wa" "$cg" clip polygon "$tmp/b.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
 
 echo "POLYGON ((0 0, 1 x))" > "$tmp/bad.wkt"
-status "bad wkt" 1 "$cg" clip boolean union "$tmp/bad.wkt" "$tmp/a.wkt"
-grep -q "offset" "$tmp/err" && pass=$((pass + 1)) || { echo "FAIL: no offset in message"; fail=$((fail + 1)); }
+expect 1 "bad wkt" "$cg" clip boolean union "$tmp/bad.wkt" "$tmp/a.wkt"
+grep -q "offset" "$tmp/err" && pass || fail "no offset in message"
 echo "POLYGON ((0 0, 1e999 0, 1 1, 0 0))" > "$tmp/inf.wkt"
-status "infinite" 1 "$cg" clip boolean union "$tmp/inf.wkt" "$tmp/a.wkt"
+expect 1 "infinite" "$cg" clip boolean union "$tmp/inf.wkt" "$tmp/a.wkt"
 echo "LINESTRING (0 0, 1 1)" > "$tmp/line.wkt"
-status "not a polygon" 1 "$cg" clip boolean union "$tmp/line.wkt" "$tmp/a.wkt"
-status "missing file" 1 "$cg" clip boolean union "$tmp/nothere.wkt" "$tmp/a.wkt"
-status "bad op" 2 "$cg" clip boolean merge "$tmp/a.wkt" "$tmp/b.wkt"
-status "bad fill" 2 "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --fill odd
-status "bad repeat" 2 "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --repeat 0
-status "bad sub" 2 "$cg" clip circle
+expect 1 "not a polygon" "$cg" clip boolean union "$tmp/line.wkt" "$tmp/a.wkt"
+expect 1 "missing file" "$cg" clip boolean union "$tmp/nothere.wkt" "$tmp/a.wkt"
+expect 2 "bad op" "$cg" clip boolean merge "$tmp/a.wkt" "$tmp/b.wkt"
+expect 2 "bad fill" "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --fill odd
+expect 2 "bad repeat" "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --repeat 0
+expect 2 "bad sub" "$cg" clip circle
 echo "POLYGON ((0 0, 10 0, 5 3, 0 10, 0 0))" > "$tmp/c.wkt"
-status "concave window sh" 1 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt"
-status "concave window wa" 0 "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
+expect 1 "concave window sh" "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt"
+expect 0 "concave window wa" "$cg" clip polygon "$tmp/c.wkt" "$tmp/a.wkt" --algorithm weiler-atherton
 # mutated WKT: every run ends with status 0 or 1 (never a crash)
 base="MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 2 2)), ((20 20, 30 20, 25 30)))"
 RANDOM=7
@@ -98,6 +91,5 @@ for i in $(seq 1 60); do
     st=$?
     if [ $st -gt 1 ]; then echo "FAIL: status $st on '$text'"; bad_exit=1; fi
 done
-[ $bad_exit == 0 ] && pass=$((pass + 1)) || fail=$((fail + 1))
-echo "$pass passed, $fail failed"
-[ "$fail" == 0 ]
+[ $bad_exit == 0 ] && pass || fail "mutated WKT ended with a status above 1"
+finish

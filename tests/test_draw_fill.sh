@@ -5,11 +5,8 @@
 # Usage: test_draw_fill.sh CG SOURCE_DIR BUILD_DIR
 set -u
 cg="$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
+src="$2"
+. "$src/tests/cli_checks.sh"
 
 # pixel FILE.ppm X Y -> "R G B" (binary P6 with a "P6\nW H\n255\n" header)
 pixel() {
@@ -161,5 +158,4 @@ bad "flood8 not an integer" 'size 10 10\nflood8 1.5 3'
 bad "boundaryfill bad colour" 'size 10 10\nboundaryfill 1 1 nocolor'
 bad "dash too fine" 'size 10 10\npath M 0 0 L 9 9\ndash 0.000001 0.000001\nstroke'
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

@@ -13,11 +13,7 @@ if [ -z "$browser" ]; then
   echo "0 passed, 0 failed, 1 skipped"
   exit 0
 fi
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
+. "$source_dir/tests/cli_checks.sh"
 
 "$cg" demo -o "$work/gallery" >/dev/null 2>"$work/demo.err" && pass || fail "cg demo: $(cat "$work/demo.err")"
 flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run
@@ -72,5 +68,4 @@ print(len({pixels[i:i+3] for i in range(0, len(pixels), 3 * 97)}))" "$work/page.
 else
   fail "no screenshot"
 fi
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

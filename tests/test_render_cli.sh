@@ -5,20 +5,7 @@
 set -u
 cg="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
-expect() { # expect STATUS DESCRIPTION COMMAND...
-  local want=$1 what=$2; shift 2
-  "$@" >"$work/out" 2>"$work/err"; local got=$?
-  if [ "$got" = "$want" ]; then pass; else fail "$what: exit $got, want $want: $(cat "$work/err")"; fi
-}
-one_line() { [ "$(wc -l < "$work/err")" = 1 ] && pass || fail "$1: expected one line on stderr, got: $(cat "$work/err")"; }
-png_size() { # WIDTHxHEIGHT of a PNG from its IHDR
-  od -An -tu1 -j16 -N8 "$1" | awk '{printf "%dx%d", $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'
-}
+. "$src/tests/cli_checks.sh"
 
 bunny="$src/data/meshes/bunny.obj"
 printf 'OFF\n3 1 0\n-1 -1 0\n1 -1 0\n0 1 0\n3 0 1 2\n' > "$work/tri.off"
@@ -77,5 +64,4 @@ expect 0 "mesh without faces: the background" "$cg" render "$work/empty.obj" -o 
 expect 0 "camera inside the mesh" "$cg" render "$bunny" -o "$work/in.png" --size 64x48 --eye -0.02,0.1,0 --target 1,0.1,0 --cull none
 grep -q raytrace "$src/tools/cg/render_raytrace.c" && pass || fail "raytrace dispatch file present"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

@@ -5,11 +5,7 @@
 # Usage: test_scene_cli.sh CG SOURCE_DIR BUILD_DIR
 set -u
 cg="$1" source_dir="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
+. "$source_dir/tests/cli_checks.sh"
 
 for scene in "$source_dir"/examples/scenes/*.json; do
   name=$(basename "$scene" .json)
@@ -60,5 +56,4 @@ cmp -s "$work/keep.png" "$work/bunny-zbuffer.png" && pass || fail "a failed rend
 "$cg" render "$work/nothing-here.json" -o "$work/x.png" 2>"$work/err"
 [ $? = 1 ] && grep -q "cannot open" "$work/err" && pass || fail "missing scene file"
 
-echo "$passed passed, $failed failed"
-[ "$failed" = 0 ]
+finish

@@ -6,8 +6,6 @@
 set -u
 cg="$1"
 src="$2"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . "$src/tests/cli_checks.sh"
 
 bunny="$src/data/meshes/bunny.obj"

@@ -2,6 +2,7 @@
  * the ray tracer on a mesh file. */
 #include "cli.h"
 #include "command.h"
+#include "render_options.h"
 #include "render_raytrace.h"
 #include "render_scene.h"
 #include "cg/color.h"
@@ -34,42 +35,16 @@ static void show_progress(void *user, double fraction)
     fflush(stderr);
 }
 
-static int parse_choice(const char *what, const char *text, const char *const *names, int count,
-                        int *out)
-{
-    for (int i = 0; i < count; i++)
-        if (strcmp(text, names[i]) == 0) {
-            *out = i;
-            return 0;
-        }
-    char list[200] = "";
-    for (int i = 0; i < count; i++) {
-        strncat(list, names[i], sizeof list - strlen(list) - 1);
-        if (i + 1 < count)
-            strncat(list, i + 2 == count ? " or " : ", ", sizeof list - strlen(list) - 1);
-    }
-    cli_usage_error(NAME, "%s: expected %s, got '%s'", what, list, text);
-    return -1;
-}
-
-static cg_rgbaf linear(cg_rgba8 c)
-{
-    return cg_rgba8_to_linear(c);
-}
-
 static int run(int argc, char **argv)
 {
-    const char *mesh_path = NULL, *out_path = NULL;
-    int width = 800, height = 600, have_eye = 0, have_target = 0, have_from = 0, algorithm = 0;
-    long repeat = 0, threads = 1;
-    int output_depth = 0;
+    const char *mesh_path = NULL;
+    int have_from = 0, algorithm = 0, output_depth = 0;
+    render_cli_options common;
+    render_cli_options_default(&common);
     cg_render_options o;
-    cg_render_options_default(&o);
-    o.frame_camera = 0;
-    double fov = 45, ortho = 0, crease = 60;
-    cg_vec3 eye = {0, 0, 1}, target = {0, 0, 0}, up = {0, 1, 0}, from = {0, 0, 1};
+    double crease = 60;
+    cg_vec3 from = {0, 0, 1};
     static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", "depth-sort"};
-    static const char *const shadings[] = {"flat", "gouraud", "phong"};
     static const char *const culls[] = {"none", "back"};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v;
@@ -79,143 +54,83 @@ static int run(int argc, char **argv)
             mesh_path = a;
             continue;
         }
+        int shared = render_cli_parse_option(NAME, argc, argv, &i, &common);
+        if (shared < 0)
+            return CLI_USAGE;
+        if (shared) {
+            if (cli_option_is(a, "--up") && !(cg_vec3_length(common.up) > 0))
+                return cli_usage_error(NAME, "--up: the up vector must not be zero");
+            continue;
+        }
 #define VALUE() \
     if (!(v = cli_option_value(NAME, argc, argv, &i))) \
         return CLI_USAGE
-        if (cli_option_is(a, "-o") || cli_option_is(a, "--output")) {
-            VALUE();
-            out_path = v;
-        } else if (cli_option_is(a, "--size")) {
-            VALUE();
-            if (cli_parse_size(NAME, "--size", v, &width, &height))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--eye")) {
-            VALUE();
-            if (cli_parse_vec3(NAME, "--eye", v, &eye))
-                return CLI_USAGE;
-            have_eye = 1;
-        } else if (cli_option_is(a, "--view-from")) {
+        if (cli_option_is(a, "--view-from")) {
             VALUE();
             if (cli_parse_vec3(NAME, "--view-from", v, &from))
                 return CLI_USAGE;
             if (!(cg_vec3_length(from) > 0))
                 return cli_usage_error(NAME, "--view-from: the direction must not be zero");
             have_from = 1;
-        } else if (cli_option_is(a, "--target")) {
-            VALUE();
-            if (cli_parse_vec3(NAME, "--target", v, &target))
-                return CLI_USAGE;
-            have_target = 1;
-        } else if (cli_option_is(a, "--up")) {
-            VALUE();
-            if (cli_parse_vec3(NAME, "--up", v, &up))
-                return CLI_USAGE;
-            if (!(cg_vec3_length(up) > 0))
-                return cli_usage_error(NAME, "--up: the up vector must not be zero");
-        } else if (cli_option_is(a, "--fov")) {
-            VALUE();
-            if (cli_parse_double(NAME, "--fov", v, &fov))
-                return CLI_USAGE;
-            if (!(fov > 0 && fov < 180))
-                return cli_usage_error(NAME, "--fov: expected degrees between 0 and 180, got '%s'", v);
-            ortho = 0;
-        } else if (cli_option_is(a, "--ortho")) {
-            VALUE();
-            if (cli_parse_double(NAME, "--ortho", v, &ortho))
-                return CLI_USAGE;
-            if (!(ortho > 0) || !isfinite(ortho))
-                return cli_usage_error(NAME, "--ortho: expected a positive height, got '%s'", v);
-        } else if (cli_option_is(a, "--light-dir")) {
-            VALUE();
-            cg_vec3 d;
-            if (cli_parse_vec3(NAME, "--light-dir", v, &d))
-                return CLI_USAGE;
-            if (!(cg_vec3_length(d) > 0))
-                return cli_usage_error(NAME, "--light-dir: the direction must not be zero");
-            if (o.light_count == CG_RENDER_MAX_LIGHTS)
-                return cli_usage_error(NAME, "--light-dir: at most %d lights", CG_RENDER_MAX_LIGHTS);
-            o.lights[o.light_count].direction = d;
-            o.lights[o.light_count++].intensity = 1;
-        } else if (cli_option_is(a, "--ambient") || cli_option_is(a, "--specular")
-                   || cli_option_is(a, "--shininess") || cli_option_is(a, "--crease")) {
-            int which = cli_option_is(a, "--ambient") ? 0 : cli_option_is(a, "--specular") ? 1
-                        : cli_option_is(a, "--shininess") ? 2 : 3;
-            static const char *const names[] = {"--ambient", "--specular", "--shininess", "--crease"};
+        } else if (cli_option_is(a, "--specular") || cli_option_is(a, "--shininess")
+                   || cli_option_is(a, "--crease")) {
+            int which = cli_option_is(a, "--specular") ? 0 : cli_option_is(a, "--shininess") ? 1 : 2;
+            static const char *const names[] = {"--specular", "--shininess", "--crease"};
             double k;
             VALUE();
             if (cli_parse_double(NAME, names[which], v, &k))
                 return CLI_USAGE;
-            if (!(k >= 0) || (which == 3 && k > 180))
+            if (!(k >= 0) || (which == 2 && k > 180))
                 return cli_usage_error(NAME, "%s: expected a number >= 0%s, got '%s'", names[which],
-                                       which == 3 ? " and <= 180" : "", v);
+                                       which == 2 ? " and <= 180" : "", v);
             if (which == 0)
-                o.ambient = k;
+                common.render.specular = k;
             else if (which == 1)
-                o.specular = k;
-            else if (which == 2)
-                o.shininess = k;
+                common.render.shininess = k;
             else
                 crease = k;
-        } else if (cli_option_is(a, "--shading")) {
-            int s;
-            VALUE();
-            if (parse_choice("--shading", v, shadings, 3, &s))
-                return CLI_USAGE;
-            o.shading = (cg_shading)s;
         } else if (cli_option_is(a, "--cull")) {
             int c;
             VALUE();
-            if (parse_choice("--cull", v, culls, 2, &c))
+            if (render_cli_parse_choice(NAME, "--cull", v, culls, 2, &c))
                 return CLI_USAGE;
-            o.cull = (cg_cull_mode)c;
+            common.render.cull = (cg_cull_mode)c;
         } else if (cli_option_is(a, "--algorithm")) {
             VALUE();
-            if (parse_choice("--algorithm", v, algorithms, 4, &algorithm))
+            if (render_cli_parse_choice(NAME, "--algorithm", v, algorithms, 4, &algorithm))
                 return CLI_USAGE;
         } else if (cli_option_is(a, "--wireframe")) {
-            o.edges = CG_EDGES_WIREFRAME;
+            common.render.edges = CG_EDGES_WIREFRAME;
         } else if (cli_option_is(a, "--hidden-line")) {
-            o.edges = CG_EDGES_HIDDEN_LINE;
+            common.render.edges = CG_EDGES_HIDDEN_LINE;
         } else if (cli_option_is(a, "--output-depth")) {
             output_depth = 1;
         } else if (cli_option_is(a, "--edges")) {
-            o.edges = CG_EDGES_OVERLAY;
-        } else if (cli_option_is(a, "--threads")) {
-            VALUE();
-            if (cli_parse_long(NAME, "--threads", v, 1, 64, &threads))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--repeat")) {
-            VALUE();
-            if (cli_parse_long(NAME, "--repeat", v, 1, 100000, &repeat))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--background") || cli_option_is(a, "--color")
-                   || cli_option_is(a, "--edge-color")) {
-            int which = cli_option_is(a, "--background") ? 0 : cli_option_is(a, "--color") ? 1 : 2;
+            common.render.edges = CG_EDGES_OVERLAY;
+        } else if (cli_option_is(a, "--edge-color")) {
             cg_rgba8 c;
             VALUE();
-            if (cli_parse_color(NAME, which == 0 ? "--background" : which == 1 ? "--color" : "--edge-color",
-                                v, &c))
+            if (cli_parse_color(NAME, "--edge-color", v, &c))
                 return CLI_USAGE;
-            if (which == 0)
-                o.background = linear(c);
-            else if (which == 1)
-                o.color = linear(c);
-            else
-                o.edge_color = linear(c);
+            common.render.edge_color = cg_rgba8_to_linear(c);
         } else {
             return cli_usage_error(NAME, "unknown option '%s'", a);
         }
 #undef VALUE
     }
+    o = common.render;
+    const char *out_path = common.output;
+    int width = common.width, height = common.height;
+    int have_eye = common.have_eye, have_target = common.have_target;
+    int repeat = common.repeat;
+    double fov = common.fov_degrees, ortho = common.ortho_height;
+    cg_vec3 eye = common.eye, target = common.target, up = common.up;
     if (!mesh_path)
         return cli_usage_error(NAME, "expected a MESH file");
     if (have_eye && have_from)
         return cli_usage_error(NAME, "--eye and --view-from exclude each other");
-    if (!out_path)
-        return cli_usage_error(NAME, "expected -o OUT (.png, .ppm or .pgm)");
-    if (cg_file_format_from_path(out_path) == CG_FILE_UNKNOWN)
-        return cli_usage_error(NAME, "%s: unknown output format (expected .png, .ppm or .pgm)",
-                               out_path);
+    if (render_cli_check_output(NAME, out_path) != CLI_OK)
+        return CLI_USAGE;
     if (render_scene_is_scene(mesh_path)) {
         /* A scene file: the options given on the command line win over its own. */
         render_scene_overrides so = render_scene_no_overrides();
@@ -228,11 +143,10 @@ static int run(int argc, char **argv)
             so.height = height;
         }
         if (render_scene_option_given(argc, argv, "--threads"))
-            so.threads = (int)threads;
-        so.repeat = (int)repeat;
+            so.threads = o.threads;
+        so.repeat = repeat;
         return render_scene_file(mesh_path, out_path, &so);
     }
-    o.threads = (int)threads;
     o.crease_angle = cg_radians(crease);
 
     cg_mesh *mesh;

@@ -22,10 +22,10 @@ static int render(demo_context *context)
     raytrace_settings s;
     raytrace_settings_default(&s);
     s.extra.classic_scene = 1;
-    s.width = 480;
-    s.height = 320;
+    s.common.width = 480;
+    s.common.height = 320;
     s.extra.samples = 4;
-    s.render.threads = 2;
+    s.common.render.threads = 2;
     s.quiet = 1;
     if (add(context, &s, "trace-spheres.png",
             "Whitted ray tracing through a SAH bounding volume hierarchy: a glass sphere "
@@ -40,18 +40,18 @@ static int render(demo_context *context)
     fclose(probe);
     raytrace_settings_default(&s);
     s.input = CG_SOURCE_DIR "/data/meshes/bunny.obj";
-    s.width = 400;
-    s.height = 320;
+    s.common.width = 400;
+    s.common.height = 320;
     s.extra.samples = 4;
     s.extra.floor = 1;
-    s.render.threads = 2;
-    s.render.color = cg_rgba8_to_linear((cg_rgba8){225, 190, 150, 255});
-    s.render.lights[0].direction = cg_vec3_make(-1, 1, 0.2);
-    s.eye = cg_vec3_make(5, 9, 18);
-    s.target = cg_vec3_make(0, 3.5, 0);
-    s.have_eye = s.have_target = 1;
-    s.render.lights[0].intensity = 1;
-    s.render.light_count = 1;
+    s.common.render.threads = 2;
+    s.common.render.color = cg_rgba8_to_linear((cg_rgba8){225, 190, 150, 255});
+    s.common.render.lights[0].direction = cg_vec3_make(-1, 1, 0.2);
+    s.common.eye = cg_vec3_make(5, 9, 18);
+    s.common.target = cg_vec3_make(0, 3.5, 0);
+    s.common.have_eye = s.common.have_target = 1;
+    s.common.render.lights[0].intensity = 1;
+    s.common.render.light_count = 1;
     s.quiet = 1;
     if (add(context, &s, "trace-bunny.png",
             "A scanned mesh (Stanford bunny, 3,674 triangles) ray traced with hard shadows on a "

@@ -6,6 +6,7 @@
 #ifndef CG_TOOL_TRACE_COMMAND_H
 #define CG_TOOL_TRACE_COMMAND_H
 
+#include "render_options.h"
 #include "render_raytrace.h"
 #include "cg/render.h"
 
@@ -32,20 +33,13 @@ void render_raytrace_stats(const render_raytracer *tracer, double *build_seconds
  * rendered by render_scene.h with the ray tracer and the options given here
  * (size, shading, threads, --spp, --depth, --repeat) taking precedence. */
 typedef struct raytrace_settings {
-    const char *input;  /* mesh file, or NULL with extra.classic_scene */
-    const char *output; /* -o */
-    int width, height;  /* --size */
-    cg_vec3 eye, target, up;
-    int have_eye, have_target;
-    double fov_degrees, ortho_height; /* ortho_height > 0: parallel view */
-    int repeat;         /* --repeat */
-    int stats;          /* --stats */
-    int quiet;          /* --quiet: no progress */
-    int have_background;
+    const char *input;         /* mesh file, or NULL with extra.classic_scene */
+    render_cli_options common; /* the options `cg render` shares (render_options.h) */
+    int stats;                 /* --stats */
+    int quiet;                 /* --quiet: no progress */
     /* Which settings the command line gave (a scene file keeps its own
      * for the others). */
-    int have_size, have_shading, have_threads, have_samples, have_depth;
-    cg_render_options render; /* lights, ambient, shading, colours, threads */
+    int have_samples, have_depth;
     raytrace_extra extra;
 } raytrace_settings;
 

@@ -1,4 +1,4 @@
-/* cg render MESH -o OUT: the rasterizing pipeline (z-buffer or painter's) or
+/* cg render MESH|SCENE.json -o OUT: the rasterizing pipeline (z-buffer or painter's) or
  * the ray tracer on a mesh file. */
 #include "cli.h"
 #include "command.h"
@@ -261,10 +261,14 @@ static int run(int argc, char **argv)
 
 const cg_command cg_command_render = {
     NAME,
-    "render a mesh file: z-buffer, painter's or ray tracing",
-    "usage: cg render MESH -o OUT [options]\n\n"
+    "render a mesh or scene file: z-buffer, painter's or ray tracing",
+    "usage: cg render MESH -o OUT [options]\n"
+    "       cg render SCENE.json -o OUT [--algorithm A] [--shading S] [--size WxH]\n"
+    "                                   [--threads N] [--repeat N]\n\n"
     "Renders MESH (OBJ, PLY, OFF or STL, optionally gzip-compressed) and writes\n"
-    "OUT in the format of its extension (.png, .ppm, .pgm).\n\n"
+    "OUT in the format of its extension (.png, .ppm, .pgm).  A SCENE.json file\n"
+    "(docs/scene-format.md) brings its own camera, lights, materials and objects;\n"
+    "the options listed on its line above override the scene's own settings.\n\n"
     "Camera (default: looking along -z, placed so the whole mesh fills the view):\n"
     "  --size WxH            image size (default 800x600)\n"
     "  --eye X,Y,Z           camera position (then no automatic framing)\n"

@@ -59,6 +59,17 @@ static inline float v4_min3(v4 a, float x)
     v4 b = _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)), c = _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
     return _mm_cvtss_f32(_mm_min_ss(_mm_min_ss(a, b), _mm_min_ss(c, _mm_set_ss(x))));
 }
+/* Lanes 0 and 1: max (min) of lanes 0..2 of a, and of b. */
+static inline v4 v4_max2x3(v4 a, v4 b)
+{
+    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b); /* ax bx ay by, az bz .. */
+    return _mm_max_ps(_mm_max_ps(xy, zw), _mm_movehl_ps(xy, xy));
+}
+static inline v4 v4_min2x3(v4 a, v4 b)
+{
+    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b);
+    return _mm_min_ps(_mm_min_ps(xy, zw), _mm_movehl_ps(xy, xy));
+}
 #else
 typedef struct v4 { float f[4]; } v4;
 static inline v4 v4_load(const float *p) { v4 r; memcpy(r.f, p, sizeof r.f); return r; }
@@ -674,6 +685,41 @@ static inline int hit_box(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_n
     return tn <= tf;
 }
 
+/* Both children of a node at once: hit_box's operations, with the two
+ * boxes' horizontal reductions shared (lanes 0 and 1 hold the first and the
+ * second box), so each decision is the one hit_box would make.  Bit 0 of
+ * the result: the first box is hit; bit 1: the second. */
+static inline int hit_boxes(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_node *first,
+                            const bvh_node *second, v4 t_min4, v4 t_far_limit4,
+                            float t_far_limit, float t_near[2])
+{
+#if defined(__SSE2__)
+    if (ray->flat_axes) {
+        int a = hit_box_flat(ray, first, t_far_limit, &t_near[0]);
+        return a | hit_box_flat(ray, second, t_far_limit, &t_near[1]) << 1;
+    }
+    v4 a0 = v4_mul(v4_sub(v4_load3(first->lo), origin), inverse);
+    v4 a1 = v4_mul(v4_sub(v4_load3(first->hi), origin), inverse);
+    v4 b0 = v4_mul(v4_sub(v4_load3(second->lo), origin), inverse);
+    v4 b1 = v4_mul(v4_sub(v4_load3(second->hi), origin), inverse);
+    v4 tn = v4_max2x3(v4_min(a0, a1), v4_min(b0, b1));
+    v4 tf = v4_min2x3(v4_max(a0, a1), v4_max(b0, b1));
+    tn = v4_max(tn, t_min4);
+    tf = v4_mul(v4_min(tf, v4_set(FLT_MAX)), v4_set(1.0000003576f));
+    tf = v4_min(tf, t_far_limit4);
+    float near4[4];
+    v4_store(near4, tn);
+    t_near[0] = near4[0];
+    t_near[1] = near4[1];
+    return _mm_movemask_ps(_mm_cmple_ps(tn, tf)) & 3;
+#else
+    (void)t_min4;
+    (void)t_far_limit4;
+    int a = hit_box(ray, origin, inverse, first, t_far_limit, &t_near[0]);
+    return a | hit_box(ray, origin, inverse, second, t_far_limit, &t_near[1]) << 1;
+#endif
+}
+
 /* How far beyond the best hit so far a box may begin and still be entered:
  * the box and triangle tests round differently, so a triangle touching its
  * box's boundary can report a t an ulp or so before the computed entry. */
@@ -704,7 +750,7 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
     float best_t = t_max, limit = cull_limit(best_t);
     const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
     const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
-    v4 o4 = v4_load(o3), i4 = v4_load(i3);
+    v4 o4 = v4_load(o3), i4 = v4_load(i3), t_min4 = v4_set(ray->t_min), limit4 = v4_set(limit);
     uint32_t best_id = UINT32_MAX;
     float best_u = 0, best_v = 0;
     int found = 0;
@@ -733,30 +779,32 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
                     best_v = v;
                     found = 1;
                     limit = cull_limit(t);
+                    limit4 = v4_set(limit);
                 }
             }
         } else {
             uint32_t left = index + 1, right = node->offset;
-            float tl, tr;
-            int hl = hit_box(ray, o4, i4, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(ray, o4, i4, &bvh->nodes[right], limit, &tr);
-            if (hl && hr) {
-                if (tr < tl) {
+            float tb[2];
+            int h = hit_boxes(ray, o4, i4, &bvh->nodes[left], &bvh->nodes[right], t_min4,
+                              limit4, limit, tb);
+            if (h == 3) {
+                if (tb[1] < tb[0]) {
                     uint32_t s = left;
                     left = right;
                     right = s;
-                    float st = tl;
-                    tl = tr;
-                    tr = st;
+                    tb[1] = tb[0];
                 }
                 stack[top] = right;
-                stack_t[top] = tr;
+                /* A shadow ray's limit never shrinks, so what it pushed
+                 * stays worth visiting: no distance to keep. */
+                if (!any_hit)
+                    stack_t[top] = tb[1];
                 top++;
                 index = left;
                 continue;
             }
-            if (hl || hr) {
-                index = hl ? left : right;
+            if (h) {
+                index = h == 1 ? left : right;
                 continue;
             }
         }
@@ -765,7 +813,7 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
             if (top == 0)
                 goto done;
             top--;
-            if (stack_t[top] <= limit)
+            if (any_hit || stack_t[top] <= limit)
                 break;
         }
         index = stack[top];

@@ -144,6 +144,15 @@ static inline void bbox_grow(bbox *b, v4 lo, v4 hi)
 /* Half the surface area (the factor cancels in the SAH); 0 when empty. */
 static inline float bbox_area(const bbox *b)
 {
+#if defined(__SSE2__)
+    /* The scalar formula below, lane by lane: (dx dy + dy dz) + dz dx. */
+    v4 d = _mm_sub_ps(b->hi, b->lo);
+    if (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) & 7)
+        return 0;
+    v4 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1)));
+    v4 s = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+    return _mm_cvtss_f32(_mm_add_ss(s, _mm_movehl_ps(p, p)));
+#else
     float lo[4], hi[4];
     v4_store(lo, b->lo);
     v4_store(hi, b->hi);
@@ -151,6 +160,7 @@ static inline float bbox_area(const bbox *b)
     if (dx < 0 || dy < 0 || dz < 0)
         return 0;
     return dx * dy + dy * dz + dz * dx;
+#endif
 }
 
 typedef struct builder {
@@ -178,12 +188,13 @@ static uint32_t make_node(builder *b, const bbox *bounds)
     return index;
 }
 
-/* Bin coordinates of a centroid (times 2: lo + hi) on the three axes. */
-static inline void bin_of(v4 centroid, v4 origin, v4 scale, int bins, int *k)
+/* Bin coordinates of a centroid (times 2: lo + hi) on the three axes,
+ * clamped to [0, last] in float before truncation (NaN gives 0): for the
+ * values binning meets, the bins clamping the integers would give. */
+static inline void bin_of(v4 centroid, v4 origin, v4 scale, v4 last, int *k)
 {
-    v4_to_int(v4_mul(v4_sub(centroid, origin), scale), k);
-    for (int a = 0; a < 3; a++)
-        k[a] = k[a] < 0 ? 0 : k[a] >= bins ? bins - 1 : k[a];
+    v4 x = v4_mul(v4_sub(centroid, origin), scale);
+    v4_to_int(v4_min(v4_max(x, v4_set(0)), last), k);
 }
 
 /* The split of a node: where, and the children's bounds. */
@@ -210,7 +221,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     }
     if (!any)
         return 0;
-    v4 origin = centroids->lo, scale = v4_load(sc);
+    v4 origin = centroids->lo, scale = v4_load(sc), last = v4_set((float)(nb - 1));
     bbox bins[3][BINS];
     uint32_t counts[3][BINS];
     for (int a = 0; a < 3; a++)
@@ -221,7 +232,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     for (size_t i = begin; i < end; i++) {
         v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi);
         int k[4];
-        bin_of(v4_add(lo, hi), origin, scale, nb, k);
+        bin_of(v4_add(lo, hi), origin, scale, last, k);
         for (int a = 0; a < 3; a++) {
             bbox_grow(&bins[a][k[a]], lo, hi);
             counts[a][k[a]]++;
@@ -278,7 +289,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     while (i < j) {
         v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi), c = v4_add(lo, hi);
         int k[4];
-        bin_of(c, origin, scale, nb, k);
+        bin_of(c, origin, scale, last, k);
         if (k[best_axis] <= best_bin) {
             bbox_grow(&out->left_centroids, c, c);
             i++;

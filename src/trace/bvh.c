@@ -798,19 +798,24 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
             float tb[2];
             int h = hit_boxes(ray, o4, i4, &bvh->nodes[left], &bvh->nodes[right], t_min4,
                               limit4, limit, tb);
-            if (h) {
-                /* Enter the nearer box hit; when both are, push the other.
-                 * Written with selects rather than branches, which the
-                 * processor could not predict. */
-                int swap = (h == 2) | ((h == 3) & (tb[1] < tb[0]));
-                uint32_t near = swap ? right : left, far = swap ? left : right;
-                stack[top] = far;
+            if (h == 3) {
+                if (tb[1] < tb[0]) {
+                    uint32_t s = left;
+                    left = right;
+                    right = s;
+                    tb[1] = tb[0];
+                }
+                stack[top] = right;
                 /* A shadow ray's limit never shrinks, so what it pushed
                  * stays worth visiting: no distance to keep. */
                 if (!any_hit)
-                    stack_t[top] = swap ? tb[0] : tb[1];
-                top += h == 3;
-                index = near;
+                    stack_t[top] = tb[1];
+                top++;
+                index = left;
+                continue;
+            }
+            if (h) {
+                index = h == 1 ? left : right;
                 continue;
             }
         }

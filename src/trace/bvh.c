@@ -570,7 +570,10 @@ void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out)
 
 /* ---- rays and the triangle test ---------------------------------------- */
 
-int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
+/* The ray's checks and its data for the slab test (origin, inverse, flat
+ * axes) and the watertight test's dominant axis kz; 0 when the ray is not
+ * finite or has zero direction. */
+static int ray_setup_slabs(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
 {
     double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
     int kz = 0;
@@ -584,8 +587,7 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
         return 0;
     ray->flat_axes = 0;
     for (int a = 0; a < 3; a++) {
-        ray->dorigin[a] = o[a];
-        ray->ddirection[a] = d[a];
+        ray->direction[a] = d[a];
         ray->origin[a] = (float)o[a];
         float f = (float)d[a];
         /* A zero (or float-underflowing) component is handled apart by the
@@ -596,7 +598,18 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
         }
         ray->inverse[a] = 1.0f / f;
     }
-    int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    ray->kz = kz;
+    ray->t_min = (float)t_min;
+    return 1;
+}
+
+/* The rest of the watertight test's data: the axis permutation and the
+ * shear.  Apart, so that rays missing the BVH's root box (most primary
+ * rays of a framed mesh) skip its three divisions. */
+static void ray_setup_shear(bvh_ray *ray)
+{
+    const double *d = ray->direction;
+    int kz = ray->kz, kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
     if (d[kz] < 0) {
         int swap = kx;
         kx = ky;
@@ -604,11 +617,16 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
     }
     ray->kx = kx;
     ray->ky = ky;
-    ray->kz = kz;
     ray->shear_x = (float)(d[kx] / d[kz]);
     ray->shear_y = (float)(d[ky] / d[kz]);
     ray->shear_z = (float)(1.0 / d[kz]);
-    ray->t_min = (float)t_min;
+}
+
+int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
+{
+    if (!ray_setup_slabs(ray, origin, direction, t_min))
+        return 0;
+    ray_setup_shear(ray);
     return 1;
 }
 
@@ -754,8 +772,8 @@ static float clamp_far(double t_max)
 
 /* Ordered traversal.  Nearest hit (any_hit 0): the best (t, index) with t in
  * (t_min, t_max].  Shadow query (any_hit 1): stops at the first t in
- * (t_min, t_max). */
-static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, int any_hit,
+ * (t_min, t_max).  The ray comes with its slab data (ray_setup_slabs). */
+static inline int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any_hit,
                            cg_bvh_hit *hit)
 {
     float best_t = t_max, limit = cull_limit(best_t);
@@ -771,6 +789,7 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
     float tn;
     if (!hit_box(ray, o4, i4, &bvh->nodes[0], limit, &tn))
         return 0;
+    ray_setup_shear(ray);
     uint32_t index = 0;
     for (;;) {
         const bvh_node *node = &bvh->nodes[index];
@@ -843,7 +862,7 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
                      double t_max, cg_bvh_hit *hit)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
+    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 0, hit);
@@ -853,7 +872,7 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
                     double t_max)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
+    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 1, NULL);

@@ -59,6 +59,17 @@ static inline float v4_min3(v4 a, float x)
     v4 b = _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)), c = _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
     return _mm_cvtss_f32(_mm_min_ss(_mm_min_ss(a, b), _mm_min_ss(c, _mm_set_ss(x))));
 }
+/* Lanes 0 and 1: max (min) of lanes 0..2 of a, and of b. */
+static inline v4 v4_max2x3(v4 a, v4 b)
+{
+    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b); /* ax bx ay by, az bz .. */
+    return _mm_max_ps(_mm_max_ps(xy, zw), _mm_movehl_ps(xy, xy));
+}
+static inline v4 v4_min2x3(v4 a, v4 b)
+{
+    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b);
+    return _mm_min_ps(_mm_min_ps(xy, zw), _mm_movehl_ps(xy, xy));
+}
 #else
 typedef struct v4 { float f[4]; } v4;
 static inline v4 v4_load(const float *p) { v4 r; memcpy(r.f, p, sizeof r.f); return r; }
@@ -133,6 +144,15 @@ static inline void bbox_grow(bbox *b, v4 lo, v4 hi)
 /* Half the surface area (the factor cancels in the SAH); 0 when empty. */
 static inline float bbox_area(const bbox *b)
 {
+#if defined(__SSE2__)
+    /* The scalar formula below, lane by lane: (dx dy + dy dz) + dz dx. */
+    v4 d = _mm_sub_ps(b->hi, b->lo);
+    if (_mm_movemask_ps(_mm_cmplt_ps(d, _mm_setzero_ps())) & 7)
+        return 0;
+    v4 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1)));
+    v4 s = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+    return _mm_cvtss_f32(_mm_add_ss(s, _mm_movehl_ps(p, p)));
+#else
     float lo[4], hi[4];
     v4_store(lo, b->lo);
     v4_store(hi, b->hi);
@@ -140,6 +160,7 @@ static inline float bbox_area(const bbox *b)
     if (dx < 0 || dy < 0 || dz < 0)
         return 0;
     return dx * dy + dy * dz + dz * dx;
+#endif
 }
 
 typedef struct builder {
@@ -167,12 +188,13 @@ static uint32_t make_node(builder *b, const bbox *bounds)
     return index;
 }
 
-/* Bin coordinates of a centroid (times 2: lo + hi) on the three axes. */
-static inline void bin_of(v4 centroid, v4 origin, v4 scale, int bins, int *k)
+/* Bin coordinates of a centroid (times 2: lo + hi) on the three axes,
+ * clamped to [0, last] in float before truncation (NaN gives 0): for the
+ * values binning meets, the bins clamping the integers would give. */
+static inline void bin_of(v4 centroid, v4 origin, v4 scale, v4 last, int *k)
 {
-    v4_to_int(v4_mul(v4_sub(centroid, origin), scale), k);
-    for (int a = 0; a < 3; a++)
-        k[a] = k[a] < 0 ? 0 : k[a] >= bins ? bins - 1 : k[a];
+    v4 x = v4_mul(v4_sub(centroid, origin), scale);
+    v4_to_int(v4_min(v4_max(x, v4_set(0)), last), k);
 }
 
 /* The split of a node: where, and the children's bounds. */
@@ -199,7 +221,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     }
     if (!any)
         return 0;
-    v4 origin = centroids->lo, scale = v4_load(sc);
+    v4 origin = centroids->lo, scale = v4_load(sc), last = v4_set((float)(nb - 1));
     bbox bins[3][BINS];
     uint32_t counts[3][BINS];
     for (int a = 0; a < 3; a++)
@@ -210,7 +232,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     for (size_t i = begin; i < end; i++) {
         v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi);
         int k[4];
-        bin_of(v4_add(lo, hi), origin, scale, nb, k);
+        bin_of(v4_add(lo, hi), origin, scale, last, k);
         for (int a = 0; a < 3; a++) {
             bbox_grow(&bins[a][k[a]], lo, hi);
             counts[a][k[a]]++;
@@ -267,7 +289,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     while (i < j) {
         v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi), c = v4_add(lo, hi);
         int k[4];
-        bin_of(c, origin, scale, nb, k);
+        bin_of(c, origin, scale, last, k);
         if (k[best_axis] <= best_bin) {
             bbox_grow(&out->left_centroids, c, c);
             i++;
@@ -548,7 +570,10 @@ void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out)
 
 /* ---- rays and the triangle test ---------------------------------------- */
 
-int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
+/* The ray's checks and its data for the slab test (origin, inverse, flat
+ * axes) and the watertight test's dominant axis kz; 0 when the ray is not
+ * finite or has zero direction. */
+static int ray_setup_slabs(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
 {
     double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
     int kz = 0;
@@ -562,8 +587,7 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
         return 0;
     ray->flat_axes = 0;
     for (int a = 0; a < 3; a++) {
-        ray->dorigin[a] = o[a];
-        ray->ddirection[a] = d[a];
+        ray->direction[a] = d[a];
         ray->origin[a] = (float)o[a];
         float f = (float)d[a];
         /* A zero (or float-underflowing) component is handled apart by the
@@ -574,7 +598,18 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
         }
         ray->inverse[a] = 1.0f / f;
     }
-    int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    ray->kz = kz;
+    ray->t_min = (float)t_min;
+    return 1;
+}
+
+/* The rest of the watertight test's data: the axis permutation and the
+ * shear.  Apart, so that rays missing the BVH's root box (most primary
+ * rays of a framed mesh) skip its three divisions. */
+static void ray_setup_shear(bvh_ray *ray)
+{
+    const double *d = ray->direction;
+    int kz = ray->kz, kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
     if (d[kz] < 0) {
         int swap = kx;
         kx = ky;
@@ -582,11 +617,16 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
     }
     ray->kx = kx;
     ray->ky = ky;
-    ray->kz = kz;
     ray->shear_x = (float)(d[kx] / d[kz]);
     ray->shear_y = (float)(d[ky] / d[kz]);
     ray->shear_z = (float)(1.0 / d[kz]);
-    ray->t_min = (float)t_min;
+}
+
+int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
+{
+    if (!ray_setup_slabs(ray, origin, direction, t_min))
+        return 0;
+    ray_setup_shear(ray);
     return 1;
 }
 
@@ -674,6 +714,41 @@ static inline int hit_box(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_n
     return tn <= tf;
 }
 
+/* Both children of a node at once: hit_box's operations, with the two
+ * boxes' horizontal reductions shared (lanes 0 and 1 hold the first and the
+ * second box), so each decision is the one hit_box would make.  Bit 0 of
+ * the result: the first box is hit; bit 1: the second. */
+static inline int hit_boxes(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_node *first,
+                            const bvh_node *second, v4 t_min4, v4 t_far_limit4,
+                            float t_far_limit, float t_near[2])
+{
+#if defined(__SSE2__)
+    if (ray->flat_axes) {
+        int a = hit_box_flat(ray, first, t_far_limit, &t_near[0]);
+        return a | hit_box_flat(ray, second, t_far_limit, &t_near[1]) << 1;
+    }
+    v4 a0 = v4_mul(v4_sub(v4_load3(first->lo), origin), inverse);
+    v4 a1 = v4_mul(v4_sub(v4_load3(first->hi), origin), inverse);
+    v4 b0 = v4_mul(v4_sub(v4_load3(second->lo), origin), inverse);
+    v4 b1 = v4_mul(v4_sub(v4_load3(second->hi), origin), inverse);
+    v4 tn = v4_max2x3(v4_min(a0, a1), v4_min(b0, b1));
+    v4 tf = v4_min2x3(v4_max(a0, a1), v4_max(b0, b1));
+    tn = v4_max(tn, t_min4);
+    tf = v4_mul(v4_min(tf, v4_set(FLT_MAX)), v4_set(1.0000003576f));
+    tf = v4_min(tf, t_far_limit4);
+    float near4[4];
+    v4_store(near4, tn);
+    t_near[0] = near4[0];
+    t_near[1] = near4[1];
+    return _mm_movemask_ps(_mm_cmple_ps(tn, tf)) & 3;
+#else
+    (void)t_min4;
+    (void)t_far_limit4;
+    int a = hit_box(ray, origin, inverse, first, t_far_limit, &t_near[0]);
+    return a | hit_box(ray, origin, inverse, second, t_far_limit, &t_near[1]) << 1;
+#endif
+}
+
 /* How far beyond the best hit so far a box may begin and still be entered:
  * the box and triangle tests round differently, so a triangle touching its
  * box's boundary can report a t an ulp or so before the computed entry. */
@@ -697,14 +772,14 @@ static float clamp_far(double t_max)
 
 /* Ordered traversal.  Nearest hit (any_hit 0): the best (t, index) with t in
  * (t_min, t_max].  Shadow query (any_hit 1): stops at the first t in
- * (t_min, t_max). */
-static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, int any_hit,
+ * (t_min, t_max).  The ray comes with its slab data (ray_setup_slabs). */
+static inline int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any_hit,
                            cg_bvh_hit *hit)
 {
     float best_t = t_max, limit = cull_limit(best_t);
     const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
     const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
-    v4 o4 = v4_load(o3), i4 = v4_load(i3);
+    v4 o4 = v4_load(o3), i4 = v4_load(i3), t_min4 = v4_set(ray->t_min), limit4 = v4_set(limit);
     uint32_t best_id = UINT32_MAX;
     float best_u = 0, best_v = 0;
     int found = 0;
@@ -714,6 +789,7 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
     float tn;
     if (!hit_box(ray, o4, i4, &bvh->nodes[0], limit, &tn))
         return 0;
+    ray_setup_shear(ray);
     uint32_t index = 0;
     for (;;) {
         const bvh_node *node = &bvh->nodes[index];
@@ -733,30 +809,32 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
                     best_v = v;
                     found = 1;
                     limit = cull_limit(t);
+                    limit4 = v4_set(limit);
                 }
             }
         } else {
             uint32_t left = index + 1, right = node->offset;
-            float tl, tr;
-            int hl = hit_box(ray, o4, i4, &bvh->nodes[left], limit, &tl);
-            int hr = hit_box(ray, o4, i4, &bvh->nodes[right], limit, &tr);
-            if (hl && hr) {
-                if (tr < tl) {
+            float tb[2];
+            int h = hit_boxes(ray, o4, i4, &bvh->nodes[left], &bvh->nodes[right], t_min4,
+                              limit4, limit, tb);
+            if (h == 3) {
+                if (tb[1] < tb[0]) {
                     uint32_t s = left;
                     left = right;
                     right = s;
-                    float st = tl;
-                    tl = tr;
-                    tr = st;
+                    tb[1] = tb[0];
                 }
                 stack[top] = right;
-                stack_t[top] = tr;
+                /* A shadow ray's limit never shrinks, so what it pushed
+                 * stays worth visiting: no distance to keep. */
+                if (!any_hit)
+                    stack_t[top] = tb[1];
                 top++;
                 index = left;
                 continue;
             }
-            if (hl || hr) {
-                index = hl ? left : right;
+            if (h) {
+                index = h == 1 ? left : right;
                 continue;
             }
         }
@@ -765,7 +843,7 @@ static inline int traverse(const cg_bvh *bvh, const bvh_ray *ray, float t_max, i
             if (top == 0)
                 goto done;
             top--;
-            if (stack_t[top] <= limit)
+            if (any_hit || stack_t[top] <= limit)
                 break;
         }
         index = stack[top];
@@ -784,7 +862,7 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
                      double t_max, cg_bvh_hit *hit)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
+    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 0, hit);
@@ -794,7 +872,7 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
                     double t_max)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !bvh_ray_setup(&ray, origin, direction, t_min)
+    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 1, NULL);

@@ -36,7 +36,7 @@ typedef struct bvh_ray {
     int kx, ky, kz;
     int flat_axes; /* bit a: direction component a is zero */
     float t_min;
-    double dorigin[3], ddirection[3]; /* for the double-precision fallback */
+    double direction[3]; /* as given, for the shear */
 } bvh_ray;
 
 /* Prepares the ray; 0 when it is not finite or has zero direction. */

@@ -129,7 +129,16 @@ static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float 
         g->c_step[j] = s1 * g->c[1][j] + s2 * g->c[2][j];
 }
 
-static inline size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0, int y0,
+/* raster_mode is written once and specialized by render_raster for each
+ * shading mode and image format: its constant arguments must reach the
+ * per-pixel loop, so it is forced inline where the compiler allows. */
+#if defined(__GNUC__)
+#define RENDER_SPECIALIZE __attribute__((always_inline)) inline
+#else
+#define RENDER_SPECIALIZE inline
+#endif
+
+static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0, int y0,
                                  int x1, int y1, const int mode, const int depth_test,
                                  const int rgba8)
 {

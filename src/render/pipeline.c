@@ -85,24 +85,23 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
                                int64_t w2, float *zrow, unsigned char *row, int x0, int begin,
                                int end, const int depth_test, const int rgba8)
 {
-    for (int i = begin; i < end;) {
-        int stop = end - i > RENDER_TILE ? i + RENDER_TILE : end;
+    float q = 0, c[3] = {0, 0, 0};
+    for (int i = begin, restart = begin; i < end; i++, w1 += g->step1, w2 += g->step2,
+             q += g->q_step, c[0] += g->c_step[0], c[1] += g->c_step[1], c[2] += g->c_step[2]) {
         float l1 = (float)w1 * g->ia, l2 = (float)w2 * g->ia;
-        float q = g->q[0] + l1 * g->q[1] + l2 * g->q[2];
-        float c[3];
-        for (int j = 0; j < 3; j++)
-            c[j] = g->c[0][j] + l1 * g->c[1][j] + l2 * g->c[2][j];
-        for (; i < stop; i++, w1 += g->step1, w2 += g->step2, q += g->q_step,
-                         c[0] += g->c_step[0], c[1] += g->c_step[1], c[2] += g->c_step[2]) {
-            float m1 = (float)w1 * g->ia, m2 = (float)w2 * g->ia;
-            float z = g->z0 + m1 * g->dz1 + m2 * g->dz2;
-            if (depth_test && !(z < zrow[i]))
-                continue;
-            zrow[i] = z;
-            float r = 1 / q;
-            float v[3] = {c[0] * r, c[1] * r, c[2] * r};
-            store(f, row, x0 + i, v, rgba8);
+        if (i == restart) {
+            q = g->q[0] + l1 * g->q[1] + l2 * g->q[2];
+            for (int j = 0; j < 3; j++)
+                c[j] = g->c[0][j] + l1 * g->c[1][j] + l2 * g->c[2][j];
+            restart += RENDER_TILE;
         }
+        float z = g->z0 + l1 * g->dz1 + l2 * g->dz2;
+        if (depth_test && !(z < zrow[i]))
+            continue;
+        zrow[i] = z;
+        float r = 1 / q;
+        float v[3] = {c[0] * r, c[1] * r, c[2] * r};
+        store(f, row, x0 + i, v, rgba8);
     }
 }
 

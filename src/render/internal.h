@@ -6,6 +6,7 @@
 #include "cg/light.h"
 #include "cg/color.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -80,9 +81,20 @@ typedef struct screen_vertex {
     float a[RENDER_MAX_ATTRIBUTES]; /* attributes (not divided by w) */
 } screen_vertex;
 
-/* Maps a clipped vertex to the screen of a width x height image. */
-void render_project(const clip_vertex *v, int width, int height, int attribute_count,
-                    screen_vertex *out);
+/* Maps a clipped vertex to the screen of a width x height image.  Inline
+ * (like render_snap) because the vertex stage projects every vertex of
+ * every frame. */
+static inline void render_project(const clip_vertex *v, int width, int height,
+                                  int attribute_count, screen_vertex *out)
+{
+    double iw = 1.0 / v->c[3];
+    out->x = (v->c[0] * iw + 1.0) * 0.5 * width;
+    out->y = (1.0 - v->c[1] * iw) * 0.5 * height;
+    out->z = v->c[2] * iw * 0.5 + 0.5;
+    out->iw = iw;
+    for (int i = 0; i < attribute_count; i++)
+        out->a[i] = v->a[i];
+}
 
 /* A triangle ready to rasterize: fixed-point vertices ordered clockwise as
  * seen on the screen (positive edge functions inside), the
@@ -109,8 +121,30 @@ typedef struct render_corner {
     const float *a;
 } render_corner;
 
+#define RENDER_SUBPIXEL (1 << CG_RASTER_SUBPIXEL_BITS)
+/* Vertices within this many pixels around the image are rasterized exactly;
+ * fixed-point values then stay below 2^29 and edge functions within 64 bits. */
+#define RENDER_GUARD_BAND (1 << 20)
+
 /* Rounds a pixel coordinate to the 1/256 grid (clamped to the guard band). */
-int32_t render_snap(double value, int size);
+static inline int32_t render_snap(double value, int size)
+{
+    double s = value * RENDER_SUBPIXEL + 0.5;
+    /* floor without a library call (NaN is not possible here). */
+    if (s > -4e9 && s < 4e9) {
+        double t = (double)(int64_t)s;
+        s = t > s ? t - 1 : t;
+    } else {
+        s = floor(s);
+    }
+    double lo = -(double)RENDER_GUARD_BAND * RENDER_SUBPIXEL;
+    double hi = ((double)size + RENDER_GUARD_BAND) * RENDER_SUBPIXEL;
+    if (!(s >= lo))
+        s = lo;
+    if (s > hi)
+        s = hi;
+    return (int32_t)s;
+}
 void render_corner_from_screen(const screen_vertex *s, int width, int height,
                                render_corner *out);
 /* Orients the triangle for the rasterizer; returns 0 when it covers no pixel

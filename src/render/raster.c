@@ -4,53 +4,14 @@
 
 #include <string.h>
 
-#define SUBPIXEL (1 << CG_RASTER_SUBPIXEL_BITS)
+#define SUBPIXEL RENDER_SUBPIXEL
+#define GUARD_BAND RENDER_GUARD_BAND
 #define HALF (SUBPIXEL / 2)
-
-void render_project(const clip_vertex *v, int width, int height, int attribute_count,
-                    screen_vertex *out)
-{
-    double iw = 1.0 / v->c[3];
-    out->x = (v->c[0] * iw + 1.0) * 0.5 * width;
-    out->y = (1.0 - v->c[1] * iw) * 0.5 * height;
-    out->z = v->c[2] * iw * 0.5 + 0.5;
-    out->iw = iw;
-    for (int i = 0; i < attribute_count; i++)
-        out->a[i] = v->a[i];
-}
-
-/* Vertices within this many pixels around the image are rasterized exactly;
- * fixed-point values then stay below 2^29 and edge functions within 64 bits. */
-#define GUARD_BAND (1 << 20)
-
-/* Rounds to the 1/256 grid and clamps to the guard band. */
-static int32_t snap(double value, int size)
-{
-    double s = value * SUBPIXEL + 0.5;
-    /* floor without a library call (NaN is not possible here). */
-    if (s > -4e9 && s < 4e9) {
-        double t = (double)(int64_t)s;
-        s = t > s ? t - 1 : t;
-    } else {
-        s = floor(s);
-    }
-    double lo = -(double)GUARD_BAND * SUBPIXEL, hi = ((double)size + GUARD_BAND) * SUBPIXEL;
-    if (!(s >= lo))
-        s = lo;
-    if (s > hi)
-        s = hi;
-    return (int32_t)s;
-}
 
 static int64_t floor_div(int64_t a, int64_t b)
 {
     int64_t q = a / b;
     return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
-}
-
-int32_t render_snap(double value, int size)
-{
-    return snap(value, size);
 }
 
 int render_setup_fixed(const render_corner *const v[3], int width, int height,
@@ -110,8 +71,8 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
 void render_corner_from_screen(const screen_vertex *s, int width, int height,
                                render_corner *out)
 {
-    out->x = snap(s->x, width);
-    out->y = snap(s->y, height);
+    out->x = render_snap(s->x, width);
+    out->y = render_snap(s->y, height);
     out->z = (float)s->z;
     out->iw = (float)s->iw;
     out->a = s->a;

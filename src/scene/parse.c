@@ -83,6 +83,13 @@ static void join(char *out, const char *path, const char *key)
     path_format(out, "%s%s%s", path, path[0] ? "." : "", key);
 }
 
+/* obj[key], or NULL when absent; key_path receives path.key. */
+static const cJSON *member(const cJSON *obj, const char *path, const char *key, char *key_path)
+{
+    join(key_path, path, key);
+    return cJSON_GetObjectItemCaseSensitive(obj, key);
+}
+
 /* Every key of obj must be one of allowed (NULL-terminated). */
 static cg_status check_keys(const parser *p, const char *path, const cJSON *obj,
                             const char *const *allowed)
@@ -114,11 +121,10 @@ static cg_status need_object(const parser *p, const char *path, const cJSON *v)
 static cg_status get_number(const parser *p, const char *path, const cJSON *obj, const char *key,
                             double min, double max, double *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE], what[96];
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE], what[96];
-    join(key_path, path, key);
     if (!cJSON_IsNumber(v) || !(v->valuedouble >= min) || !(v->valuedouble <= max)) {
         snprintf(what, sizeof what, "a number between %g and %g", min, max);
         return expected(p, key_path, what, v);
@@ -130,11 +136,10 @@ static cg_status get_number(const parser *p, const char *path, const cJSON *obj,
 static cg_status get_int(const parser *p, const char *path, const cJSON *obj, const char *key,
                          int min, int max, int *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE], what[96];
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE], what[96];
-    join(key_path, path, key);
     if (!cJSON_IsNumber(v) || !(v->valuedouble >= min) || !(v->valuedouble <= max)
         || v->valuedouble != (double)(int)v->valuedouble) {
         snprintf(what, sizeof what, "a whole number between %d and %d", min, max);
@@ -147,11 +152,10 @@ static cg_status get_int(const parser *p, const char *path, const cJSON *obj, co
 static cg_status get_bool(const parser *p, const char *path, const cJSON *obj, const char *key,
                           int *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE];
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE];
-    join(key_path, path, key);
     if (!cJSON_IsBool(v))
         return expected(p, key_path, "true or false", v);
     *out = cJSON_IsTrue(v);
@@ -181,11 +185,10 @@ static cg_status read_numbers(const parser *p, const char *path, const cJSON *v,
 static cg_status get_vec3(const parser *p, const char *path, const cJSON *obj, const char *key,
                           cg_vec3 *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE];
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE];
-    join(key_path, path, key);
     double xyz[3];
     cg_status s = read_numbers(p, key_path, v, 3, xyz);
     if (s == CG_OK)
@@ -198,11 +201,10 @@ static cg_status get_vec3(const parser *p, const char *path, const cJSON *obj, c
 static cg_status get_color(const parser *p, const char *path, const cJSON *obj, const char *key,
                            cg_vec3 *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE];
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE];
-    join(key_path, path, key);
     if (cJSON_IsString(v)) {
         cg_rgba8 encoded;
         cg_error parse_error;
@@ -228,11 +230,10 @@ static cg_status get_color(const parser *p, const char *path, const cJSON *obj, 
 static cg_status get_choice(const parser *p, const char *path, const cJSON *obj, const char *key,
                             const char *const *names, int *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    char key_path[PATH_SIZE], what[200] = "one of";
+    const cJSON *v = member(obj, path, key, key_path);
     if (!v)
         return CG_OK;
-    char key_path[PATH_SIZE], what[200] = "one of";
-    join(key_path, path, key);
     for (int i = 0; names[i]; i++) {
         if (cJSON_IsString(v) && strcmp(v->valuestring, names[i]) == 0) {
             *out = i;

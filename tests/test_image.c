@@ -3,6 +3,7 @@
 #include "cg.h"
 #include "check.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -67,6 +68,16 @@ static void test_pixels_and_blend(void)
     CHECK(memcmp(codes->data, back->data, 256 * 4) == 0);
     cg_image_free(wide);
     cg_image_free(back);
+    /* Image over image, clipped, at offsets up to the limits of int. */
+    cg_image_clear_rgba8(img, black);
+    /* codes is 256 x 1 with alpha = index: at x offset -252, pixel 3 of row 1
+     * receives the opaque code 255 and row 0 nothing. */
+    cg_image_blend_image(img, codes, -252, 1);
+    CHECK_EQ_INT(cg_image_get_rgba8(img, 3, 1).r, 255);
+    CHECK_EQ_INT(cg_image_get_rgba8(img, 3, 0).r, 0);
+    cg_image_blend_image(img, codes, INT_MIN, INT_MIN);
+    cg_image_blend_image(img, codes, INT_MAX, INT_MAX);
+    CHECK_EQ_INT(cg_image_get_rgba8(img, 0, 0).r, 0);
     cg_image_free(codes);
     cg_image_free(img);
 }

@@ -163,8 +163,9 @@ void cg_image_blend(cg_image *image, int x, int y, cg_rgbaf color)
 
 void cg_image_blend_image(cg_image *dst, const cg_image *src, int dx, int dy)
 {
-    int x0 = dx < 0 ? -dx : 0, y0 = dy < 0 ? -dy : 0;
-    for (int y = y0; y < src->height && (long)y + dy < dst->height; y++)
-        for (int x = x0; x < src->width && (long)x + dx < dst->width; x++)
-            cg_image_blend(dst, x + dx, y + dy, cg_image_get(src, x, y));
+    /* In long long: offsets near the limits of int must not overflow. */
+    long long x0 = dx < 0 ? -(long long)dx : 0, y0 = dy < 0 ? -(long long)dy : 0;
+    for (long long y = y0; y < src->height && y + dy < dst->height; y++)
+        for (long long x = x0; x < src->width && x + dx < dst->width; x++)
+            cg_image_blend(dst, (int)(x + dx), (int)(y + dy), cg_image_get(src, (int)x, (int)y));
 }

@@ -23,6 +23,7 @@
 
 #include "cg/core.h"
 #include "cg/image.h"
+#include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
 
@@ -167,6 +168,12 @@ cg_status cg_renderer_depth_image(const cg_renderer *renderer, cg_image *image);
 cg_render_stats cg_renderer_stats(const cg_renderer *renderer);
 /* The camera the last frame used (after framing). */
 cg_camera cg_renderer_camera(const cg_renderer *renderer);
+
+/* The light the renderer uses when the options name none: a directional key
+ * light of strength 0.85 from the upper left of the camera whose view matrix
+ * is given (view-space direction (-1, 1, 1.5)).  The ray tracer's commands
+ * and scenes without lights use it too, so every renderer lights alike. */
+cg_light cg_render_key_light(cg_mat4 view);
 
 /* One-shot: create, draw, free. */
 cg_status cg_render(const cg_mesh *mesh, const cg_render_options *options, cg_image *image,

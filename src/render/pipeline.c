@@ -669,6 +669,18 @@ static cg_status frame_camera(cg_renderer *r, double aspect, cg_camera *camera)
     return cg_camera_frame(camera, lo, hi, aspect);
 }
 
+cg_light cg_render_key_light(cg_mat4 view)
+{
+    /* From the camera's upper left, a little in front (view space). */
+    cg_vec3 d = cg_vec3_normalize(cg_vec3_make(-1, 1, 1.5));
+    /* View-space direction to world: the view's rotation is orthonormal,
+     * so its inverse is its transpose. */
+    cg_vec3 world = {view.m[0][0] * d.x + view.m[1][0] * d.y + view.m[2][0] * d.z,
+                     view.m[0][1] * d.x + view.m[1][1] * d.y + view.m[2][1] * d.z,
+                     view.m[0][2] * d.x + view.m[1][2] * d.y + view.m[2][2] * d.z};
+    return cg_light_directional(cg_vec3_scale(world, -1), cg_vec3_make(0.85, 0.85, 0.85));
+}
+
 static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_mat4 *view)
 {
     const cg_render_options *o = f->o;
@@ -689,14 +701,7 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     l->view_dir[2] = (float)back.z;
     l->lights[0] = cg_light_ambient(cg_vec3_make(1, 1, 1));
     if (o->light_count == 0) {
-        /* A key light from the camera's upper left, a little in front. */
-        cg_vec3 d = cg_vec3_normalize(cg_vec3_make(-1, 1, 1.5));
-        /* View-space direction to world: the view's rotation is orthonormal,
-         * so its inverse is its transpose. */
-        cg_vec3 world = {view->m[0][0] * d.x + view->m[1][0] * d.y + view->m[2][0] * d.z,
-                         view->m[0][1] * d.x + view->m[1][1] * d.y + view->m[2][1] * d.z,
-                         view->m[0][2] * d.x + view->m[1][2] * d.y + view->m[2][2] * d.z};
-        l->lights[1] = cg_light_directional(cg_vec3_scale(world, -1), cg_vec3_make(0.85, 0.85, 0.85));
+        l->lights[1] = cg_render_key_light(*view);
         l->count = 2;
         return;
     }

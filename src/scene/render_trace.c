@@ -75,17 +75,16 @@ cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *e
             cg_error_set(err, s, "scene: an area light was refused");
     }
     if (s == CG_OK && scene->light_count + scene->area_light_count == 0) {
-        /* No lights given: the rasterizer's default, a light from the camera's
-         * upper left, and a little ambient. */
-        cg_vec3 forward = cg_vec3_normalize(cg_vec3_sub(camera.target, camera.eye));
-        cg_vec3 side = cg_vec3_normalize(cg_vec3_cross(forward, camera.up));
-        cg_vec3 up = cg_vec3_cross(side, forward);
-        cg_vec3 travel = cg_vec3_add(forward, cg_vec3_scale(cg_vec3_sub(side, up), 0.5));
-        cg_light key = cg_light_directional(travel, cg_vec3_make(1, 1, 1));
-        cg_light fill = cg_light_ambient(cg_vec3_make(1, 1, 1));
-        s = cg_trace_scene_add_light(trace, &key);
+        /* No lights given: the rasterizer's, its key light and a white
+         * ambient light (scaled by each material's ka). */
+        cg_mat4 view;
+        cg_light ambient = cg_light_ambient(cg_vec3_make(1, 1, 1)), key;
+        if ((s = cg_camera_view(&camera, &view)) == CG_OK) {
+            key = cg_render_key_light(view);
+            s = cg_trace_scene_add_light(trace, &key);
+        }
         if (s == CG_OK)
-            s = cg_trace_scene_add_light(trace, &fill);
+            s = cg_trace_scene_add_light(trace, &ambient);
     }
     if (s == CG_OK) {
         cg_trace_options options = cg_trace_options_default();

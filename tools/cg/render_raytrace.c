@@ -55,7 +55,7 @@ static void add_floor(cg_trace_scene *scene)
 }
 
 /* The options' directional lights, or (default_light, none given) the
- * rasterizer's key light: view-space direction (-1, 1, 1.5), strength 0.85. */
+ * rasterizer's key light (cg_render_key_light). */
 static void add_lights(cg_trace_scene *scene, const cg_render_options *o, int default_light)
 {
     for (int i = 0; i < o->light_count; i++) {
@@ -64,13 +64,11 @@ static void add_lights(cg_trace_scene *scene, const cg_render_options *o, int de
                                           cg_vec3_make(k, k, k));
         cg_trace_scene_add_light(scene, &l);
     }
-    cg_mat4 view, inverse;
-    if (o->light_count || !default_light || cg_camera_view(&o->camera, &view) != CG_OK
-        || cg_mat4_inverse(view, &inverse) != CG_OK)
+    cg_mat4 view;
+    if (o->light_count || !default_light || cg_camera_view(&o->camera, &view) != CG_OK)
         return;
-    cg_vec3 d = cg_mat4_transform_vector(inverse, cg_vec3_normalize(cg_vec3_make(-1, 1, 1.5)));
-    cg_light l = cg_light_directional(cg_vec3_scale(d, -1), cg_vec3_make(0.85, 0.85, 0.85));
-    cg_trace_scene_add_light(scene, &l);
+    cg_light key = cg_render_key_light(view);
+    cg_trace_scene_add_light(scene, &key);
 }
 
 static void tile_progress(void *user, int done, int total)

@@ -100,8 +100,7 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
         c.ortho_height = scene->camera.ortho_height;
     else if (c.orthographic && !scene->frame_camera)
         c.ortho_height = 1.05 * cg_vec3_length(cg_vec3_sub(hi, lo));
-    if (scene->projection == CG_SCENE_CAVALIER || scene->projection == CG_SCENE_CABINET
-        || scene->projection == CG_SCENE_OBLIQUE) {
+    if (scene_is_oblique(scene)) {
         /* An oblique view is an orthographic one after a shear in view space:
          * a point d units farther away (view z = -d) moves by ratio d along
          * the projection angle. */

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "cg/draw.h"
 #include "cg/color.h"
+#include "cg/curve.h"
 
 #include <limits.h>
 #include <stdlib.h>
@@ -462,6 +463,66 @@ static void antialiased(void)
     cg_image_free(image);
 }
 
+/* Curves drawn aliased: every drawn pixel's centre lies within tolerance +
+ * sqrt(2)/2 + a Bresenham half-step of the curve, and every point of the
+ * curve has a drawn pixel next to it. */
+static void drawn_curves(void)
+{
+    check_rng rng = {77};
+    cg_image *image;
+    cg_image_create(&image, 200, 200, CG_PIXEL_RGBA8);
+    enum { SAMPLES = 1000 };
+    cg_vec2 dense[SAMPLES + 1];
+    long far_pixels = 0, uncovered = 0;
+    for (int i = 0; i < 60; i++) {
+        cg_vec2 p[4];
+        for (int k = 0; k < 4; k++)
+            p[k] = cg_vec2_make(check_rng_range(&rng, 10, 190), check_rng_range(&rng, 10, 190));
+        cg_cubic2 curve = {(cg_curve_basis)(i % 4), {p[0], p[1], p[2], p[3]}};
+        double tol = 0.25;
+        cg_image_clear_rgba8(image, black);
+        cg_status status;
+        switch (i % 4) {
+        case CG_BASIS_HERMITE:
+            status = cg_draw_hermite(image, p[0], p[1], p[2], p[3], tol, CG_DRAW_ALIASED, white);
+            break;
+        case CG_BASIS_BEZIER:
+            status = cg_draw_bezier(image, p, 4, tol, CG_DRAW_ALIASED, white);
+            break;
+        case CG_BASIS_BSPLINE:
+            status = cg_draw_bspline(image, p, 4, tol, CG_DRAW_ALIASED, white);
+            break;
+        default:
+            status = cg_draw_catmull_rom(image, p, 4, tol, CG_DRAW_ALIASED, white);
+            break;
+        }
+        if (status == CG_ERANGE || (i % 4 == CG_BASIS_HERMITE && status != CG_OK))
+            continue; /* a Hermite with huge tangents may leave the image */
+        CHECK(status == CG_OK);
+        for (int k = 0; k <= SAMPLES; k++)
+            dense[k] = cg_cubic2_point(&curve, (double)k / SAMPLES);
+        for (int y = 0; y < 200; y++)
+            for (int x = 0; x < 200; x++) {
+                if (!is_set(image, x, y))
+                    continue;
+                double best = 1e9;
+                for (int k = 0; k <= SAMPLES; k++)
+                    best = fmin(best, hypot(x + 0.5 - dense[k].x, y + 0.5 - dense[k].y));
+                far_pixels += best > tol + 1.25;
+            }
+        for (int k = 0; k <= SAMPLES; k += 7) {
+            int px = (int)floor(dense[k].x), py = (int)floor(dense[k].y), near = 0;
+            for (int j = -1; j <= 1; j++)
+                for (int q = -1; q <= 1; q++)
+                    near |= is_set(image, px + q, py + j);
+            uncovered += cg_image_contains(image, px, py) && !near;
+        }
+    }
+    CHECK_EQ_INT(far_pixels, 0);
+    CHECK_EQ_INT(uncovered, 0);
+    cg_image_free(image);
+}
+
 static void bad_input(void)
 {
     cg_image *image;
@@ -519,6 +580,7 @@ int main(void)
     ellipses();
     arcs();
     antialiased();
+    drawn_curves();
     bad_input();
     return check_finish();
 }

@@ -92,10 +92,13 @@ cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, d
 
 /* ---- curves (section 2.3), flattened then drawn ------------------------- */
 
-/* How cg_draw_bezier and friends draw the flattened polyline. */
+/* How cg_draw_bezier and friends draw the flattened polyline.  Control
+ * points are image-plane coordinates in both modes. */
 typedef enum cg_draw_mode {
-    CG_DRAW_ALIASED = 0,     /* Bresenham lines between rounded points (pixel indices) */
-    CG_DRAW_ANTIALIASED = 1  /* anti-aliased lines (image-plane coordinates) */
+    /* Bresenham lines between the pixels that contain the polyline's points
+     * (coordinates up to 1e9 in magnitude: CG_ERANGE beyond) */
+    CG_DRAW_ALIASED = 0,
+    CG_DRAW_ANTIALIASED = 1 /* anti-aliased lines */
 } cg_draw_mode;
 
 /* A Bézier curve of any degree (count = degree + 1 control points, 2 to

@@ -2,9 +2,10 @@
  * the camera inside the mesh, the z-buffer against a brute-force per-pixel
  * depth search, painter's against z-buffer, perspective-correct
  * interpolation, culling, vertex normals, identical output on any thread
- * count, bad input. */
+ * count, the renderer's float lighting against cg_light_shade, bad input. */
 #include "cg/render.h"
 #include "cg/color.h"
+#include "cg/light.h"
 #include "check.h"
 
 #include <stdlib.h>
@@ -660,6 +661,83 @@ static void test_random_scenes(void)
     CHECK_MSG(ok, "random scenes give CG_OK or CG_EINVAL");
 }
 
+/* ---- lighting ---------------------------------------------------------------------- */
+
+/* The renderer evaluates the illumination model in float; a flat-shaded
+ * triangle drawn into a float image shows that colour, which must agree with
+ * cg_light_shade (double) at the triangle's centroid with its face normal,
+ * for random lights, coefficients, cameras (perspective and orthographic). */
+static void test_float_lighting(void)
+{
+    check_rng rng = {77};
+    double worst = 0;
+    int checked = 0;
+    for (int trial = 0; trial < 200; trial++) {
+        cg_mesh *m;
+        cg_mesh_create(&m, 3, 1, 3, 0);
+        m->positions[0] = cg_vec3_make(-1, -1, check_rng_range(&rng, -0.3, 0.3));
+        m->positions[1] = cg_vec3_make(1, -1, check_rng_range(&rng, -0.3, 0.3));
+        m->positions[2] = cg_vec3_make(0, 1.2, check_rng_range(&rng, -0.3, 0.3));
+        for (int k = 0; k < 3; k++)
+            m->face_indices[k] = (uint32_t)k;
+        m->face_offsets[1] = 3;
+        cg_render_options o = plain_options();
+        o.shading = CG_SHADING_FLAT;
+        o.cull = CG_CULL_NONE;
+        o.frame_camera = 0;
+        o.camera.eye = cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 3);
+        o.camera.target = cg_vec3_make(0, 0, 0);
+        o.camera.orthographic = trial % 3 == 0;
+        o.camera.ortho_height = 3;
+        o.ambient = check_rng_range(&rng, 0, 0.5);
+        o.specular = trial % 4 == 1 ? 0 : check_rng_range(&rng, 0, 1);
+        static const double shininess[4] = {1, 2, 7.5, 64};
+        o.shininess = shininess[trial % 4];
+        o.color = (cg_rgbaf){(float)check_rng_range(&rng, 0, 1), (float)check_rng_range(&rng, 0, 1),
+                             (float)check_rng_range(&rng, 0, 1), 1};
+        o.background = (cg_rgbaf){-1, -1, -1, 1}; /* no colour the shading gives */
+        o.light_count = 1 + trial % 3;
+        for (int i = 0; i < o.light_count; i++) {
+            o.lights[i].direction = cg_vec3_make(check_rng_range(&rng, -1, 1),
+                                                 check_rng_range(&rng, -1, 1),
+                                                 check_rng_range(&rng, 0.1, 1));
+            o.lights[i].intensity = check_rng_range(&rng, 0.2, 1.2);
+        }
+        cg_image *img = image(32, 24, CG_PIXEL_RGBAF);
+        render_with(m, o, CG_RENDER_ZBUFFER, img, NULL);
+        cg_rgbaf got = cg_image_get(img, 16, 12);
+        /* The definition, in double. */
+        cg_vec3 a = m->positions[0], b = m->positions[1], c = m->positions[2];
+        cg_vec3 centre = cg_vec3_scale(cg_vec3_add(cg_vec3_add(a, b), c), 1.0 / 3);
+        cg_vec3 normal = cg_vec3_normalize(cg_vec3_cross(cg_vec3_sub(b, a), cg_vec3_sub(c, a)));
+        cg_vec3 view = cg_vec3_normalize(cg_vec3_sub(o.camera.eye, o.camera.orthographic
+                                                                       ? o.camera.target
+                                                                       : centre));
+        cg_material material = cg_material_make(cg_vec3_make(o.color.r, o.color.g, o.color.b),
+                                                o.ambient, 1, o.specular, o.shininess);
+        material.specular = CG_SPECULAR_BLINN;
+        cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
+        lights[0] = cg_light_ambient(cg_vec3_make(1, 1, 1));
+        for (int i = 0; i < o.light_count; i++) {
+            double k = o.lights[i].intensity;
+            lights[i + 1] = cg_light_directional(cg_vec3_scale(o.lights[i].direction, -1),
+                                                 cg_vec3_make(k, k, k));
+        }
+        cg_vec3 want = cg_light_shade(centre, normal, view, &material, lights,
+                                      (size_t)o.light_count + 1);
+        double e = fmax(fabs(got.r - want.x), fmax(fabs(got.g - want.y), fabs(got.b - want.z)));
+        e /= fmax(1, fmax(want.x, fmax(want.y, want.z)));
+        if (e > worst)
+            worst = e;
+        checked += got.r >= 0;
+        cg_image_free(img);
+        cg_mesh_free(m);
+    }
+    CHECK_MSG(worst < 1e-5 && checked == 200,
+              "float lighting: worst relative error %g against cg_light_shade (%d checked)", worst,
+              checked);
+}
+
 int main(void)
 {
     test_random_scenes();
@@ -671,6 +749,7 @@ int main(void)
     test_culling();
     test_normals();
     test_threads_identical();
+    test_float_lighting();
     test_bad_input();
     return check_finish();
 }

@@ -11,7 +11,10 @@
  * the camera, tested in world space. */
 static int back_facing(const render_frame *f, uint32_t a, uint32_t b, uint32_t c)
 {
-    const float *p = f->vertices[a].world, *q = f->vertices[b].world, *r = f->vertices[c].world;
+    float p[3], q[3], r[3];
+    render_world_position(f, a, p);
+    render_world_position(f, b, q);
+    render_world_position(f, c, r);
     double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
     double v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
     double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -103,10 +106,8 @@ cg_status render_edges(render_frame *f)
         const frame_vertex *va = &f->vertices[r->edges[e][0]], *vb = &f->vertices[r->edges[e][1]];
         if ((va->outcode | vb->outcode) & 0x40)
             continue;
-        for (int k = 0; k < 4; k++) {
-            p.c[k] = va->c[k];
-            q.c[k] = vb->c[k];
-        }
+        render_clip_position(f, r->edges[e][0], p.c);
+        render_clip_position(f, r->edges[e][1], q.c);
         if (!render_clip_segment(&p, &q, 0) || !(p.c[3] > 0) || !(q.c[3] > 0))
             continue;
         screen_vertex s, t;

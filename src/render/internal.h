@@ -23,18 +23,37 @@ typedef struct render_lighting {
     int orthographic;
     float eye[3];       /* perspective: viewer position */
     float view_dir[3];  /* orthographic: unit direction toward the viewer */
+    /* The same in float for render_shade (render_lighting_prepare). */
+    int directional;                          /* directional lights */
+    float to_light[CG_RENDER_MAX_LIGHTS][3];  /* unit, toward each light */
+    float light_color[CG_RENDER_MAX_LIGHTS][3];
+    float ambient[3];                         /* ka times the ambient lights */
+    float kd, ks, shininess;
+    float specular_color[3];
+    int blinn;
 } render_lighting;
+
+/* Fills the float fields of l from its lights (ambient and directional
+ * only, which is what the renderer makes) and material. */
+void render_lighting_prepare(render_lighting *l);
 
 /* Colour (linear) of a surface point with unit normal n and diffuse colour
  * base, seen from the camera and lit by the lights: the local illumination
- * model of cg/light.h. */
+ * model of cg/light.h (cg_light_shade), evaluated in float for the ambient
+ * and directional lights the renderer uses. */
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3]);
 
-/* sRGB encoding with a lookup that is exact (same result as
- * cg_linear_to_srgb8) and fast. */
+/* sRGB encoding, exact (the same code as cg_linear_to_srgb8 for every
+ * float) and without branches: the bucket of linear * 4096 gives the code of
+ * its lower end, and at most one code threshold lies inside a bucket (the
+ * curve is steepest at 0, 0.8 codes per bucket), so one comparison with the
+ * next code's threshold settles it.  The tables are the colour module's
+ * (src/color/srgb_tables.h), copied with a sentinel after the last
+ * threshold so that code 255 needs no test. */
 typedef struct render_encoder {
-    uint8_t code[4098]; /* code of i / 4096 for i <= 4096, and 255 once more */
+    float threshold[256]; /* least linear value of code k + 1; +inf for k = 255 */
+    uint8_t start[4097];  /* code of i / 4096 */
 } render_encoder;
 #define RENDER_ENCODER_STEPS 4096
 void render_encoder_init(render_encoder *encoder);
@@ -43,12 +62,8 @@ static inline uint8_t render_encode(const render_encoder *encoder, float linear)
     /* Clamped to [0, 1] (NaN to 0) without branches. */
     float x = linear > 0 ? linear : 0;
     x = x < 1 ? x : 1;
-    int i = (int)(x * RENDER_ENCODER_STEPS);
-    uint8_t code = encoder->code[i];
-    /* The code is monotonic: when both ends of the step agree it is exact. */
-    if (code == encoder->code[i + 1])
-        return code;
-    return cg_linear_to_srgb8(x);
+    unsigned code = encoder->start[(int)(x * RENDER_ENCODER_STEPS)];
+    return (uint8_t)(code + (x >= encoder->threshold[code]));
 }
 
 /* ---- clipping in homogeneous coordinates -------------------------------- */
@@ -170,6 +185,8 @@ typedef struct prepared_vertex {
     float position[3], normal[3], color[3];
 } prepared_vertex;
 
+struct render_chunk;
+
 struct cg_renderer {
     cg_render_options options;
     size_t vertex_count;
@@ -191,16 +208,25 @@ struct cg_renderer {
     int depth_valid;
     int depth_width, depth_height;
     cg_render_stats stats;
+    /* buffers kept from frame to frame (no allocation, no page faults
+     * once they have grown to the mesh and image) */
+    struct frame_vertex *frame_vertices;
+    float *frame_attributes;
+    size_t frame_vertex_capacity, frame_attribute_capacity;
+    struct render_chunk *chunks;
+    int chunk_count;
 };
 
-/* A mesh vertex after the vertex stage. */
+/* A mesh vertex after the vertex stage: where it lies against the view
+ * volume and, when inside, its snapped screen position.  Its clip
+ * coordinates and world position are recomputed where needed
+ * (render_clip_position, render_world_position); its attributes are in
+ * render_frame.attributes. */
 typedef struct frame_vertex {
-    double c[4];       /* clip coordinates */
-    float world[3];    /* world position */
-    unsigned outcode;  /* render_outcode */
-    float a[RENDER_MAX_ATTRIBUTES];
-    int32_t sx, sy;    /* snapped screen position, when outcode is 0 */
-    float sz, siw;     /* window depth and 1 / w, when outcode is 0 */
+    int32_t sx, sy;    /* snapped screen position, when projected */
+    float sz, siw;     /* window depth and 1 / w, when projected */
+    uint8_t outcode;   /* render_outcode */
+    uint8_t projected; /* outcode 0 and w > 0: sx, sy, sz, siw are set */
 } frame_vertex;
 
 /* A clipped polygon in screen space, for the painter's algorithm. */
@@ -218,6 +244,8 @@ typedef struct render_chunk {
     unsigned char *setups;      /* setup triangles, frame->stride bytes each */
     size_t setup_count, setup_capacity;
     uint32_t *bin_start;        /* tile_count + 1 */
+    uint32_t *bin_fill;         /* tile_count */
+    size_t bin_start_capacity;  /* in tiles */
     uint32_t *bin_list;         /* setup indices by tile */
     size_t bin_capacity;
     painter_polygon *polygons;  /* painter's only */
@@ -233,7 +261,7 @@ typedef struct render_frame {
     cg_image *image;
     int width, height;
     cg_mat4 mvp, model;
-    double normal_matrix[3][3];
+    float normal_matrix[3][3];
     render_lighting lighting;
     int shading, attribute_count, cull;
     int fill_background;        /* hidden-line: faces drawn in the background colour */
@@ -241,6 +269,7 @@ typedef struct render_frame {
     cg_rgba8 background8;
     float *depth;
     frame_vertex *vertices;
+    float *attributes;          /* attribute_count per vertex */
     int thread_count;
     render_chunk *chunks;
     size_t stride;
@@ -248,6 +277,13 @@ typedef struct render_frame {
     int tiles_x, tiles_y, tile_count;
     size_t splits;
 } render_frame;
+
+/* Clip coordinates and world position of mesh vertex i, computed as the
+ * vertex stage computes them. */
+void render_clip_position(const render_frame *frame, size_t i, double c[4]);
+void render_world_position(const render_frame *frame, size_t i, float out[3]);
+/* Frees the buffers a renderer keeps between frames. */
+void render_buffers_free(cg_renderer *r);
 
 /* Stores the flat (or Phong base) colour of a set-up triangle, encoded too. */
 void render_finish_setup(const render_frame *frame, setup_triangle *t, const float color[3]);

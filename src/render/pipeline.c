@@ -242,48 +242,80 @@ size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int
 
 /* ---- vertex stage --------------------------------------------------------- */
 
+/* Clip coordinates of a prepared position (double, so that clipping and
+ * snapping see the exact product). */
+static inline void clip_of(const render_frame *f, const float p[3], double c[4])
+{
+    double x = p[0], y = p[1], z = p[2];
+    for (int k = 0; k < 4; k++)
+        c[k] = f->mvp.m[k][0] * x + f->mvp.m[k][1] * y + f->mvp.m[k][2] * z + f->mvp.m[k][3];
+}
+
+static inline void world_of(const render_frame *f, const float p[3], float out[3])
+{
+    double x = p[0], y = p[1], z = p[2];
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)(f->model.m[k][0] * x + f->model.m[k][1] * y + f->model.m[k][2] * z
+                         + f->model.m[k][3]);
+}
+
+void render_clip_position(const render_frame *f, size_t i, double c[4])
+{
+    clip_of(f, f->r->vertices[i].position, c);
+}
+
+void render_world_position(const render_frame *f, size_t i, float out[3])
+{
+    world_of(f, f->r->vertices[i].position, out);
+}
+
 static void vertex_stage(render_frame *f, size_t begin, size_t end)
 {
     const cg_renderer *r = f->r;
+    const int n = f->attribute_count;
     for (size_t i = begin; i < end; i++) {
         const prepared_vertex *p = &r->vertices[i];
         frame_vertex *v = &f->vertices[i];
-        double x = p->position[0], y = p->position[1], z = p->position[2];
-        for (int k = 0; k < 4; k++)
-            v->c[k] = f->mvp.m[k][0] * x + f->mvp.m[k][1] * y + f->mvp.m[k][2] * z + f->mvp.m[k][3];
-        for (int k = 0; k < 3; k++)
-            v->world[k] = (float)(f->model.m[k][0] * x + f->model.m[k][1] * y
-                                  + f->model.m[k][2] * z + f->model.m[k][3]);
-        v->outcode = render_outcode(v->c);
-        if (v->outcode == 0 && v->c[3] > 0) {
+        double c[4];
+        clip_of(f, p->position, c);
+        v->outcode = (uint8_t)render_outcode(c);
+        v->projected = v->outcode == 0 && c[3] > 0;
+        if (v->projected) {
             /* Projected and snapped once here for all the triangles that
              * need no clipping (the clipped ones project the same way). */
             clip_vertex cv;
             screen_vertex s;
-            memcpy(cv.c, v->c, sizeof cv.c);
+            memcpy(cv.c, c, sizeof cv.c);
             render_project(&cv, f->width, f->height, 0, &s);
             v->sx = render_snap(s.x, f->width);
             v->sy = render_snap(s.y, f->height);
             v->sz = (float)s.z;
             v->siw = (float)s.iw;
         }
-        if (f->shading == MODE_FLAT)
+        if (n == 0)
             continue;
-        double n[3];
+        float *a = f->attributes + i * (size_t)n;
+        float nx = p->normal[0], ny = p->normal[1], nz = p->normal[2], normal[3];
         for (int k = 0; k < 3; k++)
-            n[k] = f->normal_matrix[k][0] * p->normal[0] + f->normal_matrix[k][1] * p->normal[1]
-                   + f->normal_matrix[k][2] * p->normal[2];
-        double length = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        float normal[3] = {0, 0, 0};
-        if (length > 0)
-            for (int k = 0; k < 3; k++)
-                normal[k] = (float)(n[k] / length);
+            normal[k] = f->normal_matrix[k][0] * nx + f->normal_matrix[k][1] * ny
+                        + f->normal_matrix[k][2] * nz;
+        float length = sqrtf(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        float inverse = length > 0 ? 1 / length : 0;
+        for (int k = 0; k < 3; k++)
+            normal[k] *= inverse;
+        float world[3];
         if (f->shading == MODE_GOURAUD) {
-            render_shade(&f->lighting, v->world, normal, p->color, v->a);
+            /* Only the specular term needs the position. */
+            if (f->lighting.ks != 0)
+                world_of(f, p->position, world);
+            render_shade(&f->lighting, f->lighting.ks != 0 ? world : p->position, normal,
+                         p->color, a);
         } else {
-            memcpy(v->a, normal, sizeof normal);
-            memcpy(v->a + 3, v->world, sizeof v->world);
-            memcpy(v->a + 6, p->color, sizeof p->color);
+            world_of(f, p->position, world);
+            memcpy(a, normal, sizeof normal);
+            memcpy(a + 3, world, sizeof world);
+            if (n > 6)
+                memcpy(a + 6, p->color, sizeof p->color);
         }
     }
 }
@@ -362,8 +394,10 @@ static void triangle_color(const render_frame *f, size_t i, float out[3])
         memcpy(out, p0->color, 3 * sizeof(float));
         return;
     }
-    const float *a = f->vertices[tri[0]].world, *b = f->vertices[tri[1]].world,
-                *c = f->vertices[tri[2]].world;
+    float a[3], b[3], c[3];
+    world_of(f, f->r->vertices[tri[0]].position, a);
+    world_of(f, f->r->vertices[tri[1]].position, b);
+    world_of(f, f->r->vertices[tri[2]].position, c);
     double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -401,7 +435,7 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             c->rejected++;
             continue;
         }
-        if (!any && !painter && v[0]->c[3] > 0 && v[1]->c[3] > 0 && v[2]->c[3] > 0) {
+        if (!painter && v[0]->projected && v[1]->projected && v[2]->projected) {
             /* Inside the frustum: set up from the snapped vertices; back
              * faces leave before anything else is read. */
             int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
@@ -416,7 +450,7 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
                 corner[k].y = v[k]->sy;
                 corner[k].z = v[k]->sz;
                 corner[k].iw = v[k]->siw;
-                corner[k].a = v[k]->a;
+                corner[k].a = f->attributes + tri[k] * (size_t)n;
             }
             const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
             /* Set up in place at the end of the chunk's list. */
@@ -440,8 +474,8 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
         }
         clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
         for (int k = 0; k < 3; k++) {
-            memcpy(in[k].c, v[k]->c, sizeof in[k].c);
-            memcpy(in[k].a, v[k]->a, sizeof(float) * (size_t)n);
+            render_clip_position(f, tri[k], in[k].c);
+            memcpy(in[k].a, f->attributes + tri[k] * (size_t)n, sizeof(float) * (size_t)n);
         }
         int count = 3;
         const clip_vertex *corners = in;
@@ -504,16 +538,26 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
     }
 }
 
-/* Tile lists of one chunk (counting sort by tile, mesh order kept). */
+/* Tile lists of one chunk (counting sort by tile, mesh order kept), in
+ * buffers kept from frame to frame. */
 static void bin_chunk(render_frame *f, render_chunk *c)
 {
     if (c->failed)
         return;
-    c->bin_start = calloc((size_t)f->tile_count + 1, sizeof *c->bin_start);
-    if (!c->bin_start) {
-        c->failed = 1;
-        return;
+    size_t tiles = (size_t)f->tile_count;
+    if (c->bin_start_capacity < tiles) {
+        free(c->bin_start);
+        free(c->bin_fill);
+        c->bin_start = malloc((tiles + 1) * sizeof *c->bin_start);
+        c->bin_fill = malloc(tiles * sizeof *c->bin_fill);
+        c->bin_start_capacity = c->bin_start && c->bin_fill ? tiles : 0;
+        if (!c->bin_start_capacity) {
+            c->failed = 1;
+            return;
+        }
     }
+    uint32_t *start = c->bin_start, *fill = c->bin_fill;
+    memset(start, 0, (tiles + 1) * sizeof *start);
     size_t total = 0;
     for (size_t i = 0; i < c->setup_count; i++) {
         const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
@@ -521,23 +565,22 @@ static void bin_chunk(render_frame *f, render_chunk *c)
         int ty0 = t->box[1] / RENDER_TILE, ty1 = (t->box[3] - 1) / RENDER_TILE;
         for (int ty = ty0; ty <= ty1; ty++)
             for (int tx = tx0; tx <= tx1; tx++)
-                c->bin_start[ty * f->tiles_x + tx + 1]++;
+                start[ty * f->tiles_x + tx + 1]++;
         total += (size_t)(tx1 - tx0 + 1) * (size_t)(ty1 - ty0 + 1);
     }
     if (total > UINT32_MAX) {
         c->failed = 1;
         return;
     }
-    for (int t = 0; t < f->tile_count; t++)
-        c->bin_start[t + 1] += c->bin_start[t];
-    c->bin_list = malloc((total ? total : 1) * sizeof *c->bin_list);
-    uint32_t *fill = malloc((size_t)f->tile_count * sizeof *fill);
-    if (!c->bin_list || !fill) {
-        free(fill);
+    for (size_t t = 0; t < tiles; t++)
+        start[t + 1] += start[t];
+    void *list = grow(c->bin_list, &c->bin_capacity, total ? total : 1, sizeof *c->bin_list);
+    if (!list) {
         c->failed = 1;
         return;
     }
-    memcpy(fill, c->bin_start, (size_t)f->tile_count * sizeof *fill);
+    c->bin_list = list;
+    memcpy(fill, start, tiles * sizeof *fill);
     for (size_t i = 0; i < c->setup_count; i++) {
         const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
         int tx0 = t->box[0] / RENDER_TILE, tx1 = (t->box[2] - 1) / RENDER_TILE;
@@ -546,7 +589,6 @@ static void bin_chunk(render_frame *f, render_chunk *c)
             for (int tx = tx0; tx <= tx1; tx++)
                 c->bin_list[fill[ty * f->tiles_x + tx]++] = (uint32_t)i;
     }
-    free(fill);
 }
 
 /* ---- the team of threads ------------------------------------------------------ */
@@ -703,6 +745,7 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     if (o->light_count == 0) {
         l->lights[1] = cg_render_key_light(*view);
         l->count = 2;
+        render_lighting_prepare(l);
         return;
     }
     /* The options name the direction toward each light; cg_light the way
@@ -713,20 +756,74 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
                                                 cg_vec3_make(k, k, k));
     }
     l->count = o->light_count + 1;
+    render_lighting_prepare(l);
 }
 
-static void free_chunks(render_frame *f)
+void render_buffers_free(cg_renderer *r)
 {
-    if (!f->chunks)
-        return;
-    for (int i = 0; i < f->thread_count; i++) {
-        free(f->chunks[i].setups);
-        free(f->chunks[i].bin_start);
-        free(f->chunks[i].bin_list);
-        free(f->chunks[i].polygons);
+    for (int i = 0; i < r->chunk_count; i++) {
+        free(r->chunks[i].setups);
+        free(r->chunks[i].bin_start);
+        free(r->chunks[i].bin_fill);
+        free(r->chunks[i].bin_list);
+        free(r->chunks[i].polygons);
     }
-    free(f->chunks);
-    f->chunks = NULL;
+    free(r->chunks);
+    r->chunks = NULL;
+    r->chunk_count = 0;
+    free(r->frame_vertices);
+    free(r->frame_attributes);
+    r->frame_vertices = NULL;
+    r->frame_attributes = NULL;
+    r->frame_vertex_capacity = r->frame_attribute_capacity = 0;
+}
+
+/* The frame's vertex buffers, kept by the renderer. */
+static cg_status frame_vertex_buffers(render_frame *f)
+{
+    cg_renderer *r = f->r;
+    size_t count = r->vertex_count ? r->vertex_count : 1;
+    size_t floats = count * (size_t)(f->attribute_count ? f->attribute_count : 1);
+    if (r->frame_vertex_capacity < count) {
+        free(r->frame_vertices);
+        r->frame_vertices = malloc(count * sizeof *r->frame_vertices);
+        r->frame_vertex_capacity = r->frame_vertices ? count : 0;
+    }
+    if (r->frame_attribute_capacity < floats) {
+        free(r->frame_attributes);
+        r->frame_attributes = malloc(floats * sizeof *r->frame_attributes);
+        r->frame_attribute_capacity = r->frame_attributes ? floats : 0;
+    }
+    if (!r->frame_vertices || !r->frame_attributes)
+        return CG_ENOMEM;
+    f->vertices = r->frame_vertices;
+    f->attributes = r->frame_attributes;
+    return CG_OK;
+}
+
+/* One chunk per thread, their buffers kept by the renderer and emptied. */
+static cg_status frame_chunks(render_frame *f)
+{
+    cg_renderer *r = f->r;
+    if (r->chunk_count < f->thread_count) {
+        render_chunk *chunks = realloc(r->chunks, (size_t)f->thread_count * sizeof *chunks);
+        if (!chunks)
+            return CG_ENOMEM;
+        memset(chunks + r->chunk_count, 0,
+               (size_t)(f->thread_count - r->chunk_count) * sizeof *chunks);
+        r->chunks = chunks;
+        r->chunk_count = f->thread_count;
+    }
+    for (int i = 0; i < f->thread_count; i++) {
+        render_chunk *c = &r->chunks[i];
+        c->begin = r->triangle_count * (size_t)i / (size_t)f->thread_count;
+        c->end = r->triangle_count * (size_t)(i + 1) / (size_t)f->thread_count;
+        c->setup_count = c->polygon_count = 0;
+        c->culled = c->clipped = c->rejected = c->rasterized = 0;
+        c->failed = 0;
+    }
+    f->chunks = r->chunks;
+    return CG_OK;
 }
 
 cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
@@ -761,7 +858,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         return CG_EINVAL;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            f.normal_matrix[i][j] = inverse.m[j][i];
+            f.normal_matrix[i][j] = (float)inverse.m[j][i];
     setup_lighting(&f, &camera, &view);
     f.fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
     f.shading = f.fill_background ? MODE_FLAT : (int)o->shading;
@@ -806,14 +903,11 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         clear_tile(&f, 0, 0, f.width, f.height);
         r->depth_valid = 1;
         if (o->edges == CG_EDGES_WIREFRAME && !all && r->triangle_count) {
-            f.vertices = malloc(r->vertex_count * sizeof *f.vertices);
-            if (!f.vertices)
+            if (frame_vertex_buffers(&f) != CG_OK)
                 return CG_ENOMEM;
             vertex_stage(&f, 0, r->vertex_count);
             r->depth_valid = 0;
-            cg_status status = render_edges(&f);
-            free(f.vertices);
-            return status;
+            return render_edges(&f);
         }
         return CG_OK;
     }
@@ -821,17 +915,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     f.thread_count = o->threads;
     if ((size_t)f.thread_count > r->triangle_count)
         f.thread_count = (int)r->triangle_count;
-    f.vertices = malloc(r->vertex_count * sizeof *f.vertices);
-    f.chunks = calloc((size_t)f.thread_count, sizeof *f.chunks);
-    if (!f.vertices || !f.chunks) {
-        free(f.vertices);
-        free(f.chunks);
+    if (frame_vertex_buffers(&f) != CG_OK || frame_chunks(&f) != CG_OK)
         return CG_ENOMEM;
-    }
-    for (int i = 0; i < f.thread_count; i++) {
-        f.chunks[i].begin = r->triangle_count * (size_t)i / (size_t)f.thread_count;
-        f.chunks[i].end = r->triangle_count * (size_t)(i + 1) / (size_t)f.thread_count;
-    }
     team tm;
     memset(&tm, 0, sizeof tm);
     tm.frame = &f;
@@ -884,7 +969,5 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         if (o->edges == CG_EDGES_HIDDEN_LINE || o->edges == CG_EDGES_OVERLAY)
             status = render_edges(&f);
     }
-    free_chunks(&f);
-    free(f.vertices);
     return status;
 }

@@ -231,6 +231,7 @@ void cg_renderer_free(cg_renderer *r)
     free(r->triangle_face);
     free(r->edges);
     free(r->depth);
+    render_buffers_free(r);
     free(r);
 }
 

@@ -186,6 +186,7 @@ typedef struct prepared_vertex {
 } prepared_vertex;
 
 struct render_chunk;
+struct render_pool;
 
 struct cg_renderer {
     cg_render_options options;
@@ -215,6 +216,8 @@ struct cg_renderer {
     size_t frame_vertex_capacity, frame_attribute_capacity;
     struct render_chunk *chunks;
     int chunk_count;
+    struct render_pool *pool;   /* worker threads kept between frames */
+    int pool_threads;           /* the thread count it was started for */
 };
 
 /* A mesh vertex after the vertex stage: where it lies against the view

@@ -595,21 +595,34 @@ static void bin_chunk(render_frame *f, render_chunk *c)
 
 typedef struct team {
     render_frame *frame;
-    pthread_mutex_t lock;
-    pthread_cond_t go;
-    int ready;                  /* set once every thread that could start has */
-    int workers;                /* threads actually running */
-    pthread_barrier_t barrier;
+    int workers;                /* threads taking part, the caller included */
+    pthread_barrier_t *barrier; /* for all of them */
     atomic_int next_tile;
     atomic_int tiles_done;
     int painter;
     size_t fragments[64];
 } team;
 
-typedef struct worker {
-    team *team;
-    int index;
-} worker;
+/* The renderer's worker threads, started at its first frame with more than
+ * one thread and kept until the thread count changes or the renderer is
+ * freed: starting threads for every frame costs, and a new thread often
+ * waits for the scheduler to move it to an idle core, while a kept one
+ * wakes on the core it last ran on.  The calling thread is worker 0. */
+typedef struct render_pool {
+    pthread_mutex_t lock;
+    pthread_cond_t wake, done;
+    pthread_barrier_t barrier;  /* threads + 1 */
+    int threads;                /* started besides the caller */
+    int pending;                /* started threads still in this frame's work */
+    int quit;
+    unsigned long generation;   /* frames handed out */
+    team *team;                 /* this frame's */
+    pthread_t ids[63];
+    struct pool_worker {
+        struct render_pool *pool;
+        int index;
+    } workers[64];
+} render_pool;
 
 static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
 {
@@ -638,35 +651,31 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
     }
 }
 
-static void *work(void *argument)
+static void work(team *tm, int index)
 {
-    worker *w = argument;
-    team *tm = w->team;
     render_frame *f = tm->frame;
-    pthread_mutex_lock(&tm->lock);
-    while (!tm->ready)
-        pthread_cond_wait(&tm->go, &tm->lock);
-    pthread_mutex_unlock(&tm->lock);
     int workers = tm->workers, threads = f->thread_count;
     /* Vertex stage over an even share of the vertices. */
     size_t vertices = f->r->vertex_count;
-    vertex_stage(f, vertices * (size_t)w->index / (size_t)workers,
-                 vertices * (size_t)(w->index + 1) / (size_t)workers);
-    pthread_barrier_wait(&tm->barrier);
-    for (int i = w->index; i < threads; i += workers) {
+    vertex_stage(f, vertices * (size_t)index / (size_t)workers,
+                 vertices * (size_t)(index + 1) / (size_t)workers);
+    if (workers > 1)
+        pthread_barrier_wait(tm->barrier);
+    for (int i = index; i < threads; i += workers) {
         render_chunk *chunk = &f->chunks[i];
         triangle_stage(f, chunk, tm->painter);
         if (!tm->painter)
             bin_chunk(f, chunk);
     }
-    pthread_barrier_wait(&tm->barrier);
+    if (workers > 1)
+        pthread_barrier_wait(tm->barrier);
     if (tm->painter)
-        return NULL;
+        return;
     int failed = 0;
     for (int i = 0; i < threads; i++)
         failed |= f->chunks[i].failed;
     if (failed)
-        return NULL;
+        return;
     size_t fragments = 0;
     for (;;) {
         int tile = atomic_fetch_add(&tm->next_tile, 1);
@@ -685,11 +694,121 @@ static void *work(void *argument)
             }
         }
         int done = atomic_fetch_add(&tm->tiles_done, 1) + 1;
-        if (w->index == 0 && f->o->progress)
+        if (index == 0 && f->o->progress)
             f->o->progress(f->o->progress_user, (double)done / f->tile_count);
     }
-    tm->fragments[w->index] = fragments;
-    return NULL;
+    tm->fragments[index] = fragments;
+}
+
+static void *pool_main(void *argument)
+{
+    struct pool_worker *w = argument;
+    render_pool *p = w->pool;
+    unsigned long seen = 0;
+    for (;;) {
+        pthread_mutex_lock(&p->lock);
+        while (p->generation == seen && !p->quit)
+            pthread_cond_wait(&p->wake, &p->lock);
+        if (p->quit) {
+            pthread_mutex_unlock(&p->lock);
+            return NULL;
+        }
+        seen = p->generation;
+        team *tm = p->team;
+        pthread_mutex_unlock(&p->lock);
+        work(tm, w->index);
+        pthread_mutex_lock(&p->lock);
+        if (--p->pending == 0)
+            pthread_cond_signal(&p->done);
+        pthread_mutex_unlock(&p->lock);
+    }
+}
+
+static void pool_stop(render_pool *p)
+{
+    if (!p)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->quit = 1;
+    pthread_cond_broadcast(&p->wake);
+    pthread_mutex_unlock(&p->lock);
+    for (int i = 0; i < p->threads; i++)
+        pthread_join(p->ids[i], NULL);
+    pthread_barrier_destroy(&p->barrier);
+    pthread_cond_destroy(&p->wake);
+    pthread_cond_destroy(&p->done);
+    pthread_mutex_destroy(&p->lock);
+    free(p);
+}
+
+/* A pool for `threads` threads in all (the caller included); NULL when no
+ * other thread can be started, and then the caller works alone.  Threads
+ * that cannot be started leave their share to the others. */
+static render_pool *pool_start(int threads)
+{
+    render_pool *p = calloc(1, sizeof *p);
+    if (!p)
+        return NULL;
+    if (pthread_mutex_init(&p->lock, NULL) != 0) {
+        free(p);
+        return NULL;
+    }
+    if (pthread_cond_init(&p->wake, NULL) != 0) {
+        pthread_mutex_destroy(&p->lock);
+        free(p);
+        return NULL;
+    }
+    if (pthread_cond_init(&p->done, NULL) != 0) {
+        pthread_cond_destroy(&p->wake);
+        pthread_mutex_destroy(&p->lock);
+        free(p);
+        return NULL;
+    }
+    for (int i = 1; i < threads; i++) {
+        p->workers[i].pool = p;
+        p->workers[i].index = i;
+        if (pthread_create(&p->ids[i - 1], NULL, pool_main, &p->workers[i]) != 0)
+            break;
+        p->threads++;
+    }
+    if (p->threads == 0
+        || pthread_barrier_init(&p->barrier, NULL, (unsigned)p->threads + 1) != 0) {
+        pthread_mutex_lock(&p->lock);
+        p->quit = 1;
+        pthread_cond_broadcast(&p->wake);
+        pthread_mutex_unlock(&p->lock);
+        for (int i = 0; i < p->threads; i++)
+            pthread_join(p->ids[i], NULL);
+        pthread_cond_destroy(&p->wake);
+        pthread_cond_destroy(&p->done);
+        pthread_mutex_destroy(&p->lock);
+        free(p);
+        return NULL;
+    }
+    return p;
+}
+
+/* Runs this frame's work on the caller and the pool's threads. */
+static void pool_run(render_pool *p, team *tm)
+{
+    if (!p) {
+        tm->workers = 1;
+        work(tm, 0);
+        return;
+    }
+    tm->workers = p->threads + 1;
+    tm->barrier = &p->barrier;
+    pthread_mutex_lock(&p->lock);
+    p->team = tm;
+    p->pending = p->threads;
+    p->generation++;
+    pthread_cond_broadcast(&p->wake);
+    pthread_mutex_unlock(&p->lock);
+    work(tm, 0);
+    pthread_mutex_lock(&p->lock);
+    while (p->pending > 0)
+        pthread_cond_wait(&p->done, &p->lock);
+    pthread_mutex_unlock(&p->lock);
 }
 
 /* ---- a frame ---------------------------------------------------------------------- */
@@ -761,6 +880,9 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
 
 void render_buffers_free(cg_renderer *r)
 {
+    pool_stop(r->pool);
+    r->pool = NULL;
+    r->pool_threads = 0;
     for (int i = 0; i < r->chunk_count; i++) {
         free(r->chunks[i].setups);
         free(r->chunks[i].bin_start);
@@ -923,33 +1045,12 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     tm.painter = o->algorithm != CG_RENDER_ZBUFFER;
     atomic_init(&tm.next_tile, 0);
     atomic_init(&tm.tiles_done, 0);
-    pthread_mutex_init(&tm.lock, NULL);
-    pthread_cond_init(&tm.go, NULL);
-    worker workers[64];
-    pthread_t threads[64];
-    int started = 1;
-    for (int i = 0; i < f.thread_count; i++) {
-        workers[i].team = &tm;
-        workers[i].index = i;
+    if (f.thread_count > 1 && r->pool_threads != f.thread_count) {
+        pool_stop(r->pool);
+        r->pool = pool_start(f.thread_count);
+        r->pool_threads = f.thread_count;
     }
-    /* Threads that cannot be started leave their chunks to the others. */
-    for (int i = 1; i < f.thread_count; i++) {
-        if (pthread_create(&threads[i], NULL, work, &workers[i]) != 0)
-            break;
-        started++;
-    }
-    tm.workers = started;
-    pthread_barrier_init(&tm.barrier, NULL, (unsigned)started);
-    pthread_mutex_lock(&tm.lock);
-    tm.ready = 1;
-    pthread_cond_broadcast(&tm.go);
-    pthread_mutex_unlock(&tm.lock);
-    work(&workers[0]);
-    for (int i = 1; i < started; i++)
-        pthread_join(threads[i], NULL);
-    pthread_barrier_destroy(&tm.barrier);
-    pthread_cond_destroy(&tm.go);
-    pthread_mutex_destroy(&tm.lock);
+    pool_run(f.thread_count > 1 ? r->pool : NULL, &tm);
     cg_status status = CG_OK;
     for (int i = 0; i < f.thread_count && status == CG_OK; i++) {
         render_chunk *c = &f.chunks[i];

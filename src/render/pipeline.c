@@ -415,6 +415,8 @@ static void triangle_color(const render_frame *f, size_t i, float out[3])
 void render_finish_setup(const render_frame *f, setup_triangle *t, const float color[3])
 {
     memcpy(t->color, color, sizeof t->color);
+    if (f->shading != MODE_FLAT)
+        return; /* the encoded colour is for flat shading only */
     t->color8.r = render_encode(&f->r->encoder, color[0]);
     t->color8.g = render_encode(&f->r->encoder, color[1]);
     t->color8.b = render_encode(&f->r->encoder, color[2]);

@@ -14,6 +14,27 @@ static int64_t floor_div(int64_t a, int64_t b)
     return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
 }
 
+/* Triangles whose box holds at most this many pixels are tested pixel by
+ * pixel at setup: the many that cover no pixel centre (in meshes whose
+ * triangles are a pixel or less on the screen) then cost no binning and no
+ * rasterizer setup. */
+#define SMALL_BOX 4
+
+static int covers_a_centre(const setup_triangle *t, int x0, int y0, int x1, int y1)
+{
+    raster_edges e;
+    render_edges_at(t, x0, y0, &e);
+    for (int y = y0; y < y1; y++) {
+        int64_t a = e.w[0], b = e.w[1], c = e.w[2];
+        for (int x = x0; x < x1; x++, a += e.step_x[0], b += e.step_x[1], c += e.step_x[2])
+            if ((a | b | c) >= 0)
+                return 1;
+        for (int k = 0; k < 3; k++)
+            e.w[k] += e.step_y[k];
+    }
+    return 0;
+}
+
 int render_setup_fixed(const render_corner *const v[3], int width, int height,
                        int attribute_count, int cull, setup_triangle *out)
 {
@@ -52,9 +73,14 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
     if (x0 >= x1 || y0 >= y1)
         return 0;
     for (int k = 0; k < 3; k++) {
+        out->x[k] = v[order[k]]->x;
+        out->y[k] = v[order[k]]->y;
+    }
+    if ((x1 - x0) * (y1 - y0) <= SMALL_BOX
+        && !covers_a_centre(out, (int)x0, (int)y0, (int)x1, (int)y1))
+        return 0;
+    for (int k = 0; k < 3; k++) {
         const render_corner *c = v[order[k]];
-        out->x[k] = c->x;
-        out->y[k] = c->y;
         out->z[k] = c->z;
         out->iw[k] = c->iw;
         for (int j = 0; j < attribute_count; j++)

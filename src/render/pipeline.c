@@ -664,10 +664,14 @@ static void work(team *tm, int index)
     if (workers > 1)
         pthread_barrier_wait(tm->barrier);
     for (int i = index; i < threads; i += workers) {
-        render_chunk *chunk = &f->chunks[i];
-        triangle_stage(f, chunk, tm->painter);
+        /* Worked on in a local copy: the chunks of other threads lie next
+         * to it, and counting in place would bounce the shared cache
+         * lines between the cores at every triangle. */
+        render_chunk chunk = f->chunks[i];
+        triangle_stage(f, &chunk, tm->painter);
         if (!tm->painter)
-            bin_chunk(f, chunk);
+            bin_chunk(f, &chunk);
+        f->chunks[i] = chunk;
     }
     if (workers > 1)
         pthread_barrier_wait(tm->barrier);

@@ -6,6 +6,9 @@
 #include "cg/color.h"
 
 #include <pthread.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,10 +84,57 @@ typedef struct gouraud_plane {
     int64_t step1, step2;          /* edge functions 1 and 2 per pixel */
 } gouraud_plane;
 
+#if defined(__SSE2__)
+/* The same with the three colours and 1 / w side by side in one SSE
+ * register: every lane is rounded as the scalar code rounds it, so the
+ * pictures are identical, with a quarter of the arithmetic. */
+static inline void encode_store(const render_encoder *e, cg_rgba8 *p, __m128 v)
+{
+    /* max(v, 0) gives 0 for NaN, like render_encode. */
+    v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+    __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps((float)RENDER_ENCODER_STEPS)));
+    unsigned c0 = e->start[_mm_cvtsi128_si32(i)];
+    unsigned c1 = e->start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
+    unsigned c2 = e->start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
+    __m128 next = _mm_setr_ps(e->threshold[c0], e->threshold[c1], e->threshold[c2], INFINITY);
+    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
+    p->r = (uint8_t)(c0 + (up & 1));
+    p->g = (uint8_t)(c1 + ((up >> 1) & 1));
+    p->b = (uint8_t)(c2 + ((up >> 2) & 1));
+    p->a = 255;
+}
+#endif
+
 static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, int64_t w1,
                                int64_t w2, float *zrow, unsigned char *row, int x0, int begin,
                                int end, const int depth_test, const int rgba8)
 {
+#if defined(__SSE2__)
+    if (rgba8) {
+        const __m128 base = _mm_setr_ps(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]);
+        const __m128 d1 = _mm_setr_ps(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]);
+        const __m128 d2 = _mm_setr_ps(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2]);
+        const __m128 step = _mm_setr_ps(g->c_step[0], g->c_step[1], g->c_step[2], g->q_step);
+        __m128 v = _mm_setzero_ps();
+        cg_rgba8 *out = (cg_rgba8 *)row + x0;
+        for (int i = begin, restart = begin; i < end;
+             i++, w1 += g->step1, w2 += g->step2, v = _mm_add_ps(v, step)) {
+            float l1 = (float)w1 * g->ia, l2 = (float)w2 * g->ia;
+            if (i == restart) {
+                v = _mm_add_ps(_mm_add_ps(base, _mm_mul_ps(_mm_set1_ps(l1), d1)),
+                               _mm_mul_ps(_mm_set1_ps(l2), d2));
+                restart += RENDER_TILE;
+            }
+            float z = g->z0 + l1 * g->dz1 + l2 * g->dz2;
+            if (depth_test && !(z < zrow[i]))
+                continue;
+            zrow[i] = z;
+            float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
+            encode_store(&f->r->encoder, out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
+        }
+        return;
+    }
+#endif
     float q = 0, c[3] = {0, 0, 0};
     for (int i = begin, restart = begin; i < end; i++, w1 += g->step1, w2 += g->step2,
              q += g->q_step, c[0] += g->c_step[0], c[1] += g->c_step[1], c[2] += g->c_step[2]) {

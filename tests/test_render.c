@@ -661,6 +661,41 @@ static void test_random_scenes(void)
     CHECK_MSG(ok, "random scenes give CG_OK or CG_EINVAL");
 }
 
+/* One renderer drawing many frames keeps its buffers and worker threads
+ * between them: frames whose thread count, image size, shading, culling and
+ * algorithm change from one to the next must each equal a fresh one-shot
+ * render with the same options. */
+static void test_renderer_reuse(void)
+{
+    cg_mesh *torus;
+    cg_mesh_torus(60, 30, 1, 0.45, &torus);
+    cg_render_options o = plain_options();
+    o.camera.eye = cg_vec3_make(0.5, 2, 3);
+    cg_renderer *r;
+    CHECK(cg_renderer_create(torus, &o, &r, NULL) == CG_OK);
+    check_rng rng = {99};
+    int differ = 0;
+    for (int frame = 0; frame < 24; frame++) {
+        o.threads = 1 + (int)(check_rng_next(&rng) % 4);
+        o.shading = (cg_shading)(check_rng_next(&rng) % 3);
+        o.cull = check_rng_next(&rng) % 2 ? CG_CULL_BACK : CG_CULL_NONE;
+        o.algorithm = frame % 6 == 5 ? CG_RENDER_PAINTER : CG_RENDER_ZBUFFER;
+        o.edges = frame % 8 == 3 ? CG_EDGES_WIREFRAME : CG_EDGES_NONE;
+        o.camera.eye = cg_vec3_make(check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), 3);
+        int w = 40 + (int)(check_rng_next(&rng) % 200), h = 30 + (int)(check_rng_next(&rng) % 150);
+        cg_image *a = image(w, h, CG_PIXEL_RGBA8), *b = image(w, h, CG_PIXEL_RGBA8);
+        CHECK(cg_renderer_set_options(r, &o) == CG_OK);
+        CHECK(cg_renderer_draw(r, a) == CG_OK);
+        CHECK(cg_render(torus, &o, b, NULL) == CG_OK);
+        differ += compare_images(a, b) != 0;
+        cg_image_free(a);
+        cg_image_free(b);
+    }
+    CHECK_MSG(differ == 0, "renderer reuse: %d of 24 frames differ from fresh renders", differ);
+    cg_renderer_free(r);
+    cg_mesh_free(torus);
+}
+
 /* ---- lighting ---------------------------------------------------------------------- */
 
 /* The renderer evaluates the illumination model in float; a flat-shaded
@@ -750,6 +785,7 @@ int main(void)
     test_normals();
     test_threads_identical();
     test_float_lighting();
+    test_renderer_reuse();
     test_bad_input();
     return check_finish();
 }

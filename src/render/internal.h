@@ -246,6 +246,7 @@ typedef struct render_chunk {
     size_t begin, end;          /* triangle range */
     unsigned char *setups;      /* setup triangles, frame->stride bytes each */
     size_t setup_count, setup_capacity;
+    size_t setup_stride;        /* the frame->stride the capacity counts */
     uint32_t *bin_start;        /* tile_count + 1 */
     uint32_t *bin_fill;         /* tile_count */
     size_t bin_start_capacity;  /* in tiles */

@@ -996,6 +996,11 @@ static cg_status frame_chunks(render_frame *f)
         render_chunk *c = &r->chunks[i];
         c->begin = r->triangle_count * (size_t)i / (size_t)f->thread_count;
         c->end = r->triangle_count * (size_t)(i + 1) / (size_t)f->thread_count;
+        /* The capacity counts set-ups of the last frame's size. */
+        if (c->setup_stride != f->stride) {
+            c->setup_capacity = c->setup_stride ? c->setup_capacity * c->setup_stride / f->stride : 0;
+            c->setup_stride = f->stride;
+        }
         c->setup_count = c->polygon_count = 0;
         c->culled = c->clipped = c->rejected = c->rasterized = 0;
         c->failed = 0;

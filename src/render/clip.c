@@ -16,17 +16,6 @@ static double plane_distance(const double c[4], int plane)
     }
 }
 
-unsigned render_outcode(const double c[4])
-{
-    if (!isfinite(c[0]) || !isfinite(c[1]) || !isfinite(c[2]) || !isfinite(c[3]))
-        return 0x40;
-    unsigned code = 0;
-    for (int p = 0; p < 6; p++)
-        if (plane_distance(c, p) < 0)
-            code |= 1u << p;
-    return code;
-}
-
 /* The point a fraction t of the way from `inside` to `outside`. */
 static void interpolate(const clip_vertex *inside, const clip_vertex *outside, double t,
                         int attribute_count, clip_vertex *out)

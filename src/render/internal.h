@@ -74,8 +74,18 @@ typedef struct clip_vertex {
 } clip_vertex;
 
 /* Outcode bits: one per plane -w<=x, x<=w, -w<=y, y<=w, -w<=z, z<=w that the
- * point violates. */
-unsigned render_outcode(const double c[4]);
+ * point violates; 0x40 alone when a coordinate is not finite.  Inline: the
+ * vertex stage classifies every vertex of every frame. */
+static inline unsigned render_outcode(const double c[4])
+{
+    /* x - x is 0 for a finite x and NaN otherwise. */
+    if (!((c[0] - c[0]) + (c[1] - c[1]) + (c[2] - c[2]) + (c[3] - c[3]) == 0))
+        return 0x40;
+    double w = c[3];
+    return (unsigned)(w + c[0] < 0) | (unsigned)(w - c[0] < 0) << 1
+           | (unsigned)(w + c[1] < 0) << 2 | (unsigned)(w - c[1] < 0) << 3
+           | (unsigned)(w + c[2] < 0) << 4 | (unsigned)(w - c[2] < 0) << 5;
+}
 /* Sutherland-Hodgman against the planes in mask, in homogeneous coordinates;
  * in[] (n vertices) is clipped into out (room for RENDER_MAX_POLYGON); returns
  * the new count (0 when nothing is left).  Intersections are computed from
@@ -145,20 +155,14 @@ typedef struct render_corner {
 static inline int32_t render_snap(double value, int size)
 {
     double s = value * RENDER_SUBPIXEL + 0.5;
-    /* floor without a library call (NaN is not possible here). */
-    if (s > -4e9 && s < 4e9) {
-        double t = (double)(int64_t)s;
-        s = t > s ? t - 1 : t;
-    } else {
-        s = floor(s);
-    }
+    /* Clamped first (NaN to lo), then floored: the bounds are integers, so
+     * this equals clamping the floor, and the value fits an int32_t. */
     double lo = -(double)RENDER_GUARD_BAND * RENDER_SUBPIXEL;
     double hi = ((double)size + RENDER_GUARD_BAND) * RENDER_SUBPIXEL;
-    if (!(s >= lo))
-        s = lo;
-    if (s > hi)
-        s = hi;
-    return (int32_t)s;
+    s = s > lo ? s : lo;
+    s = s < hi ? s : hi;
+    int32_t t = (int32_t)s; /* toward zero */
+    return t - ((double)t > s);
 }
 void render_corner_from_screen(const screen_vertex *s, int width, int height,
                                render_corner *out);
@@ -177,7 +181,30 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
 typedef struct raster_edges {
     int64_t w[3], step_x[3], step_y[3];
 } raster_edges;
-void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out);
+static inline void render_edge_at(const setup_triangle *t, int i, int j, int64_t px, int64_t py,
+                                  int64_t *w, int64_t *step_x, int64_t *step_y)
+{
+    int64_t dx = (int64_t)t->x[j] - t->x[i], dy = (int64_t)t->y[j] - t->y[i];
+    /* With positive area (clockwise on a y-down screen) the interior is
+     * where every edge function is positive.  Top edges run in +x with
+     * dy == 0, left edges go up (dy < 0); pixel centres on other edges
+     * belong to the neighbour: bias -1. */
+    int top_left = dy < 0 || (dy == 0 && dx > 0);
+    *w = dx * (py - t->y[i]) - dy * (px - t->x[i]) - (top_left ? 0 : 1);
+    *step_x = -dy * RENDER_SUBPIXEL;
+    *step_y = dx * RENDER_SUBPIXEL;
+}
+
+/* Edge k runs from vertex k + 1 to vertex k + 2 (mod 3).  Inline: every
+ * set-up triangle and every tile it touches starts here. */
+static inline void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out)
+{
+    int64_t px = (int64_t)x * RENDER_SUBPIXEL + RENDER_SUBPIXEL / 2;
+    int64_t py = (int64_t)y * RENDER_SUBPIXEL + RENDER_SUBPIXEL / 2;
+    render_edge_at(t, 1, 2, px, py, &out->w[0], &out->step_x[0], &out->step_y[0]);
+    render_edge_at(t, 2, 0, px, py, &out->w[1], &out->step_x[1], &out->step_y[1]);
+    render_edge_at(t, 0, 1, px, py, &out->w[2], &out->step_x[2], &out->step_y[2]);
+}
 
 /* ---- the renderer ------------------------------------------------------- */
 

@@ -8,10 +8,12 @@
 #define GUARD_BAND RENDER_GUARD_BAND
 #define HALF (SUBPIXEL / 2)
 
-static int64_t floor_div(int64_t a, int64_t b)
+/* floor(a / SUBPIXEL) for the snapped values (above -2^29): shifted to
+ * non-negative first, so the division is a plain shift. */
+static inline int64_t floor_subpixel(int64_t a)
 {
-    int64_t q = a / b;
-    return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+    const int64_t offset = (int64_t)1 << 32;
+    return (a + offset) / SUBPIXEL - offset / SUBPIXEL;
 }
 
 /* Triangles whose box holds at most this many pixels are tested pixel by
@@ -62,10 +64,10 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
         if (y[k] > max_y) max_y = y[k];
     }
     /* Pixels whose centres p * 256 + 128 lie within the box. */
-    int64_t x0 = floor_div((int64_t)min_x - HALF + SUBPIXEL - 1, SUBPIXEL);
-    int64_t x1 = floor_div((int64_t)max_x - HALF, SUBPIXEL) + 1;
-    int64_t y0 = floor_div((int64_t)min_y - HALF + SUBPIXEL - 1, SUBPIXEL);
-    int64_t y1 = floor_div((int64_t)max_y - HALF, SUBPIXEL) + 1;
+    int64_t x0 = floor_subpixel((int64_t)min_x - HALF + SUBPIXEL - 1);
+    int64_t x1 = floor_subpixel((int64_t)max_x - HALF) + 1;
+    int64_t y0 = floor_subpixel((int64_t)min_y - HALF + SUBPIXEL - 1);
+    int64_t y1 = floor_subpixel((int64_t)max_y - HALF) + 1;
     if (x0 < 0) x0 = 0;
     if (y0 < 0) y0 = 0;
     if (x1 > width) x1 = width;
@@ -113,23 +115,6 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
     render_corner_from_screen(c, width, height, &corners[2]);
     const render_corner *v[3] = {&corners[0], &corners[1], &corners[2]};
     return render_setup_fixed(v, width, height, attribute_count, cull, out);
-}
-
-void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out)
-{
-    int64_t px = (int64_t)x * SUBPIXEL + HALF, py = (int64_t)y * SUBPIXEL + HALF;
-    for (int k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        int64_t dx = (int64_t)t->x[j] - t->x[i], dy = (int64_t)t->y[j] - t->y[i];
-        /* With positive area (clockwise on a y-down screen) the interior is
-         * where every edge function is positive.  Top edges run in +x with
-         * dy == 0, left edges go up (dy < 0); pixel centres on other edges
-         * belong to the neighbour: bias -1. */
-        int top_left = dy < 0 || (dy == 0 && dx > 0);
-        out->w[k] = dx * (py - t->y[i]) - dy * (px - t->x[i]) - (top_left ? 0 : 1);
-        out->step_x[k] = -dy * SUBPIXEL;
-        out->step_y[k] = dx * SUBPIXEL;
-    }
 }
 
 cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_fn span,

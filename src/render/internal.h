@@ -266,9 +266,9 @@ typedef struct painter_polygon {
     screen_vertex v[RENDER_MAX_POLYGON];
 } painter_polygon;
 
-/* The triangles of one contiguous range of the mesh, processed by one
- * thread; ranges are concatenated in order so that results do not depend on
- * the number of threads. */
+/* The triangles of one contiguous range of the mesh, processed by whichever
+ * thread takes it; the ranges depend on the mesh only and are concatenated
+ * in order, so that results do not depend on the number of threads. */
 typedef struct render_chunk {
     size_t begin, end;          /* triangle range */
     unsigned char *setups;      /* setup triangles, frame->stride bytes each */
@@ -302,7 +302,8 @@ typedef struct render_frame {
     frame_vertex *vertices;
     float *attributes;          /* attribute_count per vertex */
     int thread_count;
-    render_chunk *chunks;
+    render_chunk *chunks;       /* chunk_count triangle ranges, in mesh order */
+    int chunk_count;
     size_t stride;
     size_t setup_slack;         /* setups of room kept after the last one */
     int tiles_x, tiles_y, tile_count;

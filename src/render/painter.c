@@ -280,7 +280,7 @@ cg_status render_painter(render_frame *f)
     pt.f = f;
     pt.depth_scale = f->width > f->height ? f->width : f->height;
     size_t total = 0;
-    for (int c = 0; c < f->thread_count; c++)
+    for (int c = 0; c < f->chunk_count; c++)
         total += f->chunks[c].polygon_count;
     /* Splitting is bounded: past four times the input (plus a margin) the
      * remaining conflicts are painted in sorted order. */
@@ -288,7 +288,7 @@ cg_status render_painter(render_frame *f)
     if (total > (size_t)1 << 28)
         return CG_ENOMEM;
     cg_status status = CG_OK;
-    for (int c = 0; c < f->thread_count && status == CG_OK; c++)
+    for (int c = 0; c < f->chunk_count && status == CG_OK; c++)
         for (size_t i = 0; i < f->chunks[c].polygon_count; i++)
             if (add_polygon(&pt, &f->chunks[c].polygons[i]) < 0) {
                 status = CG_ENOMEM;

@@ -645,10 +645,16 @@ static void bin_chunk(render_frame *f, render_chunk *c)
 
 /* ---- the team of threads ------------------------------------------------------ */
 
+#define VERTEX_BLOCK 4096   /* vertices taken at a time */
+#define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */
+#define MAX_CHUNKS 64
+
 typedef struct team {
     render_frame *frame;
     int workers;                /* threads taking part, the caller included */
     pthread_barrier_t *barrier; /* for all of them */
+    atomic_size_t next_vertex_block;
+    atomic_int next_chunk;
     atomic_int next_tile;
     atomic_int tiles_done;
     int painter;
@@ -706,16 +712,29 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
 static void work(team *tm, int index)
 {
     render_frame *f = tm->frame;
-    int workers = tm->workers, threads = f->thread_count;
-    /* Vertex stage over an even share of the vertices. */
+    int workers = tm->workers, chunks = f->chunk_count;
+    /* Vertex stage and triangle stage in blocks taken from shared counters:
+     * a thread slowed down (by other work on the machine) holds up the
+     * others by one block at most.  The blocks depend on the mesh only,
+     * and each lands in its own place, so the result does not depend on
+     * which thread took which. */
     size_t vertices = f->r->vertex_count;
-    vertex_stage(f, vertices * (size_t)index / (size_t)workers,
-                 vertices * (size_t)(index + 1) / (size_t)workers);
+    size_t blocks = (vertices + VERTEX_BLOCK - 1) / VERTEX_BLOCK;
+    for (;;) {
+        size_t b = atomic_fetch_add(&tm->next_vertex_block, 1);
+        if (b >= blocks)
+            break;
+        size_t end = (b + 1) * VERTEX_BLOCK;
+        vertex_stage(f, b * VERTEX_BLOCK, end < vertices ? end : vertices);
+    }
     if (workers > 1)
         pthread_barrier_wait(tm->barrier);
-    for (int i = index; i < threads; i += workers) {
-        /* Worked on in a local copy: the chunks of other threads lie next
-         * to it, and counting in place would bounce the shared cache
+    for (;;) {
+        int i = atomic_fetch_add(&tm->next_chunk, 1);
+        if (i >= chunks)
+            break;
+        /* Worked on in a local copy: the chunks other threads work on lie
+         * next to it, and counting in place would bounce the shared cache
          * lines between the cores at every triangle. */
         render_chunk chunk = f->chunks[i];
         triangle_stage(f, &chunk, tm->painter);
@@ -728,7 +747,7 @@ static void work(team *tm, int index)
     if (tm->painter)
         return;
     int failed = 0;
-    for (int i = 0; i < threads; i++)
+    for (int i = 0; i < chunks; i++)
         failed |= f->chunks[i].failed;
     if (failed)
         return;
@@ -741,7 +760,7 @@ static void work(team *tm, int index)
         int x1 = x0 + RENDER_TILE < f->width ? x0 + RENDER_TILE : f->width;
         int y1 = y0 + RENDER_TILE < f->height ? y0 + RENDER_TILE : f->height;
         clear_tile(f, x0, y0, x1, y1);
-        for (int i = 0; i < threads; i++) {
+        for (int i = 0; i < chunks; i++) {
             const render_chunk *c = &f->chunks[i];
             for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++) {
                 const setup_triangle *t =
@@ -979,23 +998,27 @@ static cg_status frame_vertex_buffers(render_frame *f)
     return CG_OK;
 }
 
-/* One chunk per thread, their buffers kept by the renderer and emptied. */
+/* The triangle ranges of the triangle stage, their buffers kept by the
+ * renderer and emptied: one per TRIANGLE_BLOCK triangles, at most
+ * MAX_CHUNKS, a number that depends on the mesh only. */
 static cg_status frame_chunks(render_frame *f)
 {
     cg_renderer *r = f->r;
-    if (r->chunk_count < f->thread_count) {
-        render_chunk *chunks = realloc(r->chunks, (size_t)f->thread_count * sizeof *chunks);
+    size_t wanted = (r->triangle_count + TRIANGLE_BLOCK - 1) / TRIANGLE_BLOCK;
+    f->chunk_count = wanted < 1 ? 1 : wanted > MAX_CHUNKS ? MAX_CHUNKS : (int)wanted;
+    if (r->chunk_count < f->chunk_count) {
+        render_chunk *chunks = realloc(r->chunks, (size_t)f->chunk_count * sizeof *chunks);
         if (!chunks)
             return CG_ENOMEM;
         memset(chunks + r->chunk_count, 0,
-               (size_t)(f->thread_count - r->chunk_count) * sizeof *chunks);
+               (size_t)(f->chunk_count - r->chunk_count) * sizeof *chunks);
         r->chunks = chunks;
-        r->chunk_count = f->thread_count;
+        r->chunk_count = f->chunk_count;
     }
-    for (int i = 0; i < f->thread_count; i++) {
+    for (int i = 0; i < f->chunk_count; i++) {
         render_chunk *c = &r->chunks[i];
-        c->begin = r->triangle_count * (size_t)i / (size_t)f->thread_count;
-        c->end = r->triangle_count * (size_t)(i + 1) / (size_t)f->thread_count;
+        c->begin = r->triangle_count * (size_t)i / (size_t)f->chunk_count;
+        c->end = r->triangle_count * (size_t)(i + 1) / (size_t)f->chunk_count;
         /* The capacity counts set-ups of the last frame's size. */
         if (c->setup_stride != f->stride) {
             c->setup_capacity = c->setup_stride ? c->setup_capacity * c->setup_stride / f->stride : 0;
@@ -1106,6 +1129,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     tm.painter = o->algorithm != CG_RENDER_ZBUFFER;
     atomic_init(&tm.next_tile, 0);
     atomic_init(&tm.tiles_done, 0);
+    atomic_init(&tm.next_vertex_block, 0);
+    atomic_init(&tm.next_chunk, 0);
     if (f.thread_count > 1 && r->pool_threads != f.thread_count) {
         pool_stop(r->pool);
         r->pool = pool_start(f.thread_count);
@@ -1113,7 +1138,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     }
     pool_run(f.thread_count > 1 ? r->pool : NULL, &tm);
     cg_status status = CG_OK;
-    for (int i = 0; i < f.thread_count && status == CG_OK; i++) {
+    for (int i = 0; i < f.chunk_count && status == CG_OK; i++) {
         render_chunk *c = &f.chunks[i];
         if (c->failed)
             status = CG_ENOMEM;
@@ -1121,8 +1146,9 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         r->stats.clipped += c->clipped;
         r->stats.rejected += c->rejected;
         r->stats.rasterized += c->setup_count;
-        r->stats.fragments += tm.fragments[i];
     }
+    for (int i = 0; i < f.thread_count; i++)
+        r->stats.fragments += tm.fragments[i];
     if (status == CG_OK && tm.painter)
         status = render_painter(&f);
     if (status == CG_OK) {

@@ -649,17 +649,47 @@ static void bin_chunk(render_frame *f, render_chunk *c)
 #define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */
 #define MAX_CHUNKS 64
 
+/* One frame's work: three phases (vertex blocks, triangle chunks, tiles),
+ * each a set of blocks that threads take from a counter and count when done.
+ * A thread moves to the next phase once every block of this one is done; it
+ * never waits for a thread that has taken nothing, so a worker the
+ * scheduler has not run yet (the machine busy with other work) holds up
+ * nobody, and the caller may do the whole frame alone. */
 typedef struct team {
     render_frame *frame;
-    int workers;                /* threads taking part, the caller included */
-    pthread_barrier_t *barrier; /* for all of them */
-    atomic_size_t next_vertex_block;
-    atomic_int next_chunk;
-    atomic_int next_tile;
-    atomic_int tiles_done;
+    pthread_mutex_t *lock;      /* the pool's, NULL for the caller alone */
+    pthread_cond_t *phase;      /* signalled when a phase completes */
+    atomic_size_t next_vertex_block, vertex_blocks_done;
+    atomic_size_t next_chunk, chunks_done;
+    atomic_size_t next_tile, tiles_done;
     int painter;
     size_t fragments[64];
 } team;
+
+/* Counts one block of a phase of `total` done and returns the count; the
+ * last one wakes the threads waiting for the phase. */
+static size_t block_done(team *tm, atomic_size_t *done, size_t total)
+{
+    size_t count = atomic_fetch_add(done, 1) + 1;
+    if (count == total && tm->lock) {
+        pthread_mutex_lock(tm->lock);
+        pthread_cond_broadcast(tm->phase);
+        pthread_mutex_unlock(tm->lock);
+    }
+    return count;
+}
+
+/* Waits until every block of a phase is done: called once no block is left
+ * to take, so only blocks other threads are working on can be missing. */
+static void phase_wait(team *tm, atomic_size_t *done, size_t total)
+{
+    if (atomic_load(done) >= total || !tm->lock)
+        return;
+    pthread_mutex_lock(tm->lock);
+    while (atomic_load(done) < total)
+        pthread_cond_wait(tm->phase, tm->lock);
+    pthread_mutex_unlock(tm->lock);
+}
 
 /* The renderer's worker threads, started at its first frame with more than
  * one thread and kept until the thread count changes or the renderer is
@@ -668,13 +698,12 @@ typedef struct team {
  * wakes on the core it last ran on.  The calling thread is worker 0. */
 typedef struct render_pool {
     pthread_mutex_t lock;
-    pthread_cond_t wake, done;
-    pthread_barrier_t barrier;  /* threads + 1 */
+    pthread_cond_t wake, idle, phase;
     int threads;                /* started besides the caller */
-    int pending;                /* started threads still in this frame's work */
+    int inside;                 /* threads working on the open frame */
     int quit;
     unsigned long generation;   /* frames handed out */
-    team *team;                 /* this frame's */
+    team *team;                 /* the open frame's; NULL once it is closed */
     pthread_t ids[63];
     struct pool_worker {
         struct render_pool *pool;
@@ -712,7 +741,7 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1)
 static void work(team *tm, int index)
 {
     render_frame *f = tm->frame;
-    int workers = tm->workers, chunks = f->chunk_count;
+    int chunks = f->chunk_count;
     /* Vertex stage and triangle stage in blocks taken from shared counters:
      * a thread slowed down (by other work on the machine) holds up the
      * others by one block at most.  The blocks depend on the mesh only,
@@ -726,12 +755,12 @@ static void work(team *tm, int index)
             break;
         size_t end = (b + 1) * VERTEX_BLOCK;
         vertex_stage(f, b * VERTEX_BLOCK, end < vertices ? end : vertices);
+        block_done(tm, &tm->vertex_blocks_done, blocks);
     }
-    if (workers > 1)
-        pthread_barrier_wait(tm->barrier);
+    phase_wait(tm, &tm->vertex_blocks_done, blocks);
     for (;;) {
-        int i = atomic_fetch_add(&tm->next_chunk, 1);
-        if (i >= chunks)
+        size_t i = atomic_fetch_add(&tm->next_chunk, 1);
+        if (i >= (size_t)chunks)
             break;
         /* Worked on in a local copy: the chunks other threads work on lie
          * next to it, and counting in place would bounce the shared cache
@@ -741,9 +770,9 @@ static void work(team *tm, int index)
         if (!tm->painter)
             bin_chunk(f, &chunk);
         f->chunks[i] = chunk;
+        block_done(tm, &tm->chunks_done, (size_t)chunks);
     }
-    if (workers > 1)
-        pthread_barrier_wait(tm->barrier);
+    phase_wait(tm, &tm->chunks_done, (size_t)chunks);
     if (tm->painter)
         return;
     int failed = 0;
@@ -753,9 +782,10 @@ static void work(team *tm, int index)
         return;
     size_t fragments = 0;
     for (;;) {
-        int tile = atomic_fetch_add(&tm->next_tile, 1);
-        if (tile >= f->tile_count)
+        size_t claimed = atomic_fetch_add(&tm->next_tile, 1);
+        if (claimed >= (size_t)f->tile_count)
             break;
+        int tile = (int)claimed;
         int x0 = tile % f->tiles_x * RENDER_TILE, y0 = tile / f->tiles_x * RENDER_TILE;
         int x1 = x0 + RENDER_TILE < f->width ? x0 + RENDER_TILE : f->width;
         int y1 = y0 + RENDER_TILE < f->height ? y0 + RENDER_TILE : f->height;
@@ -768,11 +798,13 @@ static void work(team *tm, int index)
                 fragments += render_raster(f, t, x0, y0, x1, y1, 1);
             }
         }
-        int done = atomic_fetch_add(&tm->tiles_done, 1) + 1;
+        size_t done = block_done(tm, &tm->tiles_done, (size_t)f->tile_count);
         if (index == 0 && f->o->progress)
             f->o->progress(f->o->progress_user, (double)done / f->tile_count);
     }
     tm->fragments[index] = fragments;
+    if (index == 0)
+        phase_wait(tm, &tm->tiles_done, (size_t)f->tile_count);
 }
 
 static void *pool_main(void *argument)
@@ -780,23 +812,25 @@ static void *pool_main(void *argument)
     struct pool_worker *w = argument;
     render_pool *p = w->pool;
     unsigned long seen = 0;
+    pthread_mutex_lock(&p->lock);
     for (;;) {
-        pthread_mutex_lock(&p->lock);
         while (p->generation == seen && !p->quit)
             pthread_cond_wait(&p->wake, &p->lock);
-        if (p->quit) {
-            pthread_mutex_unlock(&p->lock);
-            return NULL;
-        }
+        if (p->quit)
+            break;
         seen = p->generation;
         team *tm = p->team;
+        if (!tm)
+            continue; /* woken too late: the caller finished the frame */
+        p->inside++;
         pthread_mutex_unlock(&p->lock);
         work(tm, w->index);
         pthread_mutex_lock(&p->lock);
-        if (--p->pending == 0)
-            pthread_cond_signal(&p->done);
-        pthread_mutex_unlock(&p->lock);
+        if (--p->inside == 0)
+            pthread_cond_signal(&p->idle);
     }
+    pthread_mutex_unlock(&p->lock);
+    return NULL;
 }
 
 static void pool_stop(render_pool *p)
@@ -809,9 +843,9 @@ static void pool_stop(render_pool *p)
     pthread_mutex_unlock(&p->lock);
     for (int i = 0; i < p->threads; i++)
         pthread_join(p->ids[i], NULL);
-    pthread_barrier_destroy(&p->barrier);
     pthread_cond_destroy(&p->wake);
-    pthread_cond_destroy(&p->done);
+    pthread_cond_destroy(&p->idle);
+    pthread_cond_destroy(&p->phase);
     pthread_mutex_destroy(&p->lock);
     free(p);
 }
@@ -824,65 +858,54 @@ static render_pool *pool_start(int threads)
     render_pool *p = calloc(1, sizeof *p);
     if (!p)
         return NULL;
-    if (pthread_mutex_init(&p->lock, NULL) != 0) {
-        free(p);
-        return NULL;
-    }
-    if (pthread_cond_init(&p->wake, NULL) != 0) {
-        pthread_mutex_destroy(&p->lock);
-        free(p);
-        return NULL;
-    }
-    if (pthread_cond_init(&p->done, NULL) != 0) {
+    int made = 0; /* synchronization objects initialized */
+    made += pthread_mutex_init(&p->lock, NULL) == 0;
+    made += made == 1 && pthread_cond_init(&p->wake, NULL) == 0;
+    made += made == 2 && pthread_cond_init(&p->idle, NULL) == 0;
+    made += made == 3 && pthread_cond_init(&p->phase, NULL) == 0;
+    if (made == 4)
+        for (int i = 1; i < threads; i++) {
+            p->workers[i].pool = p;
+            p->workers[i].index = i;
+            if (pthread_create(&p->ids[i - 1], NULL, pool_main, &p->workers[i]) != 0)
+                break;
+            p->threads++;
+        }
+    if (p->threads > 0)
+        return p;
+    if (made > 3)
+        pthread_cond_destroy(&p->phase);
+    if (made > 2)
+        pthread_cond_destroy(&p->idle);
+    if (made > 1)
         pthread_cond_destroy(&p->wake);
+    if (made > 0)
         pthread_mutex_destroy(&p->lock);
-        free(p);
-        return NULL;
-    }
-    for (int i = 1; i < threads; i++) {
-        p->workers[i].pool = p;
-        p->workers[i].index = i;
-        if (pthread_create(&p->ids[i - 1], NULL, pool_main, &p->workers[i]) != 0)
-            break;
-        p->threads++;
-    }
-    if (p->threads == 0
-        || pthread_barrier_init(&p->barrier, NULL, (unsigned)p->threads + 1) != 0) {
-        pthread_mutex_lock(&p->lock);
-        p->quit = 1;
-        pthread_cond_broadcast(&p->wake);
-        pthread_mutex_unlock(&p->lock);
-        for (int i = 0; i < p->threads; i++)
-            pthread_join(p->ids[i], NULL);
-        pthread_cond_destroy(&p->wake);
-        pthread_cond_destroy(&p->done);
-        pthread_mutex_destroy(&p->lock);
-        free(p);
-        return NULL;
-    }
-    return p;
+    free(p);
+    return NULL;
 }
 
 /* Runs this frame's work on the caller and the pool's threads. */
 static void pool_run(render_pool *p, team *tm)
 {
     if (!p) {
-        tm->workers = 1;
         work(tm, 0);
         return;
     }
-    tm->workers = p->threads + 1;
-    tm->barrier = &p->barrier;
+    tm->lock = &p->lock;
+    tm->phase = &p->phase;
     pthread_mutex_lock(&p->lock);
     p->team = tm;
-    p->pending = p->threads;
     p->generation++;
     pthread_cond_broadcast(&p->wake);
     pthread_mutex_unlock(&p->lock);
     work(tm, 0);
+    /* Closed: threads that wake from now on leave it alone; the caller
+     * waits only for those already working on it. */
     pthread_mutex_lock(&p->lock);
-    while (p->pending > 0)
-        pthread_cond_wait(&p->done, &p->lock);
+    p->team = NULL;
+    while (p->inside > 0)
+        pthread_cond_wait(&p->idle, &p->lock);
     pthread_mutex_unlock(&p->lock);
 }
 
@@ -1127,10 +1150,12 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     memset(&tm, 0, sizeof tm);
     tm.frame = &f;
     tm.painter = o->algorithm != CG_RENDER_ZBUFFER;
+    atomic_init(&tm.next_vertex_block, 0);
+    atomic_init(&tm.vertex_blocks_done, 0);
+    atomic_init(&tm.next_chunk, 0);
+    atomic_init(&tm.chunks_done, 0);
     atomic_init(&tm.next_tile, 0);
     atomic_init(&tm.tiles_done, 0);
-    atomic_init(&tm.next_vertex_block, 0);
-    atomic_init(&tm.next_chunk, 0);
     if (f.thread_count > 1 && r->pool_threads != f.thread_count) {
         pool_stop(r->pool);
         r->pool = pool_start(f.thread_count);

@@ -46,16 +46,6 @@ void render_lighting_prepare(render_lighting *l)
     l->blinn = m->specular == CG_SPECULAR_BLINN;
 }
 
-/* x^n for x in (0, 1], as cg/light.h takes it. */
-static float power(float x, float n)
-{
-    if (n == 1)
-        return x;
-    if (n == 2)
-        return x * x;
-    return powf(x, n);
-}
-
 void render_shade(const render_lighting *l, const float position[3], const float n[3],
                   const float base[3], float out[3])
 {
@@ -87,12 +77,12 @@ void render_shade(const render_lighting *l, const float position[3], const float
             float h[3] = {L[0] + view[0], L[1] + view[1], L[2] + view[2]};
             float hl = sqrtf(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
             float nh = hl > 0 ? (n[0] * h[0] + n[1] * h[1] + n[2] * h[2]) / hl : 0;
-            spec = nh > 0 ? power(nh, l->shininess) : 0;
+            spec = nh > 0 ? powf(nh, l->shininess) : 0;
         } else {
             float nv = n[0] * view[0] + n[1] * view[1] + n[2] * view[2];
             float lv = L[0] * view[0] + L[1] * view[1] + L[2] * view[2];
             float rv = 2 * nl * nv - lv;
-            spec = rv > 0 ? power(rv > 1 ? 1 : rv, l->shininess) : 0;
+            spec = rv > 0 ? powf(rv > 1 ? 1 : rv, l->shininess) : 0;
         }
         for (int j = 0; j < 3; j++)
             specular[j] += c[j] * spec;

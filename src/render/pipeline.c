@@ -155,6 +155,31 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
     }
 }
 
+/* One Gouraud pixel from its barycentric weights l1, l2, evaluated as a run
+ * starts (for triangles of a few pixels, which have no runs to speak of). */
+static inline void gouraud_pixel(const render_frame *f, const gouraud_plane *g, float l1,
+                                 float l2, unsigned char *row, int x, const int rgba8)
+{
+#if defined(__SSE2__)
+    if (rgba8) {
+        __m128 v = _mm_add_ps(
+            _mm_add_ps(_mm_setr_ps(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]),
+                       _mm_mul_ps(_mm_set1_ps(l1),
+                                  _mm_setr_ps(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]))),
+            _mm_mul_ps(_mm_set1_ps(l2), _mm_setr_ps(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2])));
+        float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
+        encode_store(&f->r->encoder, (cg_rgba8 *)row + x, _mm_mul_ps(v, _mm_set1_ps(r)));
+        return;
+    }
+#endif
+    float q = g->q[0] + l1 * g->q[1] + l2 * g->q[2], c[3];
+    for (int j = 0; j < 3; j++)
+        c[j] = g->c[0][j] + l1 * g->c[1][j] + l2 * g->c[2][j];
+    float r = 1 / q;
+    float v[3] = {c[0] * r, c[1] * r, c[2] * r};
+    store(f, row, x, v, rgba8);
+}
+
 static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float ia,
                           gouraud_plane *g)
 {
@@ -181,6 +206,10 @@ static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float 
 /* raster_mode is written once and specialized by render_raster for each
  * shading mode and image format: its constant arguments must reach the
  * per-pixel loop, so it is forced inline where the compiler allows. */
+/* Clipped to the tile, a triangle box at most this many pixels on each side
+ * is rasterized pixel by pixel. */
+#define TINY 4
+
 #if defined(__GNUC__)
 #define RENDER_SPECIALIZE __attribute__((always_inline)) inline
 #else
@@ -213,6 +242,33 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
     if (mode == MODE_GOURAUD)
         gouraud_setup(t, &e, ia, &gouraud);
     size_t fragments = 0;
+    if (mode != MODE_PHONG && x1 - x0 <= TINY && y1 - y0 <= TINY) {
+        /* A few pixels (most triangles of a finely tessellated mesh): each
+         * tested and shaded on its own, without the runs' setup. */
+        for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
+                 e.w[2] += e.step_y[2]) {
+            int64_t a = e.w[0], b = e.w[1], c = e.w[2];
+            float *zrow = f->depth + (size_t)y * f->width;
+            unsigned char *row = f->image->data + (size_t)y * f->image->stride;
+            for (int x = x0; x < x1; x++, a += e.step_x[0], b += e.step_x[1], c += e.step_x[2]) {
+                if ((a | b | c) < 0)
+                    continue;
+                fragments++;
+                float l1 = (float)b * ia, l2 = (float)c * ia;
+                float z = z0 + l1 * dz1 + l2 * dz2;
+                if (depth_test && !(z < zrow[x]))
+                    continue;
+                zrow[x] = z;
+                if (mode == MODE_GOURAUD)
+                    gouraud_pixel(f, &gouraud, l1, l2, row, x, rgba8);
+                else if (rgba8)
+                    ((cg_rgba8 *)row)[x] = t->color8;
+                else
+                    store(f, row, x, t->color, rgba8);
+            }
+        }
+        return fragments;
+    }
     for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
              e.w[2] += e.step_y[2]) {
         int begin, end;
@@ -730,7 +786,8 @@ static void fill_rows(unsigned char *p, size_t stride, int rows, size_t bytes, _
         else
             for (size_t i = 0; i < whole; i += 16)
                 _mm_storeu_si128((__m128i *)(p + i), pattern);
-        memcpy(p + whole, tail, bytes - whole);
+        if (whole < bytes)
+            memcpy(p + whole, tail, bytes - whole);
     }
     if (stream)
         _mm_sfence();

@@ -36,14 +36,19 @@ static int is_background(const cg_image *img, int x, int y, cg_rgba8 bg)
  * exactly one fragment (fragments == covered pixels), no holes inside. */
 static void test_closed_mesh_once(void)
 {
-    cg_mesh *sphere;
-    CHECK(cg_mesh_sphere(40, 23, 1.0, &sphere) == CG_OK);
+    /* A coarse sphere (triangles of many pixels) and a fine one (triangles
+     * of a pixel or less, rasterized pixel by pixel). */
+    cg_mesh *coarse, *fine;
+    CHECK(cg_mesh_sphere(40, 23, 1.0, &coarse) == CG_OK);
+    CHECK(cg_mesh_sphere(300, 151, 1.0, &fine) == CG_OK);
     cg_render_options o = plain_options();
     o.background = (cg_rgbaf){1, 0, 1, 1};
     cg_rgba8 bg = cg_linear_to_rgba8(o.background);
     const cg_vec3 eyes[] = {{0, 0, 5}, {3, 2, 1}, {0.1, 5, 0}, {-2, -1, -3}};
-    for (int e = 0; e < 4; e++) {
-        o.camera.eye = eyes[e];
+    for (int e = 0; e < 8; e++) {
+        const cg_mesh *sphere = e < 4 ? coarse : fine;
+        o.camera.eye = eyes[e % 4];
+        o.shading = (cg_shading)(e % 3);
         o.threads = 1 + e % 3;
         cg_renderer *r;
         CHECK(cg_renderer_create(sphere, &o, &r, NULL) == CG_OK);
@@ -70,7 +75,8 @@ static void test_closed_mesh_once(void)
         cg_image_free(img);
         cg_renderer_free(r);
     }
-    cg_mesh_free(sphere);
+    cg_mesh_free(coarse);
+    cg_mesh_free(fine);
 }
 
 /* The camera inside a closed sphere: triangles cross the near plane and

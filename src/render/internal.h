@@ -7,6 +7,7 @@
 #include "cg/color.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -240,7 +241,8 @@ struct cg_renderer {
      * once they have grown to the mesh and image) */
     struct frame_vertex *frame_vertices;
     float *frame_attributes;
-    size_t frame_vertex_capacity, frame_attribute_capacity;
+    atomic_uchar *frame_states;
+    size_t frame_vertex_capacity, frame_attribute_capacity, frame_state_capacity;
     struct render_chunk *chunks;
     int chunk_count;
     struct render_pool *pool;   /* worker threads kept between frames */
@@ -300,7 +302,9 @@ typedef struct render_frame {
     cg_rgba8 background8;
     float *depth;
     frame_vertex *vertices;
-    float *attributes;          /* attribute_count per vertex */
+    float *attributes;          /* attribute_count per vertex, valid where */
+    atomic_uchar *states;       /* ... the vertex's state is 2 (see
+                                   vertex_attributes in pipeline.c) */
     int thread_count;
     render_chunk *chunks;       /* chunk_count triangle ranges, in mesh order */
     int chunk_count;

@@ -375,10 +375,65 @@ void render_world_position(const render_frame *f, size_t i, float out[3])
     world_of(f, f->r->vertices[i].position, out);
 }
 
+/* The attributes of vertex i (its lit colour for Gouraud; normal, world
+ * position and colour for Phong) into out. */
+static void compute_attributes(const render_frame *f, size_t i, float *out)
+{
+    const prepared_vertex *p = &f->r->vertices[i];
+    const int n = f->attribute_count;
+    float nx = p->normal[0], ny = p->normal[1], nz = p->normal[2], normal[3];
+    for (int k = 0; k < 3; k++)
+        normal[k] = f->normal_matrix[k][0] * nx + f->normal_matrix[k][1] * ny
+                    + f->normal_matrix[k][2] * nz;
+    float length = sqrtf(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    float inverse = length > 0 ? 1 / length : 0;
+    for (int k = 0; k < 3; k++)
+        normal[k] *= inverse;
+    float world[3];
+    if (f->shading == MODE_GOURAUD) {
+        /* Only the specular term needs the position. */
+        if (f->lighting.ks != 0)
+            world_of(f, p->position, world);
+        render_shade(&f->lighting, f->lighting.ks != 0 ? world : p->position, normal, p->color,
+                     out);
+    } else {
+        world_of(f, p->position, world);
+        memcpy(out, normal, sizeof normal);
+        memcpy(out + 3, world, sizeof world);
+        if (n > 6)
+            memcpy(out + 6, p->color, sizeof p->color);
+    }
+}
+
+/* The attributes of vertex i, computed the first time a triangle that is
+ * drawn needs them: most vertices of a large mesh belong only to back faces
+ * or to triangles that cover no pixel centre, and are never lit.  The
+ * thread that moves the vertex's state from 0 to 1 computes them into the
+ * frame's array and publishes them (state 2); a thread that finds them in
+ * the making computes its own copy into local (the same bits: the same
+ * function of the same inputs), so nobody waits for anybody. */
+static const float *vertex_attributes(const render_frame *f, uint32_t i, float *local)
+{
+    float *a = f->attributes + (size_t)i * (size_t)f->attribute_count;
+    unsigned char state = atomic_load_explicit(&f->states[i], memory_order_acquire);
+    if (state == 2)
+        return a;
+    if (state == 0 && atomic_compare_exchange_strong_explicit(&f->states[i], &state, 1,
+                                                              memory_order_acquire,
+                                                              memory_order_acquire)) {
+        compute_attributes(f, i, a);
+        atomic_store_explicit(&f->states[i], 2, memory_order_release);
+        return a;
+    }
+    if (state == 2)
+        return a;
+    compute_attributes(f, i, local);
+    return local;
+}
+
 static void vertex_stage(render_frame *f, size_t begin, size_t end)
 {
     const cg_renderer *r = f->r;
-    const int n = f->attribute_count;
     for (size_t i = begin; i < end; i++) {
         const prepared_vertex *p = &r->vertices[i];
         frame_vertex *v = &f->vertices[i];
@@ -398,31 +453,7 @@ static void vertex_stage(render_frame *f, size_t begin, size_t end)
             v->sz = (float)s.z;
             v->siw = (float)s.iw;
         }
-        if (n == 0)
-            continue;
-        float *a = f->attributes + i * (size_t)n;
-        float nx = p->normal[0], ny = p->normal[1], nz = p->normal[2], normal[3];
-        for (int k = 0; k < 3; k++)
-            normal[k] = f->normal_matrix[k][0] * nx + f->normal_matrix[k][1] * ny
-                        + f->normal_matrix[k][2] * nz;
-        float length = sqrtf(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-        float inverse = length > 0 ? 1 / length : 0;
-        for (int k = 0; k < 3; k++)
-            normal[k] *= inverse;
-        float world[3];
-        if (f->shading == MODE_GOURAUD) {
-            /* Only the specular term needs the position. */
-            if (f->lighting.ks != 0)
-                world_of(f, p->position, world);
-            render_shade(&f->lighting, f->lighting.ks != 0 ? world : p->position, normal,
-                         p->color, a);
-        } else {
-            world_of(f, p->position, world);
-            memcpy(a, normal, sizeof normal);
-            memcpy(a + 3, world, sizeof world);
-            if (n > 6)
-                memcpy(a + 6, p->color, sizeof p->color);
-        }
+        atomic_store_explicit(&f->states[i], 0, memory_order_relaxed);
     }
 }
 
@@ -558,14 +589,15 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
                 corner[k].y = v[k]->sy;
                 corner[k].z = v[k]->sz;
                 corner[k].iw = v[k]->siw;
-                corner[k].a = f->attributes + tri[k] * (size_t)n;
+                corner[k].a = NULL;
             }
             const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
-            /* Set up in place at the end of the chunk's list. */
+            /* Set up in place at the end of the chunk's list, attributes
+             * after: only triangles that cover a pixel need them. */
             setup_triangle *t = next_setup(f, c);
             if (!t)
                 continue;
-            int result = render_setup_fixed(pc, f->width, f->height, n, f->cull, t);
+            int result = render_setup_fixed(pc, f->width, f->height, 0, f->cull, t);
             if (result < 0) {
                 c->culled++;
                 continue;
@@ -573,6 +605,15 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
             if (result == 0) {
                 c->rejected++;
                 continue;
+            }
+            if (n > 0) {
+                /* In the setup's order: turned around unless clockwise. */
+                static const int turned[3] = {0, 2, 1}, kept[3] = {0, 1, 2};
+                const int *order = area > 0 ? kept : turned;
+                float local[RENDER_MAX_ATTRIBUTES];
+                for (int k = 0; k < 3; k++)
+                    memcpy(t->a + k * n, vertex_attributes(f, tri[order[k]], local),
+                           sizeof(float) * (size_t)n);
             }
             float color[3];
             triangle_color(f, i, color);
@@ -583,7 +624,11 @@ static void triangle_stage(render_frame *f, render_chunk *c, int painter)
         clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
         for (int k = 0; k < 3; k++) {
             render_clip_position(f, tri[k], in[k].c);
-            memcpy(in[k].a, f->attributes + tri[k] * (size_t)n, sizeof(float) * (size_t)n);
+            if (n > 0) {
+                const float *a = vertex_attributes(f, tri[k], in[k].a);
+                if (a != in[k].a)
+                    memcpy(in[k].a, a, sizeof(float) * (size_t)n);
+            }
         }
         int count = 3;
         const clip_vertex *corners = in;
@@ -1100,9 +1145,11 @@ void render_buffers_free(cg_renderer *r)
     r->chunk_count = 0;
     free(r->frame_vertices);
     free(r->frame_attributes);
+    free(r->frame_states);
     r->frame_vertices = NULL;
     r->frame_attributes = NULL;
-    r->frame_vertex_capacity = r->frame_attribute_capacity = 0;
+    r->frame_states = NULL;
+    r->frame_vertex_capacity = r->frame_attribute_capacity = r->frame_state_capacity = 0;
 }
 
 /* The frame's vertex buffers, kept by the renderer. */
@@ -1121,10 +1168,16 @@ static cg_status frame_vertex_buffers(render_frame *f)
         r->frame_attributes = malloc(floats * sizeof *r->frame_attributes);
         r->frame_attribute_capacity = r->frame_attributes ? floats : 0;
     }
-    if (!r->frame_vertices || !r->frame_attributes)
+    if (r->frame_state_capacity < count) {
+        free(r->frame_states);
+        r->frame_states = malloc(count * sizeof *r->frame_states);
+        r->frame_state_capacity = r->frame_states ? count : 0;
+    }
+    if (!r->frame_vertices || !r->frame_attributes || !r->frame_states)
         return CG_ENOMEM;
     f->vertices = r->frame_vertices;
     f->attributes = r->frame_attributes;
+    f->states = r->frame_states;
     return CG_OK;
 }
 

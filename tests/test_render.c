@@ -680,7 +680,7 @@ static void test_renderer_reuse(void)
     cg_renderer *r;
     CHECK(cg_renderer_create(torus, &o, &r, NULL) == CG_OK);
     check_rng rng = {99};
-    int differ = 0;
+    int differ = 0, depth_differ = 0, w = 0, h = 0;
     for (int frame = 0; frame < 24; frame++) {
         o.threads = 1 + (int)(check_rng_next(&rng) % 4);
         o.shading = (cg_shading)(check_rng_next(&rng) % 3);
@@ -688,16 +688,31 @@ static void test_renderer_reuse(void)
         o.algorithm = frame % 6 == 5 ? CG_RENDER_PAINTER : CG_RENDER_ZBUFFER;
         o.edges = frame % 8 == 3 ? CG_EDGES_WIREFRAME : CG_EDGES_NONE;
         o.camera.eye = cg_vec3_make(check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), 3);
-        int w = 40 + (int)(check_rng_next(&rng) % 200), h = 30 + (int)(check_rng_next(&rng) % 150);
+        o.frame_camera = frame % 2; /* unframed: the torus fills different tiles */
+        if (frame % 4 == 0) { /* the same size for a few frames, then another */
+            w = 40 + (int)(check_rng_next(&rng) % 200);
+            h = 30 + (int)(check_rng_next(&rng) % 150);
+        }
         cg_image *a = image(w, h, CG_PIXEL_RGBA8), *b = image(w, h, CG_PIXEL_RGBA8);
         CHECK(cg_renderer_set_options(r, &o) == CG_OK);
         CHECK(cg_renderer_draw(r, a) == CG_OK);
-        CHECK(cg_render(torus, &o, b, NULL) == CG_OK);
+        cg_renderer *fresh;
+        CHECK(cg_renderer_create(torus, &o, &fresh, NULL) == CG_OK);
+        CHECK(cg_renderer_draw(fresh, b) == CG_OK);
         differ += compare_images(a, b) != 0;
+        /* The depth buffers too (tiles left empty keep their cleared depth
+         * from frame to frame instead of being cleared again). */
+        const float *da = cg_renderer_depth(r), *db = cg_renderer_depth(fresh);
+        if (!da || !db)
+            depth_differ += da != db;
+        else
+            depth_differ += memcmp(da, db, sizeof(float) * (size_t)w * (size_t)h) != 0;
+        cg_renderer_free(fresh);
         cg_image_free(a);
         cg_image_free(b);
     }
     CHECK_MSG(differ == 0, "renderer reuse: %d of 24 frames differ from fresh renders", differ);
+    CHECK_MSG(depth_differ == 0, "renderer reuse: %d of 24 depth buffers differ", depth_differ);
     cg_renderer_free(r);
     cg_mesh_free(torus);
 }

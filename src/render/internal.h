@@ -245,6 +245,10 @@ struct cg_renderer {
     size_t frame_vertex_capacity, frame_attribute_capacity, frame_state_capacity;
     struct render_chunk *chunks;
     int chunk_count;
+    unsigned char *clean_tiles; /* per tile of the last frame's size: its depth
+                                   is all +infinity (nothing drawn there since
+                                   it was cleared) */
+    size_t clean_tile_capacity;
     struct render_pool *pool;   /* worker threads kept between frames */
     int pool_threads;           /* the thread count it was started for */
 };
@@ -311,6 +315,7 @@ typedef struct render_frame {
     size_t stride;
     size_t setup_slack;         /* setups of room kept after the last one */
     int tiles_x, tiles_y, tile_count;
+    unsigned char *clean_tiles; /* the renderer's */
     size_t splits;
 } render_frame;
 

@@ -839,10 +839,11 @@ static void fill_rows(unsigned char *p, size_t stride, int rows, size_t bytes, _
 }
 #endif
 
-/* Clears a rectangle to the background colour and infinite depth; tiles no
- * triangle touches are streamed past the caches (stream), which saves
- * reading their lines first and keeps the caches for the tiles drawn. */
-static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stream)
+/* Clears a rectangle to the background colour and (with depth) infinite
+ * depth; tiles no triangle touches are streamed past the caches (stream),
+ * which saves reading their lines first and keeps the caches for the tiles
+ * drawn. */
+static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stream, int depth)
 {
     const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
                                  f->background[3]};
@@ -857,9 +858,10 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
     } else {
         color = _mm_castps_si128(_mm_loadu_ps(f->background));
     }
-    fill_rows((unsigned char *)(f->depth + (size_t)y0 * f->width + x0),
-              (size_t)f->width * sizeof(float), y1 - y0, width * sizeof(float),
-              _mm_castps_si128(_mm_set1_ps(INFINITY)), stream);
+    if (depth)
+        fill_rows((unsigned char *)(f->depth + (size_t)y0 * f->width + x0),
+                  (size_t)f->width * sizeof(float), y1 - y0, width * sizeof(float),
+                  _mm_castps_si128(_mm_set1_ps(INFINITY)), stream);
     fill_rows(f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel,
               f->image->stride, y1 - y0, width * pixel, color, stream);
     (void)background;
@@ -867,8 +869,9 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
     (void)stream;
     /* The first row by hand, the others copied from it. */
     float *z0 = f->depth + (size_t)y0 * f->width + x0;
-    for (size_t x = 0; x < width; x++)
-        z0[x] = INFINITY;
+    if (depth)
+        for (size_t x = 0; x < width; x++)
+            z0[x] = INFINITY;
     if (f->image->format == CG_PIXEL_RGBA8) {
         cg_rgba8 *row = cg_image_row_rgba8(f->image, y0) + x0;
         for (size_t x = 0; x < width; x++)
@@ -880,7 +883,8 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
     }
     const unsigned char *first = f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel;
     for (int y = y0 + 1; y < y1; y++) {
-        memcpy(f->depth + (size_t)y * f->width + x0, z0, width * sizeof *z0);
+        if (depth)
+            memcpy(f->depth + (size_t)y * f->width + x0, z0, width * sizeof *z0);
         memcpy(f->image->data + (size_t)y * f->image->stride + (size_t)x0 * pixel, first,
                width * pixel);
     }
@@ -941,7 +945,10 @@ static void work(team *tm, int index)
         int empty = 1;
         for (int i = 0; i < chunks && empty; i++)
             empty = f->chunks[i].bin_start[tile] == f->chunks[i].bin_start[tile + 1];
-        clear_tile(f, x0, y0, x1, y1, empty);
+        /* The depth of a tile left empty since it was last cleared is
+         * still infinite: only its colour (the caller's image) is written. */
+        clear_tile(f, x0, y0, x1, y1, empty, !(empty && f->clean_tiles[tile]));
+        f->clean_tiles[tile] = (unsigned char)empty;
         for (int i = 0; i < chunks; i++) {
             const render_chunk *c = &f->chunks[i];
             for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++) {
@@ -1146,6 +1153,9 @@ void render_buffers_free(cg_renderer *r)
     free(r->frame_vertices);
     free(r->frame_attributes);
     free(r->frame_states);
+    free(r->clean_tiles);
+    r->clean_tiles = NULL;
+    r->clean_tile_capacity = 0;
     r->frame_vertices = NULL;
     r->frame_attributes = NULL;
     r->frame_states = NULL;
@@ -1273,6 +1283,19 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
         r->depth_size = pixels;
     }
     f.depth = r->depth;
+    /* Which tiles hold infinite depth from an earlier frame of this size. */
+    int same_layout = r->depth_width == f.width && r->depth_height == f.height;
+    if (r->clean_tile_capacity < (size_t)f.tile_count) {
+        free(r->clean_tiles);
+        r->clean_tiles = malloc((size_t)f.tile_count);
+        r->clean_tile_capacity = r->clean_tiles ? (size_t)f.tile_count : 0;
+        if (!r->clean_tiles)
+            return CG_ENOMEM;
+        same_layout = 0;
+    }
+    if (!same_layout)
+        memset(r->clean_tiles, 0, (size_t)f.tile_count);
+    f.clean_tiles = r->clean_tiles;
     r->depth_width = f.width;
     r->depth_height = f.height;
 
@@ -1289,7 +1312,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     }
     if (all || r->triangle_count == 0 || o->edges == CG_EDGES_WIREFRAME) {
         r->stats.object_culled = all != 0 && r->has_bounds;
-        clear_tile(&f, 0, 0, f.width, f.height, 0);
+        clear_tile(&f, 0, 0, f.width, f.height, 0, 1);
+        memset(f.clean_tiles, 1, (size_t)f.tile_count);
         r->depth_valid = 1;
         if (o->edges == CG_EDGES_WIREFRAME && !all && r->triangle_count) {
             if (frame_vertex_buffers(&f) != CG_OK)
@@ -1334,8 +1358,10 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     }
     for (int i = 0; i < f.thread_count; i++)
         r->stats.fragments += tm.fragments[i];
-    if (status == CG_OK && tm.painter)
+    if (status == CG_OK && tm.painter) {
+        memset(f.clean_tiles, 0, (size_t)f.tile_count); /* painted over everywhere */
         status = render_painter(&f);
+    }
     if (status == CG_OK) {
         r->depth_valid = 1;
         r->stats.splits = f.splits;

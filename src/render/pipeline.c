@@ -117,20 +117,24 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
         const __m128 step = _mm_setr_ps(g->c_step[0], g->c_step[1], g->c_step[2], g->q_step);
         __m128 v = _mm_setzero_ps();
         cg_rgba8 *out = (cg_rgba8 *)row + x0;
+        /* Locals: the byte stores below may alias anything in memory. */
+        const render_encoder *encoder = &f->r->encoder;
+        const int64_t step1 = g->step1, step2 = g->step2;
+        const float ia = g->ia, z0 = g->z0, dz1 = g->dz1, dz2 = g->dz2;
         for (int i = begin, restart = begin; i < end;
-             i++, w1 += g->step1, w2 += g->step2, v = _mm_add_ps(v, step)) {
-            float l1 = (float)w1 * g->ia, l2 = (float)w2 * g->ia;
+             i++, w1 += step1, w2 += step2, v = _mm_add_ps(v, step)) {
+            float l1 = (float)w1 * ia, l2 = (float)w2 * ia;
             if (i == restart) {
                 v = _mm_add_ps(_mm_add_ps(base, _mm_mul_ps(_mm_set1_ps(l1), d1)),
                                _mm_mul_ps(_mm_set1_ps(l2), d2));
                 restart += RENDER_TILE;
             }
-            float z = g->z0 + l1 * g->dz1 + l2 * g->dz2;
+            float z = z0 + l1 * dz1 + l2 * dz2;
             if (depth_test && !(z < zrow[i]))
                 continue;
             zrow[i] = z;
             float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
-            encode_store(&f->r->encoder, out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
+            encode_store(encoder, out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
         }
         return;
     }

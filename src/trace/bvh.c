@@ -10,9 +10,12 @@
 
 enum {
     BINS = 32,        /* most bins per axis for the SAH sweep */
-    MAX_LEAF = 8,     /* a node with more triangles is always split */
+    MAX_LEAF = 8,     /* a node with more triangles is always split (a leaf
+                         reference holds counts 1 to 8) */
     SAH_DEPTH = 48,   /* deeper than this, split at the object median */
-    STACK_SIZE = 128, /* > SAH_DEPTH + 32: the deepest possible tree */
+    /* The 4-wide tree is at most as deep as the binary one (SAH_DEPTH + 32
+     * inner levels), and each level pushes at most three children. */
+    STACK_SIZE = 3 * (SAH_DEPTH + 33) + 16,
     PARALLEL_MIN = 4096 /* fewer triangles: build on one thread */
 };
 
@@ -58,17 +61,6 @@ static inline float v4_min3(v4 a, float x)
 {
     v4 b = _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 1, 1, 1)), c = _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
     return _mm_cvtss_f32(_mm_min_ss(_mm_min_ss(a, b), _mm_min_ss(c, _mm_set_ss(x))));
-}
-/* Lanes 0 and 1: max (min) of lanes 0..2 of a, and of b. */
-static inline v4 v4_max2x3(v4 a, v4 b)
-{
-    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b); /* ax bx ay by, az bz .. */
-    return _mm_max_ps(_mm_max_ps(xy, zw), _mm_movehl_ps(xy, xy));
-}
-static inline v4 v4_min2x3(v4 a, v4 b)
-{
-    v4 xy = _mm_unpacklo_ps(a, b), zw = _mm_unpackhi_ps(a, b);
-    return _mm_min_ps(_mm_min_ps(xy, zw), _mm_movehl_ps(xy, xy));
 }
 #else
 typedef struct v4 { float f[4]; } v4;
@@ -383,35 +375,21 @@ static void *build_subtree(void *arg)
     return NULL;
 }
 
-static void sah_of(const cg_bvh *bvh, uint32_t index, double *cost)
-{
-    const bvh_node *n = &bvh->nodes[index];
-    bbox b;
-    b.lo = v4_load3(n->lo);
-    b.hi = v4_load3(n->hi);
-    double area = bbox_area(&b);
-    if (n->count) {
-        *cost += area * n->count;
-        return;
-    }
-    *cost += area;
-    sah_of(bvh, index + 1, cost);
-    sah_of(bvh, n->offset, cost);
-}
-
-/* The tree of refs[0, n) into bvh->nodes; with threads > 1 the root's two
- * subtrees are built at the same time.  The tree is the same either way. */
-static int build_tree(cg_bvh *bvh, prim_ref *refs, size_t n, int threads)
+/* The binary tree of refs[0, n) into nodes (room for 2 n - 1), its node
+ * count and depth; with threads > 1 the root's two subtrees are built at
+ * the same time.  The tree is the same either way. */
+static int build_tree(bvh_node *nodes, size_t *node_count, int *depth, prim_ref *refs, size_t n,
+                      int threads)
 {
     bbox bounds, centroids;
     range_bounds(refs, 0, n, &bounds, &centroids);
-    builder b = {refs, bvh->nodes, 0, 0};
+    builder b = {refs, nodes, 0, 0};
     uint32_t root = make_node(&b, &bounds);
     split sp;
     if (threads < 2 || n < PARALLEL_MIN || !choose_split(refs, 0, n, &bounds, &centroids, 1, &sp)) {
         build_node(&b, root, 0, n, bounds, centroids, 1);
-        bvh->node_count = b.node_count;
-        bvh->depth = b.depth;
+        *node_count = b.node_count;
+        *depth = b.depth;
         return 1;
     }
     size_t right_count = n - sp.mid;
@@ -440,17 +418,118 @@ static int build_tree(cg_bvh *bvh, prim_ref *refs, size_t n, int threads)
     }
     /* Append the right subtree, shifting its child links. */
     uint32_t shift = (uint32_t)b.node_count;
-    bvh->nodes[root].offset = shift;
+    nodes[root].offset = shift;
     for (size_t i = 0; i < job.b.node_count; i++) {
         bvh_node node = job.b.nodes[i];
         if (!node.count)
             node.offset += shift;
-        bvh->nodes[shift + i] = node;
+        nodes[shift + i] = node;
     }
-    bvh->node_count = b.node_count + job.b.node_count;
-    bvh->depth = b.depth > job.b.depth ? b.depth : job.b.depth;
+    *node_count = b.node_count + job.b.node_count;
+    *depth = b.depth > job.b.depth ? b.depth : job.b.depth;
     free(job.b.nodes);
     return 1;
+}
+
+/* ---- the 4-wide tree ------------------------------------------------------ */
+
+/* Collapsing the binary tree: each 4-wide node takes a binary inner node's
+ * two children and keeps opening the inner child of largest area in their
+ * place until it has four (or only leaves).  Leaves' triangles go to blocks
+ * of four, in leaf order. */
+typedef struct collapser {
+    const bvh_node *bin;
+    const prim_ref *refs;
+    const cg_vec3 *positions;
+    const uint32_t *indices;
+    bvh4_node *nodes;
+    size_t node_count;
+    bvh_tri4 *blocks;
+    size_t block_count;
+    int depth;
+} collapser;
+
+static float node_area(const bvh_node *n)
+{
+    bbox b;
+    b.lo = v4_load3(n->lo);
+    b.hi = v4_load3(n->hi);
+    return bbox_area(&b);
+}
+
+static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
+{
+    uint32_t first = (uint32_t)c->block_count, count = leaf->count;
+    for (uint32_t k = 0; k < count; k += 4) {
+        bvh_tri4 *b = &c->blocks[c->block_count++];
+        for (uint32_t l = 0; l < 4; l++) {
+            if (k + l >= count) {
+                for (int j = 0; j < 3; j++)
+                    for (int a = 0; a < 3; a++)
+                        b->v[j][a][l] = NAN;
+                b->id[l] = UINT32_MAX;
+                continue;
+            }
+            uint32_t id = prim_id(&c->refs[leaf->offset + k + l]);
+            for (int j = 0; j < 3; j++) {
+                size_t v = c->indices ? c->indices[3 * (size_t)id + j] : 3 * (size_t)id + j;
+                cg_vec3 p = c->positions[v];
+                b->v[j][0][l] = (float)p.x;
+                b->v[j][1][l] = (float)p.y;
+                b->v[j][2][l] = (float)p.z;
+            }
+            b->id[l] = id;
+        }
+    }
+    return BVH_LEAF | first << 3 | (count - 1);
+}
+
+static uint32_t collapse(collapser *c, uint32_t index, int depth)
+{
+    const bvh_node *bin = c->bin;
+    uint32_t kids[4] = {index + 1, bin[index].offset, 0, 0};
+    int n = 2;
+    while (n < 4) {
+        int best = -1;
+        float best_area = -1;
+        for (int k = 0; k < n; k++) {
+            float area = bin[kids[k]].count ? -1 : node_area(&bin[kids[k]]);
+            if (area > best_area) {
+                best = k;
+                best_area = area;
+            }
+        }
+        if (best < 0)
+            break;
+        uint32_t open = kids[best];
+        kids[best] = open + 1;
+        kids[n++] = bin[open].offset;
+    }
+    uint32_t me = (uint32_t)c->node_count++;
+    if (depth > c->depth)
+        c->depth = depth;
+    bvh4_node *node = &c->nodes[me];
+    memset(node, 0, sizeof *node);
+    for (int k = 0; k < 4; k++)
+        for (int a = 0; a < 3; a++) {
+            node->box[a][k] = k < n ? bin[kids[k]].lo[a] : INFINITY;
+            node->box[3 + a][k] = k < n ? bin[kids[k]].hi[a] : -INFINITY;
+        }
+    for (int k = 0; k < 4; k++) {
+        uint32_t ref = BVH_NONE;
+        if (k < n)
+            ref = bin[kids[k]].count ? emit_leaf(c, &bin[kids[k]]) : collapse(c, kids[k], depth + 1);
+        c->nodes[me].child[k] = ref;
+    }
+    return me;
+}
+
+/* 64-byte aligned memory for count items of size bytes (NULL for none). */
+static void *alloc_aligned(size_t count, size_t size)
+{
+    size_t bytes = count * size;
+    bytes = (bytes + 63) / 64 * 64;
+    return aligned_alloc(64, bytes ? bytes : 64);
 }
 
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
@@ -483,6 +562,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         free(refs);
         return CG_ENOMEM;
     }
+    bvh->root = BVH_NONE;
     /* Finite triangles only; coordinates rounded to float once, here. */
     size_t n = 0;
     for (size_t i = 0; i < triangle_count; i++) {
@@ -514,25 +594,49 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         refs[n++] = r;
     }
     bvh->triangle_count = n;
-    bvh->nodes = malloc((2 * n + 1) * sizeof *bvh->nodes);
-    bvh->triangles = malloc((n ? n : 1) * sizeof *bvh->triangles);
-    if (!bvh->nodes || !bvh->triangles || (n && !build_tree(bvh, refs, n, threads))) {
+    if (n == 0) {
+        free(refs);
+        *out = bvh;
+        return CG_OK;
+    }
+    size_t bin_count = 0;
+    int bin_depth = 0;
+    bvh_node *bin = malloc((2 * n - 1) * sizeof *bin);
+    if (!bin || !build_tree(bin, &bin_count, &bin_depth, refs, n, threads)) {
+        free(bin);
         free(refs);
         cg_bvh_free(bvh);
         return CG_ENOMEM;
     }
-    for (size_t i = 0; i < n; i++) {
-        bvh_triangle *t = &bvh->triangles[i];
-        uint32_t id = prim_id(&refs[i]);
-        float *corner[3] = {t->v0, t->v1, t->v2};
-        for (int k = 0; k < 3; k++) {
-            cg_vec3 p = positions[indices ? indices[3 * (size_t)id + k] : 3 * (size_t)id + k];
-            corner[k][0] = (float)p.x;
-            corner[k][1] = (float)p.y;
-            corner[k][2] = (float)p.z;
-        }
-        t->id = id;
+    size_t blocks = 0;
+    for (size_t i = 0; i < bin_count; i++)
+        blocks += (bin[i].count + 3) / 4;
+    if (blocks >= (BVH_LEAF >> 3)) {
+        free(bin);
+        free(refs);
+        cg_bvh_free(bvh);
+        return CG_ERANGE;
     }
+    collapser c = {bin, refs, positions, indices, NULL, 0, NULL, 0, 1};
+    c.nodes = alloc_aligned(bin_count / 2 + 1, sizeof *c.nodes);
+    c.blocks = alloc_aligned(blocks, sizeof *c.blocks);
+    if (!c.nodes || !c.blocks) {
+        free(c.nodes);
+        free(c.blocks);
+        free(bin);
+        free(refs);
+        cg_bvh_free(bvh);
+        return CG_ENOMEM;
+    }
+    bvh->bounds = bin[0];
+    bvh->root = bin[0].count ? emit_leaf(&c, &bin[0]) : collapse(&c, 0, 1);
+    bvh->nodes = c.nodes;
+    bvh->node_count = c.node_count;
+    bvh->blocks = c.blocks;
+    bvh->block_count = c.block_count;
+    bvh->depth = bin[0].count ? 1 : c.depth + 1;
+    (void)bin_depth;
+    free(bin);
     free(refs);
     *out = bvh;
     return CG_OK;
@@ -543,8 +647,33 @@ void cg_bvh_free(cg_bvh *bvh)
     if (!bvh)
         return;
     free(bvh->nodes);
-    free(bvh->triangles);
+    free(bvh->blocks);
     free(bvh);
+}
+
+/* SAH cost of the subtree under ref (box given): 1 per node entered, 1 per
+ * triangle tested, weighted by area. */
+static double sah_of(const cg_bvh *bvh, uint32_t ref, const bvh_node *box, size_t *leaves)
+{
+    double area = node_area(box);
+    if (ref & BVH_LEAF) {
+        ++*leaves;
+        return area * (double)((ref & 7) + 1);
+    }
+    const bvh4_node *node = &bvh->nodes[ref];
+    double cost = area;
+    for (int k = 0; k < 4; k++) {
+        if (node->child[k] == BVH_NONE)
+            continue;
+        bvh_node child;
+        memset(&child, 0, sizeof child);
+        for (int a = 0; a < 3; a++) {
+            child.lo[a] = node->box[a][k];
+            child.hi[a] = node->box[3 + a][k];
+        }
+        cost += sah_of(bvh, node->child[k], &child, leaves);
+    }
+    return cost;
 }
 
 void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out)
@@ -554,16 +683,10 @@ void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out)
         return;
     out->triangles = bvh->triangle_count;
     out->nodes = bvh->node_count;
-    out->depth = bvh->depth;
-    for (size_t i = 0; i < bvh->node_count; i++)
-        out->leaves += bvh->nodes[i].count != 0;
-    if (bvh->node_count) {
-        double cost = 0;
-        sah_of(bvh, 0, &cost);
-        bbox b;
-        b.lo = v4_load3(bvh->nodes[0].lo);
-        b.hi = v4_load3(bvh->nodes[0].hi);
-        double area = bbox_area(&b);
+    if (bvh->root != BVH_NONE) {
+        out->depth = bvh->depth;
+        double cost = sah_of(bvh, bvh->root, &bvh->bounds, &out->leaves);
+        double area = node_area(&bvh->bounds);
         out->sah_cost = area > 0 ? cost / area : 0;
     }
 }
@@ -714,38 +837,154 @@ static inline int hit_box(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_n
     return tn <= tf;
 }
 
-/* Both children of a node at once: hit_box's operations, with the two
- * boxes' horizontal reductions shared (lanes 0 and 1 hold the first and the
- * second box), so each decision is the one hit_box would make.  Bit 0 of
- * the result: the first box is hit; bit 1: the second. */
-static inline int hit_boxes(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_node *first,
-                            const bvh_node *second, v4 t_min4, v4 t_far_limit4,
-                            float t_far_limit, float t_near[2])
+/* The ray as the 4-wide tests read it: origin, inverse direction and the
+ * watertight test's permuted origin and shear, each in all four lanes, and
+ * the rows of a node's boxes that hold each axis' near and far planes. */
+typedef struct ray4 {
+    v4 ox, oy, oz, ix, iy, iz, t_min;
+    v4 okx, oky, okz, sx, sy, sz;
+    int near[3], far[3];
+} ray4;
+
+static void ray4_setup(ray4 *r, const bvh_ray *ray)
+{
+    r->ox = v4_set(ray->origin[0]);
+    r->oy = v4_set(ray->origin[1]);
+    r->oz = v4_set(ray->origin[2]);
+    r->ix = v4_set(ray->inverse[0]);
+    r->iy = v4_set(ray->inverse[1]);
+    r->iz = v4_set(ray->inverse[2]);
+    r->t_min = v4_set(ray->t_min);
+    r->okx = v4_set(ray->origin[ray->kx]);
+    r->oky = v4_set(ray->origin[ray->ky]);
+    r->okz = v4_set(ray->origin[ray->kz]);
+    r->sx = v4_set(ray->shear_x);
+    r->sy = v4_set(ray->shear_y);
+    r->sz = v4_set(ray->shear_z);
+    /* With a positive inverse the lower plane is met first: then
+     * (lo - o) / d <= (hi - o) / d, the min and max of the scalar test. */
+    for (int a = 0; a < 3; a++) {
+        r->near[a] = ray->inverse[a] >= 0 ? a : 3 + a;
+        r->far[a] = ray->inverse[a] >= 0 ? 3 + a : a;
+    }
+}
+
+/* A node's four boxes against the ray: bit k of the result says child k is
+ * entered, t_near[k] where.  Lane by lane the very operations of hit_box, so
+ * each decision is the one hit_box would make; an empty slot's box gives
+ * t_near +inf and t_far -inf and is never entered. */
+static inline int hit_node4(const bvh_ray *ray, const ray4 *r, const bvh4_node *node,
+                            v4 limit4, float t_far_limit, float t_near[4])
+{
+    if (ray->flat_axes) {
+        int mask = 0;
+        for (int k = 0; k < 4; k++) {
+            bvh_node box;
+            for (int a = 0; a < 3; a++) {
+                box.lo[a] = node->box[a][k];
+                box.hi[a] = node->box[3 + a][k];
+            }
+            mask |= hit_box_flat(ray, &box, t_far_limit, &t_near[k]) << k;
+        }
+        return mask;
+    }
+    v4 nx = v4_mul(v4_sub(v4_load(node->box[r->near[0]]), r->ox), r->ix);
+    v4 ny = v4_mul(v4_sub(v4_load(node->box[r->near[1]]), r->oy), r->iy);
+    v4 nz = v4_mul(v4_sub(v4_load(node->box[r->near[2]]), r->oz), r->iz);
+    v4 fx = v4_mul(v4_sub(v4_load(node->box[r->far[0]]), r->ox), r->ix);
+    v4 fy = v4_mul(v4_sub(v4_load(node->box[r->far[1]]), r->oy), r->iy);
+    v4 fz = v4_mul(v4_sub(v4_load(node->box[r->far[2]]), r->oz), r->iz);
+    v4 tn = v4_max(v4_max(nx, ny), v4_max(nz, r->t_min));
+    v4 tf = v4_min(v4_min(fx, fy), v4_min(fz, v4_set(FLT_MAX)));
+    tf = v4_min(v4_mul(tf, v4_set(1.0000003576f)), limit4);
+    v4_store(t_near, tn);
+#if defined(__SSE2__)
+    return _mm_movemask_ps(_mm_cmple_ps(tn, tf));
+#else
+    int mask = 0;
+    for (int k = 0; k < 4; k++)
+        mask |= (tn.f[k] <= tf.f[k]) << k;
+    return mask;
+#endif
+}
+
+/* The watertight test on a block of four triangles: bit k of the result
+ * says triangle k is hit, with t[k], u[k], v[k].  Lane by lane the very
+ * operations of hit_triangle (the same rounding, the same double-precision
+ * retry of edge functions that come out zero), so its answers are
+ * hit_triangle's; NaN lanes are never hit. */
+static inline int hit_tri4(const bvh_ray *ray, const ray4 *r, const bvh_tri4 *b, float t[4],
+                           float u[4], float v[4])
 {
 #if defined(__SSE2__)
-    if (ray->flat_axes) {
-        int a = hit_box_flat(ray, first, t_far_limit, &t_near[0]);
-        return a | hit_box_flat(ray, second, t_far_limit, &t_near[1]) << 1;
+    const int kx = ray->kx, ky = ray->ky, kz = ray->kz;
+    const v4 ax = v4_sub(v4_load(b->v[0][kx]), r->okx), ay = v4_sub(v4_load(b->v[0][ky]), r->oky),
+             az = v4_sub(v4_load(b->v[0][kz]), r->okz);
+    const v4 bx = v4_sub(v4_load(b->v[1][kx]), r->okx), by = v4_sub(v4_load(b->v[1][ky]), r->oky),
+             bz = v4_sub(v4_load(b->v[1][kz]), r->okz);
+    const v4 cx = v4_sub(v4_load(b->v[2][kx]), r->okx), cy = v4_sub(v4_load(b->v[2][ky]), r->oky),
+             cz = v4_sub(v4_load(b->v[2][kz]), r->okz);
+    const v4 Ax = v4_sub(ax, v4_mul(r->sx, az)), Ay = v4_sub(ay, v4_mul(r->sy, az));
+    const v4 Bx = v4_sub(bx, v4_mul(r->sx, bz)), By = v4_sub(by, v4_mul(r->sy, bz));
+    const v4 Cx = v4_sub(cx, v4_mul(r->sx, cz)), Cy = v4_sub(cy, v4_mul(r->sy, cz));
+    v4 U = v4_sub(v4_mul(Cx, By), v4_mul(Cy, Bx));
+    v4 V = v4_sub(v4_mul(Ax, Cy), v4_mul(Ay, Cx));
+    v4 W = v4_sub(v4_mul(Bx, Ay), v4_mul(By, Ax));
+    const v4 zero = _mm_setzero_ps();
+    int flat = _mm_movemask_ps(
+        _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(U, zero), _mm_cmpeq_ps(V, zero)), _mm_cmpeq_ps(W, zero)));
+    if (flat) {
+        float fu[4], fv[4], fw[4], pax[4], pay[4], pbx[4], pby[4], pcx[4], pcy[4];
+        v4_store(fu, U);
+        v4_store(fv, V);
+        v4_store(fw, W);
+        v4_store(pax, Ax);
+        v4_store(pay, Ay);
+        v4_store(pbx, Bx);
+        v4_store(pby, By);
+        v4_store(pcx, Cx);
+        v4_store(pcy, Cy);
+        for (int k = 0; k < 4; k++)
+            if (flat & (1 << k)) {
+                fu[k] = (float)((double)pcx[k] * pby[k] - (double)pcy[k] * pbx[k]);
+                fv[k] = (float)((double)pax[k] * pcy[k] - (double)pay[k] * pcx[k]);
+                fw[k] = (float)((double)pbx[k] * pay[k] - (double)pby[k] * pax[k]);
+            }
+        U = v4_load(fu);
+        V = v4_load(fv);
+        W = v4_load(fw);
     }
-    v4 a0 = v4_mul(v4_sub(v4_load3(first->lo), origin), inverse);
-    v4 a1 = v4_mul(v4_sub(v4_load3(first->hi), origin), inverse);
-    v4 b0 = v4_mul(v4_sub(v4_load3(second->lo), origin), inverse);
-    v4 b1 = v4_mul(v4_sub(v4_load3(second->hi), origin), inverse);
-    v4 tn = v4_max2x3(v4_min(a0, a1), v4_min(b0, b1));
-    v4 tf = v4_min2x3(v4_max(a0, a1), v4_max(b0, b1));
-    tn = v4_max(tn, t_min4);
-    tf = v4_mul(v4_min(tf, v4_set(FLT_MAX)), v4_set(1.0000003576f));
-    tf = v4_min(tf, t_far_limit4);
-    float near4[4];
-    v4_store(near4, tn);
-    t_near[0] = near4[0];
-    t_near[1] = near4[1];
-    return _mm_movemask_ps(_mm_cmple_ps(tn, tf)) & 3;
+    v4 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(U, zero), _mm_cmplt_ps(V, zero)), _mm_cmplt_ps(W, zero));
+    v4 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(U, zero), _mm_cmpgt_ps(V, zero)), _mm_cmpgt_ps(W, zero));
+    int mask = ~_mm_movemask_ps(_mm_and_ps(neg, pos)) & 15;
+    if (!mask)
+        return 0;
+    v4 det = v4_add(v4_add(U, V), W);
+    v4 T = v4_add(v4_add(v4_mul(U, v4_mul(r->sz, az)), v4_mul(V, v4_mul(r->sz, bz))),
+                  v4_mul(W, v4_mul(r->sz, cz)));
+    v4 inv = _mm_div_ps(_mm_set1_ps(1.0f), det);
+    v4 tt = v4_mul(T, inv);
+    mask &= _mm_movemask_ps(_mm_and_ps(_mm_cmpneq_ps(det, zero), _mm_cmpgt_ps(tt, r->t_min)));
+    if (mask) {
+        v4_store(t, tt);
+        v4_store(u, v4_mul(V, inv));
+        v4_store(v, v4_mul(W, inv));
+    }
+    return mask;
 #else
-    (void)t_min4;
-    (void)t_far_limit4;
-    int a = hit_box(ray, origin, inverse, first, t_far_limit, &t_near[0]);
-    return a | hit_box(ray, origin, inverse, second, t_far_limit, &t_near[1]) << 1;
+    (void)r;
+    int mask = 0;
+    for (int k = 0; k < 4; k++) {
+        bvh_triangle tri;
+        for (int a = 0; a < 3; a++) {
+            tri.v0[a] = b->v[0][a][k];
+            tri.v1[a] = b->v[1][a][k];
+            tri.v2[a] = b->v[2][a][k];
+        }
+        tri.id = b->id[k];
+        mask |= hit_triangle(ray, &tri, &t[k], &u[k], &v[k]) << k;
+    }
+    return mask;
 #endif
 }
 
@@ -770,72 +1009,106 @@ static float clamp_far(double t_max)
     return (float)t_max;
 }
 
-/* Ordered traversal.  Nearest hit (any_hit 0): the best (t, index) with t in
- * (t_min, t_max].  Shadow query (any_hit 1): stops at the first t in
+/* The lowest set bit of a 4-bit mask. */
+static const signed char lowest_lane[16] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+
+/* Traversal of the 4-wide tree.  Nearest hit (any_hit 0): children entered
+ * nearest first, and the best (t, index) with t in (t_min, t_max].  Shadow
+ * query (any_hit 1): children in slot order, stopping at the first t in
  * (t_min, t_max).  The ray comes with its slab data (ray_setup_slabs). */
 static inline int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any_hit,
                            cg_bvh_hit *hit)
 {
     float best_t = t_max, limit = cull_limit(best_t);
-    const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
-    const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
-    v4 o4 = v4_load(o3), i4 = v4_load(i3), t_min4 = v4_set(ray->t_min), limit4 = v4_set(limit);
+    {
+        const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
+        const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
+        float tn;
+        if (!hit_box(ray, v4_load(o3), v4_load(i3), &bvh->bounds, limit, &tn))
+            return 0;
+    }
+    ray_setup_shear(ray);
+    ray4 r;
+    ray4_setup(&r, ray);
+    v4 limit4 = v4_set(limit);
     uint32_t best_id = UINT32_MAX;
     float best_u = 0, best_v = 0;
     int found = 0;
     uint32_t stack[STACK_SIZE];
     float stack_t[STACK_SIZE];
     int top = 0;
-    float tn;
-    if (!hit_box(ray, o4, i4, &bvh->nodes[0], limit, &tn))
-        return 0;
-    ray_setup_shear(ray);
-    uint32_t index = 0;
+    uint32_t ref = bvh->root;
     for (;;) {
-        const bvh_node *node = &bvh->nodes[index];
-        if (node->count) {
-            const bvh_triangle *tri = bvh->triangles + node->offset;
-            for (uint32_t k = 0; k < node->count; k++) {
-                float t, u, v;
-                if (!hit_triangle(ray, &tri[k], &t, &u, &v))
+        if (!(ref & BVH_LEAF)) {
+            const bvh4_node *node = &bvh->nodes[ref];
+            float tn[4];
+            int mask = hit_node4(ray, &r, node, limit4, limit, tn);
+            if (mask) {
+                int k = lowest_lane[mask];
+                mask &= mask - 1;
+                if (!mask) {
+                    ref = node->child[k];
                     continue;
-                if (any_hit) {
-                    if (t < t_max)
-                        return 1;
-                } else if (better(t, tri[k].id, best_t, best_id)) {
-                    best_t = t;
-                    best_id = tri[k].id;
-                    best_u = u;
-                    best_v = v;
-                    found = 1;
-                    limit = cull_limit(t);
-                    limit4 = v4_set(limit);
                 }
+                if (any_hit) {
+                    /* A shadow ray's limit never shrinks, so what it
+                     * pushes stays worth visiting: no order, no distance. */
+                    do {
+                        stack[top++] = node->child[lowest_lane[mask]];
+                        mask &= mask - 1;
+                    } while (mask);
+                    ref = node->child[k];
+                    continue;
+                }
+                /* Two to four children: sorted by entry distance (slot
+                 * order on ties), the farthest pushed first. */
+                uint32_t c[4];
+                float d[4];
+                int n = 1;
+                c[0] = node->child[k];
+                d[0] = tn[k];
+                do {
+                    int j = lowest_lane[mask];
+                    mask &= mask - 1;
+                    int i = n++;
+                    while (i > 0 && d[i - 1] > tn[j]) {
+                        c[i] = c[i - 1];
+                        d[i] = d[i - 1];
+                        i--;
+                    }
+                    c[i] = node->child[j];
+                    d[i] = tn[j];
+                } while (mask);
+                for (int i = n - 1; i > 0; i--) {
+                    stack[top] = c[i];
+                    stack_t[top] = d[i];
+                    top++;
+                }
+                ref = c[0];
+                continue;
             }
         } else {
-            uint32_t left = index + 1, right = node->offset;
-            float tb[2];
-            int h = hit_boxes(ray, o4, i4, &bvh->nodes[left], &bvh->nodes[right], t_min4,
-                              limit4, limit, tb);
-            if (h == 3) {
-                if (tb[1] < tb[0]) {
-                    uint32_t s = left;
-                    left = right;
-                    right = s;
-                    tb[1] = tb[0];
+            const bvh_tri4 *b = bvh->blocks + ((ref & ~BVH_LEAF) >> 3);
+            int count = (int)(ref & 7) + 1;
+            for (int k = 0; k < count; k += 4, b++) {
+                float t[4], u[4], v[4];
+                int mask = hit_tri4(ray, &r, b, t, u, v);
+                while (mask) {
+                    int j = lowest_lane[mask];
+                    mask &= mask - 1;
+                    if (any_hit) {
+                        if (t[j] < t_max)
+                            return 1;
+                    } else if (better(t[j], b->id[j], best_t, best_id)) {
+                        best_t = t[j];
+                        best_id = b->id[j];
+                        best_u = u[j];
+                        best_v = v[j];
+                        found = 1;
+                        limit = cull_limit(best_t);
+                        limit4 = v4_set(limit);
+                    }
                 }
-                stack[top] = right;
-                /* A shadow ray's limit never shrinks, so what it pushed
-                 * stays worth visiting: no distance to keep. */
-                if (!any_hit)
-                    stack_t[top] = tb[1];
-                top++;
-                index = left;
-                continue;
-            }
-            if (h) {
-                index = h == 1 ? left : right;
-                continue;
             }
         }
         /* Pop the next subtree that can still hold a nearer hit. */
@@ -846,7 +1119,7 @@ static inline int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any
             if (any_hit || stack_t[top] <= limit)
                 break;
         }
-        index = stack[top];
+        ref = stack[top];
     }
 done:
     if (found && hit) {
@@ -862,7 +1135,7 @@ int cg_bvh_intersect(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, doubl
                      double t_max, cg_bvh_hit *hit)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
+    if (!bvh || bvh->root == BVH_NONE || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 0, hit);
@@ -872,7 +1145,7 @@ int cg_bvh_occluded(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction, double
                     double t_max)
 {
     bvh_ray ray;
-    if (!bvh || !bvh->node_count || !ray_setup_slabs(&ray, origin, direction, t_min)
+    if (!bvh || bvh->root == BVH_NONE || !ray_setup_slabs(&ray, origin, direction, t_min)
         || !(t_max > t_min))
         return 0;
     return traverse(bvh, &ray, clamp_far(t_max), 1, NULL);
@@ -887,12 +1160,23 @@ int cg_bvh_intersect_brute(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction,
     float best_t = clamp_far(t_max);
     uint32_t best_id = UINT32_MAX;
     int found = 0;
-    for (size_t i = 0; i < bvh->triangle_count; i++) {
+    /* Every stored triangle through the scalar test, one at a time. */
+    for (size_t i = 0; i < 4 * bvh->block_count; i++) {
+        const bvh_tri4 *b = &bvh->blocks[i / 4];
+        size_t k = i % 4;
+        if (b->id[k] == UINT32_MAX)
+            continue;
+        bvh_triangle tri;
+        for (int a = 0; a < 3; a++) {
+            tri.v0[a] = b->v[0][a][k];
+            tri.v1[a] = b->v[1][a][k];
+            tri.v2[a] = b->v[2][a][k];
+        }
+        tri.id = b->id[k];
         float t, u, v;
-        const bvh_triangle *tri = &bvh->triangles[i];
-        if (hit_triangle(&ray, tri, &t, &u, &v) && better(t, tri->id, best_t, best_id)) {
+        if (hit_triangle(&ray, &tri, &t, &u, &v) && better(t, tri.id, best_t, best_id)) {
             best_t = t;
-            best_id = tri->id;
+            best_id = tri.id;
             found = 1;
             if (hit) {
                 hit->u = u;

@@ -19,7 +19,9 @@ enum {
     PARALLEL_MIN = 4096 /* fewer triangles: build on one thread */
 };
 
-/* Cost of visiting a node relative to testing one triangle, for the SAH. */
+/* The SAH counts triangles in blocks of four, as the leaves store and test
+ * them: testing one block costs 1, entering a node TRAVERSAL_COST. */
+#define BLOCKS(n) (((n) + 3) / 4)
 #ifndef TRAVERSAL_COST
 #define TRAVERSAL_COST 1.0f
 #endif
@@ -253,7 +255,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
             n += counts[a][k];
             if (n == 0 || right_count[k + 1] == 0)
                 continue;
-            float cost = bbox_area(&acc) * (float)n + right_area[k + 1] * (float)right_count[k + 1];
+            float cost = bbox_area(&acc) * (float)BLOCKS(n) + right_area[k + 1] * (float)BLOCKS(right_count[k + 1]);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_axis = a;
@@ -267,7 +269,7 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
      * weighted by the chance of entering them; a leaf costs its count. */
     float parent_area = bbox_area(bounds);
     float split_cost = parent_area > 0 ? TRAVERSAL_COST + best_cost / parent_area : FLT_MAX;
-    if (count <= MAX_LEAF && split_cost >= (float)count)
+    if (count <= MAX_LEAF && split_cost >= (float)BLOCKS(count))
         return 0;
     bbox_empty(&out->left);
     bbox_empty(&out->right);

@@ -157,8 +157,12 @@ static inline float bbox_area(const bbox *b)
 #endif
 }
 
+/* The build's state: the references in two buffers (a node's range lives in
+ * one, its partition writes the children's into the other), the triangle
+ * index of each leaf position, and the nodes. */
 typedef struct builder {
-    prim_ref *refs;
+    prim_ref *buf[2];
+    uint32_t *ids;
     bvh_node *nodes;
     size_t node_count;
     int depth;
@@ -197,10 +201,37 @@ typedef struct split {
     bbox left, right, left_centroids, right_centroids;
 } split;
 
-/* Finds the binned-SAH split of refs[begin, end) (bounds and centroid
- * bounds given) and partitions the range; 0 when a leaf is better. */
-static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bounds,
-                     const bbox *centroids, split *out)
+/* Bins on the three axes: bounds and counts. */
+typedef struct bin_set {
+    bbox box[3][BINS];
+    uint32_t count[3][BINS];
+} bin_set;
+
+static void bins_clear(bin_set *s, int nb)
+{
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < nb; k++) {
+            bbox_empty(&s->box[a][k]);
+            s->count[a][k] = 0;
+        }
+}
+
+static inline void bins_add(bin_set *s, const prim_ref *r, v4 origin, v4 scale, v4 last)
+{
+    v4 lo = v4_load3(r->lo), hi = v4_load3(r->hi);
+    int k[4];
+    bin_of(v4_add(lo, hi), origin, scale, last, k);
+    for (int a = 0; a < 3; a++) {
+        bbox_grow(&s->box[a][k[a]], lo, hi);
+        s->count[a][k[a]]++;
+    }
+}
+
+/* Finds the binned-SAH split of src[begin, end) (bounds and centroid bounds
+ * given) and partitions the range into dst[begin, end), the left side from
+ * begin up, the right side from end down; 0 when a leaf is better. */
+static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t end,
+                     const bbox *bounds, const bbox *centroids, split *out)
 {
     size_t count = end - begin;
     int nb = count < 64 ? 8 : count < 1024 ? 16 : BINS;
@@ -216,22 +247,25 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     if (!any)
         return 0;
     v4 origin = centroids->lo, scale = v4_load(sc), last = v4_set((float)(nb - 1));
-    bbox bins[3][BINS];
-    uint32_t counts[3][BINS];
+    /* Two sets of bins, for even and odd references, so consecutive
+     * references landing in the same bin do not wait on each other. */
+    bin_set set[2];
+    bins_clear(&set[0], nb);
+    bins_clear(&set[1], nb);
+    size_t i = begin;
+    for (; i + 1 < end; i += 2) {
+        bins_add(&set[0], &src[i], origin, scale, last);
+        bins_add(&set[1], &src[i + 1], origin, scale, last);
+    }
+    if (i < end)
+        bins_add(&set[0], &src[i], origin, scale, last);
     for (int a = 0; a < 3; a++)
         for (int k = 0; k < nb; k++) {
-            bbox_empty(&bins[a][k]);
-            counts[a][k] = 0;
+            bbox_grow(&set[0].box[a][k], set[1].box[a][k].lo, set[1].box[a][k].hi);
+            set[0].count[a][k] += set[1].count[a][k];
         }
-    for (size_t i = begin; i < end; i++) {
-        v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi);
-        int k[4];
-        bin_of(v4_add(lo, hi), origin, scale, last, k);
-        for (int a = 0; a < 3; a++) {
-            bbox_grow(&bins[a][k[a]], lo, hi);
-            counts[a][k[a]]++;
-        }
-    }
+    bbox (*bins)[BINS] = set[0].box;
+    uint32_t (*counts)[BINS] = set[0].count;
     int best_axis = -1, best_bin = 0;
     float best_cost = FLT_MAX;
     for (int a = 0; a < 3; a++) {
@@ -255,7 +289,8 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
             n += counts[a][k];
             if (n == 0 || right_count[k + 1] == 0)
                 continue;
-            float cost = bbox_area(&acc) * (float)BLOCKS(n) + right_area[k + 1] * (float)BLOCKS(right_count[k + 1]);
+            float cost = bbox_area(&acc) * (float)BLOCKS(n)
+                         + right_area[k + 1] * (float)BLOCKS(right_count[k + 1]);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_axis = a;
@@ -265,37 +300,37 @@ static int sah_split(prim_ref *refs, size_t begin, size_t end, const bbox *bound
     }
     if (best_axis < 0)
         return 0;
-    /* Splitting costs a traversal step (1) plus the children's triangles
-     * weighted by the chance of entering them; a leaf costs its count. */
+    /* Splitting costs a traversal step plus the children's blocks weighted
+     * by the chance of entering them; a leaf costs its blocks. */
     float parent_area = bbox_area(bounds);
     float split_cost = parent_area > 0 ? TRAVERSAL_COST + best_cost / parent_area : FLT_MAX;
     if (count <= MAX_LEAF && split_cost >= (float)BLOCKS(count))
         return 0;
     bbox_empty(&out->left);
     bbox_empty(&out->right);
-    bbox_empty(&out->left_centroids);
-    bbox_empty(&out->right_centroids);
     for (int k = 0; k < nb; k++) {
         bbox *side = k <= best_bin ? &out->left : &out->right;
         bbox_grow(side, bins[best_axis][k].lo, bins[best_axis][k].hi);
     }
-    size_t i = begin, j = end;
-    while (i < j) {
-        v4 lo = v4_load3(refs[i].lo), hi = v4_load3(refs[i].hi), c = v4_add(lo, hi);
+    /* The partition without branches on the side: each reference is
+     * written at the next free place of its side. */
+    bbox cb[2];
+    bbox_empty(&cb[0]);
+    bbox_empty(&cb[1]);
+    size_t next[2] = {begin, end - 1};
+    for (i = begin; i < end; i++) {
+        v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
         int k[4];
         bin_of(c, origin, scale, last, k);
-        if (k[best_axis] <= best_bin) {
-            bbox_grow(&out->left_centroids, c, c);
-            i++;
-        } else {
-            j--;
-            bbox_grow(&out->right_centroids, c, c);
-            prim_ref t = refs[i];
-            refs[i] = refs[j];
-            refs[j] = t;
-        }
+        int right = k[best_axis] > best_bin;
+        dst[next[right]] = src[i];
+        next[0] += (size_t)!right;
+        next[1] -= (size_t)right;
+        bbox_grow(&cb[right], c, c);
     }
-    out->mid = i;
+    out->left_centroids = cb[0];
+    out->right_centroids = cb[1];
+    out->mid = next[0];
     return 1;
 }
 
@@ -311,46 +346,53 @@ static void range_bounds(const prim_ref *refs, size_t begin, size_t end, bbox *b
     }
 }
 
-/* Decides how node (bounds given) over refs[begin, end) splits: 0 for a
- * leaf, else 1 with the split. */
-static int choose_split(prim_ref *refs, size_t begin, size_t end, const bbox *bounds,
-                        const bbox *centroids, int depth, split *sp)
+/* Decides how node (bounds given) over src[begin, end) splits: 0 for a
+ * leaf, else 1 with the split and the children's references in
+ * dst[begin, end). */
+static int choose_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t end,
+                        const bbox *bounds, const bbox *centroids, int depth, split *sp)
 {
     size_t count = end - begin;
     if (count <= 2)
         return 0;
-    if (depth < SAH_DEPTH && sah_split(refs, begin, end, bounds, centroids, sp))
+    if (depth < SAH_DEPTH && sah_split(src, dst, begin, end, bounds, centroids, sp))
         return 1;
     if (count <= MAX_LEAF)
         return 0;
     /* Many triangles with one centroid, or a tree deeper than SAH_DEPTH
      * (only for pathological inputs): split the range in two halves, which
      * bounds the depth by log2 of the count. */
+    memcpy(dst + begin, src + begin, count * sizeof *src);
     sp->mid = begin + count / 2;
-    range_bounds(refs, begin, sp->mid, &sp->left, &sp->left_centroids);
-    range_bounds(refs, sp->mid, end, &sp->right, &sp->right_centroids);
+    range_bounds(dst, begin, sp->mid, &sp->left, &sp->left_centroids);
+    range_bounds(dst, sp->mid, end, &sp->right, &sp->right_centroids);
     return 1;
 }
 
-/* Builds the subtree of node index (its bounds already stored). */
+/* Builds the subtree of node index (its bounds already stored) over the
+ * references buf[which][begin, end). */
 static void build_node(builder *b, uint32_t index, size_t begin, size_t end, bbox bounds,
-                       bbox centroids, int depth)
+                       bbox centroids, int depth, int which)
 {
     for (;;) {
         if (depth > b->depth)
             b->depth = depth;
         split sp;
-        if (!choose_split(b->refs, begin, end, &bounds, &centroids, depth, &sp)) {
+        const prim_ref *src = b->buf[which];
+        if (!choose_split(src, b->buf[!which], begin, end, &bounds, &centroids, depth, &sp)) {
+            for (size_t i = begin; i < end; i++)
+                b->ids[i] = prim_id(&src[i]);
             b->nodes[index].offset = (uint32_t)begin;
             b->nodes[index].count = (uint32_t)(end - begin);
             return;
         }
+        which = !which;
         /* The left child directly follows its parent; the right one's index
          * is known once the left subtree is built.  Recursing on the left and
          * looping on the right keeps the recursion depth at the tree depth
          * (at most SAH_DEPTH + 32). */
         uint32_t left = make_node(b, &sp.left);
-        build_node(b, left, begin, sp.mid, sp.left, sp.left_centroids, depth + 1);
+        build_node(b, left, begin, sp.mid, sp.left, sp.left_centroids, depth + 1, which);
         uint32_t right = make_node(b, &sp.right);
         b->nodes[index].offset = right;
         index = right;
@@ -373,30 +415,30 @@ static void *build_subtree(void *arg)
 {
     subtree_job *j = arg;
     uint32_t root = make_node(&j->b, &j->bounds);
-    build_node(&j->b, root, j->begin, j->end, j->bounds, j->centroids, 2);
+    build_node(&j->b, root, j->begin, j->end, j->bounds, j->centroids, 2, 1);
     return NULL;
 }
 
-/* The binary tree of refs[0, n) into nodes (room for 2 n - 1), its node
- * count and depth; with threads > 1 the root's two subtrees are built at
- * the same time.  The tree is the same either way. */
-static int build_tree(bvh_node *nodes, size_t *node_count, int *depth, prim_ref *refs, size_t n,
-                      int threads)
+/* The binary tree of the references in b->buf[0][0, n) into b->nodes (room
+ * for 2 n - 1), the triangle of each leaf position into b->ids; with
+ * threads > 1 the root's two subtrees are built at the same time.  The tree
+ * is the same either way. */
+static int build_tree(builder *out, size_t n, int threads)
 {
     bbox bounds, centroids;
-    range_bounds(refs, 0, n, &bounds, &centroids);
-    builder b = {refs, nodes, 0, 0};
+    range_bounds(out->buf[0], 0, n, &bounds, &centroids);
+    builder b = *out;
     uint32_t root = make_node(&b, &bounds);
     split sp;
-    if (threads < 2 || n < PARALLEL_MIN || !choose_split(refs, 0, n, &bounds, &centroids, 1, &sp)) {
-        build_node(&b, root, 0, n, bounds, centroids, 1);
-        *node_count = b.node_count;
-        *depth = b.depth;
+    if (threads < 2 || n < PARALLEL_MIN
+        || !choose_split(b.buf[0], b.buf[1], 0, n, &bounds, &centroids, 1, &sp)) {
+        build_node(&b, root, 0, n, bounds, centroids, 1, 0);
+        *out = b;
         return 1;
     }
     size_t right_count = n - sp.mid;
     subtree_job job;
-    job.b.refs = refs;
+    job.b = b;
     job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
     job.b.node_count = 0;
     job.b.depth = 0;
@@ -407,7 +449,7 @@ static int build_tree(bvh_node *nodes, size_t *node_count, int *depth, prim_ref 
     pthread_t id;
     int parallel = job.b.nodes && pthread_create(&id, NULL, build_subtree, &job) == 0;
     uint32_t left = make_node(&b, &sp.left);
-    build_node(&b, left, 0, sp.mid, sp.left, sp.left_centroids, 2);
+    build_node(&b, left, 0, sp.mid, sp.left, sp.left_centroids, 2, 1);
     if (parallel) {
         pthread_join(id, NULL);
     } else {
@@ -420,16 +462,17 @@ static int build_tree(bvh_node *nodes, size_t *node_count, int *depth, prim_ref 
     }
     /* Append the right subtree, shifting its child links. */
     uint32_t shift = (uint32_t)b.node_count;
-    nodes[root].offset = shift;
+    b.nodes[root].offset = shift;
     for (size_t i = 0; i < job.b.node_count; i++) {
         bvh_node node = job.b.nodes[i];
         if (!node.count)
             node.offset += shift;
-        nodes[shift + i] = node;
+        b.nodes[shift + i] = node;
     }
-    *node_count = b.node_count + job.b.node_count;
-    *depth = b.depth > job.b.depth ? b.depth : job.b.depth;
+    b.node_count += job.b.node_count;
+    b.depth = b.depth > job.b.depth ? b.depth : job.b.depth;
     free(job.b.nodes);
+    *out = b;
     return 1;
 }
 
@@ -441,7 +484,7 @@ static int build_tree(bvh_node *nodes, size_t *node_count, int *depth, prim_ref 
  * of four, in leaf order. */
 typedef struct collapser {
     const bvh_node *bin;
-    const prim_ref *refs;
+    const uint32_t *ids; /* triangle of each leaf position */
     const cg_vec3 *positions;
     const uint32_t *indices;
     bvh4_node *nodes;
@@ -472,7 +515,7 @@ static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
                 b->id[l] = UINT32_MAX;
                 continue;
             }
-            uint32_t id = prim_id(&c->refs[leaf->offset + k + l]);
+            uint32_t id = c->ids[leaf->offset + k + l];
             for (int j = 0; j < 3; j++) {
                 size_t v = c->indices ? c->indices[3 * (size_t)id + j] : 3 * (size_t)id + j;
                 cg_vec3 p = c->positions[v];
@@ -601,47 +644,46 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         *out = bvh;
         return CG_OK;
     }
-    size_t bin_count = 0;
-    int bin_depth = 0;
-    bvh_node *bin = malloc((2 * n - 1) * sizeof *bin);
-    if (!bin || !build_tree(bin, &bin_count, &bin_depth, refs, n, threads)) {
-        free(bin);
-        free(refs);
-        cg_bvh_free(bvh);
-        return CG_ENOMEM;
-    }
+    builder b = {{refs, malloc(n * sizeof *refs)}, malloc(n * sizeof(uint32_t)),
+                 malloc((2 * n - 1) * sizeof(bvh_node)), 0, 0};
+    collapser c = {b.nodes, b.ids, positions, indices, NULL, 0, NULL, 0, 1};
+    cg_status status = CG_ENOMEM;
+    if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
+        goto fail;
     size_t blocks = 0;
-    for (size_t i = 0; i < bin_count; i++)
-        blocks += (bin[i].count + 3) / 4;
+    for (size_t i = 0; i < b.node_count; i++)
+        blocks += (b.nodes[i].count + 3) / 4;
     if (blocks >= (BVH_LEAF >> 3)) {
-        free(bin);
-        free(refs);
-        cg_bvh_free(bvh);
-        return CG_ERANGE;
+        status = CG_ERANGE;
+        goto fail;
     }
-    collapser c = {bin, refs, positions, indices, NULL, 0, NULL, 0, 1};
-    c.nodes = alloc_aligned(bin_count / 2 + 1, sizeof *c.nodes);
+    c.nodes = alloc_aligned(b.node_count / 2 + 1, sizeof *c.nodes);
     c.blocks = alloc_aligned(blocks, sizeof *c.blocks);
-    if (!c.nodes || !c.blocks) {
-        free(c.nodes);
-        free(c.blocks);
-        free(bin);
-        free(refs);
-        cg_bvh_free(bvh);
-        return CG_ENOMEM;
-    }
-    bvh->bounds = bin[0];
-    bvh->root = bin[0].count ? emit_leaf(&c, &bin[0]) : collapse(&c, 0, 1);
+    if (!c.nodes || !c.blocks)
+        goto fail;
+    bvh->bounds = b.nodes[0];
+    bvh->root = b.nodes[0].count ? emit_leaf(&c, &b.nodes[0]) : collapse(&c, 0, 1);
     bvh->nodes = c.nodes;
     bvh->node_count = c.node_count;
     bvh->blocks = c.blocks;
     bvh->block_count = c.block_count;
-    bvh->depth = bin[0].count ? 1 : c.depth + 1;
-    (void)bin_depth;
-    free(bin);
-    free(refs);
+    bvh->depth = b.nodes[0].count ? 1 : c.depth + 1;
+    c.nodes = NULL;
+    c.blocks = NULL;
+    status = CG_OK;
+fail:
+    free(c.nodes);
+    free(c.blocks);
+    free(b.nodes);
+    free(b.ids);
+    free(b.buf[0]);
+    free(b.buf[1]);
+    if (status != CG_OK) {
+        cg_bvh_free(bvh);
+        bvh = NULL;
+    }
     *out = bvh;
-    return CG_OK;
+    return status;
 }
 
 void cg_bvh_free(cg_bvh *bvh)

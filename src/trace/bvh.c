@@ -317,20 +317,22 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     bbox cb[2];
     bbox_empty(&cb[0]);
     bbox_empty(&cb[1]);
-    size_t next[2] = {begin, end - 1};
+    size_t l = begin, r = end - 1;
     for (i = begin; i < end; i++) {
         v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
         int k[4];
         bin_of(c, origin, scale, last, k);
         int right = k[best_axis] > best_bin;
-        dst[next[right]] = src[i];
-        next[0] += (size_t)!right;
-        next[1] -= (size_t)right;
+        size_t at = right ? r : l;
+        v4_store(dst[at].lo, v4_load(src[i].lo));
+        v4_store(dst[at].hi, v4_load(src[i].hi));
+        l += (size_t)!right;
+        r -= (size_t)right;
         bbox_grow(&cb[right], c, c);
     }
+    out->mid = l;
     out->left_centroids = cb[0];
     out->right_centroids = cb[1];
-    out->mid = next[0];
     return 1;
 }
 
@@ -485,8 +487,7 @@ static int build_tree(builder *out, size_t n, int threads)
 typedef struct collapser {
     const bvh_node *bin;
     const uint32_t *ids; /* triangle of each leaf position */
-    const cg_vec3 *positions;
-    const uint32_t *indices;
+    const float *corners; /* 9 per triangle index, as rounded to float */
     bvh4_node *nodes;
     size_t node_count;
     bvh_tri4 *blocks;
@@ -516,13 +517,10 @@ static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
                 continue;
             }
             uint32_t id = c->ids[leaf->offset + k + l];
-            for (int j = 0; j < 3; j++) {
-                size_t v = c->indices ? c->indices[3 * (size_t)id + j] : 3 * (size_t)id + j;
-                cg_vec3 p = c->positions[v];
-                b->v[j][0][l] = (float)p.x;
-                b->v[j][1][l] = (float)p.y;
-                b->v[j][2][l] = (float)p.z;
-            }
+            const float *f = c->corners + 9 * (size_t)id;
+            for (int j = 0; j < 3; j++)
+                for (int a = 0; a < 3; a++)
+                    b->v[j][a][l] = f[3 * j + a];
             b->id[l] = id;
         }
     }
@@ -602,9 +600,13 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
                 return CG_EINVAL;
     cg_bvh *bvh = calloc(1, sizeof *bvh);
     prim_ref *refs = malloc((triangle_count ? triangle_count : 1) * sizeof *refs);
-    if (!bvh || !refs) {
+    /* The corners of triangle i in float, 9 from 9 i, read again in leaf
+     * order when filling the blocks. */
+    float *corners = malloc((triangle_count ? triangle_count : 1) * 9 * sizeof *corners);
+    if (!bvh || !refs || !corners) {
         free(bvh);
         free(refs);
+        free(corners);
         return CG_ENOMEM;
     }
     bvh->root = BVH_NONE;
@@ -619,7 +621,10 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         }
         for (int k = 0; k < 3 && finite; k++) {
             cg_vec3 p = positions[indices ? indices[3 * i + k] : 3 * i + k];
-            float f[3] = {(float)p.x, (float)p.y, (float)p.z};
+            float *f = corners + 9 * i + 3 * k;
+            f[0] = (float)p.x;
+            f[1] = (float)p.y;
+            f[2] = (float)p.z;
             for (int a = 0; a < 3; a++) {
                 if (!isfinite(f[a])) {
                     finite = 0;
@@ -641,12 +646,13 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     bvh->triangle_count = n;
     if (n == 0) {
         free(refs);
+        free(corners);
         *out = bvh;
         return CG_OK;
     }
     builder b = {{refs, malloc(n * sizeof *refs)}, malloc(n * sizeof(uint32_t)),
                  malloc((2 * n - 1) * sizeof(bvh_node)), 0, 0};
-    collapser c = {b.nodes, b.ids, positions, indices, NULL, 0, NULL, 0, 1};
+    collapser c = {b.nodes, b.ids, corners, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
         goto fail;
@@ -678,6 +684,7 @@ fail:
     free(b.ids);
     free(b.buf[0]);
     free(b.buf[1]);
+    free(corners);
     if (status != CG_OK) {
         cg_bvh_free(bvh);
         bvh = NULL;

@@ -313,11 +313,18 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
         bbox_grow(side, bins[best_axis][k].lo, bins[best_axis][k].hi);
     }
     /* The partition without branches on the side: each reference is
-     * written at the next free place of its side. */
+     * written at the next free place of its side, and its centroid grows
+     * that side's bounds (in SSE2, all four bounds through masks, kept in
+     * registers). */
+    size_t l = begin, r = end - 1;
+#if defined(__SSE2__)
+    v4 big = v4_set(FLT_MAX), small = v4_set(-FLT_MAX);
+    v4 llo = big, lhi = small, rlo = big, rhi = small;
+#else
     bbox cb[2];
     bbox_empty(&cb[0]);
     bbox_empty(&cb[1]);
-    size_t l = begin, r = end - 1;
+#endif
     for (i = begin; i < end; i++) {
         v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
         int k[4];
@@ -328,11 +335,27 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
         v4_store(dst[at].hi, v4_load(src[i].hi));
         l += (size_t)!right;
         r -= (size_t)right;
+#if defined(__SSE2__)
+        v4 m = _mm_castsi128_ps(_mm_set1_epi32(-right));
+        v4 cr = _mm_and_ps(m, c), cl = _mm_andnot_ps(m, c);
+        llo = _mm_min_ps(llo, _mm_or_ps(cl, _mm_and_ps(m, big)));
+        lhi = _mm_max_ps(lhi, _mm_or_ps(cl, _mm_and_ps(m, small)));
+        rlo = _mm_min_ps(rlo, _mm_or_ps(cr, _mm_andnot_ps(m, big)));
+        rhi = _mm_max_ps(rhi, _mm_or_ps(cr, _mm_andnot_ps(m, small)));
+#else
         bbox_grow(&cb[right], c, c);
+#endif
     }
-    out->mid = l;
+#if defined(__SSE2__)
+    out->left_centroids.lo = llo;
+    out->left_centroids.hi = lhi;
+    out->right_centroids.lo = rlo;
+    out->right_centroids.hi = rhi;
+#else
     out->left_centroids = cb[0];
     out->right_centroids = cb[1];
+#endif
+    out->mid = l;
     return 1;
 }
 

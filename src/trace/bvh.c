@@ -5,8 +5,12 @@
 
 #include <float.h>
 #include <pthread.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 enum {
     BINS = 32,        /* most bins per axis for the SAH sweep */
@@ -590,12 +594,27 @@ static uint32_t collapse(collapser *c, uint32_t index, int depth)
     return me;
 }
 
-/* 64-byte aligned memory for count items of size bytes (NULL for none). */
-static void *alloc_aligned(size_t count, size_t size)
+/* Memory for count items of size bytes: large blocks 2 MiB aligned and, on
+ * Linux, offered to the kernel as huge pages, which saves most of the page
+ * faults of a first touch; smaller ones 64-byte aligned (whole cache lines)
+ * when lines is set, else from malloc. */
+static void *alloc_block(size_t count, size_t size, int lines)
 {
+    if (count == 0)
+        count = 1;
+    if (count > SIZE_MAX / size - (2u << 20))
+        return NULL;
     size_t bytes = count * size;
-    bytes = (bytes + 63) / 64 * 64;
-    return aligned_alloc(64, bytes ? bytes : 64);
+    if (bytes >= (4u << 20)) {
+        bytes = (bytes + (2u << 20) - 1) / (2u << 20) * (2u << 20);
+        void *p = aligned_alloc(2u << 20, bytes);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        if (p)
+            madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+        return p;
+    }
+    return lines ? aligned_alloc(64, (bytes + 63) / 64 * 64) : malloc(bytes);
 }
 
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
@@ -622,10 +641,10 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
             if (indices[i] >= vertex_count)
                 return CG_EINVAL;
     cg_bvh *bvh = calloc(1, sizeof *bvh);
-    prim_ref *refs = malloc((triangle_count ? triangle_count : 1) * sizeof *refs);
+    prim_ref *refs = alloc_block(triangle_count, sizeof *refs, 0);
     /* The corners of triangle i in float, 9 from 9 i, read again in leaf
      * order when filling the blocks. */
-    float *corners = malloc((triangle_count ? triangle_count : 1) * 9 * sizeof *corners);
+    float *corners = alloc_block(triangle_count, 9 * sizeof *corners, 0);
     if (!bvh || !refs || !corners) {
         free(bvh);
         free(refs);
@@ -673,8 +692,8 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         *out = bvh;
         return CG_OK;
     }
-    builder b = {{refs, malloc(n * sizeof *refs)}, malloc(n * sizeof(uint32_t)),
-                 malloc((2 * n - 1) * sizeof(bvh_node)), 0, 0};
+    builder b = {{refs, alloc_block(n, sizeof *refs, 0)}, alloc_block(n, sizeof(uint32_t), 0),
+                 alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0, 0};
     collapser c = {b.nodes, b.ids, corners, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
@@ -686,8 +705,8 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         status = CG_ERANGE;
         goto fail;
     }
-    c.nodes = alloc_aligned(b.node_count / 2 + 1, sizeof *c.nodes);
-    c.blocks = alloc_aligned(blocks, sizeof *c.blocks);
+    c.nodes = alloc_block(b.node_count / 2 + 1, sizeof *c.nodes, 1);
+    c.blocks = alloc_block(blocks, sizeof *c.blocks, 1);
     if (!c.nodes || !c.blocks)
         goto fail;
     bvh->bounds = b.nodes[0];

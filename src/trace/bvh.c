@@ -514,7 +514,8 @@ static int build_tree(builder *out, size_t n, int threads)
 typedef struct collapser {
     const bvh_node *bin;
     const uint32_t *ids; /* triangle of each leaf position */
-    const float *corners; /* 9 per triangle index, as rounded to float */
+    const cg_vec3 *positions;
+    const uint32_t *indices;
     bvh4_node *nodes;
     size_t node_count;
     bvh_tri4 *blocks;
@@ -544,10 +545,13 @@ static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
                 continue;
             }
             uint32_t id = c->ids[leaf->offset + k + l];
-            const float *f = c->corners + 9 * (size_t)id;
-            for (int j = 0; j < 3; j++)
-                for (int a = 0; a < 3; a++)
-                    b->v[j][a][l] = f[3 * j + a];
+            for (int j = 0; j < 3; j++) {
+                size_t v = c->indices ? c->indices[3 * (size_t)id + j] : 3 * (size_t)id + j;
+                cg_vec3 p = c->positions[v];
+                b->v[j][0][l] = (float)p.x;
+                b->v[j][1][l] = (float)p.y;
+                b->v[j][2][l] = (float)p.z;
+            }
             b->id[l] = id;
         }
     }
@@ -642,13 +646,9 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
                 return CG_EINVAL;
     cg_bvh *bvh = calloc(1, sizeof *bvh);
     prim_ref *refs = alloc_block(triangle_count, sizeof *refs, 0);
-    /* The corners of triangle i in float, 9 from 9 i, read again in leaf
-     * order when filling the blocks. */
-    float *corners = alloc_block(triangle_count, 9 * sizeof *corners, 0);
-    if (!bvh || !refs || !corners) {
+    if (!bvh || !refs) {
         free(bvh);
         free(refs);
-        free(corners);
         return CG_ENOMEM;
     }
     bvh->root = BVH_NONE;
@@ -663,10 +663,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         }
         for (int k = 0; k < 3 && finite; k++) {
             cg_vec3 p = positions[indices ? indices[3 * i + k] : 3 * i + k];
-            float *f = corners + 9 * i + 3 * k;
-            f[0] = (float)p.x;
-            f[1] = (float)p.y;
-            f[2] = (float)p.z;
+            float f[3] = {(float)p.x, (float)p.y, (float)p.z};
             for (int a = 0; a < 3; a++) {
                 if (!isfinite(f[a])) {
                     finite = 0;
@@ -688,13 +685,12 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     bvh->triangle_count = n;
     if (n == 0) {
         free(refs);
-        free(corners);
         *out = bvh;
         return CG_OK;
     }
     builder b = {{refs, alloc_block(n, sizeof *refs, 0)}, alloc_block(n, sizeof(uint32_t), 0),
                  alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0, 0};
-    collapser c = {b.nodes, b.ids, corners, NULL, 0, NULL, 0, 1};
+    collapser c = {b.nodes, b.ids, positions, indices, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
         goto fail;
@@ -726,7 +722,6 @@ fail:
     free(b.ids);
     free(b.buf[0]);
     free(b.buf[1]);
-    free(corners);
     if (status != CG_OK) {
         cg_bvh_free(bvh);
         bvh = NULL;

@@ -329,11 +329,22 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     bbox_empty(&cb[0]);
     bbox_empty(&cb[1]);
 #endif
+#if defined(__SSE2__)
+    /* The bin on the axis is past best_bin exactly when the scaled
+     * coordinate is at least best_bin + 1 (NaN in the other lanes: never). */
+    float th[4] = {NAN, NAN, NAN, NAN};
+    th[best_axis] = (float)(best_bin + 1);
+    v4 threshold = v4_load(th);
+#endif
     for (i = begin; i < end; i++) {
         v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
+#if defined(__SSE2__)
+        int right = _mm_movemask_ps(_mm_cmpge_ps(v4_mul(v4_sub(c, origin), scale), threshold)) != 0;
+#else
         int k[4];
         bin_of(c, origin, scale, last, k);
         int right = k[best_axis] > best_bin;
+#endif
         size_t at = right ? r : l;
         v4_store(dst[at].lo, v4_load(src[i].lo));
         v4_store(dst[at].hi, v4_load(src[i].hi));

@@ -252,22 +252,25 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
         return 0;
     v4 origin = centroids->lo, scale = v4_load(sc), last = v4_set((float)(nb - 1));
     /* Two sets of bins, for even and odd references, so consecutive
-     * references landing in the same bin do not wait on each other. */
+     * references landing in the same bin do not wait on each other (for
+     * small nodes one set: clearing and merging would cost more). */
     bin_set set[2];
     bins_clear(&set[0], nb);
-    bins_clear(&set[1], nb);
     size_t i = begin;
-    for (; i + 1 < end; i += 2) {
-        bins_add(&set[0], &src[i], origin, scale, last);
-        bins_add(&set[1], &src[i + 1], origin, scale, last);
-    }
-    if (i < end)
-        bins_add(&set[0], &src[i], origin, scale, last);
-    for (int a = 0; a < 3; a++)
-        for (int k = 0; k < nb; k++) {
-            bbox_grow(&set[0].box[a][k], set[1].box[a][k].lo, set[1].box[a][k].hi);
-            set[0].count[a][k] += set[1].count[a][k];
+    if (count >= 64) {
+        bins_clear(&set[1], nb);
+        for (; i + 1 < end; i += 2) {
+            bins_add(&set[0], &src[i], origin, scale, last);
+            bins_add(&set[1], &src[i + 1], origin, scale, last);
         }
+        for (int a = 0; a < 3; a++)
+            for (int k = 0; k < nb; k++) {
+                bbox_grow(&set[0].box[a][k], set[1].box[a][k].lo, set[1].box[a][k].hi);
+                set[0].count[a][k] += set[1].count[a][k];
+            }
+    }
+    for (; i < end; i++)
+        bins_add(&set[0], &src[i], origin, scale, last);
     bbox (*bins)[BINS] = set[0].box;
     uint32_t (*counts)[BINS] = set[0].count;
     int best_axis = -1, best_bin = 0;
@@ -393,7 +396,10 @@ static int choose_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t
                         const bbox *bounds, const bbox *centroids, int depth, split *sp)
 {
     size_t count = end - begin;
-    if (count <= 2)
+    /* Up to one block a leaf costs 1, and any split more (a traversal step
+     * plus at least one block weighted by the chance of entering it): the
+     * SAH would make a leaf, without binning. */
+    if (count <= 4)
         return 0;
     if (depth < SAH_DEPTH && sah_split(src, dst, begin, end, bounds, centroids, sp))
         return 1;

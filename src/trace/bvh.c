@@ -533,6 +533,7 @@ typedef struct collapser {
     const uint32_t *ids; /* triangle of each leaf position */
     const cg_vec3 *positions;
     const uint32_t *indices;
+    uint32_t *where; /* place of each triangle (by index) in the blocks */
     bvh4_node *nodes;
     size_t node_count;
     bvh_tri4 *blocks;
@@ -548,11 +549,15 @@ static float node_area(const bvh_node *n)
     return bbox_area(&b);
 }
 
+/* A leaf's blocks: triangle indices, NaN in unused lanes, and for each
+ * triangle its place (block * 4 + lane) in c->where; the corners are filled
+ * afterwards, in triangle order (fill_corners). */
 static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
 {
     uint32_t first = (uint32_t)c->block_count, count = leaf->count;
     for (uint32_t k = 0; k < count; k += 4) {
-        bvh_tri4 *b = &c->blocks[c->block_count++];
+        size_t block = c->block_count++;
+        bvh_tri4 *b = &c->blocks[block];
         for (uint32_t l = 0; l < 4; l++) {
             if (k + l >= count) {
                 for (int j = 0; j < 3; j++)
@@ -562,17 +567,30 @@ static uint32_t emit_leaf(collapser *c, const bvh_node *leaf)
                 continue;
             }
             uint32_t id = c->ids[leaf->offset + k + l];
-            for (int j = 0; j < 3; j++) {
-                size_t v = c->indices ? c->indices[3 * (size_t)id + j] : 3 * (size_t)id + j;
-                cg_vec3 p = c->positions[v];
-                b->v[j][0][l] = (float)p.x;
-                b->v[j][1][l] = (float)p.y;
-                b->v[j][2][l] = (float)p.z;
-            }
+            c->where[id] = (uint32_t)(4 * block + l);
             b->id[l] = id;
         }
     }
     return BVH_LEAF | first << 3 | (count - 1);
+}
+
+/* The corners of every stored triangle into its lane, reading the triangles
+ * in order (the writes scatter, the reads do not wait on each other). */
+static void fill_corners(const collapser *c, size_t triangle_count)
+{
+    for (size_t i = 0; i < triangle_count; i++) {
+        uint32_t w = c->where[i];
+        if (w == UINT32_MAX)
+            continue;
+        bvh_tri4 *b = &c->blocks[w / 4];
+        uint32_t l = w % 4;
+        for (int j = 0; j < 3; j++) {
+            cg_vec3 p = c->positions[c->indices ? c->indices[3 * i + j] : 3 * i + j];
+            b->v[j][0][l] = (float)p.x;
+            b->v[j][1][l] = (float)p.y;
+            b->v[j][2][l] = (float)p.z;
+        }
+    }
 }
 
 static uint32_t collapse(collapser *c, uint32_t index, int depth)
@@ -707,7 +725,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     }
     builder b = {{refs, alloc_block(n, sizeof *refs, 0)}, alloc_block(n, sizeof(uint32_t), 0),
                  alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0, 0};
-    collapser c = {b.nodes, b.ids, positions, indices, NULL, 0, NULL, 0, 1};
+    collapser c = {b.nodes, b.ids, positions, indices, NULL, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
         goto fail;
@@ -720,10 +738,13 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     }
     c.nodes = alloc_block(b.node_count / 2 + 1, sizeof *c.nodes, 1);
     c.blocks = alloc_block(blocks, sizeof *c.blocks, 1);
-    if (!c.nodes || !c.blocks)
+    c.where = alloc_block(triangle_count, sizeof *c.where, 0);
+    if (!c.nodes || !c.blocks || !c.where)
         goto fail;
+    memset(c.where, 0xff, triangle_count * sizeof *c.where);
     bvh->bounds = b.nodes[0];
     bvh->root = b.nodes[0].count ? emit_leaf(&c, &b.nodes[0]) : collapse(&c, 0, 1);
+    fill_corners(&c, triangle_count);
     bvh->nodes = c.nodes;
     bvh->node_count = c.node_count;
     bvh->blocks = c.blocks;
@@ -733,6 +754,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     c.blocks = NULL;
     status = CG_OK;
 fail:
+    free(c.where);
     free(c.nodes);
     free(c.blocks);
     free(b.nodes);

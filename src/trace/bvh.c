@@ -20,7 +20,8 @@ enum {
     /* The 4-wide tree is at most as deep as the binary one (SAH_DEPTH + 32
      * inner levels), and each level pushes at most three children. */
     STACK_SIZE = 3 * (SAH_DEPTH + 33) + 16,
-    PARALLEL_MIN = 4096 /* fewer triangles: build on one thread */
+    PARALLEL_MIN = 4096, /* fewer triangles: build on one thread */
+    SAMPLE = 8192 /* references binned at most (about) for a large node */
 };
 
 /* The SAH counts triangles in blocks of four, as the leaves store and test
@@ -231,6 +232,90 @@ static inline void bins_add(bin_set *s, const prim_ref *r, v4 origin, v4 scale, 
     }
 }
 
+/* Bounds of both sides of a partition, grown without branches (in SSE2
+ * kept in registers and chosen with masks). */
+typedef struct sides {
+    v4 llo, lhi, rlo, rhi;
+} sides;
+
+static inline void sides_init(sides *s)
+{
+    s->llo = s->rlo = v4_set(FLT_MAX);
+    s->lhi = s->rhi = v4_set(-FLT_MAX);
+}
+
+static inline void sides_grow(sides *s, v4 lo, v4 hi, int right)
+{
+#if defined(__SSE2__)
+    v4 m = _mm_castsi128_ps(_mm_set1_epi32(-right)), big = v4_set(FLT_MAX), small = v4_set(-FLT_MAX);
+    s->llo = _mm_min_ps(s->llo, _mm_or_ps(_mm_andnot_ps(m, lo), _mm_and_ps(m, big)));
+    s->lhi = _mm_max_ps(s->lhi, _mm_or_ps(_mm_andnot_ps(m, hi), _mm_and_ps(m, small)));
+    s->rlo = _mm_min_ps(s->rlo, _mm_or_ps(_mm_and_ps(m, lo), _mm_andnot_ps(m, big)));
+    s->rhi = _mm_max_ps(s->rhi, _mm_or_ps(_mm_and_ps(m, hi), _mm_andnot_ps(m, small)));
+#else
+    if (right) {
+        s->rlo = v4_min(s->rlo, lo);
+        s->rhi = v4_max(s->rhi, hi);
+    } else {
+        s->llo = v4_min(s->llo, lo);
+        s->lhi = v4_max(s->lhi, hi);
+    }
+#endif
+}
+
+static inline void sides_get(const sides *s, bbox *left, bbox *right)
+{
+    left->lo = s->llo;
+    left->hi = s->lhi;
+    right->lo = s->rlo;
+    right->hi = s->rhi;
+}
+
+/* Partitions src[begin, end) into dst[begin, end) without branches on the
+ * side: each reference goes to the next free place of its side (the left
+ * from begin up, the right from end down), the side of bin best_bin + 1 on
+ * and past.  The children's centroid bounds into out, and with geometry
+ * their bounds too.  Returns where the right side begins. */
+static inline size_t partition(const prim_ref *src, prim_ref *dst, size_t begin, size_t end,
+                               v4 origin, v4 scale, v4 last, int best_axis, int best_bin,
+                               split *out, int geometry)
+{
+    size_t l = begin, r = end - 1;
+    sides cs, gs;
+    sides_init(&cs);
+    sides_init(&gs);
+#if defined(__SSE2__)
+    /* The bin on the axis is past best_bin exactly when the scaled
+     * coordinate is at least best_bin + 1 (NaN in the other lanes: never). */
+    float th[4] = {NAN, NAN, NAN, NAN};
+    th[best_axis] = (float)(best_bin + 1);
+    v4 threshold = v4_load(th);
+    (void)last;
+#endif
+    for (size_t i = begin; i < end; i++) {
+        v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
+#if defined(__SSE2__)
+        int right = _mm_movemask_ps(_mm_cmpge_ps(v4_mul(v4_sub(c, origin), scale), threshold)) != 0;
+#else
+        int k[4];
+        bin_of(c, origin, scale, last, k);
+        int right = k[best_axis] > best_bin;
+#endif
+        size_t at = right ? r : l;
+        v4_store(dst[at].lo, v4_load(src[i].lo));
+        v4_store(dst[at].hi, v4_load(src[i].hi));
+        l += (size_t)!right;
+        r -= (size_t)right;
+        sides_grow(&cs, c, c, right);
+        if (geometry)
+            sides_grow(&gs, lo, hi, right);
+    }
+    sides_get(&cs, &out->left_centroids, &out->right_centroids);
+    if (geometry)
+        sides_get(&gs, &out->left, &out->right);
+    return l;
+}
+
 /* Finds the binned-SAH split of src[begin, end) (bounds and centroid bounds
  * given) and partitions the range into dst[begin, end), the left side from
  * begin up, the right side from end down; 0 when a leaf is better. */
@@ -257,11 +342,14 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     bin_set set[2];
     bins_clear(&set[0], nb);
     size_t i = begin;
+    /* Large nodes bin an evenly spread sample of SAMPLE to 2 SAMPLE
+     * references, which chooses the split about as well. */
+    size_t stride = count >= 2 * SAMPLE ? count / SAMPLE : 1;
     if (count >= 64) {
         bins_clear(&set[1], nb);
-        for (; i + 1 < end; i += 2) {
+        for (; i + stride < end; i += 2 * stride) {
             bins_add(&set[0], &src[i], origin, scale, last);
-            bins_add(&set[1], &src[i + 1], origin, scale, last);
+            bins_add(&set[1], &src[i + stride], origin, scale, last);
         }
         for (int a = 0; a < 3; a++)
             for (int k = 0; k < nb; k++) {
@@ -269,7 +357,7 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
                 set[0].count[a][k] += set[1].count[a][k];
             }
     }
-    for (; i < end; i++)
+    for (; i < end; i += stride)
         bins_add(&set[0], &src[i], origin, scale, last);
     bbox (*bins)[BINS] = set[0].box;
     uint32_t (*counts)[BINS] = set[0].count;
@@ -313,67 +401,18 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     float split_cost = parent_area > 0 ? TRAVERSAL_COST + best_cost / parent_area : FLT_MAX;
     if (count <= MAX_LEAF && split_cost >= (float)BLOCKS(count))
         return 0;
+    if (stride > 1) {
+        /* Bins of a sample: the children's bounds from the partition. */
+        out->mid = partition(src, dst, begin, end, origin, scale, last, best_axis, best_bin, out, 1);
+        return 1;
+    }
     bbox_empty(&out->left);
     bbox_empty(&out->right);
     for (int k = 0; k < nb; k++) {
         bbox *side = k <= best_bin ? &out->left : &out->right;
         bbox_grow(side, bins[best_axis][k].lo, bins[best_axis][k].hi);
     }
-    /* The partition without branches on the side: each reference is
-     * written at the next free place of its side, and its centroid grows
-     * that side's bounds (in SSE2, all four bounds through masks, kept in
-     * registers). */
-    size_t l = begin, r = end - 1;
-#if defined(__SSE2__)
-    v4 big = v4_set(FLT_MAX), small = v4_set(-FLT_MAX);
-    v4 llo = big, lhi = small, rlo = big, rhi = small;
-#else
-    bbox cb[2];
-    bbox_empty(&cb[0]);
-    bbox_empty(&cb[1]);
-#endif
-#if defined(__SSE2__)
-    /* The bin on the axis is past best_bin exactly when the scaled
-     * coordinate is at least best_bin + 1 (NaN in the other lanes: never). */
-    float th[4] = {NAN, NAN, NAN, NAN};
-    th[best_axis] = (float)(best_bin + 1);
-    v4 threshold = v4_load(th);
-#endif
-    for (i = begin; i < end; i++) {
-        v4 lo = v4_load3(src[i].lo), hi = v4_load3(src[i].hi), c = v4_add(lo, hi);
-#if defined(__SSE2__)
-        int right = _mm_movemask_ps(_mm_cmpge_ps(v4_mul(v4_sub(c, origin), scale), threshold)) != 0;
-#else
-        int k[4];
-        bin_of(c, origin, scale, last, k);
-        int right = k[best_axis] > best_bin;
-#endif
-        size_t at = right ? r : l;
-        v4_store(dst[at].lo, v4_load(src[i].lo));
-        v4_store(dst[at].hi, v4_load(src[i].hi));
-        l += (size_t)!right;
-        r -= (size_t)right;
-#if defined(__SSE2__)
-        v4 m = _mm_castsi128_ps(_mm_set1_epi32(-right));
-        v4 cr = _mm_and_ps(m, c), cl = _mm_andnot_ps(m, c);
-        llo = _mm_min_ps(llo, _mm_or_ps(cl, _mm_and_ps(m, big)));
-        lhi = _mm_max_ps(lhi, _mm_or_ps(cl, _mm_and_ps(m, small)));
-        rlo = _mm_min_ps(rlo, _mm_or_ps(cr, _mm_andnot_ps(m, big)));
-        rhi = _mm_max_ps(rhi, _mm_or_ps(cr, _mm_andnot_ps(m, small)));
-#else
-        bbox_grow(&cb[right], c, c);
-#endif
-    }
-#if defined(__SSE2__)
-    out->left_centroids.lo = llo;
-    out->left_centroids.hi = lhi;
-    out->right_centroids.lo = rlo;
-    out->right_centroids.hi = rhi;
-#else
-    out->left_centroids = cb[0];
-    out->right_centroids = cb[1];
-#endif
-    out->mid = l;
+    out->mid = partition(src, dst, begin, end, origin, scale, last, best_axis, best_bin, out, 0);
     return 1;
 }
 

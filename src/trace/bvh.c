@@ -728,33 +728,27 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     bvh->root = BVH_NONE;
     /* Finite triangles only; coordinates rounded to float once, here. */
     size_t n = 0;
+    const v4 zero = v4_set(0);
     for (size_t i = 0; i < triangle_count; i++) {
-        prim_ref r;
-        int finite = 1;
-        for (int a = 0; a < 3; a++) {
-            r.lo[a] = FLT_MAX;
-            r.hi[a] = -FLT_MAX;
-        }
-        for (int k = 0; k < 3 && finite; k++) {
+        v4 lo = v4_set(FLT_MAX), hi = v4_set(-FLT_MAX), nan = zero;
+        for (int k = 0; k < 3; k++) {
             cg_vec3 p = positions[indices ? indices[3 * i + k] : 3 * i + k];
-            float f[3] = {(float)p.x, (float)p.y, (float)p.z};
-            for (int a = 0; a < 3; a++) {
-                if (!isfinite(f[a])) {
-                    finite = 0;
-                    break;
-                }
-                if (f[a] < r.lo[a])
-                    r.lo[a] = f[a];
-                if (f[a] > r.hi[a])
-                    r.hi[a] = f[a];
-            }
+            float f[4] = {(float)p.x, (float)p.y, (float)p.z, 0};
+            v4 v = v4_load(f);
+            lo = v4_min(lo, v);
+            hi = v4_max(hi, v);
+            /* v * 0 is 0 for finite coordinates, NaN otherwise. */
+            nan = v4_add(nan, v4_mul(v, zero));
         }
-        if (!finite)
+        float check[4];
+        v4_store(check, nan);
+        if (!(check[0] == 0 && check[1] == 0 && check[2] == 0))
             continue;
+        prim_ref *r = &refs[n++];
+        v4_store(r->lo, lo);
+        v4_store(r->hi, hi);
         uint32_t id = (uint32_t)i;
-        memcpy(&r.lo[3], &id, sizeof id);
-        r.hi[3] = 0;
-        refs[n++] = r;
+        memcpy(&r->lo[3], &id, sizeof id);
     }
     bvh->triangle_count = n;
     if (n == 0) {

@@ -861,12 +861,15 @@ static int ray_setup_slabs(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, doub
     double o[3] = {origin.x, origin.y, origin.z}, d[3] = {direction.x, direction.y, direction.z};
     int kz = 0;
     for (int a = 0; a < 3; a++) {
-        if (!isfinite(o[a]) || !isfinite(d[a]) || !isfinite((float)o[a]))
+        /* x - x is 0 exactly for finite x (and the origin must stay finite
+         * in float). */
+        float fo = (float)o[a];
+        if (!(fo - fo == 0) || !(d[a] - d[a] == 0))
             return 0;
         if (fabs(d[a]) > fabs(d[kz]))
             kz = a;
     }
-    if (d[kz] == 0 || !isfinite(t_min))
+    if (d[kz] == 0 || !(t_min - t_min == 0))
         return 0;
     ray->flat_axes = 0;
     for (int a = 0; a < 3; a++) {
@@ -1055,7 +1058,9 @@ static inline int hit_node4(const bvh_ray *ray, const ray4 *r, const bvh4_node *
     v4 fy = v4_mul(v4_sub(v4_load(node->box[r->far[1]]), r->oy), r->iy);
     v4 fz = v4_mul(v4_sub(v4_load(node->box[r->far[2]]), r->oz), r->iz);
     v4 tn = v4_max(v4_max(nx, ny), v4_max(nz, r->t_min));
-    v4 tf = v4_min(v4_min(fx, fy), v4_min(fz, v4_set(FLT_MAX)));
+    /* As hit_box, without its clamp of t_far to FLT_MAX: the limit
+     * clamps it anyway. */
+    v4 tf = v4_min(v4_min(fx, fy), fz);
     tf = v4_min(v4_mul(tf, v4_set(1.0000003576f)), limit4);
     v4_store(t_near, tn);
 #if defined(__SSE2__)
@@ -1176,8 +1181,15 @@ static const signed char lowest_lane[16] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0,
  * nearest first, and the best (t, index) with t in (t_min, t_max].  Shadow
  * query (any_hit 1): children in slot order, stopping at the first t in
  * (t_min, t_max).  The ray comes with its slab data (ray_setup_slabs). */
-static inline int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any_hit,
-                           cg_bvh_hit *hit)
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
+/* Inlined in each query, so each gets its own loop with any_hit constant. */
+static ALWAYS_INLINE int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, int any_hit,
+                                  cg_bvh_hit *hit)
 {
     float best_t = t_max, limit = cull_limit(best_t);
     {

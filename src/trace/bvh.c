@@ -1,6 +1,9 @@
-/* Bounding volume hierarchy over triangles: binned SAH build, 32-byte nodes,
- * ordered traversal, and the watertight ray-triangle test of Woop, Benthin and
- * Wald (JCGT 2013). */
+/* Bounding volume hierarchy over triangles: a binary tree built with the
+ * binned surface area heuristic, collapsed into a 4-wide tree whose nodes
+ * hold their four children's boxes by coordinate; triangles in blocks of
+ * four; ordered traversal testing four boxes or four triangles in one SSE2
+ * pass; the watertight ray-triangle test of Woop, Benthin and Wald (JCGT
+ * 2013). */
 #include "internal.h"
 
 #include <float.h>

@@ -235,6 +235,131 @@ static inline void bins_add(bin_set *s, const prim_ref *r, v4 origin, v4 scale, 
     }
 }
 
+#if defined(__SSE2__)
+/* Three boxes by coordinate (lane a: box a; lo x, y, z, hi x, y, z): their
+ * bbox_area, (dx dy + dy dz) + dz dx or 0 when empty, lane by lane. */
+static inline v4 area3(const v4 *b)
+{
+    const v4 zero = _mm_setzero_ps();
+    v4 dx = _mm_sub_ps(b[3], b[0]), dy = _mm_sub_ps(b[4], b[1]), dz = _mm_sub_ps(b[5], b[2]);
+    v4 empty = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(dx, zero), _mm_cmplt_ps(dy, zero)), _mm_cmplt_ps(dz, zero));
+    v4 area = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dy), _mm_mul_ps(dy, dz)), _mm_mul_ps(dz, dx));
+    return _mm_andnot_ps(empty, area);
+}
+#endif
+
+/* The SAH sweep over the bins: the axis and bin (the last one on the left)
+ * of least A_left blocks(N_left) + A_right blocks(N_right), the first in
+ * axis-then-bin order on ties; axes with sc[a] 0 are left out, and so are
+ * planes with an empty side.  best_axis -1 when there is none. */
+static void sah_sweep(const bin_set *s, int nb, const float *sc, int *best_axis, int *best_bin,
+                      float *best_cost)
+{
+    *best_axis = -1;
+    *best_bin = 0;
+    *best_cost = FLT_MAX;
+#if defined(__SSE2__)
+    /* The three axes at once, one per lane: the bins turned into
+     * coordinate vectors (lane a: axis a's bin), each lane computing what
+     * the scalar sweep below computes for its axis, in the same order. */
+    v4 box[BINS][6];
+    __m128i cnt[BINS];
+    const v4 zero = _mm_setzero_ps();
+    for (int k = 0; k < nb; k++) {
+        v4 l0 = s->box[0][k].lo, l1 = s->box[1][k].lo, l2 = s->box[2][k].lo, l3 = zero;
+        v4 h0 = s->box[0][k].hi, h1 = s->box[1][k].hi, h2 = s->box[2][k].hi, h3 = zero;
+        _MM_TRANSPOSE4_PS(l0, l1, l2, l3);
+        _MM_TRANSPOSE4_PS(h0, h1, h2, h3);
+        box[k][0] = l0;
+        box[k][1] = l1;
+        box[k][2] = l2;
+        box[k][3] = h0;
+        box[k][4] = h1;
+        box[k][5] = h2;
+        cnt[k] = _mm_set_epi32(0, (int)s->count[2][k], (int)s->count[1][k], (int)s->count[0][k]);
+    }
+#define BLOCKS4(n) _mm_cvtepi32_ps(_mm_srli_epi32(_mm_add_epi32(n, _mm_set1_epi32(3)), 2))
+    v4 right_area[BINS];
+    __m128i right_count[BINS];
+    v4 acc[6] = {v4_set(FLT_MAX), v4_set(FLT_MAX), v4_set(FLT_MAX),
+                 v4_set(-FLT_MAX), v4_set(-FLT_MAX), v4_set(-FLT_MAX)};
+    __m128i n = _mm_setzero_si128();
+    for (int k = nb - 1; k > 0; k--) {
+        for (int j = 0; j < 3; j++) {
+            acc[j] = _mm_min_ps(acc[j], box[k][j]);
+            acc[3 + j] = _mm_max_ps(acc[3 + j], box[k][3 + j]);
+        }
+        n = _mm_add_epi32(n, cnt[k]);
+        right_area[k] = area3(acc);
+        right_count[k] = n;
+    }
+    for (int j = 0; j < 3; j++) {
+        acc[j] = v4_set(FLT_MAX);
+        acc[3 + j] = v4_set(-FLT_MAX);
+    }
+    n = _mm_setzero_si128();
+    const __m128i izero = _mm_setzero_si128();
+    __m128i axes = _mm_castps_si128(_mm_cmpneq_ps(v4_load(sc), zero)), bin = izero;
+    v4 cost_best = v4_set(FLT_MAX);
+    for (int k = 0; k < nb - 1; k++) {
+        for (int j = 0; j < 3; j++) {
+            acc[j] = _mm_min_ps(acc[j], box[k][j]);
+            acc[3 + j] = _mm_max_ps(acc[3 + j], box[k][3 + j]);
+        }
+        n = _mm_add_epi32(n, cnt[k]);
+        v4 cost = _mm_add_ps(_mm_mul_ps(area3(acc), BLOCKS4(n)),
+                             _mm_mul_ps(right_area[k + 1], BLOCKS4(right_count[k + 1])));
+        __m128i empty = _mm_or_si128(_mm_cmpeq_epi32(n, izero), _mm_cmpeq_epi32(right_count[k + 1], izero));
+        __m128i better = _mm_andnot_si128(empty, _mm_and_si128(axes, _mm_castps_si128(_mm_cmplt_ps(cost, cost_best))));
+        cost_best = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(better), cost),
+                              _mm_andnot_ps(_mm_castsi128_ps(better), cost_best));
+        bin = _mm_or_si128(_mm_and_si128(better, _mm_set1_epi32(k)), _mm_andnot_si128(better, bin));
+    }
+#undef BLOCKS4
+    float c[4];
+    int kb[4];
+    v4_store(c, cost_best);
+    _mm_storeu_si128((__m128i *)(void *)kb, bin);
+    for (int a = 0; a < 3; a++)
+        if (c[a] < *best_cost) {
+            *best_cost = c[a];
+            *best_axis = a;
+            *best_bin = kb[a];
+        }
+#else
+    for (int a = 0; a < 3; a++) {
+        if (sc[a] == 0)
+            continue;
+        float right_area[BINS];
+        uint32_t right_count[BINS];
+        bbox acc;
+        bbox_empty(&acc);
+        uint32_t n = 0;
+        for (int k = nb - 1; k > 0; k--) {
+            bbox_grow(&acc, s->box[a][k].lo, s->box[a][k].hi);
+            n += s->count[a][k];
+            right_area[k] = bbox_area(&acc);
+            right_count[k] = n;
+        }
+        bbox_empty(&acc);
+        n = 0;
+        for (int k = 0; k < nb - 1; k++) {
+            bbox_grow(&acc, s->box[a][k].lo, s->box[a][k].hi);
+            n += s->count[a][k];
+            if (n == 0 || right_count[k + 1] == 0)
+                continue;
+            float cost = bbox_area(&acc) * (float)BLOCKS(n)
+                         + right_area[k + 1] * (float)BLOCKS(right_count[k + 1]);
+            if (cost < *best_cost) {
+                *best_cost = cost;
+                *best_axis = a;
+                *best_bin = k;
+            }
+        }
+    }
+#endif
+}
+
 /* Bounds of both sides of a partition, grown without branches (in SSE2
  * kept in registers and chosen with masks). */
 typedef struct sides {
@@ -363,39 +488,9 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     for (; i < end; i += stride)
         bins_add(&set[0], &src[i], origin, scale, last);
     bbox (*bins)[BINS] = set[0].box;
-    uint32_t (*counts)[BINS] = set[0].count;
-    int best_axis = -1, best_bin = 0;
-    float best_cost = FLT_MAX;
-    for (int a = 0; a < 3; a++) {
-        if (sc[a] == 0)
-            continue;
-        float right_area[BINS];
-        uint32_t right_count[BINS];
-        bbox acc;
-        bbox_empty(&acc);
-        uint32_t n = 0;
-        for (int k = nb - 1; k > 0; k--) {
-            bbox_grow(&acc, bins[a][k].lo, bins[a][k].hi);
-            n += counts[a][k];
-            right_area[k] = bbox_area(&acc);
-            right_count[k] = n;
-        }
-        bbox_empty(&acc);
-        n = 0;
-        for (int k = 0; k < nb - 1; k++) {
-            bbox_grow(&acc, bins[a][k].lo, bins[a][k].hi);
-            n += counts[a][k];
-            if (n == 0 || right_count[k + 1] == 0)
-                continue;
-            float cost = bbox_area(&acc) * (float)BLOCKS(n)
-                         + right_area[k + 1] * (float)BLOCKS(right_count[k + 1]);
-            if (cost < best_cost) {
-                best_cost = cost;
-                best_axis = a;
-                best_bin = k;
-            }
-        }
-    }
+    int best_axis, best_bin;
+    float best_cost;
+    sah_sweep(&set[0], nb, sc, &best_axis, &best_bin, &best_cost);
     if (best_axis < 0)
         return 0;
     /* Splitting costs a traversal step plus the children's blocks weighted

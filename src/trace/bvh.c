@@ -1055,6 +1055,17 @@ static inline int hit_triangle(const bvh_ray *ray, const bvh_triangle *tri, floa
     return 1;
 }
 
+/* Lane k of a block as a triangle for the scalar test. */
+static void block_triangle(const bvh_tri4 *b, int k, bvh_triangle *tri)
+{
+    for (int a = 0; a < 3; a++) {
+        tri->v0[a] = b->v[0][a][k];
+        tri->v1[a] = b->v[1][a][k];
+        tri->v2[a] = b->v[2][a][k];
+    }
+    tri->id = b->id[k];
+}
+
 /* The slab test for rays with a zero direction component: on such an axis
  * the slab holds the whole ray or none of it, boundaries included. */
 static int hit_box_flat(const bvh_ray *ray, const bvh_node *node, float t_far_limit,
@@ -1239,12 +1250,7 @@ static inline int hit_tri4(const bvh_ray *ray, const ray4 *r, const bvh_tri4 *b,
     int mask = 0;
     for (int k = 0; k < 4; k++) {
         bvh_triangle tri;
-        for (int a = 0; a < 3; a++) {
-            tri.v0[a] = b->v[0][a][k];
-            tri.v1[a] = b->v[1][a][k];
-            tri.v2[a] = b->v[2][a][k];
-        }
-        tri.id = b->id[k];
+        block_triangle(b, k, &tri);
         mask |= hit_triangle(ray, &tri, &t[k], &u[k], &v[k]) << k;
     }
     return mask;
@@ -1437,12 +1443,7 @@ int cg_bvh_intersect_brute(const cg_bvh *bvh, cg_vec3 origin, cg_vec3 direction,
         if (b->id[k] == UINT32_MAX)
             continue;
         bvh_triangle tri;
-        for (int a = 0; a < 3; a++) {
-            tri.v0[a] = b->v[0][a][k];
-            tri.v1[a] = b->v[1][a][k];
-            tri.v2[a] = b->v[2][a][k];
-        }
-        tri.id = b->id[k];
+        block_triangle(b, (int)k, &tri);
         float t, u, v;
         if (hit_triangle(&ray, &tri, &t, &u, &v) && better(t, tri.id, best_t, best_id)) {
             best_t = t;

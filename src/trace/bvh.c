@@ -56,6 +56,15 @@ static inline v4 v4_mul(v4 a, v4 b) { return _mm_mul_ps(a, b); }
 static inline v4 v4_min(v4 a, v4 b) { return _mm_min_ps(a, b); }
 static inline v4 v4_max(v4 a, v4 b) { return _mm_max_ps(a, b); }
 static inline void v4_store(float *p, v4 a) { _mm_storeu_ps(p, a); }
+/* A point's coordinates rounded to float in lanes 0..2, lane 3 zero (built
+ * in registers: a vector load of three scalar stores would stall). */
+static inline v4 v4_point(const cg_vec3 *p)
+{
+    __m128 xy = _mm_cvtpd_ps(_mm_loadu_pd(&p->x)), z = _mm_cvtsd_ss(_mm_setzero_ps(), _mm_load_sd(&p->z));
+    return _mm_movelh_ps(xy, z);
+}
+/* Are lanes 0..2 all zero? */
+static inline int v4_zero3(v4 a) { return (_mm_movemask_ps(_mm_cmpeq_ps(a, _mm_setzero_ps())) & 7) == 7; }
 /* Lanes 0..2 truncated to integers. */
 static inline void v4_to_int(v4 a, int *out)
 {
@@ -92,6 +101,12 @@ V4_OP(v4_min, a.f[i] < b.f[i] ? a.f[i] : b.f[i])
 V4_OP(v4_max, a.f[i] > b.f[i] ? a.f[i] : b.f[i])
 #undef V4_OP
 static inline void v4_store(float *p, v4 a) { memcpy(p, a.f, sizeof a.f); }
+static inline v4 v4_point(const cg_vec3 *p)
+{
+    v4 r = {{(float)p->x, (float)p->y, (float)p->z, 0}};
+    return r;
+}
+static inline int v4_zero3(v4 a) { return a.f[0] == 0 && a.f[1] == 0 && a.f[2] == 0; }
 static inline void v4_to_int(v4 a, int *out)
 {
     for (int i = 0; i < 4; i++)
@@ -830,17 +845,13 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     for (size_t i = 0; i < triangle_count; i++) {
         v4 lo = v4_set(FLT_MAX), hi = v4_set(-FLT_MAX), nan = zero;
         for (int k = 0; k < 3; k++) {
-            cg_vec3 p = positions[indices ? indices[3 * i + k] : 3 * i + k];
-            float f[4] = {(float)p.x, (float)p.y, (float)p.z, 0};
-            v4 v = v4_load(f);
+            v4 v = v4_point(&positions[indices ? indices[3 * i + k] : 3 * i + k]);
             lo = v4_min(lo, v);
             hi = v4_max(hi, v);
             /* v * 0 is 0 for finite coordinates, NaN otherwise. */
             nan = v4_add(nan, v4_mul(v, zero));
         }
-        float check[4];
-        v4_store(check, nan);
-        if (!(check[0] == 0 && check[1] == 0 && check[2] == 0))
+        if (!v4_zero3(nan))
             continue;
         prim_ref *r = &refs[n++];
         v4_store(r->lo, lo);

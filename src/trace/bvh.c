@@ -63,6 +63,8 @@ static inline v4 v4_point(const cg_vec3 *p)
     __m128 xy = _mm_cvtpd_ps(_mm_loadu_pd(&p->x)), z = _mm_cvtsd_ss(_mm_setzero_ps(), _mm_load_sd(&p->z));
     return _mm_movelh_ps(xy, z);
 }
+/* (x, y, z, 0) from scalars, in registers. */
+static inline v4 v4_set3(float x, float y, float z) { return _mm_setr_ps(x, y, z, 0); }
 /* Are lanes 0..2 all zero? */
 static inline int v4_zero3(v4 a) { return (_mm_movemask_ps(_mm_cmpeq_ps(a, _mm_setzero_ps())) & 7) == 7; }
 /* Lanes 0..2 truncated to integers. */
@@ -107,6 +109,11 @@ static inline v4 v4_point(const cg_vec3 *p)
     return r;
 }
 static inline int v4_zero3(v4 a) { return a.f[0] == 0 && a.f[1] == 0 && a.f[2] == 0; }
+static inline v4 v4_set3(float x, float y, float z)
+{
+    v4 r = {{x, y, z, 0}};
+    return r;
+}
 static inline void v4_to_int(v4 a, int *out)
 {
     for (int i = 0; i < 4; i++)
@@ -1308,10 +1315,10 @@ static ALWAYS_INLINE int traverse(const cg_bvh *bvh, bvh_ray *ray, float t_max, 
 {
     float best_t = t_max, limit = cull_limit(best_t);
     {
-        const float o3[4] = {ray->origin[0], ray->origin[1], ray->origin[2], 0};
-        const float i3[4] = {ray->inverse[0], ray->inverse[1], ray->inverse[2], 0};
+        v4 o = v4_set3(ray->origin[0], ray->origin[1], ray->origin[2]);
+        v4 i = v4_set3(ray->inverse[0], ray->inverse[1], ray->inverse[2]);
         float tn;
-        if (!hit_box(ray, v4_load(o3), v4_load(i3), &bvh->bounds, limit, &tn))
+        if (!hit_box(ray, o, i, &bvh->bounds, limit, &tn))
             return 0;
     }
     ray_setup_shear(ray);

@@ -780,8 +780,8 @@ static uint32_t collapse(collapser *c, uint32_t index, int depth)
     memset(node, 0, sizeof *node);
     for (int k = 0; k < 4; k++)
         for (int a = 0; a < 3; a++) {
-            node->box[a][k] = k < n ? bin[kids[k]].lo[a] : INFINITY;
-            node->box[3 + a][k] = k < n ? bin[kids[k]].hi[a] : -INFINITY;
+            node->box[2 * a][k] = k < n ? bin[kids[k]].lo[a] : INFINITY;
+            node->box[2 * a + 1][k] = k < n ? bin[kids[k]].hi[a] : -INFINITY;
         }
     for (int k = 0; k < 4; k++) {
         uint32_t ref = BVH_NONE;
@@ -794,8 +794,8 @@ static uint32_t collapse(collapser *c, uint32_t index, int depth)
 
 /* Memory for count items of size bytes: large blocks 2 MiB aligned and, on
  * Linux, offered to the kernel as huge pages, which saves most of the page
- * faults of a first touch; smaller ones 64-byte aligned (whole cache lines)
- * when lines is set, else from malloc. */
+ * faults of a first touch; smaller ones 128-byte aligned (pairs of cache
+ * lines, which a 4-wide node fills) when lines is set, else from malloc. */
 static void *alloc_block(size_t count, size_t size, int lines)
 {
     if (count == 0)
@@ -812,7 +812,7 @@ static void *alloc_block(size_t count, size_t size, int lines)
 #endif
         return p;
     }
-    return lines ? aligned_alloc(64, (bytes + 63) / 64 * 64) : malloc(bytes);
+    return lines ? aligned_alloc(128, (bytes + 127) / 128 * 128) : malloc(bytes);
 }
 
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
@@ -944,8 +944,8 @@ static double sah_of(const cg_bvh *bvh, uint32_t ref, const bvh_node *box, size_
         bvh_node child;
         memset(&child, 0, sizeof child);
         for (int a = 0; a < 3; a++) {
-            child.lo[a] = node->box[a][k];
-            child.hi[a] = node->box[3 + a][k];
+            child.lo[a] = node->box[2 * a][k];
+            child.hi[a] = node->box[2 * a + 1][k];
         }
         cost += sah_of(bvh, node->child[k], &child, leaves);
     }
@@ -1133,7 +1133,7 @@ static inline int hit_box(const bvh_ray *ray, v4 origin, v4 inverse, const bvh_n
 typedef struct ray4 {
     v4 ox, oy, oz, ix, iy, iz, t_min;
     v4 okx, oky, okz, sx, sy, sz;
-    int near[3], far[3];
+    int near[3]; /* the far plane's row is near ^ 1 */
 } ray4;
 
 static void ray4_setup(ray4 *r, const bvh_ray *ray)
@@ -1154,8 +1154,7 @@ static void ray4_setup(ray4 *r, const bvh_ray *ray)
     /* With a positive inverse the lower plane is met first: then
      * (lo - o) / d <= (hi - o) / d, the min and max of the scalar test. */
     for (int a = 0; a < 3; a++) {
-        r->near[a] = ray->inverse[a] >= 0 ? a : 3 + a;
-        r->far[a] = ray->inverse[a] >= 0 ? 3 + a : a;
+        r->near[a] = ray->inverse[a] >= 0 ? 2 * a : 2 * a + 1;
     }
 }
 
@@ -1171,19 +1170,20 @@ static inline int hit_node4(const bvh_ray *ray, const ray4 *r, const bvh4_node *
         for (int k = 0; k < 4; k++) {
             bvh_node box;
             for (int a = 0; a < 3; a++) {
-                box.lo[a] = node->box[a][k];
-                box.hi[a] = node->box[3 + a][k];
+                box.lo[a] = node->box[2 * a][k];
+                box.hi[a] = node->box[2 * a + 1][k];
             }
             mask |= hit_box_flat(ray, &box, t_far_limit, &t_near[k]) << k;
         }
         return mask;
     }
-    v4 nx = v4_mul(v4_sub(v4_load(node->box[r->near[0]]), r->ox), r->ix);
-    v4 ny = v4_mul(v4_sub(v4_load(node->box[r->near[1]]), r->oy), r->iy);
-    v4 nz = v4_mul(v4_sub(v4_load(node->box[r->near[2]]), r->oz), r->iz);
-    v4 fx = v4_mul(v4_sub(v4_load(node->box[r->far[0]]), r->ox), r->ix);
-    v4 fy = v4_mul(v4_sub(v4_load(node->box[r->far[1]]), r->oy), r->iy);
-    v4 fz = v4_mul(v4_sub(v4_load(node->box[r->far[2]]), r->oz), r->iz);
+    const int x = r->near[0], y = r->near[1], z = r->near[2];
+    v4 nx = v4_mul(v4_sub(v4_load(node->box[x]), r->ox), r->ix);
+    v4 ny = v4_mul(v4_sub(v4_load(node->box[y]), r->oy), r->iy);
+    v4 nz = v4_mul(v4_sub(v4_load(node->box[z]), r->oz), r->iz);
+    v4 fx = v4_mul(v4_sub(v4_load(node->box[x ^ 1]), r->ox), r->ix);
+    v4 fy = v4_mul(v4_sub(v4_load(node->box[y ^ 1]), r->oy), r->iy);
+    v4 fz = v4_mul(v4_sub(v4_load(node->box[z ^ 1]), r->oz), r->iz);
     v4 tn = v4_max(v4_max(nx, ny), v4_max(nz, r->t_min));
     /* As hit_box, without its clamp of t_far to FLT_MAX: the limit
      * clamps it anyway. */

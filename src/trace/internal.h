@@ -16,8 +16,9 @@ typedef struct bvh_node {
 } bvh_node;
 
 /* A node of the 4-wide tree the queries traverse (128 bytes): the four
- * children's boxes stored by coordinate (box[r][lane], rows lo x, lo y, lo z,
- * hi x, hi y, hi z), so one SSE pass tests all four, and their references.
+ * children's boxes stored by coordinate (box[r][lane], rows lo x, hi x,
+ * lo y, hi y, lo z, hi z: a ray's far plane is in the row after or before its
+ * near one), so one SSE pass tests all four, and their references.
  * An unused slot has an empty box (lo +inf, hi -inf) that no ray enters. */
 typedef struct bvh4_node {
     float box[6][4];

@@ -321,7 +321,7 @@ static void sah_sweep(const bin_set *s, int nb, const float *sc, int *best_axis,
     }
     n = _mm_setzero_si128();
     const __m128i izero = _mm_setzero_si128();
-    __m128i axes = _mm_castps_si128(_mm_cmpneq_ps(v4_load(sc), zero)), bin = izero;
+    __m128i axes = _mm_castps_si128(_mm_cmpneq_ps(v4_set3(sc[0], sc[1], sc[2]), zero)), bin = izero;
     v4 cost_best = v4_set(FLT_MAX);
     for (int k = 0; k < nb - 1; k++) {
         for (int j = 0; j < 3; j++) {
@@ -437,9 +437,9 @@ static inline size_t partition(const prim_ref *src, prim_ref *dst, size_t begin,
 #if defined(__SSE2__)
     /* The bin on the axis is past best_bin exactly when the scaled
      * coordinate is at least best_bin + 1 (NaN in the other lanes: never). */
-    float th[4] = {NAN, NAN, NAN, NAN};
+    float th[3] = {NAN, NAN, NAN};
     th[best_axis] = (float)(best_bin + 1);
-    v4 threshold = v4_load(th);
+    v4 threshold = _mm_setr_ps(th[0], th[1], th[2], NAN);
     (void)last;
 #endif
     for (size_t i = begin; i < end; i++) {
@@ -485,7 +485,7 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     }
     if (!any)
         return 0;
-    v4 origin = centroids->lo, scale = v4_load(sc), last = v4_set((float)(nb - 1));
+    v4 origin = centroids->lo, scale = v4_set3(sc[0], sc[1], sc[2]), last = v4_set((float)(nb - 1));
     /* Two sets of bins, for even and odd references, so consecutive
      * references landing in the same bin do not wait on each other (for
      * small nodes one set: clearing and merging would cost more). */

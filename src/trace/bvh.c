@@ -24,7 +24,7 @@ enum {
      * inner levels), and each level pushes at most three children. */
     STACK_SIZE = 3 * (SAH_DEPTH + 33) + 16,
     PARALLEL_MIN = 4096, /* fewer triangles: build on one thread */
-    SAMPLE = 4096 /* references binned at most (about) for a large node */
+    SAMPLE = 4096 /* nodes of 2 SAMPLE or more bin SAMPLE to 2 SAMPLE - 1 */
 };
 
 /* The SAH counts triangles in blocks of four, as the leaves store and test

@@ -2,8 +2,9 @@
  *
  * Two layers:
  *  - cg_bvh: a bounding volume hierarchy over triangles (binned surface area
- *    heuristic, 32-byte nodes) with a watertight ray-triangle test; nearest
- *    hit and any-hit (shadow) queries.  Usable on its own.
+ *    heuristic, 4-wide nodes, triangles in blocks of four) with a watertight
+ *    ray-triangle test; nearest hit and any-hit (shadow) queries.  Usable on
+ *    its own.
  *  - cg_trace_scene: triangle meshes, spheres and planes with materials and
  *    per-object transformations, the lights of cg/light.h plus area lights,
  *    shaded by cg/light.h's illumination model, and a

@@ -141,7 +141,8 @@ static void test_bvh(void)
     CHECK_EQ_INT(one->node_count, two->node_count);
     CHECK(one->node_count == two->node_count
           && memcmp(one->nodes, two->nodes, one->node_count * sizeof *one->nodes) == 0);
-    CHECK(memcmp(one->triangles, two->triangles, one->triangle_count * sizeof *one->triangles) == 0);
+    CHECK(one->root == two->root && one->block_count == two->block_count
+          && memcmp(one->blocks, two->blocks, one->block_count * sizeof *one->blocks) == 0);
     cg_bvh_free(one);
     cg_bvh_free(two);
     CHECK(cg_bvh_build_threads(big.p, big.nv, big.idx, big.nt, 0, &two) == CG_EINVAL);

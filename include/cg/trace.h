@@ -2,8 +2,9 @@
  *
  * Two layers:
  *  - cg_bvh: a bounding volume hierarchy over triangles (binned surface area
- *    heuristic, 32-byte nodes) with a watertight ray-triangle test; nearest
- *    hit and any-hit (shadow) queries.  Usable on its own.
+ *    heuristic, 4-wide nodes, triangles in blocks of four) with a watertight
+ *    ray-triangle test; nearest hit and any-hit (shadow) queries.  Usable on
+ *    its own.
  *  - cg_trace_scene: triangle meshes, spheres and planes with materials and
  *    per-object transformations, the lights of cg/light.h plus area lights,
  *    shaded by cg/light.h's illumination model, and a
@@ -39,7 +40,8 @@ typedef struct cg_bvh cg_bvh;
  * Triangles with a non-finite corner are left out (never hit); degenerate
  * (zero-area) triangles are kept and never hit.  Zero triangles give an
  * empty BVH that hits nothing.  CG_EINVAL for NULL arguments or an index out
- * of range, CG_ERANGE above 2^31 - 1 triangles, CG_ENOMEM. */
+ * of range, CG_ERANGE above 2^31 - 1 triangles (or, with leaves of one
+ * triangle each, above about 2^28), CG_ENOMEM. */
 cg_status cg_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
                        size_t triangle_count, cg_bvh **out);
 /* The same tree built with up to threads threads (the root's two subtrees
@@ -51,10 +53,10 @@ void cg_bvh_free(cg_bvh *bvh);
 
 typedef struct cg_bvh_stats {
     size_t triangles;   /* triangles stored (finite ones) */
-    size_t nodes;       /* nodes, 32 bytes each */
-    size_t leaves;
-    int depth;          /* longest root-to-leaf path, root = 1 */
-    double sah_cost;    /* SAH cost of the tree (traversal 1, triangle 1) */
+    size_t nodes;       /* nodes of the 4-wide tree, 128 bytes each */
+    size_t leaves;      /* leaves (1 to 8 triangles each) */
+    int depth;          /* longest root-to-leaf path in nodes, root = 1 */
+    double sah_cost;    /* SAH cost of the tree (node 1, triangle 1) */
 } cg_bvh_stats;
 void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out);
 

@@ -4,9 +4,10 @@
 
 #include "cg/trace.h"
 
-/* A 32-byte node: bounds, and either two children (count == 0: the left
- * child follows this node, the right one is at offset) or a leaf of count
- * triangles starting at offset in the reordered triangle array. */
+/* A node of the binary tree the build makes (32 bytes): bounds, and either
+ * two children (count == 0: the left child follows this node, the right one
+ * is at offset) or a leaf of count triangles starting at offset in the
+ * reordered triangle array.  Also the root's bounds of the final tree. */
 typedef struct bvh_node {
     float lo[3];
     uint32_t offset;
@@ -14,18 +15,46 @@ typedef struct bvh_node {
     uint32_t count;
 } bvh_node;
 
-/* A triangle as the test reads it, in leaf order. */
+/* A node of the 4-wide tree the queries traverse (128 bytes): the four
+ * children's boxes stored by coordinate (box[r][lane], rows lo x, hi x,
+ * lo y, hi y, lo z, hi z: a ray's far plane is in the row after or before its
+ * near one), so one SSE pass tests all four, and their references.
+ * An unused slot has an empty box (lo +inf, hi -inf) that no ray enters. */
+typedef struct bvh4_node {
+    float box[6][4];
+    uint32_t child[4];
+    uint32_t pad[4];
+} bvh4_node;
+
+/* A child reference: an inner node's index, or BVH_LEAF | first block << 3 |
+ * (triangle count - 1) for a leaf of 1 to 8 triangles in consecutive blocks
+ * of four. */
+#define BVH_LEAF 0x80000000u
+#define BVH_NONE 0xffffffffu
+
+/* Four triangles by coordinate (v[corner][axis][lane]) for testing them at
+ * once, with their indices as given to the build; an unused lane has NaN
+ * corners (never hit) and index UINT32_MAX. */
+typedef struct bvh_tri4 {
+    float v[3][3][4];
+    uint32_t id[4];
+} bvh_tri4;
+
+/* A triangle as the scalar test reads it. */
 typedef struct bvh_triangle {
     float v0[3], v1[3], v2[3];
     uint32_t id;
 } bvh_triangle;
 
 struct cg_bvh {
-    bvh_node *nodes;
+    bvh4_node *nodes;
     size_t node_count;
-    bvh_triangle *triangles;
+    bvh_tri4 *blocks;
+    size_t block_count;
     size_t triangle_count;
-    int depth;
+    uint32_t root;  /* reference of the root (BVH_NONE when empty) */
+    bvh_node bounds; /* the root's box */
+    int depth;       /* of the 4-wide tree, root = 1 */
 };
 
 /* A ray prepared for the watertight test and the slab test. */

@@ -230,7 +230,28 @@ static inline int coverage_of(float acc, cg_fill_rule rule)
         if (a > 1)
             a = 2 - a;
     }
-    return a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
+    a = a < 1 ? a : 1;
+    return (int)(a * 255.0f + 0.5f);
+}
+
+/* Sums cells row[0..n-1] onto acc, clearing them, and writes each pixel's
+ * coverage; returns the sum.  One loop per rule, so neither tests it. */
+static inline float sum_cells(float *row, int n, float acc, cg_fill_rule rule, uint8_t *cover)
+{
+    if (rule == CG_FILL_NONZERO) {
+        for (int i = 0; i < n; i++) {
+            acc += row[i];
+            row[i] = 0;
+            cover[i] = (uint8_t)coverage_of(acc, CG_FILL_NONZERO);
+        }
+    } else {
+        for (int i = 0; i < n; i++) {
+            acc += row[i];
+            row[i] = 0;
+            cover[i] = (uint8_t)coverage_of(acc, CG_FILL_EVEN_ODD);
+        }
+    }
+    return acc;
 }
 
 /* Paints x0 .. x1 - 1 of row y with constant coverage c. */
@@ -248,50 +269,67 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
 }
 
 /* Sums one row of the accumulation buffer into coverage and paints it,
- * clearing the cells and bits behind it.  Runs of touched cells are
- * painted with their own coverage, the gaps between them as spans of the
- * coverage left by the run before. */
-static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
-                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+ * clearing the cells and bits behind it.  Each run of touched cells (within
+ * one 64-bit word of bits) is summed and painted; the gaps between runs are
+ * spans of the coverage left by the run before.  Solid paint on RGBA8 is
+ * painted pixel by pixel as the cells are summed (through the blend cache);
+ * other paints get each run's coverage in cover[]. */
+static inline void render_row_rule(const fill_painter *painter, float *row, uint64_t *touched,
+                                   int width, size_t words, int y, int origin_x, cg_fill_rule rule,
+                                   uint8_t *cover)
 {
     float acc = 0;
-    int c = 0, run_start = 0, run_end = 0;
-    /* solid paint on RGBA8: touched pixels are painted as they are summed */
-    cg_rgba8 *pixels = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8
-                           ? cg_image_row_rgba8(painter->image, y) + origin_x
-                           : NULL;
+    int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
+    int solid = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8;
+    uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
             continue;
         touched[w] = 0;
         while (m) {
-            int x = (int)(w << 6) + lowest_bit(m);
-            m &= m - 1;
-            if (x >= width) { /* deposits right of the last pixel */
+            int b = lowest_bit(m);
+            uint64_t clear = ~m >> b; /* bit i: cell b + i untouched (0 beyond the word) */
+            int len = clear ? lowest_bit(clear) : 64 - b;
+            m = b + len >= 64 ? 0 : m & (~0ULL << (b + len));
+            int start = (int)(w << 6) + b, end = start + len;
+            int paint_end = end < width ? end : width;
+            if (start < paint_end) {
+                if (solid) {
+                    if (c == 255 && painter->opaque)
+                        fill_store32(pixels + done, start - done, painter->encoded);
+                    else if (c != 0)
+                        for (int x = done; x < start; x++)
+                            fill_solid_cached(painter, pixels + x, c);
+                    for (int x = start; x < paint_end; x++) {
+                        acc += row[x];
+                        row[x] = 0;
+                        c = coverage_of(acc, rule);
+                        fill_solid_cached(painter, pixels + x, c);
+                    }
+                } else {
+                    constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
+                    acc = sum_cells(row + start, paint_end - start, acc, rule, cover);
+                    c = cover[paint_end - start - 1];
+                    fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
+                }
+                done = paint_end;
+            }
+            /* deposits right of the last pixel: cleared, unused */
+            for (int x = paint_end > start ? paint_end : start; x < end; x++)
                 row[x] = 0;
-                continue;
-            }
-            if (x != run_end) {
-                if (!pixels)
-                    fill_painter_span(painter, y, origin_x + run_start, run_end - run_start,
-                                      cover);
-                constant_span(painter, y, origin_x + run_end, origin_x + x, c, cover);
-                run_start = x;
-            }
-            acc += row[x];
-            row[x] = 0;
-            c = coverage_of(acc, rule);
-            if (pixels)
-                fill_solid_pixel(painter, pixels + x, c);
-            else
-                cover[x - run_start] = (uint8_t)c;
-            run_end = x + 1;
         }
     }
-    if (!pixels)
-        fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
-    constant_span(painter, y, origin_x + run_end, origin_x + width, c, cover);
+    constant_span(painter, y, origin_x + done, origin_x + width, c, cover);
+}
+
+static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
+                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+{
+    if (rule == CG_FILL_NONZERO)
+        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_NONZERO, cover);
+    else
+        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD, cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,

@@ -7,6 +7,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* ---- growing arrays of points ------------------------------------------- */
 
@@ -68,9 +71,29 @@ cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style 
 
 /* ---- painting spans ------------------------------------------------------ */
 
+/* d[0..n-1] = v: the solid interior of a shape, sixteen bytes per store. */
+static inline void fill_store32(uint32_t *d, int n, uint32_t v)
+{
+    int i = 0;
+#if defined(__SSE2__)
+    __m128i v4 = _mm_set1_epi32((int)v);
+    for (; i + 8 <= n; i += 8) {
+        _mm_storeu_si128((__m128i *)(d + i), v4);
+        _mm_storeu_si128((__m128i *)(d + i + 4), v4);
+    }
+    if (i + 4 <= n) {
+        _mm_storeu_si128((__m128i *)(d + i), v4);
+        i += 4;
+    }
+#endif
+    for (; i < n; i++)
+        d[i] = v;
+}
+
 typedef struct fill_painter {
     cg_image *image;
     const struct cg_rasterizer *tables;
+    struct cg_rasterizer *cache; /* the solid blend cache (tables' owner) */
     int type;
     /* solid: linear straight colour and its encoded form */
     float r, g, b, a;
@@ -105,6 +128,9 @@ typedef struct fill_crossing {
     int dir;
 } fill_crossing;
 
+#define FILL_BLEND_CACHE 1024 /* entries, a power of two */
+#define FILL_BLEND_GENERATIONS (1u << 24)
+
 struct cg_rasterizer {
     double tolerance;
     /* anti-aliased: lines clipped to the image, and their bounds */
@@ -134,6 +160,13 @@ struct cg_rasterizer {
     float decode[256];
     float threshold[256]; /* code k+1 starts at threshold[k]; threshold[255] = +inf */
     uint8_t encode[4097]; /* code at linear i / 4096 */
+    /* Solid paint over RGBA8: a direct-mapped cache of fill_solid_pixel's
+     * results for the source colour blend_src, keyed by destination value,
+     * coverage and generation (a new source colour starts a new one). */
+    uint32_t blend_src, blend_gen;
+    int blend_src_valid;
+    uint64_t blend_key[FILL_BLEND_CACHE];
+    uint32_t blend_value[FILL_BLEND_CACHE];
 };
 
 void fill_tables_prepare(struct cg_rasterizer *r);
@@ -212,6 +245,50 @@ static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
     }
     fill_blend8(p->tables, d, p->r, p->g, p->b, as);
 }
+
+/* The next generation of the blend cache (the keys are cleared when the
+ * counter wraps, so a stale key never matches; generation 0 is never used). */
+static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t gen)
+{
+    if (++gen >= FILL_BLEND_GENERATIONS) {
+        memset(r->blend_key, 0, sizeof r->blend_key);
+        gen = 1;
+    }
+    return gen;
+}
+
+/* fill_solid_pixel on pixel *d through the cache: over destinations of a
+ * few colours (the usual case) each coverage level is blended once. */
+static inline void fill_solid_cached(const fill_painter *p, uint32_t *d, int c)
+{
+    if (c == 0)
+        return;
+    if (c == 255 && p->opaque) {
+        *d = p->encoded;
+        return;
+    }
+    struct cg_rasterizer *r = p->cache;
+    uint32_t v = *d;
+    uint64_t key = v | (uint64_t)c << 32 | (uint64_t)r->blend_gen << 40;
+    uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
+    if (r->blend_key[slot] == key) {
+        *d = r->blend_value[slot];
+        return;
+    }
+    cg_rgba8 px;
+    memcpy(&px, &v, sizeof px);
+    fill_solid_pixel(p, &px, c);
+    memcpy(&v, &px, sizeof v);
+    r->blend_key[slot] = key;
+    r->blend_value[slot] = v;
+    *d = v;
+}
+
+/* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /
+ * 255 (cover NULL: constant / 255), through the blend cache: over a
+ * destination of one colour (the usual background) each coverage level is
+ * blended once. */
+void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant);
 
 /* Grows *array (of element size) to hold at least need elements; 0 when
  * memory runs out (the array is then unchanged). */

@@ -151,35 +151,44 @@ static inline int lowest_bit(uint64_t m)
 #endif
 }
 
-/* Adds the part of a line within one row: x from xa to xb (relative to the
- * row's first cell), signed height d. */
-static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d)
+/* Marks cells c and c + 1 touched (the common case of a line crossing a
+ * row within one column). */
+static inline void mark_pair(uint64_t *bits, int c)
 {
-    if (xa > xb) {
-        double t = xa;
-        xa = xb;
-        xb = t;
-    }
+    int b = c & 63;
+    bits[c >> 6] |= 3ULL << b;
+    if (b == 63)
+        bits[(c >> 6) + 1] |= 1;
+}
+
+/* Adds the part of a line within one row: x from xa to xb (relative to the
+ * row's first cell, xa <= xb), signed height d; s = d / (xb - xa), the
+ * area per unit of x, is the line's (given, as it is the same on every row). */
+static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
+                               double s)
+{
     if (xa < 0)
         xa = 0;
     int c0 = (int)xa, c1 = (int)xb;
-    mark_cells(touched, c0, c1 + 1);
     if (c0 == c1) {
+        mark_pair(touched, c0);
         double fx = 0.5 * (xa + xb) - c0;
         row[c0] += (float)(d * (1 - fx));
         row[c0 + 1] += (float)(d * fx);
         return;
     }
-    double s = d / (xb - xa);
+    mark_cells(touched, c0, c1 + 1);
     double len0 = c0 + 1 - xa, d0 = s * len0;
     row[c0] += (float)(d0 * len0 * 0.5);
-    double carry = d0 * (1 - len0 * 0.5), half = s * 0.5;
-    for (int c = c0 + 1; c < c1; c++) {
-        row[c] += (float)(carry + half);
-        carry = half;
-    }
+    /* the first whole cell gets the rest of c0's area and half its own;
+     * the next ones s each, and c1 the last whole cell's other half */
+    double half = s * 0.5;
+    row[c0 + 1] += (float)(d0 * (1 - len0 * 0.5) + (c0 + 1 < c1 ? half : 0));
+    float whole = (float)s;
+    for (int c = c0 + 2; c < c1; c++)
+        row[c] += whole;
     double len1 = xb - c1, d1 = s * len1;
-    row[c1] += (float)(carry + d1 * (1 - len1 * 0.5));
+    row[c1] += (float)((c0 + 1 < c1 ? half : 0) + d1 * (1 - len1 * 0.5));
     row[c1 + 1] += (float)(d1 * len1 * 0.5);
 }
 
@@ -210,13 +219,20 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     if (ys >= ye)
         return;
     double dxdy = (x1 - x0) / (y1 - y0);
+    /* area per unit of x: d / |xb - xa| = sign / |dxdy| (unused when the
+     * line stays in one column of a row, so dxdy = 0 gives no trouble) */
+    double s = dxdy != 0 ? sign / fabs(dxdy) : 0;
     int row = floor_clipped(ys), row_end = ceil_clipped(ye);
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
-    for (; row < row_end; row++) {
+    float *cells = accumulation + (size_t)(row - band_top) * stride;
+    uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
+    for (; row < row_end; row++, cells += stride, bits += blocks) {
         double yb = row + 1 < ye ? row + 1 : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
-        size_t k = (size_t)(row - band_top);
-        deposit_row(accumulation + k * stride, touched + k * blocks, xa, xb, sign * (yb - ya));
+        if (xa <= xb)
+            deposit_row(cells, bits, xa, xb, sign * (yb - ya), s);
+        else
+            deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
         xa = xb;
         ya = yb;
     }

@@ -353,11 +353,11 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
 {
     if (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO)
         return CG_EINVAL;
+    fill_tables_prepare(r);
     fill_painter painter;
     cg_status status = fill_painter_init(&painter, r, image, paint);
     if (status != CG_OK)
         return status;
-    fill_tables_prepare(r);
     if (r->line_count == 0)
         return CG_OK;
     int origin_x = floor_clipped(r->min_x), end_x = ceil_clipped(r->max_x);

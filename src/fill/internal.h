@@ -99,6 +99,10 @@ typedef struct fill_painter {
     float r, g, b, a;
     uint32_t encoded;
     int opaque;
+    /* the linear colour is exactly the decoded encoded one, so blending over
+     * a pixel of the same colour changes only its alpha */
+    int same_exact;
+    uint8_t encoded_rgba[4];
     /* gradients */
     double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
@@ -241,6 +245,15 @@ static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
     if (d->a == 0) { /* over nothing: the colour itself, with its alpha */
         memcpy(d, &p->encoded, 4);
         d->a = (uint8_t)(as * 255.0f + 0.5f);
+        return;
+    }
+    if (p->same_exact && d->r == (uint8_t)p->encoded_rgba[0] && d->g == p->encoded_rgba[1]
+        && d->b == p->encoded_rgba[2]) {
+        /* fill_blend8 would give the same colour back (it is a weighted
+         * mean of two equal values, far from the code's rounding limits):
+         * only the alpha changes */
+        if (d->a != 255)
+            d->a = (uint8_t)((as + d->a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
         return;
     }
     fill_blend8(p->tables, d, p->r, p->g, p->b, as);

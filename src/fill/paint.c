@@ -134,6 +134,7 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     p->r = p->g = p->b = p->a = 0;
     p->encoded = 0;
     p->opaque = 0;
+    p->same_exact = 0;
     p->gx = p->gy = p->gc = 0;
     p->cx = p->cy = p->inv_radius = 0;
     p->image = image;
@@ -151,7 +152,10 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->b = c.b;
         p->a = c.a;
         memcpy(&p->encoded, &paint->color, sizeof p->encoded);
+        memcpy(p->encoded_rgba, &paint->color, sizeof p->encoded_rgba);
         p->opaque = paint->color.a == 255;
+        p->same_exact = r->tables_ready && r->decode[paint->color.r] == p->r
+                        && r->decode[paint->color.g] == p->g && r->decode[paint->color.b] == p->b;
         if (!r->blend_src_valid || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
             r->blend_src_valid = 1;

@@ -298,6 +298,7 @@ static inline void render_row_rule(const fill_painter *painter, float *row, uint
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
     int solid = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8;
     uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
+    fill_blend_state blend = fill_blend_begin(painter);
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
@@ -312,16 +313,16 @@ static inline void render_row_rule(const fill_painter *painter, float *row, uint
             int paint_end = end < width ? end : width;
             if (start < paint_end) {
                 if (solid) {
-                    if (c == 255 && painter->opaque)
-                        fill_store32(pixels + done, start - done, painter->encoded);
+                    if (c == 255 && blend.opaque)
+                        fill_store32(pixels + done, start - done, blend.full);
                     else if (c != 0)
                         for (int x = done; x < start; x++)
-                            fill_solid_cached(painter, pixels + x, c);
+                            fill_solid_cached(&blend, pixels + x, c);
                     for (int x = start; x < paint_end; x++) {
                         acc += row[x];
                         row[x] = 0;
                         c = coverage_of(acc, rule);
-                        fill_solid_cached(painter, pixels + x, c);
+                        fill_solid_cached(&blend, pixels + x, c);
                     }
                 } else {
                     constant_span(painter, y, origin_x + done, origin_x + start, c, cover);

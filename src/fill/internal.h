@@ -270,30 +270,52 @@ static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t ge
     return gen;
 }
 
+/* The blend cache's fields copied into local variables for a row (the
+ * pixel stores could otherwise alias them and force reloads). */
+typedef struct fill_blend_state {
+    const fill_painter *p;
+    uint64_t *keys;
+    uint32_t *values;
+    uint64_t generation; /* shifted into place */
+    uint32_t full;
+    int opaque;
+} fill_blend_state;
+
+static inline fill_blend_state fill_blend_begin(const fill_painter *p)
+{
+    fill_blend_state s;
+    s.p = p;
+    s.keys = p->cache->blend_key;
+    s.values = p->cache->blend_value;
+    s.generation = (uint64_t)p->cache->blend_gen << 40;
+    s.full = p->encoded;
+    s.opaque = p->opaque;
+    return s;
+}
+
 /* fill_solid_pixel on pixel *d through the cache: over destinations of a
  * few colours (the usual case) each coverage level is blended once. */
-static inline void fill_solid_cached(const fill_painter *p, uint32_t *d, int c)
+static inline void fill_solid_cached(const fill_blend_state *s, uint32_t *d, int c)
 {
     if (c == 0)
         return;
-    if (c == 255 && p->opaque) {
-        *d = p->encoded;
+    if (c == 255 && s->opaque) {
+        *d = s->full;
         return;
     }
-    struct cg_rasterizer *r = p->cache;
     uint32_t v = *d;
-    uint64_t key = v | (uint64_t)c << 32 | (uint64_t)r->blend_gen << 40;
+    uint64_t key = v | (uint64_t)c << 32 | s->generation;
     uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
-    if (r->blend_key[slot] == key) {
-        *d = r->blend_value[slot];
+    if (s->keys[slot] == key) {
+        *d = s->values[slot];
         return;
     }
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);
-    fill_solid_pixel(p, &px, c);
+    fill_solid_pixel(s->p, &px, c);
     memcpy(&v, &px, sizeof v);
-    r->blend_key[slot] = key;
-    r->blend_value[slot] = v;
+    s->keys[slot] = key;
+    s->values[slot] = v;
     *d = v;
 }
 

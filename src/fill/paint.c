@@ -188,12 +188,13 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
 
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant)
 {
+    fill_blend_state s = fill_blend_begin(p);
     if (cover)
         for (int i = 0; i < n; i++)
-            fill_solid_cached(p, d + i, cover[i]);
+            fill_solid_cached(&s, d + i, cover[i]);
     else
         for (int i = 0; i < n; i++)
-            fill_solid_cached(p, d + i, constant);
+            fill_solid_cached(&s, d + i, constant);
 }
 
 static inline void blendf(cg_rgbaf *d, float r, float g, float b, float as)

@@ -207,7 +207,8 @@ static inline int ceil_clipped(double v)
 
 /* Adds the part of line l within rows [band_top, band_bottom). */
 static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
-                         int band_top, int band_bottom, double origin_x, const fill_line *l)
+                         int band_top, int band_bottom, double origin_x, const fill_line *l,
+                         const cg_image *image)
 {
     double x0 = l->x0 - origin_x, y0 = l->y0, x1 = l->x1 - origin_x, y1 = l->y1, sign = 1;
     if (y0 > y1) {
@@ -226,9 +227,25 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
     float *cells = accumulation + (size_t)(row - band_top) * stride;
     uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
+#if defined(__GNUC__)
+    /* The pixels under the line are read (to blend onto them) when the band
+     * is painted: asking for them now hides the wait for memory. */
+    const unsigned char *pixel_row = image->format == CG_PIXEL_RGBA8
+                                         ? image->data + (size_t)row * image->stride
+                                               + (size_t)origin_x * 4
+                                         : NULL;
+#else
+    (void)image;
+#endif
     for (; row < row_end; row++, cells += stride, bits += blocks) {
         double yb = row + 1 < ye ? row + 1 : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
+#if defined(__GNUC__)
+        if (pixel_row) {
+            __builtin_prefetch(pixel_row + 4 * (size_t)(xa > 0 ? (int)xa : 0), 1, 3);
+            pixel_row += image->stride;
+        }
+#endif
         if (xa <= xb)
             deposit_row(cells, bits, xa, xb, sign * (yb - ya), s);
         else
@@ -434,7 +451,7 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         for (size_t i = 0; i < active_count; i++) {
             const fill_line *l = &r->lines[r->active[i]];
             deposit_line(r->accumulation, r->touched, stride, blocks, band_top, band_bottom,
-                         origin_x, l);
+                         origin_x, l, image);
             double ymax = l->y0 > l->y1 ? l->y0 : l->y1;
             if (ymax > band_bottom)
                 r->active[kept++] = r->active[i];

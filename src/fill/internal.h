@@ -293,9 +293,19 @@ static inline fill_blend_state fill_blend_begin(const fill_painter *p)
     return s;
 }
 
+/* A miss of the cache: blends and records the result (out of line, so that
+ * the hit path below stays small enough to inline). */
+void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot);
+
+#if defined(__GNUC__)
+#define FILL_INLINE __attribute__((always_inline)) inline
+#else
+#define FILL_INLINE inline
+#endif
+
 /* fill_solid_pixel on pixel *d through the cache: over destinations of a
  * few colours (the usual case) each coverage level is blended once. */
-static inline void fill_solid_cached(const fill_blend_state *s, uint32_t *d, int c)
+static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d, int c)
 {
     if (c == 0)
         return;
@@ -306,17 +316,10 @@ static inline void fill_solid_cached(const fill_blend_state *s, uint32_t *d, int
     uint32_t v = *d;
     uint64_t key = v | (uint64_t)c << 32 | s->generation;
     uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
-    if (s->keys[slot] == key) {
+    if (s->keys[slot] == key)
         *d = s->values[slot];
-        return;
-    }
-    cg_rgba8 px;
-    memcpy(&px, &v, sizeof px);
-    fill_solid_pixel(s->p, &px, c);
-    memcpy(&v, &px, sizeof v);
-    s->keys[slot] = key;
-    s->values[slot] = v;
-    *d = v;
+    else
+        fill_solid_miss(s, d, c, key, slot);
 }
 
 /* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /

@@ -186,6 +186,18 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
+void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot)
+{
+    cg_rgba8 px;
+    memcpy(&px, d, sizeof px);
+    fill_solid_pixel(s->p, &px, c);
+    uint32_t v;
+    memcpy(&v, &px, sizeof v);
+    s->keys[slot] = key;
+    s->values[slot] = v;
+    *d = v;
+}
+
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant)
 {
     fill_blend_state s = fill_blend_begin(p);

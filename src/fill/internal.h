@@ -279,6 +279,7 @@ typedef struct fill_blend_state {
     uint64_t generation; /* shifted into place */
     uint32_t full;
     int opaque;
+    int keep_same; /* opaque paint over pixels of its own colour changes nothing */
 } fill_blend_state;
 
 static inline fill_blend_state fill_blend_begin(const fill_painter *p)
@@ -290,6 +291,7 @@ static inline fill_blend_state fill_blend_begin(const fill_painter *p)
     s.generation = (uint64_t)p->cache->blend_gen << 40;
     s.full = p->encoded;
     s.opaque = p->opaque;
+    s.keep_same = p->opaque && p->same_exact;
     return s;
 }
 
@@ -314,6 +316,8 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
         return;
     }
     uint32_t v = *d;
+    if (v == s->full && s->keep_same)
+        return; /* see fill_solid_pixel: the colour stays, alpha stays 255 */
     uint64_t key = v | (uint64_t)c << 32 | s->generation;
     uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
     if (s->keys[slot] == key)

@@ -279,7 +279,8 @@ typedef struct fill_blend_state {
     uint64_t generation; /* shifted into place */
     uint32_t full;
     int opaque;
-    int keep_same; /* opaque paint over pixels of its own colour changes nothing */
+    int keep_same; /* opaque paint over pixels of its own colour changes only alpha */
+    uint32_t rgb_mask; /* the bytes of r, g and b in a pixel's 32 bits */
 } fill_blend_state;
 
 static inline fill_blend_state fill_blend_begin(const fill_painter *p)
@@ -292,6 +293,8 @@ static inline fill_blend_state fill_blend_begin(const fill_painter *p)
     s.full = p->encoded;
     s.opaque = p->opaque;
     s.keep_same = p->opaque && p->same_exact;
+    cg_rgba8 mask = {255, 255, 255, 0};
+    memcpy(&s.rgb_mask, &mask, sizeof s.rgb_mask);
     return s;
 }
 
@@ -316,8 +319,17 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
         return;
     }
     uint32_t v = *d;
-    if (v == s->full && s->keep_same)
-        return; /* see fill_solid_pixel: the colour stays, alpha stays 255 */
+    if (s->keep_same && ((v ^ s->full) & s->rgb_mask) == 0) {
+        /* a pixel of the paint's own colour: only its alpha changes (see
+         * fill_solid_pixel; over alpha 0 and 255 the formula gives the
+         * same as the cases there) */
+        cg_rgba8 px;
+        memcpy(&px, &v, sizeof px);
+        float as = c * (1.0f / 255.0f);
+        px.a = (uint8_t)((as + px.a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
+        memcpy(d, &px, sizeof px);
+        return;
+    }
     uint64_t key = v | (uint64_t)c << 32 | s->generation;
     uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
     if (s->keys[slot] == key)

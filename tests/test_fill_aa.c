@@ -599,6 +599,59 @@ static void aa_blending(void)
     CHECK_MSG(bad == 0, "%d partly covered pixels blend differently from cg_image_blend", bad);
 }
 
+/* The same through one reused rasterizer (whose cache of blends then sees
+ * many pixel and coverage pairs, and colour changes), with colours from a
+ * small palette so pixels often already have the paint's colour: blending a
+ * colour over itself must leave the colour exactly and change only alpha. */
+static void aa_blending_reused(void)
+{
+    check_rng rng = {22};
+    cg_rasterizer *r;
+    CHECK(cg_rasterizer_create(&r) == CG_OK);
+    cg_image *a, *b;
+    cg_image_create(&a, 2, 1, CG_PIXEL_RGBA8);
+    cg_image_create(&b, 2, 1, CG_PIXEL_RGBA8);
+    const cg_rgba8 palette[4] = {{30, 60, 200, 255}, {255, 255, 255, 255}, {0, 0, 0, 255},
+                                 {200, 30, 90, 160}};
+    int bad = 0, same_bad = 0;
+    cg_rgba8 fg = palette[0], bg = palette[0];
+    for (int t = 0; t < 4000; t++) {
+        if (t % 8 == 0) { /* groups of 8: one colour over one pixel value at 8 coverages */
+            int g = t / 8;
+            fg = palette[check_rng_int(&rng, 0, 3)];
+            bg = palette[check_rng_int(&rng, 0, 3)];
+            if (g % 5 == 0)
+                bg = (cg_rgba8){(uint8_t)check_rng_int(&rng, 0, 255),
+                                (uint8_t)check_rng_int(&rng, 0, 255),
+                                (uint8_t)check_rng_int(&rng, 0, 255), 255};
+            bg.a = (uint8_t)(g % 3 == 0 ? 255 : g % 3 == 1 ? check_rng_int(&rng, 1, 254) : 0);
+        }
+        double cover = (double)check_rng_int(&rng, 1, 254) / 255;
+        cg_image_clear_rgba8(a, bg);
+        cg_image_clear_rgba8(b, bg);
+        cg_vec2 rect[4] = {{0, 0}, {cover, 0}, {cover, 1}, {0, 1}};
+        int four = 4;
+        cg_paint paint = cg_paint_solid(fg);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, a, rect, &four, 1, CG_FILL_EVEN_ODD, &paint) == CG_OK);
+        cg_rgbaf src = cg_rgba8_to_linear(fg);
+        src.a *= (float)(floor(cover * 255 + 0.5) / 255);
+        cg_image_blend(b, 0, 0, src);
+        cg_rgba8 p = cg_image_get_rgba8(a, 0, 0), q = cg_image_get_rgba8(b, 0, 0);
+        if ((abs(p.r - q.r) > 1 || abs(p.g - q.g) > 1 || abs(p.b - q.b) > 1 || abs(p.a - q.a) > 1)
+            && ++bad <= 5)
+            fprintf(stderr, "reused aa blend %d: %d,%d,%d,%d vs %d,%d,%d,%d\n", t, p.r, p.g, p.b,
+                    p.a, q.r, q.g, q.b, q.a);
+        if (bg.a > 0 && bg.r == fg.r && bg.g == fg.g && bg.b == fg.b
+            && (p.r != fg.r || p.g != fg.g || p.b != fg.b))
+            same_bad++;
+    }
+    CHECK_MSG(bad == 0, "%d partly covered pixels blend differently from cg_image_blend", bad);
+    CHECK_MSG(same_bad == 0, "%d pixels changed colour under paint of their own colour", same_bad);
+    cg_image_free(a);
+    cg_image_free(b);
+    cg_rasterizer_free(r);
+}
+
 /* Even-odd against non-zero on a pentagram; gradients; linear light. */
 static void rules_and_paints(void)
 {
@@ -672,6 +725,7 @@ int main(void)
     svg_paths();
     curves();
     aa_blending();
+    aa_blending_reused();
     huge_curves();
     rules_and_paints();
     return check_finish();

@@ -265,44 +265,11 @@ static void edge_cases(void)
     cg_image_free(copy);
 }
 
-/* A big spiral: the corridor is millions of pixels long, which would
- * overflow the call stack of a recursive fill.  20,000 x 20,000 exceeds
- * CG_IMAGE_MAX_PIXELS, so the side is the largest that keeps the test
- * quick; skipped under the sanitizers, which make it slow. */
-static void big_spiral(void)
-{
-#if defined(__SANITIZE_ADDRESS__)
-    fprintf(stderr, "big spiral skipped under the address sanitizer\n");
-#else
-    int size = 6001;
-    cg_image *im = spiral(size);
-    cg_rgba8 white = {255, 255, 255, 255}, red = {255, 0, 0, 255};
-    size_t corridor = 0;
-    for (int y = 0; y < size; y++) {
-        const cg_rgba8 *row = cg_image_row_rgba8(im, y);
-        for (int x = 0; x < size; x++)
-            corridor += same(row[x], white);
-    }
-    size_t filled;
-    CHECK(cg_flood_fill(im, 1, 1, red, CG_CONNECT_4, 0, &filled) == CG_OK);
-    CHECK_EQ_INT(filled, corridor);
-    size_t left = 0;
-    for (int y = 0; y < size; y++) {
-        const cg_rgba8 *row = cg_image_row_rgba8(im, y);
-        for (int x = 0; x < size; x++)
-            left += same(row[x], white);
-    }
-    CHECK_EQ_INT(left, 0);
-    cg_image_free(im);
-#endif
-}
-
 int main(void)
 {
     random_images();
     mazes_and_spirals();
     diagonal_gaps();
     edge_cases();
-    big_spiral();
     return check_finish();
 }

@@ -16,7 +16,9 @@ static void test_create(void)
     CHECK(img == NULL);
     CHECK_EQ_INT(cg_image_create(&img, 10, -1, CG_PIXEL_RGBA8), CG_EINVAL);
     CHECK_EQ_INT(cg_image_create(&img, CG_IMAGE_MAX_SIDE + 1, 1, CG_PIXEL_RGBA8), CG_ERANGE);
-    CHECK_EQ_INT(cg_image_create(&img, 1 << 15, 1 << 15, CG_PIXEL_RGBA8), CG_ERANGE);
+    /* just over 2^30 pixels (CG_IMAGE_CREATE_MAX_PIXELS) */
+    CHECK_EQ_INT(cg_image_create(&img, (1 << 15) + 1, 1 << 15, CG_PIXEL_RGBA8), CG_ERANGE);
+    CHECK(img == NULL);
     CHECK_EQ_INT(cg_image_create(&img, 10, 10, (cg_pixel_format)7), CG_EINVAL);
     CHECK_EQ_INT(cg_image_create(NULL, 10, 10, CG_PIXEL_RGBA8), CG_EINVAL);
     CHECK_EQ_INT(cg_image_create(&img, 3, 2, CG_PIXEL_RGBAF), CG_OK);

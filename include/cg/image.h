@@ -25,11 +25,16 @@ typedef enum cg_pixel_format {
 typedef struct cg_rgba8 { uint8_t r, g, b, a; } cg_rgba8;
 typedef struct cg_rgbaf { float r, g, b, a; } cg_rgbaf;
 
-/* Largest accepted width or height, and largest pixel count, for creating
- * and for reading files: 2^24 = 16,777,216 per side and 2^28 = 268,435,456
- * pixels (1 GiB in RGBA8). */
+/* Limits.  CG_IMAGE_MAX_SIDE: largest width or height, 2^24 = 16,777,216,
+ * everywhere.  CG_IMAGE_MAX_PIXELS: largest pixel count of an image read
+ * from a file (and of the command-line tool's canvases), 2^28 = 268,435,456
+ * pixels (1 GiB in RGBA8), so that a small file cannot claim gigabytes (a
+ * decompression bomb).  CG_IMAGE_CREATE_MAX_PIXELS: largest pixel count of
+ * an image created in memory by cg_image_create, 2^30 = 1,073,741,824 pixels
+ * (4 GiB in RGBA8, 16 GiB in RGBAF), e.g. a 20,000 x 20,000 maze. */
 #define CG_IMAGE_MAX_SIDE (1 << 24)
 #define CG_IMAGE_MAX_PIXELS ((size_t)1 << 28)
+#define CG_IMAGE_CREATE_MAX_PIXELS ((size_t)1 << 30)
 
 typedef struct cg_image {
     int width, height;
@@ -39,7 +44,8 @@ typedef struct cg_image {
 } cg_image;
 
 /* A new image of the given size and format, every pixel transparent black.
- * CG_EINVAL for a non-positive size, CG_ERANGE beyond the limits above. */
+ * CG_EINVAL for a non-positive size, CG_ERANGE beyond CG_IMAGE_MAX_SIDE or
+ * CG_IMAGE_CREATE_MAX_PIXELS. */
 cg_status cg_image_create(cg_image **out, int width, int height, cg_pixel_format format);
 void cg_image_free(cg_image *image);
 /* A deep copy. */

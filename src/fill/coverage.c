@@ -151,35 +151,44 @@ static inline int lowest_bit(uint64_t m)
 #endif
 }
 
-/* Adds the part of a line within one row: x from xa to xb (relative to the
- * row's first cell), signed height d. */
-static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d)
+/* Marks cells c and c + 1 touched (the common case of a line crossing a
+ * row within one column). */
+static inline void mark_pair(uint64_t *bits, int c)
 {
-    if (xa > xb) {
-        double t = xa;
-        xa = xb;
-        xb = t;
-    }
+    int b = c & 63;
+    bits[c >> 6] |= 3ULL << b;
+    if (b == 63)
+        bits[(c >> 6) + 1] |= 1;
+}
+
+/* Adds the part of a line within one row: x from xa to xb (relative to the
+ * row's first cell, xa <= xb), signed height d; s = d / (xb - xa), the
+ * area per unit of x, is the line's (given, as it is the same on every row). */
+static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
+                               double s)
+{
     if (xa < 0)
         xa = 0;
     int c0 = (int)xa, c1 = (int)xb;
-    mark_cells(touched, c0, c1 + 1);
     if (c0 == c1) {
+        mark_pair(touched, c0);
         double fx = 0.5 * (xa + xb) - c0;
         row[c0] += (float)(d * (1 - fx));
         row[c0 + 1] += (float)(d * fx);
         return;
     }
-    double s = d / (xb - xa);
+    mark_cells(touched, c0, c1 + 1);
     double len0 = c0 + 1 - xa, d0 = s * len0;
     row[c0] += (float)(d0 * len0 * 0.5);
-    double carry = d0 * (1 - len0 * 0.5), half = s * 0.5;
-    for (int c = c0 + 1; c < c1; c++) {
-        row[c] += (float)(carry + half);
-        carry = half;
-    }
+    /* the first whole cell gets the rest of c0's area and half its own;
+     * the next ones s each, and c1 the last whole cell's other half */
+    double half = s * 0.5;
+    row[c0 + 1] += (float)(d0 * (1 - len0 * 0.5) + (c0 + 1 < c1 ? half : 0));
+    float whole = (float)s;
+    for (int c = c0 + 2; c < c1; c++)
+        row[c] += whole;
     double len1 = xb - c1, d1 = s * len1;
-    row[c1] += (float)(carry + d1 * (1 - len1 * 0.5));
+    row[c1] += (float)((c0 + 1 < c1 ? half : 0) + d1 * (1 - len1 * 0.5));
     row[c1 + 1] += (float)(d1 * len1 * 0.5);
 }
 
@@ -198,7 +207,8 @@ static inline int ceil_clipped(double v)
 
 /* Adds the part of line l within rows [band_top, band_bottom). */
 static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
-                         int band_top, int band_bottom, double origin_x, const fill_line *l)
+                         int band_top, int band_bottom, double origin_x, const fill_line *l,
+                         const cg_image *image)
 {
     double x0 = l->x0 - origin_x, y0 = l->y0, x1 = l->x1 - origin_x, y1 = l->y1, sign = 1;
     if (y0 > y1) {
@@ -210,13 +220,36 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     if (ys >= ye)
         return;
     double dxdy = (x1 - x0) / (y1 - y0);
+    /* area per unit of x: d / |xb - xa| = sign / |dxdy| (unused when the
+     * line stays in one column of a row, so dxdy = 0 gives no trouble) */
+    double s = dxdy != 0 ? sign / fabs(dxdy) : 0;
     int row = floor_clipped(ys), row_end = ceil_clipped(ye);
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
-    for (; row < row_end; row++) {
+    float *cells = accumulation + (size_t)(row - band_top) * stride;
+    uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
+#if defined(__GNUC__)
+    /* The pixels under the line are read (to blend onto them) when the band
+     * is painted: asking for them now hides the wait for memory. */
+    const unsigned char *pixel_row = image->format == CG_PIXEL_RGBA8
+                                         ? image->data + (size_t)row * image->stride
+                                               + (size_t)origin_x * 4
+                                         : NULL;
+#else
+    (void)image;
+#endif
+    for (; row < row_end; row++, cells += stride, bits += blocks) {
         double yb = row + 1 < ye ? row + 1 : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
-        size_t k = (size_t)(row - band_top);
-        deposit_row(accumulation + k * stride, touched + k * blocks, xa, xb, sign * (yb - ya));
+#if defined(__GNUC__)
+        if (pixel_row) {
+            __builtin_prefetch(pixel_row + 4 * (size_t)(xa > 0 ? (int)xa : 0), 1, 3);
+            pixel_row += image->stride;
+        }
+#endif
+        if (xa <= xb)
+            deposit_row(cells, bits, xa, xb, sign * (yb - ya), s);
+        else
+            deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
         xa = xb;
         ya = yb;
     }
@@ -230,7 +263,28 @@ static inline int coverage_of(float acc, cg_fill_rule rule)
         if (a > 1)
             a = 2 - a;
     }
-    return a >= 1 ? 255 : (int)(a * 255.0f + 0.5f);
+    a = a < 1 ? a : 1;
+    return (int)(a * 255.0f + 0.5f);
+}
+
+/* Sums cells row[0..n-1] onto acc, clearing them, and writes each pixel's
+ * coverage; returns the sum.  One loop per rule, so neither tests it. */
+static inline float sum_cells(float *row, int n, float acc, cg_fill_rule rule, uint8_t *cover)
+{
+    if (rule == CG_FILL_NONZERO) {
+        for (int i = 0; i < n; i++) {
+            acc += row[i];
+            row[i] = 0;
+            cover[i] = (uint8_t)coverage_of(acc, CG_FILL_NONZERO);
+        }
+    } else {
+        for (int i = 0; i < n; i++) {
+            acc += row[i];
+            row[i] = 0;
+            cover[i] = (uint8_t)coverage_of(acc, CG_FILL_EVEN_ODD);
+        }
+    }
+    return acc;
 }
 
 /* Paints x0 .. x1 - 1 of row y with constant coverage c. */
@@ -248,50 +302,68 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
 }
 
 /* Sums one row of the accumulation buffer into coverage and paints it,
- * clearing the cells and bits behind it.  Runs of touched cells are
- * painted with their own coverage, the gaps between them as spans of the
- * coverage left by the run before. */
-static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
-                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+ * clearing the cells and bits behind it.  Each run of touched cells (within
+ * one 64-bit word of bits) is summed and painted; the gaps between runs are
+ * spans of the coverage left by the run before.  Solid paint on RGBA8 is
+ * painted pixel by pixel as the cells are summed (through the blend cache);
+ * other paints get each run's coverage in cover[]. */
+static inline void render_row_rule(const fill_painter *painter, float *row, uint64_t *touched,
+                                   int width, size_t words, int y, int origin_x, cg_fill_rule rule,
+                                   uint8_t *cover)
 {
     float acc = 0;
-    int c = 0, run_start = 0, run_end = 0;
-    /* solid paint on RGBA8: touched pixels are painted as they are summed */
-    cg_rgba8 *pixels = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8
-                           ? cg_image_row_rgba8(painter->image, y) + origin_x
-                           : NULL;
+    int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
+    int solid = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8;
+    uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
+    fill_blend_state blend = fill_blend_begin(painter);
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
             continue;
         touched[w] = 0;
         while (m) {
-            int x = (int)(w << 6) + lowest_bit(m);
-            m &= m - 1;
-            if (x >= width) { /* deposits right of the last pixel */
+            int b = lowest_bit(m);
+            uint64_t clear = ~m >> b; /* bit i: cell b + i untouched (0 beyond the word) */
+            int len = clear ? lowest_bit(clear) : 64 - b;
+            m = b + len >= 64 ? 0 : m & (~0ULL << (b + len));
+            int start = (int)(w << 6) + b, end = start + len;
+            int paint_end = end < width ? end : width;
+            if (start < paint_end) {
+                if (solid) {
+                    if (c == 255 && blend.opaque)
+                        fill_store32(pixels + done, start - done, blend.full);
+                    else if (c != 0)
+                        for (int x = done; x < start; x++)
+                            fill_solid_cached(&blend, pixels + x, c);
+                    for (int x = start; x < paint_end; x++) {
+                        acc += row[x];
+                        row[x] = 0;
+                        c = coverage_of(acc, rule);
+                        fill_solid_cached(&blend, pixels + x, c);
+                    }
+                } else {
+                    constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
+                    acc = sum_cells(row + start, paint_end - start, acc, rule, cover);
+                    c = cover[paint_end - start - 1];
+                    fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
+                }
+                done = paint_end;
+            }
+            /* deposits right of the last pixel: cleared, unused */
+            for (int x = paint_end > start ? paint_end : start; x < end; x++)
                 row[x] = 0;
-                continue;
-            }
-            if (x != run_end) {
-                if (!pixels)
-                    fill_painter_span(painter, y, origin_x + run_start, run_end - run_start,
-                                      cover);
-                constant_span(painter, y, origin_x + run_end, origin_x + x, c, cover);
-                run_start = x;
-            }
-            acc += row[x];
-            row[x] = 0;
-            c = coverage_of(acc, rule);
-            if (pixels)
-                fill_solid_pixel(painter, pixels + x, c);
-            else
-                cover[x - run_start] = (uint8_t)c;
-            run_end = x + 1;
         }
     }
-    if (!pixels)
-        fill_painter_span(painter, y, origin_x + run_start, run_end - run_start, cover);
-    constant_span(painter, y, origin_x + run_end, origin_x + width, c, cover);
+    constant_span(painter, y, origin_x + done, origin_x + width, c, cover);
+}
+
+static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
+                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+{
+    if (rule == CG_FILL_NONZERO)
+        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_NONZERO, cover);
+    else
+        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD, cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
@@ -299,11 +371,11 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
 {
     if (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO)
         return CG_EINVAL;
+    fill_tables_prepare(r);
     fill_painter painter;
     cg_status status = fill_painter_init(&painter, r, image, paint);
     if (status != CG_OK)
         return status;
-    fill_tables_prepare(r);
     if (r->line_count == 0)
         return CG_OK;
     int origin_x = floor_clipped(r->min_x), end_x = ceil_clipped(r->max_x);
@@ -379,7 +451,7 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         for (size_t i = 0; i < active_count; i++) {
             const fill_line *l = &r->lines[r->active[i]];
             deposit_line(r->accumulation, r->touched, stride, blocks, band_top, band_bottom,
-                         origin_x, l);
+                         origin_x, l, image);
             double ymax = l->y0 > l->y1 ? l->y0 : l->y1;
             if (ymax > band_bottom)
                 r->active[kept++] = r->active[i];

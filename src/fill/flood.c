@@ -11,6 +11,9 @@
 
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 typedef struct span_entry {
     int left, right, y, dir, parent_left, parent_right;
@@ -104,18 +107,75 @@ static int push(flood *f, int left, int right, int y, int dir, int parent_left, 
     return 1;
 }
 
-static cg_status run(flood *f, int sx, int sy, int eight)
+#if defined(__GNUC__)
+#define FLOOD_SPECIALIZE __attribute__((always_inline)) inline
+#else
+#define FLOOD_SPECIALIZE inline
+#endif
+
+/* The common case, an exact seed fill whose colour differs from the seed's:
+ * a pixel is in the region exactly when it still has the seed's colour, and
+ * painting marks it done.  Scanning and painting then go together, four
+ * pixels at a time.  From pixel t (in the region, painted), paints and
+ * returns the last region pixel at or before `last` going right... */
+static inline int extend_right_exact(uint32_t *row, int t, int last, uint32_t reference,
+                                     uint32_t color)
+{
+#if defined(__SSE2__)
+    __m128i ref4 = _mm_set1_epi32((int)reference), color4 = _mm_set1_epi32((int)color);
+    while (t + 4 <= last) {
+        __m128i v = _mm_loadu_si128((const __m128i *)(row + t + 1));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi32(v, ref4)) != 0xFFFF)
+            break;
+        _mm_storeu_si128((__m128i *)(row + t + 1), color4);
+        t += 4;
+    }
+#endif
+    while (t < last && row[t + 1] == reference)
+        row[++t] = color;
+    return t;
+}
+
+/* ...and going left, down to column 0. */
+static inline int extend_left_exact(uint32_t *row, int s, uint32_t reference, uint32_t color)
+{
+#if defined(__SSE2__)
+    __m128i ref4 = _mm_set1_epi32((int)reference), color4 = _mm_set1_epi32((int)color);
+    while (s >= 4) {
+        __m128i v = _mm_loadu_si128((const __m128i *)(row + s - 4));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi32(v, ref4)) != 0xFFFF)
+            break;
+        _mm_storeu_si128((__m128i *)(row + s - 4), color4);
+        s -= 4;
+    }
+#endif
+    while (s > 0 && row[s - 1] == reference)
+        row[--s] = color;
+    return s;
+}
+
+/* The span loop; `exact` (a constant in each specialization) selects the
+ * fast case above. */
+static FLOOD_SPECIALIZE cg_status run_spans(flood *f, int sx, int sy, int eight, int exact)
 {
     int k = eight ? 1 : 0, w = f->width;
+    uint32_t reference = f->reference_bits, color = f->color_bits;
     uint32_t *row = row_of(f, sy);
-    if (!inside(f, row, sx, sy))
+    if (exact ? row[sx] != reference : !inside(f, row, sx, sy))
         return CG_OK;
     int left = sx, right = sx;
-    while (left > 0 && inside(f, row, left - 1, sy))
-        left--;
-    while (right < w - 1 && inside(f, row, right + 1, sy))
-        right++;
-    paint(f, row, sy, left, right);
+    if (exact) {
+        row[sx] = color;
+        left = extend_left_exact(row, sx, reference, color);
+        right = extend_right_exact(row, sx, w - 1, reference, color);
+        f->filled += (size_t)(right - left + 1);
+    } else {
+        while (left > 0 && inside(f, row, left - 1, sy))
+            left--;
+        while (right < w - 1 && inside(f, row, right + 1, sy))
+            right++;
+        paint(f, row, sy, left, right);
+    }
     if (!push(f, left - k, right + k, sy + 1, 1, left, right)
         || !push(f, left - k, right + k, sy - 1, -1, left, right))
         return CG_ENOMEM;
@@ -124,14 +184,25 @@ static cg_status run(flood *f, int sx, int sy, int eight)
         int y = e.y;
         row = row_of(f, y);
         for (int x = e.left; x <= e.right; x++) {
-            if (!inside(f, row, x, y))
-                continue;
-            int s = x, t = x;
-            while (s > 0 && inside(f, row, s - 1, y))
-                s--;
-            while (t < w - 1 && inside(f, row, t + 1, y))
-                t++;
-            paint(f, row, y, s, t);
+            int s, t;
+            if (exact) {
+                if (row[x] != reference)
+                    continue;
+                row[x] = color;
+                s = extend_left_exact(row, x, reference, color);
+                t = extend_right_exact(row, x, w - 1, reference, color);
+                f->filled += (size_t)(t - s + 1);
+            } else {
+                if (!inside(f, row, x, y))
+                    continue;
+                s = x;
+                t = x;
+                while (s > 0 && inside(f, row, s - 1, y))
+                    s--;
+                while (t < w - 1 && inside(f, row, t + 1, y))
+                    t++;
+                paint(f, row, y, s, t);
+            }
             if (!push(f, s - k, t + k, y + e.dir, e.dir, s, t))
                 return CG_ENOMEM;
             /* Behind: the neighbours of s..t in the parent row that the
@@ -146,6 +217,13 @@ static cg_status run(flood *f, int sx, int sy, int eight)
         }
     }
     return CG_OK;
+}
+
+static cg_status run(flood *f, int sx, int sy, int eight)
+{
+    if (f->mode == MODE_SEED_EXACT && !f->visited)
+        return eight ? run_spans(f, sx, sy, 1, 1) : run_spans(f, sx, sy, 0, 1);
+    return run_spans(f, sx, sy, eight, 0);
 }
 
 static cg_status fill_common(cg_image *image, int x, int y, cg_rgba8 color, int mode,

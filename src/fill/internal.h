@@ -7,6 +7,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* ---- growing arrays of points ------------------------------------------- */
 
@@ -68,14 +71,38 @@ cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style 
 
 /* ---- painting spans ------------------------------------------------------ */
 
+/* d[0..n-1] = v: the solid interior of a shape, sixteen bytes per store. */
+static inline void fill_store32(uint32_t *d, int n, uint32_t v)
+{
+    int i = 0;
+#if defined(__SSE2__)
+    __m128i v4 = _mm_set1_epi32((int)v);
+    for (; i + 8 <= n; i += 8) {
+        _mm_storeu_si128((__m128i *)(d + i), v4);
+        _mm_storeu_si128((__m128i *)(d + i + 4), v4);
+    }
+    if (i + 4 <= n) {
+        _mm_storeu_si128((__m128i *)(d + i), v4);
+        i += 4;
+    }
+#endif
+    for (; i < n; i++)
+        d[i] = v;
+}
+
 typedef struct fill_painter {
     cg_image *image;
     const struct cg_rasterizer *tables;
+    struct cg_rasterizer *cache; /* the solid blend cache (tables' owner) */
     int type;
     /* solid: linear straight colour and its encoded form */
     float r, g, b, a;
     uint32_t encoded;
     int opaque;
+    /* the linear colour is exactly the decoded encoded one, so blending over
+     * a pixel of the same colour changes only its alpha */
+    int same_exact;
+    uint8_t encoded_rgba[4];
     /* gradients */
     double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
@@ -104,6 +131,9 @@ typedef struct fill_crossing {
     double x;
     int dir;
 } fill_crossing;
+
+#define FILL_BLEND_CACHE 1024 /* entries, a power of two */
+#define FILL_BLEND_GENERATIONS (1u << 24)
 
 struct cg_rasterizer {
     double tolerance;
@@ -134,6 +164,13 @@ struct cg_rasterizer {
     float decode[256];
     float threshold[256]; /* code k+1 starts at threshold[k]; threshold[255] = +inf */
     uint8_t encode[4097]; /* code at linear i / 4096 */
+    /* Solid paint over RGBA8: a direct-mapped cache of fill_solid_pixel's
+     * results for the source colour blend_src, keyed by destination value,
+     * coverage and generation (a new source colour starts a new one). */
+    uint32_t blend_src, blend_gen;
+    int blend_src_valid;
+    uint64_t blend_key[FILL_BLEND_CACHE];
+    uint32_t blend_value[FILL_BLEND_CACHE];
 };
 
 void fill_tables_prepare(struct cg_rasterizer *r);
@@ -210,8 +247,102 @@ static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
         d->a = (uint8_t)(as * 255.0f + 0.5f);
         return;
     }
+    if (p->same_exact && d->r == (uint8_t)p->encoded_rgba[0] && d->g == p->encoded_rgba[1]
+        && d->b == p->encoded_rgba[2]) {
+        /* fill_blend8 would give the same colour back (it is a weighted
+         * mean of two equal values, far from the code's rounding limits):
+         * only the alpha changes */
+        if (d->a != 255)
+            d->a = (uint8_t)((as + d->a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
+        return;
+    }
     fill_blend8(p->tables, d, p->r, p->g, p->b, as);
 }
+
+/* The next generation of the blend cache (the keys are cleared when the
+ * counter wraps, so a stale key never matches; generation 0 is never used). */
+static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t gen)
+{
+    if (++gen >= FILL_BLEND_GENERATIONS) {
+        memset(r->blend_key, 0, sizeof r->blend_key);
+        gen = 1;
+    }
+    return gen;
+}
+
+/* The blend cache's fields copied into local variables for a row (the
+ * pixel stores could otherwise alias them and force reloads). */
+typedef struct fill_blend_state {
+    const fill_painter *p;
+    uint64_t *keys;
+    uint32_t *values;
+    uint64_t generation; /* shifted into place */
+    uint32_t full;
+    int opaque;
+    int keep_same; /* opaque paint over pixels of its own colour changes only alpha */
+    uint32_t rgb_mask; /* the bytes of r, g and b in a pixel's 32 bits */
+} fill_blend_state;
+
+static inline fill_blend_state fill_blend_begin(const fill_painter *p)
+{
+    fill_blend_state s;
+    s.p = p;
+    s.keys = p->cache->blend_key;
+    s.values = p->cache->blend_value;
+    s.generation = (uint64_t)p->cache->blend_gen << 40;
+    s.full = p->encoded;
+    s.opaque = p->opaque;
+    s.keep_same = p->opaque && p->same_exact;
+    cg_rgba8 mask = {255, 255, 255, 0};
+    memcpy(&s.rgb_mask, &mask, sizeof s.rgb_mask);
+    return s;
+}
+
+/* A miss of the cache: blends and records the result (out of line, so that
+ * the hit path below stays small enough to inline). */
+void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot);
+
+#if defined(__GNUC__)
+#define FILL_INLINE __attribute__((always_inline)) inline
+#else
+#define FILL_INLINE inline
+#endif
+
+/* fill_solid_pixel on pixel *d through the cache: over destinations of a
+ * few colours (the usual case) each coverage level is blended once. */
+static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d, int c)
+{
+    if (c == 0)
+        return;
+    if (c == 255 && s->opaque) {
+        *d = s->full;
+        return;
+    }
+    uint32_t v = *d;
+    if (s->keep_same && ((v ^ s->full) & s->rgb_mask) == 0) {
+        /* a pixel of the paint's own colour: only its alpha changes (see
+         * fill_solid_pixel; over alpha 0 and 255 the formula gives the
+         * same as the cases there) */
+        cg_rgba8 px;
+        memcpy(&px, &v, sizeof px);
+        float as = c * (1.0f / 255.0f);
+        px.a = (uint8_t)((as + px.a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
+        memcpy(d, &px, sizeof px);
+        return;
+    }
+    uint64_t key = v | (uint64_t)c << 32 | s->generation;
+    uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
+    if (s->keys[slot] == key)
+        *d = s->values[slot];
+    else
+        fill_solid_miss(s, d, c, key, slot);
+}
+
+/* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /
+ * 255 (cover NULL: constant / 255), through the blend cache: over a
+ * destination of one colour (the usual background) each coverage level is
+ * blended once. */
+void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant);
 
 /* Grows *array (of element size) to hold at least need elements; 0 when
  * memory runs out (the array is then unchanged). */

@@ -134,10 +134,12 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     p->r = p->g = p->b = p->a = 0;
     p->encoded = 0;
     p->opaque = 0;
+    p->same_exact = 0;
     p->gx = p->gy = p->gc = 0;
     p->cx = p->cy = p->inv_radius = 0;
     p->image = image;
     p->tables = r;
+    p->cache = r;
     p->type = paint->type;
     /* Opaque solid spans of full coverage are plain stores; everything
      * else blends through the sRGB tables. */
@@ -150,7 +152,15 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->b = c.b;
         p->a = c.a;
         memcpy(&p->encoded, &paint->color, sizeof p->encoded);
+        memcpy(p->encoded_rgba, &paint->color, sizeof p->encoded_rgba);
         p->opaque = paint->color.a == 255;
+        p->same_exact = r->tables_ready && r->decode[paint->color.r] == p->r
+                        && r->decode[paint->color.g] == p->g && r->decode[paint->color.b] == p->b;
+        if (!r->blend_src_valid || r->blend_src != p->encoded) {
+            r->blend_src = p->encoded;
+            r->blend_src_valid = 1;
+            r->blend_gen = fill_next_generation(r, r->blend_gen);
+        }
         return CG_OK;
     }
     if (paint->type == CG_PAINT_LINEAR) {
@@ -174,6 +184,29 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         return build_ramp(p, paint);
     }
     return CG_EINVAL;
+}
+
+void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot)
+{
+    cg_rgba8 px;
+    memcpy(&px, d, sizeof px);
+    fill_solid_pixel(s->p, &px, c);
+    uint32_t v;
+    memcpy(&v, &px, sizeof v);
+    s->keys[slot] = key;
+    s->values[slot] = v;
+    *d = v;
+}
+
+void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant)
+{
+    fill_blend_state s = fill_blend_begin(p);
+    if (cover)
+        for (int i = 0; i < n; i++)
+            fill_solid_cached(&s, d + i, cover[i]);
+    else
+        for (int i = 0; i < n; i++)
+            fill_solid_cached(&s, d + i, constant);
 }
 
 static inline void blendf(cg_rgbaf *d, float r, float g, float b, float as)
@@ -208,14 +241,10 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
     if (image->format == CG_PIXEL_RGBA8) {
         cg_rgba8 *row = cg_image_row_rgba8(image, y) + x0;
         if (!cover && p->opaque) {
-            /* a local copy: the stores cannot alias it, so the loop vectorizes */
-            uint32_t *w = (uint32_t *)row, value = p->encoded;
-            for (int i = 0; i < n; i++)
-                w[i] = value;
+            fill_store32((uint32_t *)row, n, p->encoded);
             return;
         }
-        for (int i = 0; i < n; i++)
-            fill_solid_pixel(p, &row[i], cover ? cover[i] : 255);
+        fill_solid_run(p, (uint32_t *)row, n, cover, 255);
         return;
     }
     cg_rgbaf *row = cg_image_row_rgbaf(image, y) + x0;

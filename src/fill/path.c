@@ -369,6 +369,53 @@ static cg_status sink_point(void *user, cg_vec2 point)
     return fill_polylines_add(user, point);
 }
 
+/* Uniform flattening with the segment count known in advance: the piece of
+ * a degree-n curve over a parameter step 1/m has second differences at most
+ * M / m^2 (M: the largest second difference of the control points), so its
+ * control polygon, and the curve, lie within n^2 M / (8 m^2) of its chord
+ * (the bound cg_bezier_flatten also uses).  m = ceil(n sqrt(M / (8 tol)))
+ * keeps every chord within the tolerance; the points are evaluated in the
+ * power basis.  Cheaper per point than adaptive subdivision, and for the
+ * small curves of text about as many points.  Returns 0 (nothing added)
+ * when m would exceed max_segments: the caller then flattens adaptively. */
+static int uniform_bezier(fill_polylines *set, const cg_vec2 *c, int count, double tolerance,
+                          long max_segments, cg_status *status)
+{
+    double second = 0;
+    for (int i = 0; i + 2 < count; i++) {
+        double dx = c[i + 2].x - 2 * c[i + 1].x + c[i].x, dy = c[i + 2].y - 2 * c[i + 1].y + c[i].y;
+        second = fmax(second, sqrt(dx * dx + dy * dy));
+    }
+    double degree = count - 1, steps = ceil(degree * sqrt(second / (8 * tolerance)));
+    if (!(steps <= (double)max_segments))
+        return 0;
+    long m = steps < 1 ? 1 : (long)steps;
+    /* P(t) = ((a t + b) t + d) t + c[0] (a = 0 for quadratics) */
+    cg_vec2 a = {0, 0}, b, d;
+    if (count == 4) {
+        a.x = c[3].x - 3 * c[2].x + 3 * c[1].x - c[0].x;
+        a.y = c[3].y - 3 * c[2].y + 3 * c[1].y - c[0].y;
+        b.x = 3 * (c[2].x - 2 * c[1].x + c[0].x);
+        b.y = 3 * (c[2].y - 2 * c[1].y + c[0].y);
+        d.x = 3 * (c[1].x - c[0].x);
+        d.y = 3 * (c[1].y - c[0].y);
+    } else {
+        b.x = c[2].x - 2 * c[1].x + c[0].x;
+        b.y = c[2].y - 2 * c[1].y + c[0].y;
+        d.x = 2 * (c[1].x - c[0].x);
+        d.y = 2 * (c[1].y - c[0].y);
+    }
+    *status = CG_OK;
+    for (long i = 1; i < m && *status == CG_OK; i++) {
+        double t = (double)i / (double)m;
+        cg_vec2 p = {((a.x * t + b.x) * t + d.x) * t + c[0].x, ((a.y * t + b.y) * t + d.y) * t + c[0].y};
+        *status = fill_polylines_add(set, p);
+    }
+    if (*status == CG_OK)
+        *status = fill_polylines_add(set, c[count - 1]); /* the end point exactly */
+    return 1;
+}
+
 /* The same for Bezier curves: pieces whose control points all lie beyond
  * one side of the box become their end point (the curve and its chord lie
  * in the control points' hull); pieces much larger than the box are split
@@ -388,6 +435,9 @@ static cg_status bezier_piece(fill_polylines *set, const cg_vec2 *c, int n, doub
             return status != CG_OK ? status : bezier_piece(set, right, n, tolerance, box, depth + 1);
         }
     }
+    cg_status status;
+    if ((n == 3 || n == 4) && uniform_bezier(set, c, n, tolerance, 4096, &status))
+        return status;
     return cg_bezier_flatten(c, n, tolerance, sink_point, set);
 }
 

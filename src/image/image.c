@@ -18,7 +18,7 @@ cg_status cg_image_create(cg_image **out, int width, int height, cg_pixel_format
     if (width <= 0 || height <= 0 || (format != CG_PIXEL_RGBA8 && format != CG_PIXEL_RGBAF))
         return CG_EINVAL;
     if (width > CG_IMAGE_MAX_SIDE || height > CG_IMAGE_MAX_SIDE
-        || (size_t)width * (size_t)height > CG_IMAGE_MAX_PIXELS)
+        || (size_t)width * (size_t)height > CG_IMAGE_CREATE_MAX_PIXELS)
         return CG_ERANGE;
     cg_image *image = malloc(sizeof *image);
     if (!image)

@@ -160,10 +160,26 @@ typedef struct job {
 static const cg_rgba8 ink = {30, 60, 200, 255};
 static const unsigned char ink_rgba[4] = {30, 60, 200, 255};
 
+/* Timed fill passes alternate between two inks, the same for every library,
+ * so that no pass paints over the colour it is about to paint (which would
+ * time a repaint of already-painted pixels, not a fill). */
+static const unsigned char pass_inks[2][4] = {{30, 60, 200, 255}, {200, 90, 40, 255}};
+
+static const unsigned char *next_ink(int *toggle)
+{
+    return pass_inks[(*toggle)++ % 2];
+}
+
+static cg_rgba8 as_rgba8(const unsigned char c[4])
+{
+    return (cg_rgba8){c[0], c[1], c[2], c[3]};
+}
+
 static void run_cg(void *context)
 {
     job *j = context;
-    cg_paint paint = cg_paint_solid(ink);
+    cg_rgba8 color = as_rgba8(next_ink(&j->toggle));
+    cg_paint paint = cg_paint_solid(color);
     for (int i = 0; i < j->set->count; i++) {
         const bench_shape *s = &j->set->shapes[i];
         if (j->antialias)
@@ -171,7 +187,7 @@ static void run_cg(void *context)
                                           s->contours, CG_FILL_EVEN_ODD, &paint);
         else
             cg_rasterizer_fill_polygon(j->rasterizer, j->image, (const cg_vec2 *)s->xy, s->sizes,
-                                       s->contours, CG_FILL_EVEN_ODD, ink);
+                                       s->contours, CG_FILL_EVEN_ODD, color);
     }
 }
 
@@ -180,6 +196,8 @@ static void run_cairo(void *context)
 {
     job *j = context;
     cairo_t *cr = j->cairo;
+    const unsigned char *c = next_ink(&j->toggle);
+    cairo_set_source_rgb(cr, c[0] / 255.0, c[1] / 255.0, c[2] / 255.0);
     for (int i = 0; i < j->set->count; i++) {
         const bench_shape *s = &j->set->shapes[i];
         const double *p = s->xy;
@@ -200,7 +218,7 @@ static void run_agg(void *context)
 {
     job *j = context;
     peer_agg_fill(j->peer_pixels, SIZE, SIZE, SIZE * 4, j->set->shapes, j->set->count, 1,
-                  j->antialias, ink_rgba);
+                  j->antialias, next_ink(&j->toggle));
 }
 
 #endif
@@ -210,7 +228,7 @@ static void run_opencv(void *context)
 {
     job *j = context;
     peer_opencv_fill(j->peer_pixels, SIZE, SIZE, SIZE * 4, j->set->shapes, j->set->count,
-                     j->antialias, ink_rgba);
+                     j->antialias, next_ink(&j->toggle));
 }
 #endif
 
@@ -401,6 +419,7 @@ typedef struct curve_job {
     cg_rasterizer *rasterizer;
     cg_path *path;
     unsigned char *peer_pixels;
+    int toggle;
 #ifdef CG_BENCH_HAVE_CAIRO
     cairo_t *cairo;
 #endif
@@ -409,7 +428,7 @@ typedef struct curve_job {
 static void run_curves_cg(void *context)
 {
     curve_job *j = context;
-    cg_paint paint = cg_paint_solid(ink);
+    cg_paint paint = cg_paint_solid(as_rgba8(next_ink(&j->toggle)));
     for (int i = 0; i < j->set->count; i++) {
         const bench_curve_path *c = &j->set->paths[i];
         const double *p = c->xy;
@@ -437,6 +456,8 @@ static void run_curves_cairo(void *context)
 {
     curve_job *j = context;
     cairo_t *cr = j->cairo;
+    const unsigned char *ink_now = next_ink(&j->toggle);
+    cairo_set_source_rgb(cr, ink_now[0] / 255.0, ink_now[1] / 255.0, ink_now[2] / 255.0);
     for (int i = 0; i < j->set->count; i++) {
         const bench_curve_path *c = &j->set->paths[i];
         const double *p = c->xy;
@@ -464,7 +485,7 @@ static void run_curves_agg(void *context)
 {
     curve_job *j = context;
     peer_agg_fill_curves(j->peer_pixels, SIZE, SIZE, SIZE * 4, j->set->paths, j->set->count,
-                         ink_rgba);
+                         next_ink(&j->toggle));
 }
 #endif
 

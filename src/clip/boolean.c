@@ -273,11 +273,12 @@ typedef struct sweep {
     int64_t *ys;
     size_t nys;
     uint32_t *by_bottom; /* edges sorted by yb */
-    uint32_t *act, *nxt;
+    uint32_t *act, *nxt, *fresh;
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
-    unsigned char *run_open, *run_up, *brk;
+    unsigned char *run_open, *run_up;
+    unsigned char *brk, *brk_next; /* a run breaks at this scanline, the next */
     int64_t *run_x, *run_y;
     int classify, changed;
     int use_input_lines; /* round on the input edges (early passes) */
@@ -293,13 +294,14 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
     return 1;
 }
 
-/* Passing edge e meets something at scanline y: a vertex for it there. */
-static int meet(sweep *s, uint32_t e, int64_t y)
+/* Passing edge e meets something at scanline y (the current one, or the
+ * next when `next`): a vertex for it there. */
+static int meet(sweep *s, uint32_t e, int64_t y, int next)
 {
     int64_t x;
     const bedge *ed = &s->g->E[e];
     if (x_is_integer(ed, y, &x)) {
-        s->brk[e] = 1;
+        (next ? s->brk_next : s->brk)[e] = 1;
         /* an exact split is not needed: the run breaks there */
         return 1;
     }
@@ -426,6 +428,7 @@ static int run_sweep(sweep *s)
     engine *g = s->g;
     size_t ne = g->ne, nys = s->nys, ip = 0, nh = g->nh, ih = 0;
     const bedge *E = g->E;
+    uint32_t *fresh = s->fresh;
     s->nact = 0;
     for (size_t iy = 0; iy < nys; iy++) {
         int64_t y = s->ys[iy];
@@ -437,43 +440,59 @@ static int run_sweep(sweep *s)
         double *swap = s->xc;
         s->xc = s->xn;
         s->xn = swap;
-        /* above: passing edges in their order, then the new ones merged in */
-        size_t na = 0;
-        uint32_t *above = s->nxt;
-        for (size_t k = 0; k < nb; k++)
-            if (E[below[k]].yt > y)
-                above[na++] = below[k];
+        double *xc = s->xc, *xn = s->xn;
+        /* breaks found at the top of the last beam are for this scanline;
+         * the classification of the last beam cleared the others */
+        unsigned char *bswap = s->brk;
+        s->brk = s->brk_next;
+        s->brk_next = bswap;
+        /* the edges starting here, by x (by_bottom), ties by x at yn */
+        size_t nf = 0;
         while (ip < ne && E[s->by_bottom[ip]].yb == y) {
             uint32_t e = s->by_bottom[ip++];
-            s->xc[e] = (double)E[e].xb;
-            above[na++] = e;
-        }
-        for (size_t k = 0; k < na; k++)
-            s->xn[above[k]] = x_at(&E[above[k]], yn);
-        /* insertion sort by (x at y, x at yn) */
-        for (size_t k = 1; k < na; k++) {
-            uint32_t v = above[k];
-            size_t m = k;
-            while (m > 0) {
-                uint32_t u = above[m - 1];
-                int c = cmp_x(&E[u], &E[v], y, s->xc[u], s->xc[v]);
-                if (c == 0) {
-                    /* they meet at y: an edge passing through needs a vertex
-                     * there (every pair adjacent at the end was compared) */
-                    if ((E[u].yb < y && !meet(s, u, y)) || (E[v].yb < y && !meet(s, v, y)))
-                        return 0;
-                    if (has_next)
-                        c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
-                }
-                if (c <= 0)
-                    break;
-                above[m] = u;
+            xc[e] = (double)E[e].xb;
+            xn[e] = x_at(&E[e], yn);
+            size_t m = nf;
+            while (m > 0 && E[fresh[m - 1]].xb == E[e].xb &&
+                   cmp_x(&E[fresh[m - 1]], &E[e], yn, xn[fresh[m - 1]], xn[e]) > 0) {
+                fresh[m] = fresh[m - 1];
                 m--;
             }
-            above[m] = v;
+            fresh[m] = e;
+            nf++;
         }
-        /* (edges meeting at y were found by the sorts: at the top of the
-         * last beam and just above) */
+        /* above: the passing edges in their order (sorted at y by the last
+         * beam), the new ones merged in; edges ending here close their runs */
+        size_t na = 0, jf = 0;
+        uint32_t *above = s->nxt;
+        for (size_t k = 0; k < nb; k++) {
+            uint32_t e = below[k];
+            if (E[e].yt == y) {
+                if (s->classify && s->run_open[e] && !close_run(s, e, y))
+                    return 0;
+                continue;
+            }
+            while (jf < nf) {
+                uint32_t f = fresh[jf];
+                double xf = xc[f];
+                int c = xc[e] < xf - 0.01 ? -1 : cmp_x(&E[e], &E[f], y, xc[e], xf);
+                if (c < 0)
+                    break;
+                if (c == 0) {
+                    /* a new edge starts on a passing one: a vertex there */
+                    if (!meet(s, e, y, 0))
+                        return 0;
+                    break; /* the order at yn is settled below */
+                }
+                above[na++] = f;
+                jf++;
+            }
+            above[na++] = e;
+        }
+        while (jf < nf)
+            above[na++] = fresh[jf++];
+        /* (edges meeting at y were found at the top of the last beam, or
+         * just above) */
         /* horizontal edges on this scanline */
         while (ih < nh && g->H[ih].y < y)
             ih++;
@@ -489,7 +508,7 @@ static int run_sweep(sweep *s)
                 uint32_t e = above[k];
                 if (E[e].yb == y)
                     continue;
-                double xv = s->xc[e];
+                double xv = xc[e];
                 while (hj < ih && (double)g->H[hj].x0 <= xv + 0.5) {
                     if (g->H[hj].x1 > reach)
                         reach = g->H[hj].x1;
@@ -501,20 +520,12 @@ static int run_sweep(sweep *s)
                     int covered = 0;
                     for (size_t q = h0; q < hj && !covered; q++)
                         covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
-                    if (covered && !meet(s, e, y))
+                    if (covered && !meet(s, e, y, 0))
                         return 0;
                 }
             }
             if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
                 return 0;
-        }
-        /* runs of edges ending here */
-        if (s->classify) {
-            for (size_t k = 0; k < nb; k++) {
-                uint32_t e = below[k];
-                if (E[e].yt == y && s->run_open[e] && !close_run(s, e, y))
-                    return 0;
-            }
         }
         /* the beam [y, yn] */
         uint32_t *t = s->act;
@@ -523,82 +534,89 @@ static int run_sweep(sweep *s)
         s->nact = na;
         if (!has_next)
             break;
-        if (s->classify) {
-            int64_t w[2] = {0, 0};
-            int left = 0;
-            size_t k = 0;
-            while (k < na) {
-                size_t k2 = k + 1;
-                uint32_t rep = above[k];
-                w[E[rep].op] += E[rep].w;
-                while (k2 < na) {
-                    uint32_t a = above[k], b = above[k2];
-                    if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0 ||
-                        cmp_x(&E[a], &E[b], yn, s->xn[a], s->xn[b]) != 0)
-                        break;
-                    if (b < rep)
-                        rep = b;
-                    w[E[b].op] += E[b].w;
-                    k2++;
-                }
-                int right = inside(g, w[0], w[1]);
-                for (size_t q = k; q < k2; q++) {
-                    uint32_t e = above[q];
-                    int boundary = e == rep && left != right;
-                    int up = left; /* result on the left (-x side): go up */
-                    if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
-                        if (!close_run(s, e, y))
-                            return 0;
-                    }
-                    if (boundary && !s->run_open[e]) {
-                        s->run_open[e] = 1;
-                        s->run_up[e] = (unsigned char)up;
-                        s->run_y[e] = y;
-                        s->run_x[e] = y == E[e].yb ? E[e].xb
-                                                   : round_div(x_num(&E[e], y), x_den(&E[e]));
-                    }
-                    s->brk[e] = 0;
-                }
-                left = right;
-                k = k2;
-            }
-        } else {
-            for (size_t k = 0; k < na; k++)
-                s->brk[above[k]] = 0;
-        }
-        /* crossings inside the beam: inversions of the order at yn */
-        for (size_t k = 1; k < na; k++) {
+        /* the order at yn: an inversion is a crossing inside the beam,
+         * unless the two edges meet at y (then it is their order) */
+        for (size_t k = 0; k < na; k++) {
             uint32_t v = above[k];
+            if (E[v].yb < y)
+                xn[v] = x_at(&E[v], yn);
+            if (k == 0 || xn[v] > xn[above[k - 1]] + 0.01)
+                continue;
             size_t m = k;
             while (m > 0) {
                 uint32_t u = above[m - 1];
-                int c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
-                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn)) || (E[v].yt > yn && !meet(s, v, yn))))
+                int c = cmp_x(&E[u], &E[v], yn, xn[u], xn[v]);
+                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn, 1)) || (E[v].yt > yn && !meet(s, v, yn, 1))))
                     return 0;
                 if (c <= 0)
                     break;
-                /* u and v cross strictly inside the beam: the crossing of
-                 * the input edges they come from, rounded, when it lies in
-                 * the beam (no drift), else the crossing of the pieces */
-                const bedge *a = &E[u], *b = &E[v];
-                int64_t px, py;
-                if (!s->use_input_lines ||
-                    !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
-                                       b->oy1, &px, &py) ||
-                    py < y || py > yn) {
-                    line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px,
-                                      &py);
+                if (cmp_x(&E[u], &E[v], y, xc[u], xc[v]) != 0) {
+                    /* u and v cross strictly inside the beam: the crossing
+                     * of the input edges they come from, rounded, when it
+                     * lies in the beam (no drift), else the crossing of the
+                     * pieces */
+                    const bedge *a = &E[u], *b = &E[v];
+                    int64_t px, py;
+                    if (!s->use_input_lines ||
+                        !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
+                                           b->oy1, &px, &py) ||
+                        py < y || py > yn) {
+                        line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt,
+                                          &px, &py);
+                    }
+                    if (py < y)
+                        py = y;
+                    if (py > yn)
+                        py = yn;
+                    if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
+                        return 0;
                 }
-                if (py < y)
-                    py = y;
-                if (py > yn)
-                    py = yn;
-                if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
-                    return 0;
                 above[m] = u;
                 m--;
             }
             above[m] = v;
+        }
+        if (!s->classify)
+            continue; /* this pass will be repeated */
+        /* classification: no crossing inside the beam, so the order at y
+         * (ties by yn) is the order throughout */
+        int64_t w[2] = {0, 0};
+        int left = 0;
+        size_t k = 0;
+        while (k < na) {
+            size_t k2 = k + 1;
+            uint32_t rep = above[k];
+            w[E[rep].op] += E[rep].w;
+            while (k2 < na) {
+                uint32_t a = above[k], b = above[k2];
+                if (cmp_x(&E[a], &E[b], y, xc[a], xc[b]) != 0 ||
+                    cmp_x(&E[a], &E[b], yn, xn[a], xn[b]) != 0)
+                    break;
+                if (b < rep)
+                    rep = b;
+                w[E[b].op] += E[b].w;
+                k2++;
+            }
+            int right = inside(g, w[0], w[1]);
+            for (size_t q = k; q < k2; q++) {
+                uint32_t e = above[q];
+                int boundary = e == rep && left != right;
+                int up = left; /* result on the left (-x side): go up */
+                if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
+                    if (!close_run(s, e, y))
+                        return 0;
+                }
+                if (boundary && !s->run_open[e]) {
+                    s->run_open[e] = 1;
+                    s->run_up[e] = (unsigned char)up;
+                    s->run_y[e] = y;
+                    s->run_x[e] = y == E[e].yb ? E[e].xb
+                                               : round_div(x_num(&E[e], y), x_den(&E[e]));
+                }
+                s->brk[e] = 0;
+            }
+            left = right;
+            k = k2;
         }
     }
     return 1;
@@ -1113,11 +1131,13 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(s.by_bottom);
         free(s.act);
         free(s.nxt);
+        free(s.fresh);
         free(s.xc);
         free(s.xn);
         free(s.run_open);
         free(s.run_up);
         free(s.brk);
+        free(s.brk_next);
         free(s.run_x);
         free(s.run_y);
         memset(&s, 0, sizeof s);
@@ -1127,15 +1147,17 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.by_bottom = malloc(n1 * sizeof *s.by_bottom);
         s.act = malloc(n1 * sizeof *s.act);
         s.nxt = malloc(n1 * sizeof *s.nxt);
+        s.fresh = malloc(n1 * sizeof *s.fresh);
         s.xc = malloc(n1 * sizeof *s.xc);
         s.xn = malloc(n1 * sizeof *s.xn);
         s.run_open = calloc(n1, 1);
         s.run_up = calloc(n1, 1);
         s.brk = calloc(n1, 1);
+        s.brk_next = calloc(n1, 1);
         s.run_x = malloc(n1 * sizeof *s.run_x);
         s.run_y = malloc(n1 * sizeof *s.run_y);
-        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.xc || !s.xn || !s.run_open ||
-            !s.run_up || !s.brk || !s.run_x || !s.run_y)
+        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.fresh || !s.xc || !s.xn || !s.run_open ||
+            !s.run_up || !s.brk || !s.brk_next || !s.run_x || !s.run_y)
             break;
         for (size_t i = 0; i < ne; i++) {
             s.ys[2 * i] = g->E[i].yb;
@@ -1202,11 +1224,13 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(s.by_bottom);
     free(s.act);
     free(s.nxt);
+    free(s.fresh);
     free(s.xc);
     free(s.xn);
     free(s.run_open);
     free(s.run_up);
     free(s.brk);
+    free(s.brk_next);
     free(s.run_x);
     free(s.run_y);
     return st;

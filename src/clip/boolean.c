@@ -273,7 +273,8 @@ typedef struct sweep {
     int64_t *ys;
     size_t nys;
     uint32_t *by_bottom; /* edges sorted by yb */
-    uint32_t *act, *nxt, *fresh;
+    uint32_t *act, *nxt, *fresh, *dirty;
+    int64_t *wr0, *wr1; /* windings right of each edge (its coincident group) */
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
@@ -423,12 +424,30 @@ static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t 
     return 1;
 }
 
+/* a and b coincide throughout the beam [y, yn] */
+static inline int coincident(const bedge *E, uint32_t a, uint32_t b, int64_t y, int64_t yn,
+                             const double *xc, const double *xn)
+{
+    return cmp_x(&E[a], &E[b], y, xc[a], xc[b]) == 0 && cmp_x(&E[a], &E[b], yn, xn[a], xn[b]) == 0;
+}
+
+static void sort_u32(uint32_t *a, size_t n)
+{
+    for (size_t i = 1; i < n; i++) {
+        uint32_t v = a[i];
+        size_t j = i;
+        for (; j > 0 && a[j - 1] > v; j--)
+            a[j] = a[j - 1];
+        a[j] = v;
+    }
+}
+
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
     size_t ne = g->ne, nys = s->nys, ip = 0, nh = g->nh, ih = 0;
     const bedge *E = g->E;
-    uint32_t *fresh = s->fresh;
+    uint32_t *fresh = s->fresh, *dirty = s->dirty;
     s->nact = 0;
     for (size_t iy = 0; iy < nys; iy++) {
         int64_t y = s->ys[iy];
@@ -463,7 +482,8 @@ static int run_sweep(sweep *s)
         }
         /* above: the passing edges in their order (sorted at y by the last
          * beam), the new ones merged in; edges ending here close their runs */
-        size_t na = 0, jf = 0;
+        size_t na = 0, jf = 0, nd = 0;
+        int dirty_sorted = 1;
         uint32_t *above = s->nxt;
         for (size_t k = 0; k < nb; k++) {
             uint32_t e = below[k];
@@ -484,13 +504,18 @@ static int run_sweep(sweep *s)
                         return 0;
                     break; /* the order at yn is settled below */
                 }
+                dirty[nd++] = (uint32_t)na;
                 above[na++] = f;
                 jf++;
             }
+            if (s->brk[e])
+                dirty[nd++] = (uint32_t)na;
             above[na++] = e;
         }
-        while (jf < nf)
+        while (jf < nf) {
+            dirty[nd++] = (uint32_t)na;
             above[na++] = fresh[jf++];
+        }
         /* (edges meeting at y were found at the top of the last beam, or
          * just above) */
         /* horizontal edges on this scanline */
@@ -520,8 +545,12 @@ static int run_sweep(sweep *s)
                     int covered = 0;
                     for (size_t q = h0; q < hj && !covered; q++)
                         covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
-                    if (covered && !meet(s, e, y, 0))
-                        return 0;
+                    if (covered) {
+                        if (!meet(s, e, y, 0))
+                            return 0;
+                        dirty[nd++] = (uint32_t)k;
+                        dirty_sorted = 0;
+                    }
                 }
             }
             if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
@@ -578,20 +607,34 @@ static int run_sweep(sweep *s)
         }
         if (!s->classify)
             continue; /* this pass will be repeated */
-        /* classification: no crossing inside the beam, so the order at y
-         * (ties by yn) is the order throughout */
-        int64_t w[2] = {0, 0};
-        int left = 0;
-        size_t k = 0;
-        while (k < na) {
+        /* Classification: no crossing inside the beam, so the order at y
+         * (ties by yn) is the order throughout.  Only the groups of
+         * coincident edges around a dirty position (a new edge, a run
+         * break) need a look: elsewhere the windings are those of the last
+         * beam, because the edges ending and starting at one point (or along
+         * one chain of horizontal edges, whose crossing edges are dirty) add
+         * up to the same windings. */
+        if (!dirty_sorted)
+            sort_u32(dirty, nd);
+        int64_t *wr0 = s->wr0, *wr1 = s->wr1;
+        size_t done = 0;
+        for (size_t d = 0; d < nd; d++) {
+            size_t k = dirty[d];
+            if (k < done)
+                continue;
+            while (k > done && coincident(E, above[k - 1], above[k], y, yn, xc, xn))
+                k--;
+            int64_t w[2] = {0, 0};
+            if (k > 0) {
+                w[0] = wr0[above[k - 1]];
+                w[1] = wr1[above[k - 1]];
+            }
+            int left = inside(g, w[0], w[1]);
             size_t k2 = k + 1;
             uint32_t rep = above[k];
             w[E[rep].op] += E[rep].w;
-            while (k2 < na) {
-                uint32_t a = above[k], b = above[k2];
-                if (cmp_x(&E[a], &E[b], y, xc[a], xc[b]) != 0 ||
-                    cmp_x(&E[a], &E[b], yn, xn[a], xn[b]) != 0)
-                    break;
+            while (k2 < na && coincident(E, above[k], above[k2], y, yn, xc, xn)) {
+                uint32_t b = above[k2];
                 if (b < rep)
                     rep = b;
                 w[E[b].op] += E[b].w;
@@ -614,9 +657,10 @@ static int run_sweep(sweep *s)
                                                : round_div(x_num(&E[e], y), x_den(&E[e]));
                 }
                 s->brk[e] = 0;
+                wr0[e] = w[0];
+                wr1[e] = w[1];
             }
-            left = right;
-            k = k2;
+            done = k2;
         }
     }
     return 1;
@@ -1132,6 +1176,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(s.act);
         free(s.nxt);
         free(s.fresh);
+        free(s.dirty);
+        free(s.wr0);
+        free(s.wr1);
         free(s.xc);
         free(s.xn);
         free(s.run_open);
@@ -1148,6 +1195,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.act = malloc(n1 * sizeof *s.act);
         s.nxt = malloc(n1 * sizeof *s.nxt);
         s.fresh = malloc(n1 * sizeof *s.fresh);
+        s.dirty = malloc(2 * n1 * sizeof *s.dirty);
+        s.wr0 = malloc(n1 * sizeof *s.wr0);
+        s.wr1 = malloc(n1 * sizeof *s.wr1);
         s.xc = malloc(n1 * sizeof *s.xc);
         s.xn = malloc(n1 * sizeof *s.xn);
         s.run_open = calloc(n1, 1);
@@ -1156,7 +1206,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.brk_next = calloc(n1, 1);
         s.run_x = malloc(n1 * sizeof *s.run_x);
         s.run_y = malloc(n1 * sizeof *s.run_y);
-        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.fresh || !s.xc || !s.xn || !s.run_open ||
+        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.fresh || !s.dirty || !s.wr0 || !s.wr1 || !s.xc || !s.xn || !s.run_open ||
             !s.run_up || !s.brk || !s.brk_next || !s.run_x || !s.run_y)
             break;
         for (size_t i = 0; i < ne; i++) {
@@ -1225,6 +1275,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(s.act);
     free(s.nxt);
     free(s.fresh);
+    free(s.dirty);
+    free(s.wr0);
+    free(s.wr1);
     free(s.xc);
     free(s.xn);
     free(s.run_open);

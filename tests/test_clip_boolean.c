@@ -407,6 +407,63 @@ static void stress(void)
     }
 }
 
+/* Crowded inputs: long random paths whose scanlines cross many edges (the
+ * passes after the first then take the light sweep, which only looks at
+ * the points where edges start and end), on coarse grids (shared vertices,
+ * coincident edges, crossings exactly on vertices) and unscaled ones (every
+ * crossing rounded). */
+static void crowded(void)
+{
+    check_rng rng = {0xc0ffee};
+    long membership_checks = 0;
+    for (int it = 0; it < 80; it++) {
+        int grid = it % 4 == 0 ? 12 : it % 4 == 1 ? 40 : 400;
+        int64_t scale = it % 2 ? 1 : 16;
+        cg_polygon_set64 a = {0}, b = {0}, r[4] = {{0}};
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 30, 64), grid, scale);
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 64), grid, scale);
+        random_ring(&rng, &b, (int)check_rng_int(&rng, 30, 64), grid, scale);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        for (int op = 0; op < 4; op++) {
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r[op]);
+            CHECK_MSG(st == CG_OK, "crowded round %d op %d: status %d", it, op, (int)st);
+            CHECK_MSG(result_is_simple(&r[op]), "crowded round %d op %d: result edges cross", it, op);
+            CHECK_MSG(result_is_oriented(&r[op]), "crowded round %d op %d: orientation or nesting", it, op);
+            for (int k = 0; k < 30 && scale > 1; k++) {
+                double px = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
+                double py = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
+                if (dist_to_set(&a, px, py) < 3 || dist_to_set(&b, px, py) < 3)
+                    continue;
+                int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(&a, px, py)),
+                                     fill_rule(fb, winding(&b, px, py)));
+                int got = (int)(winding(&r[op], px, py) & 1);
+                membership_checks++;
+                CHECK_MSG(want == got, "crowded round %d op %d: point (%.2f, %.2f) in result %d, expected %d",
+                          it, op, px, py, got, want);
+            }
+        }
+        if (scale > 1) {
+            double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
+            double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
+            cg_polygon_set64 ra = {0}, rb = {0};
+            cg_clip_boolean64(CG_CLIP_UNION, &a, fa, NULL, fa, &ra);
+            cg_clip_boolean64(CG_CLIP_UNION, &b, fb, NULL, fb, &rb);
+            double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
+            double tol = 4.0 * (double)(a.point_count + b.point_count) * (double)scale * grid;
+            CHECK_MSG(fabs(U - (A + B - I)) <= tol, "crowded round %d: |AuB| %.0f, |A|+|B|-|AnB| %.0f", it, U, A + B - I);
+            CHECK_MSG(fabs(X - (U - I)) <= tol, "crowded round %d: xor %.0f, union-intersection %.0f", it, X, U - I);
+            CHECK_MSG(fabs(D - (A - I)) <= tol, "crowded round %d: difference %.0f, |A|-|AnB| %.0f", it, D, A - I);
+            cg_polygon_set64_clear(&ra);
+            cg_polygon_set64_clear(&rb);
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+        for (int op = 0; op < 4; op++)
+            cg_polygon_set64_clear(&r[op]);
+    }
+    printf("crowded: 80 rounds, %ld membership checks\n", membership_checks);
+}
+
 /* Unscaled tiny grids: every crossing is rounded, edges collapse onto each
  * other; results must still be simple and well nested. */
 static void snapping(void)
@@ -506,5 +563,6 @@ int main(void)
     double_api();
     fuzz();
     stress();
+    crowded();
     return check_finish();
 }

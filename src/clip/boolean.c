@@ -274,6 +274,7 @@ typedef struct sweep {
     size_t nys;
     uint32_t *by_bottom; /* edges sorted by yb */
     uint32_t *act, *nxt, *fresh, *dirty;
+    uint32_t *by_top, *clus, *seam; /* the light sweep's */
     int64_t *wr0, *wr1; /* windings right of each edge (its coincident group) */
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
@@ -282,6 +283,7 @@ typedef struct sweep {
     unsigned char *brk, *brk_next; /* a run breaks at this scanline, the next */
     int64_t *run_x, *run_y;
     int classify, changed;
+    size_t visits; /* active edges summed over the scanlines (full sweep) */
     int use_input_lines; /* round on the input edges (early passes) */
 } sweep;
 
@@ -424,13 +426,6 @@ static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t 
     return 1;
 }
 
-/* a and b coincide throughout the beam [y, yn] */
-static inline int coincident(const bedge *E, uint32_t a, uint32_t b, int64_t y, int64_t yn,
-                             const double *xc, const double *xn)
-{
-    return cmp_x(&E[a], &E[b], y, xc[a], xc[b]) == 0 && cmp_x(&E[a], &E[b], yn, xn[a], xn[b]) == 0;
-}
-
 static void sort_u32(uint32_t *a, size_t n)
 {
     for (size_t i = 1; i < n; i++) {
@@ -440,6 +435,113 @@ static void sort_u32(uint32_t *a, size_t n)
             a[j] = a[j - 1];
         a[j] = v;
     }
+}
+
+/* Passing edges of above[] (sorted at y, x at y in xc) whose x lies within
+ * a horizontal edge H[h0..h1) at y (sorted by x0) meet it: a vertex there.
+ * Their positions are added to dirty[]. */
+static int horizontal_meets(sweep *s, int64_t y, const uint32_t *above, size_t na, size_t h0,
+                            size_t h1, uint32_t *dirty, size_t *nd)
+{
+    const engine *g = s->g;
+    const bedge *E = g->E;
+    size_t hj = h0;
+    int64_t reach = INT64_MIN;
+    for (size_t k = 0; k < na; k++) {
+        uint32_t e = above[k];
+        if (E[e].yb == y)
+            continue;
+        double xv = s->xc[e];
+        while (hj < h1 && (double)g->H[hj].x0 <= xv + 0.5) {
+            if (g->H[hj].x1 > reach)
+                reach = g->H[hj].x1;
+            hj++;
+        }
+        if ((double)reach >= xv - 0.5) {
+            /* exact: x0 <= x(y) <= reach for some segment */
+            i128 n = x_num(&E[e], y), d = x_den(&E[e]);
+            int covered = 0;
+            for (size_t q = h0; q < hj && !covered; q++)
+                covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
+            if (covered) {
+                if (!meet(s, e, y, 0))
+                    return 0;
+                dirty[(*nd)++] = (uint32_t)k;
+            }
+        }
+    }
+    return 1;
+}
+
+/* a and b (both active in a beam, not crossing inside it) coincide there:
+ * they are on one line */
+static inline int coincident(const bedge *a, const bedge *b)
+{
+    if (a->slope != b->slope) /* dx / dy rounded once: equal when collinear */
+        return 0;
+    i128 dx = a->xt - a->xb, dy = a->yt - a->yb;
+    return dx * (b->yb - a->yb) == dy * (b->xb - a->xb) &&
+           dx * (b->yt - a->yb) == dy * (b->xt - a->xb);
+}
+
+/* Classification of the beam above y: no crossing inside it, so the order
+ * at y (ties by direction) is the order throughout.  Only the groups of
+ * coincident edges around a dirty position (a new edge, a run break) need a
+ * look: elsewhere the windings are those of the last beam, because the
+ * edges ending and starting at one point (or along one chain of horizontal
+ * edges, whose crossing edges are dirty) add up to the same windings.
+ * dirty[] is sorted. */
+static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
+                          const uint32_t *dirty, size_t nd)
+{
+    const engine *g = s->g;
+    const bedge *E = g->E;
+    int64_t *wr0 = s->wr0, *wr1 = s->wr1;
+    size_t done = 0;
+    for (size_t d = 0; d < nd; d++) {
+        size_t k = dirty[d];
+        if (k < done)
+            continue;
+        while (k > done && coincident(&E[above[k - 1]], &E[above[k]]))
+            k--;
+        int64_t w[2] = {0, 0};
+        if (k > 0) {
+            w[0] = wr0[above[k - 1]];
+            w[1] = wr1[above[k - 1]];
+        }
+        int left = inside(g, w[0], w[1]);
+        size_t k2 = k + 1;
+        uint32_t rep = above[k];
+        w[E[rep].op] += E[rep].w;
+        while (k2 < na && coincident(&E[above[k]], &E[above[k2]])) {
+            uint32_t b = above[k2];
+            if (b < rep)
+                rep = b;
+            w[E[b].op] += E[b].w;
+            k2++;
+        }
+        int right = inside(g, w[0], w[1]);
+        for (size_t q = k; q < k2; q++) {
+            uint32_t e = above[q];
+            int boundary = e == rep && left != right;
+            int up = left; /* result on the left (-x side): go up */
+            if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
+                if (!close_run(s, e, y))
+                    return 0;
+            }
+            if (boundary && !s->run_open[e]) {
+                s->run_open[e] = 1;
+                s->run_up[e] = (unsigned char)up;
+                s->run_y[e] = y;
+                s->run_x[e] = y == E[e].yb ? E[e].xb : round_div(x_num(&E[e], y), x_den(&E[e]));
+            }
+            s->brk[e] = 0;
+            wr0[e] = w[0];
+            wr1[e] = w[1];
+        }
+        done = k2;
+    }
+    return 1;
 }
 
 static int run_sweep(sweep *s)
@@ -525,37 +627,13 @@ static int run_sweep(sweep *s)
         while (ih < nh && g->H[ih].y == y)
             ih++;
         if (ih > h0) {
-            /* passing edges whose x lies within a horizontal edge (the
-             * horizontal edges are sorted by x0): a vertex there */
-            size_t hj = h0;
-            int64_t reach = INT64_MIN;
-            for (size_t k = 0; k < na; k++) {
-                uint32_t e = above[k];
-                if (E[e].yb == y)
-                    continue;
-                double xv = xc[e];
-                while (hj < ih && (double)g->H[hj].x0 <= xv + 0.5) {
-                    if (g->H[hj].x1 > reach)
-                        reach = g->H[hj].x1;
-                    hj++;
-                }
-                if ((double)reach >= xv - 0.5) {
-                    /* exact: x0 <= x(y) <= reach for some segment */
-                    i128 n = x_num(&E[e], y), d = x_den(&E[e]);
-                    int covered = 0;
-                    for (size_t q = h0; q < hj && !covered; q++)
-                        covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
-                    if (covered) {
-                        if (!meet(s, e, y, 0))
-                            return 0;
-                        dirty[nd++] = (uint32_t)k;
-                        dirty_sorted = 0;
-                    }
-                }
-            }
+            if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
+                return 0;
+            dirty_sorted = 0;
             if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
                 return 0;
         }
+        s->visits += na;
         /* the beam [y, yn] */
         uint32_t *t = s->act;
         s->act = above;
@@ -607,61 +685,195 @@ static int run_sweep(sweep *s)
         }
         if (!s->classify)
             continue; /* this pass will be repeated */
-        /* Classification: no crossing inside the beam, so the order at y
-         * (ties by yn) is the order throughout.  Only the groups of
-         * coincident edges around a dirty position (a new edge, a run
-         * break) need a look: elsewhere the windings are those of the last
-         * beam, because the edges ending and starting at one point (or along
-         * one chain of horizontal edges, whose crossing edges are dirty) add
-         * up to the same windings. */
         if (!dirty_sorted)
             sort_u32(dirty, nd);
-        int64_t *wr0 = s->wr0, *wr1 = s->wr1;
-        size_t done = 0;
-        for (size_t d = 0; d < nd; d++) {
-            size_t k = dirty[d];
-            if (k < done)
-                continue;
-            while (k > done && coincident(E, above[k - 1], above[k], y, yn, xc, xn))
-                k--;
-            int64_t w[2] = {0, 0};
-            if (k > 0) {
-                w[0] = wr0[above[k - 1]];
-                w[1] = wr1[above[k - 1]];
+        if (!classify_dirty(s, y, above, na, dirty, nd))
+            return 0;
+    }
+    return 1;
+}
+
+/* ---- the light sweep ------------------------------------------------------- */
+
+/* sign of x_e(y) - X for an integer X; xe is the double value */
+static inline int cmp_xi(const bedge *e, int64_t y, int64_t X, double xe)
+{
+    double d = xe - (double)X;
+    if (d > 0.01)
+        return 1;
+    if (d < -0.01)
+        return -1;
+    i128 n = x_num(e, y), r = (i128)X * x_den(e);
+    return (n > r) - (n < r);
+}
+
+/* the order of a and b just above a point they share: by direction */
+static inline int cmp_dir(const bedge *a, const bedge *b)
+{
+    i128 l = (i128)(a->xt - a->xb) * (b->yt - b->yb), r = (i128)(b->xt - b->xb) * (a->yt - a->yb);
+    return (l > r) - (l < r);
+}
+
+/* a is left of b just above the current scanline: do they cross before
+ * either ends? */
+static int cross_above(const bedge *a, const bedge *b)
+{
+    int64_t yt = a->yt < b->yt ? a->yt : b->yt;
+    return cmp_x(a, b, yt, x_at(a, yt), x_at(b, yt)) > 0;
+}
+
+static inline void copy_ids(uint32_t *dst, const uint32_t *src, size_t n)
+{
+    if (n > 16) {
+        memcpy(dst, src, n * sizeof *dst);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        dst[i] = src[i];
+}
+
+#define LIGHT_BAIL 2
+#define LIGHT_COST 8
+
+/* The sweep of a pass that is expected to find nothing to split (the pass
+ * after the splits): Bentley-Ottmann's idea instead of a look at every
+ * active edge on every scanline.  The active list changes only at the
+ * points where edges end or start (found by binary search); two edges can
+ * only cross after being neighbours, so each new pair of neighbours is
+ * checked once.  Returns 1 when the pass is final (the pieces are emitted),
+ * LIGHT_BAIL when something needs a split (the caller runs the full sweep),
+ * 0 when out of memory. */
+static int light_sweep(sweep *s)
+{
+    engine *g = s->g;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, nh = g->nh, ih = 0;
+    const bedge *E = g->E;
+    uint32_t *fresh = s->fresh, *dirty = s->dirty, *clus = s->clus, *seam = s->seam;
+    const uint32_t *by_top = s->by_top;
+    s->nact = 0;
+    for (size_t iy = 0; iy < nys; iy++) {
+        int64_t y = s->ys[iy];
+        int has_next = iy + 1 < nys;
+        uint32_t *below = s->act, *above = s->nxt;
+        size_t nb = s->nact, na = 0, nd = 0, nseam = 0;
+        /* edges starting here, by x, then by direction */
+        size_t nf = 0;
+        while (ip < ne && E[s->by_bottom[ip]].yb == y) {
+            uint32_t e = s->by_bottom[ip++];
+            size_t m = nf;
+            while (m > 0 && E[fresh[m - 1]].xb == E[e].xb && cmp_dir(&E[fresh[m - 1]], &E[e]) > 0) {
+                fresh[m] = fresh[m - 1];
+                m--;
             }
-            int left = inside(g, w[0], w[1]);
-            size_t k2 = k + 1;
-            uint32_t rep = above[k];
-            w[E[rep].op] += E[rep].w;
-            while (k2 < na && coincident(E, above[k], above[k2], y, yn, xc, xn)) {
-                uint32_t b = above[k2];
-                if (b < rep)
-                    rep = b;
-                w[E[b].op] += E[b].w;
-                k2++;
-            }
-            int right = inside(g, w[0], w[1]);
-            for (size_t q = k; q < k2; q++) {
-                uint32_t e = above[q];
-                int boundary = e == rep && left != right;
-                int up = left; /* result on the left (-x side): go up */
-                if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
-                    if (!close_run(s, e, y))
-                        return 0;
-                }
-                if (boundary && !s->run_open[e]) {
-                    s->run_open[e] = 1;
-                    s->run_up[e] = (unsigned char)up;
-                    s->run_y[e] = y;
-                    s->run_x[e] = y == E[e].yb ? E[e].xb
-                                               : round_div(x_num(&E[e], y), x_den(&E[e]));
-                }
-                s->brk[e] = 0;
-                wr0[e] = w[0];
-                wr1[e] = w[1];
-            }
-            done = k2;
+            fresh[m] = e;
+            nf++;
         }
+        /* edges ending here, by x */
+        size_t t0 = it;
+        while (it < ne && E[by_top[it]].yt == y)
+            it++;
+        size_t ended = 0, jf = 0, jt = t0, ib = 0;
+        /* every point where edges end or start: the edges through it
+         * (ending, passing, starting) are replaced by the passing and
+         * starting ones in the order of their directions */
+        while (jf < nf || jt < it) {
+            int64_t X = jt >= it || (jf < nf && E[fresh[jf]].xb <= E[by_top[jt]].xt)
+                            ? E[fresh[jf]].xb
+                            : E[by_top[jt]].xt;
+            size_t f0 = jf;
+            while (jf < nf && E[fresh[jf]].xb == X)
+                jf++;
+            while (jt < it && E[by_top[jt]].xt == X)
+                jt++;
+            size_t lo = ib, hi = nb;
+            while (lo < hi) {
+                size_t mid = lo + (hi - lo) / 2;
+                if (x_at(&E[below[mid]], y) < (double)X - 0.5)
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            while (lo < nb && cmp_xi(&E[below[lo]], y, X, x_at(&E[below[lo]], y)) < 0)
+                lo++;
+            copy_ids(above + na, below + ib, lo - ib);
+            na += lo - ib;
+            size_t nc = 0, c1 = lo;
+            while (c1 < nb && cmp_xi(&E[below[c1]], y, X, x_at(&E[below[c1]], y)) == 0) {
+                uint32_t e = below[c1++];
+                if (E[e].yt == y) {
+                    ended++;
+                    if (s->run_open[e] && !close_run(s, e, y))
+                        return 0;
+                    continue;
+                }
+                s->brk[e] = 1; /* passes through a vertex: its run breaks */
+                clus[nc++] = e;
+            }
+            ib = c1;
+            for (size_t k = f0; k < jf; k++) {
+                uint32_t e = fresh[k];
+                size_t m = nc;
+                while (m > 0 && cmp_dir(&E[clus[m - 1]], &E[e]) > 0) {
+                    clus[m] = clus[m - 1];
+                    m--;
+                }
+                clus[m] = e;
+                nc++;
+            }
+            /* passing edges through the point are in the order of their
+             * directions too (they may cross there) */
+            for (size_t k = 1; k < nc; k++) {
+                uint32_t v = clus[k];
+                size_t m = k;
+                while (m > 0 && cmp_dir(&E[clus[m - 1]], &E[v]) > 0) {
+                    clus[m] = clus[m - 1];
+                    m--;
+                }
+                clus[m] = v;
+            }
+            for (size_t k = 0; k < nc; k++) {
+                seam[nseam++] = (uint32_t)na;
+                dirty[nd++] = (uint32_t)na;
+                above[na++] = clus[k];
+            }
+            seam[nseam++] = (uint32_t)na;
+        }
+        if (ended != it - t0)
+            return LIGHT_BAIL; /* an ending edge was not where expected */
+        copy_ids(above + na, below + ib, nb - ib);
+        na += nb - ib;
+        /* horizontal edges on this scanline: the whole line is looked at */
+        while (ih < nh && g->H[ih].y < y)
+            ih++;
+        size_t h0 = ih;
+        while (ih < nh && g->H[ih].y == y)
+            ih++;
+        if (ih > h0) {
+            for (size_t k = 0; k < nb; k++)
+                s->xc[below[k]] = x_at(&E[below[k]], y);
+            for (size_t k = 0; k < na; k++)
+                s->xc[above[k]] = x_at(&E[above[k]], y);
+            if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
+                return 0;
+            if (s->changed)
+                return LIGHT_BAIL;
+            sort_u32(dirty, nd);
+            if (!horizontal_pieces(s, y, below, nb, above, na))
+                return 0;
+        }
+        /* new neighbours */
+        for (size_t k = 0; k < nseam; k++) {
+            size_t p = seam[k];
+            if (p > 0 && p < na && cross_above(&E[above[p - 1]], &E[above[p]]))
+                return LIGHT_BAIL;
+        }
+        s->act = above;
+        s->nxt = below;
+        s->nact = na;
+        if (!has_next)
+            break;
+        if (!classify_dirty(s, y, above, na, dirty, nd))
+            return 0;
     }
     return 1;
 }
@@ -864,6 +1076,14 @@ static int cmp_area(const void *a, const void *b)
     return (x->ring > y->ring) - (x->ring < y->ring);
 }
 
+static int cmp_point64(const void *a, const void *b)
+{
+    const cg_point64 *p = a, *q = b;
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    return (p->y > q->y) - (p->y < q->y);
+}
+
 typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
 static int cmp_hole_x(const void *a, const void *b)
 {
@@ -1024,9 +1244,8 @@ static int assemble(engine *g, cg_polygon_set64 *result)
             if (s > 0)
                 order[nouter++] = r;
         }
-        /* Each hole goes to the smallest outer containing the midpoint of its
-         * first edge (twice the midpoint: integers; on no other ring).  The
-         * outers are taken by increasing area; for each, the still unplaced
+        /* Each hole goes to the smallest outer containing a point of one
+         * of its edges that is on no other ring (below).  The outers are taken by increasing area; for each, the still unplaced
          * holes within its box are tested together: the outer's edges are
          * matched with the hole points sorted by y. */
         int fail_nest = 0;
@@ -1040,19 +1259,54 @@ static int assemble(engine *g, cg_polygon_set64 *result)
             for (size_t i = 0; i < nouter; i++)
                 ra[i] = (ring_by_area){area[order[i]], order[i]};
             qsort(ra, nouter, sizeof *ra, cmp_area);
+            /* The point of a hole (in quadrupled coordinates): the midpoint
+             * of one of its edges, or else a quarter point, that is not a
+             * vertex of another ring (rings may touch there, after the
+             * collinear vertex of the hole went away), so that it is on no
+             * other ring. */
+            cg_point64 *verts = NULL;
+            size_t nv = rings.point_count;
+            if (nholes) {
+                verts = malloc((nv ? nv : 1) * sizeof *verts);
+                if (verts) {
+                    memcpy(verts, rings.points, nv * sizeof *verts);
+                    qsort(verts, nv, sizeof *verts, cmp_point64);
+                } else {
+                    fail_nest = 1;
+                }
+            }
             size_t h = 0;
-            for (size_t r = 0; r < nr; r++) {
+            for (size_t r = 0; r < nr && !fail_nest; r++) {
                 if (area[r] > 0)
                     continue;
-                size_t a0 = rings.ring_start[r];
-                cg_point64 p = rings.points[a0], q = rings.points[a0 + 1];
-                hp[h++] = (hole_point){p.x + q.x, p.y + q.y, r, 0};
+                size_t a0 = rings.ring_start[r], a1 = rings.ring_start[r + 1];
+                cg_point64 u0 = rings.points[a0], v0 = rings.points[a0 + 1];
+                int64_t px = 2 * (u0.x + v0.x), py = 2 * (u0.y + v0.y);
+                int found = 0;
+                for (int quarter = 0; quarter < 2 && !found; quarter++) {
+                    for (size_t i = a0; i < a1 && !found; i++) {
+                        cg_point64 u = rings.points[i], v = rings.points[i + 1 < a1 ? i + 1 : a0];
+                        int64_t qx = quarter ? 3 * u.x + v.x : 2 * (u.x + v.x);
+                        int64_t qy = quarter ? 3 * u.y + v.y : 2 * (u.y + v.y);
+                        cg_point64 m = {qx / 4, qy / 4};
+                        if ((qx & 3) || (qy & 3) ||
+                            !bsearch(&m, verts, nv, sizeof *verts, cmp_point64)) {
+                            px = qx;
+                            py = qy;
+                            found = 1;
+                        }
+                    }
+                }
+                hp[h++] = (hole_point){px, py, r, 0};
             }
+            free(verts);
+            if (fail_nest)
+                nholes = 0;
             qsort(hp, nholes, sizeof *hp, cmp_hole_x);
             size_t unplaced = nholes;
             for (size_t oi = 0; oi < nouter && unplaced; oi++) {
                 size_t o = ra[oi].ring;
-                int64_t bx0 = 2 * bb[o][0], by0 = 2 * bb[o][1], bx1 = 2 * bb[o][2], by1 = 2 * bb[o][3];
+                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2], by1 = 4 * bb[o][3];
                 /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
                 size_t lo = first_at_least(hp, nholes, bx0, 0);
                 size_t nc = 0;
@@ -1073,13 +1327,13 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
                 for (size_t i = s0; i < s1; i++) {
                     cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
-                    int64_t uy = 2 * u.y, vy = 2 * v.y;
+                    int64_t uy = 4 * u.y, vy = 4 * v.y;
                     if (uy == vy)
                         continue;
                     int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
                     /* candidates with ylo <= y < yhi */
                     size_t l = first_at_least(cand, nc, ylo, 1);
-                    i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
+                    i128 ux = 4 * (i128)u.x, vx = 4 * (i128)v.x;
                     for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
                         i128 mx = cand[k].x, my = cand[k].y;
                         i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
@@ -1159,96 +1413,149 @@ fail:
 
 #define MAX_PASSES 64
 
+static void sweep_free(sweep *s)
+{
+    free(s->ys);
+    free(s->by_bottom);
+    free(s->by_top);
+    free(s->act);
+    free(s->nxt);
+    free(s->fresh);
+    free(s->dirty);
+    free(s->clus);
+    free(s->seam);
+    free(s->wr0);
+    free(s->wr1);
+    free(s->xc);
+    free(s->xn);
+    free(s->run_open);
+    free(s->run_up);
+    free(s->brk);
+    free(s->brk_next);
+    free(s->run_x);
+    free(s->run_y);
+    engine *g = s->g;
+    memset(s, 0, sizeof *s);
+    s->g = g;
+}
+
+/* The arrays of a pass over g's edges: 0 when out of memory. */
+static int sweep_alloc(sweep *s, int light)
+{
+    size_t n1 = s->g->ne ? s->g->ne : 1;
+    s->ys = malloc(2 * n1 * sizeof *s->ys);
+    s->by_bottom = malloc(n1 * sizeof *s->by_bottom);
+    s->act = malloc(n1 * sizeof *s->act);
+    s->nxt = malloc(n1 * sizeof *s->nxt);
+    s->fresh = malloc(n1 * sizeof *s->fresh);
+    s->dirty = malloc(2 * n1 * sizeof *s->dirty);
+    s->wr0 = malloc(n1 * sizeof *s->wr0);
+    s->wr1 = malloc(n1 * sizeof *s->wr1);
+    s->xc = malloc(n1 * sizeof *s->xc);
+    s->xn = malloc(n1 * sizeof *s->xn);
+    s->run_open = calloc(n1, 1);
+    s->run_up = calloc(n1, 1);
+    s->brk = calloc(n1, 1);
+    s->brk_next = calloc(n1, 1);
+    s->run_x = malloc(n1 * sizeof *s->run_x);
+    s->run_y = malloc(n1 * sizeof *s->run_y);
+    if (light) {
+        s->by_top = malloc(n1 * sizeof *s->by_top);
+        s->clus = malloc(n1 * sizeof *s->clus);
+        s->seam = malloc((3 * n1 + 1) * sizeof *s->seam);
+        if (!s->by_top || !s->clus || !s->seam)
+            return 0;
+    }
+    return s->ys && s->by_bottom && s->act && s->nxt && s->fresh && s->dirty && s->wr0 &&
+           s->wr1 && s->xc && s->xn && s->run_open && s->run_up && s->brk && s->brk_next &&
+           s->run_x && s->run_y;
+}
+
+/* Sorts the scanlines, the edges by bottom (and by top for the light
+ * sweep) and the horizontal edges: 0 when out of memory. */
+static int sweep_sort(sweep *s, int light)
+{
+    engine *g = s->g;
+    size_t ne = g->ne, n1 = ne ? ne : 1;
+    for (size_t i = 0; i < ne; i++) {
+        s->ys[2 * i] = g->E[i].yb;
+        s->ys[2 * i + 1] = g->E[i].yt;
+    }
+    size_t nscratch = 2 * n1 > g->nh ? 2 * n1 : g->nh;
+    keyval *scratch = malloc(nscratch * sizeof *scratch);
+    if (!scratch)
+        return 0;
+    int64_t ymin = INT64_MAX;
+    for (size_t i = 0; i < 2 * ne; i++)
+        ymin = s->ys[i] < ymin ? s->ys[i] : ymin;
+    for (size_t i = 0; i < 2 * ne; i++)
+        scratch[i] = (keyval){(uint64_t)(s->ys[i] - ymin), 0};
+    int sorted = radix_sort(scratch, 2 * ne);
+    size_t u = 0;
+    for (size_t i = 0; sorted && i < 2 * ne; i++) {
+        int64_t y = (int64_t)scratch[i].key + ymin;
+        if (u == 0 || s->ys[u - 1] != y)
+            s->ys[u++] = y;
+    }
+    s->nys = u;
+    if (sorted && ne)
+        sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom, scratch);
+    if (sorted && ne && light)
+        sorted = sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top, scratch);
+    if (sorted && g->nh > 1) {
+        hseg *h2 = malloc(g->nh * sizeof *h2);
+        uint32_t *order = malloc(g->nh * sizeof *order);
+        sorted = h2 && order &&
+                 sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, order, scratch);
+        if (sorted) {
+            for (size_t i = 0; i < g->nh; i++)
+                h2[i] = g->H[order[i]];
+            memcpy(g->H, h2, g->nh * sizeof *h2);
+        }
+        free(h2);
+        free(order);
+    }
+    free(scratch);
+    return sorted;
+}
+
 static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
     memset(&s, 0, sizeof s);
     s.g = g;
     cg_status st = CG_ENOMEM;
+    size_t visits = 0, edges = 0; /* of the last full sweep */
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
             break;
         }
-        size_t ne = g->ne;
-        free(s.ys);
-        free(s.by_bottom);
-        free(s.act);
-        free(s.nxt);
-        free(s.fresh);
-        free(s.dirty);
-        free(s.wr0);
-        free(s.wr1);
-        free(s.xc);
-        free(s.xn);
-        free(s.run_open);
-        free(s.run_up);
-        free(s.brk);
-        free(s.brk_next);
-        free(s.run_x);
-        free(s.run_y);
-        memset(&s, 0, sizeof s);
-        s.g = g;
-        size_t n1 = ne ? ne : 1;
-        s.ys = malloc(2 * n1 * sizeof *s.ys);
-        s.by_bottom = malloc(n1 * sizeof *s.by_bottom);
-        s.act = malloc(n1 * sizeof *s.act);
-        s.nxt = malloc(n1 * sizeof *s.nxt);
-        s.fresh = malloc(n1 * sizeof *s.fresh);
-        s.dirty = malloc(2 * n1 * sizeof *s.dirty);
-        s.wr0 = malloc(n1 * sizeof *s.wr0);
-        s.wr1 = malloc(n1 * sizeof *s.wr1);
-        s.xc = malloc(n1 * sizeof *s.xc);
-        s.xn = malloc(n1 * sizeof *s.xn);
-        s.run_open = calloc(n1, 1);
-        s.run_up = calloc(n1, 1);
-        s.brk = calloc(n1, 1);
-        s.brk_next = calloc(n1, 1);
-        s.run_x = malloc(n1 * sizeof *s.run_x);
-        s.run_y = malloc(n1 * sizeof *s.run_y);
-        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.fresh || !s.dirty || !s.wr0 || !s.wr1 || !s.xc || !s.xn || !s.run_open ||
-            !s.run_up || !s.brk || !s.brk_next || !s.run_x || !s.run_y)
+        /* After the first pass, most passes find nothing more to split.
+         * The light sweep costs about LIGHT_COST active edges' worth of work
+         * per edge; it is tried first when the full sweep was dearer. */
+        int light = pass >= 1 && visits > LIGHT_COST * edges;
+        sweep_free(&s);
+        if (!sweep_alloc(&s, light) || !sweep_sort(&s, light))
             break;
-        for (size_t i = 0; i < ne; i++) {
-            s.ys[2 * i] = g->E[i].yb;
-            s.ys[2 * i + 1] = g->E[i].yt;
-            s.by_bottom[i] = (uint32_t)i;
-        }
-        size_t nscratch = 2 * n1 > g->nh ? 2 * n1 : g->nh;
-        keyval *scratch = malloc(nscratch * sizeof *scratch);
-        if (!scratch)
-            break;
-        int64_t ymin = INT64_MAX;
-        for (size_t i = 0; i < 2 * ne; i++)
-            ymin = s.ys[i] < ymin ? s.ys[i] : ymin;
-        for (size_t i = 0; i < 2 * ne; i++)
-            scratch[i] = (keyval){(uint64_t)(s.ys[i] - ymin), 0};
-        int sorted = radix_sort(scratch, 2 * ne);
-        size_t u = 0;
-        for (size_t i = 0; sorted && i < 2 * ne; i++) {
-            int64_t y = (int64_t)scratch[i].key + ymin;
-            if (u == 0 || s.ys[u - 1] != y)
-                s.ys[u++] = y;
-        }
-        s.nys = u;
-        if (sorted && ne)
-            sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s.by_bottom, scratch);
-        if (sorted && g->nh > 1) {
-            hseg *h2 = malloc(g->nh * sizeof *h2);
-            uint32_t *order = malloc(g->nh * sizeof *order);
-            sorted = h2 && order &&
-                     sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, order, scratch);
-            if (sorted) {
-                for (size_t i = 0; i < g->nh; i++)
-                    h2[i] = g->H[order[i]];
-                memcpy(g->H, h2, g->nh * sizeof *h2);
+        if (light) {
+            g->np = 0;
+            s.classify = 1;
+            s.changed = 0;
+            int r = light_sweep(&s);
+            if (!r)
+                break;
+            if (r == 1) {
+                st = assemble(g, result) ? CG_OK : CG_ENOMEM;
+                break;
             }
-            free(h2);
-            free(order);
+            /* something to split: start over with the full sweep */
+            size_t n1 = g->ne ? g->ne : 1;
+            memset(s.run_open, 0, n1);
+            memset(s.brk, 0, n1);
+            memset(s.brk_next, 0, n1);
+            g->ns = 0;
         }
-        free(scratch);
-        if (!sorted)
-            break;
         g->np = 0;
         s.classify = 1;
         s.changed = 0;
@@ -1257,6 +1564,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         s.use_input_lines = pass < 8;
         if (!run_sweep(&s))
             break;
+        visits = s.visits;
+        edges = g->ne;
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
@@ -1270,22 +1579,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             break;
         }
     }
-    free(s.ys);
-    free(s.by_bottom);
-    free(s.act);
-    free(s.nxt);
-    free(s.fresh);
-    free(s.dirty);
-    free(s.wr0);
-    free(s.wr1);
-    free(s.xc);
-    free(s.xn);
-    free(s.run_open);
-    free(s.run_up);
-    free(s.brk);
-    free(s.brk_next);
-    free(s.run_x);
-    free(s.run_y);
+    sweep_free(&s);
     return st;
 }
 

@@ -170,8 +170,8 @@ static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 typedef struct keyval { uint64_t key; uint32_t val; } keyval;
 
 /* Stable LSD radix sort of a[0..n) by key (6- or 11-bit digits, only as
- * many passes as the largest key needs). */
-static int radix_sort(keyval *a, size_t n)
+ * many passes as the largest key needs); tmp holds n or is NULL. */
+static int radix_sort(keyval *a, size_t n, keyval *tmp)
 {
     if (n < 2)
         return 1;
@@ -188,7 +188,7 @@ static int radix_sort(keyval *a, size_t n)
         }
         return 1;
     }
-    keyval *t = malloc(n * sizeof *t), *src = a, *dst = t;
+    keyval *t = tmp ? tmp : malloc(n * sizeof *t), *src = a, *dst = t;
     if (!t)
         return 0;
     /* small inputs: small digit tables */
@@ -214,15 +214,17 @@ static int radix_sort(keyval *a, size_t n)
     }
     if (src != a)
         memcpy(a, src, n * sizeof *a);
-    free(t);
+    if (!tmp)
+        free(t);
     return 1;
 }
 
 
-/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n.
- * Both keys are packed into one when their ranges fit in 64 bits. */
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n,
+ * tmp of n or NULL.  Both keys are packed into one when their ranges fit in
+ * 64 bits. */
 static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
-                         uint32_t *idx, keyval *scratch)
+                         uint32_t *idx, keyval *scratch, keyval *tmp)
 {
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (i) * stride))
     if (n == 0)
@@ -246,18 +248,18 @@ static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, si
             scratch[i] = (keyval){((uint64_t)(KEY(k1, i) - lo1) << bits2) |
                                       (uint64_t)(KEY(k2, i) - lo2),
                                   (uint32_t)i};
-        if (!radix_sort(scratch, n))
+        if (!radix_sort(scratch, n, tmp))
             return 0;
     } else {
         for (size_t i = 0; i < n; i++)
             scratch[i] = (keyval){(uint64_t)(KEY(k2, i) - lo2), (uint32_t)i};
-        if (!radix_sort(scratch, n))
+        if (!radix_sort(scratch, n, tmp))
             return 0;
         for (size_t i = 0; i < n; i++) {
             uint32_t v = scratch[i].val;
             scratch[i] = (keyval){(uint64_t)(KEY(k1, v) - lo1), v};
         }
-        if (!radix_sort(scratch, n))
+        if (!radix_sort(scratch, n, tmp))
             return 0;
     }
     for (size_t i = 0; i < n; i++)
@@ -275,6 +277,11 @@ typedef struct sweep {
     uint32_t *by_bottom; /* edges sorted by yb */
     uint32_t *act, *nxt, *fresh, *dirty;
     uint32_t *by_top, *clus, *seam; /* the light sweep's */
+    keyval *scratch, *scratch2;      /* for sorting */
+    hseg *hsorted;
+    uint32_t *horder;
+    void *mem; /* all of the above, carved from one block */
+    size_t memcap;
     int64_t *wr0, *wr1; /* windings right of each edge (its coincident group) */
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
@@ -1130,7 +1137,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
         uint32_t *order = malloc(np * sizeof *order);
         piece *sorted = malloc(np * sizeof *sorted);
         int ok2 = scratch && order && sorted &&
-                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch);
+                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch, NULL);
         if (ok2) {
             for (size_t i = 0; i < np; i++)
                 sorted[i] = P[order[i]];
@@ -1264,17 +1271,8 @@ static int assemble(engine *g, cg_polygon_set64 *result)
              * vertex of another ring (rings may touch there, after the
              * collinear vertex of the hole went away), so that it is on no
              * other ring. */
-            cg_point64 *verts = NULL;
+            cg_point64 *verts = NULL; /* sorted, when first needed */
             size_t nv = rings.point_count;
-            if (nholes) {
-                verts = malloc((nv ? nv : 1) * sizeof *verts);
-                if (verts) {
-                    memcpy(verts, rings.points, nv * sizeof *verts);
-                    qsort(verts, nv, sizeof *verts, cmp_point64);
-                } else {
-                    fail_nest = 1;
-                }
-            }
             size_t h = 0;
             for (size_t r = 0; r < nr && !fail_nest; r++) {
                 if (area[r] > 0)
@@ -1289,6 +1287,15 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                         int64_t qx = quarter ? 3 * u.x + v.x : 2 * (u.x + v.x);
                         int64_t qy = quarter ? 3 * u.y + v.y : 2 * (u.y + v.y);
                         cg_point64 m = {qx / 4, qy / 4};
+                        if (!(qx & 3) && !(qy & 3) && !verts) {
+                            verts = malloc(nv * sizeof *verts);
+                            if (!verts) {
+                                fail_nest = 1;
+                                break;
+                            }
+                            memcpy(verts, rings.points, nv * sizeof *verts);
+                            qsort(verts, nv, sizeof *verts, cmp_point64);
+                        }
                         if ((qx & 3) || (qy & 3) ||
                             !bsearch(&m, verts, nv, sizeof *verts, cmp_point64)) {
                             px = qx;
@@ -1413,62 +1420,74 @@ fail:
 
 #define MAX_PASSES 64
 
-static void sweep_free(sweep *s)
+/* Forgets the arrays of the last pass; their memory is kept for the next. */
+static void sweep_reset(sweep *s)
 {
-    free(s->ys);
-    free(s->by_bottom);
-    free(s->by_top);
-    free(s->act);
-    free(s->nxt);
-    free(s->fresh);
-    free(s->dirty);
-    free(s->clus);
-    free(s->seam);
-    free(s->wr0);
-    free(s->wr1);
-    free(s->xc);
-    free(s->xn);
-    free(s->run_open);
-    free(s->run_up);
-    free(s->brk);
-    free(s->brk_next);
-    free(s->run_x);
-    free(s->run_y);
     engine *g = s->g;
+    void *mem = s->mem;
+    size_t cap = s->memcap;
     memset(s, 0, sizeof *s);
     s->g = g;
+    s->mem = mem;
+    s->memcap = cap;
 }
 
-/* The arrays of a pass over g's edges: 0 when out of memory. */
+static void *carve(char **p, size_t bytes)
+{
+    void *r = *p;
+    *p += (bytes + 15) & ~(size_t)15;
+    return r;
+}
+
+/* The arrays of a pass over g's edges, carved from one block kept from pass
+ * to pass (large blocks come fresh from the system, page by page, so fewer
+ * and reused ones are much cheaper): 0 when out of memory. */
 static int sweep_alloc(sweep *s, int light)
 {
-    size_t n1 = s->g->ne ? s->g->ne : 1;
-    s->ys = malloc(2 * n1 * sizeof *s->ys);
-    s->by_bottom = malloc(n1 * sizeof *s->by_bottom);
-    s->act = malloc(n1 * sizeof *s->act);
-    s->nxt = malloc(n1 * sizeof *s->nxt);
-    s->fresh = malloc(n1 * sizeof *s->fresh);
-    s->dirty = malloc(2 * n1 * sizeof *s->dirty);
-    s->wr0 = malloc(n1 * sizeof *s->wr0);
-    s->wr1 = malloc(n1 * sizeof *s->wr1);
-    s->xc = malloc(n1 * sizeof *s->xc);
-    s->xn = malloc(n1 * sizeof *s->xn);
-    s->run_open = calloc(n1, 1);
-    s->run_up = calloc(n1, 1);
-    s->brk = calloc(n1, 1);
-    s->brk_next = calloc(n1, 1);
-    s->run_x = malloc(n1 * sizeof *s->run_x);
-    s->run_y = malloc(n1 * sizeof *s->run_y);
-    if (light) {
-        s->by_top = malloc(n1 * sizeof *s->by_top);
-        s->clus = malloc(n1 * sizeof *s->clus);
-        s->seam = malloc((3 * n1 + 1) * sizeof *s->seam);
-        if (!s->by_top || !s->clus || !s->seam)
+    size_t n1 = s->g->ne ? s->g->ne : 1, nh = s->g->nh;
+    size_t nscratch = 2 * n1 > nh ? 2 * n1 : nh;
+    size_t need = 24 * 16 + 2 * n1 * sizeof(int64_t) + 4 * n1 * sizeof(uint32_t) +
+                  2 * n1 * sizeof(uint32_t) + 6 * n1 * sizeof(int64_t) + 4 * n1 +
+                  2 * nscratch * sizeof(keyval) + nh * (sizeof(hseg) + sizeof(uint32_t));
+    if (light)
+        need += 2 * n1 * sizeof(uint32_t) + (3 * n1 + 1) * sizeof(uint32_t);
+    if (need > s->memcap) {
+        free(s->mem);
+        s->memcap = 0;
+        need += need / 2; /* the next pass usually has a few more edges */
+        s->mem = malloc(need);
+        if (!s->mem)
             return 0;
+        s->memcap = need;
     }
-    return s->ys && s->by_bottom && s->act && s->nxt && s->fresh && s->dirty && s->wr0 &&
-           s->wr1 && s->xc && s->xn && s->run_open && s->run_up && s->brk && s->brk_next &&
-           s->run_x && s->run_y;
+    char *p = s->mem;
+    s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
+    s->by_bottom = carve(&p, n1 * sizeof *s->by_bottom);
+    s->act = carve(&p, n1 * sizeof *s->act);
+    s->nxt = carve(&p, n1 * sizeof *s->nxt);
+    s->fresh = carve(&p, n1 * sizeof *s->fresh);
+    s->dirty = carve(&p, 2 * n1 * sizeof *s->dirty);
+    s->wr0 = carve(&p, n1 * sizeof *s->wr0);
+    s->wr1 = carve(&p, n1 * sizeof *s->wr1);
+    s->xc = carve(&p, n1 * sizeof *s->xc);
+    s->xn = carve(&p, n1 * sizeof *s->xn);
+    s->run_x = carve(&p, n1 * sizeof *s->run_x);
+    s->run_y = carve(&p, n1 * sizeof *s->run_y);
+    s->run_open = carve(&p, 4 * n1);
+    s->run_up = s->run_open + n1;
+    s->brk = s->run_open + 2 * n1;
+    s->brk_next = s->run_open + 3 * n1;
+    memset(s->run_open, 0, 4 * n1);
+    s->scratch = carve(&p, nscratch * sizeof *s->scratch);
+    s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
+    s->hsorted = carve(&p, nh * sizeof *s->hsorted);
+    s->horder = carve(&p, nh * sizeof *s->horder);
+    if (light) {
+        s->by_top = carve(&p, n1 * sizeof *s->by_top);
+        s->clus = carve(&p, n1 * sizeof *s->clus);
+        s->seam = carve(&p, (3 * n1 + 1) * sizeof *s->seam);
+    }
+    return 1;
 }
 
 /* Sorts the scanlines, the edges by bottom (and by top for the light
@@ -1476,21 +1495,16 @@ static int sweep_alloc(sweep *s, int light)
 static int sweep_sort(sweep *s, int light)
 {
     engine *g = s->g;
-    size_t ne = g->ne, n1 = ne ? ne : 1;
-    for (size_t i = 0; i < ne; i++) {
-        s->ys[2 * i] = g->E[i].yb;
-        s->ys[2 * i + 1] = g->E[i].yt;
-    }
-    size_t nscratch = 2 * n1 > g->nh ? 2 * n1 : g->nh;
-    keyval *scratch = malloc(nscratch * sizeof *scratch);
-    if (!scratch)
-        return 0;
+    size_t ne = g->ne;
+    keyval *scratch = s->scratch, *tmp = s->scratch2;
     int64_t ymin = INT64_MAX;
-    for (size_t i = 0; i < 2 * ne; i++)
-        ymin = s->ys[i] < ymin ? s->ys[i] : ymin;
-    for (size_t i = 0; i < 2 * ne; i++)
-        scratch[i] = (keyval){(uint64_t)(s->ys[i] - ymin), 0};
-    int sorted = radix_sort(scratch, 2 * ne);
+    for (size_t i = 0; i < ne; i++)
+        ymin = g->E[i].yb < ymin ? g->E[i].yb : ymin;
+    for (size_t i = 0; i < ne; i++) {
+        scratch[2 * i] = (keyval){(uint64_t)(g->E[i].yb - ymin), 0};
+        scratch[2 * i + 1] = (keyval){(uint64_t)(g->E[i].yt - ymin), 0};
+    }
+    int sorted = radix_sort(scratch, 2 * ne, tmp);
     size_t u = 0;
     for (size_t i = 0; sorted && i < 2 * ne; i++) {
         int64_t y = (int64_t)scratch[i].key + ymin;
@@ -1499,23 +1513,20 @@ static int sweep_sort(sweep *s, int light)
     }
     s->nys = u;
     if (sorted && ne)
-        sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom, scratch);
+        sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom, scratch,
+                               tmp);
     if (sorted && ne && light)
-        sorted = sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top, scratch);
+        sorted = sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top, scratch,
+                               tmp);
     if (sorted && g->nh > 1) {
-        hseg *h2 = malloc(g->nh * sizeof *h2);
-        uint32_t *order = malloc(g->nh * sizeof *order);
-        sorted = h2 && order &&
-                 sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, order, scratch);
+        sorted = sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
+                               tmp);
         if (sorted) {
             for (size_t i = 0; i < g->nh; i++)
-                h2[i] = g->H[order[i]];
-            memcpy(g->H, h2, g->nh * sizeof *h2);
+                s->hsorted[i] = g->H[s->horder[i]];
+            memcpy(g->H, s->hsorted, g->nh * sizeof *g->H);
         }
-        free(h2);
-        free(order);
     }
-    free(scratch);
     return sorted;
 }
 
@@ -1535,7 +1546,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
          * The light sweep costs about LIGHT_COST active edges' worth of work
          * per edge; it is tried first when the full sweep was dearer. */
         int light = pass >= 1 && visits > LIGHT_COST * edges;
-        sweep_free(&s);
+        sweep_reset(&s);
         if (!sweep_alloc(&s, light) || !sweep_sort(&s, light))
             break;
         if (light) {
@@ -1550,10 +1561,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
                 break;
             }
             /* something to split: start over with the full sweep */
-            size_t n1 = g->ne ? g->ne : 1;
-            memset(s.run_open, 0, n1);
-            memset(s.brk, 0, n1);
-            memset(s.brk_next, 0, n1);
+            memset(s.run_open, 0, 4 * (g->ne ? g->ne : 1)); /* and run_up, brk, brk_next */
             g->ns = 0;
         }
         g->np = 0;
@@ -1579,7 +1587,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             break;
         }
     }
-    sweep_free(&s);
+    free(s.mem);
     return st;
 }
 

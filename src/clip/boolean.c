@@ -220,47 +220,51 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
 }
 
 
-/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n,
- * tmp of n or NULL.  Both keys are packed into one when their ranges fit in
- * 64 bits. */
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
+ * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
+ * NULL.  A radix sort by k1, then each run of equal k1 (short in practice)
+ * by k2. */
 static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                          uint32_t *idx, keyval *scratch, keyval *tmp)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (i) * stride))
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
         return 1;
-    int64_t lo1 = KEY(k1, 0), hi1 = lo1, lo2 = KEY(k2, 0), hi2 = lo2;
+    int64_t lo1 = KEY(k1, 0);
     for (size_t i = 1; i < n; i++) {
-        int64_t a = KEY(k1, i), b = KEY(k2, i);
+        int64_t a = KEY(k1, i);
         lo1 = a < lo1 ? a : lo1;
-        hi1 = a > hi1 ? a : hi1;
-        lo2 = b < lo2 ? b : lo2;
-        hi2 = b > hi2 ? b : hi2;
     }
-    int bits2 = 0;
-    while (bits2 < 63 && ((uint64_t)(hi2 - lo2) >> bits2))
-        bits2++;
-    int bits1 = 0;
-    while (bits1 < 63 && ((uint64_t)(hi1 - lo1) >> bits1))
-        bits1++;
-    if (bits1 + bits2 <= 64) {
-        for (size_t i = 0; i < n; i++)
-            scratch[i] = (keyval){((uint64_t)(KEY(k1, i) - lo1) << bits2) |
-                                      (uint64_t)(KEY(k2, i) - lo2),
-                                  (uint32_t)i};
-        if (!radix_sort(scratch, n, tmp))
-            return 0;
-    } else {
-        for (size_t i = 0; i < n; i++)
-            scratch[i] = (keyval){(uint64_t)(KEY(k2, i) - lo2), (uint32_t)i};
-        if (!radix_sort(scratch, n, tmp))
-            return 0;
-        for (size_t i = 0; i < n; i++) {
-            uint32_t v = scratch[i].val;
-            scratch[i] = (keyval){(uint64_t)(KEY(k1, v) - lo1), v};
+    for (size_t i = 0; i < n; i++)
+        scratch[i] = (keyval){(uint64_t)(KEY(k1, i) - lo1), (uint32_t)i};
+    if (!radix_sort(scratch, n, tmp))
+        return 0;
+    for (size_t i = 0; i < n;) {
+        size_t j = i + 1;
+        while (j < n && scratch[j].key == scratch[i].key)
+            j++;
+        if (j - i > 1) {
+            int64_t lo2 = KEY(k2, scratch[i].val);
+            for (size_t q = i + 1; q < j; q++) {
+                int64_t b = KEY(k2, scratch[q].val);
+                lo2 = b < lo2 ? b : lo2;
+            }
+            for (size_t q = i; q < j; q++)
+                scratch[q].key = (uint64_t)(KEY(k2, scratch[q].val) - lo2);
+            if (j - i > 256) {
+                if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
+                    return 0;
+            } else {
+                for (size_t q = i + 1; q < j; q++) {
+                    keyval v = scratch[q];
+                    size_t m = q;
+                    for (; m > i && scratch[m - 1].key > v.key; m--)
+                        scratch[m] = scratch[m - 1];
+                    scratch[m] = v;
+                }
+            }
         }
-        if (!radix_sort(scratch, n, tmp))
-            return 0;
+        i = j;
     }
     for (size_t i = 0; i < n; i++)
         idx[i] = scratch[i].val;
@@ -1449,8 +1453,9 @@ static int sweep_alloc(sweep *s, int light)
     size_t need = 24 * 16 + 2 * n1 * sizeof(int64_t) + 4 * n1 * sizeof(uint32_t) +
                   2 * n1 * sizeof(uint32_t) + 6 * n1 * sizeof(int64_t) + 4 * n1 +
                   2 * nscratch * sizeof(keyval) + nh * (sizeof(hseg) + sizeof(uint32_t));
+    need += n1 * sizeof(uint32_t);
     if (light)
-        need += 2 * n1 * sizeof(uint32_t) + (3 * n1 + 1) * sizeof(uint32_t);
+        need += n1 * sizeof(uint32_t) + (3 * n1 + 1) * sizeof(uint32_t);
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
@@ -1482,42 +1487,35 @@ static int sweep_alloc(sweep *s, int light)
     s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
     s->hsorted = carve(&p, nh * sizeof *s->hsorted);
     s->horder = carve(&p, nh * sizeof *s->horder);
+    s->by_top = carve(&p, n1 * sizeof *s->by_top);
     if (light) {
-        s->by_top = carve(&p, n1 * sizeof *s->by_top);
         s->clus = carve(&p, n1 * sizeof *s->clus);
         s->seam = carve(&p, (3 * n1 + 1) * sizeof *s->seam);
     }
     return 1;
 }
 
-/* Sorts the scanlines, the edges by bottom (and by top for the light
- * sweep) and the horizontal edges: 0 when out of memory. */
-static int sweep_sort(sweep *s, int light)
+/* Sorts the edges by bottom and by top, the scanlines (both merged) and the
+ * horizontal edges: 0 when out of memory. */
+static int sweep_sort(sweep *s)
 {
     engine *g = s->g;
     size_t ne = g->ne;
     keyval *scratch = s->scratch, *tmp = s->scratch2;
-    int64_t ymin = INT64_MAX;
-    for (size_t i = 0; i < ne; i++)
-        ymin = g->E[i].yb < ymin ? g->E[i].yb : ymin;
-    for (size_t i = 0; i < ne; i++) {
-        scratch[2 * i] = (keyval){(uint64_t)(g->E[i].yb - ymin), 0};
-        scratch[2 * i + 1] = (keyval){(uint64_t)(g->E[i].yt - ymin), 0};
-    }
-    int sorted = radix_sort(scratch, 2 * ne, tmp);
-    size_t u = 0;
-    for (size_t i = 0; sorted && i < 2 * ne; i++) {
-        int64_t y = (int64_t)scratch[i].key + ymin;
+    /* edges by bottom and by top; the scanlines are both merged */
+    int sorted = !ne || (sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
+                                       scratch, tmp) &&
+                         sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top,
+                                       scratch, tmp));
+    size_t u = 0, i = 0, j = 0;
+    while (sorted && (i < ne || j < ne)) {
+        int64_t y = j >= ne || (i < ne && g->E[s->by_bottom[i]].yb <= g->E[s->by_top[j]].yt)
+                        ? g->E[s->by_bottom[i++]].yb
+                        : g->E[s->by_top[j++]].yt;
         if (u == 0 || s->ys[u - 1] != y)
             s->ys[u++] = y;
     }
     s->nys = u;
-    if (sorted && ne)
-        sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom, scratch,
-                               tmp);
-    if (sorted && ne && light)
-        sorted = sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top, scratch,
-                               tmp);
     if (sorted && g->nh > 1) {
         sorted = sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
                                tmp);
@@ -1547,7 +1545,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
          * per edge; it is tried first when the full sweep was dearer. */
         int light = pass >= 1 && visits > LIGHT_COST * edges;
         sweep_reset(&s);
-        if (!sweep_alloc(&s, light) || !sweep_sort(&s, light))
+        if (!sweep_alloc(&s, light) || !sweep_sort(&s))
             break;
         if (light) {
             g->np = 0;

@@ -295,6 +295,9 @@ typedef struct sweep {
     int64_t *run_x, *run_y;
     int classify, changed;
     size_t visits; /* active edges summed over the scanlines (full sweep) */
+    uint32_t *brkq, *brkq_next; /* the edges of brk, of brk_next (full sweep) */
+    size_t nbrkq, capbrkq;
+    int brkq_full;
     int use_input_lines; /* round on the input edges (early passes) */
 } sweep;
 
@@ -315,6 +318,12 @@ static int meet(sweep *s, uint32_t e, int64_t y, int next)
     int64_t x;
     const bedge *ed = &s->g->E[e];
     if (x_is_integer(ed, y, &x)) {
+        if (next && !s->brk_next[e]) {
+            if (s->nbrkq < s->capbrkq)
+                s->brkq_next[s->nbrkq++] = e;
+            else
+                s->brkq_full = 1;
+        }
         (next ? s->brk_next : s->brk)[e] = 1;
         /* an exact split is not needed: the run breaks there */
         return 1;
@@ -448,6 +457,28 @@ static void sort_u32(uint32_t *a, size_t n)
     }
 }
 
+static inline void copy_ids(uint32_t *dst, const uint32_t *src, size_t n)
+{
+    if (n > 16) {
+        memcpy(dst, src, n * sizeof *dst);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        dst[i] = src[i];
+}
+
+/* sign of x_e(y) - X for an integer X; xe is the double value */
+static inline int cmp_xi(const bedge *e, int64_t y, int64_t X, double xe)
+{
+    double d = xe - (double)X;
+    if (d > 0.01)
+        return 1;
+    if (d < -0.01)
+        return -1;
+    i128 n = x_num(e, y), r = (i128)X * x_den(e);
+    return (n > r) - (n < r);
+}
+
 /* Passing edges of above[] (sorted at y, x at y in xc) whose x lies within
  * a horizontal edge H[h0..h1) at y (sorted by x0) meet it: a vertex there.
  * Their positions are added to dirty[]. */
@@ -555,10 +586,13 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
     return 1;
 }
 
+/* Returns 1 when done, 0 when out of memory, -1 when the active list was
+ * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
+ * result). */
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, nh = g->nh, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, nh = g->nh, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
     s->nact = 0;
@@ -593,41 +627,133 @@ static int run_sweep(sweep *s)
             fresh[m] = e;
             nf++;
         }
+        /* edges ending here, by x */
+        size_t t0 = it;
+        while (it < ne && E[s->by_top[it]].yt == y)
+            it++;
+        /* the edges with a run break here, found at the top of the last
+         * beam */
+        uint32_t *q = s->brkq;
+        s->brkq = s->brkq_next;
+        s->brkq_next = q;
+        size_t nq = s->nbrkq;
+        int q_full = s->brkq_full;
+        s->nbrkq = 0;
+        s->brkq_full = 0;
         /* above: the passing edges in their order (sorted at y by the last
-         * beam), the new ones merged in; edges ending here close their runs */
+         * beam) with the ending ones taken out and the new ones put in, at
+         * the points where edges end or start (found by binary search);
+         * passing edges through such a point need a vertex there */
         size_t na = 0, jf = 0, nd = 0;
         int dirty_sorted = 1;
         uint32_t *above = s->nxt;
-        for (size_t k = 0; k < nb; k++) {
-            uint32_t e = below[k];
-            if (E[e].yt == y) {
-                if (s->classify && s->run_open[e] && !close_run(s, e, y))
-                    return 0;
-                continue;
+        if (nb < 4 * (nf + it - t0) + 32) {
+            /* few edges: one look at each */
+            for (size_t k = 0; k < nb; k++) {
+                uint32_t e = below[k];
+                if (E[e].yt == y) {
+                    if (s->classify && s->run_open[e] && !close_run(s, e, y))
+                        return 0;
+                    continue;
+                }
+                while (jf < nf) {
+                    uint32_t f = fresh[jf];
+                    double xf = xc[f];
+                    int c = xc[e] < xf - 0.01 ? -1 : cmp_x(&E[e], &E[f], y, xc[e], xf);
+                    if (c < 0)
+                        break;
+                    if (c == 0) {
+                        /* a new edge starts on a passing one: a vertex there */
+                        if (!meet(s, e, y, 0))
+                            return 0;
+                        break; /* the order at yn is settled below */
+                    }
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = f;
+                    jf++;
+                }
+                if (s->brk[e])
+                    dirty[nd++] = (uint32_t)na;
+                above[na++] = e;
             }
             while (jf < nf) {
-                uint32_t f = fresh[jf];
-                double xf = xc[f];
-                int c = xc[e] < xf - 0.01 ? -1 : cmp_x(&E[e], &E[f], y, xc[e], xf);
-                if (c < 0)
-                    break;
-                if (c == 0) {
-                    /* a new edge starts on a passing one: a vertex there */
-                    if (!meet(s, e, y, 0))
-                        return 0;
-                    break; /* the order at yn is settled below */
-                }
                 dirty[nd++] = (uint32_t)na;
-                above[na++] = f;
-                jf++;
+                above[na++] = fresh[jf++];
             }
-            if (s->brk[e])
-                dirty[nd++] = (uint32_t)na;
-            above[na++] = e;
-        }
-        while (jf < nf) {
-            dirty[nd++] = (uint32_t)na;
-            above[na++] = fresh[jf++];
+        } else {
+            size_t jt = t0, ib = 0, ended = 0;
+            while (jf < nf || jt < it) {
+                int64_t X = jt >= it || (jf < nf && E[fresh[jf]].xb <= E[s->by_top[jt]].xt)
+                                ? E[fresh[jf]].xb
+                                : E[s->by_top[jt]].xt;
+                size_t f0 = jf;
+                while (jf < nf && E[fresh[jf]].xb == X)
+                    jf++;
+                while (jt < it && E[s->by_top[jt]].xt == X)
+                    jt++;
+                size_t lo = ib, hi = nb;
+                while (lo < hi) {
+                    size_t mid = lo + (hi - lo) / 2;
+                    if (xc[below[mid]] < (double)X - 0.5)
+                        lo = mid + 1;
+                    else
+                        hi = mid;
+                }
+                while (lo < nb && cmp_xi(&E[below[lo]], y, X, xc[below[lo]]) < 0)
+                    lo++;
+                copy_ids(above + na, below + ib, lo - ib);
+                na += lo - ib;
+                ib = lo;
+                while (ib < nb && cmp_xi(&E[below[ib]], y, X, xc[below[ib]]) == 0) {
+                    uint32_t e = below[ib++];
+                    if (E[e].yt == y) {
+                        ended++;
+                        if (s->classify && s->run_open[e] && !close_run(s, e, y))
+                            return 0;
+                        continue;
+                    }
+                    if (jf > f0 && !meet(s, e, y, 0))
+                        return 0;
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = e;
+                }
+                for (size_t k = f0; k < jf; k++) {
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = fresh[k];
+                }
+            }
+            copy_ids(above + na, below + ib, nb - ib);
+            na += nb - ib;
+            if (ended != it - t0)
+                return -1; /* not sorted as expected (cannot happen) */
+            if (q_full) {
+                for (size_t k = 0; k < na; k++)
+                    if (s->brk[above[k]])
+                        dirty[nd++] = (uint32_t)k;
+                dirty_sorted = 0;
+            } else if (nq && s->classify) {
+                /* their positions, by binary search on x */
+                for (size_t k = 0; k < nq; k++) {
+                    uint32_t e = s->brkq[k];
+                    if (E[e].yt <= y)
+                        continue;
+                    double xe = xc[e];
+                    size_t lo = 0, hi = na;
+                    while (lo < hi) {
+                        size_t mid = lo + (hi - lo) / 2;
+                        if (xc[above[mid]] < xe - 0.5)
+                            lo = mid + 1;
+                        else
+                            hi = mid;
+                    }
+                    while (lo < na && above[lo] != e)
+                        lo++;
+                    if (lo < na) {
+                        dirty[nd++] = (uint32_t)lo;
+                        dirty_sorted = 0;
+                    }
+                }
+            }
         }
         /* (edges meeting at y were found at the top of the last beam, or
          * just above) */
@@ -706,18 +832,6 @@ static int run_sweep(sweep *s)
 
 /* ---- the light sweep ------------------------------------------------------- */
 
-/* sign of x_e(y) - X for an integer X; xe is the double value */
-static inline int cmp_xi(const bedge *e, int64_t y, int64_t X, double xe)
-{
-    double d = xe - (double)X;
-    if (d > 0.01)
-        return 1;
-    if (d < -0.01)
-        return -1;
-    i128 n = x_num(e, y), r = (i128)X * x_den(e);
-    return (n > r) - (n < r);
-}
-
 /* the order of a and b just above a point they share: by direction */
 static inline int cmp_dir(const bedge *a, const bedge *b)
 {
@@ -731,16 +845,6 @@ static int cross_above(const bedge *a, const bedge *b)
 {
     int64_t yt = a->yt < b->yt ? a->yt : b->yt;
     return cmp_x(a, b, yt, x_at(a, yt), x_at(b, yt)) > 0;
-}
-
-static inline void copy_ids(uint32_t *dst, const uint32_t *src, size_t n)
-{
-    if (n > 16) {
-        memcpy(dst, src, n * sizeof *dst);
-        return;
-    }
-    for (size_t i = 0; i < n; i++)
-        dst[i] = src[i];
 }
 
 #define LIGHT_BAIL 2
@@ -1453,7 +1557,7 @@ static int sweep_alloc(sweep *s, int light)
     size_t need = 24 * 16 + 2 * n1 * sizeof(int64_t) + 4 * n1 * sizeof(uint32_t) +
                   2 * n1 * sizeof(uint32_t) + 6 * n1 * sizeof(int64_t) + 4 * n1 +
                   2 * nscratch * sizeof(keyval) + nh * (sizeof(hseg) + sizeof(uint32_t));
-    need += n1 * sizeof(uint32_t);
+    need += 3 * n1 * sizeof(uint32_t);
     if (light)
         need += n1 * sizeof(uint32_t) + (3 * n1 + 1) * sizeof(uint32_t);
     if (need > s->memcap) {
@@ -1488,6 +1592,9 @@ static int sweep_alloc(sweep *s, int light)
     s->hsorted = carve(&p, nh * sizeof *s->hsorted);
     s->horder = carve(&p, nh * sizeof *s->horder);
     s->by_top = carve(&p, n1 * sizeof *s->by_top);
+    s->brkq = carve(&p, n1 * sizeof *s->brkq);
+    s->brkq_next = carve(&p, n1 * sizeof *s->brkq_next);
+    s->capbrkq = n1;
     if (light) {
         s->clus = carve(&p, n1 * sizeof *s->clus);
         s->seam = carve(&p, (3 * n1 + 1) * sizeof *s->seam);
@@ -1568,8 +1675,12 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
-        if (!run_sweep(&s))
+        int r = run_sweep(&s);
+        if (r <= 0) {
+            if (r < 0)
+                st = CG_ERANGE;
             break;
+        }
         visits = s.visits;
         edges = g->ne;
         if (!s.changed) {

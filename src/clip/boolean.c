@@ -1748,6 +1748,14 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                                                  : op == CG_CLIP_UNION      ? a || b
                                                  : op == CG_CLIP_DIFFERENCE ? a && !b
                                                                             : a != b);
+    /* room for the input's edges and some pieces: no regrowth */
+    size_t npts = (subject ? subject->point_count : 0) + (clip ? clip->point_count : 0);
+    if (npts && npts < UINT32_MAX / 4) {
+        g.cape = npts + npts / 4 + 64;
+        g.E = malloc(g.cape * sizeof *g.E);
+        if (!g.E)
+            g.cape = 0;
+    }
     cg_status st = load(&g, subject, 0);
     if (st == CG_OK)
         st = load(&g, clip, 1);

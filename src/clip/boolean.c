@@ -1091,7 +1091,9 @@ static int add_hot_pixel_splits(engine *g)
     return 1;
 }
 
-static int apply_splits(engine *g)
+/* map[old edge] receives its new index, or UINT32_MAX when it was split
+ * (the pieces come after the edges kept, in g->E[*kept..]). */
+static int apply_splits(engine *g, uint32_t *map, size_t *kept)
 {
     qsort(g->S, g->ns, sizeof *g->S, cmp_split);
     size_t old_ne = g->ne;
@@ -1147,9 +1149,14 @@ static int apply_splits(engine *g)
     free(buf);
     /* compact */
     size_t w = 0;
-    for (size_t i = 0; i < g->ne; i++)
-        if (i >= old_ne || !dead[i])
+    for (size_t i = 0; i < old_ne; i++) {
+        map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
+        if (!dead[i])
             g->E[w++] = g->E[i];
+    }
+    *kept = w;
+    for (size_t i = old_ne; i < g->ne; i++)
+        g->E[w++] = g->E[i];
     g->ne = w;
     g->ns = 0;
     free(dead);
@@ -1602,15 +1609,68 @@ static int sweep_alloc(sweep *s, int light)
     return 1;
 }
 
-/* Sorts the edges by bottom and by top, the scanlines (both merged) and the
- * horizontal edges: 0 when out of memory. */
-static int sweep_sort(sweep *s)
+/* What a pass leaves to the next: its orders of the edges and where its
+ * edges went (apply_splits). */
+typedef struct carry {
+    uint32_t *by_bottom, *by_top, *map;
+    size_t n, cap;   /* edges of the last pass */
+    size_t kept;     /* of them, not split: now g->E[0..kept) */
+    size_t nh_sorted; /* g->H[0..nh_sorted) is in order */
+    int valid;
+} carry;
+
+/* order[0..n) by (k1, k2) of the edges (fields of bedge) */
+static inline int edge_before(const bedge *a, const bedge *b, int top)
+{
+    int64_t a1 = top ? a->yt : a->yb, b1 = top ? b->yt : b->yb;
+    if (a1 != b1)
+        return a1 < b1;
+    return (top ? a->xt : a->xb) <= (top ? b->xt : b->xb);
+}
+
+/* out = the edges kept (in their last order, renumbered) merged with the
+ * pieces, sorted; tmp holds the pieces' order.  0 when the count is off. */
+static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, uint32_t *tmp,
+                       int top)
+{
+    engine *g = s->g;
+    const bedge *E = g->E;
+    size_t ne = g->ne, np = ne - c->kept, na = 0;
+    for (size_t i = 0; i < c->n; i++) {
+        uint32_t m = c->map[old[i]];
+        if (m != UINT32_MAX)
+            old[na++] = m;
+    }
+    if (na != c->kept)
+        return 0;
+    if (np) {
+        const bedge *P = &E[c->kept];
+        if (!sort_two_keys(top ? &P->yt : &P->yb, top ? &P->xt : &P->xb, sizeof(bedge), np, tmp,
+                           s->scratch, s->scratch2))
+            return 0;
+        for (size_t i = 0; i < np; i++)
+            tmp[i] += (uint32_t)c->kept;
+    }
+    size_t i = 0, j = 0, k = 0;
+    while (i < na || j < np)
+        out[k++] = j >= np || (i < na && edge_before(&E[old[i]], &E[tmp[j]], top)) ? old[i++]
+                                                                                   : tmp[j++];
+    return 1;
+}
+
+/* Sorts the edges by bottom and by top (from the last pass's orders when
+ * there is one), the scanlines (both merged) and the horizontal edges: 0
+ * when out of memory. */
+static int sweep_sort(sweep *s, carry *c)
 {
     engine *g = s->g;
     size_t ne = g->ne;
     keyval *scratch = s->scratch, *tmp = s->scratch2;
     /* edges by bottom and by top; the scanlines are both merged */
-    int sorted = !ne || (sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
+    int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->fresh, 0) &&
+                 merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
+    if (!sorted)
+        sorted = !ne || (sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
                                        scratch, tmp) &&
                          sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top,
                                        scratch, tmp));
@@ -1623,7 +1683,7 @@ static int sweep_sort(sweep *s)
             s->ys[u++] = y;
     }
     s->nys = u;
-    if (sorted && g->nh > 1) {
+    if (sorted && g->nh > 1 && !(c->valid && c->nh_sorted == g->nh)) {
         sorted = sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
                                tmp);
         if (sorted) {
@@ -1632,7 +1692,31 @@ static int sweep_sort(sweep *s)
             memcpy(g->H, s->hsorted, g->nh * sizeof *g->H);
         }
     }
+    c->nh_sorted = g->nh;
+    c->valid = 0;
     return sorted;
+}
+
+/* Keeps the orders of this pass for the next one (before apply_splits). */
+static int carry_keep(carry *c, const sweep *s)
+{
+    size_t ne = s->g->ne;
+    if (ne > c->cap) {
+        size_t cap = ne + ne / 2;
+        free(c->by_bottom);
+        free(c->by_top);
+        free(c->map);
+        c->by_bottom = malloc(cap * sizeof *c->by_bottom);
+        c->by_top = malloc(cap * sizeof *c->by_top);
+        c->map = malloc(cap * sizeof *c->map);
+        c->cap = c->by_bottom && c->by_top && c->map ? cap : 0;
+        if (!c->cap)
+            return 0;
+    }
+    memcpy(c->by_bottom, s->by_bottom, ne * sizeof *c->by_bottom);
+    memcpy(c->by_top, s->by_top, ne * sizeof *c->by_top);
+    c->n = ne;
+    return 1;
 }
 
 static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
@@ -1642,6 +1726,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     s.g = g;
     cg_status st = CG_ENOMEM;
     size_t visits = 0, edges = 0; /* of the last full sweep */
+    carry c;
+    memset(&c, 0, sizeof c);
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
@@ -1652,7 +1738,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
          * per edge; it is tried first when the full sweep was dearer. */
         int light = pass >= 1 && visits > LIGHT_COST * edges;
         sweep_reset(&s);
-        if (!sweep_alloc(&s, light) || !sweep_sort(&s))
+        if (!sweep_alloc(&s, light) || !sweep_sort(&s, &c))
             break;
         if (light) {
             g->np = 0;
@@ -1689,14 +1775,18 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
-        if (!apply_splits(g))
+        if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
             break;
+        c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {
             st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
             break;
         }
     }
     free(s.mem);
+    free(c.by_bottom);
+    free(c.by_top);
+    free(c.map);
     return st;
 }
 

@@ -137,6 +137,8 @@ static void profile_one(const char *name, const shape *a, const shape *b, int op
     fprintf(stderr, "%-56s %s area %.6e\n", name, only, area);
 }
 
+/* Times are medians of processor time (steadier than wall time on a shared
+ * machine; every library here is single-threaded). */
 static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
 {
     char name[128], note[160];
@@ -148,7 +150,7 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
         return;
     }
     job j = {a, b, op, {0}, NULL, 0};
-    double t_cg = bench_median(run_cg, &j, runs);
+    double t_cg = bench_median_clock(run_cg, &j, runs, CLOCK_PROCESS_CPUTIME_ID);
     double area_cg = cg_polygon_set64_area(&j.result);
     size_t nv = j.result.point_count;
     cg_polygon_set64_clear(&j.result);
@@ -166,7 +168,7 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
             continue;
         }
         j.peer = p->prepare(&pa, &pb);
-        double t = bench_median(p->run, &j, p->runs);
+        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID);
         snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
                  area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
         bench_row(name, t_cg, p->name, t, note);

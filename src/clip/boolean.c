@@ -1560,7 +1560,7 @@ static void *carve(char **p, size_t bytes)
 static int sweep_alloc(sweep *s, int light)
 {
     size_t n1 = s->g->ne ? s->g->ne : 1, nh = s->g->nh;
-    size_t nscratch = 2 * n1 > nh ? 2 * n1 : nh;
+    size_t nscratch = n1 > nh ? n1 : nh;
     size_t need = 24 * 16 + 2 * n1 * sizeof(int64_t) + 4 * n1 * sizeof(uint32_t) +
                   2 * n1 * sizeof(uint32_t) + 6 * n1 * sizeof(int64_t) + 4 * n1 +
                   2 * nscratch * sizeof(keyval) + nh * (sizeof(hseg) + sizeof(uint32_t));
@@ -1570,7 +1570,7 @@ static int sweep_alloc(sweep *s, int light)
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
-        need += need / 2; /* the next pass usually has a few more edges */
+        need += need / 4; /* the next pass usually has a few more edges */
         s->mem = malloc(need);
         if (!s->mem)
             return 0;

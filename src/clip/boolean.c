@@ -479,6 +479,58 @@ static inline int cmp_xi(const bedge *e, int64_t y, int64_t X, double xe)
     return (n > r) - (n < r);
 }
 
+/* The horizontal edges at y: H[*h0..*ih) (ih moves on from scanline to
+ * scanline). */
+static inline void horizontals_at(const engine *g, int64_t y, size_t *ih, size_t *h0)
+{
+    while (*ih < g->nh && g->H[*ih].y < y)
+        (*ih)++;
+    *h0 = *ih;
+    while (*ih < g->nh && g->H[*ih].y == y)
+        (*ih)++;
+}
+
+/* x of list[i] at y: from xc, or computed when xc is NULL */
+static inline double x_of(const bedge *E, const uint32_t *list, size_t i, int64_t y,
+                          const double *xc)
+{
+    return xc ? xc[list[i]] : x_at(&E[list[i]], y);
+}
+
+/* The first position in list[lo..hi) (sorted by x at y) whose x at y is
+ * not below the integer X. */
+static size_t first_at_x(const bedge *E, const uint32_t *list, size_t lo, size_t hi, int64_t y,
+                         int64_t X, const double *xc)
+{
+    size_t n = hi;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (x_of(E, list, mid, y, xc) < (double)X - 0.5)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    while (lo < n && cmp_xi(&E[list[lo]], y, X, x_of(E, list, lo, y, xc)) < 0)
+        lo++;
+    return lo;
+}
+
+/* The next point where edges start (fresh[*jf..nf), by x) or end
+ * (top[*jt..it), by x) on this scanline: its x; fresh[f0..*jf) start there
+ * and the cursors move past it. */
+static inline int64_t next_event(const bedge *E, const uint32_t *fresh, size_t nf, size_t *jf,
+                                 const uint32_t *top, size_t it, size_t *jt, size_t *f0)
+{
+    int64_t X = *jt >= it || (*jf < nf && E[fresh[*jf]].xb <= E[top[*jt]].xt) ? E[fresh[*jf]].xb
+                                                                             : E[top[*jt]].xt;
+    *f0 = *jf;
+    while (*jf < nf && E[fresh[*jf]].xb == X)
+        (*jf)++;
+    while (*jt < it && E[top[*jt]].xt == X)
+        (*jt)++;
+    return X;
+}
+
 /* Passing edges of above[] (sorted at y, x at y in xc) whose x lies within
  * a horizontal edge H[h0..h1) at y (sorted by x0) meet it: a vertex there.
  * Their positions are added to dirty[]. */
@@ -592,7 +644,7 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, nh = g->nh, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
     s->nact = 0;
@@ -683,24 +735,9 @@ static int run_sweep(sweep *s)
         } else {
             size_t jt = t0, ib = 0, ended = 0;
             while (jf < nf || jt < it) {
-                int64_t X = jt >= it || (jf < nf && E[fresh[jf]].xb <= E[s->by_top[jt]].xt)
-                                ? E[fresh[jf]].xb
-                                : E[s->by_top[jt]].xt;
-                size_t f0 = jf;
-                while (jf < nf && E[fresh[jf]].xb == X)
-                    jf++;
-                while (jt < it && E[s->by_top[jt]].xt == X)
-                    jt++;
-                size_t lo = ib, hi = nb;
-                while (lo < hi) {
-                    size_t mid = lo + (hi - lo) / 2;
-                    if (xc[below[mid]] < (double)X - 0.5)
-                        lo = mid + 1;
-                    else
-                        hi = mid;
-                }
-                while (lo < nb && cmp_xi(&E[below[lo]], y, X, xc[below[lo]]) < 0)
-                    lo++;
+                size_t f0;
+                int64_t X = next_event(E, fresh, nf, &jf, s->by_top, it, &jt, &f0);
+                size_t lo = first_at_x(E, below, ib, nb, y, X, xc);
                 copy_ids(above + na, below + ib, lo - ib);
                 na += lo - ib;
                 ib = lo;
@@ -758,11 +795,8 @@ static int run_sweep(sweep *s)
         /* (edges meeting at y were found at the top of the last beam, or
          * just above) */
         /* horizontal edges on this scanline */
-        while (ih < nh && g->H[ih].y < y)
-            ih++;
-        size_t h0 = ih;
-        while (ih < nh && g->H[ih].y == y)
-            ih++;
+        size_t h0;
+        horizontals_at(g, y, &ih, &h0);
         if (ih > h0) {
             if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
                 return 0;
@@ -861,7 +895,7 @@ static int cross_above(const bedge *a, const bedge *b)
 static int light_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, nh = g->nh, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty, *clus = s->clus, *seam = s->seam;
     const uint32_t *by_top = s->by_top;
@@ -892,24 +926,9 @@ static int light_sweep(sweep *s)
          * (ending, passing, starting) are replaced by the passing and
          * starting ones in the order of their directions */
         while (jf < nf || jt < it) {
-            int64_t X = jt >= it || (jf < nf && E[fresh[jf]].xb <= E[by_top[jt]].xt)
-                            ? E[fresh[jf]].xb
-                            : E[by_top[jt]].xt;
-            size_t f0 = jf;
-            while (jf < nf && E[fresh[jf]].xb == X)
-                jf++;
-            while (jt < it && E[by_top[jt]].xt == X)
-                jt++;
-            size_t lo = ib, hi = nb;
-            while (lo < hi) {
-                size_t mid = lo + (hi - lo) / 2;
-                if (x_at(&E[below[mid]], y) < (double)X - 0.5)
-                    lo = mid + 1;
-                else
-                    hi = mid;
-            }
-            while (lo < nb && cmp_xi(&E[below[lo]], y, X, x_at(&E[below[lo]], y)) < 0)
-                lo++;
+            size_t f0;
+            int64_t X = next_event(E, fresh, nf, &jf, by_top, it, &jt, &f0);
+            size_t lo = first_at_x(E, below, ib, nb, y, X, NULL);
             copy_ids(above + na, below + ib, lo - ib);
             na += lo - ib;
             size_t nc = 0, c1 = lo;
@@ -925,18 +944,10 @@ static int light_sweep(sweep *s)
                 clus[nc++] = e;
             }
             ib = c1;
-            for (size_t k = f0; k < jf; k++) {
-                uint32_t e = fresh[k];
-                size_t m = nc;
-                while (m > 0 && cmp_dir(&E[clus[m - 1]], &E[e]) > 0) {
-                    clus[m] = clus[m - 1];
-                    m--;
-                }
-                clus[m] = e;
-                nc++;
-            }
-            /* passing edges through the point are in the order of their
-             * directions too (they may cross there) */
+            for (size_t k = f0; k < jf; k++)
+                clus[nc++] = fresh[k];
+            /* in the order of their directions (passing edges may cross
+             * there) */
             for (size_t k = 1; k < nc; k++) {
                 uint32_t v = clus[k];
                 size_t m = k;
@@ -958,11 +969,8 @@ static int light_sweep(sweep *s)
         copy_ids(above + na, below + ib, nb - ib);
         na += nb - ib;
         /* horizontal edges on this scanline: the whole line is looked at */
-        while (ih < nh && g->H[ih].y < y)
-            ih++;
-        size_t h0 = ih;
-        while (ih < nh && g->H[ih].y == y)
-            ih++;
+        size_t h0;
+        horizontals_at(g, y, &ih, &h0);
         if (ih > h0) {
             for (size_t k = 0; k < nb; k++)
                 s->xc[below[k]] = x_at(&E[below[k]], y);
@@ -1561,12 +1569,14 @@ static int sweep_alloc(sweep *s, int light)
 {
     size_t n1 = s->g->ne ? s->g->ne : 1, nh = s->g->nh;
     size_t nscratch = n1 > nh ? n1 : nh;
-    size_t need = 24 * 16 + 2 * n1 * sizeof(int64_t) + 4 * n1 * sizeof(uint32_t) +
-                  2 * n1 * sizeof(uint32_t) + 6 * n1 * sizeof(int64_t) + 4 * n1 +
-                  2 * nscratch * sizeof(keyval) + nh * (sizeof(hseg) + sizeof(uint32_t));
-    need += 3 * n1 * sizeof(uint32_t);
-    if (light)
-        need += n1 * sizeof(uint32_t) + (3 * n1 + 1) * sizeof(uint32_t);
+    uint32_t **ids[] = {&s->by_bottom, &s->by_top, &s->act, &s->nxt, &s->fresh, &s->brkq,
+                        &s->brkq_next, &s->clus};
+    int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
+    double **f64[] = {&s->xc, &s->xn};
+    size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
+    need += (nids * n1 + 2 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
+    need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
+    need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
@@ -1577,19 +1587,15 @@ static int sweep_alloc(sweep *s, int light)
         s->memcap = need;
     }
     char *p = s->mem;
+    for (size_t i = 0; i < nids; i++)
+        *ids[i] = carve(&p, n1 * sizeof(uint32_t));
+    for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
+        *i64[i] = carve(&p, n1 * sizeof(int64_t));
+    for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
+        *f64[i] = carve(&p, n1 * sizeof(double));
     s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
-    s->by_bottom = carve(&p, n1 * sizeof *s->by_bottom);
-    s->act = carve(&p, n1 * sizeof *s->act);
-    s->nxt = carve(&p, n1 * sizeof *s->nxt);
-    s->fresh = carve(&p, n1 * sizeof *s->fresh);
     s->dirty = carve(&p, 2 * n1 * sizeof *s->dirty);
-    s->wr0 = carve(&p, n1 * sizeof *s->wr0);
-    s->wr1 = carve(&p, n1 * sizeof *s->wr1);
-    s->xc = carve(&p, n1 * sizeof *s->xc);
-    s->xn = carve(&p, n1 * sizeof *s->xn);
-    s->run_x = carve(&p, n1 * sizeof *s->run_x);
-    s->run_y = carve(&p, n1 * sizeof *s->run_y);
-    s->run_open = carve(&p, 4 * n1);
+    s->run_open = carve(&p, 4 * n1); /* and run_up, brk, brk_next */
     s->run_up = s->run_open + n1;
     s->brk = s->run_open + 2 * n1;
     s->brk_next = s->run_open + 3 * n1;
@@ -1598,14 +1604,9 @@ static int sweep_alloc(sweep *s, int light)
     s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
     s->hsorted = carve(&p, nh * sizeof *s->hsorted);
     s->horder = carve(&p, nh * sizeof *s->horder);
-    s->by_top = carve(&p, n1 * sizeof *s->by_top);
-    s->brkq = carve(&p, n1 * sizeof *s->brkq);
-    s->brkq_next = carve(&p, n1 * sizeof *s->brkq_next);
-    s->capbrkq = n1;
-    if (light) {
-        s->clus = carve(&p, n1 * sizeof *s->clus);
+    if (light)
         s->seam = carve(&p, (3 * n1 + 1) * sizeof *s->seam);
-    }
+    s->capbrkq = n1;
     return 1;
 }
 

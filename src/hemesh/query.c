@@ -31,47 +31,19 @@ static int vertex_ok(const cg_hemesh *m, uint32_t v)
     return m && v < m->vertex_count && m->vertex_halfedge[v] < CG_HEMESH_DELETED;
 }
 
-size_t cg_hemesh_face_halfedges(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+/* what: 0 half-edges, 1 vertices, 2 neighbouring faces (boundary edges have
+ * none) of face f, in order; returns how many there are. */
+static size_t around_face(const cg_hemesh *m, uint32_t f, int what, uint32_t *out, size_t capacity)
 {
     if (!face_ok(m, f))
         return 0;
     size_t n = 0;
     uint32_t h0 = m->face_halfedge[f], h = h0;
     do {
-        if (n < capacity)
-            out[n] = h;
-        n++;
-        h = m->halfedges[h].next;
-    } while (h != h0);
-    return n;
-}
-
-size_t cg_hemesh_face_vertices(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
-{
-    if (!face_ok(m, f))
-        return 0;
-    size_t n = 0;
-    uint32_t h0 = m->face_halfedge[f], h = h0;
-    do {
-        if (n < capacity)
-            out[n] = m->halfedges[h].origin;
-        n++;
-        h = m->halfedges[h].next;
-    } while (h != h0);
-    return n;
-}
-
-size_t cg_hemesh_face_neighbors(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
-{
-    if (!face_ok(m, f))
-        return 0;
-    size_t n = 0;
-    uint32_t h0 = m->face_halfedge[f], h = h0;
-    do {
-        uint32_t g = m->halfedges[h ^ 1u].face;
-        if (g != CG_HEMESH_NONE) {
+        uint32_t x = what == 0 ? h : what == 1 ? m->halfedges[h].origin : m->halfedges[h ^ 1u].face;
+        if (x != CG_HEMESH_NONE || what != 2) {
             if (n < capacity)
-                out[n] = g;
+                out[n] = x;
             n++;
         }
         h = m->halfedges[h].next;
@@ -79,13 +51,29 @@ size_t cg_hemesh_face_neighbors(const cg_hemesh *m, uint32_t f, uint32_t *out, s
     return n;
 }
 
+size_t cg_hemesh_face_halfedges(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    return around_face(m, f, 0, out, capacity);
+}
+
+size_t cg_hemesh_face_vertices(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    return around_face(m, f, 1, out, capacity);
+}
+
+size_t cg_hemesh_face_neighbors(const cg_hemesh *m, uint32_t f, uint32_t *out, size_t capacity)
+{
+    return around_face(m, f, 2, out, capacity);
+}
+
 size_t cg_hemesh_face_size(const cg_hemesh *m, uint32_t f)
 {
     return cg_hemesh_face_halfedges(m, f, NULL, 0);
 }
 
-/* what: 0 outgoing half-edges, 1 neighbours, 2 faces */
-static size_t around(const cg_hemesh *m, uint32_t v, int direction, int what, uint32_t *out,
+/* what: 0 outgoing half-edges, 1 neighbours, 2 faces (holes have none) of
+ * vertex v, turning in the given direction. */
+static size_t around_vertex(const cg_hemesh *m, uint32_t v, int direction, int what, uint32_t *out,
                      size_t capacity)
 {
     if (!vertex_ok(m, v))
@@ -107,24 +95,24 @@ static size_t around(const cg_hemesh *m, uint32_t v, int direction, int what, ui
 size_t cg_hemesh_vertex_outgoing(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
                                  size_t capacity)
 {
-    return around(m, v, direction, 0, out, capacity);
+    return around_vertex(m, v, direction, 0, out, capacity);
 }
 
 size_t cg_hemesh_vertex_neighbors(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
                                   size_t capacity)
 {
-    return around(m, v, direction, 1, out, capacity);
+    return around_vertex(m, v, direction, 1, out, capacity);
 }
 
 size_t cg_hemesh_vertex_faces(const cg_hemesh *m, uint32_t v, int direction, uint32_t *out,
                               size_t capacity)
 {
-    return around(m, v, direction, 2, out, capacity);
+    return around_vertex(m, v, direction, 2, out, capacity);
 }
 
 size_t cg_hemesh_valence(const cg_hemesh *m, uint32_t v)
 {
-    return around(m, v, 1, 0, NULL, 0);
+    return around_vertex(m, v, 1, 0, NULL, 0);
 }
 
 /* Adds the neighbours from half-edge h on until the rotation returns to h0. */

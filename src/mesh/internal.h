@@ -139,7 +139,10 @@ void text_skip_space_and_comments(text_cursor *t);
  * characters, non-printing ones as '?') or "the end of the line/file". */
 const char *text_describe(const text_cursor *t, char buffer[40]);
 
-/* Reads a number (after blanks) or fails with "name:line: expected WHAT, got ...". */
+/* Fails with CG_EFORMAT and "name:line: expected WHAT, got <text at the cursor>". */
+cg_status text_expected(const text_cursor *t, const char *what, cg_error *err);
+
+/* Reads a number (after blanks) or fails as text_expected does. */
 cg_status text_double(text_cursor *t, double *out, const char *what, cg_error *err);
 
 /* ---- helpers ----------------------------------------------------------- */

@@ -18,9 +18,7 @@ typedef struct off_reader {
 
 static cg_status off_fail(off_reader *r, const char *what)
 {
-    char buffer[40];
-    return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: expected %s, got %s", r->t.name, r->t.line,
-                        what, text_describe(&r->t, buffer));
+    return text_expected(&r->t, what, r->err);
 }
 
 static cg_status read_keyword(off_reader *r)

@@ -188,12 +188,17 @@ const char *text_describe(const text_cursor *t, char buffer[40])
     return buffer;
 }
 
+cg_status text_expected(const text_cursor *t, const char *what, cg_error *err)
+{
+    char buffer[40];
+    return cg_error_set(err, CG_EFORMAT, "%s:%zu: expected %s, got %s", t->name, t->line, what,
+                        text_describe(t, buffer));
+}
+
 cg_status text_double(text_cursor *t, double *out, const char *what, cg_error *err)
 {
     text_skip_blanks(t);
     if (t->p < t->end && parse_double(&t->p, t->end, out))
         return CG_OK;
-    char buffer[40];
-    return cg_error_set(err, CG_EFORMAT, "%s:%zu: expected %s, got %s", t->name, t->line, what,
-                        text_describe(t, buffer));
+    return text_expected(t, what, err);
 }

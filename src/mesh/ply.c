@@ -102,9 +102,7 @@ static size_t next_word(text_cursor *t, const char **word)
 
 static cg_status header_fail(ply_reader *r, text_cursor *t, const char *what)
 {
-    char buffer[40];
-    return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: expected %s, got %s", r->name, t->line, what,
-                        text_describe(t, buffer));
+    return text_expected(t, what, r->err);
 }
 
 /* Parses the header; *body is where the data starts. */
@@ -336,9 +334,15 @@ static cg_status begin_item(ply_reader *r, enum ply_kind kind)
     return s;
 }
 
-static cg_status end_face(ply_reader *r)
+/* Closes the face whose corners were just read. */
+static cg_status finish_face(ply_reader *r)
 {
-    return builder_end_face(&r->b);
+    if (builder_open_corners(&r->b) == 0)
+        return cg_error_set(r->err, CG_EFORMAT, "%s: the face element has no vertex_indices list",
+                            r->name);
+    if (builder_end_face(&r->b) != CG_OK)
+        return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
+    return CG_OK;
 }
 
 static int valid_integer(enum ply_type type, double value)
@@ -480,24 +484,17 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                 }
             }
             if (e->kind == E_FACE) {
-                if (builder_open_corners(&r->b) == 0)
-                    return cg_error_set(r->err, CG_EFORMAT,
-                                        "%s: the face element has no vertex_indices list",
-                                        r->name);
-                if (end_face(r) != CG_OK)
-                    return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
+                cg_status status = finish_face(r);
+                if (status != CG_OK)
+                    return status;
             }
         }
         if (e->kind == E_VERTEX)
             r->vertices_read = 1;
     }
     text_skip_space_and_comments(&t);
-    if (t.p < t.end) {
-        char buffer[40];
-        return cg_error_set(r->err, CG_EFORMAT,
-                            "%s:%zu: expected the end of the file after the last element, got %s",
-                            r->name, t.line, text_describe(&t, buffer));
-    }
+    if (t.p < t.end)
+        return text_expected(&t, "the end of the file after the last element", r->err);
     return CG_OK;
 }
 
@@ -644,12 +641,9 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                 }
             }
             if (e->kind == E_FACE) {
-                if (builder_open_corners(&r->b) == 0)
-                    return cg_error_set(r->err, CG_EFORMAT,
-                                        "%s: the face element has no vertex_indices list",
-                                        r->name);
-                if (end_face(r) != CG_OK)
-                    return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
+                cg_status status = finish_face(r);
+                if (status != CG_OK)
+                    return status;
             }
         }
         if (e->kind == E_VERTEX)

@@ -132,13 +132,6 @@ static int expect_word(text_cursor *t, const char *keyword)
     return 1;
 }
 
-static cg_status ascii_fail(text_cursor *t, const char *what, cg_error *err)
-{
-    char buffer[40];
-    return cg_error_set(err, CG_EFORMAT, "%s:%zu: expected %s, got %s", t->name, t->line, what,
-                        text_describe(t, buffer));
-}
-
 static void skip_rest_of_line(text_cursor *t)
 {
     while (t->p < t->end && !is_line_end(*t->p))
@@ -154,7 +147,7 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
         if (!expect_word(&t, "solid")) {
             if (solids && t.p >= t.end)
                 break;
-            return ascii_fail(&t, solids ? "'solid' or the end of the file" : "'solid'", err);
+            return text_expected(&t, solids ? "'solid' or the end of the file" : "'solid'", err);
         }
         solids++;
         skip_rest_of_line(&t); /* the solid's name */
@@ -164,9 +157,9 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
                 break;
             }
             if (!expect_word(&t, "facet"))
-                return ascii_fail(&t, "'facet' or 'endsolid'", err);
+                return text_expected(&t, "'facet' or 'endsolid'", err);
             if (!expect_word(&t, "normal"))
-                return ascii_fail(&t, "'normal' after 'facet'", err);
+                return text_expected(&t, "'normal' after 'facet'", err);
             double ignored;
             for (int k = 0; k < 3; k++) {
                 cg_status s = text_double(&t, &ignored, "a facet normal component", err);
@@ -174,7 +167,7 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
                     return s;
             }
             if (!expect_word(&t, "outer") || !expect_word(&t, "loop"))
-                return ascii_fail(&t, "'outer loop'", err);
+                return text_expected(&t, "'outer loop'", err);
             size_t corners = 0;
             while (expect_word(&t, "vertex")) {
                 double c[3];
@@ -194,13 +187,13 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
                 corners++;
             }
             if (corners < 3)
-                return ascii_fail(&t, corners ? "another 'vertex' (a facet has 3 or more)"
+                return text_expected(&t, corners ? "another 'vertex' (a facet has 3 or more)"
                                               : "'vertex'",
                                   err);
             if (!expect_word(&t, "endloop"))
-                return ascii_fail(&t, "'vertex' or 'endloop'", err);
+                return text_expected(&t, "'vertex' or 'endloop'", err);
             if (!expect_word(&t, "endfacet"))
-                return ascii_fail(&t, "'endfacet'", err);
+                return text_expected(&t, "'endfacet'", err);
             if (builder_end_face(b) != CG_OK)
                 return cg_error_set(err, CG_ENOMEM, "%s:%zu: out of memory", name, t.line);
         }

@@ -814,12 +814,17 @@ static int run_sweep(sweep *s)
             break;
         /* the order at yn: an inversion is a crossing inside the beam,
          * unless the two edges meet at y (then it is their order) */
+        double last = -INFINITY; /* x at yn of above[k - 1] */
         for (size_t k = 0; k < na; k++) {
             uint32_t v = above[k];
-            if (E[v].yb < y)
-                xn[v] = x_at(&E[v], yn);
-            if (k == 0 || xn[v] > xn[above[k - 1]] + 0.01)
+            const bedge *ev = &E[v];
+            double xv = yn == ev->yt ? (double)ev->xt
+                                     : (double)ev->xb + (double)(yn - ev->yb) * ev->slope;
+            xn[v] = xv;
+            if (xv > last + 0.01) {
+                last = xv;
                 continue;
+            }
             size_t m = k;
             while (m > 0) {
                 uint32_t u = above[m - 1];
@@ -853,6 +858,7 @@ static int run_sweep(sweep *s)
                 m--;
             }
             above[m] = v;
+            last = xn[above[k]];
         }
         if (!s->classify)
             continue; /* this pass will be repeated */

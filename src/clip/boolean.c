@@ -888,7 +888,7 @@ static int cross_above(const bedge *a, const bedge *b)
 }
 
 #define LIGHT_BAIL 2
-#define LIGHT_COST 8
+#define LIGHT_COST 16
 
 /* The sweep of a pass that is expected to find nothing to split (the pass
  * after the splits): Bentley-Ottmann's idea instead of a look at every

@@ -1580,7 +1580,7 @@ static int sweep_alloc(sweep *s, int light)
     int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
     double **f64[] = {&s->xc, &s->xn};
     size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
-    need += (nids * n1 + 2 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
+    need += (nids * n1 + 3 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
     need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
     need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
     if (need > s->memcap) {
@@ -1600,7 +1600,9 @@ static int sweep_alloc(sweep *s, int light)
     for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
         *f64[i] = carve(&p, n1 * sizeof(double));
     s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
-    s->dirty = carve(&p, 2 * n1 * sizeof *s->dirty);
+    /* dirty positions: new edges and run breaks at points, queued run
+     * breaks, horizontal meets: each at most once per position */
+    s->dirty = carve(&p, 3 * n1 * sizeof *s->dirty);
     s->run_open = carve(&p, 4 * n1); /* and run_up, brk, brk_next */
     s->run_up = s->run_open + n1;
     s->brk = s->run_open + 2 * n1;

@@ -106,12 +106,51 @@ typedef struct peer {
 
 static const char *op_name[4] = {"intersection", "union", "difference", "xor"};
 
+/* Profiling mode (for valgrind --tool=callgrind): --only cg|clipper|geos runs
+ * one library alone, once per case, and --match TEXT keeps the cases whose
+ * name contains TEXT. */
+static const char *only, *match;
+
+static void profile_one(const char *name, const shape *a, const shape *b, int op)
+{
+    job j = {a, b, op, {0}, NULL, 0};
+    peer_input pa = {a->xy, a->len, a->set.ring_count}, pb = {b->xy, b->len, b->set.ring_count};
+    double area = 0;
+    if (!strcmp(only, "cg")) {
+        run_cg(&j);
+        area = cg_polygon_set64_area(&j.result);
+        cg_polygon_set64_clear(&j.result);
+    } else if (!strcmp(only, "clipper") && peer_clipper_available()) {
+        j.peer = peer_clipper_prepare(&pa, &pb);
+        run_clipper(&j);
+        peer_clipper_free(j.peer);
+        area = j.area;
+    } else if (!strcmp(only, "geos") && peer_geos_available()) {
+        j.peer = peer_geos_prepare(&pa, &pb);
+        run_geos(&j);
+        peer_geos_free(j.peer);
+        area = j.area;
+    } else {
+        fprintf(stderr, "bench_clip: --only %s: unknown or not installed\n", only);
+        exit(2);
+    }
+    fprintf(stderr, "%-56s %s area %.6e\n", name, only, area);
+}
+
+/* Times are medians of processor time (steadier than wall time on a shared
+ * machine; every library here is single-threaded). */
 static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
 {
     char name[128], note[160];
     snprintf(name, sizeof name, "clip %s: %s", op_name[op], what);
+    if (match && !strstr(name, match))
+        return;
+    if (only) {
+        profile_one(name, a, b, op);
+        return;
+    }
     job j = {a, b, op, {0}, NULL, 0};
-    double t_cg = bench_median(run_cg, &j, runs);
+    double t_cg = bench_median_clock(run_cg, &j, runs, CLOCK_PROCESS_CPUTIME_ID);
     double area_cg = cg_polygon_set64_area(&j.result);
     size_t nv = j.result.point_count;
     cg_polygon_set64_clear(&j.result);
@@ -129,7 +168,7 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
             continue;
         }
         j.peer = p->prepare(&pa, &pb);
-        double t = bench_median(p->run, &j, p->runs);
+        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID);
         snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
                  area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
         bench_row(name, t_cg, p->name, t, note);
@@ -161,7 +200,16 @@ static void star_case(size_t n, double r0, const char *label, int ops, int runs)
 
 int main(int argc, char **argv)
 {
-    /* bench_clip [MAX_N [MIN_N]]: sizes of the size sweeps */
+    /* bench_clip [--only cg|clipper|geos] [--match TEXT] [MAX_N [MIN_N]]:
+     * sizes of the size sweeps */
+    while (argc > 2 && (!strcmp(argv[1], "--only") || !strcmp(argv[1], "--match"))) {
+        if (!strcmp(argv[1], "--only"))
+            only = argv[2];
+        else
+            match = argv[2];
+        argc -= 2;
+        argv += 2;
+    }
     size_t max_n = argc > 1 ? (size_t)atol(argv[1]) : 100000;
     size_t min_n = argc > 2 ? (size_t)atol(argv[2]) : 10;
     /* random star-shaped polygons: vertex k at angle 2 pi (k + jitter) / n,

@@ -325,6 +325,53 @@ static void double_api(void)
     cg_polygon_set_clear(&r);
 }
 
+/* All four operations on a and b: status, simple, oriented and nested
+ * results; with `samples`, that many random points away from the input
+ * edges per operation are in the result exactly when the definition says
+ * so; with tol > 0, the area identities within tol. */
+static void check_round(const char *tag, int it, const cg_polygon_set64 *a, cg_clip_fill fa,
+                        const cg_polygon_set64 *b, cg_clip_fill fb, check_rng *rng, int grid,
+                        int64_t scale, int samples, double tol, long *membership_checks)
+{
+    cg_polygon_set64 r[4] = {{0}};
+    for (int op = 0; op < 4; op++) {
+        cg_status st = cg_clip_boolean64((cg_clip_op)op, a, fa, b, fb, &r[op]);
+        CHECK_MSG(st == CG_OK, "%s %d op %d: status %d", tag, it, op, (int)st);
+        CHECK_MSG(result_is_simple(&r[op]), "%s %d op %d: result edges cross", tag, it, op);
+        CHECK_MSG(result_is_oriented(&r[op]), "%s %d op %d: orientation or nesting", tag, it, op);
+        for (int s = 0; s < samples; s++) {
+            double px = check_rng_range(rng, -0.5, grid + 0.5) * (double)scale;
+            double py = check_rng_range(rng, -0.5, grid + 0.5) * (double)scale;
+            if (dist_to_set(a, px, py) < 3 || dist_to_set(b, px, py) < 3)
+                continue;
+            int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(a, px, py)),
+                                 fill_rule(fb, winding(b, px, py)));
+            int got = (int)(winding(&r[op], px, py) & 1);
+            (*membership_checks)++;
+            CHECK_MSG(want == got, "%s %d op %d: point (%.2f, %.2f) in result %d, expected %d", tag,
+                      it, op, px, py, got, want);
+        }
+    }
+    if (tol > 0) {
+        double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
+        double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
+        cg_polygon_set64 ra = {0}, rb = {0};
+        cg_clip_boolean64(CG_CLIP_UNION, a, fa, NULL, fa, &ra);
+        cg_clip_boolean64(CG_CLIP_UNION, b, fb, NULL, fb, &rb);
+        double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
+        CHECK_MSG(fabs(U - (A + B - I)) <= tol, "%s %d: |AuB| %.0f, |A|+|B|-|AnB| %.0f", tag, it, U,
+                  A + B - I);
+        CHECK_MSG(fabs(X - (U - I)) <= tol, "%s %d: xor %.0f, union-intersection %.0f", tag, it, X,
+                  U - I);
+        CHECK_MSG(fabs(D - (A - I)) <= tol, "%s %d: difference %.0f, |A|-|AnB| %.0f", tag, it, D,
+                  A - I);
+        cg_polygon_set64_clear(&ra);
+        cg_polygon_set64_clear(&rb);
+    }
+    for (int op = 0; op < 4; op++)
+        cg_polygon_set64_clear(&r[op]);
+}
+
 /* Random polygons on coarse grids (many shared vertices, coincident and
  * touching edges, self-intersections), all four operations, all fill rules. */
 static void fuzz(void)
@@ -335,50 +382,19 @@ static void fuzz(void)
     for (int it = 0; it < rounds; it++) {
         int grid = it % 3 == 0 ? 4 : it % 3 == 1 ? 8 : 50;
         int64_t scale = it % 2 ? 64 : 1024;
-        cg_polygon_set64 a = {0}, b = {0}, r[4] = {{0}};
+        cg_polygon_set64 a = {0}, b = {0};
         int na = (int)check_rng_int(&rng, 1, 2), nb = (int)check_rng_int(&rng, 1, 2);
         for (int k = 0; k < na; k++)
             random_ring(&rng, &a, (int)check_rng_int(&rng, 3, it % 5 ? 10 : 40), grid, scale);
         for (int k = 0; k < nb; k++)
             random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 10), grid, scale);
         cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
-        for (int op = 0; op < 4; op++) {
-            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r[op]);
-            CHECK_MSG(st == CG_OK, "round %d op %d: status %d", it, op, (int)st);
-            CHECK_MSG(result_is_simple(&r[op]), "round %d op %d: result edges cross", it, op);
-            CHECK_MSG(result_is_oriented(&r[op]), "round %d op %d: orientation or nesting", it, op);
-            /* membership at random points away from every input edge */
-            for (int s = 0; s < 12; s++) {
-                double px = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
-                double py = check_rng_range(&rng, -0.5, grid + 0.5) * (double)scale;
-                if (dist_to_set(&a, px, py) < 3 || dist_to_set(&b, px, py) < 3)
-                    continue;
-                int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(&a, px, py)),
-                                     fill_rule(fb, winding(&b, px, py)));
-                int got = (int)(winding(&r[op], px, py) & 1);
-                membership_checks++;
-                CHECK_MSG(want == got, "round %d op %d: point (%.2f, %.2f) in result %d, expected %d",
-                          it, op, px, py, got, want);
-            }
-        }
-        /* identities (rounding moves each crossing by under a unit: allow a
-         * little per edge) */
-        double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
-        double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
-        cg_polygon_set64 ra = {0}, rb = {0};
-        cg_clip_boolean64(CG_CLIP_UNION, &a, fa, NULL, fa, &ra);
-        cg_clip_boolean64(CG_CLIP_UNION, &b, fb, NULL, fb, &rb);
-        double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
-        double tol = 40.0 * (double)scale * grid;
-        CHECK_MSG(fabs(U - (A + B - I)) <= tol, "round %d: |AuB| %.0f, |A|+|B|-|AnB| %.0f", it, U, A + B - I);
-        CHECK_MSG(fabs(X - (U - I)) <= tol, "round %d: xor %.0f, union-intersection %.0f", it, X, U - I);
-        CHECK_MSG(fabs(D - (A - I)) <= tol, "round %d: difference %.0f, |A|-|AnB| %.0f", it, D, A - I);
-        cg_polygon_set64_clear(&ra);
-        cg_polygon_set64_clear(&rb);
+        /* rounding moves each crossing by under a unit: the identities
+         * allow a little per edge */
+        check_round("round", it, &a, fa, &b, fb, &rng, grid, scale, 12, 40.0 * (double)scale * grid,
+                    &membership_checks);
         cg_polygon_set64_clear(&a);
         cg_polygon_set64_clear(&b);
-        for (int op = 0; op < 4; op++)
-            cg_polygon_set64_clear(&r[op]);
     }
     printf("fuzz: %d rounds, %ld membership checks\n", rounds, membership_checks);
 }
@@ -405,6 +421,32 @@ static void stress(void)
         cg_polygon_set64_clear(&b);
         cg_polygon_set64_clear(&r);
     }
+}
+
+/* Crowded inputs: long random paths whose scanlines cross many edges (the
+ * passes after the first then take the light sweep, which only looks at
+ * the points where edges start and end), on coarse grids (shared vertices,
+ * coincident edges, crossings exactly on vertices) and unscaled ones (every
+ * crossing rounded). */
+static void crowded(void)
+{
+    check_rng rng = {0xc0ffee};
+    long membership_checks = 0;
+    for (int it = 0; it < 80; it++) {
+        int grid = it % 4 == 0 ? 12 : it % 4 == 1 ? 40 : 400;
+        int64_t scale = it % 2 ? 1 : 16;
+        cg_polygon_set64 a = {0}, b = {0};
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 30, 64), grid, scale);
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 64), grid, scale);
+        random_ring(&rng, &b, (int)check_rng_int(&rng, 30, 64), grid, scale);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        double tol = 4.0 * (double)(a.point_count + b.point_count) * (double)scale * grid;
+        check_round("crowded round", it, &a, fa, &b, fb, &rng, grid, scale, scale > 1 ? 30 : 0,
+                    scale > 1 ? tol : 0, &membership_checks);
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+    }
+    printf("crowded: 80 rounds, %ld membership checks\n", membership_checks);
 }
 
 /* Unscaled tiny grids: every crossing is rounded, edges collapse onto each
@@ -506,5 +548,6 @@ int main(void)
     double_api();
     fuzz();
     stress();
+    crowded();
     return check_finish();
 }

@@ -170,8 +170,8 @@ static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 typedef struct keyval { uint64_t key; uint32_t val; } keyval;
 
 /* Stable LSD radix sort of a[0..n) by key (6- or 11-bit digits, only as
- * many passes as the largest key needs). */
-static int radix_sort(keyval *a, size_t n)
+ * many passes as the largest key needs); tmp holds n or is NULL. */
+static int radix_sort(keyval *a, size_t n, keyval *tmp)
 {
     if (n < 2)
         return 1;
@@ -188,7 +188,7 @@ static int radix_sort(keyval *a, size_t n)
         }
         return 1;
     }
-    keyval *t = malloc(n * sizeof *t), *src = a, *dst = t;
+    keyval *t = tmp ? tmp : malloc(n * sizeof *t), *src = a, *dst = t;
     if (!t)
         return 0;
     /* small inputs: small digit tables */
@@ -214,51 +214,57 @@ static int radix_sort(keyval *a, size_t n)
     }
     if (src != a)
         memcpy(a, src, n * sizeof *a);
-    free(t);
+    if (!tmp)
+        free(t);
     return 1;
 }
 
 
-/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically; scratch of n.
- * Both keys are packed into one when their ranges fit in 64 bits. */
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
+ * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
+ * NULL.  A radix sort by k1, then each run of equal k1 (short in practice)
+ * by k2. */
 static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
-                         uint32_t *idx, keyval *scratch)
+                         uint32_t *idx, keyval *scratch, keyval *tmp)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (i) * stride))
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
         return 1;
-    int64_t lo1 = KEY(k1, 0), hi1 = lo1, lo2 = KEY(k2, 0), hi2 = lo2;
+    int64_t lo1 = KEY(k1, 0);
     for (size_t i = 1; i < n; i++) {
-        int64_t a = KEY(k1, i), b = KEY(k2, i);
+        int64_t a = KEY(k1, i);
         lo1 = a < lo1 ? a : lo1;
-        hi1 = a > hi1 ? a : hi1;
-        lo2 = b < lo2 ? b : lo2;
-        hi2 = b > hi2 ? b : hi2;
     }
-    int bits2 = 0;
-    while (bits2 < 63 && ((uint64_t)(hi2 - lo2) >> bits2))
-        bits2++;
-    int bits1 = 0;
-    while (bits1 < 63 && ((uint64_t)(hi1 - lo1) >> bits1))
-        bits1++;
-    if (bits1 + bits2 <= 64) {
-        for (size_t i = 0; i < n; i++)
-            scratch[i] = (keyval){((uint64_t)(KEY(k1, i) - lo1) << bits2) |
-                                      (uint64_t)(KEY(k2, i) - lo2),
-                                  (uint32_t)i};
-        if (!radix_sort(scratch, n))
-            return 0;
-    } else {
-        for (size_t i = 0; i < n; i++)
-            scratch[i] = (keyval){(uint64_t)(KEY(k2, i) - lo2), (uint32_t)i};
-        if (!radix_sort(scratch, n))
-            return 0;
-        for (size_t i = 0; i < n; i++) {
-            uint32_t v = scratch[i].val;
-            scratch[i] = (keyval){(uint64_t)(KEY(k1, v) - lo1), v};
+    for (size_t i = 0; i < n; i++)
+        scratch[i] = (keyval){(uint64_t)(KEY(k1, i) - lo1), (uint32_t)i};
+    if (!radix_sort(scratch, n, tmp))
+        return 0;
+    for (size_t i = 0; i < n;) {
+        size_t j = i + 1;
+        while (j < n && scratch[j].key == scratch[i].key)
+            j++;
+        if (j - i > 1) {
+            int64_t lo2 = KEY(k2, scratch[i].val);
+            for (size_t q = i + 1; q < j; q++) {
+                int64_t b = KEY(k2, scratch[q].val);
+                lo2 = b < lo2 ? b : lo2;
+            }
+            for (size_t q = i; q < j; q++)
+                scratch[q].key = (uint64_t)(KEY(k2, scratch[q].val) - lo2);
+            if (j - i > 256) {
+                if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
+                    return 0;
+            } else {
+                for (size_t q = i + 1; q < j; q++) {
+                    keyval v = scratch[q];
+                    size_t m = q;
+                    for (; m > i && scratch[m - 1].key > v.key; m--)
+                        scratch[m] = scratch[m - 1];
+                    scratch[m] = v;
+                }
+            }
         }
-        if (!radix_sort(scratch, n))
-            return 0;
+        i = j;
     }
     for (size_t i = 0; i < n; i++)
         idx[i] = scratch[i].val;
@@ -273,13 +279,25 @@ typedef struct sweep {
     int64_t *ys;
     size_t nys;
     uint32_t *by_bottom; /* edges sorted by yb */
-    uint32_t *act, *nxt;
+    uint32_t *act, *nxt, *fresh, *dirty;
+    uint32_t *by_top, *clus, *seam; /* the light sweep's */
+    keyval *scratch, *scratch2;      /* for sorting */
+    hseg *hsorted;
+    uint32_t *horder;
+    void *mem; /* all of the above, carved from one block */
+    size_t memcap;
+    int64_t *wr0, *wr1; /* windings right of each edge (its coincident group) */
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
-    unsigned char *run_open, *run_up, *brk;
+    unsigned char *run_open, *run_up;
+    unsigned char *brk, *brk_next; /* a run breaks at this scanline, the next */
     int64_t *run_x, *run_y;
     int classify, changed;
+    size_t visits; /* active edges summed over the scanlines (full sweep) */
+    uint32_t *brkq, *brkq_next; /* the edges of brk, of brk_next (full sweep) */
+    size_t nbrkq, capbrkq;
+    int brkq_full;
     int use_input_lines; /* round on the input edges (early passes) */
 } sweep;
 
@@ -293,13 +311,20 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
     return 1;
 }
 
-/* Passing edge e meets something at scanline y: a vertex for it there. */
-static int meet(sweep *s, uint32_t e, int64_t y)
+/* Passing edge e meets something at scanline y (the current one, or the
+ * next when `next`): a vertex for it there. */
+static int meet(sweep *s, uint32_t e, int64_t y, int next)
 {
     int64_t x;
     const bedge *ed = &s->g->E[e];
     if (x_is_integer(ed, y, &x)) {
-        s->brk[e] = 1;
+        if (next && !s->brk_next[e]) {
+            if (s->nbrkq < s->capbrkq)
+                s->brkq_next[s->nbrkq++] = e;
+            else
+                s->brkq_full = 1;
+        }
+        (next ? s->brk_next : s->brk)[e] = 1;
         /* an exact split is not needed: the run breaks there */
         return 1;
     }
@@ -421,11 +446,207 @@ static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t 
     return 1;
 }
 
+static void sort_u32(uint32_t *a, size_t n)
+{
+    for (size_t i = 1; i < n; i++) {
+        uint32_t v = a[i];
+        size_t j = i;
+        for (; j > 0 && a[j - 1] > v; j--)
+            a[j] = a[j - 1];
+        a[j] = v;
+    }
+}
+
+static inline void copy_ids(uint32_t *dst, const uint32_t *src, size_t n)
+{
+    if (n > 16) {
+        memcpy(dst, src, n * sizeof *dst);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        dst[i] = src[i];
+}
+
+/* sign of x_e(y) - X for an integer X; xe is the double value */
+static inline int cmp_xi(const bedge *e, int64_t y, int64_t X, double xe)
+{
+    double d = xe - (double)X;
+    if (d > 0.01)
+        return 1;
+    if (d < -0.01)
+        return -1;
+    i128 n = x_num(e, y), r = (i128)X * x_den(e);
+    return (n > r) - (n < r);
+}
+
+/* The horizontal edges at y: H[*h0..*ih) (ih moves on from scanline to
+ * scanline). */
+static inline void horizontals_at(const engine *g, int64_t y, size_t *ih, size_t *h0)
+{
+    while (*ih < g->nh && g->H[*ih].y < y)
+        (*ih)++;
+    *h0 = *ih;
+    while (*ih < g->nh && g->H[*ih].y == y)
+        (*ih)++;
+}
+
+/* x of list[i] at y: from xc, or computed when xc is NULL */
+static inline double x_of(const bedge *E, const uint32_t *list, size_t i, int64_t y,
+                          const double *xc)
+{
+    return xc ? xc[list[i]] : x_at(&E[list[i]], y);
+}
+
+/* The first position in list[lo..hi) (sorted by x at y) whose x at y is
+ * not below the integer X. */
+static size_t first_at_x(const bedge *E, const uint32_t *list, size_t lo, size_t hi, int64_t y,
+                         int64_t X, const double *xc)
+{
+    size_t n = hi;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (x_of(E, list, mid, y, xc) < (double)X - 0.5)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    while (lo < n && cmp_xi(&E[list[lo]], y, X, x_of(E, list, lo, y, xc)) < 0)
+        lo++;
+    return lo;
+}
+
+/* The next point where edges start (fresh[*jf..nf), by x) or end
+ * (top[*jt..it), by x) on this scanline: its x; fresh[f0..*jf) start there
+ * and the cursors move past it. */
+static inline int64_t next_event(const bedge *E, const uint32_t *fresh, size_t nf, size_t *jf,
+                                 const uint32_t *top, size_t it, size_t *jt, size_t *f0)
+{
+    int64_t X = *jt >= it || (*jf < nf && E[fresh[*jf]].xb <= E[top[*jt]].xt) ? E[fresh[*jf]].xb
+                                                                             : E[top[*jt]].xt;
+    *f0 = *jf;
+    while (*jf < nf && E[fresh[*jf]].xb == X)
+        (*jf)++;
+    while (*jt < it && E[top[*jt]].xt == X)
+        (*jt)++;
+    return X;
+}
+
+/* Passing edges of above[] (sorted at y, x at y in xc) whose x lies within
+ * a horizontal edge H[h0..h1) at y (sorted by x0) meet it: a vertex there.
+ * Their positions are added to dirty[]. */
+static int horizontal_meets(sweep *s, int64_t y, const uint32_t *above, size_t na, size_t h0,
+                            size_t h1, uint32_t *dirty, size_t *nd)
+{
+    const engine *g = s->g;
+    const bedge *E = g->E;
+    size_t hj = h0;
+    int64_t reach = INT64_MIN;
+    for (size_t k = 0; k < na; k++) {
+        uint32_t e = above[k];
+        if (E[e].yb == y)
+            continue;
+        double xv = s->xc[e];
+        while (hj < h1 && (double)g->H[hj].x0 <= xv + 0.5) {
+            if (g->H[hj].x1 > reach)
+                reach = g->H[hj].x1;
+            hj++;
+        }
+        if ((double)reach >= xv - 0.5) {
+            /* exact: x0 <= x(y) <= reach for some segment */
+            i128 n = x_num(&E[e], y), d = x_den(&E[e]);
+            int covered = 0;
+            for (size_t q = h0; q < hj && !covered; q++)
+                covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
+            if (covered) {
+                if (!meet(s, e, y, 0))
+                    return 0;
+                dirty[(*nd)++] = (uint32_t)k;
+            }
+        }
+    }
+    return 1;
+}
+
+/* a and b (both active in a beam, not crossing inside it) coincide there:
+ * they are on one line */
+static inline int coincident(const bedge *a, const bedge *b)
+{
+    if (a->slope != b->slope) /* dx / dy rounded once: equal when collinear */
+        return 0;
+    i128 dx = a->xt - a->xb, dy = a->yt - a->yb;
+    return dx * (b->yb - a->yb) == dy * (b->xb - a->xb) &&
+           dx * (b->yt - a->yb) == dy * (b->xt - a->xb);
+}
+
+/* Classification of the beam above y: no crossing inside it, so the order
+ * at y (ties by direction) is the order throughout.  Only the groups of
+ * coincident edges around a dirty position (a new edge, a run break) need a
+ * look: elsewhere the windings are those of the last beam, because the
+ * edges ending and starting at one point (or along one chain of horizontal
+ * edges, whose crossing edges are dirty) add up to the same windings.
+ * dirty[] is sorted. */
+static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
+                          const uint32_t *dirty, size_t nd)
+{
+    const engine *g = s->g;
+    const bedge *E = g->E;
+    int64_t *wr0 = s->wr0, *wr1 = s->wr1;
+    size_t done = 0;
+    for (size_t d = 0; d < nd; d++) {
+        size_t k = dirty[d];
+        if (k < done)
+            continue;
+        while (k > done && coincident(&E[above[k - 1]], &E[above[k]]))
+            k--;
+        int64_t w[2] = {0, 0};
+        if (k > 0) {
+            w[0] = wr0[above[k - 1]];
+            w[1] = wr1[above[k - 1]];
+        }
+        int left = inside(g, w[0], w[1]);
+        size_t k2 = k + 1;
+        uint32_t rep = above[k];
+        w[E[rep].op] += E[rep].w;
+        while (k2 < na && coincident(&E[above[k]], &E[above[k2]])) {
+            uint32_t b = above[k2];
+            if (b < rep)
+                rep = b;
+            w[E[b].op] += E[b].w;
+            k2++;
+        }
+        int right = inside(g, w[0], w[1]);
+        for (size_t q = k; q < k2; q++) {
+            uint32_t e = above[q];
+            int boundary = e == rep && left != right;
+            int up = left; /* result on the left (-x side): go up */
+            if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
+                if (!close_run(s, e, y))
+                    return 0;
+            }
+            if (boundary && !s->run_open[e]) {
+                s->run_open[e] = 1;
+                s->run_up[e] = (unsigned char)up;
+                s->run_y[e] = y;
+                s->run_x[e] = y == E[e].yb ? E[e].xb : round_div(x_num(&E[e], y), x_den(&E[e]));
+            }
+            s->brk[e] = 0;
+            wr0[e] = w[0];
+            wr1[e] = w[1];
+        }
+        done = k2;
+    }
+    return 1;
+}
+
+/* Returns 1 when done, 0 when out of memory, -1 when the active list was
+ * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
+ * result). */
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, nh = g->nh, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
     const bedge *E = g->E;
+    uint32_t *fresh = s->fresh, *dirty = s->dirty;
     s->nact = 0;
     for (size_t iy = 0; iy < nys; iy++) {
         int64_t y = s->ys[iy];
@@ -437,85 +658,153 @@ static int run_sweep(sweep *s)
         double *swap = s->xc;
         s->xc = s->xn;
         s->xn = swap;
-        /* above: passing edges in their order, then the new ones merged in */
-        size_t na = 0;
-        uint32_t *above = s->nxt;
-        for (size_t k = 0; k < nb; k++)
-            if (E[below[k]].yt > y)
-                above[na++] = below[k];
+        double *xc = s->xc, *xn = s->xn;
+        /* breaks found at the top of the last beam are for this scanline;
+         * the classification of the last beam cleared the others */
+        unsigned char *bswap = s->brk;
+        s->brk = s->brk_next;
+        s->brk_next = bswap;
+        /* the edges starting here, by x (by_bottom), ties by x at yn */
+        size_t nf = 0;
         while (ip < ne && E[s->by_bottom[ip]].yb == y) {
             uint32_t e = s->by_bottom[ip++];
-            s->xc[e] = (double)E[e].xb;
-            above[na++] = e;
-        }
-        for (size_t k = 0; k < na; k++)
-            s->xn[above[k]] = x_at(&E[above[k]], yn);
-        /* insertion sort by (x at y, x at yn) */
-        for (size_t k = 1; k < na; k++) {
-            uint32_t v = above[k];
-            size_t m = k;
-            while (m > 0) {
-                uint32_t u = above[m - 1];
-                int c = cmp_x(&E[u], &E[v], y, s->xc[u], s->xc[v]);
-                if (c == 0) {
-                    /* they meet at y: an edge passing through needs a vertex
-                     * there (every pair adjacent at the end was compared) */
-                    if ((E[u].yb < y && !meet(s, u, y)) || (E[v].yb < y && !meet(s, v, y)))
-                        return 0;
-                    if (has_next)
-                        c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
-                }
-                if (c <= 0)
-                    break;
-                above[m] = u;
+            xc[e] = (double)E[e].xb;
+            xn[e] = x_at(&E[e], yn);
+            size_t m = nf;
+            while (m > 0 && E[fresh[m - 1]].xb == E[e].xb &&
+                   cmp_x(&E[fresh[m - 1]], &E[e], yn, xn[fresh[m - 1]], xn[e]) > 0) {
+                fresh[m] = fresh[m - 1];
                 m--;
             }
-            above[m] = v;
+            fresh[m] = e;
+            nf++;
         }
-        /* (edges meeting at y were found by the sorts: at the top of the
-         * last beam and just above) */
-        /* horizontal edges on this scanline */
-        while (ih < nh && g->H[ih].y < y)
-            ih++;
-        size_t h0 = ih;
-        while (ih < nh && g->H[ih].y == y)
-            ih++;
-        if (ih > h0) {
-            /* passing edges whose x lies within a horizontal edge (the
-             * horizontal edges are sorted by x0): a vertex there */
-            size_t hj = h0;
-            int64_t reach = INT64_MIN;
-            for (size_t k = 0; k < na; k++) {
-                uint32_t e = above[k];
-                if (E[e].yb == y)
-                    continue;
-                double xv = s->xc[e];
-                while (hj < ih && (double)g->H[hj].x0 <= xv + 0.5) {
-                    if (g->H[hj].x1 > reach)
-                        reach = g->H[hj].x1;
-                    hj++;
-                }
-                if ((double)reach >= xv - 0.5) {
-                    /* exact: x0 <= x(y) <= reach for some segment */
-                    i128 n = x_num(&E[e], y), d = x_den(&E[e]);
-                    int covered = 0;
-                    for (size_t q = h0; q < hj && !covered; q++)
-                        covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
-                    if (covered && !meet(s, e, y))
+        /* edges ending here, by x */
+        size_t t0 = it;
+        while (it < ne && E[s->by_top[it]].yt == y)
+            it++;
+        /* the edges with a run break here, found at the top of the last
+         * beam */
+        uint32_t *q = s->brkq;
+        s->brkq = s->brkq_next;
+        s->brkq_next = q;
+        size_t nq = s->nbrkq;
+        int q_full = s->brkq_full;
+        s->nbrkq = 0;
+        s->brkq_full = 0;
+        /* above: the passing edges in their order (sorted at y by the last
+         * beam) with the ending ones taken out and the new ones put in, at
+         * the points where edges end or start (found by binary search);
+         * passing edges through such a point need a vertex there */
+        size_t na = 0, jf = 0, nd = 0;
+        int dirty_sorted = 1;
+        uint32_t *above = s->nxt;
+        if (nb < 4 * (nf + it - t0) + 32) {
+            /* few edges: one look at each */
+            for (size_t k = 0; k < nb; k++) {
+                uint32_t e = below[k];
+                if (E[e].yt == y) {
+                    if (s->classify && s->run_open[e] && !close_run(s, e, y))
                         return 0;
+                    continue;
+                }
+                while (jf < nf) {
+                    uint32_t f = fresh[jf];
+                    double xf = xc[f];
+                    int c = xc[e] < xf - 0.01 ? -1 : cmp_x(&E[e], &E[f], y, xc[e], xf);
+                    if (c < 0)
+                        break;
+                    if (c == 0) {
+                        /* a new edge starts on a passing one: a vertex there */
+                        if (!meet(s, e, y, 0))
+                            return 0;
+                        break; /* the order at yn is settled below */
+                    }
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = f;
+                    jf++;
+                }
+                if (s->brk[e])
+                    dirty[nd++] = (uint32_t)na;
+                above[na++] = e;
+            }
+            while (jf < nf) {
+                dirty[nd++] = (uint32_t)na;
+                above[na++] = fresh[jf++];
+            }
+        } else {
+            size_t jt = t0, ib = 0, ended = 0;
+            while (jf < nf || jt < it) {
+                size_t f0;
+                int64_t X = next_event(E, fresh, nf, &jf, s->by_top, it, &jt, &f0);
+                size_t lo = first_at_x(E, below, ib, nb, y, X, xc);
+                copy_ids(above + na, below + ib, lo - ib);
+                na += lo - ib;
+                ib = lo;
+                while (ib < nb && cmp_xi(&E[below[ib]], y, X, xc[below[ib]]) == 0) {
+                    uint32_t e = below[ib++];
+                    if (E[e].yt == y) {
+                        ended++;
+                        if (s->classify && s->run_open[e] && !close_run(s, e, y))
+                            return 0;
+                        continue;
+                    }
+                    if (jf > f0 && !meet(s, e, y, 0))
+                        return 0;
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = e;
+                }
+                for (size_t k = f0; k < jf; k++) {
+                    dirty[nd++] = (uint32_t)na;
+                    above[na++] = fresh[k];
                 }
             }
+            copy_ids(above + na, below + ib, nb - ib);
+            na += nb - ib;
+            if (ended != it - t0)
+                return -1; /* not sorted as expected (cannot happen) */
+            if (q_full) {
+                for (size_t k = 0; k < na; k++)
+                    if (s->brk[above[k]])
+                        dirty[nd++] = (uint32_t)k;
+                dirty_sorted = 0;
+            } else if (nq && s->classify) {
+                /* their positions, by binary search on x */
+                for (size_t k = 0; k < nq; k++) {
+                    uint32_t e = s->brkq[k];
+                    if (E[e].yt <= y)
+                        continue;
+                    double xe = xc[e];
+                    size_t lo = 0, hi = na;
+                    while (lo < hi) {
+                        size_t mid = lo + (hi - lo) / 2;
+                        if (xc[above[mid]] < xe - 0.5)
+                            lo = mid + 1;
+                        else
+                            hi = mid;
+                    }
+                    while (lo < na && above[lo] != e)
+                        lo++;
+                    if (lo < na) {
+                        dirty[nd++] = (uint32_t)lo;
+                        dirty_sorted = 0;
+                    }
+                }
+            }
+        }
+        /* (edges meeting at y were found at the top of the last beam, or
+         * just above) */
+        /* horizontal edges on this scanline */
+        size_t h0;
+        horizontals_at(g, y, &ih, &h0);
+        if (ih > h0) {
+            if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
+                return 0;
+            dirty_sorted = 0;
             if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
                 return 0;
         }
-        /* runs of edges ending here */
-        if (s->classify) {
-            for (size_t k = 0; k < nb; k++) {
-                uint32_t e = below[k];
-                if (E[e].yt == y && s->run_open[e] && !close_run(s, e, y))
-                    return 0;
-            }
-        }
+        s->visits += na;
         /* the beam [y, yn] */
         uint32_t *t = s->act;
         s->act = above;
@@ -523,83 +812,197 @@ static int run_sweep(sweep *s)
         s->nact = na;
         if (!has_next)
             break;
-        if (s->classify) {
-            int64_t w[2] = {0, 0};
-            int left = 0;
-            size_t k = 0;
-            while (k < na) {
-                size_t k2 = k + 1;
-                uint32_t rep = above[k];
-                w[E[rep].op] += E[rep].w;
-                while (k2 < na) {
-                    uint32_t a = above[k], b = above[k2];
-                    if (cmp_x(&E[a], &E[b], y, s->xc[a], s->xc[b]) != 0 ||
-                        cmp_x(&E[a], &E[b], yn, s->xn[a], s->xn[b]) != 0)
-                        break;
-                    if (b < rep)
-                        rep = b;
-                    w[E[b].op] += E[b].w;
-                    k2++;
-                }
-                int right = inside(g, w[0], w[1]);
-                for (size_t q = k; q < k2; q++) {
-                    uint32_t e = above[q];
-                    int boundary = e == rep && left != right;
-                    int up = left; /* result on the left (-x side): go up */
-                    if (s->run_open[e] && (!boundary || s->brk[e] || s->run_up[e] != up)) {
-                        if (!close_run(s, e, y))
-                            return 0;
-                    }
-                    if (boundary && !s->run_open[e]) {
-                        s->run_open[e] = 1;
-                        s->run_up[e] = (unsigned char)up;
-                        s->run_y[e] = y;
-                        s->run_x[e] = y == E[e].yb ? E[e].xb
-                                                   : round_div(x_num(&E[e], y), x_den(&E[e]));
-                    }
-                    s->brk[e] = 0;
-                }
-                left = right;
-                k = k2;
-            }
-        } else {
-            for (size_t k = 0; k < na; k++)
-                s->brk[above[k]] = 0;
-        }
-        /* crossings inside the beam: inversions of the order at yn */
-        for (size_t k = 1; k < na; k++) {
+        /* the order at yn: an inversion is a crossing inside the beam,
+         * unless the two edges meet at y (then it is their order) */
+        double last = -INFINITY; /* x at yn of above[k - 1] */
+        for (size_t k = 0; k < na; k++) {
             uint32_t v = above[k];
+            const bedge *ev = &E[v];
+            double xv = yn == ev->yt ? (double)ev->xt
+                                     : (double)ev->xb + (double)(yn - ev->yb) * ev->slope;
+            xn[v] = xv;
+            if (xv > last + 0.01) {
+                last = xv;
+                continue;
+            }
             size_t m = k;
             while (m > 0) {
                 uint32_t u = above[m - 1];
-                int c = cmp_x(&E[u], &E[v], yn, s->xn[u], s->xn[v]);
-                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn)) || (E[v].yt > yn && !meet(s, v, yn))))
+                int c = cmp_x(&E[u], &E[v], yn, xn[u], xn[v]);
+                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn, 1)) || (E[v].yt > yn && !meet(s, v, yn, 1))))
                     return 0;
                 if (c <= 0)
                     break;
-                /* u and v cross strictly inside the beam: the crossing of
-                 * the input edges they come from, rounded, when it lies in
-                 * the beam (no drift), else the crossing of the pieces */
-                const bedge *a = &E[u], *b = &E[v];
-                int64_t px, py;
-                if (!s->use_input_lines ||
-                    !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
-                                       b->oy1, &px, &py) ||
-                    py < y || py > yn) {
-                    line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px,
-                                      &py);
+                if (cmp_x(&E[u], &E[v], y, xc[u], xc[v]) != 0) {
+                    /* u and v cross strictly inside the beam: the crossing
+                     * of the input edges they come from, rounded, when it
+                     * lies in the beam (no drift), else the crossing of the
+                     * pieces */
+                    const bedge *a = &E[u], *b = &E[v];
+                    int64_t px, py;
+                    if (!s->use_input_lines ||
+                        !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
+                                           b->oy1, &px, &py) ||
+                        py < y || py > yn) {
+                        line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt,
+                                          &px, &py);
+                    }
+                    if (py < y)
+                        py = y;
+                    if (py > yn)
+                        py = yn;
+                    if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
+                        return 0;
                 }
-                if (py < y)
-                    py = y;
-                if (py > yn)
-                    py = yn;
-                if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
-                    return 0;
                 above[m] = u;
                 m--;
             }
             above[m] = v;
+            last = xn[above[k]];
         }
+        if (!s->classify)
+            continue; /* this pass will be repeated */
+        if (!dirty_sorted)
+            sort_u32(dirty, nd);
+        if (!classify_dirty(s, y, above, na, dirty, nd))
+            return 0;
+    }
+    return 1;
+}
+
+/* ---- the light sweep ------------------------------------------------------- */
+
+/* the order of a and b just above a point they share: by direction */
+static inline int cmp_dir(const bedge *a, const bedge *b)
+{
+    i128 l = (i128)(a->xt - a->xb) * (b->yt - b->yb), r = (i128)(b->xt - b->xb) * (a->yt - a->yb);
+    return (l > r) - (l < r);
+}
+
+/* a is left of b just above the current scanline: do they cross before
+ * either ends? */
+static int cross_above(const bedge *a, const bedge *b)
+{
+    int64_t yt = a->yt < b->yt ? a->yt : b->yt;
+    return cmp_x(a, b, yt, x_at(a, yt), x_at(b, yt)) > 0;
+}
+
+#define LIGHT_BAIL 2
+#define LIGHT_COST 16
+
+/* The sweep of a pass that is expected to find nothing to split (the pass
+ * after the splits): Bentley-Ottmann's idea instead of a look at every
+ * active edge on every scanline.  The active list changes only at the
+ * points where edges end or start (found by binary search); two edges can
+ * only cross after being neighbours, so each new pair of neighbours is
+ * checked once.  Returns 1 when the pass is final (the pieces are emitted),
+ * LIGHT_BAIL when something needs a split (the caller runs the full sweep),
+ * 0 when out of memory. */
+static int light_sweep(sweep *s)
+{
+    engine *g = s->g;
+    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
+    const bedge *E = g->E;
+    uint32_t *fresh = s->fresh, *dirty = s->dirty, *clus = s->clus, *seam = s->seam;
+    const uint32_t *by_top = s->by_top;
+    s->nact = 0;
+    for (size_t iy = 0; iy < nys; iy++) {
+        int64_t y = s->ys[iy];
+        int has_next = iy + 1 < nys;
+        uint32_t *below = s->act, *above = s->nxt;
+        size_t nb = s->nact, na = 0, nd = 0, nseam = 0;
+        /* edges starting here, by x, then by direction */
+        size_t nf = 0;
+        while (ip < ne && E[s->by_bottom[ip]].yb == y) {
+            uint32_t e = s->by_bottom[ip++];
+            size_t m = nf;
+            while (m > 0 && E[fresh[m - 1]].xb == E[e].xb && cmp_dir(&E[fresh[m - 1]], &E[e]) > 0) {
+                fresh[m] = fresh[m - 1];
+                m--;
+            }
+            fresh[m] = e;
+            nf++;
+        }
+        /* edges ending here, by x */
+        size_t t0 = it;
+        while (it < ne && E[by_top[it]].yt == y)
+            it++;
+        size_t ended = 0, jf = 0, jt = t0, ib = 0;
+        /* every point where edges end or start: the edges through it
+         * (ending, passing, starting) are replaced by the passing and
+         * starting ones in the order of their directions */
+        while (jf < nf || jt < it) {
+            size_t f0;
+            int64_t X = next_event(E, fresh, nf, &jf, by_top, it, &jt, &f0);
+            size_t lo = first_at_x(E, below, ib, nb, y, X, NULL);
+            copy_ids(above + na, below + ib, lo - ib);
+            na += lo - ib;
+            size_t nc = 0, c1 = lo;
+            while (c1 < nb && cmp_xi(&E[below[c1]], y, X, x_at(&E[below[c1]], y)) == 0) {
+                uint32_t e = below[c1++];
+                if (E[e].yt == y) {
+                    ended++;
+                    if (s->run_open[e] && !close_run(s, e, y))
+                        return 0;
+                    continue;
+                }
+                s->brk[e] = 1; /* passes through a vertex: its run breaks */
+                clus[nc++] = e;
+            }
+            ib = c1;
+            for (size_t k = f0; k < jf; k++)
+                clus[nc++] = fresh[k];
+            /* in the order of their directions (passing edges may cross
+             * there) */
+            for (size_t k = 1; k < nc; k++) {
+                uint32_t v = clus[k];
+                size_t m = k;
+                while (m > 0 && cmp_dir(&E[clus[m - 1]], &E[v]) > 0) {
+                    clus[m] = clus[m - 1];
+                    m--;
+                }
+                clus[m] = v;
+            }
+            for (size_t k = 0; k < nc; k++) {
+                seam[nseam++] = (uint32_t)na;
+                dirty[nd++] = (uint32_t)na;
+                above[na++] = clus[k];
+            }
+            seam[nseam++] = (uint32_t)na;
+        }
+        if (ended != it - t0)
+            return LIGHT_BAIL; /* an ending edge was not where expected */
+        copy_ids(above + na, below + ib, nb - ib);
+        na += nb - ib;
+        /* horizontal edges on this scanline: the whole line is looked at */
+        size_t h0;
+        horizontals_at(g, y, &ih, &h0);
+        if (ih > h0) {
+            for (size_t k = 0; k < nb; k++)
+                s->xc[below[k]] = x_at(&E[below[k]], y);
+            for (size_t k = 0; k < na; k++)
+                s->xc[above[k]] = x_at(&E[above[k]], y);
+            if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
+                return 0;
+            if (s->changed)
+                return LIGHT_BAIL;
+            sort_u32(dirty, nd);
+            if (!horizontal_pieces(s, y, below, nb, above, na))
+                return 0;
+        }
+        /* new neighbours */
+        for (size_t k = 0; k < nseam; k++) {
+            size_t p = seam[k];
+            if (p > 0 && p < na && cross_above(&E[above[p - 1]], &E[above[p]]))
+                return LIGHT_BAIL;
+        }
+        s->act = above;
+        s->nxt = below;
+        s->nact = na;
+        if (!has_next)
+            break;
+        if (!classify_dirty(s, y, above, na, dirty, nd))
+            return 0;
     }
     return 1;
 }
@@ -702,7 +1105,9 @@ static int add_hot_pixel_splits(engine *g)
     return 1;
 }
 
-static int apply_splits(engine *g)
+/* map[old edge] receives its new index, or UINT32_MAX when it was split
+ * (the pieces come after the edges kept, in g->E[*kept..]). */
+static int apply_splits(engine *g, uint32_t *map, size_t *kept)
 {
     qsort(g->S, g->ns, sizeof *g->S, cmp_split);
     size_t old_ne = g->ne;
@@ -758,9 +1163,14 @@ static int apply_splits(engine *g)
     free(buf);
     /* compact */
     size_t w = 0;
-    for (size_t i = 0; i < g->ne; i++)
-        if (i >= old_ne || !dead[i])
+    for (size_t i = 0; i < old_ne; i++) {
+        map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
+        if (!dead[i])
             g->E[w++] = g->E[i];
+    }
+    *kept = w;
+    for (size_t i = old_ne; i < g->ne; i++)
+        g->E[w++] = g->E[i];
     g->ne = w;
     g->ns = 0;
     free(dead);
@@ -800,6 +1210,14 @@ static int cmp_area(const void *a, const void *b)
     if (x->area != y->area)
         return x->area < y->area ? -1 : 1;
     return (x->ring > y->ring) - (x->ring < y->ring);
+}
+
+static int cmp_point64(const void *a, const void *b)
+{
+    const cg_point64 *p = a, *q = b;
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    return (p->y > q->y) - (p->y < q->y);
 }
 
 typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
@@ -848,7 +1266,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
         uint32_t *order = malloc(np * sizeof *order);
         piece *sorted = malloc(np * sizeof *sorted);
         int ok2 = scratch && order && sorted &&
-                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch);
+                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch, NULL);
         if (ok2) {
             for (size_t i = 0; i < np; i++)
                 sorted[i] = P[order[i]];
@@ -962,9 +1380,8 @@ static int assemble(engine *g, cg_polygon_set64 *result)
             if (s > 0)
                 order[nouter++] = r;
         }
-        /* Each hole goes to the smallest outer containing the midpoint of its
-         * first edge (twice the midpoint: integers; on no other ring).  The
-         * outers are taken by increasing area; for each, the still unplaced
+        /* Each hole goes to the smallest outer containing a point of one
+         * of its edges that is on no other ring (below).  The outers are taken by increasing area; for each, the still unplaced
          * holes within its box are tested together: the outer's edges are
          * matched with the hole points sorted by y. */
         int fail_nest = 0;
@@ -978,19 +1395,54 @@ static int assemble(engine *g, cg_polygon_set64 *result)
             for (size_t i = 0; i < nouter; i++)
                 ra[i] = (ring_by_area){area[order[i]], order[i]};
             qsort(ra, nouter, sizeof *ra, cmp_area);
+            /* The point of a hole (in quadrupled coordinates): the midpoint
+             * of one of its edges, or else a quarter point, that is not a
+             * vertex of another ring (rings may touch there, after the
+             * collinear vertex of the hole went away), so that it is on no
+             * other ring. */
+            cg_point64 *verts = NULL; /* sorted, when first needed */
+            size_t nv = rings.point_count;
             size_t h = 0;
-            for (size_t r = 0; r < nr; r++) {
+            for (size_t r = 0; r < nr && !fail_nest; r++) {
                 if (area[r] > 0)
                     continue;
-                size_t a0 = rings.ring_start[r];
-                cg_point64 p = rings.points[a0], q = rings.points[a0 + 1];
-                hp[h++] = (hole_point){p.x + q.x, p.y + q.y, r, 0};
+                size_t a0 = rings.ring_start[r], a1 = rings.ring_start[r + 1];
+                cg_point64 u0 = rings.points[a0], v0 = rings.points[a0 + 1];
+                int64_t px = 2 * (u0.x + v0.x), py = 2 * (u0.y + v0.y);
+                int found = 0;
+                for (int quarter = 0; quarter < 2 && !found; quarter++) {
+                    for (size_t i = a0; i < a1 && !found; i++) {
+                        cg_point64 u = rings.points[i], v = rings.points[i + 1 < a1 ? i + 1 : a0];
+                        int64_t qx = quarter ? 3 * u.x + v.x : 2 * (u.x + v.x);
+                        int64_t qy = quarter ? 3 * u.y + v.y : 2 * (u.y + v.y);
+                        cg_point64 m = {qx / 4, qy / 4};
+                        if (!(qx & 3) && !(qy & 3) && !verts) {
+                            verts = malloc(nv * sizeof *verts);
+                            if (!verts) {
+                                fail_nest = 1;
+                                break;
+                            }
+                            memcpy(verts, rings.points, nv * sizeof *verts);
+                            qsort(verts, nv, sizeof *verts, cmp_point64);
+                        }
+                        if ((qx & 3) || (qy & 3) ||
+                            !bsearch(&m, verts, nv, sizeof *verts, cmp_point64)) {
+                            px = qx;
+                            py = qy;
+                            found = 1;
+                        }
+                    }
+                }
+                hp[h++] = (hole_point){px, py, r, 0};
             }
+            free(verts);
+            if (fail_nest)
+                nholes = 0;
             qsort(hp, nholes, sizeof *hp, cmp_hole_x);
             size_t unplaced = nholes;
             for (size_t oi = 0; oi < nouter && unplaced; oi++) {
                 size_t o = ra[oi].ring;
-                int64_t bx0 = 2 * bb[o][0], by0 = 2 * bb[o][1], bx1 = 2 * bb[o][2], by1 = 2 * bb[o][3];
+                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2], by1 = 4 * bb[o][3];
                 /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
                 size_t lo = first_at_least(hp, nholes, bx0, 0);
                 size_t nc = 0;
@@ -1011,13 +1463,13 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
                 for (size_t i = s0; i < s1; i++) {
                     cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
-                    int64_t uy = 2 * u.y, vy = 2 * v.y;
+                    int64_t uy = 4 * u.y, vy = 4 * v.y;
                     if (uy == vy)
                         continue;
                     int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
                     /* candidates with ylo <= y < yhi */
                     size_t l = first_at_least(cand, nc, ylo, 1);
-                    i128 ux = 2 * (i128)u.x, vx = 2 * (i128)v.x;
+                    i128 ux = 4 * (i128)u.x, vx = 4 * (i128)v.x;
                     for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
                         i128 mx = cand[k].x, my = cand[k].y;
                         i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
@@ -1097,118 +1549,253 @@ fail:
 
 #define MAX_PASSES 64
 
+/* Forgets the arrays of the last pass; their memory is kept for the next. */
+static void sweep_reset(sweep *s)
+{
+    engine *g = s->g;
+    void *mem = s->mem;
+    size_t cap = s->memcap;
+    memset(s, 0, sizeof *s);
+    s->g = g;
+    s->mem = mem;
+    s->memcap = cap;
+}
+
+static void *carve(char **p, size_t bytes)
+{
+    void *r = *p;
+    *p += (bytes + 15) & ~(size_t)15;
+    return r;
+}
+
+/* The arrays of a pass over g's edges, carved from one block kept from pass
+ * to pass (large blocks come fresh from the system, page by page, so fewer
+ * and reused ones are much cheaper): 0 when out of memory. */
+static int sweep_alloc(sweep *s, int light)
+{
+    size_t n1 = s->g->ne ? s->g->ne : 1, nh = s->g->nh;
+    size_t nscratch = n1 > nh ? n1 : nh;
+    uint32_t **ids[] = {&s->by_bottom, &s->by_top, &s->act, &s->nxt, &s->fresh, &s->brkq,
+                        &s->brkq_next, &s->clus};
+    int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
+    double **f64[] = {&s->xc, &s->xn};
+    size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
+    need += (nids * n1 + 3 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
+    need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
+    need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
+    if (need > s->memcap) {
+        free(s->mem);
+        s->memcap = 0;
+        need += need / 4; /* the next pass usually has a few more edges */
+        s->mem = malloc(need);
+        if (!s->mem)
+            return 0;
+        s->memcap = need;
+    }
+    char *p = s->mem;
+    for (size_t i = 0; i < nids; i++)
+        *ids[i] = carve(&p, n1 * sizeof(uint32_t));
+    for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
+        *i64[i] = carve(&p, n1 * sizeof(int64_t));
+    for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
+        *f64[i] = carve(&p, n1 * sizeof(double));
+    s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
+    /* dirty positions: new edges and run breaks at points, queued run
+     * breaks, horizontal meets: each at most once per position */
+    s->dirty = carve(&p, 3 * n1 * sizeof *s->dirty);
+    s->run_open = carve(&p, 4 * n1); /* and run_up, brk, brk_next */
+    s->run_up = s->run_open + n1;
+    s->brk = s->run_open + 2 * n1;
+    s->brk_next = s->run_open + 3 * n1;
+    memset(s->run_open, 0, 4 * n1);
+    s->scratch = carve(&p, nscratch * sizeof *s->scratch);
+    s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
+    s->hsorted = carve(&p, nh * sizeof *s->hsorted);
+    s->horder = carve(&p, nh * sizeof *s->horder);
+    if (light)
+        s->seam = carve(&p, (3 * n1 + 1) * sizeof *s->seam);
+    s->capbrkq = n1;
+    return 1;
+}
+
+/* What a pass leaves to the next: its orders of the edges and where its
+ * edges went (apply_splits). */
+typedef struct carry {
+    uint32_t *by_bottom, *by_top, *map;
+    size_t n, cap;   /* edges of the last pass */
+    size_t kept;     /* of them, not split: now g->E[0..kept) */
+    size_t nh_sorted; /* g->H[0..nh_sorted) is in order */
+    int valid;
+} carry;
+
+/* order[0..n) by (k1, k2) of the edges (fields of bedge) */
+static inline int edge_before(const bedge *a, const bedge *b, int top)
+{
+    int64_t a1 = top ? a->yt : a->yb, b1 = top ? b->yt : b->yb;
+    if (a1 != b1)
+        return a1 < b1;
+    return (top ? a->xt : a->xb) <= (top ? b->xt : b->xb);
+}
+
+/* out = the edges kept (in their last order, renumbered) merged with the
+ * pieces, sorted; tmp holds the pieces' order.  0 when the count is off. */
+static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, uint32_t *tmp,
+                       int top)
+{
+    engine *g = s->g;
+    const bedge *E = g->E;
+    size_t ne = g->ne, np = ne - c->kept, na = 0;
+    for (size_t i = 0; i < c->n; i++) {
+        uint32_t m = c->map[old[i]];
+        if (m != UINT32_MAX)
+            old[na++] = m;
+    }
+    if (na != c->kept)
+        return 0;
+    if (np) {
+        const bedge *P = &E[c->kept];
+        if (!sort_two_keys(top ? &P->yt : &P->yb, top ? &P->xt : &P->xb, sizeof(bedge), np, tmp,
+                           s->scratch, s->scratch2))
+            return 0;
+        for (size_t i = 0; i < np; i++)
+            tmp[i] += (uint32_t)c->kept;
+    }
+    size_t i = 0, j = 0, k = 0;
+    while (i < na || j < np)
+        out[k++] = j >= np || (i < na && edge_before(&E[old[i]], &E[tmp[j]], top)) ? old[i++]
+                                                                                   : tmp[j++];
+    return 1;
+}
+
+/* Sorts the edges by bottom and by top (from the last pass's orders when
+ * there is one), the scanlines (both merged) and the horizontal edges: 0
+ * when out of memory. */
+static int sweep_sort(sweep *s, carry *c)
+{
+    engine *g = s->g;
+    size_t ne = g->ne;
+    keyval *scratch = s->scratch, *tmp = s->scratch2;
+    /* edges by bottom and by top; the scanlines are both merged */
+    int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->fresh, 0) &&
+                 merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
+    if (!sorted)
+        sorted = !ne || (sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
+                                       scratch, tmp) &&
+                         sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top,
+                                       scratch, tmp));
+    size_t u = 0, i = 0, j = 0;
+    while (sorted && (i < ne || j < ne)) {
+        int64_t y = j >= ne || (i < ne && g->E[s->by_bottom[i]].yb <= g->E[s->by_top[j]].yt)
+                        ? g->E[s->by_bottom[i++]].yb
+                        : g->E[s->by_top[j++]].yt;
+        if (u == 0 || s->ys[u - 1] != y)
+            s->ys[u++] = y;
+    }
+    s->nys = u;
+    if (sorted && g->nh > 1 && !(c->valid && c->nh_sorted == g->nh)) {
+        sorted = sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
+                               tmp);
+        if (sorted) {
+            for (size_t i = 0; i < g->nh; i++)
+                s->hsorted[i] = g->H[s->horder[i]];
+            memcpy(g->H, s->hsorted, g->nh * sizeof *g->H);
+        }
+    }
+    c->nh_sorted = g->nh;
+    c->valid = 0;
+    return sorted;
+}
+
+/* Keeps the orders of this pass for the next one (before apply_splits). */
+static int carry_keep(carry *c, const sweep *s)
+{
+    size_t ne = s->g->ne;
+    if (ne > c->cap) {
+        size_t cap = ne + ne / 2;
+        free(c->by_bottom);
+        free(c->by_top);
+        free(c->map);
+        c->by_bottom = malloc(cap * sizeof *c->by_bottom);
+        c->by_top = malloc(cap * sizeof *c->by_top);
+        c->map = malloc(cap * sizeof *c->map);
+        c->cap = c->by_bottom && c->by_top && c->map ? cap : 0;
+        if (!c->cap)
+            return 0;
+    }
+    memcpy(c->by_bottom, s->by_bottom, ne * sizeof *c->by_bottom);
+    memcpy(c->by_top, s->by_top, ne * sizeof *c->by_top);
+    c->n = ne;
+    return 1;
+}
+
 static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
     memset(&s, 0, sizeof s);
     s.g = g;
     cg_status st = CG_ENOMEM;
+    size_t visits = 0, edges = 0; /* of the last full sweep */
+    carry c;
+    memset(&c, 0, sizeof c);
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
             break;
         }
-        size_t ne = g->ne;
-        free(s.ys);
-        free(s.by_bottom);
-        free(s.act);
-        free(s.nxt);
-        free(s.xc);
-        free(s.xn);
-        free(s.run_open);
-        free(s.run_up);
-        free(s.brk);
-        free(s.run_x);
-        free(s.run_y);
-        memset(&s, 0, sizeof s);
-        s.g = g;
-        size_t n1 = ne ? ne : 1;
-        s.ys = malloc(2 * n1 * sizeof *s.ys);
-        s.by_bottom = malloc(n1 * sizeof *s.by_bottom);
-        s.act = malloc(n1 * sizeof *s.act);
-        s.nxt = malloc(n1 * sizeof *s.nxt);
-        s.xc = malloc(n1 * sizeof *s.xc);
-        s.xn = malloc(n1 * sizeof *s.xn);
-        s.run_open = calloc(n1, 1);
-        s.run_up = calloc(n1, 1);
-        s.brk = calloc(n1, 1);
-        s.run_x = malloc(n1 * sizeof *s.run_x);
-        s.run_y = malloc(n1 * sizeof *s.run_y);
-        if (!s.ys || !s.by_bottom || !s.act || !s.nxt || !s.xc || !s.xn || !s.run_open ||
-            !s.run_up || !s.brk || !s.run_x || !s.run_y)
+        /* After the first pass, most passes find nothing more to split.
+         * The light sweep costs about LIGHT_COST active edges' worth of work
+         * per edge; it is tried first when the full sweep was dearer. */
+        int light = pass >= 1 && visits > LIGHT_COST * edges;
+        sweep_reset(&s);
+        if (!sweep_alloc(&s, light) || !sweep_sort(&s, &c))
             break;
-        for (size_t i = 0; i < ne; i++) {
-            s.ys[2 * i] = g->E[i].yb;
-            s.ys[2 * i + 1] = g->E[i].yt;
-            s.by_bottom[i] = (uint32_t)i;
-        }
-        size_t nscratch = 2 * n1 > g->nh ? 2 * n1 : g->nh;
-        keyval *scratch = malloc(nscratch * sizeof *scratch);
-        if (!scratch)
-            break;
-        int64_t ymin = INT64_MAX;
-        for (size_t i = 0; i < 2 * ne; i++)
-            ymin = s.ys[i] < ymin ? s.ys[i] : ymin;
-        for (size_t i = 0; i < 2 * ne; i++)
-            scratch[i] = (keyval){(uint64_t)(s.ys[i] - ymin), 0};
-        int sorted = radix_sort(scratch, 2 * ne);
-        size_t u = 0;
-        for (size_t i = 0; sorted && i < 2 * ne; i++) {
-            int64_t y = (int64_t)scratch[i].key + ymin;
-            if (u == 0 || s.ys[u - 1] != y)
-                s.ys[u++] = y;
-        }
-        s.nys = u;
-        if (sorted && ne)
-            sorted = sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s.by_bottom, scratch);
-        if (sorted && g->nh > 1) {
-            hseg *h2 = malloc(g->nh * sizeof *h2);
-            uint32_t *order = malloc(g->nh * sizeof *order);
-            sorted = h2 && order &&
-                     sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, order, scratch);
-            if (sorted) {
-                for (size_t i = 0; i < g->nh; i++)
-                    h2[i] = g->H[order[i]];
-                memcpy(g->H, h2, g->nh * sizeof *h2);
+        if (light) {
+            g->np = 0;
+            s.classify = 1;
+            s.changed = 0;
+            int r = light_sweep(&s);
+            if (!r)
+                break;
+            if (r == 1) {
+                st = assemble(g, result) ? CG_OK : CG_ENOMEM;
+                break;
             }
-            free(h2);
-            free(order);
+            /* something to split: start over with the full sweep */
+            memset(s.run_open, 0, 4 * (g->ne ? g->ne : 1)); /* and run_up, brk, brk_next */
+            g->ns = 0;
         }
-        free(scratch);
-        if (!sorted)
-            break;
         g->np = 0;
         s.classify = 1;
         s.changed = 0;
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
-        if (!run_sweep(&s))
+        int r = run_sweep(&s);
+        if (r <= 0) {
+            if (r < 0)
+                st = CG_ERANGE;
             break;
+        }
+        visits = s.visits;
+        edges = g->ne;
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
-        if (!apply_splits(g))
+        if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
             break;
+        c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {
             st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
             break;
         }
     }
-    free(s.ys);
-    free(s.by_bottom);
-    free(s.act);
-    free(s.nxt);
-    free(s.xc);
-    free(s.xn);
-    free(s.run_open);
-    free(s.run_up);
-    free(s.brk);
-    free(s.run_x);
-    free(s.run_y);
+    free(s.mem);
+    free(c.by_bottom);
+    free(c.by_top);
+    free(c.map);
     return st;
 }
 
@@ -1260,6 +1847,14 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                                                  : op == CG_CLIP_UNION      ? a || b
                                                  : op == CG_CLIP_DIFFERENCE ? a && !b
                                                                             : a != b);
+    /* room for the input's edges and some pieces: no regrowth */
+    size_t npts = (subject ? subject->point_count : 0) + (clip ? clip->point_count : 0);
+    if (npts && npts < UINT32_MAX / 4) {
+        g.cape = npts + npts / 4 + 64;
+        g.E = malloc(g.cape * sizeof *g.E);
+        if (!g.E)
+            g.cape = 0;
+    }
     cg_status st = load(&g, subject, 0);
     if (st == CG_OK)
         st = load(&g, clip, 1);

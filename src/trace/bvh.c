@@ -397,11 +397,17 @@ static inline void sides_init(sides *s)
 static inline void sides_grow(sides *s, v4 lo, v4 hi, int right)
 {
 #if defined(__SSE2__)
-    v4 m = _mm_castsi128_ps(_mm_set1_epi32(-right)), big = v4_set(FLT_MAX), small = v4_set(-FLT_MAX);
-    s->llo = _mm_min_ps(s->llo, _mm_or_ps(_mm_andnot_ps(m, lo), _mm_and_ps(m, big)));
-    s->lhi = _mm_max_ps(s->lhi, _mm_or_ps(_mm_andnot_ps(m, hi), _mm_and_ps(m, small)));
-    s->rlo = _mm_min_ps(s->rlo, _mm_or_ps(_mm_and_ps(m, lo), _mm_andnot_ps(m, big)));
-    s->rhi = _mm_max_ps(s->rhi, _mm_or_ps(_mm_and_ps(m, hi), _mm_andnot_ps(m, small)));
+    /* minps and maxps return their second operand when either is NaN: a
+     * value or-ed with an all-ones mask is NaN and leaves that side's
+     * bounds as they are. */
+    __m128i ones = _mm_set1_epi32(-1), r = _mm_set1_epi32(-right);
+    v4 not_left = _mm_castsi128_ps(r), not_right = _mm_castsi128_ps(_mm_xor_si128(r, ones));
+    v4 llo = _mm_or_ps(lo, not_left), rlo = _mm_or_ps(lo, not_right);
+    v4 lhi = _mm_or_ps(hi, not_left), rhi = _mm_or_ps(hi, not_right);
+    s->llo = _mm_min_ps(llo, s->llo);
+    s->lhi = _mm_max_ps(lhi, s->lhi);
+    s->rlo = _mm_min_ps(rlo, s->rlo);
+    s->rhi = _mm_max_ps(rhi, s->rhi);
 #else
     if (right) {
         s->rlo = v4_min(s->rlo, lo);

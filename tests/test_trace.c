@@ -149,6 +149,21 @@ static void test_bvh(void)
     check_against_brute("big sphere", &big, 8000 / RAY_SCALE, &rng);
     soup_free(&big);
 
+    /* Over 2^19 triangles the build keeps its references in one block that
+     * the triangle blocks then take over: the same queries, the same tree
+     * on two threads. */
+    soup huge = bumpy_sphere(&rng, 366, 720, 0.05);
+    CHECK(huge.nt >= (1u << 19));
+    CHECK(cg_bvh_build(huge.p, huge.nv, huge.idx, huge.nt, &one) == CG_OK);
+    CHECK(cg_bvh_build_threads(huge.p, huge.nv, huge.idx, huge.nt, 2, &two) == CG_OK);
+    CHECK(one && two && one->block_count == two->block_count
+          && memcmp(one->blocks, two->blocks, one->block_count * sizeof *one->blocks) == 0);
+    CHECK((uintptr_t)(void *)one->blocks % 128 == 0);
+    cg_bvh_free(one);
+    cg_bvh_free(two);
+    check_against_brute("half-million sphere", &huge, 64 / RAY_SCALE, &rng);
+    soup_free(&huge);
+
     /* The same closed mesh far from the origin and scaled up: still
      * watertight (rays from its centre). */
     soup far = bumpy_sphere(&rng, 16, 20, 0.02);

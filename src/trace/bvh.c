@@ -24,6 +24,10 @@ enum {
      * inner levels), and each level pushes at most three children. */
     STACK_SIZE = 3 * (SAH_DEPTH + 33) + 16,
     PARALLEL_MIN = 4096, /* fewer triangles: build on one thread */
+    /* From this many triangles the two buffers of references (64 bytes a
+     * triangle, 32 MiB here: beyond what malloc keeps for reuse) are one
+     * block that the triangle blocks reuse. */
+    REUSE_MIN = 1 << 19,
     SAMPLE = 4096 /* nodes of 2 SAMPLE or more bin SAMPLE to 2 SAMPLE - 1 */
 };
 
@@ -844,8 +848,17 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         for (size_t i = 0; i < 3 * triangle_count; i++)
             if (indices[i] >= vertex_count)
                 return CG_EINVAL;
+    if (triangle_count > SIZE_MAX / 2)
+        return CG_ERANGE;
     cg_bvh *bvh = calloc(1, sizeof *bvh);
-    prim_ref *refs = alloc_block(triangle_count, sizeof *refs, 0);
+    /* For large meshes both buffers of references are one block, which
+     * afterwards holds the triangle blocks when they fit (most meshes):
+     * they are written into memory already mapped rather than into fresh
+     * pages the kernel has to clear.  Smaller buffers are allocated apart,
+     * where malloc reuses its own memory from one build to the next. */
+    int joined = triangle_count >= REUSE_MIN;
+    prim_ref *refs = alloc_block(joined ? 2 * triangle_count : triangle_count, sizeof *refs, 0);
+    prim_ref *second = joined ? refs + triangle_count : NULL;
     if (!bvh || !refs) {
         free(bvh);
         free(refs);
@@ -878,7 +891,9 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         *out = bvh;
         return CG_OK;
     }
-    builder b = {{refs, alloc_block(n, sizeof *refs, 0)}, alloc_block(n, sizeof(uint32_t), 0),
+    if (!joined)
+        second = alloc_block(n, sizeof *refs, 0);
+    builder b = {{refs, second}, alloc_block(n, sizeof(uint32_t), 0),
                  alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0, 0};
     collapser c = {b.nodes, b.ids, positions, indices, NULL, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
@@ -892,7 +907,10 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         goto fail;
     }
     c.nodes = alloc_block(b.node_count / 2 + 1, sizeof *c.nodes, 1);
-    c.blocks = alloc_block(blocks, sizeof *c.blocks, 1);
+    int reuse = joined && blocks * sizeof *c.blocks <= 2 * triangle_count * sizeof *refs;
+    c.blocks = reuse ? (bvh_tri4 *)(void *)refs : alloc_block(blocks, sizeof *c.blocks, 1);
+    if (reuse)
+        b.buf[0] = NULL;
     c.where = alloc_block(triangle_count, sizeof *c.where, 0);
     if (!c.nodes || !c.blocks || !c.where)
         goto fail;
@@ -900,6 +918,22 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     bvh->bounds = b.nodes[0];
     bvh->root = b.nodes[0].count ? emit_leaf(&c, &b.nodes[0]) : collapse(&c, 0, 1);
     fill_corners(&c, triangle_count);
+    if (reuse) {
+        /* Give back the rest of the block if it stays where it is (aligned
+         * as the blocks need). */
+        bvh_tri4 *shrunk = realloc(c.blocks, c.block_count * sizeof *c.blocks);
+        if (shrunk && (uintptr_t)(void *)shrunk % 128 != 0) {
+            /* Moved and no longer aligned: copied once more. */
+            c.blocks = alloc_block(c.block_count, sizeof *c.blocks, 1);
+            if (c.blocks)
+                memcpy(c.blocks, shrunk, c.block_count * sizeof *c.blocks);
+            free(shrunk);
+            if (!c.blocks)
+                goto fail;
+        } else if (shrunk) {
+            c.blocks = shrunk;
+        }
+    }
     bvh->nodes = c.nodes;
     bvh->node_count = c.node_count;
     bvh->blocks = c.blocks;
@@ -915,7 +949,8 @@ fail:
     free(b.nodes);
     free(b.ids);
     free(b.buf[0]);
-    free(b.buf[1]);
+    if (!joined)
+        free(second);
     if (status != CG_OK) {
         cg_bvh_free(bvh);
         bvh = NULL;

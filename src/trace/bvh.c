@@ -907,7 +907,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         goto fail;
     }
     c.nodes = alloc_block(b.node_count / 2 + 1, sizeof *c.nodes, 1);
-    int reuse = joined && blocks * sizeof *c.blocks <= 2 * triangle_count * sizeof *refs;
+    int reuse = joined && blocks <= 2 * triangle_count * sizeof *refs / sizeof *c.blocks;
     c.blocks = reuse ? (bvh_tri4 *)(void *)refs : alloc_block(blocks, sizeof *c.blocks, 1);
     if (reuse)
         b.buf[0] = NULL;

@@ -35,11 +35,13 @@ test: test-deps
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # Builds and runs the benchmarks against the peer libraries; rewrites bench/RESULTS.md.
+# BENCHES=bench_fill (or several names) reruns only those, keeping the others' last rows.
+BENCHES ?=
 bench:
 	@scripts/install-deps.sh build bench
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
-	bench/run.sh $(BUILD)
+	bench/run.sh $(BUILD) $(BENCHES)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

@@ -1,16 +1,34 @@
 #!/usr/bin/env bash
-# Runs every built benchmark (BUILD/bench/bench_*) and rewrites
-# bench/RESULTS.md with the table and a description of the machine.
+# bench/run.sh [BUILD [BENCH_NAME...]]
+# Runs the built benchmarks (BUILD/bench/bench_*, or only the ones named, such
+# as bench_fill) and rewrites bench/RESULTS.md with the table and a
+# description of the machine.  Each program's rows are kept in
+# BUILD/bench/rows/, so that rerunning one benchmark rebuilds the table with
+# the last rows of the others.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
+shift || true
+kept="$build/bench/rows"
+mkdir -p "$kept"
+if [ $# -gt 0 ]; then
+  programs=()
+  for name in "$@"; do programs+=("$build/bench/$name"); done
+else
+  programs=("$build"/bench/bench_*)
+  rm -f "$kept"/*.tsv
+fi
+for program in "${programs[@]}"; do
+  [ -x "$program" ] && [ -f "$program" ] || { echo "bench: no program $program" >&2; continue; }
+  name=$(basename "$program")
+  echo "== $name" >&2
+  "$program" | grep '^BENCH' > "$kept/$name.tsv.new" \
+    && mv "$kept/$name.tsv.new" "$kept/$name.tsv" \
+    || { rm -f "$kept/$name.tsv.new"; echo "bench: $name failed" >&2; }
+done
 rows=$(mktemp)
 trap 'rm -f "$rows"' EXIT
-for program in "$build"/bench/bench_*; do
-  [ -x "$program" ] || continue
-  echo "== $(basename "$program")" >&2
-  "$program" | grep '^BENCH' >> "$rows" || echo "bench: $(basename "$program") failed" >&2
-done
+cat "$kept"/*.tsv > "$rows" 2>/dev/null || true
 
 {
   echo "# Benchmark results"

@@ -156,6 +156,10 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->opaque = paint->color.a == 255;
         p->same_exact = r->tables_ready && r->decode[paint->color.r] == p->r
                         && r->decode[paint->color.g] == p->g && r->decode[paint->color.b] == p->b;
+        if (p->opaque && !r->opaque_table) {
+            fill_tables_prepare(r);
+            r->opaque_table = malloc((size_t)256 * 768 * sizeof *r->opaque_table); /* NULL: the cache alone */
+        }
         if (!r->blend_src_valid || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
             r->blend_src_valid = 1;
@@ -186,11 +190,43 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
+void fill_opaque_row(const fill_blend_state *s, int c)
+{
+    memset(s->table + (size_t)c * 768, 0, 768 * sizeof *s->table);
+    s->table_gen[c] = s->gen;
+}
+
+int fill_opaque_entry(const fill_blend_state *s, int c, int e)
+{
+    /* the blend of fill_blend8 over an opaque pixel: the same arithmetic,
+     * so the same result as blending the pixel itself */
+    const fill_painter *p = s->p;
+    const struct cg_rasterizer *t = p->tables;
+    float as = p->a * (c * (1.0f / 255.0f));
+    float src = e < 256 ? p->r : (e < 512 ? p->g : p->b);
+    float dk = t->decode[e & 255];
+    int code = fill_encode_unit(t, dk + (src - dk) * as);
+    s->table[(size_t)c * 768 + (size_t)e] = (uint16_t)(256 + code);
+    return code;
+}
+
 void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot)
 {
     cg_rgba8 px;
     memcpy(&px, d, sizeof px);
-    fill_solid_pixel(s->p, &px, c);
+    const fill_painter *p = s->p;
+    if (p->opaque && px.a == 255) {
+        /* the common case, straight to the blend: 0 < c < 255 here (the
+         * caller paints c = 0 and 255 itself) and the result stays opaque */
+        const struct cg_rasterizer *t = p->tables;
+        float as = c * (1.0f / 255.0f);
+        float dr = t->decode[px.r], dg = t->decode[px.g], db = t->decode[px.b];
+        px.r = fill_encode_unit(t, dr + (p->r - dr) * as);
+        px.g = fill_encode_unit(t, dg + (p->g - dg) * as);
+        px.b = fill_encode_unit(t, db + (p->b - db) * as);
+    } else {
+        fill_solid_pixel(p, &px, c);
+    }
     uint32_t v;
     memcpy(&v, &px, sizeof v);
     s->keys[slot] = key;

@@ -214,19 +214,7 @@ void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key
 {
     cg_rgba8 px;
     memcpy(&px, d, sizeof px);
-    const fill_painter *p = s->p;
-    if (p->opaque && px.a == 255) {
-        /* the common case, straight to the blend: 0 < c < 255 here (the
-         * caller paints c = 0 and 255 itself) and the result stays opaque */
-        const struct cg_rasterizer *t = p->tables;
-        float as = c * (1.0f / 255.0f);
-        float dr = t->decode[px.r], dg = t->decode[px.g], db = t->decode[px.b];
-        px.r = fill_encode_unit(t, dr + (p->r - dr) * as);
-        px.g = fill_encode_unit(t, dg + (p->g - dg) * as);
-        px.b = fill_encode_unit(t, db + (p->b - db) * as);
-    } else {
-        fill_solid_pixel(p, &px, c);
-    }
+    fill_solid_pixel(s->p, &px, c);
     uint32_t v;
     memcpy(&v, &px, sizeof v);
     s->keys[slot] = key;

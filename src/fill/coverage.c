@@ -267,54 +267,10 @@ static inline int coverage_of(float acc, cg_fill_rule rule)
     return (int)(a * 255.0f + 0.5f);
 }
 
-#if defined(__SSE2__)
-/* coverage_of for four cells at once: sums cells[0..3] onto the running
- * sum *acc (in every lane), clears them and returns the four coverages as
- * the bytes of a 32-bit value, cells[0] in the lowest.  The sums are formed
- * as a prefix sum within the four (its rounding differs from the one-by-one
- * sum by a few units of the float's last place, far below a coverage
- * step); the rule's folding is the scalar one: for a <= 1, trunc(a / 2) is
- * 0 and min(a, 2 - a) is a, so no test is needed. */
-static inline uint32_t coverage4(float *cells, __m128 *acc, cg_fill_rule rule)
-{
-    __m128 v = _mm_loadu_ps(cells);
-    _mm_storeu_ps(cells, _mm_setzero_ps());
-    v = _mm_add_ps(v, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(v), 4)));
-    v = _mm_add_ps(v, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(v), 8)));
-    v = _mm_add_ps(v, *acc);
-    *acc = _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3));
-    __m128 a = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
-    if (rule == CG_FILL_EVEN_ODD) {
-        __m128 whole = _mm_cvtepi32_ps(_mm_cvttps_epi32(_mm_mul_ps(a, _mm_set1_ps(0.5f))));
-        a = _mm_sub_ps(a, _mm_mul_ps(_mm_set1_ps(2.0f), whole));
-        a = _mm_min_ps(a, _mm_sub_ps(_mm_set1_ps(2.0f), a));
-    }
-    a = _mm_min_ps(a, _mm_set1_ps(1.0f));
-    __m128i c = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(a, _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f)));
-    c = _mm_packs_epi32(c, c);
-    c = _mm_packus_epi16(c, c);
-    return (uint32_t)_mm_cvtsi128_si32(c);
-}
-#endif
-
 /* Sums cells row[0..n-1] onto acc, clearing them, and writes each pixel's
  * coverage; returns the sum.  One loop per rule, so neither tests it. */
 static inline float sum_cells(float *row, int n, float acc, cg_fill_rule rule, uint8_t *cover)
 {
-#if defined(__SSE2__)
-    if (n >= 4) {
-        __m128 acc4 = _mm_set1_ps(acc);
-        int i = 0;
-        for (; i + 4 <= n; i += 4) {
-            uint32_t c4 = coverage4(row + i, &acc4, rule);
-            memcpy(cover + i, &c4, 4);
-        }
-        acc = _mm_cvtss_f32(acc4);
-        row += i;
-        cover += i;
-        n -= i;
-    }
-#endif
     if (rule == CG_FILL_NONZERO) {
         for (int i = 0; i < n; i++) {
             acc += row[i];
@@ -379,26 +335,7 @@ static inline void render_row_rule(const fill_painter *painter, float *row, uint
                     else if (c != 0)
                         for (int x = done; x < start; x++)
                             fill_solid_cached(&blend, pixels + x, c);
-                    int x = start;
-#if defined(__SSE2__)
-                    if (paint_end - start >= 4) {
-                        __m128 acc4 = _mm_set1_ps(acc);
-                        for (; x + 4 <= paint_end; x += 4) {
-                            uint32_t c4 = coverage4(row + x, &acc4, rule);
-                            if (c4 == 0xffffffffu && blend.opaque) {
-                                _mm_storeu_si128((__m128i *)(pixels + x), _mm_set1_epi32((int)blend.full));
-                            } else if (c4 != 0) {
-                                fill_solid_cached(&blend, pixels + x, (int)(c4 & 255));
-                                fill_solid_cached(&blend, pixels + x + 1, (int)(c4 >> 8 & 255));
-                                fill_solid_cached(&blend, pixels + x + 2, (int)(c4 >> 16 & 255));
-                                fill_solid_cached(&blend, pixels + x + 3, (int)(c4 >> 24));
-                            }
-                            c = (int)(c4 >> 24);
-                        }
-                        acc = _mm_cvtss_f32(acc4);
-                    }
-#endif
-                    for (; x < paint_end; x++) {
+                    for (int x = start; x < paint_end; x++) {
                         acc += row[x];
                         row[x] = 0;
                         c = coverage_of(acc, rule);

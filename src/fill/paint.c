@@ -156,10 +156,6 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->opaque = paint->color.a == 255;
         p->same_exact = r->tables_ready && r->decode[paint->color.r] == p->r
                         && r->decode[paint->color.g] == p->g && r->decode[paint->color.b] == p->b;
-        if (p->opaque && !r->opaque_table) {
-            fill_tables_prepare(r);
-            r->opaque_table = malloc((size_t)256 * 768 * sizeof *r->opaque_table); /* NULL: the cache alone */
-        }
         if (!r->blend_src_valid || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
             r->blend_src_valid = 1;

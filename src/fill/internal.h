@@ -176,8 +176,11 @@ struct cg_rasterizer {
      * blended code of each destination code, per channel (table + c * 768
      * + 256 * channel + code; allocated on first use, NULL when memory ran
      * out).  An entry is 256 + the code once computed, 0 before; a row is
-     * cleared when first used in a generation. */
+     * cleared when first used in a generation.  Allocated from the second
+     * opaque fill of a rasterizer on, so that one-shot calls (which create
+     * a rasterizer per shape) do not pay for it. */
     uint16_t *opaque_table;
+    unsigned opaque_fills;
     uint32_t opaque_gen[256];
 };
 

@@ -652,6 +652,66 @@ static void aa_blending_reused(void)
     cg_rasterizer_free(r);
 }
 
+/* Opaque paints over opaque images of many colours through one reused
+ * rasterizer, paints alternating between colours (so blends are looked up
+ * in tables built per colour and coverage): every pixel equals
+ * cg_image_blend of the paint with alpha = the pixel's coverage, taken from
+ * the same polygon filled over a transparent image. */
+static void aa_opaque_over_opaque(void)
+{
+    check_rng rng = {23};
+    cg_rasterizer *r;
+    CHECK(cg_rasterizer_create(&r) == CG_OK);
+    const int size = 48;
+    cg_image *im, *expect, *cover;
+    cg_image_create(&im, size, size, CG_PIXEL_RGBA8);
+    cg_image_create(&expect, size, size, CG_PIXEL_RGBA8);
+    cg_image_create(&cover, size, size, CG_PIXEL_RGBA8);
+    const cg_rgba8 palette[5] = {{30, 60, 200, 255}, {200, 90, 40, 255}, {255, 255, 255, 255},
+                                 {0, 0, 0, 255}, {17, 240, 128, 255}};
+    for (int y = 0; y < size; y++)
+        for (int x = 0; x < size; x++) {
+            cg_rgba8 c = x < size / 2 ? palette[check_rng_int(&rng, 0, 4)]
+                                      : (cg_rgba8){(uint8_t)check_rng_int(&rng, 0, 255),
+                                                   (uint8_t)check_rng_int(&rng, 0, 255),
+                                                   (uint8_t)check_rng_int(&rng, 0, 255), 255};
+            cg_image_set_rgba8(im, x, y, c);
+        }
+    int bad = 0, partial = 0;
+    for (int t = 0; t < 120; t++) {
+        cg_vec2 p[32];
+        int n = star_polygon(&rng, p, check_rng_range(&rng, 0, size),
+                             check_rng_range(&rng, 0, size), 0.3, check_rng_range(&rng, 4, 30));
+        cg_paint paint = cg_paint_solid(palette[t % 2 ? 1 : check_rng_int(&rng, 0, 4)]);
+        memset(cover->data, 0, (size_t)cover->stride * size);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, cover, p, &n, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+        memcpy(expect->data, im->data, (size_t)im->stride * size);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, im, p, &n, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+        cg_rgbaf src = cg_rgba8_to_linear(paint.color);
+        for (int y = 0; y < size; y++)
+            for (int x = 0; x < size; x++) {
+                int c = cg_image_get_rgba8(cover, x, y).a;
+                if (c == 0)
+                    continue;
+                partial += c < 255;
+                cg_rgbaf s = src;
+                s.a = c / 255.0f;
+                cg_image_blend(expect, x, y, s);
+                cg_rgba8 a = cg_image_get_rgba8(im, x, y), b = cg_image_get_rgba8(expect, x, y);
+                if ((abs(a.r - b.r) > 1 || abs(a.g - b.g) > 1 || abs(a.b - b.b) > 1 || a.a != 255)
+                    && ++bad <= 5)
+                    fprintf(stderr, "opaque over opaque %d (%d,%d) c %d: %d,%d,%d,%d vs %d,%d,%d\n",
+                            t, x, y, c, a.r, a.g, a.b, a.a, b.r, b.g, b.b);
+            }
+    }
+    CHECK_MSG(partial > 1000, "only %d partly covered pixels", partial);
+    CHECK_MSG(bad == 0, "%d pixels blend differently from cg_image_blend", bad);
+    cg_image_free(im);
+    cg_image_free(expect);
+    cg_image_free(cover);
+    cg_rasterizer_free(r);
+}
+
 /* Even-odd against non-zero on a pentagram; gradients; linear light. */
 static void rules_and_paints(void)
 {
@@ -726,6 +786,7 @@ int main(void)
     curves();
     aa_blending();
     aa_blending_reused();
+    aa_opaque_over_opaque();
     huge_curves();
     rules_and_paints();
     return check_finish();

@@ -132,7 +132,8 @@ typedef struct fill_crossing {
     int dir;
 } fill_crossing;
 
-#define FILL_BLEND_CACHE 1024 /* entries, a power of two */
+#define FILL_BLEND_BITS 10
+#define FILL_BLEND_CACHE (1 << FILL_BLEND_BITS) /* entries */
 #define FILL_BLEND_GENERATIONS (1u << 24)
 
 struct cg_rasterizer {
@@ -171,6 +172,16 @@ struct cg_rasterizer {
     int blend_src_valid;
     uint64_t blend_key[FILL_BLEND_CACHE];
     uint32_t blend_value[FILL_BLEND_CACHE];
+    /* Opaque solid paint over opaque pixels: for each coverage c, the
+     * blended code of each destination code, per channel (table + c * 768
+     * + 256 * channel + code; allocated on first use, NULL when memory ran
+     * out).  An entry is 256 + the code once computed, 0 before; a row is
+     * cleared when first used in a generation.  Allocated from the second
+     * opaque fill of a rasterizer on, so that one-shot calls (which create
+     * a rasterizer per shape) do not pay for it. */
+    uint16_t *opaque_table;
+    unsigned opaque_fills;
+    uint32_t opaque_gen[256];
 };
 
 void fill_tables_prepare(struct cg_rasterizer *r);
@@ -265,6 +276,7 @@ static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t ge
 {
     if (++gen >= FILL_BLEND_GENERATIONS) {
         memset(r->blend_key, 0, sizeof r->blend_key);
+        memset(r->opaque_gen, 0, sizeof r->opaque_gen);
         gen = 1;
     }
     return gen;
@@ -277,6 +289,10 @@ typedef struct fill_blend_state {
     uint64_t *keys;
     uint32_t *values;
     uint64_t generation; /* shifted into place */
+    uint16_t *table;     /* the opaque table (NULL: unused) */
+    uint32_t *table_gen;
+    uint32_t gen;
+    uint32_t alpha_mask; /* the alpha byte of a pixel's 32 bits */
     uint32_t full;
     int opaque;
     int keep_same; /* opaque paint over pixels of its own colour changes only alpha */
@@ -293,14 +309,23 @@ static inline fill_blend_state fill_blend_begin(const fill_painter *p)
     s.full = p->encoded;
     s.opaque = p->opaque;
     s.keep_same = p->opaque && p->same_exact;
-    cg_rgba8 mask = {255, 255, 255, 0};
+    cg_rgba8 mask = {255, 255, 255, 0}, alpha = {0, 0, 0, 255};
     memcpy(&s.rgb_mask, &mask, sizeof s.rgb_mask);
+    memcpy(&s.alpha_mask, &alpha, sizeof s.alpha_mask);
+    s.table = p->opaque ? p->cache->opaque_table : NULL;
+    s.table_gen = p->cache->opaque_gen;
+    s.gen = p->cache->blend_gen;
     return s;
 }
 
 /* A miss of the cache: blends and records the result (out of line, so that
  * the hit path below stays small enough to inline). */
 void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot);
+
+/* Clears row c of the opaque table for the current generation. */
+void fill_opaque_row(const fill_blend_state *s, int c);
+/* Computes entry e (256 * channel + code) of row c of the opaque table. */
+int fill_opaque_entry(const fill_blend_state *s, int c, int e);
 
 #if defined(__GNUC__)
 #define FILL_INLINE __attribute__((always_inline)) inline
@@ -319,7 +344,23 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
         return;
     }
     uint32_t v = *d;
+    if (s->table && (v & s->alpha_mask) == s->alpha_mask) {
+        /* opaque over opaque: three look-ups in the coverage's row */
+        if (s->table_gen[c] != s->gen)
+            fill_opaque_row(s, c);
+        const uint16_t *t = s->table + (size_t)c * 768;
+        cg_rgba8 px;
+        memcpy(&px, &v, sizeof px);
+        int r = t[px.r], g = t[256 + px.g], b = t[512 + px.b];
+        px.r = (uint8_t)(r ? r : fill_opaque_entry(s, c, px.r));
+        px.g = (uint8_t)(g ? g : fill_opaque_entry(s, c, 256 + px.g));
+        px.b = (uint8_t)(b ? b : fill_opaque_entry(s, c, 512 + px.b));
+        memcpy(d, &px, sizeof px);
+        return;
+    }
     if (s->keep_same && ((v ^ s->full) & s->rgb_mask) == 0) {
+        if (v == s->full) /* over its own opaque colour: unchanged */
+            return;
         /* a pixel of the paint's own colour: only its alpha changes (see
          * fill_solid_pixel; over alpha 0 and 255 the formula gives the
          * same as the cases there) */
@@ -331,7 +372,7 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
         return;
     }
     uint64_t key = v | (uint64_t)c << 32 | s->generation;
-    uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> 22 & (FILL_BLEND_CACHE - 1);
+    uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> (32 - FILL_BLEND_BITS);
     if (s->keys[slot] == key)
         *d = s->values[slot];
     else

@@ -186,6 +186,26 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
+void fill_opaque_row(const fill_blend_state *s, int c)
+{
+    memset(s->table + (size_t)c * 768, 0, 768 * sizeof *s->table);
+    s->table_gen[c] = s->gen;
+}
+
+int fill_opaque_entry(const fill_blend_state *s, int c, int e)
+{
+    /* the blend of fill_blend8 over an opaque pixel: the same arithmetic,
+     * so the same result as blending the pixel itself */
+    const fill_painter *p = s->p;
+    const struct cg_rasterizer *t = p->tables;
+    float as = p->a * (c * (1.0f / 255.0f));
+    float src = e < 256 ? p->r : (e < 512 ? p->g : p->b);
+    float dk = t->decode[e & 255];
+    int code = fill_encode_unit(t, dk + (src - dk) * as);
+    s->table[(size_t)c * 768 + (size_t)e] = (uint16_t)(256 + code);
+    return code;
+}
+
 void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot)
 {
     cg_rgba8 px;

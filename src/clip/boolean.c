@@ -1579,10 +1579,16 @@ static int sweep_alloc(sweep *s, int light)
                         &s->brkq_next, &s->clus};
     int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
     double **f64[] = {&s->xc, &s->xn};
+    /* the sorts' scratch is needed only before the sweep: it shares its
+     * room with the windings and runs, which are needed only during it: a
+     * smaller block, fewer fresh pages to touch on large inputs) */
+    size_t shared = 4 * n1 * sizeof(int64_t), sorting = 2 * nscratch * sizeof(keyval);
+    if (sorting > shared)
+        shared = sorting;
     size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
     need += (nids * n1 + 3 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
-    need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
-    need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
+    need += 2 * n1 * sizeof(int64_t) + 2 * n1 * sizeof(double);
+    need += shared + nh * sizeof(hseg);
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
@@ -1595,8 +1601,11 @@ static int sweep_alloc(sweep *s, int light)
     char *p = s->mem;
     for (size_t i = 0; i < nids; i++)
         *ids[i] = carve(&p, n1 * sizeof(uint32_t));
+    char *common = carve(&p, shared);
     for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
-        *i64[i] = carve(&p, n1 * sizeof(int64_t));
+        *i64[i] = (int64_t *)(void *)(common + i * n1 * sizeof(int64_t));
+    s->scratch = (keyval *)(void *)common;
+    s->scratch2 = (keyval *)(void *)(common + nscratch * sizeof(keyval));
     for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
         *f64[i] = carve(&p, n1 * sizeof(double));
     s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
@@ -1608,8 +1617,6 @@ static int sweep_alloc(sweep *s, int light)
     s->brk = s->run_open + 2 * n1;
     s->brk_next = s->run_open + 3 * n1;
     memset(s->run_open, 0, 4 * n1);
-    s->scratch = carve(&p, nscratch * sizeof *s->scratch);
-    s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
     s->hsorted = carve(&p, nh * sizeof *s->hsorted);
     s->horder = carve(&p, nh * sizeof *s->horder);
     if (light)

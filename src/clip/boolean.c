@@ -299,7 +299,33 @@ typedef struct sweep {
     size_t nbrkq, capbrkq;
     int brkq_full;
     int use_input_lines; /* round on the input edges (early passes) */
+    struct ck_log *log;   /* checkpoints of this pass, or NULL */
+    size_t ck_visits;     /* the next checkpoint once visits reach this */
+    size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
 } sweep;
+
+/* Checkpoints.  A full pass that splits edges is repeated, but below the
+ * lowest split edge the next pass would see exactly the same edges, events
+ * and classification.  So while a pass still classifies, it notes from time
+ * to time its whole state at the start of a scanline (the active edges in
+ * order, with their x there, windings, open runs and run breaks, and how
+ * many pieces were emitted); the next pass starts at the last such scanline
+ * at or below every split edge, with that state, and keeps the pieces
+ * emitted below it. */
+typedef struct ck_edge {
+    uint32_t e;
+    unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
+    double x;
+    int64_t wr0, wr1, run_x, run_y;
+} ck_edge;
+typedef struct ck_point { int64_t y; size_t np, first, n; } ck_point;
+typedef struct ck_log {
+    ck_point *pt;
+    size_t npt, cappt;
+    ck_edge *ed;
+    size_t ned, caped;
+    size_t budget; /* most edge records kept */
+} ck_log;
 
 static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 {
@@ -638,20 +664,119 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
     return 1;
 }
 
+/* Notes the state at the start of scanline y (before its events): 0 when
+ * no more checkpoints are taken (budget spent or out of memory). */
+static int ck_record(sweep *s, int64_t y)
+{
+    ck_log *L = s->log;
+    size_t n = s->nact;
+    if (L->ned + n > L->budget)
+        return 0;
+    GROW(L->pt, L->npt, L->cappt, return 0);
+    while (L->ned + n > L->caped) {
+        size_t c = L->caped ? 2 * L->caped : 256;
+        ck_edge *p = realloc(L->ed, c * sizeof *p);
+        if (!p)
+            return 0;
+        L->ed = p;
+        L->caped = c;
+    }
+    L->pt[L->npt++] = (ck_point){y, s->g->np, L->ned, n};
+    for (size_t k = 0; k < n; k++) {
+        uint32_t e = s->act[k];
+        L->ed[L->ned++] = (ck_edge){e,
+                                    (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
+                                        (unsigned)s->run_up[e] << 2,
+                                    s->xn[e], s->wr0[e], s->wr1[e], s->run_x[e], s->run_y[e]};
+    }
+    return 1;
+}
+
+/* first of a[0..n) (edge numbers sorted by a field) whose field is >= y */
+static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t y, int top)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if ((top ? E[a[mid]].yt : E[a[mid]].yb) < y)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Starts this pass at the last checkpoint of the previous one at or below
+ * y0 (every edge below it kept its number map[] of the last pass): 1 when
+ * resumed, 0 when it starts from the bottom. */
+static int ck_resume(sweep *s, const ck_log *L, const uint32_t *map, size_t old_ne, int64_t y0)
+{
+    engine *g = s->g;
+    size_t j = L->npt;
+    while (j > 0 && L->pt[j - 1].y > y0)
+        j--;
+    if (j == 0)
+        return 0;
+    const ck_point *c = &L->pt[j - 1];
+    size_t lo = 0, hi = s->nys;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (s->ys[mid] < c->y)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo == s->nys || s->ys[lo] != c->y)
+        return 0;
+    const ck_edge *r = L->ed + c->first;
+    for (size_t k = 0; k < c->n; k++)
+        if (r[k].e >= old_ne || map[r[k].e] == UINT32_MAX)
+            return 0; /* (cannot happen: only edges below y0 are active) */
+    s->nbrkq = 0;
+    for (size_t k = 0; k < c->n; k++) {
+        uint32_t e = map[r[k].e];
+        s->act[k] = e;
+        s->xn[e] = r[k].x;
+        s->brk_next[e] = (unsigned char)(r[k].flags & 1);
+        s->run_open[e] = (unsigned char)(r[k].flags >> 1 & 1);
+        s->run_up[e] = (unsigned char)(r[k].flags >> 2 & 1);
+        s->wr0[e] = r[k].wr0;
+        s->wr1[e] = r[k].wr1;
+        s->run_x[e] = r[k].run_x;
+        s->run_y[e] = r[k].run_y;
+        if (r[k].flags & 1)
+            s->brkq_next[s->nbrkq++] = e;
+    }
+    s->nact = c->n;
+    g->np = c->np;
+    s->start_iy = lo;
+    s->start_ip = first_edge_at(g->E, s->by_bottom, g->ne, c->y, 0);
+    s->start_it = first_edge_at(g->E, s->by_top, g->ne, c->y, 1);
+    return 1;
+}
+
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
  * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
  * result). */
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = s->start_ip, it = s->start_it, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
-    s->nact = 0;
-    for (size_t iy = 0; iy < nys; iy++) {
+    if (!s->start_iy)
+        s->nact = 0;
+    for (size_t iy = s->start_iy; iy < nys; iy++) {
         int64_t y = s->ys[iy];
         int has_next = iy + 1 < nys;
         int64_t yn = has_next ? s->ys[iy + 1] : y;
+        if (s->log && s->classify && s->visits >= s->ck_visits) {
+            /* a checkpoint costs about as much as a look at each active
+             * edge: one per eight such looks at most */
+            if (!ck_record(s, y))
+                s->log = NULL;
+            s->ck_visits = s->visits + 8 * s->nact + 64;
+        }
         uint32_t *below = s->act;
         size_t nb = s->nact;
         /* x at y of the edges of the last beam: computed there as its top */
@@ -1744,6 +1869,10 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     size_t visits = 0, edges = 0; /* of the last full sweep */
     carry c;
     memset(&c, 0, sizeof c);
+    ck_log log;
+    memset(&log, 0, sizeof log);
+    int can_resume = 0;
+    int64_t y0 = 0; /* the lowest bottom of the edges split by the last pass */
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
@@ -1777,6 +1906,12 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
+        if (can_resume && !light)
+            ck_resume(&s, &log, c.map, c.n, y0);
+        log.npt = log.ned = 0;
+        log.budget = 2 * g->ne + 1024;
+        s.log = &log;
+        s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {
             if (r < 0)
@@ -1791,6 +1926,11 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
+        y0 = INT64_MAX;
+        for (size_t i = 0; i < g->ns; i++)
+            if (g->E[g->S[i].edge].yb < y0)
+                y0 = g->E[g->S[i].edge].yb;
+        can_resume = 1;
         if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
             break;
         c.valid = 1;
@@ -1800,6 +1940,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
     }
     free(s.mem);
+    free(log.pt);
+    free(log.ed);
     free(c.by_bottom);
     free(c.by_top);
     free(c.map);

@@ -302,6 +302,14 @@ typedef struct sweep {
     struct ck_log *log;   /* checkpoints of this pass, or NULL */
     size_t ck_visits;     /* the next checkpoint once visits reach this */
     size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
+    int64_t yspan;        /* from the first scanline to the last */
+    /* the hand-over to the last pass's results (ck_same) */
+    const struct ck_log *prev; /* or NULL */
+    const uint32_t *prev_map;  /* its edge numbers to ours */
+    size_t prev_ne, prev_j;
+    const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
+    size_t nbands, band;
+    const piece *saved;        /* its pieces */
 } sweep;
 
 /* Checkpoints.  A full pass that splits edges is repeated, but below the
@@ -325,6 +333,7 @@ typedef struct ck_log {
     ck_edge *ed;
     size_t ned, caped;
     size_t budget; /* most edge records kept */
+    size_t end_np; /* pieces at the end of the pass */
 } ck_log;
 
 static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
@@ -333,7 +342,12 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
     GROW(g->S, g->ns, g->caps, return 0);
     g->S[g->ns++] = (splitpt){e, x, y};
     s->changed = 1;
-    s->classify = 0; /* this pass will be repeated: stop classifying */
+    /* this pass will be repeated; it goes on classifying so that the next
+     * pass can take its results between the split edges, unless they are
+     * many or long (then little would be left to take) */
+    const bedge *ed = &g->E[e];
+    if (g->ns > 32 || 2 * (ed->yt - ed->yb) > s->yspan)
+        s->classify = 0;
     return 1;
 }
 
@@ -666,6 +680,12 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
 
 /* Notes the state at the start of scanline y (before its events): 0 when
  * no more checkpoints are taken (budget spent or out of memory). */
+static inline unsigned ck_flags(const sweep *s, uint32_t e)
+{
+    return (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
+           (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
+}
+
 static int ck_record(sweep *s, int64_t y)
 {
     ck_log *L = s->log;
@@ -684,10 +704,26 @@ static int ck_record(sweep *s, int64_t y)
     L->pt[L->npt++] = (ck_point){y, s->g->np, L->ned, n};
     for (size_t k = 0; k < n; k++) {
         uint32_t e = s->act[k];
-        L->ed[L->ned++] = (ck_edge){e,
-                                    (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
-                                        (unsigned)s->run_up[e] << 2,
-                                    s->xn[e], s->wr0[e], s->wr1[e], s->run_x[e], s->run_y[e]};
+        L->ed[L->ned++] = (ck_edge){e, ck_flags(s, e), s->xn[e], s->wr0[e], s->wr1[e],
+                                    s->run_x[e], s->run_y[e]};
+    }
+    return 1;
+}
+
+/* Is this pass's state at the start of the scanline of checkpoint c of the
+ * last pass the same as that pass's there?  Then, as no edge above was
+ * split, the rest of this pass would be the rest of that one. */
+static int ck_same(const sweep *s, const ck_point *c)
+{
+    if (c->n != s->nact)
+        return 0;
+    const ck_edge *r = s->prev->ed + c->first;
+    for (size_t k = 0; k < c->n; k++) {
+        uint32_t e = s->act[k];
+        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] != e || r[k].flags != ck_flags(s, e) ||
+            r[k].x != s->xn[e] || r[k].wr0 != s->wr0[e] || r[k].wr1 != s->wr1[e] ||
+            (s->run_open[e] && (r[k].run_x != s->run_x[e] || r[k].run_y != s->run_y[e])))
+            return 0;
     }
     return 1;
 }
@@ -706,16 +742,15 @@ static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t
     return lo;
 }
 
-/* Starts this pass at the last checkpoint of the previous one at or below
- * y0 (every edge below it kept its number map[] of the last pass): 1 when
- * resumed, 0 when it starts from the bottom. */
-static int ck_resume(sweep *s, const ck_log *L, const uint32_t *map, size_t old_ne, int64_t y0)
+/* Takes the state of the last checkpoint L->pt[j] (j >= j0) of the last
+ * pass at or below y (every edge active there kept its number, map[] of
+ * the last pass's): its index + 1, or 0 when there is none. */
+static size_t ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
 {
-    engine *g = s->g;
     size_t j = L->npt;
-    while (j > 0 && L->pt[j - 1].y > y0)
+    while (j > j0 && L->pt[j - 1].y > y)
         j--;
-    if (j == 0)
+    if (j == j0)
         return 0;
     const ck_point *c = &L->pt[j - 1];
     size_t lo = 0, hi = s->nys;
@@ -730,11 +765,12 @@ static int ck_resume(sweep *s, const ck_log *L, const uint32_t *map, size_t old_
         return 0;
     const ck_edge *r = L->ed + c->first;
     for (size_t k = 0; k < c->n; k++)
-        if (r[k].e >= old_ne || map[r[k].e] == UINT32_MAX)
-            return 0; /* (cannot happen: only edges below y0 are active) */
+        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] == UINT32_MAX)
+            return 0; /* (cannot happen: no active edge there was split) */
     s->nbrkq = 0;
+    s->brkq_full = 0;
     for (size_t k = 0; k < c->n; k++) {
-        uint32_t e = map[r[k].e];
+        uint32_t e = s->prev_map[r[k].e];
         s->act[k] = e;
         s->xn[e] = r[k].x;
         s->brk_next[e] = (unsigned char)(r[k].flags & 1);
@@ -748,11 +784,10 @@ static int ck_resume(sweep *s, const ck_log *L, const uint32_t *map, size_t old_
             s->brkq_next[s->nbrkq++] = e;
     }
     s->nact = c->n;
-    g->np = c->np;
     s->start_iy = lo;
-    s->start_ip = first_edge_at(g->E, s->by_bottom, g->ne, c->y, 0);
-    s->start_it = first_edge_at(g->E, s->by_top, g->ne, c->y, 1);
-    return 1;
+    s->start_ip = first_edge_at(s->g->E, s->by_bottom, s->g->ne, c->y, 0);
+    s->start_it = first_edge_at(s->g->E, s->by_top, s->g->ne, c->y, 1);
+    return j;
 }
 
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
@@ -766,10 +801,43 @@ static int run_sweep(sweep *s)
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
     if (!s->start_iy)
         s->nact = 0;
+    s->yspan = nys ? s->ys[nys - 1] - s->ys[0] : 0;
     for (size_t iy = s->start_iy; iy < nys; iy++) {
         int64_t y = s->ys[iy];
         int has_next = iy + 1 < nys;
         int64_t yn = has_next ? s->ys[iy + 1] : y;
+        while (s->band < s->nbands && s->bands[s->band][1] < y)
+            s->band++;
+        if (s->prev && s->band > 0 && !s->changed &&
+            (s->band == s->nbands || y <= s->bands[s->band][0])) {
+            /* between the split edges: the last pass's results hold from
+             * the first checkpoint where the states agree to the last one
+             * below the next split edge */
+            const struct ck_log *L = s->prev;
+            while (s->prev_j < L->npt && L->pt[s->prev_j].y < y)
+                s->prev_j++;
+            if (s->prev_j < L->npt && L->pt[s->prev_j].y == y && ck_same(s, &L->pt[s->prev_j])) {
+                size_t from = L->pt[s->prev_j].np, to = s->prev->end_np, j = 0;
+                if (s->band < s->nbands) {
+                    j = ck_load(s, L, s->prev_j, s->bands[s->band][0]);
+                    if (!j)
+                        return -1; /* (cannot happen: prev_j itself is one) */
+                    to = L->pt[j - 1].np;
+                }
+                for (size_t k = from; k < to; k++)
+                    if (!emit(g, s->saved[k].x0, s->saved[k].y0, s->saved[k].x1, s->saved[k].y1))
+                        return 0;
+                if (!j)
+                    return 1;
+                s->prev_j = j;
+                iy = s->start_iy;
+                ip = s->start_ip;
+                it = s->start_it;
+                y = s->ys[iy];
+                has_next = iy + 1 < nys;
+                yn = has_next ? s->ys[iy + 1] : y;
+            }
+        }
         if (s->log && s->classify && s->visits >= s->ck_visits) {
             /* a checkpoint costs about as much as a look at each active
              * edge: one per eight such looks at most */
@@ -940,6 +1008,7 @@ static int run_sweep(sweep *s)
         /* the order at yn: an inversion is a crossing inside the beam,
          * unless the two edges meet at y (then it is their order) */
         double last = -INFINITY; /* x at yn of above[k - 1] */
+        size_t cross_lo = SIZE_MAX, cross_hi = 0; /* positions of crossings */
         for (size_t k = 0; k < na; k++) {
             uint32_t v = above[k];
             const bedge *ev = &E[v];
@@ -978,6 +1047,8 @@ static int run_sweep(sweep *s)
                         py = yn;
                     if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
                         return 0;
+                    cross_lo = m - 1 < cross_lo ? m - 1 : cross_lo;
+                    cross_hi = k > cross_hi ? k : cross_hi;
                 }
                 above[m] = u;
                 m--;
@@ -989,6 +1060,21 @@ static int run_sweep(sweep *s)
             continue; /* this pass will be repeated */
         if (!dirty_sorted)
             sort_u32(dirty, nd);
+        if (cross_lo <= cross_hi) {
+            /* edges crossed inside the beam (the pass will be repeated):
+             * the windings of the positions between them change too */
+            size_t w = 0, d = 0;
+            for (; d < nd && dirty[d] < cross_lo; d++)
+                if (!w || fresh[w - 1] != dirty[d])
+                    fresh[w++] = dirty[d];
+            for (size_t q = cross_lo; q <= cross_hi; q++)
+                fresh[w++] = (uint32_t)q;
+            for (; d < nd; d++)
+                if (dirty[d] > cross_hi && fresh[w - 1] != dirty[d])
+                    fresh[w++] = dirty[d];
+            memcpy(dirty, fresh, w * sizeof *dirty);
+            nd = w;
+        }
         if (!classify_dirty(s, y, above, na, dirty, nd))
             return 0;
     }
@@ -1860,6 +1946,12 @@ static int carry_keep(carry *c, const sweep *s)
     return 1;
 }
 
+static int cmp_band(const void *a, const void *b)
+{
+    const int64_t *p = a, *q = b;
+    return (p[0] > q[0]) - (p[0] < q[0]);
+}
+
 static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
@@ -1869,10 +1961,14 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     size_t visits = 0, edges = 0; /* of the last full sweep */
     carry c;
     memset(&c, 0, sizeof c);
-    ck_log log;
-    memset(&log, 0, sizeof log);
-    int can_resume = 0;
-    int64_t y0 = 0; /* the lowest bottom of the edges split by the last pass */
+    ck_log logs[2]; /* this pass's checkpoints, the last pass's */
+    memset(logs, 0, sizeof logs);
+    int cur = 0, can_resume = 0;
+    /* the y ranges of the edges split by the last pass (merged), and its
+     * pieces */
+    int64_t(*bands)[2] = NULL;
+    size_t nbands = 0;
+    piece *saved = NULL;
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
@@ -1906,11 +2002,23 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
-        if (can_resume && !light)
-            ck_resume(&s, &log, c.map, c.n, y0);
-        log.npt = log.ned = 0;
-        log.budget = 2 * g->ne + 1024;
-        s.log = &log;
+        if (can_resume && !light && nbands) {
+            s.prev_map = c.map;
+            s.prev_ne = c.n;
+            s.prev_j = ck_load(&s, &logs[cur ^ 1], 0, bands[0][0]);
+            if (s.prev_j)
+                g->np = logs[cur ^ 1].pt[s.prev_j - 1].np;
+            if (saved) {
+                s.prev = &logs[cur ^ 1];
+                s.bands = (const int64_t(*)[2])bands;
+                s.nbands = nbands;
+                s.saved = saved;
+            }
+        }
+        ck_log *log = &logs[cur];
+        log->npt = log->ned = 0;
+        log->budget = 2 * g->ne + 1024;
+        s.log = pass == 0 ? log : NULL; /* later passes are nearly always the last */
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {
@@ -1926,11 +2034,43 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
-        y0 = INT64_MAX;
-        for (size_t i = 0; i < g->ns; i++)
-            if (g->E[g->S[i].edge].yb < y0)
-                y0 = g->E[g->S[i].edge].yb;
+        free(bands);
+        free(saved);
+        saved = NULL;
+        nbands = 0;
+        log->end_np = g->np;
+        /* (when this pass stopped classifying, only the lowest bottom is
+         * of use: one band) */
+        size_t nb = s.classify ? g->ns : 1;
+        bands = malloc(nb * sizeof *bands);
+        if (!bands)
+            break;
+        bands[0][0] = INT64_MAX;
+        bands[0][1] = INT64_MIN;
+        for (size_t i = 0; i < g->ns; i++) {
+            const bedge *e = &g->E[g->S[i].edge];
+            size_t k = nb == 1 ? 0 : i;
+            bands[k][0] = nb == 1 && bands[0][0] < e->yb ? bands[0][0] : e->yb;
+            bands[k][1] = nb == 1 && bands[0][1] > e->yt ? bands[0][1] : e->yt;
+        }
+        qsort(bands, nb, sizeof *bands, cmp_band);
+        for (size_t i = 0; i < nb; i++) {
+            if (nbands && bands[i][0] <= bands[nbands - 1][1]) {
+                if (bands[i][1] > bands[nbands - 1][1])
+                    bands[nbands - 1][1] = bands[i][1];
+            } else {
+                bands[nbands][0] = bands[i][0];
+                bands[nbands][1] = bands[i][1];
+                nbands++;
+            }
+        }
         can_resume = 1;
+        if (s.classify && g->np) {
+            saved = malloc(g->np * sizeof *saved);
+            if (saved)
+                memcpy(saved, g->P, g->np * sizeof *saved);
+        }
+        cur ^= 1;
         if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
             break;
         c.valid = 1;
@@ -1940,8 +2080,12 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
     }
     free(s.mem);
-    free(log.pt);
-    free(log.ed);
+    for (int k = 0; k < 2; k++) {
+        free(logs[k].pt);
+        free(logs[k].ed);
+    }
+    free(saved);
+    free(bands);
     free(c.by_bottom);
     free(c.by_top);
     free(c.map);

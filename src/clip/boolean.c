@@ -309,7 +309,8 @@ typedef struct sweep {
     size_t prev_ne, prev_j;
     const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
     size_t nbands, band;
-    const piece *saved;        /* its pieces */
+    size_t (*ranges)[2];       /* the ranges of its pieces taken */
+    size_t nranges;
 } sweep;
 
 /* Checkpoints.  A full pass that splits edges is repeated, but below the
@@ -824,9 +825,9 @@ static int run_sweep(sweep *s)
                         return -1; /* (cannot happen: prev_j itself is one) */
                     to = L->pt[j - 1].np;
                 }
-                for (size_t k = from; k < to; k++)
-                    if (!emit(g, s->saved[k].x0, s->saved[k].y0, s->saved[k].x1, s->saved[k].y1))
-                        return 0;
+                s->ranges[s->nranges][0] = from;
+                s->ranges[s->nranges][1] = to;
+                s->nranges++;
                 if (!j)
                     return 1;
                 s->prev_j = j;
@@ -1790,16 +1791,10 @@ static int sweep_alloc(sweep *s, int light)
                         &s->brkq_next, &s->clus};
     int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
     double **f64[] = {&s->xc, &s->xn};
-    /* the sorts' scratch is needed only before the sweep: it shares its
-     * room with the windings and runs, which are needed only during it: a
-     * smaller block, fewer fresh pages to touch on large inputs) */
-    size_t shared = 4 * n1 * sizeof(int64_t), sorting = 2 * nscratch * sizeof(keyval);
-    if (sorting > shared)
-        shared = sorting;
     size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
     need += (nids * n1 + 3 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
-    need += 2 * n1 * sizeof(int64_t) + 2 * n1 * sizeof(double);
-    need += shared + nh * sizeof(hseg);
+    need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
+    need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
@@ -1812,11 +1807,8 @@ static int sweep_alloc(sweep *s, int light)
     char *p = s->mem;
     for (size_t i = 0; i < nids; i++)
         *ids[i] = carve(&p, n1 * sizeof(uint32_t));
-    char *common = carve(&p, shared);
     for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
-        *i64[i] = (int64_t *)(void *)(common + i * n1 * sizeof(int64_t));
-    s->scratch = (keyval *)(void *)common;
-    s->scratch2 = (keyval *)(void *)(common + nscratch * sizeof(keyval));
+        *i64[i] = carve(&p, n1 * sizeof(int64_t));
     for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
         *f64[i] = carve(&p, n1 * sizeof(double));
     s->ys = carve(&p, 2 * n1 * sizeof *s->ys);
@@ -1828,6 +1820,8 @@ static int sweep_alloc(sweep *s, int light)
     s->brk = s->run_open + 2 * n1;
     s->brk_next = s->run_open + 3 * n1;
     memset(s->run_open, 0, 4 * n1);
+    s->scratch = carve(&p, nscratch * sizeof *s->scratch);
+    s->scratch2 = carve(&p, nscratch * sizeof *s->scratch2);
     s->hsorted = carve(&p, nh * sizeof *s->hsorted);
     s->horder = carve(&p, nh * sizeof *s->horder);
     if (light)
@@ -1968,7 +1962,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
      * pieces */
     int64_t(*bands)[2] = NULL;
     size_t nbands = 0;
-    piece *saved = NULL;
+    piece *saved = NULL; /* the first pass's pieces (when it classified) */
+    size_t saved_cap = 0, (*ranges)[2] = NULL;
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
@@ -2006,13 +2001,21 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             s.prev_map = c.map;
             s.prev_ne = c.n;
             s.prev_j = ck_load(&s, &logs[cur ^ 1], 0, bands[0][0]);
-            if (s.prev_j)
-                g->np = logs[cur ^ 1].pt[s.prev_j - 1].np;
+            size_t below = s.prev_j ? logs[cur ^ 1].pt[s.prev_j - 1].np : 0;
             if (saved) {
+                /* its pieces stay where they are; this pass emits only
+                 * those of the bands, and notes the ranges it takes */
                 s.prev = &logs[cur ^ 1];
                 s.bands = (const int64_t(*)[2])bands;
                 s.nbands = nbands;
-                s.saved = saved;
+                s.ranges = ranges;
+                if (below) {
+                    ranges[0][0] = 0;
+                    ranges[0][1] = below;
+                    s.nranges = 1;
+                }
+            } else {
+                g->np = below;
             }
         }
         ck_log *log = &logs[cur];
@@ -2028,6 +2031,31 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         visits = s.visits;
         edges = g->ne;
+        if (saved && s.prev && s.nranges) {
+            /* the pieces taken, then this pass's */
+            size_t w = 0;
+            for (size_t k = 0; k < s.nranges; k++) {
+                memmove(saved + w, saved + ranges[k][0],
+                        (ranges[k][1] - ranges[k][0]) * sizeof *saved);
+                w += ranges[k][1] - ranges[k][0];
+            }
+            if (w + g->np > saved_cap) {
+                piece *q = realloc(saved, (w + g->np) * sizeof *q);
+                if (!q)
+                    break;
+                saved = q;
+                saved_cap = w + g->np;
+            }
+            if (g->np)
+                memcpy(saved + w, g->P, g->np * sizeof *saved);
+            free(g->P);
+            g->P = saved;
+            g->capp = saved_cap;
+            g->np += w;
+            saved = NULL;
+        }
+        free(saved);
+        saved = NULL;
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
@@ -2035,8 +2063,6 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
         free(bands);
-        free(saved);
-        saved = NULL;
         nbands = 0;
         log->end_np = g->np;
         /* (when this pass stopped classifying, only the lowest bottom is
@@ -2065,10 +2091,17 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             }
         }
         can_resume = 1;
-        if (s.classify && g->np) {
-            saved = malloc(g->np * sizeof *saved);
-            if (saved)
-                memcpy(saved, g->P, g->np * sizeof *saved);
+        free(ranges);
+        ranges = NULL;
+        if (pass == 0 && s.classify && g->np) {
+            ranges = malloc((nbands + 1) * sizeof *ranges);
+            if (ranges) {
+                saved = g->P; /* (the next pass starts a new array) */
+                saved_cap = g->capp;
+                g->P = NULL;
+                g->capp = 0;
+                g->np = 0;
+            }
         }
         cur ^= 1;
         if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
@@ -2085,6 +2118,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(logs[k].ed);
     }
     free(saved);
+    free(ranges);
     free(bands);
     free(c.by_bottom);
     free(c.by_top);

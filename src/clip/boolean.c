@@ -344,10 +344,11 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
     g->S[g->ns++] = (splitpt){e, x, y};
     s->changed = 1;
     /* this pass will be repeated; it goes on classifying so that the next
-     * pass can take its results between the split edges, unless they are
-     * many or long (then little would be left to take) */
+     * pass can take its results between the split edges, unless it takes
+     * no checkpoints or they are many or long (then little would be left to
+     * take) */
     const bedge *ed = &g->E[e];
-    if (g->ns > 32 || 2 * (ed->yt - ed->yb) > s->yspan)
+    if (!s->log || g->ns > 16 || 2 * (ed->yt - ed->yb) > s->yspan)
         s->classify = 0;
     return 1;
 }
@@ -2021,7 +2022,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         ck_log *log = &logs[cur];
         log->npt = log->ned = 0;
         log->budget = 2 * g->ne + 1024;
-        s.log = pass == 0 ? log : NULL; /* later passes are nearly always the last */
+        /* (later passes are nearly always the last; small inputs gain
+         * less than the checkpoints cost) */
+        s.log = pass == 0 && g->ne >= 1024 ? log : NULL;
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {
@@ -2063,44 +2066,48 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
         free(bands);
+        bands = NULL;
         nbands = 0;
+        can_resume = 0;
         log->end_np = g->np;
-        /* (when this pass stopped classifying, only the lowest bottom is
-         * of use: one band) */
-        size_t nb = s.classify ? g->ns : 1;
-        bands = malloc(nb * sizeof *bands);
-        if (!bands)
-            break;
-        bands[0][0] = INT64_MAX;
-        bands[0][1] = INT64_MIN;
-        for (size_t i = 0; i < g->ns; i++) {
-            const bedge *e = &g->E[g->S[i].edge];
-            size_t k = nb == 1 ? 0 : i;
-            bands[k][0] = nb == 1 && bands[0][0] < e->yb ? bands[0][0] : e->yb;
-            bands[k][1] = nb == 1 && bands[0][1] > e->yt ? bands[0][1] : e->yt;
-        }
-        qsort(bands, nb, sizeof *bands, cmp_band);
-        for (size_t i = 0; i < nb; i++) {
-            if (nbands && bands[i][0] <= bands[nbands - 1][1]) {
-                if (bands[i][1] > bands[nbands - 1][1])
-                    bands[nbands - 1][1] = bands[i][1];
-            } else {
-                bands[nbands][0] = bands[i][0];
-                bands[nbands][1] = bands[i][1];
-                nbands++;
-            }
-        }
-        can_resume = 1;
         free(ranges);
         ranges = NULL;
-        if (pass == 0 && s.classify && g->np) {
-            ranges = malloc((nbands + 1) * sizeof *ranges);
-            if (ranges) {
-                saved = g->P; /* (the next pass starts a new array) */
-                saved_cap = g->capp;
-                g->P = NULL;
-                g->capp = 0;
-                g->np = 0;
+        if (log->npt) { /* (else there is nothing to resume from) */
+            /* (when this pass stopped classifying, only the lowest bottom is
+             * of use: one band) */
+            size_t nb = s.classify ? g->ns : 1;
+            bands = malloc(nb * sizeof *bands);
+            if (!bands)
+                break;
+            bands[0][0] = INT64_MAX;
+            bands[0][1] = INT64_MIN;
+            for (size_t i = 0; i < g->ns; i++) {
+                const bedge *e = &g->E[g->S[i].edge];
+                size_t k = nb == 1 ? 0 : i;
+                bands[k][0] = nb == 1 && bands[0][0] < e->yb ? bands[0][0] : e->yb;
+                bands[k][1] = nb == 1 && bands[0][1] > e->yt ? bands[0][1] : e->yt;
+            }
+            qsort(bands, nb, sizeof *bands, cmp_band);
+            for (size_t i = 0; i < nb; i++) {
+                if (nbands && bands[i][0] <= bands[nbands - 1][1]) {
+                    if (bands[i][1] > bands[nbands - 1][1])
+                        bands[nbands - 1][1] = bands[i][1];
+                } else {
+                    bands[nbands][0] = bands[i][0];
+                    bands[nbands][1] = bands[i][1];
+                    nbands++;
+                }
+            }
+            can_resume = 1;
+            if (pass == 0 && s.classify && g->np) {
+                ranges = malloc((nbands + 1) * sizeof *ranges);
+                if (ranges) {
+                    saved = g->P; /* (the next pass starts a new array) */
+                    saved_cap = g->capp;
+                    g->P = NULL;
+                    g->capp = 0;
+                    g->np = 0;
+                }
             }
         }
         cur ^= 1;

@@ -2021,7 +2021,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
         ck_log *log = &logs[cur];
         log->npt = log->ned = 0;
-        log->budget = 2 * g->ne + 1024;
+        log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
         /* (later passes are nearly always the last; small inputs gain
          * less than the checkpoints cost) */
         s.log = pass == 0 && g->ne >= 1024 ? log : NULL;
@@ -2032,7 +2032,10 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
                 st = CG_ERANGE;
             break;
         }
-        visits = s.visits;
+        /* (a pass that started at a checkpoint looked at fewer edges than a
+         * whole one would have: the last count stands unless larger) */
+        if (!s.start_iy || s.visits > visits)
+            visits = s.visits;
         edges = g->ne;
         if (saved && s.prev && s.nranges) {
             /* the pieces taken, then this pass's */

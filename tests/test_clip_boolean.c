@@ -540,6 +540,51 @@ static void extremes(void)
     cg_polygon_set64_clear(&r);
 }
 
+/* A smooth ring: n vertices on an ellipse (centre, radii, turned by rot,
+ * clockwise when cw), radius jitter up to `jitter`. */
+static void smooth_ring(check_rng *rng, cg_polygon_set64 *set, int n, double cx, double cy,
+                        double rx, double ry, double rot, int cw, double jitter)
+{
+    cg_point64 *pts = malloc((size_t)n * sizeof *pts);
+    for (int i = 0; i < n; i++) {
+        double t = 2 * M_PI * i / n * (cw ? -1 : 1), j = 1 - check_rng_range(rng, 0, jitter);
+        double x = rx * j * cos(t), y = ry * j * sin(t);
+        pts[i] = (cg_point64){(int64_t)llround(cx + x * cos(rot) - y * sin(rot)),
+                              (int64_t)llround(cy + x * sin(rot) + y * cos(rot))};
+    }
+    cg_polygon_set64_add_ring(set, pts, (size_t)n, 1);
+    free(pts);
+}
+
+/* Smooth shapes of over 1,024 edges that cross a few times, some with
+ * holes: the first pass checkpoints its state and the second sweeps only
+ * the y ranges of the split edges, taking the first pass's results
+ * between them. */
+static void smooth(void)
+{
+    check_rng rng = {0x5300};
+    long membership_checks = 0;
+    for (int it = 0; it < 16; it++) {
+        cg_polygon_set64 a = {0}, b = {0};
+        int n = (int)check_rng_int(&rng, 600, 1500);
+        double jitter = it % 4 == 3 ? 0.02 : 0;
+        smooth_ring(&rng, &a, n, 500000, 500000, 450000, check_rng_range(&rng, 150000, 450000),
+                    check_rng_range(&rng, 0, 3), 0, jitter);
+        if (it % 2) /* holes in a */
+            for (int h = 0; h < 6; h++)
+                smooth_ring(&rng, &a, 24, 250000 + 100000 * h, 500000, 30000, 30000, 0, 1, 0);
+        smooth_ring(&rng, &b, n, check_rng_range(&rng, 400000, 600000),
+                    check_rng_range(&rng, 400000, 600000), 450000,
+                    check_rng_range(&rng, 150000, 450000), check_rng_range(&rng, 0, 3), 0, jitter);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 1), fb = (cg_clip_fill)check_rng_int(&rng, 0, 1);
+        check_round("smooth round", it, &a, fa, &b, fb, &rng, 1000, 1000, 40,
+                    4.0 * (double)(a.point_count + b.point_count) * 1000, &membership_checks);
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+    }
+    printf("smooth: 16 rounds, %ld membership checks\n", membership_checks);
+}
+
 int main(void)
 {
     extremes();
@@ -549,5 +594,6 @@ int main(void)
     fuzz();
     stress();
     crowded();
+    smooth();
     return check_finish();
 }

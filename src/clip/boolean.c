@@ -299,7 +299,43 @@ typedef struct sweep {
     size_t nbrkq, capbrkq;
     int brkq_full;
     int use_input_lines; /* round on the input edges (early passes) */
+    struct ck_log *log;   /* checkpoints of this pass, or NULL */
+    size_t ck_visits;     /* the next checkpoint once visits reach this */
+    size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
+    int64_t yspan;        /* from the first scanline to the last */
+    /* the hand-over to the last pass's results (ck_same) */
+    const struct ck_log *prev; /* or NULL */
+    const uint32_t *prev_map;  /* its edge numbers to ours */
+    size_t prev_ne, prev_j;
+    const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
+    size_t nbands, band;
+    size_t (*ranges)[2];       /* the ranges of its pieces taken */
+    size_t nranges;
 } sweep;
+
+/* Checkpoints.  A full pass that splits edges is repeated, but below the
+ * lowest split edge the next pass would see exactly the same edges, events
+ * and classification.  So while a pass still classifies, it notes from time
+ * to time its whole state at the start of a scanline (the active edges in
+ * order, with their x there, windings, open runs and run breaks, and how
+ * many pieces were emitted); the next pass starts at the last such scanline
+ * at or below every split edge, with that state, and keeps the pieces
+ * emitted below it. */
+typedef struct ck_edge {
+    uint32_t e;
+    unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
+    double x;
+    int64_t wr0, wr1, run_x, run_y;
+} ck_edge;
+typedef struct ck_point { int64_t y; size_t np, first, n; } ck_point;
+typedef struct ck_log {
+    ck_point *pt;
+    size_t npt, cappt;
+    ck_edge *ed;
+    size_t ned, caped;
+    size_t budget; /* most edge records kept */
+    size_t end_np; /* pieces at the end of the pass */
+} ck_log;
 
 static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 {
@@ -307,7 +343,13 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
     GROW(g->S, g->ns, g->caps, return 0);
     g->S[g->ns++] = (splitpt){e, x, y};
     s->changed = 1;
-    s->classify = 0; /* this pass will be repeated: stop classifying */
+    /* this pass will be repeated; it goes on classifying so that the next
+     * pass can take its results between the split edges, unless it takes
+     * no checkpoints or they are many or long (then little would be left to
+     * take) */
+    const bedge *ed = &g->E[e];
+    if (!s->log || g->ns > 16 || 2 * (ed->yt - ed->yb) > s->yspan)
+        s->classify = 0;
     return 1;
 }
 
@@ -638,20 +680,173 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
     return 1;
 }
 
+/* Notes the state at the start of scanline y (before its events): 0 when
+ * no more checkpoints are taken (budget spent or out of memory). */
+static inline unsigned ck_flags(const sweep *s, uint32_t e)
+{
+    return (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
+           (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
+}
+
+static int ck_record(sweep *s, int64_t y)
+{
+    ck_log *L = s->log;
+    size_t n = s->nact;
+    if (L->ned + n > L->budget)
+        return 0;
+    GROW(L->pt, L->npt, L->cappt, return 0);
+    while (L->ned + n > L->caped) {
+        size_t c = L->caped ? 2 * L->caped : 256;
+        ck_edge *p = realloc(L->ed, c * sizeof *p);
+        if (!p)
+            return 0;
+        L->ed = p;
+        L->caped = c;
+    }
+    L->pt[L->npt++] = (ck_point){y, s->g->np, L->ned, n};
+    for (size_t k = 0; k < n; k++) {
+        uint32_t e = s->act[k];
+        L->ed[L->ned++] = (ck_edge){e, ck_flags(s, e), s->xn[e], s->wr0[e], s->wr1[e],
+                                    s->run_x[e], s->run_y[e]};
+    }
+    return 1;
+}
+
+/* Is this pass's state at the start of the scanline of checkpoint c of the
+ * last pass the same as that pass's there?  Then, as no edge above was
+ * split, the rest of this pass would be the rest of that one. */
+static int ck_same(const sweep *s, const ck_point *c)
+{
+    if (c->n != s->nact)
+        return 0;
+    const ck_edge *r = s->prev->ed + c->first;
+    for (size_t k = 0; k < c->n; k++) {
+        uint32_t e = s->act[k];
+        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] != e || r[k].flags != ck_flags(s, e) ||
+            r[k].x != s->xn[e] || r[k].wr0 != s->wr0[e] || r[k].wr1 != s->wr1[e] ||
+            (s->run_open[e] && (r[k].run_x != s->run_x[e] || r[k].run_y != s->run_y[e])))
+            return 0;
+    }
+    return 1;
+}
+
+/* first of a[0..n) (edge numbers sorted by a field) whose field is >= y */
+static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t y, int top)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if ((top ? E[a[mid]].yt : E[a[mid]].yb) < y)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Takes the state of the last checkpoint L->pt[j] (j >= j0) of the last
+ * pass at or below y (every edge active there kept its number, map[] of
+ * the last pass's): its index + 1, or 0 when there is none. */
+static size_t ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
+{
+    size_t j = L->npt;
+    while (j > j0 && L->pt[j - 1].y > y)
+        j--;
+    if (j == j0)
+        return 0;
+    const ck_point *c = &L->pt[j - 1];
+    size_t lo = 0, hi = s->nys;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (s->ys[mid] < c->y)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo == s->nys || s->ys[lo] != c->y)
+        return 0;
+    const ck_edge *r = L->ed + c->first;
+    for (size_t k = 0; k < c->n; k++)
+        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] == UINT32_MAX)
+            return 0; /* (cannot happen: no active edge there was split) */
+    s->nbrkq = 0;
+    s->brkq_full = 0;
+    for (size_t k = 0; k < c->n; k++) {
+        uint32_t e = s->prev_map[r[k].e];
+        s->act[k] = e;
+        s->xn[e] = r[k].x;
+        s->brk_next[e] = (unsigned char)(r[k].flags & 1);
+        s->run_open[e] = (unsigned char)(r[k].flags >> 1 & 1);
+        s->run_up[e] = (unsigned char)(r[k].flags >> 2 & 1);
+        s->wr0[e] = r[k].wr0;
+        s->wr1[e] = r[k].wr1;
+        s->run_x[e] = r[k].run_x;
+        s->run_y[e] = r[k].run_y;
+        if (r[k].flags & 1)
+            s->brkq_next[s->nbrkq++] = e;
+    }
+    s->nact = c->n;
+    s->start_iy = lo;
+    s->start_ip = first_edge_at(s->g->E, s->by_bottom, s->g->ne, c->y, 0);
+    s->start_it = first_edge_at(s->g->E, s->by_top, s->g->ne, c->y, 1);
+    return j;
+}
+
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
  * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
  * result). */
 static int run_sweep(sweep *s)
 {
     engine *g = s->g;
-    size_t ne = g->ne, nys = s->nys, ip = 0, it = 0, ih = 0;
+    size_t ne = g->ne, nys = s->nys, ip = s->start_ip, it = s->start_it, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
-    s->nact = 0;
-    for (size_t iy = 0; iy < nys; iy++) {
+    if (!s->start_iy)
+        s->nact = 0;
+    s->yspan = nys ? s->ys[nys - 1] - s->ys[0] : 0;
+    for (size_t iy = s->start_iy; iy < nys; iy++) {
         int64_t y = s->ys[iy];
         int has_next = iy + 1 < nys;
         int64_t yn = has_next ? s->ys[iy + 1] : y;
+        while (s->band < s->nbands && s->bands[s->band][1] < y)
+            s->band++;
+        if (s->prev && s->band > 0 && !s->changed &&
+            (s->band == s->nbands || y <= s->bands[s->band][0])) {
+            /* between the split edges: the last pass's results hold from
+             * the first checkpoint where the states agree to the last one
+             * below the next split edge */
+            const struct ck_log *L = s->prev;
+            while (s->prev_j < L->npt && L->pt[s->prev_j].y < y)
+                s->prev_j++;
+            if (s->prev_j < L->npt && L->pt[s->prev_j].y == y && ck_same(s, &L->pt[s->prev_j])) {
+                size_t from = L->pt[s->prev_j].np, to = s->prev->end_np, j = 0;
+                if (s->band < s->nbands) {
+                    j = ck_load(s, L, s->prev_j, s->bands[s->band][0]);
+                    if (!j)
+                        return -1; /* (cannot happen: prev_j itself is one) */
+                    to = L->pt[j - 1].np;
+                }
+                s->ranges[s->nranges][0] = from;
+                s->ranges[s->nranges][1] = to;
+                s->nranges++;
+                if (!j)
+                    return 1;
+                s->prev_j = j;
+                iy = s->start_iy;
+                ip = s->start_ip;
+                it = s->start_it;
+                y = s->ys[iy];
+                has_next = iy + 1 < nys;
+                yn = has_next ? s->ys[iy + 1] : y;
+            }
+        }
+        if (s->log && s->classify && s->visits >= s->ck_visits) {
+            /* a checkpoint costs about as much as a look at each active
+             * edge: one per eight such looks at most */
+            if (!ck_record(s, y))
+                s->log = NULL;
+            s->ck_visits = s->visits + 8 * s->nact + 64;
+        }
         uint32_t *below = s->act;
         size_t nb = s->nact;
         /* x at y of the edges of the last beam: computed there as its top */
@@ -815,6 +1010,7 @@ static int run_sweep(sweep *s)
         /* the order at yn: an inversion is a crossing inside the beam,
          * unless the two edges meet at y (then it is their order) */
         double last = -INFINITY; /* x at yn of above[k - 1] */
+        size_t cross_lo = SIZE_MAX, cross_hi = 0; /* positions of crossings */
         for (size_t k = 0; k < na; k++) {
             uint32_t v = above[k];
             const bedge *ev = &E[v];
@@ -853,6 +1049,8 @@ static int run_sweep(sweep *s)
                         py = yn;
                     if (!add_split(s, u, px, py) || !add_split(s, v, px, py))
                         return 0;
+                    cross_lo = m - 1 < cross_lo ? m - 1 : cross_lo;
+                    cross_hi = k > cross_hi ? k : cross_hi;
                 }
                 above[m] = u;
                 m--;
@@ -864,6 +1062,21 @@ static int run_sweep(sweep *s)
             continue; /* this pass will be repeated */
         if (!dirty_sorted)
             sort_u32(dirty, nd);
+        if (cross_lo <= cross_hi) {
+            /* edges crossed inside the beam (the pass will be repeated):
+             * the windings of the positions between them change too */
+            size_t w = 0, d = 0;
+            for (; d < nd && dirty[d] < cross_lo; d++)
+                if (!w || fresh[w - 1] != dirty[d])
+                    fresh[w++] = dirty[d];
+            for (size_t q = cross_lo; q <= cross_hi; q++)
+                fresh[w++] = (uint32_t)q;
+            for (; d < nd; d++)
+                if (dirty[d] > cross_hi && fresh[w - 1] != dirty[d])
+                    fresh[w++] = dirty[d];
+            memcpy(dirty, fresh, w * sizeof *dirty);
+            nd = w;
+        }
         if (!classify_dirty(s, y, above, na, dirty, nd))
             return 0;
     }
@@ -1728,6 +1941,12 @@ static int carry_keep(carry *c, const sweep *s)
     return 1;
 }
 
+static int cmp_band(const void *a, const void *b)
+{
+    const int64_t *p = a, *q = b;
+    return (p[0] > q[0]) - (p[0] < q[0]);
+}
+
 static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
@@ -1737,6 +1956,15 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     size_t visits = 0, edges = 0; /* of the last full sweep */
     carry c;
     memset(&c, 0, sizeof c);
+    ck_log logs[2]; /* this pass's checkpoints, the last pass's */
+    memset(logs, 0, sizeof logs);
+    int cur = 0, can_resume = 0;
+    /* the y ranges of the edges split by the last pass (merged), and its
+     * pieces */
+    int64_t(*bands)[2] = NULL;
+    size_t nbands = 0;
+    piece *saved = NULL; /* the first pass's pieces (when it classified) */
+    size_t saved_cap = 0, (*ranges)[2] = NULL;
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
@@ -1770,20 +1998,122 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
+        if (can_resume && !light && nbands) {
+            s.prev_map = c.map;
+            s.prev_ne = c.n;
+            s.prev_j = ck_load(&s, &logs[cur ^ 1], 0, bands[0][0]);
+            size_t below = s.prev_j ? logs[cur ^ 1].pt[s.prev_j - 1].np : 0;
+            if (saved) {
+                /* its pieces stay where they are; this pass emits only
+                 * those of the bands, and notes the ranges it takes */
+                s.prev = &logs[cur ^ 1];
+                s.bands = (const int64_t(*)[2])bands;
+                s.nbands = nbands;
+                s.ranges = ranges;
+                if (below) {
+                    ranges[0][0] = 0;
+                    ranges[0][1] = below;
+                    s.nranges = 1;
+                }
+            } else {
+                g->np = below;
+            }
+        }
+        ck_log *log = &logs[cur];
+        log->npt = log->ned = 0;
+        log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
+        /* (later passes are nearly always the last; small inputs gain
+         * less than the checkpoints cost) */
+        s.log = pass == 0 && g->ne >= 1024 ? log : NULL;
+        s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {
             if (r < 0)
                 st = CG_ERANGE;
             break;
         }
-        visits = s.visits;
+        /* (a pass that started at a checkpoint looked at fewer edges than a
+         * whole one would have: the last count stands unless larger) */
+        if (!s.start_iy || s.visits > visits)
+            visits = s.visits;
         edges = g->ne;
+        if (saved && s.prev && s.nranges) {
+            /* the pieces taken, then this pass's */
+            size_t w = 0;
+            for (size_t k = 0; k < s.nranges; k++) {
+                memmove(saved + w, saved + ranges[k][0],
+                        (ranges[k][1] - ranges[k][0]) * sizeof *saved);
+                w += ranges[k][1] - ranges[k][0];
+            }
+            if (w + g->np > saved_cap) {
+                piece *q = realloc(saved, (w + g->np) * sizeof *q);
+                if (!q)
+                    break;
+                saved = q;
+                saved_cap = w + g->np;
+            }
+            if (g->np)
+                memcpy(saved + w, g->P, g->np * sizeof *saved);
+            free(g->P);
+            g->P = saved;
+            g->capp = saved_cap;
+            g->np += w;
+            saved = NULL;
+        }
+        free(saved);
+        saved = NULL;
         if (!s.changed) {
             st = assemble(g, result) ? CG_OK : CG_ENOMEM;
             break;
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))
             break;
+        free(bands);
+        bands = NULL;
+        nbands = 0;
+        can_resume = 0;
+        log->end_np = g->np;
+        free(ranges);
+        ranges = NULL;
+        if (log->npt) { /* (else there is nothing to resume from) */
+            /* (when this pass stopped classifying, only the lowest bottom is
+             * of use: one band) */
+            size_t nb = s.classify ? g->ns : 1;
+            bands = malloc(nb * sizeof *bands);
+            if (!bands)
+                break;
+            bands[0][0] = INT64_MAX;
+            bands[0][1] = INT64_MIN;
+            for (size_t i = 0; i < g->ns; i++) {
+                const bedge *e = &g->E[g->S[i].edge];
+                size_t k = nb == 1 ? 0 : i;
+                bands[k][0] = nb == 1 && bands[0][0] < e->yb ? bands[0][0] : e->yb;
+                bands[k][1] = nb == 1 && bands[0][1] > e->yt ? bands[0][1] : e->yt;
+            }
+            qsort(bands, nb, sizeof *bands, cmp_band);
+            for (size_t i = 0; i < nb; i++) {
+                if (nbands && bands[i][0] <= bands[nbands - 1][1]) {
+                    if (bands[i][1] > bands[nbands - 1][1])
+                        bands[nbands - 1][1] = bands[i][1];
+                } else {
+                    bands[nbands][0] = bands[i][0];
+                    bands[nbands][1] = bands[i][1];
+                    nbands++;
+                }
+            }
+            can_resume = 1;
+            if (pass == 0 && s.classify && g->np) {
+                ranges = malloc((nbands + 1) * sizeof *ranges);
+                if (ranges) {
+                    saved = g->P; /* (the next pass starts a new array) */
+                    saved_cap = g->capp;
+                    g->P = NULL;
+                    g->capp = 0;
+                    g->np = 0;
+                }
+            }
+        }
+        cur ^= 1;
         if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
             break;
         c.valid = 1;
@@ -1793,6 +2123,13 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         }
     }
     free(s.mem);
+    for (int k = 0; k < 2; k++) {
+        free(logs[k].pt);
+        free(logs[k].ed);
+    }
+    free(saved);
+    free(ranges);
+    free(bands);
     free(c.by_bottom);
     free(c.by_top);
     free(c.map);

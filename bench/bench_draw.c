@@ -3,8 +3,9 @@
  * the same 1024 x 1024 four-channel image, opaque colour.
  *
  * Each case draws a batch of primitives; the time is the median (process CPU
- * time) of several batches.  The note gives cg's pixel rate (pixels drawn per second, counting
- * one pixel per step of the major axis for lines and the circles' pixels). */
+ * time) of several batches.  The note gives cg's pixel rate (pixels drawn per
+ * second, counting one pixel per step of the major axis for lines and the
+ * circles' pixels). */
 #include "bench.h"
 #include "cg/draw.h"
 

@@ -1896,11 +1896,24 @@ static int sweep_sort(sweep *s, carry *c)
                                        scratch, tmp) &&
                          sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top,
                                        scratch, tmp));
-    size_t u = 0, i = 0, j = 0;
-    while (sorted && (i < ne || j < ne)) {
-        int64_t y = j >= ne || (i < ne && g->E[s->by_bottom[i]].yb <= g->E[s->by_top[j]].yt)
-                        ? g->E[s->by_bottom[i++]].yb
-                        : g->E[s->by_top[j++]].yt;
+    /* the scanlines: the two orders merged, each with its next distinct y
+     * at hand (INT64_MAX past its end; no y reaches it) */
+    const bedge *E = g->E;
+    size_t u = 0, i = 0, j = 0, n = sorted ? ne : 0;
+    int64_t yb = n ? E[s->by_bottom[0]].yb : INT64_MAX, yt = n ? E[s->by_top[0]].yt : INT64_MAX;
+    while (i < n || j < n) {
+        int64_t y;
+        if (yb <= yt) {
+            y = yb;
+            do /* past the edges with this bottom */
+                yb = ++i < n ? E[s->by_bottom[i]].yb : INT64_MAX;
+            while (yb == y);
+        } else {
+            y = yt;
+            do
+                yt = ++j < n ? E[s->by_top[j]].yt : INT64_MAX;
+            while (yt == y);
+        }
         if (u == 0 || s->ys[u - 1] != y)
             s->ys[u++] = y;
     }

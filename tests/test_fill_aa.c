@@ -712,6 +712,57 @@ static void aa_opaque_over_opaque(void)
     cg_rasterizer_free(r);
 }
 
+/* Wide shapes (interior runs long enough for the wide-store path) over
+ * random opaque backgrounds through one reused rasterizer, paints
+ * alternating: where the same polygon covers a pixel fully (alpha exactly
+ * 1 in an RGBAF image, another painting path) the pixel has exactly the
+ * paint's colour; where it does not touch it, the pixel is unchanged. */
+static void aa_wide_interiors(void)
+{
+    check_rng rng = {4141};
+    cg_rasterizer *r;
+    CHECK(cg_rasterizer_create(&r) == CG_OK);
+    const cg_rgba8 inks[2] = {{30, 60, 200, 255}, {200, 90, 40, 255}};
+    int bad = 0, full = 0;
+    for (int t = 0; t < 200; t++) {
+        int w = (int)check_rng_int(&rng, 60, 400), h = (int)check_rng_int(&rng, 1, 16);
+        cg_image *im, *before, *cover;
+        cg_image_create(&im, w, h, CG_PIXEL_RGBA8);
+        cg_image_create(&before, w, h, CG_PIXEL_RGBA8);
+        cg_image_create(&cover, w, h, CG_PIXEL_RGBAF);
+        for (size_t i = 0; i < (size_t)im->stride * (size_t)h; i++)
+            im->data[i] = (i & 3) == 3 ? 255 : (uint8_t)check_rng_int(&rng, 0, 255);
+        memcpy(before->data, im->data, (size_t)im->stride * (size_t)h);
+        cg_vec2 p[32];
+        int n = star_polygon(&rng, p, w / 2.0, h / 2.0, 0.6, w * 0.7);
+        for (int i = 0; i < n; i++) /* squashed to the image's height and past it */
+            p[i].y = h / 2.0 + (p[i].y - h / 2.0) * (h + 6.0) / (w * 1.4);
+        cg_fill_rule rule = t % 3 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        cg_paint paint = cg_paint_solid(inks[t % 2]);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, cover, p, &n, 1, rule, &paint) == CG_OK);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, im, p, &n, 1, rule, &paint) == CG_OK);
+        int wrong = 0;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                float a = cg_image_get(cover, x, y).a;
+                if (a > 0 && a < 1)
+                    continue;
+                full += a == 1;
+                cg_rgba8 got = cg_image_get_rgba8(im, x, y);
+                cg_rgba8 expect = a == 1 ? inks[t % 2] : cg_image_get_rgba8(before, x, y);
+                wrong += memcmp(&got, &expect, sizeof got) != 0;
+            }
+        if (wrong && ++bad <= 5)
+            fprintf(stderr, "aa wide trial %d (%dx%d): %d pixels differ\n", t, w, h, wrong);
+        cg_image_free(im);
+        cg_image_free(before);
+        cg_image_free(cover);
+    }
+    CHECK_MSG(full > 100000, "only %d fully covered pixels", full);
+    CHECK_MSG(bad == 0, "%d wide shapes differ in their interiors or outside", bad);
+    cg_rasterizer_free(r);
+}
+
 /* Even-odd against non-zero on a pentagram; gradients; linear light. */
 static void rules_and_paints(void)
 {
@@ -787,6 +838,7 @@ int main(void)
     aa_blending();
     aa_blending_reused();
     aa_opaque_over_opaque();
+    aa_wide_interiors();
     huge_curves();
     rules_and_paints();
     return check_finish();

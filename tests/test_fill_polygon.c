@@ -88,6 +88,53 @@ static void random_polygons(void)
     CHECK_MSG(bad == 0, "%d of %d random polygons differ from point-in-polygon", bad, total);
 }
 
+/* Wide images (runs of interior pixels long enough for the wide-store
+ * path) over random opaque backgrounds, several contours: a pixel whose
+ * centre is inside has exactly the paint's colour, every other pixel keeps
+ * its own. */
+static void wide_polygons(void)
+{
+    check_rng rng = {4040};
+    int bad = 0;
+    cg_rasterizer *r;
+    cg_rasterizer_create(&r);
+    const cg_rgba8 ink = {30, 60, 200, 255};
+    for (int trial = 0; trial < 300; trial++) {
+        int w = (int)check_rng_int(&rng, 60, 400), h = (int)check_rng_int(&rng, 1, 12);
+        cg_image *im, *before;
+        cg_image_create(&im, w, h, CG_PIXEL_RGBA8);
+        cg_image_create(&before, w, h, CG_PIXEL_RGBA8);
+        for (size_t i = 0; i < (size_t)im->stride * (size_t)h; i++)
+            im->data[i] = (i & 3) == 3 ? 255 : (uint8_t)check_rng_int(&rng, 0, 255);
+        memcpy(before->data, im->data, (size_t)im->stride * (size_t)h);
+        cg_vec2 pts[24];
+        int sizes[3], contours = (int)check_rng_int(&rng, 1, 3), n = 0;
+        for (int c = 0; c < contours; c++) {
+            sizes[c] = (int)check_rng_int(&rng, 3, 8);
+            for (int i = 0; i < sizes[c]; i++)
+                pts[n++] = cg_vec2_make(check_rng_range(&rng, -20, w + 20),
+                                        check_rng_range(&rng, -4, h + 4));
+        }
+        cg_fill_rule rule = trial % 2 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        CHECK(cg_rasterizer_fill_polygon(r, im, pts, sizes, contours, rule, ink) == CG_OK);
+        int wrong = 0;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                int in = inside(winding_at(pts, sizes, contours, x + 0.5, y + 0.5), rule);
+                cg_rgba8 got = cg_image_get_rgba8(im, x, y);
+                cg_rgba8 expect = in ? ink : cg_image_get_rgba8(before, x, y);
+                wrong += memcmp(&got, &expect, sizeof got) != 0;
+            }
+        if (wrong && ++bad <= 5)
+            fprintf(stderr, "wide polygon trial %d (%dx%d): %d pixels differ\n", trial, w, h,
+                    wrong);
+        cg_image_free(im);
+        cg_image_free(before);
+    }
+    cg_rasterizer_free(r);
+    CHECK_MSG(bad == 0, "%d wide polygons differ from point-in-polygon", bad);
+}
+
 /* Counts coverage by painting each tile with alpha 1/2 in linear light:
  * a pixel painted once reads back differently from one painted twice. */
 static void tilings(void)
@@ -283,6 +330,7 @@ static void blending(void)
 int main(void)
 {
     random_polygons();
+    wide_polygons();
     tilings();
     bad_input();
     split_polygon();

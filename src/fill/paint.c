@@ -2,6 +2,7 @@
  * in linear light onto RGBA8 (sRGB-encoded) or RGBAF images. */
 #include "internal.h"
 #include "cg/color.h"
+#include "../color/srgb_tables.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,18 +29,13 @@ void fill_tables_prepare(struct cg_rasterizer *r)
 {
     if (r->tables_ready)
         return;
-    for (int k = 0; k < 256; k++)
-        r->decode[k] = cg_srgb8_to_linear((uint8_t)k);
-    for (int k = 0; k < 255; k++)
-        r->threshold[k] = (float)cg_srgb_to_linear((k + 0.5) / 255.0);
+    /* Copies of cg's constant sRGB tables (computing them with pow() here
+     * cost more than a small one-shot fill), plus a sentinel threshold so
+     * that the encode search needs no bound check. */
+    memcpy(r->decode, cg_srgb_decode_table, sizeof r->decode);
+    memcpy(r->threshold, cg_srgb_threshold_table, sizeof cg_srgb_threshold_table);
     r->threshold[255] = 2.0f;
-    int code = 0;
-    for (int i = 0; i <= 4096; i++) {
-        float v = (float)i / 4096.0f;
-        while (code < 255 && v >= r->threshold[code])
-            code++;
-        r->encode[i] = (uint8_t)code;
-    }
+    memcpy(r->encode, cg_srgb_encode_start, sizeof r->encode);
     r->tables_ready = 1;
 }
 

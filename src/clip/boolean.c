@@ -1474,30 +1474,56 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     piece *P = g->P;
     if (np == 0)
         return 1;
-    {
-        keyval *scratch = malloc(np * sizeof *scratch);
-        uint32_t *order = malloc(np * sizeof *order);
-        piece *sorted = malloc(np * sizeof *sorted);
-        int ok2 = scratch && order && sorted &&
-                  sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch, NULL);
-        if (ok2) {
-            for (size_t i = 0; i < np; i++)
-                sorted[i] = P[order[i]];
-            memcpy(P, sorted, np * sizeof *P);
-        }
-        free(scratch);
-        free(order);
-        free(sorted);
-        if (!ok2)
-            return 0;
-    }
-    unsigned char *used = calloc(np, 1);
-    /* rings collected first: points and ring boundaries */
-    cg_polygon_set64 rings = {0};
-    ringbuf rb = {0};
-    int ok = 0;
-    if (!used)
+    /* Every array of the assembly from one block sized from the piece
+     * count (a ring takes each piece at most once and has 3 vertices or
+     * more, so at most np points in all and np / 3 rings): one allocation
+     * per call, which is most of the fixed cost on small inputs. */
+    if (np > ((size_t)-1) / 256)
         return 0;
+    size_t mr = np / 3 + 1; /* rings at most */
+    size_t bytes = 0, off[15], k = 0;
+#define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
+    ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
+    ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
+    ASM_PART(np, sizeof(piece));        /* 2: sorted pieces */
+    ASM_PART(np, 1);                    /* 3: used */
+    ASM_PART(np, sizeof(cg_point64));   /* 4: ring being walked */
+    ASM_PART(np, sizeof(cg_point64));   /* 5: ring points */
+    ASM_PART(mr + 1, sizeof(size_t));   /* 6: ring starts */
+    ASM_PART(mr, sizeof(double));       /* 7: area */
+    ASM_PART(mr, 4 * sizeof(int64_t));  /* 8: bounding boxes */
+    ASM_PART(mr, sizeof(size_t));       /* 9: parent */
+    ASM_PART(mr, sizeof(size_t));       /* 10: outer rings */
+    ASM_PART(mr, sizeof(ring_by_area)); /* 11: outers by area */
+    ASM_PART(mr, sizeof(hole_point));   /* 12: hole points */
+    ASM_PART(mr, sizeof(hole_point));   /* 13: candidates */
+    ASM_PART(2 * (mr + 1), sizeof(size_t)); /* 14: first and next hole */
+#undef ASM_PART
+    char *mem = malloc(bytes);
+    if (!mem)
+        return 0;
+    {
+        keyval *scratch = (keyval *)(mem + off[0]);
+        uint32_t *order = (uint32_t *)(mem + off[1]);
+        piece *sorted = (piece *)(mem + off[2]);
+        if (!sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch, NULL)) {
+            free(mem);
+            return 0;
+        }
+        for (size_t i = 0; i < np; i++)
+            sorted[i] = P[order[i]];
+        memcpy(P, sorted, np * sizeof *P);
+    }
+    unsigned char *used = (unsigned char *)(mem + off[3]);
+    memset(used, 0, np);
+    /* rings collected first: points and ring boundaries (in the block:
+     * never grown, never freed on their own) */
+    cg_polygon_set64 rings = {0};
+    rings.points = (cg_point64 *)(mem + off[5]);
+    rings.ring_start = (size_t *)(mem + off[6]);
+    rings.ring_start[0] = 0;
+    ringbuf rb = {(cg_point64 *)(mem + off[4]), 0, np};
+    int ok = 0;
     for (size_t start = 0; start < np; start++) {
         if (used[start])
             continue;
@@ -1505,7 +1531,8 @@ static int assemble(engine *g, cg_polygon_set64 *result)
         size_t cur = start;
         used[cur] = 1;
         for (;;) {
-            GROW(rb.pts, rb.n, rb.cap, goto fail);
+            if (rb.n == rb.cap)
+                goto fail; /* (cannot happen: each piece is taken once) */
             rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
             int64_t vx = P[cur].x1, vy = P[cur].y1;
             /* outgoing pieces at v: binary search */
@@ -1550,23 +1577,19 @@ static int assemble(engine *g, cg_polygon_set64 *result)
         }
         if (n < 3)
             continue;
-        if (cg_polygon_set64_add_ring(&rings, rb.pts, n, 1) != CG_OK)
-            goto fail;
+        if (rings.ring_count == mr || rings.point_count + n > np)
+            goto fail; /* (cannot happen, as above) */
+        memcpy(rings.points + rings.point_count, rb.pts, n * sizeof *rb.pts);
+        rings.point_count += n;
+        rings.ring_start[++rings.ring_count] = rings.point_count;
     }
     /* classify and nest */
     {
         size_t nr = rings.ring_count;
-        double *area = malloc((nr ? nr : 1) * sizeof *area);
-        int64_t(*bb)[4] = malloc((nr ? nr : 1) * sizeof *bb);
-        size_t *parent = malloc((nr ? nr : 1) * sizeof *parent);
-        size_t *order = malloc((nr ? nr : 1) * sizeof *order);
-        if (!area || !bb || !parent || !order) {
-            free(area);
-            free(bb);
-            free(parent);
-            free(order);
-            goto fail;
-        }
+        double *area = (double *)(mem + off[7]);
+        int64_t(*bb)[4] = (int64_t(*)[4])(mem + off[8]);
+        size_t *parent = (size_t *)(mem + off[9]);
+        size_t *order = (size_t *)(mem + off[10]);
         size_t nouter = 0;
         for (size_t r = 0; r < nr; r++) {
             size_t a = rings.ring_start[r], b = rings.ring_start[r + 1];
@@ -1598,13 +1621,11 @@ static int assemble(engine *g, cg_polygon_set64 *result)
          * holes within its box are tested together: the outer's edges are
          * matched with the hole points sorted by y. */
         int fail_nest = 0;
-        ring_by_area *ra = malloc((nouter ? nouter : 1) * sizeof *ra);
+        ring_by_area *ra = (ring_by_area *)(mem + off[11]);
         size_t nholes = nr - nouter;
-        hole_point *hp = malloc((nholes ? nholes : 1) * sizeof *hp);
-        hole_point *cand = malloc((nholes ? nholes : 1) * sizeof *cand);
-        if (!ra || !hp || !cand) {
-            fail_nest = 1;
-        } else {
+        hole_point *hp = (hole_point *)(mem + off[12]);
+        hole_point *cand = (hole_point *)(mem + off[13]);
+        {
             for (size_t i = 0; i < nouter; i++)
                 ra[i] = (ring_by_area){area[order[i]], order[i]};
             qsort(ra, nouter, sizeof *ra, cmp_area);
@@ -1700,21 +1721,13 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 free(in);
             }
         }
-        free(ra);
-        free(hp);
-        free(cand);
-        if (fail_nest) {
-            free(area);
-            free(bb);
-            free(parent);
-            free(order);
+        if (fail_nest)
             goto fail;
-        }
         /* output: each outer followed by its holes (a hole without an outer
          * cannot happen; it would be dropped) */
-        size_t *first_hole = malloc((nr + 1) * sizeof *first_hole);
-        size_t *next_hole = malloc((nr + 1) * sizeof *next_hole);
-        int fail = !first_hole || !next_hole;
+        size_t *first_hole = (size_t *)(mem + off[14]);
+        size_t *next_hole = first_hole + (nr + 1);
+        int fail = 0;
         if (!fail) {
             for (size_t r = 0; r < nr; r++)
                 first_hole[r] = (size_t)-1;
@@ -1743,20 +1756,12 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 }
             }
         }
-        free(first_hole);
-        free(next_hole);
-        free(area);
-        free(bb);
-        free(parent);
-        free(order);
         if (fail)
             goto fail;
     }
     ok = 1;
 fail:
-    free(used);
-    free(rb.pts);
-    cg_polygon_set64_clear(&rings);
+    free(mem);
     return ok;
 }
 

@@ -37,7 +37,7 @@ static inline uint8_t encode_one(float linear)
     if (linear >= 1)
         return 255;
     unsigned code = cg_srgb_encode_start[(int)(linear * 4096.0f)];
-    while (code < 255 && linear >= cg_srgb_threshold_table[code])
+    while (linear >= cg_srgb_threshold_table[code]) /* stops at 255: +inf */
         code++;
     return (uint8_t)code;
 }
@@ -79,9 +79,7 @@ void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
         x = x > 0 ? x : 0; /* also NaN */
         x = x < 1 ? x : 1;
         int code = cg_srgb_encode_start[(int)(x * 4096.0f)];
-        int index = code < 255 ? code : 254;
-        code += x >= cg_srgb_threshold_table[index]; /* at 255 this gives 256 */
-        out[i] = (uint8_t)(code < 255 ? code : 255);
+        out[i] = (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
     }
 }
 

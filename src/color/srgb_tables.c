@@ -1,8 +1,11 @@
 /* sRGB transfer tables, generated from the IEC 61966-2-1 curve.
  * decode: the linear value of each 8-bit code.
  * threshold: the linear value at which code k+1 starts, i.e. decode((k+0.5)/255),
- *   so that encoding by search rounds correctly in the encoded domain. */
+ *   so that encoding by search rounds correctly in the encoded domain; entry 255
+ *   (no code 256) is +infinity, so that a search from code 255 stops there. */
 #include "srgb_tables.h"
+
+#include <math.h>
 
 const float cg_srgb_decode_table[256] = {
     0.000000000e+00f, 3.035269835e-04f, 6.070539671e-04f, 9.105809506e-04f,
@@ -71,7 +74,7 @@ const float cg_srgb_decode_table[256] = {
     9.734452904e-01f, 9.822505503e-01f, 9.911020971e-01f, 1.000000000e+00f,
 };
 
-const float cg_srgb_threshold_table[255] = {
+const float cg_srgb_threshold_table[256] = {
     1.517634918e-04f, 4.552904753e-04f, 7.588174589e-04f, 1.062344442e-03f,
     1.365871426e-03f, 1.669398410e-03f, 1.972925393e-03f, 2.276452377e-03f,
     2.579979360e-03f, 2.883506344e-03f, 3.188300904e-03f, 3.509259350e-03f,
@@ -135,7 +138,7 @@ const float cg_srgb_threshold_table[255] = {
     8.754890821e-01f, 8.837670725e-01f, 8.920905419e-01f, 9.004595613e-01f,
     9.088742016e-01f, 9.173345337e-01f, 9.258406282e-01f, 9.343925555e-01f,
     9.429903859e-01f, 9.516341896e-01f, 9.603240364e-01f, 9.690599963e-01f,
-    9.778421388e-01f, 9.866705335e-01f, 9.955452497e-01f,
+    9.778421388e-01f, 9.866705335e-01f, 9.955452497e-01f, INFINITY,
 };
 
 /* cg_srgb_encode_start[i]: the sRGB code of the linear value i / 4096, i.e. the

@@ -5,7 +5,8 @@
 #include <stdint.h>
 
 extern const float cg_srgb_decode_table[256];
-extern const float cg_srgb_threshold_table[255];
+/* threshold[k]: least linear value of code k + 1; threshold[255] = +infinity. */
+extern const float cg_srgb_threshold_table[256];
 extern const uint8_t cg_srgb_encode_start[4097];
 
 #endif

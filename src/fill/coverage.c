@@ -371,7 +371,6 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
 {
     if (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO)
         return CG_EINVAL;
-    fill_tables_prepare(r);
     fill_painter painter;
     cg_status status = fill_painter_init(&painter, r, image, paint);
     if (status != CG_OK)

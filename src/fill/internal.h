@@ -3,6 +3,7 @@
 #define CG_FILL_INTERNAL_H
 
 #include "cg/fill.h"
+#include "../color/srgb_tables.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -108,8 +109,7 @@ static inline void fill_store32(uint32_t *d, int n, uint32_t v)
 
 typedef struct fill_painter {
     cg_image *image;
-    const struct cg_rasterizer *tables;
-    struct cg_rasterizer *cache; /* the solid blend cache (tables' owner) */
+    struct cg_rasterizer *cache; /* the solid blend cache */
     int type;
     /* solid: linear straight colour and its encoded form */
     float r, g, b, a;
@@ -176,11 +176,6 @@ struct cg_rasterizer {
     size_t crossing_capacity;
     /* path scratch */
     fill_polylines flat, outline;
-    /* sRGB tables, built on first use */
-    int tables_ready;
-    float decode[256];
-    float threshold[256]; /* code k+1 starts at threshold[k]; threshold[255] = +inf */
-    uint8_t encode[4097]; /* code at linear i / 4096 */
     /* Solid paint over RGBA8: a direct-mapped cache of fill_solid_pixel's
      * results for the source colour blend_src, keyed by destination value,
      * coverage and generation (a new source colour starts a new one). */
@@ -200,50 +195,36 @@ struct cg_rasterizer {
     uint32_t opaque_gen[256];
 };
 
-void fill_tables_prepare(struct cg_rasterizer *r);
-
-/* Linear-light value to sRGB code, correctly rounded in the encoded domain. */
-static inline uint8_t fill_encode(const struct cg_rasterizer *r, float v)
-{
-    if (!(v > 0))
-        return 0;
-    if (v >= 1)
-        return 255;
-    int c = r->encode[(int)(v * 4096.0f)];
-    while (v >= r->threshold[c])
-        c++;
-    return (uint8_t)c;
-}
-
-/* The same for v in [0, 1] up to rounding (a blend of such values): one
- * table look-up and one comparison, as a table step (1/4096) is smaller
+/* Linear-light v in [0, 1] up to rounding (a blend of such values) to its
+ * sRGB code, as cg_linear_to_srgb8 gives it: one table look-up and one
+ * comparison, as a table step (1/4096) is smaller
  * than the smallest code step.  The index is clamped, so values outside
  * still give 0 or 255. */
-static inline uint8_t fill_encode_unit(const struct cg_rasterizer *r, float v)
+static inline uint8_t fill_encode_unit(float v)
 {
     int i = (int)(v * 4096.0f);
     i = i < 0 ? 0 : (i > 4096 ? 4096 : i);
-    int c = r->encode[i];
-    return (uint8_t)(c + (v >= r->threshold[c]));
+    int c = cg_srgb_encode_start[i];
+    return (uint8_t)(c + (v >= cg_srgb_threshold_table[c]));
 }
 
 /* Source-over of a straight linear colour with alpha as onto an encoded pixel. */
-static inline void fill_blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float r, float g, float b,
+static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
                           float as)
 {
     if (d->a == 255) {
-        float dr = t->decode[d->r], dg = t->decode[d->g], db = t->decode[d->b];
-        d->r = fill_encode_unit(t, dr + (r - dr) * as);
-        d->g = fill_encode_unit(t, dg + (g - dg) * as);
-        d->b = fill_encode_unit(t, db + (b - db) * as);
+        float dr = cg_srgb_decode_table[d->r], dg = cg_srgb_decode_table[d->g], db = cg_srgb_decode_table[d->b];
+        d->r = fill_encode_unit(dr + (r - dr) * as);
+        d->g = fill_encode_unit(dg + (g - dg) * as);
+        d->b = fill_encode_unit(db + (b - db) * as);
         return;
     }
     if (d->a == 0) { /* over nothing: the source colour, with its alpha */
         if (!(as > 0))
             return;
-        d->r = fill_encode_unit(t, r);
-        d->g = fill_encode_unit(t, g);
-        d->b = fill_encode_unit(t, b);
+        d->r = fill_encode_unit(r);
+        d->g = fill_encode_unit(g);
+        d->b = fill_encode_unit(b);
         d->a = (uint8_t)(as * 255.0f + 0.5f);
         return;
     }
@@ -251,9 +232,9 @@ static inline void fill_blend8(const struct cg_rasterizer *t, cg_rgba8 *d, float
     if (a <= 0)
         return;
     float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
-    d->r = fill_encode_unit(t, (r * as + t->decode[d->r] * ad) * inv);
-    d->g = fill_encode_unit(t, (g * as + t->decode[d->g] * ad) * inv);
-    d->b = fill_encode_unit(t, (b * as + t->decode[d->b] * ad) * inv);
+    d->r = fill_encode_unit((r * as + cg_srgb_decode_table[d->r] * ad) * inv);
+    d->g = fill_encode_unit((g * as + cg_srgb_decode_table[d->g] * ad) * inv);
+    d->b = fill_encode_unit((b * as + cg_srgb_decode_table[d->b] * ad) * inv);
     d->a = (uint8_t)(a * 255.0f + 0.5f);
 }
 
@@ -283,7 +264,7 @@ static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
             d->a = (uint8_t)((as + d->a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
         return;
     }
-    fill_blend8(p->tables, d, p->r, p->g, p->b, as);
+    fill_blend8(d, p->r, p->g, p->b, as);
 }
 
 /* The next generation of the blend cache (the keys are cleared when the

@@ -2,7 +2,6 @@
  * in linear light onto RGBA8 (sRGB-encoded) or RGBAF images. */
 #include "internal.h"
 #include "cg/color.h"
-#include "../color/srgb_tables.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -23,20 +22,6 @@ int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size)
     *array = p;
     *capacity = grown;
     return 1;
-}
-
-void fill_tables_prepare(struct cg_rasterizer *r)
-{
-    if (r->tables_ready)
-        return;
-    /* Copies of cg's constant sRGB tables (computing them with pow() here
-     * cost more than a small one-shot fill), plus a sentinel threshold so
-     * that the encode search needs no bound check. */
-    memcpy(r->decode, cg_srgb_decode_table, sizeof r->decode);
-    memcpy(r->threshold, cg_srgb_threshold_table, sizeof cg_srgb_threshold_table);
-    r->threshold[255] = 2.0f;
-    memcpy(r->encode, cg_srgb_encode_start, sizeof r->encode);
-    r->tables_ready = 1;
 }
 
 cg_paint cg_paint_solid(cg_rgba8 color)
@@ -134,13 +119,8 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     p->gx = p->gy = p->gc = 0;
     p->cx = p->cy = p->inv_radius = 0;
     p->image = image;
-    p->tables = r;
     p->cache = r;
     p->type = paint->type;
-    /* Opaque solid spans of full coverage are plain stores; everything
-     * else blends through the sRGB tables. */
-    if (paint->type != CG_PAINT_SOLID || paint->color.a != 255)
-        fill_tables_prepare(r);
     if (paint->type == CG_PAINT_SOLID) {
         cg_rgbaf c = cg_rgba8_to_linear(paint->color);
         p->r = c.r;
@@ -150,8 +130,9 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         memcpy(&p->encoded, &paint->color, sizeof p->encoded);
         memcpy(p->encoded_rgba, &paint->color, sizeof p->encoded_rgba);
         p->opaque = paint->color.a == 255;
-        p->same_exact = r->tables_ready && r->decode[paint->color.r] == p->r
-                        && r->decode[paint->color.g] == p->g && r->decode[paint->color.b] == p->b;
+        p->same_exact = cg_srgb_decode_table[paint->color.r] == p->r
+                        && cg_srgb_decode_table[paint->color.g] == p->g
+                        && cg_srgb_decode_table[paint->color.b] == p->b;
         if (!r->blend_src_valid || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
             r->blend_src_valid = 1;
@@ -193,11 +174,10 @@ int fill_opaque_entry(const fill_blend_state *s, int c, int e)
     /* the blend of fill_blend8 over an opaque pixel: the same arithmetic,
      * so the same result as blending the pixel itself */
     const fill_painter *p = s->p;
-    const struct cg_rasterizer *t = p->tables;
     float as = p->a * (c * (1.0f / 255.0f));
     float src = e < 256 ? p->r : (e < 512 ? p->g : p->b);
-    float dk = t->decode[e & 255];
-    int code = fill_encode_unit(t, dk + (src - dk) * as);
+    float dk = cg_srgb_decode_table[e & 255];
+    int code = fill_encode_unit(dk + (src - dk) * as);
     s->table[(size_t)c * 768 + (size_t)e] = (uint16_t)(256 + code);
     return code;
 }
@@ -280,7 +260,6 @@ static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_
 
 static void gradient_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)
 {
-    const struct cg_rasterizer *t = p->tables;
     cg_image *image = p->image;
     double py = y + 0.5;
     for (int i = 0; i < n; i++) {
@@ -299,12 +278,12 @@ static void gradient_span(const fill_painter *p, int y, int x0, int n, const uin
         if (image->format == CG_PIXEL_RGBA8) {
             cg_rgba8 *d = cg_image_row_rgba8(image, y) + x0 + i;
             if (as >= 1) {
-                d->r = fill_encode(t, s->r);
-                d->g = fill_encode(t, s->g);
-                d->b = fill_encode(t, s->b);
+                d->r = cg_linear_to_srgb8(s->r);
+                d->g = cg_linear_to_srgb8(s->g);
+                d->b = cg_linear_to_srgb8(s->b);
                 d->a = 255;
             } else {
-                fill_blend8(t, d, s->r, s->g, s->b, as);
+                fill_blend8(d, s->r, s->g, s->b, as);
             }
         } else {
             cg_rgbaf *d = cg_image_row_rgbaf(image, y) + x0 + i;

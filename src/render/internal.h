@@ -5,6 +5,7 @@
 #include "cg/render.h"
 #include "cg/light.h"
 #include "cg/color.h"
+#include "../color/srgb_tables.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -50,21 +51,16 @@ void render_shade(const render_lighting *lighting, const float position[3], cons
  * its lower end, and at most one code threshold lies inside a bucket (the
  * curve is steepest at 0, 0.8 codes per bucket), so one comparison with the
  * next code's threshold settles it.  The tables are the colour module's
- * (src/color/srgb_tables.h), copied with a sentinel after the last
- * threshold so that code 255 needs no test. */
-typedef struct render_encoder {
-    float threshold[256]; /* least linear value of code k + 1; +inf for k = 255 */
-    uint8_t start[4097];  /* code of i / 4096 */
-} render_encoder;
+ * (src/color/srgb_tables.h), whose sentinel threshold after code 255 means
+ * code 255 needs no test. */
 #define RENDER_ENCODER_STEPS 4096
-void render_encoder_init(render_encoder *encoder);
-static inline uint8_t render_encode(const render_encoder *encoder, float linear)
+static inline uint8_t render_encode(float linear)
 {
     /* Clamped to [0, 1] (NaN to 0) without branches. */
     float x = linear > 0 ? linear : 0;
     x = x < 1 ? x : 1;
-    unsigned code = encoder->start[(int)(x * RENDER_ENCODER_STEPS)];
-    return (uint8_t)(code + (x >= encoder->threshold[code]));
+    unsigned code = cg_srgb_encode_start[(int)(x * RENDER_ENCODER_STEPS)];
+    return (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
 }
 
 /* ---- clipping in homogeneous coordinates -------------------------------- */
@@ -229,7 +225,6 @@ struct cg_renderer {
     int varying_color;        /* vertices differ in base colour */
     int has_bounds;
     cg_vec3 lo, hi;           /* bounds of the finite positions */
-    render_encoder encoder;
     /* frame state */
     cg_camera camera;
     float *depth;

@@ -17,14 +17,13 @@
 
 enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
 
-static inline void store(const render_frame *f, unsigned char *row, int x, const float c[3],
-                         const int rgba8)
+static inline void store(unsigned char *row, int x, const float c[3], const int rgba8)
 {
     if (rgba8) {
         cg_rgba8 *p = (cg_rgba8 *)row + x;
-        p->r = render_encode(&f->r->encoder, c[0]);
-        p->g = render_encode(&f->r->encoder, c[1]);
-        p->b = render_encode(&f->r->encoder, c[2]);
+        p->r = render_encode(c[0]);
+        p->g = render_encode(c[1]);
+        p->b = render_encode(c[2]);
         p->a = 255;
     } else {
         cg_rgbaf *p = (cg_rgbaf *)row + x;
@@ -88,15 +87,15 @@ typedef struct gouraud_plane {
 /* The same with the three colours and 1 / w side by side in one SSE
  * register: every lane is rounded as the scalar code rounds it, so the
  * pictures are identical, with a quarter of the arithmetic. */
-static inline void encode_store(const render_encoder *e, cg_rgba8 *p, __m128 v)
+static inline void encode_store(cg_rgba8 *p, __m128 v)
 {
     /* max(v, 0) gives 0 for NaN, like render_encode. */
     v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
     __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps((float)RENDER_ENCODER_STEPS)));
-    unsigned c0 = e->start[_mm_cvtsi128_si32(i)];
-    unsigned c1 = e->start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
-    unsigned c2 = e->start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
-    __m128 next = _mm_setr_ps(e->threshold[c0], e->threshold[c1], e->threshold[c2], INFINITY);
+    unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
+    unsigned c1 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
+    unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
+    __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1], cg_srgb_threshold_table[c2], INFINITY);
     int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
     p->r = (uint8_t)(c0 + (up & 1));
     p->g = (uint8_t)(c1 + ((up >> 1) & 1));
@@ -105,9 +104,9 @@ static inline void encode_store(const render_encoder *e, cg_rgba8 *p, __m128 v)
 }
 #endif
 
-static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, int64_t w1,
-                               int64_t w2, float *zrow, unsigned char *row, int x0, int begin,
-                               int end, const int depth_test, const int rgba8)
+static inline void gouraud_run(const gouraud_plane *g, int64_t w1, int64_t w2, float *zrow,
+                               unsigned char *row, int x0, int begin, int end,
+                               const int depth_test, const int rgba8)
 {
 #if defined(__SSE2__)
     if (rgba8) {
@@ -118,7 +117,6 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
         __m128 v = _mm_setzero_ps();
         cg_rgba8 *out = (cg_rgba8 *)row + x0;
         /* Locals: the byte stores below may alias anything in memory. */
-        const render_encoder *encoder = &f->r->encoder;
         const int64_t step1 = g->step1, step2 = g->step2;
         const float ia = g->ia, z0 = g->z0, dz1 = g->dz1, dz2 = g->dz2;
         for (int i = begin, restart = begin; i < end;
@@ -134,7 +132,7 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
                 continue;
             zrow[i] = z;
             float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
-            encode_store(encoder, out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
+            encode_store(out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
         }
         return;
     }
@@ -155,14 +153,14 @@ static inline void gouraud_run(const render_frame *f, const gouraud_plane *g, in
         zrow[i] = z;
         float r = 1 / q;
         float v[3] = {c[0] * r, c[1] * r, c[2] * r};
-        store(f, row, x0 + i, v, rgba8);
+        store(row, x0 + i, v, rgba8);
     }
 }
 
 /* One Gouraud pixel from its barycentric weights l1, l2, evaluated as a run
  * starts (for triangles of a few pixels, which have no runs to speak of). */
-static inline void gouraud_pixel(const render_frame *f, const gouraud_plane *g, float l1,
-                                 float l2, unsigned char *row, int x, const int rgba8)
+static inline void gouraud_pixel(const gouraud_plane *g, float l1, float l2, unsigned char *row,
+                                 int x, const int rgba8)
 {
 #if defined(__SSE2__)
     if (rgba8) {
@@ -172,7 +170,7 @@ static inline void gouraud_pixel(const render_frame *f, const gouraud_plane *g, 
                                   _mm_setr_ps(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]))),
             _mm_mul_ps(_mm_set1_ps(l2), _mm_setr_ps(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2])));
         float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
-        encode_store(&f->r->encoder, (cg_rgba8 *)row + x, _mm_mul_ps(v, _mm_set1_ps(r)));
+        encode_store((cg_rgba8 *)row + x, _mm_mul_ps(v, _mm_set1_ps(r)));
         return;
     }
 #endif
@@ -181,7 +179,7 @@ static inline void gouraud_pixel(const render_frame *f, const gouraud_plane *g, 
         c[j] = g->c[0][j] + l1 * g->c[1][j] + l2 * g->c[2][j];
     float r = 1 / q;
     float v[3] = {c[0] * r, c[1] * r, c[2] * r};
-    store(f, row, x, v, rgba8);
+    store(row, x, v, rgba8);
 }
 
 static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float ia,
@@ -264,11 +262,11 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
                     continue;
                 zrow[x] = z;
                 if (mode == MODE_GOURAUD)
-                    gouraud_pixel(f, &gouraud, l1, l2, row, x, rgba8);
+                    gouraud_pixel(&gouraud, l1, l2, row, x, rgba8);
                 else if (rgba8)
                     ((cg_rgba8 *)row)[x] = t->color8;
                 else
-                    store(f, row, x, t->color, rgba8);
+                    store(row, x, t->color, rgba8);
             }
         }
         return fragments;
@@ -297,7 +295,7 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
         float *zrow = f->depth + (size_t)y * f->width + x0;
         unsigned char *row = f->image->data + (size_t)y * f->image->stride;
         if (mode == MODE_GOURAUD) {
-            gouraud_run(f, &gouraud, w1, w2, zrow, row, x0, begin, end, depth_test, rgba8);
+            gouraud_run(&gouraud, w1, w2, zrow, row, x0, begin, end, depth_test, rgba8);
             continue;
         }
         for (int i = begin; i < end; i++, w1 += e.step_x[1], w2 += e.step_x[2]) {
@@ -311,7 +309,7 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
                 if (rgba8)
                     ((cg_rgba8 *)row)[x] = t->color8;
                 else
-                    store(f, row, x, t->color, rgba8);
+                    store(row, x, t->color, rgba8);
                 continue;
             }
             /* Perspective-correct: attribute / w and 1 / w are affine on
@@ -324,7 +322,7 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
             float inv = len > 0 ? 1 / len : 0;
             float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv}, c[3];
             render_shade(&f->lighting, v + 3, normal, n > 6 ? v + 6 : t->color, c);
-            store(f, row, x, c, rgba8);
+            store(row, x, c, rgba8);
         }
     }
     return fragments;
@@ -558,9 +556,9 @@ void render_finish_setup(const render_frame *f, setup_triangle *t, const float c
     memcpy(t->color, color, sizeof t->color);
     if (f->shading != MODE_FLAT)
         return; /* the encoded colour is for flat shading only */
-    t->color8.r = render_encode(&f->r->encoder, color[0]);
-    t->color8.g = render_encode(&f->r->encoder, color[1]);
-    t->color8.b = render_encode(&f->r->encoder, color[2]);
+    t->color8.r = render_encode(color[0]);
+    t->color8.g = render_encode(color[1]);
+    t->color8.b = render_encode(color[2]);
     t->color8.a = 255;
 }
 

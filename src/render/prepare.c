@@ -255,7 +255,6 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
     r->camera = options->camera;
     r->face_count = mesh->face_count;
     r->has_bounds = cg_mesh_bounds(mesh, &r->lo, &r->hi) == CG_OK;
-    render_encoder_init(&r->encoder);
     size_t corners = mesh->face_offsets[mesh->face_count];
     r->triangle_count = cg_mesh_triangle_count(mesh);
     cg_vec3 *normals = malloc((corners ? corners : 1) * sizeof *normals);

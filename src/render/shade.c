@@ -1,5 +1,5 @@
 /* The colour of a point, the one place where the renderer evaluates the
- * illumination model of cg/light.h, and a fast exact sRGB encoder.
+ * illumination model of cg/light.h.
  *
  * cg_light_shade evaluates the model for any light in double precision; the
  * renderer lights every vertex of every frame (Gouraud) or every pixel
@@ -9,7 +9,6 @@
  * below one code of an 8-bit channel; tests/test_render.c compares the two. */
 #include "internal.h"
 #include "cg/color.h"
-#include "../color/srgb_tables.h"
 
 #include <string.h>
 
@@ -90,11 +89,4 @@ void render_shade(const render_lighting *l, const float position[3], const float
     for (int j = 0; j < 3; j++)
         out[j] = base[j] * l->ambient[j] + l->kd * base[j] * diffuse[j]
                  + l->specular_color[j] * specular[j];
-}
-
-void render_encoder_init(render_encoder *encoder)
-{
-    memcpy(encoder->start, cg_srgb_encode_start, sizeof encoder->start);
-    memcpy(encoder->threshold, cg_srgb_threshold_table, 255 * sizeof(float));
-    encoder->threshold[255] = INFINITY;
 }

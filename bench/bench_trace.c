@@ -18,21 +18,12 @@
 
 enum { WIDTH = 640, HEIGHT = 480, RUNS = 5 };
 
-/* The median CPU time of the calling thread over runs (at most 16): on a
+/* The median CPU time of the calling thread over runs (at most 64): on a
  * shared, loaded machine it varies far less than the wall clock.  For the
  * single-thread rows, where all the work is on the calling thread. */
 static double median_cpu(void (*fn)(void *), void *arg, int runs)
 {
-    double t[16];
-    for (int i = 0; i < runs && i < 16; i++) {
-        struct timespec a, b;
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
-        fn(arg);
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
-        t[i] = (double)(b.tv_sec - a.tv_sec) + (double)(b.tv_nsec - a.tv_nsec) * 1e-9;
-    }
-    qsort(t, (size_t)runs, sizeof t[0], bench_compare);
-    return t[runs / 2];
+    return bench_median_clock(fn, arg, runs, CLOCK_THREAD_CPUTIME_ID);
 }
 
 typedef struct rays {

@@ -110,11 +110,6 @@ static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
     return 1;
 }
 
-static int add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op)
-{
-    return add_piece(g, x0, y0, x1, y1, op, NULL);
-}
-
 /* ---- exact helpers ------------------------------------------------------ */
 
 /* floor(n / d + 1/2) for d > 0 */
@@ -220,6 +215,84 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
 }
 
 
+/* The natural runs of sort_two_keys' input, merged: idx[0..n) ordered by
+ * (k1, k2, index) as the radix sort orders it, when the sequence is made
+ * of at most MAX_RUNS ascending or strictly descending runs (the edges of
+ * smooth rings come in a few monotone chains); 0 when it has more (then
+ * nothing is written but scratch), -1 when out of memory. */
+#define MAX_RUNS 16
+static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                     uint32_t *idx, keyval *scratch, keyval *tmp)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+#define UKEY(i) ((uint64_t)KEY(k1, i) ^ ((uint64_t)1 << 63))
+    size_t start[MAX_RUNS + 1], nr = 0;
+    keyval *a = scratch;
+    for (size_t i = 0; i < n;) {
+        if (nr == MAX_RUNS)
+            return 0;
+        start[nr++] = i;
+        int64_t p1 = KEY(k1, i), p2 = KEY(k2, i);
+        size_t j = i + 1;
+        if (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2))) {
+            /* strictly descending (no ties: reversed, it is in order) */
+            do {
+                p1 = KEY(k1, j);
+                p2 = KEY(k2, j);
+                j++;
+            } while (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2)));
+            for (size_t k = i; k < j; k++)
+                a[i + j - 1 - k] = (keyval){UKEY(k), (uint32_t)k};
+        } else {
+            while (j < n && (KEY(k1, j) > p1 || (KEY(k1, j) == p1 && KEY(k2, j) >= p2))) {
+                p1 = KEY(k1, j);
+                p2 = KEY(k2, j);
+                j++;
+            }
+            for (size_t k = i; k < j; k++)
+                a[k] = (keyval){UKEY(k), (uint32_t)k};
+        }
+        i = j;
+    }
+    start[nr] = n;
+    keyval *t = tmp ? tmp : nr > 1 ? malloc(n * sizeof *t) : NULL, *src = a, *dst = t;
+    if (nr > 1 && !t)
+        return -1;
+    while (nr > 1) {
+        size_t w = 0;
+        for (size_t r = 0; r < nr; r += 2) {
+            size_t i = start[r], m = start[r + 1], e = r + 2 <= nr ? start[r + 2] : m;
+            size_t j = m, k = i;
+            start[w++] = i;
+            {
+                while (i < m && j < e) {
+                    const keyval *x = &src[i], *y = &src[j];
+                    int take_y = y->key < x->key ||
+                                 (y->key == x->key &&
+                                  (KEY(k2, y->val) < KEY(k2, x->val) ||
+                                   (KEY(k2, y->val) == KEY(k2, x->val) && y->val < x->val)));
+                    dst[k++] = take_y ? src[j++] : src[i++];
+                }
+            }
+            memcpy(dst + k, src + i, (m - i) * sizeof *dst);
+            k += m - i;
+            memcpy(dst + k, src + j, (e - j) * sizeof *dst);
+        }
+        start[w] = n;
+        nr = w;
+        keyval *x = src;
+        src = dst;
+        dst = x;
+    }
+    for (size_t i = 0; i < n; i++)
+        idx[i] = src[i].val;
+    if (!tmp)
+        free(t);
+    return 1;
+#undef UKEY
+#undef KEY
+}
+
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
  * NULL.  A radix sort by k1, then each run of equal k1 (short in practice)
@@ -230,6 +303,11 @@ static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, si
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
         return 1;
+    if (n >= 64) {
+        int r = sort_runs(k1, k2, stride, n, idx, scratch, tmp);
+        if (r)
+            return r > 0;
+    }
     int64_t lo1 = KEY(k1, 0);
     for (size_t i = 1; i < n; i++) {
         int64_t a = KEY(k1, i);
@@ -1463,6 +1541,14 @@ static size_t first_at_least(const hole_point *a, size_t n, int64_t v, int by_y)
     return lo;
 }
 
+/* a hash of a grid point in [0, 2^bits) */
+static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
+{
+    uint64_t h = (uint64_t)x * 0x9e3779b97f4a7c15u ^ (uint64_t)y * 0xc2b2ae3d27d4eb4fu;
+    h ^= h >> 29;
+    return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
+}
+
 typedef struct ringbuf {
     cg_point64 *pts;
     size_t n, cap;
@@ -1478,10 +1564,10 @@ static int assemble(engine *g, cg_polygon_set64 *result)
      * count (a ring takes each piece at most once and has 3 vertices or
      * more, so at most np points in all and np / 3 rings): one allocation
      * per call, which is most of the fixed cost on small inputs. */
-    if (np > ((size_t)-1) / 256)
+    if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
         return 0;
     size_t mr = np / 3 + 1; /* rings at most */
-    size_t bytes = 0, off[15], k = 0;
+    size_t bytes = 0, off[16], k = 0;
 #define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
     ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
     ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
@@ -1498,6 +1584,10 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     ASM_PART(mr, sizeof(hole_point));   /* 12: hole points */
     ASM_PART(mr, sizeof(hole_point));   /* 13: candidates */
     ASM_PART(2 * (mr + 1), sizeof(size_t)); /* 14: first and next hole */
+    size_t hbits = 4;
+    while (((size_t)1 << hbits) < 2 * np)
+        hbits++;
+    ASM_PART((size_t)1 << hbits, sizeof(uint32_t)); /* 15: start point -> first piece */
 #undef ASM_PART
     char *mem = malloc(bytes);
     if (!mem)
@@ -1513,6 +1603,19 @@ static int assemble(engine *g, cg_polygon_set64 *result)
         for (size_t i = 0; i < np; i++)
             sorted[i] = P[order[i]];
         memcpy(P, sorted, np * sizeof *P);
+    }
+    /* the first of the (sorted) pieces leaving each point, by a hash of the
+     * point (open addressing; index + 1, 0 is free) */
+    uint32_t *first = (uint32_t *)(mem + off[15]);
+    size_t hmask = ((size_t)1 << hbits) - 1;
+    memset(first, 0, (hmask + 1) * sizeof *first);
+    for (size_t i = 0; i < np; i++) {
+        if (i && P[i].x0 == P[i - 1].x0 && P[i].y0 == P[i - 1].y0)
+            continue;
+        size_t h = point_hash(P[i].x0, P[i].y0, hbits);
+        while (first[h])
+            h = (h + 1) & hmask;
+        first[h] = (uint32_t)(i + 1);
     }
     unsigned char *used = (unsigned char *)(mem + off[3]);
     memset(used, 0, np);
@@ -1535,14 +1638,14 @@ static int assemble(engine *g, cg_polygon_set64 *result)
                 goto fail; /* (cannot happen: each piece is taken once) */
             rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
             int64_t vx = P[cur].x1, vy = P[cur].y1;
-            /* outgoing pieces at v: binary search */
-            size_t lo = 0, hi = np;
-            while (lo < hi) {
-                size_t mid = (lo + hi) / 2;
-                if (P[mid].y0 < vy || (P[mid].y0 == vy && P[mid].x0 < vx))
-                    lo = mid + 1;
-                else
-                    hi = mid;
+            /* outgoing pieces at v: the first of them by the hash */
+            size_t lo = np;
+            for (size_t h = point_hash(vx, vy, hbits); first[h]; h = (h + 1) & hmask) {
+                size_t f = first[h] - 1;
+                if (P[f].x0 == vx && P[f].y0 == vy) {
+                    lo = f;
+                    break;
+                }
             }
             size_t best = (size_t)-1;
             i128 rx = P[cur].x0 - P[cur].x1, ry = P[cur].y0 - P[cur].y1;
@@ -2172,10 +2275,33 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
         }
         if (b - a < 2)
             continue;
+        /* room for the ring's edges at once, then each written in place
+         * (horizontal ones go to g->H) */
+        if (g->cape - g->ne < b - a) {
+            size_t c = g->ne + (b - a) + g->cape / 2 + 64;
+            bedge *e = realloc(g->E, c * sizeof *e);
+            if (!e)
+                return CG_ENOMEM;
+            g->E = e;
+            g->cape = c;
+        }
         for (size_t i = a; i < b; i++) {
             cg_point64 p = set->points[i], q = set->points[i + 1 < b ? i + 1 : a];
-            if (!add_edge(g, p.x, p.y, q.x, q.y, op))
-                return CG_ENOMEM;
+            if (p.y == q.y) {
+                if (!add_piece(g, p.x, p.y, q.x, q.y, op, NULL))
+                    return CG_ENOMEM;
+                continue;
+            }
+            bedge *e = &g->E[g->ne++];
+            int up = p.y < q.y;
+            cg_point64 lo = up ? p : q, hi = up ? q : p;
+            e->xb = e->ox0 = lo.x;
+            e->yb = e->oy0 = lo.y;
+            e->xt = e->ox1 = hi.x;
+            e->yt = e->oy1 = hi.y;
+            e->w = up ? -1 : 1;
+            e->op = op;
+            e->slope = (double)(hi.x - lo.x) / (double)(hi.y - lo.y);
         }
     }
     return CG_OK;

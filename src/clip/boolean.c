@@ -214,89 +214,78 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
     return 1;
 }
 
-
 /* The natural runs of sort_two_keys' input, merged: idx[0..n) ordered by
  * (k1, k2, index) as the radix sort orders it, when the sequence is made
  * of at most MAX_RUNS ascending or strictly descending runs (the edges of
- * smooth rings come in a few monotone chains); 0 when it has more (then
- * nothing is written but scratch), -1 when out of memory. */
-#define MAX_RUNS 16
+ * smooth rings come in a few monotone chains): 1, else 0 (nothing
+ * written).  The runs are merged all at once, straight from the records
+ * (each run's next key at hand, the least of them taken). */
+#define MAX_RUNS 8
 static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
-                     uint32_t *idx, keyval *scratch, keyval *tmp)
+                     uint32_t *idx)
 {
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
-#define UKEY(i) ((uint64_t)KEY(k1, i) ^ ((uint64_t)1 << 63))
-    size_t start[MAX_RUNS + 1], nr = 0;
-    keyval *a = scratch;
+    /* run r: positions at[r], at[r] + step[r], ... up to (excluding) end[r] */
+    ptrdiff_t at[MAX_RUNS], end[MAX_RUNS], step[MAX_RUNS];
+    int64_t h1[MAX_RUNS], h2[MAX_RUNS];
+    size_t nr = 0;
     for (size_t i = 0; i < n;) {
         if (nr == MAX_RUNS)
             return 0;
-        start[nr++] = i;
         int64_t p1 = KEY(k1, i), p2 = KEY(k2, i);
         size_t j = i + 1;
         if (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2))) {
-            /* strictly descending (no ties: reversed, it is in order) */
+            /* strictly descending (no ties: backwards, it is in order) */
             do {
                 p1 = KEY(k1, j);
                 p2 = KEY(k2, j);
                 j++;
             } while (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2)));
-            for (size_t k = i; k < j; k++)
-                a[i + j - 1 - k] = (keyval){UKEY(k), (uint32_t)k};
+            at[nr] = (ptrdiff_t)j - 1;
+            end[nr] = (ptrdiff_t)i - 1;
+            step[nr] = -1;
         } else {
             while (j < n && (KEY(k1, j) > p1 || (KEY(k1, j) == p1 && KEY(k2, j) >= p2))) {
                 p1 = KEY(k1, j);
                 p2 = KEY(k2, j);
                 j++;
             }
-            for (size_t k = i; k < j; k++)
-                a[k] = (keyval){UKEY(k), (uint32_t)k};
+            at[nr] = (ptrdiff_t)i;
+            end[nr] = (ptrdiff_t)j;
+            step[nr] = 1;
         }
+        h1[nr] = KEY(k1, at[nr]);
+        h2[nr] = KEY(k2, at[nr]);
+        nr++;
         i = j;
     }
-    start[nr] = n;
-    keyval *t = tmp ? tmp : nr > 1 ? malloc(n * sizeof *t) : NULL, *src = a, *dst = t;
-    if (nr > 1 && !t)
-        return -1;
-    while (nr > 1) {
-        size_t w = 0;
-        for (size_t r = 0; r < nr; r += 2) {
-            size_t i = start[r], m = start[r + 1], e = r + 2 <= nr ? start[r + 2] : m;
-            size_t j = m, k = i;
-            start[w++] = i;
-            {
-                while (i < m && j < e) {
-                    const keyval *x = &src[i], *y = &src[j];
-                    int take_y = y->key < x->key ||
-                                 (y->key == x->key &&
-                                  (KEY(k2, y->val) < KEY(k2, x->val) ||
-                                   (KEY(k2, y->val) == KEY(k2, x->val) && y->val < x->val)));
-                    dst[k++] = take_y ? src[j++] : src[i++];
-                }
-            }
-            memcpy(dst + k, src + i, (m - i) * sizeof *dst);
-            k += m - i;
-            memcpy(dst + k, src + j, (e - j) * sizeof *dst);
+    for (size_t o = 0; o < n; o++) {
+        size_t b = 0;
+        for (size_t r = 1; r < nr; r++)
+            if (h1[r] < h1[b] ||
+                (h1[r] == h1[b] && (h2[r] < h2[b] || (h2[r] == h2[b] && at[r] < at[b]))))
+                b = r;
+        idx[o] = (uint32_t)at[b];
+        at[b] += step[b];
+        if (at[b] == end[b]) { /* run b is used up: the last takes its place */
+            nr--;
+            at[b] = at[nr];
+            end[b] = end[nr];
+            step[b] = step[nr];
+            h1[b] = h1[nr];
+            h2[b] = h2[nr];
+        } else {
+            h1[b] = KEY(k1, at[b]);
+            h2[b] = KEY(k2, at[b]);
         }
-        start[w] = n;
-        nr = w;
-        keyval *x = src;
-        src = dst;
-        dst = x;
     }
-    for (size_t i = 0; i < n; i++)
-        idx[i] = src[i].val;
-    if (!tmp)
-        free(t);
     return 1;
-#undef UKEY
 #undef KEY
 }
-
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
- * NULL.  A radix sort by k1, then each run of equal k1 (short in practice)
- * by k2. */
+ * NULL.  The natural runs merged when they are few (sort_runs), else a
+ * radix sort by k1, then each run of equal k1 (short in practice) by k2. */
 static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                          uint32_t *idx, keyval *scratch, keyval *tmp)
 {
@@ -304,9 +293,8 @@ static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, si
     if (n == 0)
         return 1;
     if (n >= 64) {
-        int r = sort_runs(k1, k2, stride, n, idx, scratch, tmp);
-        if (r)
-            return r > 0;
+        if (sort_runs(k1, k2, stride, n, idx))
+            return 1;
     }
     int64_t lo1 = KEY(k1, 0);
     for (size_t i = 1; i < n; i++) {

@@ -1542,7 +1542,9 @@ typedef struct ringbuf {
     size_t n, cap;
 } ringbuf;
 
-static int assemble(engine *g, cg_polygon_set64 *result)
+/* buf (cap bytes, or NULL) is the sweep's block, no longer needed: the
+ * assembly's arrays are carved from it when they fit (no fresh pages). */
+static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
 {
     size_t np = g->np;
     piece *P = g->P;
@@ -1555,7 +1557,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
         return 0;
     size_t mr = np / 3 + 1; /* rings at most */
-    size_t bytes = 0, off[16], k = 0;
+    size_t bytes = 0, off[17], k = 0;
 #define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
     ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
     ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
@@ -1576,16 +1578,18 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     while (((size_t)1 << hbits) < 2 * np)
         hbits++;
     ASM_PART((size_t)1 << hbits, sizeof(uint32_t)); /* 15: start point -> first piece */
+    ASM_PART(np, sizeof(keyval));                   /* 16: sort temporary */
 #undef ASM_PART
-    char *mem = malloc(bytes);
+    char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
     if (!mem)
         return 0;
     {
         keyval *scratch = (keyval *)(mem + off[0]);
         uint32_t *order = (uint32_t *)(mem + off[1]);
         piece *sorted = (piece *)(mem + off[2]);
-        if (!sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch, NULL)) {
-            free(mem);
+        if (!sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
+                           (keyval *)(mem + off[16]))) {
+            free(own);
             return 0;
         }
         for (size_t i = 0; i < np; i++)
@@ -1852,7 +1856,7 @@ static int assemble(engine *g, cg_polygon_set64 *result)
     }
     ok = 1;
 fail:
-    free(mem);
+    free(own);
     return ok;
 }
 
@@ -2094,7 +2098,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             if (!r)
                 break;
             if (r == 1) {
-                st = assemble(g, result) ? CG_OK : CG_ENOMEM;
+                st = assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
                 break;
             }
             /* something to split: start over with the full sweep */
@@ -2172,7 +2176,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         free(saved);
         saved = NULL;
         if (!s.changed) {
-            st = assemble(g, result) ? CG_OK : CG_ENOMEM;
+            st = assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
             break;
         }
         if (pass >= 1 && !add_hot_pixel_splits(g))

@@ -1931,6 +1931,12 @@ static int sweep_alloc(sweep *s, int light)
     return 1;
 }
 
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t p = *(const int64_t *)a, q = *(const int64_t *)b;
+    return (p > q) - (p < q);
+}
+
 /* What a pass leaves to the next: its orders of the edges and where its
  * edges went (apply_splits). */
 typedef struct carry {
@@ -1939,6 +1945,13 @@ typedef struct carry {
     size_t kept;     /* of them, not split: now g->E[0..kept) */
     size_t nh_sorted; /* g->H[0..nh_sorted) is in order */
     int valid;
+    /* the last pass's scanlines and the distinct y of its split points
+     * (sorted), when they were few: the next pass's scanlines are the two
+     * merged (a split edge's pieces form a path from its bottom to its top,
+     * so every scanline stays one, and each split point's y becomes one) */
+    int64_t *ys, *sy;
+    size_t nys, nsy, capys, capsy;
+    int ys_valid;
 } carry;
 
 /* order[0..n) by (k1, k2) of the edges (fields of bedge) */
@@ -1974,6 +1987,27 @@ static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, u
             tmp[i] += (uint32_t)c->kept;
     }
     size_t i = 0, j = 0, k = 0;
+    if (np < na / 32) {
+        /* few pieces: the place of each among the kept edges by binary
+         * search, the kept edges copied in blocks between them */
+        for (; j < np; j++) {
+            const bedge *p = &E[tmp[j]];
+            size_t lo = i, hi = na;
+            while (lo < hi) {
+                size_t mid = lo + (hi - lo) / 2;
+                if (edge_before(&E[old[mid]], p, top))
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            memcpy(out + k, old + i, (lo - i) * sizeof *out);
+            k += lo - i;
+            i = lo;
+            out[k++] = tmp[j];
+        }
+        memcpy(out + k, old + i, (na - i) * sizeof *out);
+        return 1;
+    }
     while (i < na || j < np)
         out[k++] = j >= np || (i < na && edge_before(&E[old[i]], &E[tmp[j]], top)) ? old[i++]
                                                                                    : tmp[j++];
@@ -1991,6 +2025,7 @@ static int sweep_sort(sweep *s, carry *c)
     /* edges by bottom and by top; the scanlines are both merged */
     int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->fresh, 0) &&
                  merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
+    int from_last = sorted && c->ys_valid && c->nys + c->nsy <= 2 * (ne ? ne : 1);
     if (!sorted)
         sorted = !ne || (sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
                                        scratch, tmp) &&
@@ -1999,7 +2034,16 @@ static int sweep_sort(sweep *s, carry *c)
     /* the scanlines: the two orders merged, each with its next distinct y
      * at hand (INT64_MAX past its end; no y reaches it) */
     const bedge *E = g->E;
-    size_t u = 0, i = 0, j = 0, n = sorted ? ne : 0;
+    size_t u = 0, i = 0, j = 0, n = sorted && !from_last ? ne : 0;
+    if (from_last) {
+        /* the last pass's scanlines merged with its split points' y */
+        while (i < c->nys || j < c->nsy) {
+            int64_t y = j == c->nsy || (i < c->nys && c->ys[i] <= c->sy[j]) ? c->ys[i++] : c->sy[j++];
+            if (u == 0 || s->ys[u - 1] != y)
+                s->ys[u++] = y;
+        }
+        i = j = 0;
+    }
     int64_t yb = n ? E[s->by_bottom[0]].yb : INT64_MAX, yt = n ? E[s->by_top[0]].yt : INT64_MAX;
     while (i < n || j < n) {
         int64_t y;
@@ -2018,6 +2062,24 @@ static int sweep_sort(sweep *s, carry *c)
             s->ys[u++] = y;
     }
     s->nys = u;
+#ifdef CG_CLIP_CHECK_YS
+    if (from_last) {
+        size_t v = 0;
+        int64_t *all = malloc(2 * ne * sizeof *all);
+        for (size_t q = 0; q < ne; q++) {
+            all[v++] = E[q].yb;
+            all[v++] = E[q].yt;
+        }
+        qsort(all, v, sizeof *all, cmp_i64);
+        size_t w = 0;
+        for (size_t q = 0; q < v; q++)
+            if (!w || all[w - 1] != all[q])
+                all[w++] = all[q];
+        if (w != u || memcmp(all, s->ys, u * sizeof *all))
+            abort();
+        free(all);
+    }
+#endif
     if (sorted && g->nh > 1 && !(c->valid && c->nh_sorted == g->nh)) {
         sorted = sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
                                tmp);
@@ -2051,6 +2113,34 @@ static int carry_keep(carry *c, const sweep *s)
     memcpy(c->by_bottom, s->by_bottom, ne * sizeof *c->by_bottom);
     memcpy(c->by_top, s->by_top, ne * sizeof *c->by_top);
     c->n = ne;
+    /* the scanlines and the split points' y, when these are few */
+    const engine *g = s->g;
+    c->ys_valid = 0;
+    if (g->ns > ne / 16)
+        return 1;
+    if (s->nys > c->capys) {
+        free(c->ys);
+        c->capys = 0;
+        c->ys = malloc((s->nys + s->nys / 2) * sizeof *c->ys);
+        if (!c->ys)
+            return 0;
+        c->capys = s->nys + s->nys / 2;
+    }
+    if (g->ns > c->capsy) {
+        free(c->sy);
+        c->capsy = 0;
+        c->sy = malloc(g->ns * sizeof *c->sy);
+        if (!c->sy)
+            return 0;
+        c->capsy = g->ns;
+    }
+    memcpy(c->ys, s->ys, s->nys * sizeof *c->ys);
+    c->nys = s->nys;
+    for (size_t i = 0; i < g->ns; i++)
+        c->sy[i] = g->S[i].y;
+    qsort(c->sy, g->ns, sizeof *c->sy, cmp_i64);
+    c->nsy = g->ns;
+    c->ys_valid = 1;
     return 1;
 }
 
@@ -2246,6 +2336,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(c.by_bottom);
     free(c.by_top);
     free(c.map);
+    free(c.ys);
+    free(c.sy);
     return st;
 }
 

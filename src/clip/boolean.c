@@ -1557,13 +1557,13 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
         return 0;
     size_t mr = np / 3 + 1; /* rings at most */
-    size_t bytes = 0, off[17], k = 0;
+    size_t bytes = 0, off[16], k = 0;
 #define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
     ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
     ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
     ASM_PART(np, sizeof(piece));        /* 2: sorted pieces */
     ASM_PART(np, 1);                    /* 3: used */
-    ASM_PART(np, sizeof(cg_point64));   /* 4: ring being walked */
+    ASM_PART(np, sizeof(keyval));       /* 4: sort temporary */
     ASM_PART(np, sizeof(cg_point64));   /* 5: ring points */
     ASM_PART(mr + 1, sizeof(size_t));   /* 6: ring starts */
     ASM_PART(mr, sizeof(double));       /* 7: area */
@@ -1578,7 +1578,6 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     while (((size_t)1 << hbits) < 2 * np)
         hbits++;
     ASM_PART((size_t)1 << hbits, sizeof(uint32_t)); /* 15: start point -> first piece */
-    ASM_PART(np, sizeof(keyval));                   /* 16: sort temporary */
 #undef ASM_PART
     char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
     if (!mem)
@@ -1588,7 +1587,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         uint32_t *order = (uint32_t *)(mem + off[1]);
         piece *sorted = (piece *)(mem + off[2]);
         if (!sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
-                           (keyval *)(mem + off[16]))) {
+                           (keyval *)(mem + off[4]))) {
             free(own);
             return 0;
         }
@@ -1617,11 +1616,14 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     rings.points = (cg_point64 *)(mem + off[5]);
     rings.ring_start = (size_t *)(mem + off[6]);
     rings.ring_start[0] = 0;
-    ringbuf rb = {(cg_point64 *)(mem + off[4]), 0, np};
+    ringbuf rb = {NULL, 0, 0};
     int ok = 0;
     for (size_t start = 0; start < np; start++) {
         if (used[start])
             continue;
+        /* walked in place, after the rings so far */
+        rb.pts = rings.points + rings.point_count;
+        rb.cap = np - rings.point_count;
         rb.n = 0;
         size_t cur = start;
         used[cur] = 1;
@@ -1660,7 +1662,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
             size_t m = 0;
             for (size_t i = 0; i < n; i++) {
                 cg_point64 a = m ? rb.pts[m - 1] : rb.pts[n - 1], b = rb.pts[i],
-                           c = rb.pts[(i + 1) % n];
+                           c = rb.pts[i + 1 < n ? i + 1 : 0];
                 i128 cr = (i128)(b.x - a.x) * (c.y - b.y) - (i128)(b.y - a.y) * (c.x - b.x);
                 if (cr == 0) {
                     again = 1;
@@ -1672,9 +1674,8 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         }
         if (n < 3)
             continue;
-        if (rings.ring_count == mr || rings.point_count + n > np)
+        if (rings.ring_count == mr)
             goto fail; /* (cannot happen, as above) */
-        memcpy(rings.points + rings.point_count, rb.pts, n * sizeof *rb.pts);
         rings.point_count += n;
         rings.ring_start[++rings.ring_count] = rings.point_count;
     }

@@ -42,11 +42,13 @@ typedef clip_i128 i128;
 
 typedef struct bedge {
     int64_t xb, yb, xt, yt; /* bottom and top, yb < yt */
-    int w;                  /* winding added when crossed from left to right */
-    int op;                 /* 0 subject, 1 clip */
     double slope;           /* dx / dy */
-    int64_t ox0, oy0, ox1, oy1; /* the input edge it is a piece of */
+    uint32_t orig;          /* the input edge it is a piece of (engine's O), or
+                             * NO_ORIG: itself */
+    int8_t w;               /* winding added when crossed from left to right */
+    uint8_t op;             /* 0 subject, 1 clip */
 } bedge;
+#define NO_ORIG UINT32_MAX
 
 typedef struct hseg { int64_t y, x0, x1; } hseg;
 typedef struct splitpt { uint32_t edge; int64_t x, y; } splitpt;
@@ -73,13 +75,16 @@ typedef struct engine {
     size_t ns, caps;
     piece *P;
     size_t np, capp;
+    int64_t (*O)[4]; /* input edges of pieces (x0, y0, x1, y1): O_small or heap */
+    size_t no, capo;
+    int64_t O_small[16][4];
     cg_clip_op op;
     cg_clip_fill fill[2];
     unsigned char table[4]; /* in the result, by (in subject, in clip) */
 } engine;
 
 static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
-                     const int64_t orig[4])
+                     uint32_t orig)
 {
     if (y0 == y1) {
         if (x0 == x1)
@@ -91,23 +96,25 @@ static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
     GROW(g->E, g->ne, g->cape, return 0);
     bedge *e = &g->E[g->ne++];
     if (y0 < y1) {
-        *e = (bedge){x0, y0, x1, y1, -1, op, 0, 0, 0, 0, 0};
+        *e = (bedge){x0, y0, x1, y1, 0, orig, -1, (uint8_t)op};
     } else {
-        *e = (bedge){x1, y1, x0, y0, 1, op, 0, 0, 0, 0, 0};
+        *e = (bedge){x1, y1, x0, y0, 0, orig, 1, (uint8_t)op};
     }
     e->slope = (double)(e->xt - e->xb) / (double)(e->yt - e->yb);
-    if (orig) {
-        e->ox0 = orig[0];
-        e->oy0 = orig[1];
-        e->ox1 = orig[2];
-        e->oy1 = orig[3];
-    } else {
-        e->ox0 = e->xb;
-        e->oy0 = e->yb;
-        e->ox1 = e->xt;
-        e->oy1 = e->yt;
-    }
     return 1;
+}
+
+/* the input edge e is a piece of */
+static inline void edge_orig(const engine *g, const bedge *e, int64_t o[4])
+{
+    if (e->orig == NO_ORIG) {
+        o[0] = e->xb;
+        o[1] = e->yb;
+        o[2] = e->xt;
+        o[3] = e->yt;
+    } else {
+        memcpy(o, g->O[e->orig], sizeof g->O[0]);
+    }
 }
 
 /* ---- exact helpers ------------------------------------------------------ */
@@ -438,9 +445,11 @@ static int meet(sweep *s, uint32_t e, int64_t y, int next)
     }
     /* round the input edge's x there rather than the piece's, so that
      * rounding errors do not add up along an edge split many times */
-    if (s->use_input_lines && ed->oy0 != ed->oy1) {
-        i128 dy = ed->oy1 - ed->oy0;
-        i128 n = (i128)ed->ox0 * dy + (i128)(y - ed->oy0) * (ed->ox1 - ed->ox0);
+    int64_t o[4];
+    edge_orig(s->g, ed, o);
+    if (s->use_input_lines && o[1] != o[3]) {
+        i128 dy = o[3] - o[1];
+        i128 n = (i128)o[0] * dy + (i128)(y - o[1]) * (o[2] - o[0]);
         if (dy < 0) {
             n = -n;
             dy = -dy;
@@ -1101,10 +1110,12 @@ static int run_sweep(sweep *s)
                      * lies in the beam (no drift), else the crossing of the
                      * pieces */
                     const bedge *a = &E[u], *b = &E[v];
-                    int64_t px, py;
+                    int64_t px, py, oa[4], ob[4];
+                    edge_orig(g, a, oa);
+                    edge_orig(g, b, ob);
                     if (!s->use_input_lines ||
-                        !line_intersection(a->ox0, a->oy0, a->ox1, a->oy1, b->ox0, b->oy0, b->ox1,
-                                           b->oy1, &px, &py) ||
+                        !line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2], ob[3],
+                                           &px, &py) ||
                         py < y || py > yn) {
                         line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt,
                                           &px, &py);
@@ -1386,6 +1397,32 @@ static int add_hot_pixel_splits(engine *g)
 
 /* map[old edge] receives its new index, or UINT32_MAX when it was split
  * (the pieces come after the edges kept, in g->E[*kept..]). */
+/* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
+ * when out of memory.  (The first few in the engine itself.) */
+static uint32_t add_orig(engine *g, const bedge *e)
+{
+    if (!g->O) {
+        g->O = g->O_small;
+        g->capo = sizeof g->O_small / sizeof g->O_small[0];
+    }
+    if (g->no == g->capo) {
+        size_t c = 2 * g->capo;
+        int64_t(*o)[4] = g->O == g->O_small ? malloc(c * sizeof *o) : realloc(g->O, c * sizeof *o);
+        if (!o)
+            return NO_ORIG;
+        if (g->O == g->O_small)
+            memcpy(o, g->O_small, sizeof g->O_small);
+        g->O = o;
+        g->capo = c;
+    }
+    int64_t *o = g->O[g->no];
+    o[0] = e->xb;
+    o[1] = e->yb;
+    o[2] = e->xt;
+    o[3] = e->yt;
+    return (uint32_t)g->no++;
+}
+
 static int apply_splits(engine *g, uint32_t *map, size_t *kept)
 {
     qsort(g->S, g->ns, sizeof *g->S, cmp_split);
@@ -1423,12 +1460,18 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
         qsort(buf + 1, m - 1, sizeof *buf, cmp_along);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
+        /* the input edge of the pieces */
+        uint32_t orig = e.orig == NO_ORIG ? add_orig(g, &e) : e.orig;
+        if (orig == NO_ORIG) {
+            free(buf);
+            free(dead);
+            return 0;
+        }
         /* the path direction of the edge: w == -1 means upwards */
         for (size_t k = 0; k + 1 < m; k++) {
             split_sort p = buf[k], q = buf[k + 1];
             if (p.x == q.x && p.y == q.y)
                 continue;
-            int64_t orig[4] = {e.ox0, e.oy0, e.ox1, e.oy1};
             int ok = e.w < 0 ? add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
                              : add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
             if (!ok) {
@@ -1900,7 +1943,7 @@ static int sweep_alloc(sweep *s, int light)
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
-        need += need / 4; /* the next pass usually has a few more edges */
+        need += need / 8; /* the next pass usually has a few more edges */
         s->mem = malloc(need);
         if (!s->mem)
             return 0;
@@ -2373,19 +2416,20 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
         for (size_t i = a; i < b; i++) {
             cg_point64 p = set->points[i], q = set->points[i + 1 < b ? i + 1 : a];
             if (p.y == q.y) {
-                if (!add_piece(g, p.x, p.y, q.x, q.y, op, NULL))
+                if (!add_piece(g, p.x, p.y, q.x, q.y, op, NO_ORIG))
                     return CG_ENOMEM;
                 continue;
             }
             bedge *e = &g->E[g->ne++];
             int up = p.y < q.y;
             cg_point64 lo = up ? p : q, hi = up ? q : p;
-            e->xb = e->ox0 = lo.x;
-            e->yb = e->oy0 = lo.y;
-            e->xt = e->ox1 = hi.x;
-            e->yt = e->oy1 = hi.y;
-            e->w = up ? -1 : 1;
-            e->op = op;
+            e->xb = lo.x;
+            e->yb = lo.y;
+            e->xt = hi.x;
+            e->yt = hi.y;
+            e->orig = NO_ORIG;
+            e->w = (int8_t)(up ? -1 : 1);
+            e->op = (uint8_t)op;
             e->slope = (double)(hi.x - lo.x) / (double)(hi.y - lo.y);
         }
     }
@@ -2434,6 +2478,8 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
     free(g.H);
     free(g.S);
     free(g.P);
+    if (g.O != g.O_small)
+        free(g.O);
     return st;
 }
 

@@ -1534,14 +1534,6 @@ static int cmp_area(const void *a, const void *b)
     return (x->ring > y->ring) - (x->ring < y->ring);
 }
 
-static int cmp_point64(const void *a, const void *b)
-{
-    const cg_point64 *p = a, *q = b;
-    if (p->x != q->x)
-        return p->x < q->x ? -1 : 1;
-    return (p->y > q->y) - (p->y < q->y);
-}
-
 typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
 static int cmp_hole_x(const void *a, const void *b)
 {
@@ -1578,6 +1570,16 @@ static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
     uint64_t h = (uint64_t)x * 0x9e3779b97f4a7c15u ^ (uint64_t)y * 0xc2b2ae3d27d4eb4fu;
     h ^= h >> 29;
     return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
+}
+
+/* whether p is in the hash set h (2^bits entries: index + 1 into pts, 0
+ * free) */
+static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_point64 p)
+{
+    for (size_t i = point_hash(p.x, p.y, bits); h[i]; i = (i + 1) & (((size_t)1 << bits) - 1))
+        if (pts[h[i] - 1].x == p.x && pts[h[i] - 1].y == p.y)
+            return 1;
+    return 0;
 }
 
 typedef struct ringbuf {
@@ -1773,7 +1775,8 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
              * vertex of another ring (rings may touch there, after the
              * collinear vertex of the hole went away), so that it is on no
              * other ring. */
-            cg_point64 *verts = NULL; /* sorted, when first needed */
+            uint32_t *verts = NULL; /* a hash set of the vertices, when first needed */
+            size_t vbits = 4;
             size_t nv = rings.point_count;
             size_t h = 0;
             for (size_t r = 0; r < nr && !fail_nest; r++) {
@@ -1790,16 +1793,23 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                         int64_t qy = quarter ? 3 * u.y + v.y : 2 * (u.y + v.y);
                         cg_point64 m = {qx / 4, qy / 4};
                         if (!(qx & 3) && !(qy & 3) && !verts) {
-                            verts = malloc(nv * sizeof *verts);
+                            while (((size_t)1 << vbits) < 2 * nv)
+                                vbits++;
+                            verts = calloc((size_t)1 << vbits, sizeof *verts);
                             if (!verts) {
                                 fail_nest = 1;
                                 break;
                             }
-                            memcpy(verts, rings.points, nv * sizeof *verts);
-                            qsort(verts, nv, sizeof *verts, cmp_point64);
+                            for (size_t v = 0; v < nv; v++) {
+                                cg_point64 p = rings.points[v];
+                                size_t h = point_hash(p.x, p.y, vbits);
+                                while (verts[h])
+                                    h = (h + 1) & (((size_t)1 << vbits) - 1);
+                                verts[h] = (uint32_t)(v + 1);
+                            }
                         }
                         if ((qx & 3) || (qy & 3) ||
-                            !bsearch(&m, verts, nv, sizeof *verts, cmp_point64)) {
+                            !is_vertex(verts, vbits, rings.points, m)) {
                             px = qx;
                             py = qy;
                             found = 1;

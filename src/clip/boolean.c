@@ -1300,14 +1300,6 @@ static int light_sweep(sweep *s)
 /* Replaces every edge that has split points by its pieces. */
 typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
 
-static int cmp_split(const void *a, const void *b)
-{
-    const splitpt *p = a, *q = b;
-    if (p->edge != q->edge)
-        return p->edge < q->edge ? -1 : 1;
-    return 0;
-}
-
 static int cmp_along(const void *a, const void *b)
 {
     const split_sort *p = a, *q = b;
@@ -1425,13 +1417,29 @@ static uint32_t add_orig(engine *g, const bedge *e)
 
 static int apply_splits(engine *g, uint32_t *map, size_t *kept)
 {
-    qsort(g->S, g->ns, sizeof *g->S, cmp_split);
     size_t old_ne = g->ne;
     split_sort *buf = NULL;
     size_t capbuf = 0;
-    unsigned char *dead = calloc(old_ne ? old_ne : 1, 1);
-    if (!dead)
+    /* the split points by edge (a counting sort; the points of one edge
+     * are put in order along it below) */
+    size_t at = (old_ne + 1 + 3) & ~(size_t)3; /* dead[old_ne + 1], then first[old_ne + 1] */
+    unsigned char *dead = calloc(at + (old_ne + 1) * sizeof(uint32_t), 1);
+    splitpt *by_edge = malloc((g->ns ? g->ns : 1) * sizeof *by_edge);
+    if (!dead || !by_edge) {
+        free(dead);
+        free(by_edge);
         return 0;
+    }
+    uint32_t *first = (uint32_t *)(void *)(dead + at);
+    for (size_t k = 0; k < g->ns; k++)
+        first[g->S[k].edge + 1]++;
+    for (size_t i = 1; i <= old_ne; i++)
+        first[i] += first[i - 1];
+    for (size_t k = 0; k < g->ns; k++)
+        by_edge[first[g->S[k].edge]++] = g->S[k];
+    free(g->S);
+    g->S = by_edge;
+    g->caps = g->ns ? g->ns : 1;
     for (size_t i = 0; i < g->ns;) {
         size_t j = i;
         uint32_t ei = g->S[i].edge;
@@ -1457,7 +1465,17 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
-        qsort(buf + 1, m - 1, sizeof *buf, cmp_along);
+        if (m - 1 <= 16) { /* (few: insertion) */
+            for (size_t a = 2; a < m; a++) {
+                split_sort v = buf[a];
+                size_t b = a;
+                for (; b > 1 && cmp_along(&buf[b - 1], &v) > 0; b--)
+                    buf[b] = buf[b - 1];
+                buf[b] = v;
+            }
+        } else {
+            qsort(buf + 1, m - 1, sizeof *buf, cmp_along);
+        }
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
         /* the input edge of the pieces */

@@ -1417,40 +1417,35 @@ static uint32_t add_orig(engine *g, const bedge *e)
 
 static int apply_splits(engine *g, uint32_t *map, size_t *kept)
 {
-    size_t old_ne = g->ne;
-    split_sort *buf = NULL;
-    size_t capbuf = 0;
-    /* the split points by edge (a counting sort; the points of one edge
-     * are put in order along it below) */
-    size_t at = (old_ne + 1 + 3) & ~(size_t)3; /* dead[old_ne + 1], then first[old_ne + 1] */
-    unsigned char *dead = calloc(at + (old_ne + 1) * sizeof(uint32_t), 1);
-    splitpt *by_edge = malloc((g->ns ? g->ns : 1) * sizeof *by_edge);
-    if (!dead || !by_edge) {
-        free(dead);
-        free(by_edge);
+    size_t old_ne = g->ne, ns = g->ns;
+    split_sort small[34], *buf = small; /* the points of one edge */
+    size_t capbuf = sizeof small / sizeof small[0];
+    /* the split points by edge (a counting sort into order[]; the points of
+     * one edge are put in order along it below), in one block with dead[] */
+    size_t at = (old_ne + 1 + 3) & ~(size_t)3;
+    unsigned char *dead = calloc(at + (old_ne + 1 + ns) * sizeof(uint32_t), 1);
+    if (!dead)
         return 0;
-    }
-    uint32_t *first = (uint32_t *)(void *)(dead + at);
-    for (size_t k = 0; k < g->ns; k++)
+    uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_ne + 1;
+    for (size_t k = 0; k < ns; k++)
         first[g->S[k].edge + 1]++;
     for (size_t i = 1; i <= old_ne; i++)
         first[i] += first[i - 1];
-    for (size_t k = 0; k < g->ns; k++)
-        by_edge[first[g->S[k].edge]++] = g->S[k];
-    free(g->S);
-    g->S = by_edge;
-    g->caps = g->ns ? g->ns : 1;
-    for (size_t i = 0; i < g->ns;) {
+    for (size_t k = 0; k < ns; k++)
+        order[first[g->S[k].edge]++] = (uint32_t)k;
+    for (size_t i = 0; i < ns;) {
         size_t j = i;
-        uint32_t ei = g->S[i].edge;
-        while (j < g->ns && g->S[j].edge == ei)
+        uint32_t ei = g->S[order[i]].edge;
+        while (j < ns && g->S[order[j]].edge == ei)
             j++;
         size_t n = j - i;
         if (n + 2 > capbuf) {
             capbuf = (n + 2) * 2;
-            split_sort *nb = realloc(buf, capbuf * sizeof *nb);
+            split_sort *nb = buf == small ? malloc(capbuf * sizeof *nb)
+                                          : realloc(buf, capbuf * sizeof *nb);
             if (!nb) {
-                free(buf);
+                if (buf != small)
+                    free(buf);
                 free(dead);
                 return 0;
             }
@@ -1461,7 +1456,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
         size_t m = 0;
         buf[m++] = (split_sort){e.xb, e.yb, -1};
         for (size_t k = i; k < j; k++) {
-            int64_t x = g->S[k].x, y = g->S[k].y;
+            int64_t x = g->S[order[k]].x, y = g->S[order[k]].y;
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
@@ -1481,7 +1476,8 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
         /* the input edge of the pieces */
         uint32_t orig = e.orig == NO_ORIG ? add_orig(g, &e) : e.orig;
         if (orig == NO_ORIG) {
-            free(buf);
+            if (buf != small)
+                free(buf);
             free(dead);
             return 0;
         }
@@ -1493,14 +1489,16 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
             int ok = e.w < 0 ? add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
                              : add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
             if (!ok) {
-                free(buf);
+                if (buf != small)
+                    free(buf);
                 free(dead);
                 return 0;
             }
         }
         i = j;
     }
-    free(buf);
+    if (buf != small)
+        free(buf);
     /* compact */
     size_t w = 0;
     for (size_t i = 0; i < old_ne; i++) {
@@ -1971,7 +1969,7 @@ static int sweep_alloc(sweep *s, int light)
     if (need > s->memcap) {
         free(s->mem);
         s->memcap = 0;
-        need += need / 8; /* the next pass usually has a few more edges */
+        need += need / 8 + 2048; /* the next pass usually has a few more edges */
         s->mem = malloc(need);
         if (!s->mem)
             return 0;
@@ -2172,15 +2170,14 @@ static int carry_keep(carry *c, const sweep *s)
     size_t ne = s->g->ne;
     if (ne > c->cap) {
         size_t cap = ne + ne / 2;
-        free(c->by_bottom);
-        free(c->by_top);
-        free(c->map);
-        c->by_bottom = malloc(cap * sizeof *c->by_bottom);
-        c->by_top = malloc(cap * sizeof *c->by_top);
-        c->map = malloc(cap * sizeof *c->map);
-        c->cap = c->by_bottom && c->by_top && c->map ? cap : 0;
-        if (!c->cap)
+        free(c->by_bottom); /* (the three arrays in one block) */
+        c->cap = 0;
+        c->by_bottom = malloc(3 * cap * sizeof *c->by_bottom);
+        if (!c->by_bottom)
             return 0;
+        c->by_top = c->by_bottom + cap;
+        c->map = c->by_top + cap;
+        c->cap = cap;
     }
     memcpy(c->by_bottom, s->by_bottom, ne * sizeof *c->by_bottom);
     memcpy(c->by_top, s->by_top, ne * sizeof *c->by_top);
@@ -2405,9 +2402,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(saved);
     free(ranges);
     free(bands);
-    free(c.by_bottom);
-    free(c.by_top);
-    free(c.map);
+    free(c.by_bottom); /* (and by_top, map) */
     free(c.ys);
     free(c.sy);
     return st;

@@ -299,6 +299,18 @@ static int sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, si
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
         return 1;
+    if (n <= 32) { /* few: straight insertion (stable: ties by index) */
+        for (size_t i = 0; i < n; i++) {
+            int64_t a1 = KEY(k1, i), a2 = KEY(k2, i);
+            size_t j = i;
+            for (; j > 0 && (KEY(k1, idx[j - 1]) > a1 ||
+                             (KEY(k1, idx[j - 1]) == a1 && KEY(k2, idx[j - 1]) > a2));
+                 j--)
+                idx[j] = idx[j - 1];
+            idx[j] = (uint32_t)i;
+        }
+        return 1;
+    }
     if (n >= 64) {
         if (sort_runs(k1, k2, stride, n, idx))
             return 1;

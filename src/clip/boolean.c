@@ -81,6 +81,7 @@ typedef struct engine {
     cg_clip_op op;
     cg_clip_fill fill[2];
     unsigned char table[4]; /* in the result, by (in subject, in clip) */
+    unsigned char near[5][5]; /* inside() for windings -2..2 */
 } engine;
 
 static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
@@ -507,9 +508,17 @@ static inline int fill_in(cg_clip_fill f, int64_t w)
     }
 }
 
-static inline int inside(const engine *g, int64_t wa, int64_t wb)
+static inline int inside_rule(const engine *g, int64_t wa, int64_t wb)
 {
     return g->table[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
+}
+
+/* whether a point with windings wa (subject) and wb (clip) is in the result */
+static inline int inside(const engine *g, int64_t wa, int64_t wb)
+{
+    if ((uint64_t)(wa + 2) < 5 && (uint64_t)(wb + 2) < 5)
+        return g->near[wa + 2][wb + 2];
+    return inside_rule(g, wa, wb);
 }
 
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
@@ -2492,6 +2501,9 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                                                  : op == CG_CLIP_UNION      ? a || b
                                                  : op == CG_CLIP_DIFFERENCE ? a && !b
                                                                             : a != b);
+    for (int a = 0; a < 5; a++)
+        for (int b = 0; b < 5; b++)
+            g.near[a][b] = (unsigned char)inside_rule(&g, a - 2, b - 2);
     /* room for the input's edges and some pieces: no regrowth */
     size_t npts = (subject ? subject->point_count : 0) + (clip ? clip->point_count : 0);
     if (npts && npts < UINT32_MAX / 4) {

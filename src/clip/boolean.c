@@ -938,10 +938,12 @@ static int run_sweep(sweep *s)
         }
         if (s->log && s->classify && s->visits >= s->ck_visits) {
             /* a checkpoint costs about as much as a look at each active
-             * edge: one per eight such looks at most */
+             * edge: one per eight such looks at most (and at most one per
+             * 64 looks on large inputs, where the next pass's jumps need
+             * not be as fine) */
             if (!ck_record(s, y))
                 s->log = NULL;
-            s->ck_visits = s->visits + 8 * s->nact + 64;
+            s->ck_visits = s->visits + 8 * s->nact + (s->g->ne >= 1024 ? 64 : 16);
         }
         uint32_t *below = s->act;
         size_t nb = s->nact;
@@ -2317,7 +2319,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
         /* (later passes are nearly always the last; small inputs gain
          * less than the checkpoints cost) */
-        s.log = pass == 0 && g->ne >= 1024 ? log : NULL;
+        s.log = pass == 0 && g->ne >= 128 ? log : NULL;
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {

@@ -194,6 +194,43 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
     keyval *t = tmp ? tmp : malloc(n * sizeof *t), *src = a, *dst = t;
     if (!t)
         return 0;
+    if (n < 2048) {
+        /* one pass by the top bits (about n buckets, stable), then straight
+         * insertion, which moves keys within their bucket only: unless a
+         * bucket holds many keys (uneven keys), then the digits below */
+        int top = 0, b = 6;
+        while (top < 64 && (all >> top))
+            top++;
+        while (((size_t)1 << b) < n)
+            b++;
+        int shift = top > b ? top - b : 0;
+        size_t count[2048], most = 0;
+        memset(count, 0, ((size_t)1 << b) * sizeof count[0]);
+        for (size_t i = 0; i < n; i++) {
+            size_t c = ++count[a[i].key >> shift];
+            most = c > most ? c : most;
+        }
+        if (most <= 16) {
+            size_t sum = 0;
+            for (size_t d = 0; d < ((size_t)1 << b); d++) {
+                size_t c = count[d];
+                count[d] = sum;
+                sum += c;
+            }
+            for (size_t i = 0; i < n; i++)
+                t[count[a[i].key >> shift]++] = a[i];
+            for (size_t i = 0; i < n; i++) {
+                keyval v = t[i];
+                size_t j = i;
+                for (; j > 0 && a[j - 1].key > v.key; j--)
+                    a[j] = a[j - 1];
+                a[j] = v;
+            }
+            if (!tmp)
+                free(t);
+            return 1;
+        }
+    }
     /* small inputs: small digit tables */
     const int bits = n < 2048 ? 6 : 11;
     for (int shift = 0; shift < 64 && (all >> shift); shift += bits) {

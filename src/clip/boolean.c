@@ -172,8 +172,19 @@ static int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 
 typedef struct keyval { uint64_t key; uint32_t val; } keyval;
 
-/* Stable LSD radix sort of a[0..n) by key (6- or 11-bit digits, only as
- * many passes as the largest key needs); tmp holds n or is NULL. */
+/* v put into a[0..i), in order by key, after the equal keys: a[0..i] in
+ * order */
+static inline void insert_key(keyval *a, size_t i, keyval v)
+{
+    for (; i > 0 && a[i - 1].key > v.key; i--)
+        a[i] = a[i - 1];
+    a[i] = v;
+}
+
+/* Stable sort of a[0..n) by key: straight insertion up to 48 keys, below
+ * 2,048 one pass by the top bits then insertion (when the keys spread
+ * evenly), else an LSD radix sort (6- or 11-bit digits, only as many passes
+ * as the largest key needs); tmp holds n or is NULL. */
 static int radix_sort(keyval *a, size_t n, keyval *tmp)
 {
     if (n < 2)
@@ -182,13 +193,8 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
     for (size_t i = 0; i < n; i++)
         all |= a[i].key;
     if (n <= 48) { /* few keys: straight insertion (stable) */
-        for (size_t i = 1; i < n; i++) {
-            keyval v = a[i];
-            size_t j = i;
-            for (; j > 0 && a[j - 1].key > v.key; j--)
-                a[j] = a[j - 1];
-            a[j] = v;
-        }
+        for (size_t i = 1; i < n; i++)
+            insert_key(a, i, a[i]);
         return 1;
     }
     keyval *t = tmp ? tmp : malloc(n * sizeof *t), *src = a, *dst = t;
@@ -219,13 +225,8 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
             }
             for (size_t i = 0; i < n; i++)
                 t[count[a[i].key >> shift]++] = a[i];
-            for (size_t i = 0; i < n; i++) {
-                keyval v = t[i];
-                size_t j = i;
-                for (; j > 0 && a[j - 1].key > v.key; j--)
-                    a[j] = a[j - 1];
-                a[j] = v;
-            }
+            for (size_t i = 0; i < n; i++)
+                insert_key(a, i, t[i]);
             if (!tmp)
                 free(t);
             return 1;

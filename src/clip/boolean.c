@@ -1649,6 +1649,43 @@ static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
     return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
 }
 
+/* The first of the pieces P[0..np) (sorted by start point, y then x)
+ * starting at (vx, vy), np when none: a search that gallops from P[from]
+ * and then halves. */
+static size_t first_leaving(const piece *P, size_t np, size_t from, int64_t vx, int64_t vy)
+{
+#define BEFORE(i) (P[i].y0 < vy || (P[i].y0 == vy && P[i].x0 < vx))
+    size_t lo, hi; /* the first not BEFORE is in [lo, hi] (hi == np: none) */
+    if (BEFORE(from)) {
+        size_t step = 1;
+        lo = from + 1;
+        hi = lo;
+        while (hi < np && BEFORE(hi)) {
+            lo = hi + 1;
+            hi = step < np - hi ? hi + step : np;
+            step *= 2;
+        }
+    } else {
+        size_t step = 1;
+        hi = from;
+        lo = from;
+        while (lo > 0 && !BEFORE(lo - 1)) {
+            hi = lo - 1;
+            lo = step < lo ? lo - step : 0;
+            step *= 2;
+        }
+    }
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (BEFORE(mid))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < np && P[lo].x0 == vx && P[lo].y0 == vy ? lo : np;
+#undef BEFORE
+}
+
 /* whether p is in the hash set h (2^bits entries: index + 1 into pts, 0
  * free) */
 static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_point64 p)
@@ -1696,10 +1733,15 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     ASM_PART(mr, sizeof(hole_point));   /* 12: hole points */
     ASM_PART(mr, sizeof(hole_point));   /* 13: candidates */
     ASM_PART(2 * (mr + 1), sizeof(size_t)); /* 14: first and next hole */
+    /* the first piece leaving a point: by a hash of the point, or on many
+     * pieces (where the lookups would miss the caches) by a search from the
+     * piece that arrives there (a ring's next piece is usually close by in
+     * the order) */
+    int hashed = np < 32768;
     size_t hbits = 4;
-    while (((size_t)1 << hbits) < 2 * np)
+    while (hashed && ((size_t)1 << hbits) < 2 * np)
         hbits++;
-    ASM_PART((size_t)1 << hbits, sizeof(uint32_t)); /* 15: start point -> first piece */
+    ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: start point -> first piece */
 #undef ASM_PART
     char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
     if (!mem)
@@ -1721,8 +1763,9 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
      * point (open addressing; index + 1, 0 is free) */
     uint32_t *first = (uint32_t *)(mem + off[15]);
     size_t hmask = ((size_t)1 << hbits) - 1;
-    memset(first, 0, (hmask + 1) * sizeof *first);
-    for (size_t i = 0; i < np; i++) {
+    if (hashed)
+        memset(first, 0, (hmask + 1) * sizeof *first);
+    for (size_t i = 0; i < np && hashed; i++) {
         if (i && P[i].x0 == P[i - 1].x0 && P[i].y0 == P[i - 1].y0)
             continue;
         size_t h = point_hash(P[i].x0, P[i].y0, hbits);
@@ -1754,9 +1797,9 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                 goto fail; /* (cannot happen: each piece is taken once) */
             rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
             int64_t vx = P[cur].x1, vy = P[cur].y1;
-            /* outgoing pieces at v: the first of them by the hash */
-            size_t lo = np;
-            for (size_t h = point_hash(vx, vy, hbits); first[h]; h = (h + 1) & hmask) {
+            /* outgoing pieces at v: the first of them */
+            size_t lo = hashed ? np : first_leaving(P, np, cur, vx, vy);
+            for (size_t h = point_hash(vx, vy, hbits); hashed && first[h]; h = (h + 1) & hmask) {
                 size_t f = first[h] - 1;
                 if (P[f].x0 == vx && P[f].y0 == vy) {
                     lo = f;

@@ -375,11 +375,6 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     cg_status status = fill_painter_init(&painter, r, image, paint);
     if (status != CG_OK)
         return status;
-    /* The opaque blend table (see internal.h), for anti-aliased edges only;
-     * until it exists, or without memory for it, the blend cache does the work. */
-    if (painter.type == CG_PAINT_SOLID && painter.opaque && !r->opaque_table
-        && ++r->opaque_fills >= 2)
-        r->opaque_table = malloc((size_t)256 * 768 * sizeof *r->opaque_table);
     if (r->line_count == 0)
         return CG_OK;
     int origin_x = floor_clipped(r->min_x), end_x = ceil_clipped(r->max_x);

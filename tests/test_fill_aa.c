@@ -666,8 +666,9 @@ static void aa_blend_exact(void)
     cg_image *im;
     CHECK(cg_image_create(&im, 1, 1, CG_PIXEL_RGBA8) == CG_OK);
     cg_rgba8 paints[10] = {{30, 60, 200, 255}, {200, 90, 40, 255}, {255, 255, 255, 255},
-                           {0, 0, 0, 255}, {1, 254, 128, 255}, {200, 30, 90, 160}};
-    for (int i = 6; i < 10; i++)
+                           {0, 0, 0, 255}, {1, 254, 128, 255}, {200, 30, 90, 160},
+                           {90, 10, 30, 0}};
+    for (int i = 7; i < 10; i++)
         paints[i] = (cg_rgba8){(uint8_t)check_rng_int(&rng, 0, 255),
                                (uint8_t)check_rng_int(&rng, 0, 255),
                                (uint8_t)check_rng_int(&rng, 0, 255),

@@ -268,22 +268,24 @@ static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t ge
     return gen;
 }
 
-/* fill_blend8 of an opaque colour (linear r, g, b) at alpha as over the
- * opaque pixel v, channel by channel with the same arithmetic (decode, mix
- * dk + (src - dk) * as, encode through fill_encode_unit's tables), so with
- * the same result; the three channels at once with SSE2.  Everything it
- * reads (2.1 KiB of tables) stays in the first-level cache. */
+/* fill_blend8 of a colour (linear r, g, b) at alpha as over pixel v (of
+ * alpha 255, or translucent), channel by channel with the same arithmetic
+ * (decode, mix, encode through fill_encode_unit's tables), so with the same
+ * result; the three channels at once with SSE2.  Everything it reads (2.1
+ * KiB of tables) stays in the first-level cache. */
 #if defined(__SSE2__)
-static inline uint32_t fill_blend_opaque(uint32_t v, __m128 src, float as)
+typedef __m128 fill_rgb;
+static inline fill_rgb fill_rgb_make(float r, float g, float b)
 {
-    cg_rgba8 px;
-    memcpy(&px, &v, sizeof px);
-    __m128 dk = _mm_setr_ps(cg_srgb_decode_table[px.r], cg_srgb_decode_table[px.g],
-                            cg_srgb_decode_table[px.b], 0.0f);
-    __m128 mix = _mm_add_ps(dk, _mm_mul_ps(_mm_sub_ps(src, dk), _mm_set1_ps(as)));
+    return _mm_setr_ps(r, g, b, 0.0f);
+}
+
+/* fill_encode_unit of lanes 0 to 2 of v into px's r, g and b. */
+static inline void fill_encode_rgb(cg_rgba8 *px, __m128 v)
+{
     /* fill_encode_unit's clamped index: clamping before the truncation
      * gives the same index (the truncation of -1 < x < 0 is 0 too) */
-    __m128 scaled = _mm_min_ps(_mm_max_ps(_mm_mul_ps(mix, _mm_set1_ps(4096.0f)), _mm_setzero_ps()),
+    __m128 scaled = _mm_min_ps(_mm_max_ps(_mm_mul_ps(v, _mm_set1_ps(4096.0f)), _mm_setzero_ps()),
                                _mm_set1_ps(4096.0f));
     __m128i i = _mm_cvttps_epi32(scaled);
     unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
@@ -291,17 +293,40 @@ static inline uint32_t fill_blend_opaque(uint32_t v, __m128 src, float as)
     unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
     __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1],
                               cg_srgb_threshold_table[c2], 0.0f);
-    int up = _mm_movemask_ps(_mm_cmpge_ps(mix, next));
-    px.r = (uint8_t)(c0 + (up & 1));
-    px.g = (uint8_t)(c1 + ((up >> 1) & 1));
-    px.b = (uint8_t)(c2 + ((up >> 2) & 1));
+    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
+    px->r = (uint8_t)(c0 + (up & 1));
+    px->g = (uint8_t)(c1 + ((up >> 1) & 1));
+    px->b = (uint8_t)(c2 + ((up >> 2) & 1));
+}
+
+static inline __m128 fill_decode_rgb(const cg_rgba8 *px)
+{
+    return _mm_setr_ps(cg_srgb_decode_table[px->r], cg_srgb_decode_table[px->g],
+                       cg_srgb_decode_table[px->b], 0.0f);
+}
+
+static inline uint32_t fill_blend_opaque(uint32_t v, fill_rgb src, float as)
+{
+    cg_rgba8 px;
+    memcpy(&px, &v, sizeof px);
+    __m128 dk = fill_decode_rgb(&px);
+    fill_encode_rgb(&px, _mm_add_ps(dk, _mm_mul_ps(_mm_sub_ps(src, dk), _mm_set1_ps(as))));
     memcpy(&v, &px, sizeof v);
     return v;
 }
-typedef __m128 fill_rgb;
-static inline fill_rgb fill_rgb_make(float r, float g, float b)
+
+/* The same over a translucent pixel (0 < alpha < 255, as > 0). */
+static inline uint32_t fill_blend_translucent(uint32_t v, fill_rgb src, float as)
 {
-    return _mm_setr_ps(r, g, b, 0.0f);
+    cg_rgba8 px;
+    memcpy(&px, &v, sizeof px);
+    float ad = px.a * (1.0f / 255.0f) * (1 - as), a = as + ad;
+    __m128 mix = _mm_add_ps(_mm_mul_ps(src, _mm_set1_ps(as)),
+                            _mm_mul_ps(fill_decode_rgb(&px), _mm_set1_ps(ad)));
+    fill_encode_rgb(&px, _mm_mul_ps(mix, _mm_set1_ps(1 / a)));
+    px.a = (uint8_t)(a * 255.0f + 0.5f);
+    memcpy(&v, &px, sizeof v);
+    return v;
 }
 #else
 typedef struct fill_rgb {
@@ -312,17 +337,19 @@ static inline fill_rgb fill_rgb_make(float r, float g, float b)
     fill_rgb c = {r, g, b};
     return c;
 }
+
 static inline uint32_t fill_blend_opaque(uint32_t v, fill_rgb src, float as)
 {
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);
-    float dr = cg_srgb_decode_table[px.r], dg = cg_srgb_decode_table[px.g],
-          db = cg_srgb_decode_table[px.b];
-    px.r = fill_encode_unit(dr + (src.r - dr) * as);
-    px.g = fill_encode_unit(dg + (src.g - dg) * as);
-    px.b = fill_encode_unit(db + (src.b - db) * as);
+    fill_blend8(&px, src.r, src.g, src.b, as);
     memcpy(&v, &px, sizeof v);
     return v;
+}
+
+static inline uint32_t fill_blend_translucent(uint32_t v, fill_rgb src, float as)
+{
+    return fill_blend_opaque(v, src, as);
 }
 #endif
 
@@ -378,33 +405,33 @@ uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t 
  * once). */
 static FILL_INLINE uint32_t fill_solid_value(const fill_blend_state *s, uint32_t v, int c)
 {
-    if (s->opaque) {
-        uint32_t a = v & s->alpha_mask;
-        if (a == s->alpha_mask) {
-            if (s->keep_same && v == s->full) /* over its own opaque colour: unchanged */
-                return v;
-            return fill_blend_opaque(v, s->src, s->alpha * (c * (1.0f / 255.0f)));
-        }
-        if (a == 0) { /* over nothing: the colour itself, with the coverage as alpha */
-            cg_rgba8 px;
-            memcpy(&px, &s->full, sizeof px);
-            px.a = (uint8_t)(s->alpha * (c * (1.0f / 255.0f)) * 255.0f + 0.5f);
-            memcpy(&v, &px, sizeof v);
+    uint32_t a = v & s->alpha_mask;
+    if (a == 0) { /* over nothing: the colour itself, with the coverage as alpha */
+        float as = s->alpha * (c * (1.0f / 255.0f));
+        if (!(as > 0)) /* a paint of alpha 0 */
             return v;
-        }
+        cg_rgba8 px;
+        memcpy(&px, &s->full, sizeof px);
+        px.a = (uint8_t)(as * 255.0f + 0.5f);
+        memcpy(&v, &px, sizeof v);
+        return v;
     }
     if (s->keep_same && ((v ^ s->full) & s->rgb_mask) == 0) {
         if (v == s->full) /* over its own opaque colour: unchanged */
             return v;
         /* a pixel of the paint's own colour: only its alpha changes (see
-         * fill_solid_pixel; over alpha 0 and 255 the formula gives the
-         * same as the cases there) */
+         * fill_solid_pixel) */
         cg_rgba8 px;
         memcpy(&px, &v, sizeof px);
         float as = c * (1.0f / 255.0f);
         px.a = (uint8_t)((as + px.a * (1.0f / 255.0f) * (1 - as)) * 255.0f + 0.5f);
         memcpy(&v, &px, sizeof v);
         return v;
+    }
+    if (s->opaque) {
+        float as = s->alpha * (c * (1.0f / 255.0f));
+        return a == s->alpha_mask ? fill_blend_opaque(v, s->src, as)
+                                  : fill_blend_translucent(v, s->src, as);
     }
     uint64_t key = v | (uint64_t)c << 32 | s->generation;
     uint32_t slot = ((v ^ (uint32_t)c * 0x01000193u) * 2654435769u) >> (32 - FILL_BLEND_BITS);

@@ -307,15 +307,20 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
  * spans of the coverage left by the run before.  Solid paint on RGBA8 is
  * painted pixel by pixel as the cells are summed (through the blend cache);
  * other paints get each run's coverage in cover[]. */
-static inline void render_row_rule(const fill_painter *painter, float *row, uint64_t *touched,
-                                   int width, size_t words, int y, int origin_x, cg_fill_rule rule,
-                                   uint8_t *cover)
+static inline void render_row_rule(const fill_painter *painter, const fill_blend_state *state,
+                                   float *row, uint64_t *touched, int width, size_t words, int y,
+                                   int origin_x, cg_fill_rule rule, uint8_t *cover)
 {
     float acc = 0;
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
-    int solid = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8;
+    int solid = state != NULL;
     uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
-    fill_blend_state blend = fill_blend_begin(painter);
+    /* a local copy, which the pixel stores cannot alias */
+    fill_blend_state blend;
+    if (solid)
+        blend = *state;
+    else
+        memset(&blend, 0, sizeof blend);
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
@@ -357,13 +362,17 @@ static inline void render_row_rule(const fill_painter *painter, float *row, uint
     constant_span(painter, y, origin_x + done, origin_x + width, c, cover);
 }
 
-static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
-                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+/* state: the blend state of solid paint over RGBA8, NULL for other paints. */
+static void render_row(const fill_painter *painter, const fill_blend_state *state, float *row,
+                       uint64_t *touched, int width, size_t words, int y, int origin_x,
+                       cg_fill_rule rule, uint8_t *cover)
 {
     if (rule == CG_FILL_NONZERO)
-        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_NONZERO, cover);
+        render_row_rule(painter, state, row, touched, width, words, y, origin_x, CG_FILL_NONZERO,
+                        cover);
     else
-        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD, cover);
+        render_row_rule(painter, state, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD,
+                        cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
@@ -439,6 +448,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         int b = (floor_clipped(ymin) - top) / band;
         r->order[first[b < 0 ? 0 : b]++] = i;
     }
+    int solid = painter.type == CG_PAINT_SOLID && image->format == CG_PIXEL_RGBA8;
+    fill_blend_state blend = fill_blend_begin(&painter);
     size_t next = 0, active_count = 0;
     for (int b = 0; b < band_count; b++) {
         int band_top = top + b * band, band_bottom = band_top + band;
@@ -458,8 +469,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         active_count = kept;
         for (int y = band_top; y < band_bottom; y++) {
             size_t k = (size_t)(y - band_top);
-            render_row(&painter, r->accumulation + k * stride, r->touched + k * blocks, draw_width,
-                       blocks, y, origin_x, rule, r->cover);
+            render_row(&painter, solid ? &blend : NULL, r->accumulation + k * stride,
+                       r->touched + k * blocks, draw_width, blocks, y, origin_x, rule, r->cover);
         }
     }
     return CG_OK;

@@ -259,9 +259,13 @@ static inline int coverage_of(float acc, cg_fill_rule rule)
 {
     float a = fabsf(acc);
     if (rule == CG_FILL_EVEN_ODD && a > 1) {
-        a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
-        if (a > 1)
+        if (a < 2) { /* the usual case (overlaps of two): what the lines below give */
             a = 2 - a;
+        } else {
+            a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
+            if (a > 1)
+                a = 2 - a;
+        }
     }
     a = a < 1 ? a : 1;
     return (int)(a * 255.0f + 0.5f);

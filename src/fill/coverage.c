@@ -329,6 +329,40 @@ static inline void render_row_rule(const fill_painter *painter, const fill_blend
         blend = *state;
     else
         memset(&blend, 0, sizeof blend);
+    if (solid) {
+        /* Cell by cell through the set bits; the pixels between touched
+         * cells (a gap) have the coverage of the sum after the cell before. */
+        for (size_t w = 0; w < words; w++) {
+            uint64_t m = touched[w];
+            if (!m)
+                continue;
+            touched[w] = 0;
+            do {
+                int x = (int)(w << 6) + lowest_bit(m);
+                m &= m - 1;
+                if (x >= width) { /* deposits right of the last pixel: cleared, unused */
+                    row[2 * x] = row[2 * x + 1] = 0;
+                    continue;
+                }
+                if (x != done) {
+                    c = coverage_of(acc, rule);
+                    if (c == 255 && blend.opaque)
+                        fill_store32(pixels + done, x - done, blend.full);
+                    else if (c != 0)
+                        for (int g = done; g < x; g++)
+                            fill_solid_cached(&blend, pixels + g, c);
+                }
+                acc += row[2 * x];
+                fill_solid_cached(&blend, pixels + x, coverage_of(acc, rule));
+                acc += row[2 * x + 1];
+                row[2 * x] = row[2 * x + 1] = 0;
+                done = x + 1;
+            } while (m);
+        }
+        constant_span(painter, y, origin_x + done, origin_x + width, coverage_of(acc, rule),
+                      cover);
+        return;
+    }
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)

@@ -405,6 +405,8 @@ uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t 
  * once). */
 static FILL_INLINE uint32_t fill_solid_value(const fill_blend_state *s, uint32_t v, int c)
 {
+    if (v == s->full && s->keep_same) /* over its own opaque colour: unchanged */
+        return v;
     uint32_t a = v & s->alpha_mask;
     if (a == 0) { /* over nothing: the colour itself, with the coverage as alpha */
         float as = s->alpha * (c * (1.0f / 255.0f));

@@ -323,12 +323,7 @@ static inline void render_row_rule(const fill_painter *painter, const fill_blend
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
     int solid = state != NULL;
     uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
-    /* a local copy, which the pixel stores cannot alias */
-    fill_blend_state blend;
-    if (solid)
-        blend = *state;
-    else
-        memset(&blend, 0, sizeof blend);
+    const fill_blend_state blend = solid ? *state : (fill_blend_state){0};
     if (solid) {
         /* Cell by cell through the set bits; the pixels between touched
          * cells (a gap) have the coverage of the sum after the cell before. */
@@ -405,16 +400,24 @@ static inline void render_row_rule(const fill_painter *painter, const fill_blend
 }
 
 /* state: the blend state of solid paint over RGBA8, NULL for other paints. */
-static void render_row(const fill_painter *painter, const fill_blend_state *state, float *row,
-                       uint64_t *touched, int width, size_t words, int y, int origin_x,
-                       cg_fill_rule rule, uint8_t *cover)
+/* Rows y0 .. y1 - 1 of a band: row k's cells at cells + k * row_floats, its
+ * bits at touched + k * words. */
+static void render_rows(const fill_painter *painter, const fill_blend_state *state, float *cells,
+                        size_t row_floats, uint64_t *touched, size_t words, int width, int y0,
+                        int y1, int origin_x, cg_fill_rule rule, uint8_t *cover)
 {
-    if (rule == CG_FILL_NONZERO)
-        render_row_rule(painter, state, row, touched, width, words, y, origin_x, CG_FILL_NONZERO,
-                        cover);
-    else
-        render_row_rule(painter, state, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD,
-                        cover);
+    /* a local copy, which the pixel stores cannot alias */
+    fill_blend_state blend;
+    if (state)
+        blend = *state;
+    for (int y = y0; y < y1; y++, cells += row_floats, touched += words) {
+        if (rule == CG_FILL_NONZERO)
+            render_row_rule(painter, state ? &blend : NULL, cells, touched, width, words, y,
+                            origin_x, CG_FILL_NONZERO, cover);
+        else
+            render_row_rule(painter, state ? &blend : NULL, cells, touched, width, words, y,
+                            origin_x, CG_FILL_EVEN_ODD, cover);
+    }
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
@@ -509,11 +512,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
                 r->active[kept++] = r->active[i];
         }
         active_count = kept;
-        for (int y = band_top; y < band_bottom; y++) {
-            size_t k = (size_t)(y - band_top);
-            render_row(&painter, solid ? &blend : NULL, r->accumulation + k * 2 * stride,
-                       r->touched + k * blocks, draw_width, blocks, y, origin_x, rule, r->cover);
-        }
+        render_rows(&painter, solid ? &blend : NULL, r->accumulation, 2 * stride, r->touched,
+                    blocks, draw_width, band_top, band_bottom, origin_x, rule, r->cover);
     }
     return CG_OK;
 }

@@ -165,8 +165,8 @@ static inline void mark_cell(uint64_t *bits, int c)
  * area per unit of x, is the line's (given, as it is the same on every row).
  * Cell c's differences are row[2c] (added before pixel c's coverage is
  * taken) and row[2c + 1] (after). */
-static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
-                               double s)
+static inline int deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
+                              double s)
 {
     if (xa < 0)
         xa = 0;
@@ -176,7 +176,7 @@ static inline void deposit_row(float *row, uint64_t *touched, double xa, double 
         double fx = 0.5 * (xa + xb) - c0;
         row[2 * c0] += (float)(d * (1 - fx));
         row[2 * c0 + 1] += (float)(d * fx);
-        return;
+        return c0;
     }
     mark_cells(touched, c0, c1);
     double len0 = c0 + 1 - xa, d0 = s * len0;
@@ -191,6 +191,7 @@ static inline void deposit_row(float *row, uint64_t *touched, double xa, double 
     double len1 = xb - c1, d1 = s * len1;
     row[2 * c1] += (float)((c0 + 1 < c1 ? half : 0) + d1 * (1 - len1 * 0.5));
     row[2 * c1 + 1] += (float)(d1 * len1 * 0.5);
+    return c0;
 }
 
 /* floor and ceil of a clipped coordinate (0 <= v <= 2^24): inline, where
@@ -238,19 +239,21 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
 #else
     (void)image;
 #endif
-    for (; row < row_end; row++, cells += 2 * stride, bits += blocks) {
-        double yb = row + 1 < ye ? row + 1 : ye;
+    double next = row + 1; /* the next row's top */
+    for (; row < row_end; row++, next += 1, cells += 2 * stride, bits += blocks) {
+        double yb = next < ye ? next : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
+        /* the first cell the line touches in the row */
+        int first = xa <= xb ? deposit_row(cells, bits, xa, xb, sign * (yb - ya), s)
+                             : deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
 #if defined(__GNUC__)
         if (pixel_row) {
-            __builtin_prefetch(pixel_row + 4 * (size_t)(xa > 0 ? (int)xa : 0), 1, 3);
+            __builtin_prefetch(pixel_row + 4 * (size_t)first, 1, 3);
             pixel_row += image->stride;
         }
+#else
+        (void)first;
 #endif
-        if (xa <= xb)
-            deposit_row(cells, bits, xa, xb, sign * (yb - ya), s);
-        else
-            deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
         xa = xb;
         ya = yb;
     }

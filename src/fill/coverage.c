@@ -312,55 +312,64 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
     fill_painter_span(painter, y, x0, x1 - x0, cover);
 }
 
-/* Sums one row of the accumulation buffer into coverage and paints it,
- * clearing the cells and bits behind it.  Each run of touched cells (within
- * one 64-bit word of bits) is summed and painted; the gaps between runs are
- * spans of the coverage left by the run before.  Solid paint on RGBA8 is
- * painted pixel by pixel as the cells are summed;
- * other paints get each run's coverage in cover[]. */
-static inline void render_row_rule(const fill_painter *painter, const fill_blend_state *state,
-                                   float *row, uint64_t *touched, int width, size_t words, int y,
-                                   int origin_x, cg_fill_rule rule, uint8_t *cover)
+/* Sums one row of the accumulation buffer into coverage and paints it with
+ * a solid paint on RGBA8 (blend: its state), clearing the cells and bits
+ * behind it.  The touched cells are visited one by one through the set bits,
+ * each pixel blended as its cell is summed; the pixels between touched
+ * cells (a gap) have the coverage of the sum after the cell before. */
+static inline void render_row_solid(cg_image *image, const fill_blend_state *blend, float *row,
+                                    uint64_t *touched, int width, size_t words, int y,
+                                    int origin_x, cg_fill_rule rule)
+{
+    float acc = 0;
+    int done = 0; /* pixels before done are painted */
+    uint32_t *pixels = (uint32_t *)cg_image_row_rgba8(image, y) + origin_x;
+    for (size_t w = 0; w < words; w++) {
+        uint64_t m = touched[w];
+        if (!m)
+            continue;
+        touched[w] = 0;
+        do {
+            int x = (int)(w << 6) + lowest_bit(m);
+            m &= m - 1;
+            if (x >= width) { /* deposits right of the last pixel: cleared, unused */
+                row[2 * x] = row[2 * x + 1] = 0;
+                continue;
+            }
+            if (x != done) {
+                int c = coverage_of(acc, rule);
+                if (c == 255 && blend->opaque)
+                    fill_store32(pixels + done, x - done, blend->full);
+                else if (c != 0)
+                    for (int g = done; g < x; g++)
+                        fill_solid_cached(blend, pixels + g, c);
+            }
+            acc += row[2 * x];
+            fill_solid_cached(blend, pixels + x, coverage_of(acc, rule));
+            acc += row[2 * x + 1];
+            row[2 * x] = row[2 * x + 1] = 0;
+            done = x + 1;
+        } while (m);
+    }
+    int c = coverage_of(acc, rule);
+    if (done < width && c != 0) {
+        if (c == 255 && blend->opaque)
+            fill_store32(pixels + done, width - done, blend->full);
+        else
+            for (int g = done; g < width; g++)
+                fill_solid_cached(blend, pixels + g, c);
+    }
+}
+
+/* The same for other paints: each run of touched cells (within one 64-bit
+ * word of bits) is summed into cover[] and painted; the gaps between runs
+ * are spans of the coverage left by the run before. */
+static inline void render_row_paint(const fill_painter *painter, float *row, uint64_t *touched,
+                                    int width, size_t words, int y, int origin_x,
+                                    cg_fill_rule rule, uint8_t *cover)
 {
     float acc = 0;
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
-    int solid = state != NULL;
-    uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
-    const fill_blend_state blend = solid ? *state : (fill_blend_state){0};
-    if (solid) {
-        /* Cell by cell through the set bits; the pixels between touched
-         * cells (a gap) have the coverage of the sum after the cell before. */
-        for (size_t w = 0; w < words; w++) {
-            uint64_t m = touched[w];
-            if (!m)
-                continue;
-            touched[w] = 0;
-            do {
-                int x = (int)(w << 6) + lowest_bit(m);
-                m &= m - 1;
-                if (x >= width) { /* deposits right of the last pixel: cleared, unused */
-                    row[2 * x] = row[2 * x + 1] = 0;
-                    continue;
-                }
-                if (x != done) {
-                    c = coverage_of(acc, rule);
-                    if (c == 255 && blend.opaque)
-                        fill_store32(pixels + done, x - done, blend.full);
-                    else if (c != 0)
-                        for (int g = done; g < x; g++)
-                            fill_solid_cached(&blend, pixels + g, c);
-                }
-                acc += row[2 * x];
-                fill_solid_cached(&blend, pixels + x, coverage_of(acc, rule));
-                acc += row[2 * x + 1];
-                row[2 * x] = row[2 * x + 1] = 0;
-                done = x + 1;
-            } while (m);
-        }
-        constant_span(painter, y, origin_x + done, origin_x + width, coverage_of(acc, rule),
-                      cover);
-        return;
-    }
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
@@ -374,23 +383,9 @@ static inline void render_row_rule(const fill_painter *painter, const fill_blend
             int start = (int)(w << 6) + b, end = start + len;
             int paint_end = end < width ? end : width;
             if (start < paint_end) {
-                if (solid) {
-                    if (c == 255 && blend.opaque)
-                        fill_store32(pixels + done, start - done, blend.full);
-                    else if (c != 0)
-                        for (int x = done; x < start; x++)
-                            fill_solid_cached(&blend, pixels + x, c);
-                    for (int x = start; x < paint_end; x++) {
-                        acc += row[2 * x];
-                        fill_solid_cached(&blend, pixels + x, coverage_of(acc, rule));
-                        acc += row[2 * x + 1];
-                        row[2 * x] = row[2 * x + 1] = 0;
-                    }
-                } else {
-                    constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
-                    acc = sum_cells(row + 2 * start, paint_end - start, acc, rule, cover);
-                    fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
-                }
+                constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
+                acc = sum_cells(row + 2 * start, paint_end - start, acc, rule, cover);
+                fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
                 c = coverage_of(acc, rule); /* of the pixels after the run */
                 done = paint_end;
             }
@@ -402,25 +397,28 @@ static inline void render_row_rule(const fill_painter *painter, const fill_blend
     constant_span(painter, y, origin_x + done, origin_x + width, c, cover);
 }
 
-/* state: the blend state of solid paint over RGBA8, NULL for other paints. */
 /* Rows y0 .. y1 - 1 of a band: row k's cells at cells + k * row_floats, its
- * bits at touched + k * words. */
+ * bits at touched + k * words.  state: the blend state of a solid paint on
+ * RGBA8, NULL for other paints. */
 static void render_rows(const fill_painter *painter, const fill_blend_state *state, float *cells,
                         size_t row_floats, uint64_t *touched, size_t words, int width, int y0,
                         int y1, int origin_x, cg_fill_rule rule, uint8_t *cover)
 {
-    /* a local copy, which the pixel stores cannot alias */
-    fill_blend_state blend;
-    if (state)
-        blend = *state;
-    for (int y = y0; y < y1; y++, cells += row_floats, touched += words) {
-        if (rule == CG_FILL_NONZERO)
-            render_row_rule(painter, state ? &blend : NULL, cells, touched, width, words, y,
-                            origin_x, CG_FILL_NONZERO, cover);
-        else
-            render_row_rule(painter, state ? &blend : NULL, cells, touched, width, words, y,
-                            origin_x, CG_FILL_EVEN_ODD, cover);
+    if (state) {
+        /* a local copy, which the pixel stores cannot alias */
+        fill_blend_state blend = *state;
+        for (int y = y0; y < y1; y++, cells += row_floats, touched += words) {
+            if (rule == CG_FILL_NONZERO)
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
+                                 origin_x, CG_FILL_NONZERO);
+            else
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
+                                 origin_x, CG_FILL_EVEN_ODD);
+        }
+        return;
     }
+    for (int y = y0; y < y1; y++, cells += row_floats, touched += words)
+        render_row_paint(painter, cells, touched, width, words, y, origin_x, rule, cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,

@@ -353,8 +353,9 @@ static inline uint32_t fill_blend_translucent(uint32_t v, fill_rgb src, float as
 }
 #endif
 
-/* The blend cache's fields copied into local variables for a row (the
- * pixel stores could otherwise alias them and force reloads). */
+/* A solid paint's blend state (its colour, the blend cache's fields),
+ * copied into a local variable for a band of rows (the pixel stores could
+ * otherwise alias it and force reloads). */
 typedef struct fill_blend_state {
     const fill_painter *p;
     uint64_t *keys;
@@ -399,9 +400,10 @@ uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t 
 #endif
 
 /* fill_solid_pixel's result for pixel value v at coverage c (0 < c, and c
- * < 255 or a translucent paint), without storing it: opaque paint over
- * opaque and transparent pixels directly, other blends through the cache
- * (over destinations of a few colours each coverage level is blended
+ * < 255 or a translucent paint), without storing it: over transparent
+ * pixels and pixels of the paint's own colour directly, opaque paint over
+ * any other pixel by the direct blends above, translucent paint through the
+ * cache (over destinations of a few colours each coverage level is blended
  * once). */
 static FILL_INLINE uint32_t fill_solid_value(const fill_blend_state *s, uint32_t v, int c)
 {
@@ -455,9 +457,7 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
 }
 
 /* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /
- * 255 (cover NULL: constant / 255), through the blend cache: over a
- * destination of one colour (the usual background) each coverage level is
- * blended once. */
+ * 255 (cover NULL: constant / 255), as fill_solid_cached does. */
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant);
 
 /* Grows *array (of element size) to hold at least need elements; 0 when

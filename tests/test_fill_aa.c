@@ -4,6 +4,7 @@
 #include "check.h"
 #include "cg/fill.h"
 #include "cg/color.h"
+#include "../src/fill/internal.h" /* to compare the blend shortcuts with fill_solid_pixel */
 
 #include <stdlib.h>
 #include <string.h>
@@ -652,6 +653,67 @@ static void aa_blending_reused(void)
     cg_rasterizer_free(r);
 }
 
+/* The rasterizer's blend of a solid paint (fill_solid_cached: its direct
+ * blend of opaque paint over opaque and transparent pixels, its cache, its
+ * own-colour shortcut) against fill_solid_pixel, bit for bit: every
+ * coverage over every code of each channel, for opaque and translucent
+ * paints over opaque, transparent and translucent pixels. */
+static void aa_blend_exact(void)
+{
+    check_rng rng = {24};
+    cg_rasterizer *r;
+    CHECK(cg_rasterizer_create(&r) == CG_OK);
+    cg_image *im;
+    CHECK(cg_image_create(&im, 1, 1, CG_PIXEL_RGBA8) == CG_OK);
+    cg_rgba8 paints[10] = {{30, 60, 200, 255}, {200, 90, 40, 255}, {255, 255, 255, 255},
+                           {0, 0, 0, 255}, {1, 254, 128, 255}, {200, 30, 90, 160},
+                           {90, 10, 30, 0}};
+    for (int i = 7; i < 10; i++)
+        paints[i] = (cg_rgba8){(uint8_t)check_rng_int(&rng, 0, 255),
+                               (uint8_t)check_rng_int(&rng, 0, 255),
+                               (uint8_t)check_rng_int(&rng, 0, 255),
+                               (uint8_t)(i % 2 ? 255 : check_rng_int(&rng, 1, 254))};
+    long bad = 0, tried = 0;
+    for (int i = 0; i < 10; i++) {
+        cg_paint paint = cg_paint_solid(paints[i]);
+        fill_painter p;
+        CHECK(fill_painter_init(&p, r, im, &paint) == CG_OK);
+        fill_blend_state s = fill_blend_begin(&p);
+        for (int k = 0; k < 256; k++)
+            for (int alpha = 0; alpha < 4; alpha++) {
+                /* every code in each channel, in three arrangements; the
+                 * paint's own colour too */
+                cg_rgba8 d = {(uint8_t)k, (uint8_t)(255 - k), (uint8_t)(k * 7), 255};
+                if (k == 3)
+                    d = paints[i];
+                d.a = (uint8_t)(alpha == 0 ? 255 : alpha == 1 ? 0 : alpha == 2 ? 1 + k % 254 : 255);
+                if (alpha == 3)
+                    d.g = d.b = (uint8_t)k;
+                for (int c = 0; c < 256; c++) {
+                    cg_rgba8 want = d, got = d;
+                    fill_solid_pixel(&p, &want, c);
+                    uint32_t v;
+                    memcpy(&v, &got, sizeof v);
+                    fill_solid_cached(&s, &v, c);
+                    fill_solid_cached(&s, &v, 0); /* nothing */
+                    memcpy(&got, &v, sizeof got);
+                    tried++;
+                    if (memcmp(&got, &want, sizeof got) != 0 && ++bad <= 5)
+                        fprintf(stderr,
+                                "blend of %d,%d,%d,%d over %d,%d,%d,%d at %d: %d,%d,%d,%d vs "
+                                "%d,%d,%d,%d\n",
+                                paints[i].r, paints[i].g, paints[i].b, paints[i].a, d.r, d.g,
+                                d.b, d.a, c, got.r, got.g, got.b, got.a, want.r, want.g, want.b,
+                                want.a);
+                }
+            }
+    }
+    CHECK_MSG(tried == 10L * 256 * 4 * 256, "tried %ld blends", tried);
+    CHECK_MSG(bad == 0, "%ld of %ld blends differ from fill_solid_pixel", bad, tried);
+    cg_image_free(im);
+    cg_rasterizer_free(r);
+}
+
 /* Opaque paints over opaque images of many colours through one reused
  * rasterizer, paints alternating between colours (so blends are looked up
  * in tables built per colour and coverage): every pixel equals
@@ -837,6 +899,7 @@ int main(void)
     curves();
     aa_blending();
     aa_blending_reused();
+    aa_blend_exact();
     aa_opaque_over_opaque();
     aa_wide_interiors();
     huge_curves();

@@ -3,10 +3,12 @@
  * Every line segment of the outline adds, to each pixel of each row it
  * crosses, the signed area of that pixel lying to the right of it within
  * the row, times the segment's direction.  Deposited as differences along
- * the row (a cell gets the part of the area in its own column, the next
- * cell the rest, which every pixel further right inherits), a running sum
- * over the row gives every pixel the integral of the winding number over its
- * square.  The non-zero rule takes min(1, |sum|), even-odd folds the sum into
+ * the row, a running sum over the row gives every pixel the integral of the
+ * winding number over its square.  A cell holds two differences: one added
+ * before its pixel's coverage is taken (the part of the area in its own
+ * column) and one after (the rest, which every pixel further right
+ * inherits), so that a line crossing a row within one column touches one
+ * cell, not two.  The non-zero rule takes min(1, |sum|), even-odd folds the sum into
  * [0, 1].  Rows are processed in bands so memory stays bounded.
  *
  * Lines are clipped to the image first: parts above or below are dropped,
@@ -151,45 +153,45 @@ static inline int lowest_bit(uint64_t m)
 #endif
 }
 
-/* Marks cells c and c + 1 touched (the common case of a line crossing a
- * row within one column). */
-static inline void mark_pair(uint64_t *bits, int c)
+/* Marks cell c touched (the common case of a line crossing a row within
+ * one column). */
+static inline void mark_cell(uint64_t *bits, int c)
 {
-    int b = c & 63;
-    bits[c >> 6] |= 3ULL << b;
-    if (b == 63)
-        bits[(c >> 6) + 1] |= 1;
+    bits[c >> 6] |= 1ULL << (c & 63);
 }
 
 /* Adds the part of a line within one row: x from xa to xb (relative to the
  * row's first cell, xa <= xb), signed height d; s = d / (xb - xa), the
- * area per unit of x, is the line's (given, as it is the same on every row). */
-static inline void deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
-                               double s)
+ * area per unit of x, is the line's (given, as it is the same on every row).
+ * Cell c's differences are row[2c] (added before pixel c's coverage is
+ * taken) and row[2c + 1] (after). */
+static inline int deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
+                              double s)
 {
     if (xa < 0)
         xa = 0;
     int c0 = (int)xa, c1 = (int)xb;
     if (c0 == c1) {
-        mark_pair(touched, c0);
+        mark_cell(touched, c0);
         double fx = 0.5 * (xa + xb) - c0;
-        row[c0] += (float)(d * (1 - fx));
-        row[c0 + 1] += (float)(d * fx);
-        return;
+        row[2 * c0] += (float)(d * (1 - fx));
+        row[2 * c0 + 1] += (float)(d * fx);
+        return c0;
     }
-    mark_cells(touched, c0, c1 + 1);
+    mark_cells(touched, c0, c1);
     double len0 = c0 + 1 - xa, d0 = s * len0;
-    row[c0] += (float)(d0 * len0 * 0.5);
+    row[2 * c0] += (float)(d0 * len0 * 0.5);
     /* the first whole cell gets the rest of c0's area and half its own;
      * the next ones s each, and c1 the last whole cell's other half */
     double half = s * 0.5;
-    row[c0 + 1] += (float)(d0 * (1 - len0 * 0.5) + (c0 + 1 < c1 ? half : 0));
+    row[2 * c0 + 2] += (float)(d0 * (1 - len0 * 0.5) + (c0 + 1 < c1 ? half : 0));
     float whole = (float)s;
     for (int c = c0 + 2; c < c1; c++)
-        row[c] += whole;
+        row[2 * c] += whole;
     double len1 = xb - c1, d1 = s * len1;
-    row[c1] += (float)((c0 + 1 < c1 ? half : 0) + d1 * (1 - len1 * 0.5));
-    row[c1 + 1] += (float)(d1 * len1 * 0.5);
+    row[2 * c1] += (float)((c0 + 1 < c1 ? half : 0) + d1 * (1 - len1 * 0.5));
+    row[2 * c1 + 1] += (float)(d1 * len1 * 0.5);
+    return c0;
 }
 
 /* floor and ceil of a clipped coordinate (0 <= v <= 2^24): inline, where
@@ -225,7 +227,7 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     double s = dxdy != 0 ? sign / fabs(dxdy) : 0;
     int row = floor_clipped(ys), row_end = ceil_clipped(ye);
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
-    float *cells = accumulation + (size_t)(row - band_top) * stride;
+    float *cells = accumulation + (size_t)(row - band_top) * 2 * stride;
     uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
 #if defined(__GNUC__)
     /* The pixels under the line are read (to blend onto them) when the band
@@ -237,19 +239,21 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
 #else
     (void)image;
 #endif
-    for (; row < row_end; row++, cells += stride, bits += blocks) {
-        double yb = row + 1 < ye ? row + 1 : ye;
+    double next = row + 1; /* the next row's top */
+    for (; row < row_end; row++, next += 1, cells += 2 * stride, bits += blocks) {
+        double yb = next < ye ? next : ye;
         double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
+        /* the first cell the line touches in the row */
+        int first = xa <= xb ? deposit_row(cells, bits, xa, xb, sign * (yb - ya), s)
+                             : deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
 #if defined(__GNUC__)
         if (pixel_row) {
-            __builtin_prefetch(pixel_row + 4 * (size_t)(xa > 0 ? (int)xa : 0), 1, 3);
+            __builtin_prefetch(pixel_row + 4 * (size_t)first, 1, 3);
             pixel_row += image->stride;
         }
+#else
+        (void)first;
 #endif
-        if (xa <= xb)
-            deposit_row(cells, bits, xa, xb, sign * (yb - ya), s);
-        else
-            deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
         xa = xb;
         ya = yb;
     }
@@ -259,29 +263,36 @@ static inline int coverage_of(float acc, cg_fill_rule rule)
 {
     float a = fabsf(acc);
     if (rule == CG_FILL_EVEN_ODD && a > 1) {
-        a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
-        if (a > 1)
+        if (a < 2) { /* the usual case (overlaps of two): what the lines below give */
             a = 2 - a;
+        } else {
+            a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
+            if (a > 1)
+                a = 2 - a;
+        }
     }
     a = a < 1 ? a : 1;
     return (int)(a * 255.0f + 0.5f);
 }
 
-/* Sums cells row[0..n-1] onto acc, clearing them, and writes each pixel's
- * coverage; returns the sum.  One loop per rule, so neither tests it. */
+/* Sums cells 0..n-1 of row (two differences each) onto acc, clearing them,
+ * and writes each pixel's coverage; returns the sum.  One loop per rule,
+ * so neither tests it. */
 static inline float sum_cells(float *row, int n, float acc, cg_fill_rule rule, uint8_t *cover)
 {
     if (rule == CG_FILL_NONZERO) {
         for (int i = 0; i < n; i++) {
-            acc += row[i];
-            row[i] = 0;
+            acc += row[2 * i];
             cover[i] = (uint8_t)coverage_of(acc, CG_FILL_NONZERO);
+            acc += row[2 * i + 1];
+            row[2 * i] = row[2 * i + 1] = 0;
         }
     } else {
         for (int i = 0; i < n; i++) {
-            acc += row[i];
-            row[i] = 0;
+            acc += row[2 * i];
             cover[i] = (uint8_t)coverage_of(acc, CG_FILL_EVEN_ODD);
+            acc += row[2 * i + 1];
+            row[2 * i] = row[2 * i + 1] = 0;
         }
     }
     return acc;
@@ -301,21 +312,64 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
     fill_painter_span(painter, y, x0, x1 - x0, cover);
 }
 
-/* Sums one row of the accumulation buffer into coverage and paints it,
- * clearing the cells and bits behind it.  Each run of touched cells (within
- * one 64-bit word of bits) is summed and painted; the gaps between runs are
- * spans of the coverage left by the run before.  Solid paint on RGBA8 is
- * painted pixel by pixel as the cells are summed (through the blend cache);
- * other paints get each run's coverage in cover[]. */
-static inline void render_row_rule(const fill_painter *painter, float *row, uint64_t *touched,
-                                   int width, size_t words, int y, int origin_x, cg_fill_rule rule,
-                                   uint8_t *cover)
+/* Sums one row of the accumulation buffer into coverage and paints it with
+ * a solid paint on RGBA8 (blend: its state), clearing the cells and bits
+ * behind it.  The touched cells are visited one by one through the set bits,
+ * each pixel blended as its cell is summed; the pixels between touched
+ * cells (a gap) have the coverage of the sum after the cell before. */
+static inline void render_row_solid(cg_image *image, const fill_blend_state *blend, float *row,
+                                    uint64_t *touched, int width, size_t words, int y,
+                                    int origin_x, cg_fill_rule rule)
+{
+    float acc = 0;
+    int done = 0; /* pixels before done are painted */
+    uint32_t *pixels = (uint32_t *)cg_image_row_rgba8(image, y) + origin_x;
+    for (size_t w = 0; w < words; w++) {
+        uint64_t m = touched[w];
+        if (!m)
+            continue;
+        touched[w] = 0;
+        do {
+            int x = (int)(w << 6) + lowest_bit(m);
+            m &= m - 1;
+            if (x >= width) { /* deposits right of the last pixel: cleared, unused */
+                row[2 * x] = row[2 * x + 1] = 0;
+                continue;
+            }
+            if (x != done) {
+                int c = coverage_of(acc, rule);
+                if (c == 255 && blend->opaque)
+                    fill_store32(pixels + done, x - done, blend->full);
+                else if (c != 0)
+                    for (int g = done; g < x; g++)
+                        fill_solid_cached(blend, pixels + g, c);
+            }
+            acc += row[2 * x];
+            fill_solid_cached(blend, pixels + x, coverage_of(acc, rule));
+            acc += row[2 * x + 1];
+            row[2 * x] = row[2 * x + 1] = 0;
+            done = x + 1;
+        } while (m);
+    }
+    int c = coverage_of(acc, rule);
+    if (done < width && c != 0) {
+        if (c == 255 && blend->opaque)
+            fill_store32(pixels + done, width - done, blend->full);
+        else
+            for (int g = done; g < width; g++)
+                fill_solid_cached(blend, pixels + g, c);
+    }
+}
+
+/* The same for other paints: each run of touched cells (within one 64-bit
+ * word of bits) is summed into cover[] and painted; the gaps between runs
+ * are spans of the coverage left by the run before. */
+static inline void render_row_paint(const fill_painter *painter, float *row, uint64_t *touched,
+                                    int width, size_t words, int y, int origin_x,
+                                    cg_fill_rule rule, uint8_t *cover)
 {
     float acc = 0;
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
-    int solid = painter->type == CG_PAINT_SOLID && painter->image->format == CG_PIXEL_RGBA8;
-    uint32_t *pixels = solid ? (uint32_t *)cg_image_row_rgba8(painter->image, y) + origin_x : NULL;
-    fill_blend_state blend = fill_blend_begin(painter);
     for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
         if (!m)
@@ -329,41 +383,42 @@ static inline void render_row_rule(const fill_painter *painter, float *row, uint
             int start = (int)(w << 6) + b, end = start + len;
             int paint_end = end < width ? end : width;
             if (start < paint_end) {
-                if (solid) {
-                    if (c == 255 && blend.opaque)
-                        fill_store32(pixels + done, start - done, blend.full);
-                    else if (c != 0)
-                        for (int x = done; x < start; x++)
-                            fill_solid_cached(&blend, pixels + x, c);
-                    for (int x = start; x < paint_end; x++) {
-                        acc += row[x];
-                        row[x] = 0;
-                        c = coverage_of(acc, rule);
-                        fill_solid_cached(&blend, pixels + x, c);
-                    }
-                } else {
-                    constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
-                    acc = sum_cells(row + start, paint_end - start, acc, rule, cover);
-                    c = cover[paint_end - start - 1];
-                    fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
-                }
+                constant_span(painter, y, origin_x + done, origin_x + start, c, cover);
+                acc = sum_cells(row + 2 * start, paint_end - start, acc, rule, cover);
+                fill_painter_span(painter, y, origin_x + start, paint_end - start, cover);
+                c = coverage_of(acc, rule); /* of the pixels after the run */
                 done = paint_end;
             }
             /* deposits right of the last pixel: cleared, unused */
             for (int x = paint_end > start ? paint_end : start; x < end; x++)
-                row[x] = 0;
+                row[2 * x] = row[2 * x + 1] = 0;
         }
     }
     constant_span(painter, y, origin_x + done, origin_x + width, c, cover);
 }
 
-static void render_row(const fill_painter *painter, float *row, uint64_t *touched, int width,
-                       size_t words, int y, int origin_x, cg_fill_rule rule, uint8_t *cover)
+/* Rows y0 .. y1 - 1 of a band: row k's cells at cells + k * row_floats, its
+ * bits at touched + k * words.  state: the blend state of a solid paint on
+ * RGBA8, NULL for other paints. */
+static void render_rows(const fill_painter *painter, const fill_blend_state *state, float *cells,
+                        size_t row_floats, uint64_t *touched, size_t words, int width, int y0,
+                        int y1, int origin_x, cg_fill_rule rule, uint8_t *cover)
 {
-    if (rule == CG_FILL_NONZERO)
-        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_NONZERO, cover);
-    else
-        render_row_rule(painter, row, touched, width, words, y, origin_x, CG_FILL_EVEN_ODD, cover);
+    if (state) {
+        /* a local copy, which the pixel stores cannot alias */
+        fill_blend_state blend = *state;
+        for (int y = y0; y < y1; y++, cells += row_floats, touched += words) {
+            if (rule == CG_FILL_NONZERO)
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
+                                 origin_x, CG_FILL_NONZERO);
+            else
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
+                                 origin_x, CG_FILL_EVEN_ODD);
+        }
+        return;
+    }
+    for (int y = y0; y < y1; y++, cells += row_floats, touched += words)
+        render_row_paint(painter, cells, touched, width, words, y, origin_x, rule, cover);
 }
 
 cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule rule,
@@ -375,11 +430,6 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     cg_status status = fill_painter_init(&painter, r, image, paint);
     if (status != CG_OK)
         return status;
-    /* The opaque blend table (see internal.h), for anti-aliased edges only;
-     * until it exists, or without memory for it, the blend cache does the work. */
-    if (painter.type == CG_PAINT_SOLID && painter.opaque && !r->opaque_table
-        && ++r->opaque_fills >= 2)
-        r->opaque_table = malloc((size_t)256 * 768 * sizeof *r->opaque_table);
     if (r->line_count == 0)
         return CG_OK;
     int origin_x = floor_clipped(r->min_x), end_x = ceil_clipped(r->max_x);
@@ -394,7 +444,7 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         top = 0;
     int draw_width = end_x - origin_x;
     size_t stride = (size_t)(end_x - origin_x) + 3;
-    int band = (int)(65536 / stride);
+    int band = (int)(32768 / stride);
     if (band < 1)
         band = 1;
     if (band > 64)
@@ -408,8 +458,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
     /* The accumulation cells and block flags are all zero between calls:
      * rendering clears what it reads.  Only new memory needs clearing. */
     size_t cells_before = r->accumulation_capacity, flags_before = r->touched_capacity;
-    if (!fill_reserve((void **)&r->accumulation, &r->accumulation_capacity, stride * (size_t)band,
-                      sizeof *r->accumulation)
+    if (!fill_reserve((void **)&r->accumulation, &r->accumulation_capacity,
+                      2 * stride * (size_t)band, sizeof *r->accumulation)
         || !fill_reserve((void **)&r->touched, &r->touched_capacity, blocks * (size_t)band,
                          sizeof *r->touched)
         || !fill_reserve((void **)&r->cover, &r->cover_capacity, stride, 1)
@@ -444,6 +494,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         int b = (floor_clipped(ymin) - top) / band;
         r->order[first[b < 0 ? 0 : b]++] = i;
     }
+    int solid = painter.type == CG_PAINT_SOLID && image->format == CG_PIXEL_RGBA8;
+    fill_blend_state blend = fill_blend_begin(&painter);
     size_t next = 0, active_count = 0;
     for (int b = 0; b < band_count; b++) {
         int band_top = top + b * band, band_bottom = band_top + band;
@@ -461,11 +513,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
                 r->active[kept++] = r->active[i];
         }
         active_count = kept;
-        for (int y = band_top; y < band_bottom; y++) {
-            size_t k = (size_t)(y - band_top);
-            render_row(&painter, r->accumulation + k * stride, r->touched + k * blocks, draw_width,
-                       blocks, y, origin_x, rule, r->cover);
-        }
+        render_rows(&painter, solid ? &blend : NULL, r->accumulation, 2 * stride, r->touched,
+                    blocks, draw_width, band_top, band_bottom, origin_x, rule, r->cover);
     }
     return CG_OK;
 }

@@ -163,35 +163,16 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
-void fill_opaque_row(const fill_blend_state *s, int c)
-{
-    memset(s->table + (size_t)c * 768, 0, 768 * sizeof *s->table);
-    s->table_gen[c] = s->gen;
-}
-
-int fill_opaque_entry(const fill_blend_state *s, int c, int e)
-{
-    /* the blend of fill_blend8 over an opaque pixel: the same arithmetic,
-     * so the same result as blending the pixel itself */
-    const fill_painter *p = s->p;
-    float as = p->a * (c * (1.0f / 255.0f));
-    float src = e < 256 ? p->r : (e < 512 ? p->g : p->b);
-    float dk = cg_srgb_decode_table[e & 255];
-    int code = fill_encode_unit(dk + (src - dk) * as);
-    s->table[(size_t)c * 768 + (size_t)e] = (uint16_t)(256 + code);
-    return code;
-}
-
-void fill_solid_miss(const fill_blend_state *s, uint32_t *d, int c, uint64_t key, uint32_t slot)
+uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t key,
+                         uint32_t slot)
 {
     cg_rgba8 px;
-    memcpy(&px, d, sizeof px);
+    memcpy(&px, &v, sizeof px);
     fill_solid_pixel(s->p, &px, c);
-    uint32_t v;
     memcpy(&v, &px, sizeof v);
     s->keys[slot] = key;
     s->values[slot] = v;
-    *d = v;
+    return v;
 }
 
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant)

@@ -37,7 +37,6 @@ void cg_rasterizer_free(cg_rasterizer *r)
     free(r->active);
     free(r->edges);
     free(r->crossings);
-    free(r->opaque_table);
     fill_polylines_free(&r->flat);
     fill_polylines_free(&r->outline);
     free(r);

@@ -57,7 +57,7 @@ typedef struct piece { int64_t x0, y0, x1, y1; } piece;
 #define GROW(arr, n, cap, fail)                                                \
     do {                                                                       \
         if ((n) == (cap)) {                                                    \
-            size_t c_ = (cap) ? (cap) * 2 : 64;                                \
+            size_t c_ = (cap) ? (cap) * 2 : 32;                                \
             void *p_ = realloc((arr), c_ * sizeof *(arr));                     \
             if (!p_)                                                           \
                 fail;                                                          \

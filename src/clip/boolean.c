@@ -1635,6 +1635,25 @@ static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
 }
 
 typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
+/* qsort, by straight insertion when n is small (the assembly's few rings;
+ * cmp is a total order, so the result is qsort's) */
+static void sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
+{
+    unsigned char v[64], *a = base;
+    if (n > 16 || size > sizeof v) {
+        qsort(base, n, size, cmp);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        size_t j = i;
+        memcpy(v, a + i * size, size);
+        for (; j > 0 && cmp(a + (j - 1) * size, v) > 0; j--)
+            memcpy(a + j * size, a + (j - 1) * size, size);
+        if (j != i)
+            memcpy(a + j * size, v, size);
+    }
+}
+
 static int cmp_area(const void *a, const void *b)
 {
     const ring_by_area *x = a, *y = b;
@@ -1921,7 +1940,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         {
             for (size_t i = 0; i < nouter; i++)
                 ra[i] = (ring_by_area){area[order[i]], order[i]};
-            qsort(ra, nouter, sizeof *ra, cmp_area);
+            sort_few(ra, nouter, sizeof *ra, cmp_area);
             /* The point of a hole (in quadrupled coordinates): the midpoint
              * of one of its edges, or else a quarter point, that is not a
              * vertex of another ring (rings may touch there, after the
@@ -1973,7 +1992,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
             free(verts);
             if (fail_nest)
                 nholes = 0;
-            qsort(hp, nholes, sizeof *hp, cmp_hole_x);
+            sort_few(hp, nholes, sizeof *hp, cmp_hole_x);
             size_t unplaced = nholes;
             for (size_t oi = 0; oi < nouter && unplaced; oi++) {
                 size_t o = ra[oi].ring;
@@ -1989,7 +2008,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                     }
                 if (!nc)
                     continue;
-                qsort(cand, nc, sizeof *cand, cmp_hole_y);
+                sort_few(cand, nc, sizeof *cand, cmp_hole_y);
                 unsigned char *in = calloc(nc, 1);
                 if (!in) {
                     fail_nest = 1;

@@ -66,6 +66,32 @@ typedef struct piece { int64_t x0, y0, x1, y1; } piece;
         }                                                                      \
     } while (0)
 
+/* GROW for an array that may still be the caller's buffer `small` (on the
+ * stack, for small inputs): moved to the heap when it grows. */
+#define GROW_SMALL(arr, n, cap, small, fail)                                   \
+    do {                                                                       \
+        if ((n) == (cap)) {                                                    \
+            void *p_ = grow_from(arr, small, n, &(cap), sizeof *(arr));        \
+            if (!p_)                                                           \
+                fail;                                                          \
+            (arr) = p_;                                                        \
+        }                                                                      \
+    } while (0)
+
+/* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
+ * memory, arr unchanged */
+static void *grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size)
+{
+    size_t c = *cap ? *cap * 2 : 32;
+    void *p = arr == small ? malloc(c * size) : realloc(arr, c * size);
+    if (!p)
+        return NULL;
+    if (arr == small && n)
+        memcpy(p, arr, n * size);
+    *cap = c;
+    return p;
+}
+
 typedef struct engine {
     bedge *E;
     size_t ne, cape;
@@ -78,6 +104,11 @@ typedef struct engine {
     int64_t (*O)[4]; /* input edges of pieces (x0, y0, x1, y1): O_small or heap */
     size_t no, capo;
     int64_t O_small[16][4];
+    /* the caller's buffers that E, S and P start in on small inputs (then
+     * never freed; NULL when none) */
+    bedge *E_small;
+    splitpt *S_small;
+    piece *P_small;
     cg_clip_op op;
     cg_clip_fill fill[2];
     unsigned char table[4]; /* in the result, by (in subject, in clip) */
@@ -94,7 +125,7 @@ static int add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
         g->H[g->nh++] = (hseg){y0, x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0};
         return 1;
     }
-    GROW(g->E, g->ne, g->cape, return 0);
+    GROW_SMALL(g->E, g->ne, g->cape, g->E_small, return 0);
     bedge *e = &g->E[g->ne++];
     if (y0 < y1) {
         *e = (bedge){x0, y0, x1, y1, 0, orig, -1, (uint8_t)op};
@@ -410,6 +441,7 @@ typedef struct sweep {
     uint32_t *horder;
     void *mem; /* all of the above, carved from one block */
     size_t memcap;
+    void *mem_small; /* the caller's block mem starts as (never freed) */
     int32_t *wr0, *wr1; /* windings right of each edge (its coincident group):
                          * sums of at most ne <= INT32_MAX terms of +-1 */
     size_t nact;
@@ -466,7 +498,7 @@ typedef struct ck_log {
 static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 {
     engine *g = s->g;
-    GROW(g->S, g->ns, g->caps, return 0);
+    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, return 0);
     g->S[g->ns++] = (splitpt){e, x, y};
     s->changed = 1;
     /* this pass will be repeated; it goes on classifying so that the next
@@ -565,7 +597,7 @@ static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
 {
     if (x0 == x1 && y0 == y1)
         return 1;
-    GROW(g->P, g->np, g->capp, return 0);
+    GROW_SMALL(g->P, g->np, g->capp, g->P_small, return 0);
     g->P[g->np++] = (piece){x0, y0, x1, y1};
     return 1;
 }
@@ -1433,16 +1465,10 @@ static int add_hot_pixel_splits(engine *g)
                 continue;
             if (!meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py))
                 continue;
-            if (g->ns == g->caps) {
-                size_t c = g->caps * 2;
-                splitpt *ns2 = realloc(g->S, c * sizeof *ns2);
-                if (!ns2) {
-                    free(pts);
-                    return 0;
-                }
-                g->S = ns2;
-                g->caps = c;
-            }
+            GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
+                free(pts);
+                return 0;
+            });
             g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
         }
     }
@@ -1478,17 +1504,21 @@ static uint32_t add_orig(engine *g, const bedge *e)
     return (uint32_t)g->no++;
 }
 
-static int apply_splits(engine *g, uint32_t *map, size_t *kept)
+static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
 {
     size_t old_ne = g->ne, ns = g->ns;
     split_sort small[34], *buf = small; /* the points of one edge */
     size_t capbuf = sizeof small / sizeof small[0];
     /* the split points by edge (a counting sort into order[]; the points of
-     * one edge are put in order along it below), in one block with dead[] */
-    size_t at = (old_ne + 1 + 3) & ~(size_t)3;
-    unsigned char *dead = calloc(at + (old_ne + 1 + ns) * sizeof(uint32_t), 1);
+     * one edge are put in order along it below), in one block with dead[]:
+     * the caller's `mem` (cap bytes) when large enough */
+    size_t at = (old_ne + 1 + 3) & ~(size_t)3, bytes = at + (old_ne + 1 + ns) * sizeof(uint32_t);
+    unsigned char *own = bytes > cap || !mem ? calloc(bytes, 1) : NULL;
+    unsigned char *dead = own ? own : mem;
     if (!dead)
         return 0;
+    if (!own)
+        memset(dead, 0, at + (old_ne + 1) * sizeof(uint32_t)); /* (dead and first) */
     uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_ne + 1;
     for (size_t k = 0; k < ns; k++)
         first[g->S[k].edge + 1]++;
@@ -1509,7 +1539,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
             if (!nb) {
                 if (buf != small)
                     free(buf);
-                free(dead);
+                free(own);
                 return 0;
             }
             buf = nb;
@@ -1541,7 +1571,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
         if (orig == NO_ORIG) {
             if (buf != small)
                 free(buf);
-            free(dead);
+            free(own);
             return 0;
         }
         /* the path direction of the edge: w == -1 means upwards */
@@ -1554,7 +1584,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
             if (!ok) {
                 if (buf != small)
                     free(buf);
-                free(dead);
+                free(own);
                 return 0;
             }
         }
@@ -1574,7 +1604,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept)
         g->E[w++] = g->E[i];
     g->ne = w;
     g->ns = 0;
-    free(dead);
+    free(own);
     return 1;
 }
 
@@ -1605,6 +1635,25 @@ static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
 }
 
 typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
+/* qsort, by straight insertion when n is small (the assembly's few rings;
+ * cmp is a total order, so the result is qsort's) */
+static void sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
+{
+    unsigned char v[64], *a = base;
+    if (n > 16 || size > sizeof v) {
+        qsort(base, n, size, cmp);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        size_t j = i;
+        memcpy(v, a + i * size, size);
+        for (; j > 0 && cmp(a + (j - 1) * size, v) > 0; j--)
+            memcpy(a + j * size, a + (j - 1) * size, size);
+        if (j != i)
+            memcpy(a + j * size, v, size);
+    }
+}
+
 static int cmp_area(const void *a, const void *b)
 {
     const ring_by_area *x = a, *y = b;
@@ -1891,7 +1940,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         {
             for (size_t i = 0; i < nouter; i++)
                 ra[i] = (ring_by_area){area[order[i]], order[i]};
-            qsort(ra, nouter, sizeof *ra, cmp_area);
+            sort_few(ra, nouter, sizeof *ra, cmp_area);
             /* The point of a hole (in quadrupled coordinates): the midpoint
              * of one of its edges, or else a quarter point, that is not a
              * vertex of another ring (rings may touch there, after the
@@ -1943,7 +1992,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
             free(verts);
             if (fail_nest)
                 nholes = 0;
-            qsort(hp, nholes, sizeof *hp, cmp_hole_x);
+            sort_few(hp, nholes, sizeof *hp, cmp_hole_x);
             size_t unplaced = nholes;
             for (size_t oi = 0; oi < nouter && unplaced; oi++) {
                 size_t o = ra[oi].ring;
@@ -1959,7 +2008,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                     }
                 if (!nc)
                     continue;
-                qsort(cand, nc, sizeof *cand, cmp_hole_y);
+                sort_few(cand, nc, sizeof *cand, cmp_hole_y);
                 unsigned char *in = calloc(nc, 1);
                 if (!in) {
                     fail_nest = 1;
@@ -2042,11 +2091,12 @@ fail:
 static void sweep_reset(sweep *s)
 {
     engine *g = s->g;
-    void *mem = s->mem;
+    void *mem = s->mem, *mem_small = s->mem_small;
     size_t cap = s->memcap;
     memset(s, 0, sizeof *s);
     s->g = g;
     s->mem = mem;
+    s->mem_small = mem_small;
     s->memcap = cap;
 }
 
@@ -2075,7 +2125,8 @@ static int sweep_alloc(sweep *s, int light)
             2 * n1 * sizeof(double);
     need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
     if (need > s->memcap) {
-        free(s->mem);
+        if (s->mem != s->mem_small)
+            free(s->mem);
         s->memcap = 0;
         need += need / 8 + 2048; /* the next pass usually has a few more edges */
         s->mem = malloc(need);
@@ -2121,7 +2172,8 @@ static int cmp_i64(const void *a, const void *b)
  * edges went (apply_splits). */
 typedef struct carry {
     uint32_t *by_bottom, *by_top, *map;
-    size_t n, cap;   /* edges of the last pass */
+    uint32_t *small; /* the caller's block of 3 * 64 they start in */
+    size_t n, cap;   /* edges of the last pass (room for cap) */
     size_t kept;     /* of them, not split: now g->E[0..kept) */
     size_t nh_sorted; /* g->H[0..nh_sorted) is in order */
     int valid;
@@ -2280,7 +2332,8 @@ static int carry_keep(carry *c, const sweep *s)
     size_t ne = s->g->ne;
     if (ne > c->cap) {
         size_t cap = ne + ne / 2;
-        free(c->by_bottom); /* (the three arrays in one block) */
+        if (c->by_bottom != c->small)
+            free(c->by_bottom); /* (the three arrays in one block) */
         c->cap = 0;
         c->by_bottom = malloc(3 * cap * sizeof *c->by_bottom);
         if (!c->by_bottom)
@@ -2334,10 +2387,21 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     sweep s;
     memset(&s, 0, sizeof s);
     s.g = g;
+    /* small inputs: the sweep's block (and the assembly's, the splits')
+     * on the stack, and the orders kept between passes */
+    max_align_t mem_small[8192 / sizeof(max_align_t)];
+    s.mem = s.mem_small = mem_small;
+    s.memcap = sizeof mem_small;
+    uint32_t carry_small[3 * 64];
     cg_status st = CG_ENOMEM;
     size_t visits = 0, edges = 0; /* of the last full sweep */
     carry c;
     memset(&c, 0, sizeof c);
+    c.small = carry_small;
+    c.by_bottom = carry_small;
+    c.by_top = carry_small + 64;
+    c.map = carry_small + 128;
+    c.cap = 64;
     ck_log logs[2]; /* this pass's checkpoints, the last pass's */
     memset(logs, 0, sizeof logs);
     int cur = 0, can_resume = 0;
@@ -2436,7 +2500,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             }
             if (g->np)
                 memcpy(saved + w, g->P, g->np * sizeof *saved);
-            free(g->P);
+            if (g->P != g->P_small)
+                free(g->P);
             g->P = saved;
             g->capp = saved_cap;
             g->np += w;
@@ -2486,6 +2551,16 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             can_resume = 1;
             if (pass == 0 && s.classify && g->np) {
                 ranges = malloc((nbands + 1) * sizeof *ranges);
+                if (ranges && g->P == g->P_small) { /* (saved is freed) */
+                    piece *q = malloc(g->capp * sizeof *q);
+                    if (q)
+                        memcpy(q, g->P, g->np * sizeof *q);
+                    else {
+                        free(ranges);
+                        ranges = NULL;
+                    }
+                    g->P = q ? q : g->P;
+                }
                 if (ranges) {
                     saved = g->P; /* (the next pass starts a new array) */
                     saved_cap = g->capp;
@@ -2496,7 +2571,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             }
         }
         cur ^= 1;
-        if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept))
+        if (!carry_keep(&c, &s) || !apply_splits(g, c.map, &c.kept, s.mem, s.memcap))
             break;
         c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {
@@ -2504,7 +2579,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             break;
         }
     }
-    free(s.mem);
+    if (s.mem != s.mem_small)
+        free(s.mem);
     for (int k = 0; k < 2; k++) {
         free(logs[k].pt);
         free(logs[k].ed);
@@ -2512,7 +2588,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     free(saved);
     free(ranges);
     free(bands);
-    free(c.by_bottom); /* (and by_top, map) */
+    if (c.by_bottom != c.small)
+        free(c.by_bottom); /* (and by_top, map) */
     free(c.ys);
     free(c.sy);
     return st;
@@ -2540,9 +2617,11 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
          * (horizontal ones go to g->H) */
         if (g->cape - g->ne < b - a) {
             size_t c = g->ne + (b - a) + g->cape / 2 + 64;
-            bedge *e = realloc(g->E, c * sizeof *e);
+            bedge *e = g->E == g->E_small ? malloc(c * sizeof *e) : realloc(g->E, c * sizeof *e);
             if (!e)
                 return CG_ENOMEM;
+            if (g->E == g->E_small && g->ne)
+                memcpy(e, g->E, g->ne * sizeof *e);
             g->E = e;
             g->cape = c;
         }
@@ -2593,13 +2672,27 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
     for (int a = 0; a < 5; a++)
         for (int b = 0; b < 5; b++)
             g.near[a][b] = (unsigned char)inside_rule(&g, a - 2, b - 2);
-    /* room for the input's edges and some pieces: no regrowth */
+    /* room for the input's edges and some pieces: no regrowth; on small
+     * inputs the edges, split points and pieces start on the stack (most
+     * calls then need no allocation for them) */
+    bedge e_small[96];
+    splitpt s_small[32];
+    piece p_small[64];
     size_t npts = (subject ? subject->point_count : 0) + (clip ? clip->point_count : 0);
     if (npts && npts < UINT32_MAX / 4) {
         g.cape = npts + npts / 4 + 64;
-        g.E = malloc(g.cape * sizeof *g.E);
-        if (!g.E)
-            g.cape = 0;
+        if (g.cape <= sizeof e_small / sizeof e_small[0]) {
+            g.E = g.E_small = e_small;
+            g.cape = sizeof e_small / sizeof e_small[0];
+            g.S = g.S_small = s_small;
+            g.caps = sizeof s_small / sizeof s_small[0];
+            g.P = g.P_small = p_small;
+            g.capp = sizeof p_small / sizeof p_small[0];
+        } else {
+            g.E = malloc(g.cape * sizeof *g.E);
+            if (!g.E)
+                g.cape = 0;
+        }
     }
     cg_status st = load(&g, subject, 0);
     if (st == CG_OK)
@@ -2610,10 +2703,13 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
         st = boolean_run(&g, result);
     if (st != CG_OK)
         cg_polygon_set64_clear(result);
-    free(g.E);
+    if (g.E != g.E_small)
+        free(g.E);
     free(g.H);
-    free(g.S);
-    free(g.P);
+    if (g.S != g.S_small)
+        free(g.S);
+    if (g.P != g.P_small)
+        free(g.P);
     if (g.O != g.O_small)
         free(g.O);
     return st;

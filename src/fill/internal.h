@@ -93,18 +93,24 @@ static inline void fill_store32(uint32_t *d, int n, uint32_t v)
         return;
     }
 #if defined(__SSE2__)
-    __m128i v4 = _mm_set1_epi32((int)v);
-    for (; i + 8 <= n; i += 8) {
-        _mm_storeu_si128((__m128i *)(d + i), v4);
-        _mm_storeu_si128((__m128i *)(d + i + 4), v4);
+    /* The last four pixels are stored over what the loop stored, and one to
+     * three pixels by three stores that may coincide: no branch on the
+     * remainder (runs of every length come one after another in a row, and
+     * the branches of a loop over the remainder mispredicted). */
+    if (n >= 4) {
+        __m128i v4 = _mm_set1_epi32((int)v);
+        for (; i + 4 < n; i += 4)
+            _mm_storeu_si128((__m128i *)(d + i), v4);
+        _mm_storeu_si128((__m128i *)(d + n - 4), v4);
+    } else if (n > 0) {
+        d[0] = v;
+        d[n >> 1] = v;
+        d[n - 1] = v;
     }
-    if (i + 4 <= n) {
-        _mm_storeu_si128((__m128i *)(d + i), v4);
-        i += 4;
-    }
-#endif
+#else
     for (; i < n; i++)
         d[i] = v;
+#endif
 }
 
 typedef struct fill_painter {

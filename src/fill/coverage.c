@@ -207,6 +207,25 @@ static inline int ceil_clipped(double v)
     return i + (i < v);
 }
 
+/* Adds the part of a line within one row, from x = xa to xb (either way
+ * round), and asks for the pixels under its first cell (blended when the
+ * band is painted: asking now hides the wait for memory). */
+static inline void deposit_step(float *cells, uint64_t *bits, double xa, double xb, double d,
+                                double s, const cg_image *image,
+                                const unsigned char **pixel_row)
+{
+    int first = xa <= xb ? deposit_row(cells, bits, xa, xb, d, s)
+                         : deposit_row(cells, bits, xb, xa, d, s);
+    if (*pixel_row) {
+#if defined(__GNUC__)
+        __builtin_prefetch(*pixel_row + 4 * (size_t)first, 1, 3);
+#else
+        (void)first;
+#endif
+        *pixel_row += image->stride;
+    }
+}
+
 /* Adds the part of line l within rows [band_top, band_bottom). */
 static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
                          int band_top, int band_bottom, double origin_x, const fill_line *l,
@@ -229,34 +248,27 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
     float *cells = accumulation + (size_t)(row - band_top) * 2 * stride;
     uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
-#if defined(__GNUC__)
-    /* The pixels under the line are read (to blend onto them) when the band
-     * is painted: asking for them now hides the wait for memory. */
+    /* the pixels under the line (see deposit_step) */
     const unsigned char *pixel_row = image->format == CG_PIXEL_RGBA8
                                          ? image->data + (size_t)row * image->stride
                                                + (size_t)origin_x * 4
                                          : NULL;
-#else
-    (void)image;
-#endif
     double next = row + 1; /* the next row's top */
-    for (; row < row_end; row++, next += 1, cells += 2 * stride, bits += blocks) {
-        double yb = next < ye ? next : ye;
-        double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
-        /* the first cell the line touches in the row */
-        int first = xa <= xb ? deposit_row(cells, bits, xa, xb, sign * (yb - ya), s)
-                             : deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
-#if defined(__GNUC__)
-        if (pixel_row) {
-            __builtin_prefetch(pixel_row + 4 * (size_t)first, 1, 3);
-            pixel_row += image->stride;
-        }
-#else
-        (void)first;
-#endif
+    /* Every row but the last is left through its bottom (next < ye), where
+     * x follows from the slope; after the first of them a row's height is
+     * exactly 1, so its signed height is the sign.  The last row ends at ye
+     * (at the line's own end point when ye is y1). */
+    double d = sign * (next - ya);
+    for (int last = row_end - 1; row < last;
+         row++, next += 1, cells += 2 * stride, bits += blocks) {
+        double xb = x0 + (next - y0) * dxdy;
+        deposit_step(cells, bits, xa, xb, d, s, image, &pixel_row);
         xa = xb;
-        ya = yb;
+        ya = next;
+        d = sign;
     }
+    double xb = ye == y1 ? x1 : x0 + (ye - y0) * dxdy;
+    deposit_step(cells, bits, xa, xb, sign * (ye - ya), s, image, &pixel_row);
 }
 
 /* min(a, b) as one instruction (a < b ? a : b): the comparisons it replaces
@@ -342,7 +354,23 @@ static inline void render_row_solid(cg_image *image, const fill_blend_state *ble
          * row), visiting only the set bits mispredicts once per row. */
         size_t count = words - group < 64 ? words - group : 64;
         uint64_t nonempty = 0;
-        for (size_t i = 0; i < count; i++)
+        size_t i = 0;
+#if defined(__SSE2__)
+        /* four words at a time: a word is empty when both its halves are */
+        const __m128i zero = _mm_setzero_si128();
+        for (; i + 4 <= count; i += 4) {
+            __m128i a = _mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(touched + group + i)),
+                                        zero);
+            __m128i b = _mm_cmpeq_epi32(
+                _mm_loadu_si128((const __m128i *)(touched + group + i + 2)), zero);
+            a = _mm_and_si128(a, _mm_shuffle_epi32(a, 0xb1));
+            b = _mm_and_si128(b, _mm_shuffle_epi32(b, 0xb1));
+            unsigned empty = (unsigned)(_mm_movemask_pd(_mm_castsi128_pd(a))
+                                        | _mm_movemask_pd(_mm_castsi128_pd(b)) << 2);
+            nonempty |= (uint64_t)(~empty & 15u) << i;
+        }
+#endif
+        for (; i < count; i++)
             nonempty |= (uint64_t)(touched[group + i] != 0) << i;
       while (nonempty) {
         size_t w = group + (size_t)lowest_bit(nonempty);

@@ -347,35 +347,10 @@ static inline void render_row_solid(cg_image *image, const fill_blend_state *ble
     float acc = 0;
     int done = 0; /* pixels before done are painted */
     uint32_t *pixels = (uint32_t *)cg_image_row_rgba8(image, y) + origin_x;
-    for (size_t group = 0; group < words; group += 64) {
-        /* A bit per word of the next 64 saying whether it has touched
-         * cells, gathered without branches: testing each word with a branch
-         * mispredicted often (which words are empty changes from row to
-         * row), visiting only the set bits mispredicts once per row. */
-        size_t count = words - group < 64 ? words - group : 64;
-        uint64_t nonempty = 0;
-        size_t i = 0;
-#if defined(__SSE2__)
-        /* four words at a time: a word is empty when both its halves are */
-        const __m128i zero = _mm_setzero_si128();
-        for (; i + 4 <= count; i += 4) {
-            __m128i a = _mm_cmpeq_epi32(_mm_loadu_si128((const __m128i *)(touched + group + i)),
-                                        zero);
-            __m128i b = _mm_cmpeq_epi32(
-                _mm_loadu_si128((const __m128i *)(touched + group + i + 2)), zero);
-            a = _mm_and_si128(a, _mm_shuffle_epi32(a, 0xb1));
-            b = _mm_and_si128(b, _mm_shuffle_epi32(b, 0xb1));
-            unsigned empty = (unsigned)(_mm_movemask_pd(_mm_castsi128_pd(a))
-                                        | _mm_movemask_pd(_mm_castsi128_pd(b)) << 2);
-            nonempty |= (uint64_t)(~empty & 15u) << i;
-        }
-#endif
-        for (; i < count; i++)
-            nonempty |= (uint64_t)(touched[group + i] != 0) << i;
-      while (nonempty) {
-        size_t w = group + (size_t)lowest_bit(nonempty);
-        nonempty &= nonempty - 1;
+    for (size_t w = 0; w < words; w++) {
         uint64_t m = touched[w];
+        if (!m)
+            continue;
         touched[w] = 0;
         do {
             int x = (int)(w << 6) + lowest_bit(m);
@@ -398,7 +373,6 @@ static inline void render_row_solid(cg_image *image, const fill_blend_state *ble
             row[2 * x] = row[2 * x + 1] = 0;
             done = x + 1;
         } while (m);
-      }
     }
     int c = coverage_of(acc, rule);
     if (done < width && c != 0) {

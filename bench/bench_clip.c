@@ -138,7 +138,15 @@ static void profile_one(const char *name, const shape *a, const shape *b, int op
 }
 
 /* Times are medians of processor time (steadier than wall time on a shared
- * machine; every library here is single-threaded). */
+ * machine; every library here is single-threaded), after one untimed call of
+ * each library on the case (unless --cold): the first calls of a process on
+ * a large case measure the C library's heap growing, not the operation.
+ * glibc maps a large block afresh (page faults) until one such is freed, then
+ * takes the next ones from its heap, which grows (page faults again) on the
+ * second call; from the third call on the memory is reused.  Without the
+ * warm-up, a median of 3 calls is one of the first two, and a peer timed
+ * after cg finds the heap grown already. */
+static int cold;
 static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
 {
     char name[128], note[160];
@@ -150,6 +158,8 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
         return;
     }
     job j = {a, b, op, {0}, NULL, 0};
+    if (!cold)
+        run_cg(&j);
     double t_cg = bench_median_clock(run_cg, &j, runs, CLOCK_PROCESS_CPUTIME_ID);
     double area_cg = cg_polygon_set64_area(&j.result);
     size_t nv = j.result.point_count;
@@ -168,6 +178,8 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
             continue;
         }
         j.peer = p->prepare(&pa, &pb);
+        if (!cold)
+            p->run(&j);
         double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID);
         snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
                  area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
@@ -200,8 +212,13 @@ static void star_case(size_t n, double r0, const char *label, int ops, int runs)
 
 int main(int argc, char **argv)
 {
-    /* bench_clip [--only cg|clipper|geos] [--match TEXT] [MAX_N [MIN_N]]:
+    /* bench_clip [--cold] [--only cg|clipper|geos] [--match TEXT] [MAX_N [MIN_N]]:
      * sizes of the size sweeps */
+    while (argc > 1 && !strcmp(argv[1], "--cold")) {
+        cold = 1;
+        argc--;
+        argv++;
+    }
     while (argc > 2 && (!strcmp(argv[1], "--only") || !strcmp(argv[1], "--match"))) {
         if (!strcmp(argv[1], "--only"))
             only = argv[2];

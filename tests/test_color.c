@@ -2,6 +2,7 @@
  * conversions by name, intensity mapping and dithering, parsing. */
 #include "check.h"
 #include "cg/color.h"
+#include "../src/color/srgb_tables.h" /* to check the encode tables' invariant */
 
 #include <string.h>
 
@@ -706,9 +707,54 @@ static void test_parse(void)
     CHECK(cg_color_parse(NULL, &c, &err) == CG_EINVAL);
 }
 
+/* The shared exact encode rests on one property of its tables: a 1/4096
+ * bucket of linear values holds at most one code threshold, and each
+ * bucket starts at the code of its lower end.  The three-lane form must
+ * give the scalar form's codes lane by lane. */
+static void test_encode_tables(void)
+{
+    int bad = 0, bucket_bad = 0;
+    for (int i = 0; i <= 4096; i++) {
+        float lo = i / 4096.0f;
+        int below = 0;
+        while (below < 255 && cg_srgb_threshold_table[below] <= lo)
+            below++;
+        bad += cg_srgb_encode_start[i] != below;
+        if (i < 4096)
+            bucket_bad += cg_srgb_encode_start[i + 1] - cg_srgb_encode_start[i] > 1;
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK_EQ_INT(bucket_bad, 0);
+#if defined(__SSE2__)
+    check_rng r = {77};
+    bad = 0;
+    for (int i = 0; i < 300000; i++) {
+        float v[3];
+        for (int k = 0; k < 3; k++) {
+            /* near a threshold a third of the time, anywhere (and outside
+             * [0, 1]) otherwise */
+            int t = (int)check_rng_range(&r, 0, 255);
+            v[k] = i % 3 == 0 ? nextafterf(cg_srgb_threshold_table[t], (float)check_rng_range(&r, -1, 2))
+                              : (float)check_rng_range(&r, -0.2, 1.2);
+        }
+        if (i == 0) {
+            v[0] = NAN;
+            v[1] = INFINITY;
+            v[2] = -INFINITY;
+        }
+        uint8_t rgb[3];
+        cg_srgb_encode_rgb(_mm_setr_ps(v[0], v[1], v[2], 0.5f), rgb);
+        for (int k = 0; k < 3; k++)
+            bad += rgb[k] != cg_srgb_encode_unit(v[k]) || rgb[k] != cg_linear_to_srgb8(v[k]);
+    }
+    CHECK_EQ_INT(bad, 0);
+#endif
+}
+
 int main(void)
 {
     test_srgb();
+    test_encode_tables();
     test_images();
     test_reference_values();
     test_round_trips();

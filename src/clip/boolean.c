@@ -57,7 +57,7 @@ typedef struct piece { int64_t x0, y0, x1, y1; } piece;
 #define GROW(arr, n, cap, fail)                                                \
     do {                                                                       \
         if ((n) == (cap)) {                                                    \
-            size_t c_ = (cap) ? (cap) * 2 : 64;                                \
+            size_t c_ = (cap) ? (cap) * 2 : 32;                                \
             void *p_ = realloc((arr), c_ * sizeof *(arr));                     \
             if (!p_)                                                           \
                 fail;                                                          \
@@ -410,7 +410,8 @@ typedef struct sweep {
     uint32_t *horder;
     void *mem; /* all of the above, carved from one block */
     size_t memcap;
-    int64_t *wr0, *wr1; /* windings right of each edge (its coincident group) */
+    int32_t *wr0, *wr1; /* windings right of each edge (its coincident group):
+                         * sums of at most ne <= INT32_MAX terms of +-1 */
     size_t nact;
     double *xc, *xn; /* x at the current scanline, at the next one */
     /* runs */
@@ -448,8 +449,9 @@ typedef struct sweep {
 typedef struct ck_edge {
     uint32_t e;
     unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
+    int32_t wr0, wr1;
     double x;
-    int64_t wr0, wr1, run_x, run_y;
+    int64_t run_x, run_y;
 } ck_edge;
 typedef struct ck_point { int64_t y; size_t np, first, n; } ck_point;
 typedef struct ck_log {
@@ -766,7 +768,7 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
 {
     const engine *g = s->g;
     const bedge *E = g->E;
-    int64_t *wr0 = s->wr0, *wr1 = s->wr1;
+    int32_t *wr0 = s->wr0, *wr1 = s->wr1;
     size_t done = 0;
     for (size_t d = 0; d < nd; d++) {
         size_t k = dirty[d];
@@ -806,8 +808,8 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
                 s->run_x[e] = y == E[e].yb ? E[e].xb : round_div(x_num(&E[e], y), x_den(&E[e]));
             }
             s->brk[e] = 0;
-            wr0[e] = w[0];
-            wr1[e] = w[1];
+            wr0[e] = (int32_t)w[0];
+            wr1[e] = (int32_t)w[1];
         }
         done = k2;
     }
@@ -840,7 +842,7 @@ static int ck_record(sweep *s, int64_t y)
     L->pt[L->npt++] = (ck_point){y, s->g->np, L->ned, n};
     for (size_t k = 0; k < n; k++) {
         uint32_t e = s->act[k];
-        L->ed[L->ned++] = (ck_edge){e, ck_flags(s, e), s->xn[e], s->wr0[e], s->wr1[e],
+        L->ed[L->ned++] = (ck_edge){e, ck_flags(s, e), s->wr0[e], s->wr1[e], s->xn[e],
                                     s->run_x[e], s->run_y[e]};
     }
     return 1;
@@ -2064,11 +2066,13 @@ static int sweep_alloc(sweep *s, int light)
     size_t nscratch = n1 > nh ? n1 : nh;
     uint32_t **ids[] = {&s->by_bottom, &s->by_top, &s->act, &s->nxt, &s->fresh, &s->brkq,
                         &s->brkq_next, &s->clus};
-    int64_t **i64[] = {&s->wr0, &s->wr1, &s->run_x, &s->run_y};
+    int64_t **i64[] = {&s->run_x, &s->run_y};
+    int32_t **i32[] = {&s->wr0, &s->wr1};
     double **f64[] = {&s->xc, &s->xn};
     size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * n1;
     need += (nids * n1 + 3 * n1 + (light ? 3 * n1 + 1 : 0) + nh) * sizeof(uint32_t);
-    need += (2 * n1 + 4 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(double);
+    need += (2 * n1 + 2 * n1) * sizeof(int64_t) + 2 * n1 * sizeof(int32_t) +
+            2 * n1 * sizeof(double);
     need += 2 * nscratch * sizeof(keyval) + nh * sizeof(hseg);
     if (need > s->memcap) {
         free(s->mem);
@@ -2084,6 +2088,8 @@ static int sweep_alloc(sweep *s, int light)
         *ids[i] = carve(&p, n1 * sizeof(uint32_t));
     for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
         *i64[i] = carve(&p, n1 * sizeof(int64_t));
+    for (size_t i = 0; i < sizeof i32 / sizeof i32[0]; i++)
+        *i32[i] = carve(&p, n1 * sizeof(int32_t));
     for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
         *f64[i] = carve(&p, n1 * sizeof(double));
     s->ys = carve(&p, 2 * n1 * sizeof *s->ys);

@@ -27,24 +27,9 @@ float cg_srgb8_to_linear(uint8_t code)
     return cg_srgb_decode_table[code];
 }
 
-/* The bucket of linear / 4096 gives a lower bound on the code; at most one
- * threshold lies inside a bucket (checked when the table was made), and the
- * loop settles any case.  NaN and values <= 0 give 0, values >= 1 give 255. */
-static inline uint8_t encode_one(float linear)
-{
-    if (!(linear > 0))
-        return 0;
-    if (linear >= 1)
-        return 255;
-    unsigned code = cg_srgb_encode_start[(int)(linear * 4096.0f)];
-    while (linear >= cg_srgb_threshold_table[code]) /* stops at 255: +inf */
-        code++;
-    return (uint8_t)code;
-}
-
 uint8_t cg_linear_to_srgb8(float linear)
 {
-    return encode_one(linear);
+    return cg_srgb_encode_unit(linear);
 }
 
 /* Outputs larger than this many floats (16 MiB) are written with streaming
@@ -69,18 +54,10 @@ void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
         out[i] = t[in[i]];
 }
 
-/* The same as encode_one without branches: at most one threshold
- * lies in a bucket (checked when the table was made), so one comparison
- * settles the code. */
 void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
 {
-    for (size_t i = 0; i < n; i++) {
-        float x = in[i];
-        x = x > 0 ? x : 0; /* also NaN */
-        x = x < 1 ? x : 1;
-        int code = cg_srgb_encode_start[(int)(x * 4096.0f)];
-        out[i] = (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
-    }
+    for (size_t i = 0; i < n; i++)
+        out[i] = cg_srgb_encode_unit(in[i]);
 }
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)
@@ -143,9 +120,9 @@ cg_status cg_image_encode_srgb(const cg_image *src, cg_image **out)
         const cg_rgbaf *in = cg_image_row_rgbaf((cg_image *)src, y);
         cg_rgba8 *o = cg_image_row_rgba8(*out, y);
         for (int x = 0; x < src->width; x++) {
-            o[x].r = encode_one(in[x].r);
-            o[x].g = encode_one(in[x].g);
-            o[x].b = encode_one(in[x].b);
+            o[x].r = cg_srgb_encode_unit(in[x].r);
+            o[x].g = cg_srgb_encode_unit(in[x].g);
+            o[x].b = cg_srgb_encode_unit(in[x].b);
             o[x].a = alpha_to_8(in[x].a);
         }
     }

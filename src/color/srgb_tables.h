@@ -1,12 +1,48 @@
-/* Private: constant sRGB lookup tables shared by the image and color code. */
+/* Private: constant sRGB lookup tables shared by the image, colour, fill and
+ * render code, and the one exact encode built on them. */
 #ifndef CG_SRGB_TABLES_H
 #define CG_SRGB_TABLES_H
 
 #include <stdint.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 extern const float cg_srgb_decode_table[256];
 /* threshold[k]: least linear value of code k + 1; threshold[255] = +infinity. */
 extern const float cg_srgb_threshold_table[256];
+/* encode_start[i]: the code of linear value i / 4096 (i = 0 .. 4096). */
 extern const uint8_t cg_srgb_encode_start[4097];
+
+/* The correctly rounded sRGB code of a linear value, clamped to [0, 1]
+ * (NaN gives 0).  The value's 1/4096 bucket gives the least code it can
+ * have; at most one threshold lies inside a bucket (checked when the tables
+ * were made), so one comparison settles the code, without branches. */
+static inline uint8_t cg_srgb_encode_unit(float linear)
+{
+    float x = linear > 0 ? linear : 0;
+    x = x < 1 ? x : 1;
+    unsigned code = cg_srgb_encode_start[(int)(x * 4096.0f)];
+    return (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
+}
+
+#if defined(__SSE2__)
+/* The same for lanes 0, 1 and 2 of v at once, into rgb[0..2]. */
+static inline void cg_srgb_encode_rgb(__m128 v, uint8_t rgb[3])
+{
+    /* max(v, 0) gives 0 for NaN, as above */
+    v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+    __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps(4096.0f)));
+    unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
+    unsigned c1 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
+    unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
+    __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1],
+                              cg_srgb_threshold_table[c2], 0.0f);
+    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
+    rgb[0] = (uint8_t)(c0 + (up & 1));
+    rgb[1] = (uint8_t)(c1 + ((up >> 1) & 1));
+    rgb[2] = (uint8_t)(c2 + ((up >> 2) & 1));
+}
+#endif
 
 #endif

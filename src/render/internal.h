@@ -46,22 +46,6 @@ void render_lighting_prepare(render_lighting *l);
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3]);
 
-/* sRGB encoding, exact (the same code as cg_linear_to_srgb8 for every
- * float) and without branches: the bucket of linear * 4096 gives the code of
- * its lower end, and at most one code threshold lies inside a bucket (the
- * curve is steepest at 0, 0.8 codes per bucket), so one comparison with the
- * next code's threshold settles it.  The tables are the colour module's
- * (src/color/srgb_tables.h), whose sentinel threshold after code 255 means
- * code 255 needs no test. */
-#define RENDER_ENCODER_STEPS 4096
-static inline uint8_t render_encode(float linear)
-{
-    /* Clamped to [0, 1] (NaN to 0) without branches. */
-    float x = linear > 0 ? linear : 0;
-    x = x < 1 ? x : 1;
-    unsigned code = cg_srgb_encode_start[(int)(x * RENDER_ENCODER_STEPS)];
-    return (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
-}
 
 /* ---- clipping in homogeneous coordinates -------------------------------- */
 

@@ -21,9 +21,9 @@ static inline void store(unsigned char *row, int x, const float c[3], const int 
 {
     if (rgba8) {
         cg_rgba8 *p = (cg_rgba8 *)row + x;
-        p->r = render_encode(c[0]);
-        p->g = render_encode(c[1]);
-        p->b = render_encode(c[2]);
+        p->r = cg_srgb_encode_unit(c[0]);
+        p->g = cg_srgb_encode_unit(c[1]);
+        p->b = cg_srgb_encode_unit(c[2]);
         p->a = 255;
     } else {
         cg_rgbaf *p = (cg_rgbaf *)row + x;
@@ -84,22 +84,16 @@ typedef struct gouraud_plane {
 } gouraud_plane;
 
 #if defined(__SSE2__)
-/* The same with the three colours and 1 / w side by side in one SSE
- * register: every lane is rounded as the scalar code rounds it, so the
- * pictures are identical, with a quarter of the arithmetic. */
+/* An opaque pixel from the three colours in lanes 0-2 of v (lane 3, 1 / w
+ * in the Gouraud runs, is ignored): every lane rounded as the scalar encode
+ * rounds it, so the pictures are identical, with a quarter of the work. */
 static inline void encode_store(cg_rgba8 *p, __m128 v)
 {
-    /* max(v, 0) gives 0 for NaN, like render_encode. */
-    v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
-    __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps((float)RENDER_ENCODER_STEPS)));
-    unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
-    unsigned c1 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
-    unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
-    __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1], cg_srgb_threshold_table[c2], INFINITY);
-    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
-    p->r = (uint8_t)(c0 + (up & 1));
-    p->g = (uint8_t)(c1 + ((up >> 1) & 1));
-    p->b = (uint8_t)(c2 + ((up >> 2) & 1));
+    uint8_t rgb[3];
+    cg_srgb_encode_rgb(v, rgb);
+    p->r = rgb[0];
+    p->g = rgb[1];
+    p->b = rgb[2];
     p->a = 255;
 }
 #endif
@@ -556,9 +550,9 @@ void render_finish_setup(const render_frame *f, setup_triangle *t, const float c
     memcpy(t->color, color, sizeof t->color);
     if (f->shading != MODE_FLAT)
         return; /* the encoded colour is for flat shading only */
-    t->color8.r = render_encode(color[0]);
-    t->color8.g = render_encode(color[1]);
-    t->color8.b = render_encode(color[2]);
+    t->color8.r = cg_srgb_encode_unit(color[0]);
+    t->color8.g = cg_srgb_encode_unit(color[1]);
+    t->color8.b = cg_srgb_encode_unit(color[2]);
     t->color8.a = 255;
 }
 

@@ -207,6 +207,25 @@ static inline int ceil_clipped(double v)
     return i + (i < v);
 }
 
+/* Adds the part of a line within one row, from x = xa to xb (either way
+ * round), and asks for the pixels under its first cell (blended when the
+ * band is painted: asking now hides the wait for memory). */
+static inline void deposit_step(float *cells, uint64_t *bits, double xa, double xb, double d,
+                                double s, const cg_image *image,
+                                const unsigned char **pixel_row)
+{
+    int first = xa <= xb ? deposit_row(cells, bits, xa, xb, d, s)
+                         : deposit_row(cells, bits, xb, xa, d, s);
+    if (*pixel_row) {
+#if defined(__GNUC__)
+        __builtin_prefetch(*pixel_row + 4 * (size_t)first, 1, 3);
+#else
+        (void)first;
+#endif
+        *pixel_row += image->stride;
+    }
+}
+
 /* Adds the part of line l within rows [band_top, band_bottom). */
 static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, size_t blocks,
                          int band_top, int band_bottom, double origin_x, const fill_line *l,
@@ -229,49 +248,53 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
     double xa = ys == y0 ? x0 : x0 + (ys - y0) * dxdy, ya = ys;
     float *cells = accumulation + (size_t)(row - band_top) * 2 * stride;
     uint64_t *bits = touched + (size_t)(row - band_top) * blocks;
-#if defined(__GNUC__)
-    /* The pixels under the line are read (to blend onto them) when the band
-     * is painted: asking for them now hides the wait for memory. */
+    /* the pixels under the line (see deposit_step) */
     const unsigned char *pixel_row = image->format == CG_PIXEL_RGBA8
                                          ? image->data + (size_t)row * image->stride
                                                + (size_t)origin_x * 4
                                          : NULL;
-#else
-    (void)image;
-#endif
     double next = row + 1; /* the next row's top */
-    for (; row < row_end; row++, next += 1, cells += 2 * stride, bits += blocks) {
-        double yb = next < ye ? next : ye;
-        double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
-        /* the first cell the line touches in the row */
-        int first = xa <= xb ? deposit_row(cells, bits, xa, xb, sign * (yb - ya), s)
-                             : deposit_row(cells, bits, xb, xa, sign * (yb - ya), s);
-#if defined(__GNUC__)
-        if (pixel_row) {
-            __builtin_prefetch(pixel_row + 4 * (size_t)first, 1, 3);
-            pixel_row += image->stride;
-        }
-#else
-        (void)first;
-#endif
+    /* Every row but the last is left through its bottom (next < ye), where
+     * x follows from the slope; after the first of them a row's height is
+     * exactly 1, so its signed height is the sign.  The last row ends at ye
+     * (at the line's own end point when ye is y1). */
+    double d = sign * (next - ya);
+    for (int last = row_end - 1; row < last;
+         row++, next += 1, cells += 2 * stride, bits += blocks) {
+        double xb = x0 + (next - y0) * dxdy;
+        deposit_step(cells, bits, xa, xb, d, s, image, &pixel_row);
         xa = xb;
-        ya = yb;
+        ya = next;
+        d = sign;
     }
+    double xb = ye == y1 ? x1 : x0 + (ye - y0) * dxdy;
+    deposit_step(cells, bits, xa, xb, sign * (ye - ya), s, image, &pixel_row);
+}
+
+/* min(a, b) as one instruction (a < b ? a : b): the comparisons it replaces
+ * went either way at random on the pixels of an interior, where the sum is
+ * 1 give or take its last bit, and mispredicted. */
+static inline float min_float(float a, float b)
+{
+    return a < b ? a : b;
 }
 
 static inline int coverage_of(float acc, cg_fill_rule rule)
 {
     float a = fabsf(acc);
-    if (rule == CG_FILL_EVEN_ODD && a > 1) {
-        if (a < 2) { /* the usual case (overlaps of two): what the lines below give */
-            a = 2 - a;
+    if (rule == CG_FILL_EVEN_ODD) {
+        if (a < 2) {
+            /* the usual case: 2 - a exactly where 1 < a < 2 (overlaps of
+             * two), a where a <= 1 (then 2 - a >= 1 >= a) */
+            a = min_float(a, 2 - a);
         } else {
             a -= 2.0f * (float)(int)(a * 0.5f); /* a >= 0: truncation is floor */
             if (a > 1)
                 a = 2 - a;
         }
+    } else {
+        a = min_float(a, 1);
     }
-    a = a < 1 ? a : 1;
     return (int)(a * 255.0f + 0.5f);
 }
 

@@ -93,18 +93,24 @@ static inline void fill_store32(uint32_t *d, int n, uint32_t v)
         return;
     }
 #if defined(__SSE2__)
-    __m128i v4 = _mm_set1_epi32((int)v);
-    for (; i + 8 <= n; i += 8) {
-        _mm_storeu_si128((__m128i *)(d + i), v4);
-        _mm_storeu_si128((__m128i *)(d + i + 4), v4);
+    /* The last four pixels are stored over what the loop stored, and one to
+     * three pixels by three stores that may coincide: no branch on the
+     * remainder (runs of every length come one after another in a row, and
+     * the branches of a loop over the remainder mispredicted). */
+    if (n >= 4) {
+        __m128i v4 = _mm_set1_epi32((int)v);
+        for (; i + 4 < n; i += 4)
+            _mm_storeu_si128((__m128i *)(d + i), v4);
+        _mm_storeu_si128((__m128i *)(d + n - 4), v4);
+    } else if (n > 0) {
+        d[0] = v;
+        d[n >> 1] = v;
+        d[n - 1] = v;
     }
-    if (i + 4 <= n) {
-        _mm_storeu_si128((__m128i *)(d + i), v4);
-        i += 4;
-    }
-#endif
+#else
     for (; i < n; i++)
         d[i] = v;
+#endif
 }
 
 typedef struct fill_painter {
@@ -185,36 +191,23 @@ struct cg_rasterizer {
     uint32_t blend_value[FILL_BLEND_CACHE];
 };
 
-/* Linear-light v in [0, 1] up to rounding (a blend of such values) to its
- * sRGB code, as cg_linear_to_srgb8 gives it: one table look-up and one
- * comparison, as a table step (1/4096) is smaller
- * than the smallest code step.  The index is clamped, so values outside
- * still give 0 or 255. */
-static inline uint8_t fill_encode_unit(float v)
-{
-    int i = (int)(v * 4096.0f);
-    i = i < 0 ? 0 : (i > 4096 ? 4096 : i);
-    int c = cg_srgb_encode_start[i];
-    return (uint8_t)(c + (v >= cg_srgb_threshold_table[c]));
-}
-
 /* Source-over of a straight linear colour with alpha as onto an encoded pixel. */
 static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
                           float as)
 {
     if (d->a == 255) {
         float dr = cg_srgb_decode_table[d->r], dg = cg_srgb_decode_table[d->g], db = cg_srgb_decode_table[d->b];
-        d->r = fill_encode_unit(dr + (r - dr) * as);
-        d->g = fill_encode_unit(dg + (g - dg) * as);
-        d->b = fill_encode_unit(db + (b - db) * as);
+        d->r = cg_srgb_encode_unit(dr + (r - dr) * as);
+        d->g = cg_srgb_encode_unit(dg + (g - dg) * as);
+        d->b = cg_srgb_encode_unit(db + (b - db) * as);
         return;
     }
     if (d->a == 0) { /* over nothing: the source colour, with its alpha */
         if (!(as > 0))
             return;
-        d->r = fill_encode_unit(r);
-        d->g = fill_encode_unit(g);
-        d->b = fill_encode_unit(b);
+        d->r = cg_srgb_encode_unit(r);
+        d->g = cg_srgb_encode_unit(g);
+        d->b = cg_srgb_encode_unit(b);
         d->a = (uint8_t)(as * 255.0f + 0.5f);
         return;
     }
@@ -222,9 +215,9 @@ static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
     if (a <= 0)
         return;
     float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
-    d->r = fill_encode_unit((r * as + cg_srgb_decode_table[d->r] * ad) * inv);
-    d->g = fill_encode_unit((g * as + cg_srgb_decode_table[d->g] * ad) * inv);
-    d->b = fill_encode_unit((b * as + cg_srgb_decode_table[d->b] * ad) * inv);
+    d->r = cg_srgb_encode_unit((r * as + cg_srgb_decode_table[d->r] * ad) * inv);
+    d->g = cg_srgb_encode_unit((g * as + cg_srgb_decode_table[d->g] * ad) * inv);
+    d->b = cg_srgb_encode_unit((b * as + cg_srgb_decode_table[d->b] * ad) * inv);
     d->a = (uint8_t)(a * 255.0f + 0.5f);
 }
 
@@ -270,7 +263,7 @@ static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t ge
 
 /* fill_blend8 of a colour (linear r, g, b) at alpha as over pixel v (of
  * alpha 255, or translucent), channel by channel with the same arithmetic
- * (decode, mix, encode through fill_encode_unit's tables), so with the same
+ * (decode, mix, encode through cg_srgb_encode_unit's tables), so with the same
  * result; the three channels at once with SSE2.  Everything it reads (2.1
  * KiB of tables) stays in the first-level cache. */
 #if defined(__SSE2__)
@@ -280,23 +273,14 @@ static inline fill_rgb fill_rgb_make(float r, float g, float b)
     return _mm_setr_ps(r, g, b, 0.0f);
 }
 
-/* fill_encode_unit of lanes 0 to 2 of v into px's r, g and b. */
+/* cg_srgb_encode_unit of lanes 0 to 2 of v into px's r, g and b. */
 static inline void fill_encode_rgb(cg_rgba8 *px, __m128 v)
 {
-    /* fill_encode_unit's clamped index: clamping before the truncation
-     * gives the same index (the truncation of -1 < x < 0 is 0 too) */
-    __m128 scaled = _mm_min_ps(_mm_max_ps(_mm_mul_ps(v, _mm_set1_ps(4096.0f)), _mm_setzero_ps()),
-                               _mm_set1_ps(4096.0f));
-    __m128i i = _mm_cvttps_epi32(scaled);
-    unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
-    unsigned c1 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
-    unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
-    __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1],
-                              cg_srgb_threshold_table[c2], 0.0f);
-    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
-    px->r = (uint8_t)(c0 + (up & 1));
-    px->g = (uint8_t)(c1 + ((up >> 1) & 1));
-    px->b = (uint8_t)(c2 + ((up >> 2) & 1));
+    uint8_t rgb[3];
+    cg_srgb_encode_rgb(v, rgb);
+    px->r = rgb[0];
+    px->g = rgb[1];
+    px->b = rgb[2];
 }
 
 static inline __m128 fill_decode_rgb(const cg_rgba8 *px)

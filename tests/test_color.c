@@ -742,8 +742,10 @@ static void test_encode_tables(void)
             v[1] = INFINITY;
             v[2] = -INFINITY;
         }
-        uint8_t rgb[3];
-        cg_srgb_encode_rgb(_mm_setr_ps(v[0], v[1], v[2], 0.5f), rgb);
+        cg_rgba8 px = {0, 0, 0, 77};
+        cg_srgb_encode_rgb(&px, _mm_setr_ps(v[0], v[1], v[2], 0.5f));
+        uint8_t rgb[3] = {px.r, px.g, px.b};
+        bad += px.a != 77;
         for (int k = 0; k < 3; k++)
             bad += rgb[k] != cg_srgb_encode_unit(v[k]) || rgb[k] != cg_linear_to_srgb8(v[k]);
     }

@@ -3,6 +3,8 @@
 #ifndef CG_SRGB_TABLES_H
 #define CG_SRGB_TABLES_H
 
+#include "cg/image.h" /* cg_rgba8 */
+
 #include <stdint.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -27,8 +29,9 @@ static inline uint8_t cg_srgb_encode_unit(float linear)
 }
 
 #if defined(__SSE2__)
-/* The same for lanes 0, 1 and 2 of v at once, into rgb[0..2]. */
-static inline void cg_srgb_encode_rgb(__m128 v, uint8_t rgb[3])
+/* The same for lanes 0, 1 and 2 of v at once, into px's r, g and b (its
+ * alpha is left as it is). */
+static inline void cg_srgb_encode_rgb(cg_rgba8 *px, __m128 v)
 {
     /* max(v, 0) gives 0 for NaN, as above */
     v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
@@ -39,9 +42,9 @@ static inline void cg_srgb_encode_rgb(__m128 v, uint8_t rgb[3])
     __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1],
                               cg_srgb_threshold_table[c2], 0.0f);
     int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
-    rgb[0] = (uint8_t)(c0 + (up & 1));
-    rgb[1] = (uint8_t)(c1 + ((up >> 1) & 1));
-    rgb[2] = (uint8_t)(c2 + ((up >> 2) & 1));
+    px->r = (uint8_t)(c0 + (up & 1));
+    px->g = (uint8_t)(c1 + ((up >> 1) & 1));
+    px->b = (uint8_t)(c2 + ((up >> 2) & 1));
 }
 #endif
 

@@ -273,16 +273,6 @@ static inline fill_rgb fill_rgb_make(float r, float g, float b)
     return _mm_setr_ps(r, g, b, 0.0f);
 }
 
-/* cg_srgb_encode_unit of lanes 0 to 2 of v into px's r, g and b. */
-static inline void fill_encode_rgb(cg_rgba8 *px, __m128 v)
-{
-    uint8_t rgb[3];
-    cg_srgb_encode_rgb(v, rgb);
-    px->r = rgb[0];
-    px->g = rgb[1];
-    px->b = rgb[2];
-}
-
 static inline __m128 fill_decode_rgb(const cg_rgba8 *px)
 {
     return _mm_setr_ps(cg_srgb_decode_table[px->r], cg_srgb_decode_table[px->g],
@@ -294,7 +284,7 @@ static inline uint32_t fill_blend_opaque(uint32_t v, fill_rgb src, float as)
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);
     __m128 dk = fill_decode_rgb(&px);
-    fill_encode_rgb(&px, _mm_add_ps(dk, _mm_mul_ps(_mm_sub_ps(src, dk), _mm_set1_ps(as))));
+    cg_srgb_encode_rgb(&px, _mm_add_ps(dk, _mm_mul_ps(_mm_sub_ps(src, dk), _mm_set1_ps(as))));
     memcpy(&v, &px, sizeof v);
     return v;
 }
@@ -307,7 +297,7 @@ static inline uint32_t fill_blend_translucent(uint32_t v, fill_rgb src, float as
     float ad = px.a * (1.0f / 255.0f) * (1 - as), a = as + ad;
     __m128 mix = _mm_add_ps(_mm_mul_ps(src, _mm_set1_ps(as)),
                             _mm_mul_ps(fill_decode_rgb(&px), _mm_set1_ps(ad)));
-    fill_encode_rgb(&px, _mm_mul_ps(mix, _mm_set1_ps(1 / a)));
+    cg_srgb_encode_rgb(&px, _mm_mul_ps(mix, _mm_set1_ps(1 / a)));
     px.a = (uint8_t)(a * 255.0f + 0.5f);
     memcpy(&v, &px, sizeof v);
     return v;

@@ -89,11 +89,7 @@ typedef struct gouraud_plane {
  * rounds it, so the pictures are identical, with a quarter of the work. */
 static inline void encode_store(cg_rgba8 *p, __m128 v)
 {
-    uint8_t rgb[3];
-    cg_srgb_encode_rgb(v, rgb);
-    p->r = rgb[0];
-    p->g = rgb[1];
-    p->b = rgb[2];
+    cg_srgb_encode_rgb(p, v);
     p->a = 255;
 }
 #endif

@@ -888,6 +888,38 @@ static void rules_and_paints(void)
     cg_image_free(im);
 }
 
+/* Two distinct points a subnormal distance apart: the segment's direction
+ * is still exact (the reciprocal of its length would overflow and give NaN
+ * outline points).  Found by fuzz_fill. */
+static void tiny_segments(void)
+{
+    const double tiny = 4.9406564584124654e-324, small = 1e-300;
+    for (int diagonal = 0; diagonal < 2; diagonal++) {
+        cg_image *a, *b;
+        cg_image_create(&a, 16, 16, CG_PIXEL_RGBA8);
+        cg_image_create(&b, 16, 16, CG_PIXEL_RGBA8);
+        cg_path *pa, *pb;
+        cg_path_create(&pa);
+        cg_path_create(&pb);
+        /* no move: the path starts at the origin, as in SVG */
+        cg_path_line_to(pa, tiny, diagonal ? tiny : 0);
+        cg_path_line_to(pa, 12, 12);
+        cg_path_line_to(pb, small, diagonal ? small : 0);
+        cg_path_line_to(pb, 12, 12);
+        cg_stroke_style s = cg_stroke_style_default();
+        s.width = 3;
+        cg_paint paint = cg_paint_solid(white);
+        CHECK(cg_stroke_path(a, pa, &s, &paint) == CG_OK);
+        CHECK(cg_stroke_path(b, pb, &s, &paint) == CG_OK);
+        CHECK(memcmp(a->data, b->data, a->stride * 16) == 0);
+        CHECK(cg_image_get_rgba8(a, 6, 6).a == 255);
+        cg_path_free(pa);
+        cg_path_free(pb);
+        cg_image_free(a);
+        cg_image_free(b);
+    }
+}
+
 int main(void)
 {
     coverage_is_area();
@@ -895,6 +927,7 @@ int main(void)
     split_aa();
     strokes();
     bad_strokes();
+    tiny_segments();
     svg_paths();
     curves();
     aa_blending();

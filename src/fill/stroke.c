@@ -18,9 +18,16 @@ typedef struct stroker {
     fill_polylines *out;
 } stroker;
 
+/* The direction from a to b.  Tiny differences are scaled up by a power of
+ * two first (exactly): for two distinct points a subnormal distance apart,
+ * the reciprocal of the length would overflow to infinity (0 * inf = NaN)
+ * and the length itself would be rounded to a few bits. */
 static cg_vec2 unit(cg_vec2 a, cg_vec2 b)
 {
-    return cg_vec2_normalize(cg_vec2_sub(b, a));
+    cg_vec2 d = cg_vec2_sub(b, a);
+    if (fabs(d.x) < 0x1p-500 && fabs(d.y) < 0x1p-500)
+        d = cg_vec2_scale(d, 0x1p600);
+    return cg_vec2_normalize(d);
 }
 
 /* Left normal of direction u scaled to half the width. */

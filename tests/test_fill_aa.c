@@ -920,6 +920,41 @@ static void tiny_segments(void)
     }
 }
 
+/* A path ending with a quadratic piece: flattening read two coordinates
+ * beyond it (a cubic's), past the end of the coordinate array when that was
+ * full (AddressSanitizer).  Every count of lines before the quad meets a
+ * full array once; filling with and without a final close must agree.
+ * Found by fuzz_fill. */
+static void final_quads(void)
+{
+    for (int lines = 0; lines < 70; lines++) {
+        cg_path *open_path, *closed;
+        cg_path_create(&open_path);
+        cg_path_create(&closed);
+        cg_path *both[2] = {open_path, closed};
+        for (int k = 0; k < 2; k++) {
+            cg_path_move_to(both[k], 2, 2);
+            for (int i = 0; i < lines; i++)
+                cg_path_line_to(both[k], 2 + (i % 7), 14 - (i % 5));
+            cg_path_quad_to(both[k], 16, 2, 14, 14);
+        }
+        cg_path_close(closed);
+        cg_image *a, *b;
+        cg_image_create(&a, 16, 16, CG_PIXEL_RGBA8);
+        cg_image_create(&b, 16, 16, CG_PIXEL_RGBA8);
+        cg_paint paint = cg_paint_solid(white);
+        CHECK(cg_fill_path(a, open_path, CG_FILL_NONZERO, &paint) == CG_OK);
+        CHECK(cg_fill_path(b, closed, CG_FILL_NONZERO, &paint) == CG_OK);
+        CHECK(memcmp(a->data, b->data, a->stride * 16) == 0);
+        cg_stroke_style s = cg_stroke_style_default();
+        CHECK(cg_stroke_path(a, open_path, &s, &paint) == CG_OK);
+        cg_path_free(open_path);
+        cg_path_free(closed);
+        cg_image_free(a);
+        cg_image_free(b);
+    }
+}
+
 int main(void)
 {
     coverage_is_area();
@@ -930,6 +965,7 @@ int main(void)
     tiny_segments();
     svg_paths();
     curves();
+    final_quads();
     aa_blending();
     aa_blending_reused();
     aa_blend_exact();

@@ -474,7 +474,10 @@ cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_cl
             break;
         case VERB_QUAD:
         case VERB_CUBIC: {
-            cg_vec2 control[4] = {current, {c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]}};
+            /* a quad has four coordinates: read c[4], c[5] for cubics only */
+            cg_vec2 control[4] = {current, {c[0], c[1]}, {c[2], c[3]}, {0, 0}};
+            if (verb == VERB_CUBIC)
+                control[3] = cg_vec2_make(c[4], c[5]);
             status = bezier_piece(out, control, verb == VERB_QUAD ? 3 : 4, tolerance, box, 0);
             break;
         }

@@ -955,6 +955,39 @@ static void final_quads(void)
     }
 }
 
+/* Fine dashes with round caps of a huge width: every dash's two caps had
+ * up to 100,000 points each, so 1,000 dashes asked for gigabytes.  Refused
+ * like too many dashes; the same dashes with butt caps or a small width
+ * draw.  Found by fuzz_fill. */
+static void dash_cap_limit(void)
+{
+    cg_path *path;
+    cg_path_create(&path);
+    cg_path_move_to(path, 0, 8);
+    cg_path_line_to(path, 1000, 8);
+    cg_image *im;
+    cg_image_create(&im, 16, 16, CG_PIXEL_RGBA8);
+    cg_paint paint = cg_paint_solid(white);
+    double dash[1] = {0.5};
+    cg_stroke_style s = cg_stroke_style_default();
+    s.dashes = dash;
+    s.dash_count = 1;
+    s.cap = CG_CAP_ROUND;
+    s.width = 274877906944.0;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_ERANGE);
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++)
+            CHECK(cg_image_get_rgba8(im, x, y).a == 0);
+    s.cap = CG_CAP_BUTT;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_OK);
+    CHECK(cg_image_get_rgba8(im, 8, 8).a > 0 && cg_image_get_rgba8(im, 9, 8).a > 0 /* half of each pixel */);
+    s.cap = CG_CAP_ROUND;
+    s.width = 2;
+    CHECK(cg_stroke_path(im, path, &s, &paint) == CG_OK);
+    cg_path_free(path);
+    cg_image_free(im);
+}
+
 int main(void)
 {
     coverage_is_area();
@@ -963,6 +996,7 @@ int main(void)
     strokes();
     bad_strokes();
     tiny_segments();
+    dash_cap_limit();
     svg_paths();
     curves();
     final_quads();

@@ -284,7 +284,7 @@ cg_status cg_path_svg_arc_to(cg_path *path, double rx, double ry, double rotatio
 
 /* Number of chords for an arc of radius r through |sweep| radians so that
  * each chord's sagitta r (1 - cos(step / 2)) stays within tolerance. */
-static long arc_steps(double r, double sweep, double tolerance)
+long fill_arc_steps(double r, double sweep, double tolerance)
 {
     double step = tolerance < r ? 2 * acos(1 - tolerance / r) : CG_PI / 2;
     if (step > CG_PI / 2)
@@ -355,7 +355,7 @@ static cg_status ellipse_piece(fill_polylines *set, const double *a, double t0, 
                                                    box, depth + 1);
         }
     }
-    long n = arc_steps(r, dt, tolerance);
+    long n = fill_arc_steps(r, dt, tolerance);
     for (long i = 1; i < n; i++) {
         cg_status status = fill_polylines_add(set, ellipse_at(a, t0 + dt * (double)i / (double)n));
         if (status != CG_OK)
@@ -444,7 +444,7 @@ static cg_status bezier_piece(fill_polylines *set, const cg_vec2 *c, int n, doub
 cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, double a1,
                           double tolerance)
 {
-    long n = arc_steps(r, a1 - a0, tolerance);
+    long n = fill_arc_steps(r, a1 - a0, tolerance);
     for (long i = 1; i < n; i++) {
         double t = a0 + (a1 - a0) * (double)i / (double)n;
         cg_status status = fill_polylines_add(set, cg_vec2_make(c.x + r * cos(t), c.y + r * sin(t)));

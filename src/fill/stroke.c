@@ -183,7 +183,7 @@ static cg_status stroke_closed(stroker *s, const cg_vec2 *p, size_t m)
 /* Cuts the polyline p[0..m) (closed: with the segment back to p[0]) into
  * dashes, appended to dashes as open polylines. */
 static cg_status cut_dashes(const cg_stroke_style *style, const cg_vec2 *p, size_t m, int closed,
-                            fill_polylines *dashes)
+                            double cap_points, fill_polylines *dashes)
 {
     double pattern[64];
     int count = style->dash_count;
@@ -200,12 +200,14 @@ static cg_status cut_dashes(const cg_stroke_style *style, const cg_vec2 *p, size
     for (int i = 0; i < count; i++)
         period += pattern[i];
     /* Bounded work and memory: refuse patterns so fine for the path's length
-     * that it would need over 400,000 dashes. */
+     * that it would need over 400,000 dashes, or whose dashes' round caps
+     * (cap_points points each dash) would need over 4,000,000 points. */
     double length = 0;
     size_t segments = closed ? m : m - 1;
     for (size_t i = 0; i < segments; i++)
         length += cg_vec2_length(cg_vec2_sub(p[(i + 1) % m], p[i]));
-    if (length / period * (count / 2) > 4e5)
+    double needed = length / period * (count / 2);
+    if (needed > 4e5 || needed * cap_points > 4e6)
         return CG_ERANGE;
     double phase = fmod(style->dash_offset, period);
     if (phase < 0)
@@ -319,6 +321,10 @@ cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style 
         period += style->dashes[i];
     int dashed = style->dash_count > 0 && period > 0;
     stroker s = {style, style->width / 2, tolerance, out};
+    /* the points of a dash's two round caps */
+    double cap_points = style->cap == CG_CAP_ROUND
+                            ? 2.0 * (double)fill_arc_steps(s.half, CG_PI, tolerance)
+                            : 0;
     fill_polylines buffer = {0}, dashes = {0};
     for (size_t i = 0; status == CG_OK && i < in->line_count; i++) {
         const fill_polyline *l = &in->lines[i];
@@ -333,7 +339,7 @@ cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style 
             status = stroke_dot(&s, p[0]);
         } else if (dashed) {
             fill_polylines_reset(&dashes);
-            status = cut_dashes(style, p, m, l->closed, &dashes);
+            status = cut_dashes(style, p, m, l->closed, cap_points, &dashes);
             for (size_t d = 0; status == CG_OK && d < dashes.line_count; d++) {
                 if (dashes.lines[d].count == 0)
                     continue;

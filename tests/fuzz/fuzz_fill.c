@@ -22,10 +22,15 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size);
+
+/* FUZZ_TRACE=1 in the environment prints each operation (to replay a
+ * finding). */
+static int trace;
 
 #define GUARD 64
 #define GUARD_BYTE 0xA5
@@ -258,21 +263,24 @@ static cg_status svg_path(reader *r, cg_path *path)
     cg_error err;
     int empty = cg_path_is_empty(path);
     cg_status s = cg_path_append_svg(path, text, &err);
+    if (trace)
+        fprintf(stderr, "svg '%s' -> %d\n", text, s);
     check_status(s);
     if (s != CG_OK)
         check(err.status == s && err.message[0] != '\0' && cg_path_is_empty(path) == empty);
     return s;
 }
 
-/* A path built through the API; *bad is set when an argument had a bad
- * number (the call must then have failed). */
+/* A path built through the API; a move, line or curve with a bad number
+ * must be refused. */
 static void api_path(reader *r, cg_path *path)
 {
     int count = (int)(byte(r) % 6) + 1;
     for (int i = 0; i < count && r->n > 0; i++) {
         unsigned op = byte(r) % 7;
         double v[7];
-        int used = op == 0 || op == 1 ? 2 : op == 2 ? 4 : op == 3 ? 6 : op == 4 ? 5 : op == 5 ? 7 : 0;
+        static const int arguments[7] = {2, 2, 4, 6, 5, 7, 0};
+        int used = arguments[op];
         int bad = 0;
         for (int k = 0; k < used; k++) {
             v[k] = coord(r);
@@ -290,11 +298,18 @@ static void api_path(reader *r, cg_path *path)
             v[4] *= 0.25;
             s = cg_path_arc(path, v[0], v[1], v[2], v[3], v[4]);
             break;
-        case 5:
-            s = cg_path_svg_arc_to(path, v[0], v[1], v[2], (int)(byte(r) & 1), (int)(byte(r) & 1),
-                                   v[5], v[6]);
+        case 5: {
+            int large = (int)(byte(r) & 1), sweep = (int)(byte(r) & 1);
+            s = cg_path_svg_arc_to(path, v[0], v[1], v[2], large, sweep, v[5], v[6]);
             break;
+        }
         default: s = cg_path_close(path); break;
+        }
+        if (trace) {
+            fprintf(stderr, "path op %u:", op);
+            for (int k = 0; k < used; k++)
+                fprintf(stderr, " %.17g", v[k]);
+            fprintf(stderr, " -> %d\n", s);
         }
         check_status(s);
         if (bad && op <= 3)
@@ -331,11 +346,23 @@ static int read_style(reader *r, cg_stroke_style *st, double dashes[5])
         st->dash_count = n;
         st->dash_offset = (double)(int)(byte(r) % 64) - 16.0;
     }
+    if (trace) {
+        fprintf(stderr, "style width %.17g join %d cap %d miter %.17g dashes", st->width,
+                st->join, st->cap, st->miter_limit);
+        for (int i = 0; i < st->dash_count; i++)
+            fprintf(stderr, " %.17g", dashes[i]);
+        fprintf(stderr, " offset %.17g\n", st->dash_offset);
+    }
     return bad;
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 {
+    static int traced;
+    if (!traced) {
+        trace = getenv("FUZZ_TRACE") != NULL;
+        traced = 1;
+    }
     reader r = {data, size};
     int w = (int)(byte(&r) % MAX_SIDE) + 1, h = (int)(byte(&r) % MAX_SIDE) + 1;
     unsigned layout = byte(&r);
@@ -395,6 +422,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         draw_args a;
         memset(&a, 0, sizeof a);
         a.rule = rule;
+        if (trace)
+            fprintf(stderr, "op %u (%s)\n", code % 8, rule ? "non-zero" : "even-odd");
         switch (code % 8) {
         case 0:
         case 1:

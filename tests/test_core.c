@@ -3,6 +3,7 @@
 #include "cg.h"
 #include "check.h"
 
+#include <float.h>
 #include <string.h>
 
 static cg_mat4 random_mat4(check_rng *r, double scale)
@@ -166,6 +167,52 @@ static void test_vectors(void)
     CHECK(zero.x == 0 && zero.y == 0 && zero.z == 0);
     CHECK_NEAR(cg_vec2_cross(cg_vec2_make(1, 0), cg_vec2_make(0, 1)), 1, 0);
     CHECK_NEAR(cg_vec2_length(cg_vec2_make(3e300, 4e300)), 5e300, 1e286);
+
+    /* Unit length and the same direction at every scale, subnormal to
+     * near-overflow: v = u * 2^k for a random unit-ish u. */
+    check_rng r = {91};
+    int bad2 = 0, bad3 = 0;
+    for (int i = 0; i < 20000; i++) {
+        int k = (int)check_rng_range(&r, -1070, 1020);
+        double s = ldexp(1, k);
+        cg_vec2 u2 = cg_vec2_make(check_rng_range(&r, -1, 1), check_rng_range(&r, -1, 1));
+        cg_vec3 u3 = cg_vec3_make(check_rng_range(&r, -1, 1), check_rng_range(&r, -1, 1),
+                                  check_rng_range(&r, -1, 1));
+        if (i % 7 == 0)
+            u2.y = u3.y = u3.z = 0; /* along an axis */
+        if (fabs(u2.x) < 1e-3 && fabs(u2.y) < 1e-3)
+            continue;
+        if (cg_vec3_length(u3) < 1e-3)
+            continue;
+        /* the scaled vector as stored (subnormal components lose bits) */
+        cg_vec2 v2 = cg_vec2_scale(u2, s);
+        cg_vec3 v3 = cg_vec3_scale(u3, s);
+        cg_vec2 n2 = cg_vec2_normalize(v2);
+        cg_vec3 n3 = cg_vec3_normalize(v3);
+        cg_vec2 w2 = cg_vec2_make(ldexp(v2.x, -k), ldexp(v2.y, -k)); /* exact */
+        cg_vec3 w3 = cg_vec3_make(ldexp(v3.x, -k), ldexp(v3.y, -k), ldexp(v3.z, -k));
+        cg_vec2 e2 = cg_vec2_scale(w2, 1 / cg_vec2_length(w2));
+        cg_vec3 e3 = cg_vec3_scale(w3, 1 / cg_vec3_length(w3));
+        bad2 += !(fabs(n2.x - e2.x) <= 1e-15 && fabs(n2.y - e2.y) <= 1e-15);
+        bad3 += !(fabs(n3.x - e3.x) <= 1e-15 && fabs(n3.y - e3.y) <= 1e-15
+                  && fabs(n3.z - e3.z) <= 1e-15);
+    }
+    CHECK_EQ_INT(bad2, 0);
+    CHECK_EQ_INT(bad3, 0);
+    cg_vec2 tiny = cg_vec2_normalize(cg_vec2_make(4.9e-324, 0));
+    CHECK(tiny.x == 1 && tiny.y == 0);
+    cg_vec3 tiny3 = cg_vec3_normalize(cg_vec3_make(0, -4.9e-324, 0));
+    CHECK(tiny3.x == 0 && tiny3.y == -1 && tiny3.z == 0);
+    cg_vec3 huge3 = cg_vec3_normalize(cg_vec3_make(DBL_MAX, DBL_MAX, 0));
+    CHECK_NEAR(huge3.x, sqrt(0.5), 1e-15);
+    CHECK_NEAR(huge3.y, sqrt(0.5), 1e-15);
+    cg_vec2 huge2 = cg_vec2_normalize(cg_vec2_make(-DBL_MAX, DBL_MAX));
+    CHECK_NEAR(huge2.x, -sqrt(0.5), 1e-15);
+    CHECK_NEAR(huge2.y, sqrt(0.5), 1e-15);
+    cg_vec3 inf3 = cg_vec3_normalize(cg_vec3_make(INFINITY, 1, 0));
+    CHECK(isinf(inf3.x) && inf3.y == 1 && inf3.z == 0);
+    cg_vec2 nan2 = cg_vec2_normalize(cg_vec2_make(NAN, 1));
+    CHECK(isnan(nan2.x) && nan2.y == 1);
 }
 
 static void test_status_strings(void)

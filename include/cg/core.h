@@ -73,7 +73,8 @@ static inline double cg_vec2_dot(cg_vec2 a, cg_vec2 b) { return a.x * b.x + a.y 
  * in a y-up frame. */
 static inline double cg_vec2_cross(cg_vec2 a, cg_vec2 b) { return a.x * b.y - a.y * b.x; }
 static inline double cg_vec2_length(cg_vec2 a) { return hypot(a.x, a.y); }
-/* Unit vector in the direction of a; the zero vector stays zero. */
+/* Unit vector in the direction of a, for any finite length however tiny or
+ * huge; zero, NaN and infinite vectors are returned as they are. */
 cg_vec2 cg_vec2_normalize(cg_vec2 a);
 
 static inline cg_vec3 cg_vec3_make(double x, double y, double z) { cg_vec3 v = {x, y, z}; return v; }
@@ -87,7 +88,8 @@ static inline cg_vec3 cg_vec3_cross(cg_vec3 a, cg_vec3 b)
     return cg_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 static inline double cg_vec3_length(cg_vec3 a) { return sqrt(cg_vec3_dot(a, a)); }
-/* Unit vector in the direction of a; the zero vector stays zero. */
+/* Unit vector in the direction of a, for any finite length however tiny or
+ * huge; zero, NaN and infinite vectors are returned as they are. */
 cg_vec3 cg_vec3_normalize(cg_vec3 a);
 
 static inline cg_vec4 cg_vec4_make(double x, double y, double z, double w) { cg_vec4 v = {x, y, z, w}; return v; }

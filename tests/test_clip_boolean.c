@@ -235,6 +235,21 @@ static void fixed_cases(void)
     cg_polygon_set64_add_ring(&e, L, 3, 1);
     CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    /* only rings without points (so no point array): empty, no error (found
+     * by fuzz_clip_boolean) */
+    cg_polygon_set64 z = {0};
+    cg_polygon_set64_add_ring(&z, NULL, 0, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &z, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    CHECK(cg_clip_boolean64(CG_CLIP_INTERSECTION, &b, CG_CLIP_NON_ZERO, &z, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_EQ_INT(r.ring_count, 0);
+    cg_polygon_set zd = {0}, rd = {0};
+    cg_polygon_set_add_ring(&zd, NULL, 0, 1);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &zd, CG_CLIP_NON_ZERO, &zd, CG_CLIP_NON_ZERO, 0, &rd) == CG_OK);
+    CHECK_EQ_INT(rd.ring_count, 0);
+    cg_polygon_set64_clear(&z);
+    cg_polygon_set_clear(&zd);
+    cg_polygon_set_clear(&rd);
     /* out of range */
     cg_point64 Big[] = {{0, 0}, {CG_CLIP_MAX_COORD + 1, 0}, {0, 5}};
     cg_polygon_set64 big = {0};

@@ -2599,8 +2599,8 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
 {
     if (!set)
         return CG_OK;
-    if (set->ring_count && (!set->ring_start || !set->points))
-        return CG_EINVAL;
+    if (set->ring_count && (!set->ring_start || (!set->points && set->point_count)))
+        return CG_EINVAL; /* (rings with no points need no point array) */
     for (size_t r = 0; r < set->ring_count; r++) {
         size_t a = set->ring_start[r], b = set->ring_start[r + 1];
         if (b < a || b > set->point_count)

@@ -5,6 +5,7 @@
 #include "cg/clip.h"
 #include "check.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 __extension__ typedef __int128 i128;
@@ -600,6 +601,34 @@ static void smooth(void)
     printf("smooth: 16 rounds, %ld membership checks\n", membership_checks);
 }
 
+/* A walk of 1,480 short steps (-3..3) on 0..4096, the generator of
+ * fuzz_clip_boolean: a pass resumed at a checkpoint with no active edge
+ * (no checkpoint edge logged) offset a null pointer (UBSan). */
+static void checkpoint_without_edges(void)
+{
+    cg_point64 *pts = malloc(1480 * sizeof *pts);
+    uint64_t s = 0xff;
+    int64_t x = 2048, y = 2048;
+    for (int i = 0; i < 1480; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        x += (int64_t)(s % 7) - 3;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        y += (int64_t)(s % 7) - 3;
+        x = x < 0 ? 0 : x > 4096 ? 4096 : x;
+        y = y < 0 ? 0 : y > 4096 ? 4096 : y;
+        pts[i].x = x;
+        pts[i].y = y;
+    }
+    cg_polygon_set64 a = {0}, e = {0};
+    cg_polygon_set64_add_ring(&a, pts, 1480, 1);
+    long checks = 0;
+    check_rng rng = {11};
+    check_round("walk", 0, &a, CG_CLIP_EVEN_ODD, &e, CG_CLIP_EVEN_ODD, &rng, 4096, 1, 64, 8 * 1480,
+                &checks);
+    cg_polygon_set64_clear(&a);
+    free(pts);
+}
+
 int main(void)
 {
     extremes();
@@ -610,5 +639,6 @@ int main(void)
     stress();
     crowded();
     smooth();
+    checkpoint_without_edges();
     return check_finish();
 }

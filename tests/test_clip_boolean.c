@@ -5,6 +5,7 @@
 #include "cg/clip.h"
 #include "check.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 __extension__ typedef __int128 i128;
@@ -235,6 +236,21 @@ static void fixed_cases(void)
     cg_polygon_set64_add_ring(&e, L, 3, 1);
     CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    /* only rings without points (so no point array): empty, no error (found
+     * by fuzz_clip_boolean) */
+    cg_polygon_set64 z = {0};
+    cg_polygon_set64_add_ring(&z, NULL, 0, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &z, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
+    CHECK(cg_clip_boolean64(CG_CLIP_INTERSECTION, &b, CG_CLIP_NON_ZERO, &z, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_EQ_INT(r.ring_count, 0);
+    cg_polygon_set zd = {0}, rd = {0};
+    cg_polygon_set_add_ring(&zd, NULL, 0, 1);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &zd, CG_CLIP_NON_ZERO, &zd, CG_CLIP_NON_ZERO, 0, &rd) == CG_OK);
+    CHECK_EQ_INT(rd.ring_count, 0);
+    cg_polygon_set64_clear(&z);
+    cg_polygon_set_clear(&zd);
+    cg_polygon_set_clear(&rd);
     /* out of range */
     cg_point64 Big[] = {{0, 0}, {CG_CLIP_MAX_COORD + 1, 0}, {0, 5}};
     cg_polygon_set64 big = {0};
@@ -585,6 +601,34 @@ static void smooth(void)
     printf("smooth: 16 rounds, %ld membership checks\n", membership_checks);
 }
 
+/* A walk of 1,480 short steps (-3..3) on 0..4096, the generator of
+ * fuzz_clip_boolean: a pass resumed at a checkpoint with no active edge
+ * (no checkpoint edge logged) offset a null pointer (UBSan). */
+static void checkpoint_without_edges(void)
+{
+    cg_point64 *pts = malloc(1480 * sizeof *pts);
+    uint64_t s = 0xff;
+    int64_t x = 2048, y = 2048;
+    for (int i = 0; i < 1480; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        x += (int64_t)(s % 7) - 3;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        y += (int64_t)(s % 7) - 3;
+        x = x < 0 ? 0 : x > 4096 ? 4096 : x;
+        y = y < 0 ? 0 : y > 4096 ? 4096 : y;
+        pts[i].x = x;
+        pts[i].y = y;
+    }
+    cg_polygon_set64 a = {0}, e = {0};
+    cg_polygon_set64_add_ring(&a, pts, 1480, 1);
+    long checks = 0;
+    check_rng rng = {11};
+    check_round("walk", 0, &a, CG_CLIP_EVEN_ODD, &e, CG_CLIP_EVEN_ODD, &rng, 4096, 1, 64, 8 * 1480,
+                &checks);
+    cg_polygon_set64_clear(&a);
+    free(pts);
+}
+
 int main(void)
 {
     extremes();
@@ -595,5 +639,6 @@ int main(void)
     stress();
     crowded();
     smooth();
+    checkpoint_without_edges();
     return check_finish();
 }

@@ -933,7 +933,8 @@ static size_t ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
     }
     if (lo == s->nys || s->ys[lo] != c->y)
         return 0;
-    const ck_edge *r = L->ed + c->first;
+    /* (L->ed is NULL when no checkpoint logged an edge) */
+    const ck_edge *r = c->n ? L->ed + c->first : NULL;
     for (size_t k = 0; k < c->n; k++)
         if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] == UINT32_MAX)
             return 0; /* (cannot happen: no active edge there was split) */
@@ -2599,8 +2600,8 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
 {
     if (!set)
         return CG_OK;
-    if (set->ring_count && (!set->ring_start || !set->points))
-        return CG_EINVAL;
+    if (set->ring_count && (!set->ring_start || (!set->points && set->point_count)))
+        return CG_EINVAL; /* (rings with no points need no point array) */
     for (size_t r = 0; r < set->ring_count; r++) {
         size_t a = set->ring_start[r], b = set->ring_start[r + 1];
         if (b < a || b > set->point_count)

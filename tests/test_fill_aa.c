@@ -738,8 +738,8 @@ static void aa_blend_exact(void)
 }
 
 /* Opaque paints over opaque images of many colours through one reused
- * rasterizer, paints alternating between colours (so blends are looked up
- * in tables built per colour and coverage): every pixel equals
+ * rasterizer, paints alternating between colours (so no state a rasterizer
+ * keeps from one paint may leak into the next): every pixel equals
  * cg_image_blend of the paint with alpha = the pixel's coverage, taken from
  * the same polygon filled over a transparent image. */
 static void aa_opaque_over_opaque(void)

@@ -62,11 +62,11 @@ typedef struct fill_clip {
 cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_clip *box,
                             fill_polylines *out);
 
-/* Appends the points of the circular arc around c of radius r from angle a0
- * to a1 (excluding the start point) within tolerance. */
 /* Chords of an arc of radius r through |sweep| radians within tolerance
  * (at least 1, at most 100,000). */
 long fill_arc_steps(double r, double sweep, double tolerance);
+/* Appends the points of the circular arc around c of radius r from angle a0
+ * to a1 (excluding the start point) within tolerance. */
 cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, double a1,
                           double tolerance);
 

@@ -19,9 +19,10 @@ typedef struct stroker {
 } stroker;
 
 /* The direction from a to b.  Tiny differences are scaled up by a power of
- * two first (exactly): for two distinct points a subnormal distance apart,
- * the reciprocal of the length would overflow to infinity (0 * inf = NaN)
- * and the length itself would be rounded to a few bits. */
+ * two first (exactly), so that the length of a difference of a subnormal
+ * size is computed to full precision.  (This guarded against NaN directions
+ * before cg_vec2_normalize handled such lengths itself; it stays because
+ * removing it would move some of these directions by their last bit.) */
 static cg_vec2 unit(cg_vec2 a, cg_vec2 b)
 {
     cg_vec2 d = cg_vec2_sub(b, a);

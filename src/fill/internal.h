@@ -187,9 +187,9 @@ struct cg_rasterizer {
     fill_polylines flat, outline;
     /* Solid paint over RGBA8: a direct-mapped cache of fill_solid_pixel's
      * results for the source colour blend_src, keyed by destination value,
-     * coverage and generation (a new source colour starts a new one). */
+     * coverage and generation (a new source colour starts a new one;
+     * generation 0, before the first solid paint, has no source colour). */
     uint32_t blend_src, blend_gen;
-    int blend_src_valid;
     uint64_t blend_key[FILL_BLEND_CACHE];
     uint32_t blend_value[FILL_BLEND_CACHE];
 };
@@ -253,15 +253,15 @@ static inline void fill_solid_pixel(const fill_painter *p, cg_rgba8 *d, int c)
     fill_blend8(d, p->r, p->g, p->b, as);
 }
 
-/* The next generation of the blend cache (the keys are cleared when the
- * counter wraps, so a stale key never matches; generation 0 is never used). */
-static inline uint32_t fill_next_generation(struct cg_rasterizer *r, uint32_t gen)
+/* Starts the next generation of the blend cache (the keys are cleared when
+ * the counter wraps, so a stale key never matches; generation 0 is never
+ * used again). */
+static inline void fill_next_generation(struct cg_rasterizer *r)
 {
-    if (++gen >= FILL_BLEND_GENERATIONS) {
+    if (++r->blend_gen >= FILL_BLEND_GENERATIONS) {
         memset(r->blend_key, 0, sizeof r->blend_key);
-        gen = 1;
+        r->blend_gen = 1;
     }
-    return gen;
 }
 
 /* fill_blend8 of a colour (linear r, g, b) at alpha as over pixel v (of
@@ -398,8 +398,6 @@ static FILL_INLINE uint32_t fill_solid_value(const fill_blend_state *s, uint32_t
         return v;
     }
     if (s->keep_same && ((v ^ s->full) & s->rgb_mask) == 0) {
-        if (v == s->full) /* over its own opaque colour: unchanged */
-            return v;
         /* a pixel of the paint's own colour: only its alpha changes (see
          * fill_solid_pixel) */
         cg_rgba8 px;

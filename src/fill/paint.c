@@ -133,10 +133,9 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->same_exact = cg_srgb_decode_table[paint->color.r] == p->r
                         && cg_srgb_decode_table[paint->color.g] == p->g
                         && cg_srgb_decode_table[paint->color.b] == p->b;
-        if (!r->blend_src_valid || r->blend_src != p->encoded) {
+        if (r->blend_gen == 0 || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
-            r->blend_src_valid = 1;
-            r->blend_gen = fill_next_generation(r, r->blend_gen);
+            fill_next_generation(r);
         }
         return CG_OK;
     }
@@ -259,9 +258,9 @@ static void gradient_span(const fill_painter *p, int y, int x0, int n, const uin
         if (image->format == CG_PIXEL_RGBA8) {
             cg_rgba8 *d = cg_image_row_rgba8(image, y) + x0 + i;
             if (as >= 1) {
-                d->r = cg_linear_to_srgb8(s->r);
-                d->g = cg_linear_to_srgb8(s->g);
-                d->b = cg_linear_to_srgb8(s->b);
+                d->r = cg_srgb_encode_unit(s->r);
+                d->g = cg_srgb_encode_unit(s->g);
+                d->b = cg_srgb_encode_unit(s->b);
                 d->a = 255;
             } else {
                 fill_blend8(d, s->r, s->g, s->b, as);

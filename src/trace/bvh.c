@@ -199,7 +199,6 @@ typedef struct builder {
     uint32_t *ids;
     bvh_node *nodes;
     size_t node_count;
-    int depth;
 } builder;
 
 static void set_node(bvh_node *node, const bbox *bounds)
@@ -590,8 +589,6 @@ static void build_node(builder *b, uint32_t index, size_t begin, size_t end, bbo
                        bbox centroids, int depth, int which)
 {
     for (;;) {
-        if (depth > b->depth)
-            b->depth = depth;
         split sp;
         const prim_ref *src = b->buf[which];
         if (!choose_split(src, b->buf[!which], begin, end, &bounds, &centroids, depth, &sp)) {
@@ -656,7 +653,6 @@ static int build_tree(builder *out, size_t n, int threads)
     job.b = b;
     job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
     job.b.node_count = 0;
-    job.b.depth = 0;
     job.begin = sp.mid;
     job.end = n;
     job.bounds = sp.right;
@@ -685,7 +681,6 @@ static int build_tree(builder *out, size_t n, int threads)
         b.nodes[shift + i] = node;
     }
     b.node_count += job.b.node_count;
-    b.depth = b.depth > job.b.depth ? b.depth : job.b.depth;
     free(job.b.nodes);
     *out = b;
     return 1;
@@ -848,8 +843,6 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
         for (size_t i = 0; i < 3 * triangle_count; i++)
             if (indices[i] >= vertex_count)
                 return CG_EINVAL;
-    if (triangle_count > SIZE_MAX / 2)
-        return CG_ERANGE;
     cg_bvh *bvh = calloc(1, sizeof *bvh);
     /* For large meshes both buffers of references are one block, which
      * afterwards holds the triangle blocks when they fit (most meshes):
@@ -894,14 +887,14 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     if (!joined)
         second = alloc_block(n, sizeof *refs, 0);
     builder b = {{refs, second}, alloc_block(n, sizeof(uint32_t), 0),
-                 alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0, 0};
+                 alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0};
     collapser c = {b.nodes, b.ids, positions, indices, NULL, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !build_tree(&b, n, threads))
         goto fail;
     size_t blocks = 0;
     for (size_t i = 0; i < b.node_count; i++)
-        blocks += (b.nodes[i].count + 3) / 4;
+        blocks += BLOCKS(b.nodes[i].count);
     if (blocks >= (BVH_LEAF >> 3)) {
         status = CG_ERANGE;
         goto fail;

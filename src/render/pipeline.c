@@ -195,13 +195,13 @@ static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float 
         g->c_step[j] = s1 * g->c[1][j] + s2 * g->c[2][j];
 }
 
-/* raster_mode is written once and specialized by render_raster for each
- * shading mode and image format: its constant arguments must reach the
- * per-pixel loop, so it is forced inline where the compiler allows. */
 /* Clipped to the tile, a triangle box at most this many pixels on each side
  * is rasterized pixel by pixel. */
 #define TINY 4
 
+/* raster_mode is written once and specialized by render_raster for each
+ * shading mode and image format: its constant arguments must reach the
+ * per-pixel loop, so it is forced inline where the compiler allows. */
 #if defined(__GNUC__)
 #define RENDER_SPECIALIZE __attribute__((always_inline)) inline
 #else
@@ -837,8 +837,6 @@ static void fill_rows(unsigned char *p, size_t stride, int rows, size_t bytes, _
  * drawn. */
 static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stream, int depth)
 {
-    const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
-                                 f->background[3]};
     size_t width = (size_t)(x1 - x0);
     size_t pixel = f->image->format == CG_PIXEL_RGBA8 ? sizeof(cg_rgba8) : sizeof(cg_rgbaf);
 #if defined(__SSE2__)
@@ -856,9 +854,10 @@ static void clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
                   _mm_castps_si128(_mm_set1_ps(INFINITY)), stream);
     fill_rows(f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel,
               f->image->stride, y1 - y0, width * pixel, color, stream);
-    (void)background;
 #else
     (void)stream;
+    const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
+                                 f->background[3]};
     /* The first row by hand, the others copied from it. */
     float *z0 = f->depth + (size_t)y0 * f->width + x0;
     if (depth)
@@ -1113,17 +1112,16 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     if (o->light_count == 0) {
         l->lights[1] = cg_render_key_light(*view);
         l->count = 2;
-        render_lighting_prepare(l);
-        return;
+    } else {
+        /* The options name the direction toward each light; cg_light the
+         * way its light travels. */
+        for (int i = 0; i < o->light_count; i++) {
+            double k = o->lights[i].intensity;
+            l->lights[i + 1] = cg_light_directional(cg_vec3_scale(o->lights[i].direction, -1),
+                                                    cg_vec3_make(k, k, k));
+        }
+        l->count = o->light_count + 1;
     }
-    /* The options name the direction toward each light; cg_light the way
-     * its light travels. */
-    for (int i = 0; i < o->light_count; i++) {
-        double k = o->lights[i].intensity;
-        l->lights[i + 1] = cg_light_directional(cg_vec3_scale(o->lights[i].direction, -1),
-                                                cg_vec3_make(k, k, k));
-    }
-    l->count = o->light_count + 1;
     render_lighting_prepare(l);
 }
 

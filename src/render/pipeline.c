@@ -464,6 +464,19 @@ static void *grow(void *buffer, size_t *capacity, size_t needed, size_t size)
     return p;
 }
 
+/* A buffer of the renderer kept between frames, with room for needed items
+ * of size bytes; its contents are not kept when it has to be replaced.  NULL
+ * (and capacity 0) when memory runs out. */
+static void *reserve(void *buffer, size_t *capacity, size_t needed, size_t size)
+{
+    if (needed <= *capacity)
+        return buffer;
+    free(buffer);
+    buffer = malloc(needed * size);
+    *capacity = buffer ? needed : 0;
+    return buffer;
+}
+
 /* Room for one more set-up triangle at the end of the chunk's list (with a
  * whole setup_triangle of slack after it, so that it may be written through
  * that type); NULL when memory runs out.  emit_setup keeps it. */
@@ -1158,21 +1171,12 @@ static cg_status frame_vertex_buffers(render_frame *f)
     cg_renderer *r = f->r;
     size_t count = r->vertex_count ? r->vertex_count : 1;
     size_t floats = count * (size_t)(f->attribute_count ? f->attribute_count : 1);
-    if (r->frame_vertex_capacity < count) {
-        free(r->frame_vertices);
-        r->frame_vertices = malloc(count * sizeof *r->frame_vertices);
-        r->frame_vertex_capacity = r->frame_vertices ? count : 0;
-    }
-    if (r->frame_attribute_capacity < floats) {
-        free(r->frame_attributes);
-        r->frame_attributes = malloc(floats * sizeof *r->frame_attributes);
-        r->frame_attribute_capacity = r->frame_attributes ? floats : 0;
-    }
-    if (r->frame_state_capacity < count) {
-        free(r->frame_states);
-        r->frame_states = malloc(count * sizeof *r->frame_states);
-        r->frame_state_capacity = r->frame_states ? count : 0;
-    }
+    r->frame_vertices = reserve(r->frame_vertices, &r->frame_vertex_capacity, count,
+                                sizeof *r->frame_vertices);
+    r->frame_attributes = reserve(r->frame_attributes, &r->frame_attribute_capacity, floats,
+                                  sizeof *r->frame_attributes);
+    r->frame_states = reserve(r->frame_states, &r->frame_state_capacity, count,
+                              sizeof *r->frame_states);
     if (!r->frame_vertices || !r->frame_attributes || !r->frame_states)
         return CG_ENOMEM;
     f->vertices = r->frame_vertices;
@@ -1276,9 +1280,7 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     /* Which tiles hold infinite depth from an earlier frame of this size. */
     int same_layout = r->depth_width == f.width && r->depth_height == f.height;
     if (r->clean_tile_capacity < (size_t)f.tile_count) {
-        free(r->clean_tiles);
-        r->clean_tiles = malloc((size_t)f.tile_count);
-        r->clean_tile_capacity = r->clean_tiles ? (size_t)f.tile_count : 0;
+        r->clean_tiles = reserve(r->clean_tiles, &r->clean_tile_capacity, (size_t)f.tile_count, 1);
         if (!r->clean_tiles)
             return CG_ENOMEM;
         same_layout = 0;

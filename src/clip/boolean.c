@@ -54,20 +54,10 @@ typedef struct hseg { int64_t y, x0, x1; } hseg;
 typedef struct splitpt { uint32_t edge; int64_t x, y; } splitpt;
 typedef struct piece { int64_t x0, y0, x1, y1; } piece;
 
-#define GROW(arr, n, cap, fail)                                                \
-    do {                                                                       \
-        if ((n) == (cap)) {                                                    \
-            size_t c_ = (cap) ? (cap) * 2 : 32;                                \
-            void *p_ = realloc((arr), c_ * sizeof *(arr));                     \
-            if (!p_)                                                           \
-                fail;                                                          \
-            (arr) = p_;                                                        \
-            (cap) = c_;                                                        \
-        }                                                                      \
-    } while (0)
-
-/* GROW for an array that may still be the caller's buffer `small` (on the
- * stack, for small inputs): moved to the heap when it grows. */
+/* Room for one more item in arr (n items, room for cap; `fail` runs when
+ * memory runs out).  arr may still be the caller's buffer `small` (on the
+ * stack, for small inputs): it moves to the heap when it grows.  GROW is the
+ * same for arrays that are on the heap from the start. */
 #define GROW_SMALL(arr, n, cap, small, fail)                                   \
     do {                                                                       \
         if ((n) == (cap)) {                                                    \
@@ -91,6 +81,8 @@ static void *grow_from(void *arr, const void *small, size_t n, size_t *cap, size
     *cap = c;
     return p;
 }
+
+#define GROW(arr, n, cap, fail) GROW_SMALL(arr, n, cap, NULL, fail)
 
 typedef struct engine {
     bedge *E;
@@ -848,14 +840,15 @@ static int classify_dirty(sweep *s, int64_t y, const uint32_t *above, size_t na,
     return 1;
 }
 
-/* Notes the state at the start of scanline y (before its events): 0 when
- * no more checkpoints are taken (budget spent or out of memory). */
+/* an active edge's run flags, as ck_edge.flags */
 static inline unsigned ck_flags(const sweep *s, uint32_t e)
 {
     return (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
            (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
 }
 
+/* Notes the state at the start of scanline y (before its events): 0 when
+ * no more checkpoints are taken (budget spent or out of memory). */
 static int ck_record(sweep *s, int64_t y)
 {
     ck_log *L = s->log;
@@ -1393,6 +1386,25 @@ static int light_sweep(sweep *s)
     return 1;
 }
 
+/* qsort, by straight insertion when n is small (the assembly's few rings;
+ * cmp is a total order, so the result is qsort's) */
+static void sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
+{
+    unsigned char v[64], *a = base;
+    if (n > 16 || size > sizeof v) {
+        qsort(base, n, size, cmp);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        size_t j = i;
+        memcpy(v, a + i * size, size);
+        for (; j > 0 && cmp(a + (j - 1) * size, v) > 0; j--)
+            memcpy(a + j * size, a + (j - 1) * size, size);
+        if (j != i)
+            memcpy(a + j * size, v, size);
+    }
+}
+
 /* Replaces every edge that has split points by its pieces. */
 typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
 
@@ -1477,8 +1489,6 @@ static int add_hot_pixel_splits(engine *g)
     return 1;
 }
 
-/* map[old edge] receives its new index, or UINT32_MAX when it was split
- * (the pieces come after the edges kept, in g->E[*kept..]). */
 /* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
  * when out of memory.  (The first few in the engine itself.) */
 static uint32_t add_orig(engine *g, const bedge *e)
@@ -1487,16 +1497,7 @@ static uint32_t add_orig(engine *g, const bedge *e)
         g->O = g->O_small;
         g->capo = sizeof g->O_small / sizeof g->O_small[0];
     }
-    if (g->no == g->capo) {
-        size_t c = 2 * g->capo;
-        int64_t(*o)[4] = g->O == g->O_small ? malloc(c * sizeof *o) : realloc(g->O, c * sizeof *o);
-        if (!o)
-            return NO_ORIG;
-        if (g->O == g->O_small)
-            memcpy(o, g->O_small, sizeof g->O_small);
-        g->O = o;
-        g->capo = c;
-    }
+    GROW_SMALL(g->O, g->no, g->capo, g->O_small, return NO_ORIG);
     int64_t *o = g->O[g->no];
     o[0] = e->xb;
     o[1] = e->yb;
@@ -1505,6 +1506,9 @@ static uint32_t add_orig(engine *g, const bedge *e)
     return (uint32_t)g->no++;
 }
 
+/* map[old edge] receives its new index, or UINT32_MAX when it was split
+ * (the pieces come after the edges kept, in g->E[*kept..]); mem (cap
+ * bytes, or NULL) is scratch. */
 static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
 {
     size_t old_ne = g->ne, ns = g->ns;
@@ -1554,17 +1558,7 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
-        if (m - 1 <= 16) { /* (few: insertion) */
-            for (size_t a = 2; a < m; a++) {
-                split_sort v = buf[a];
-                size_t b = a;
-                for (; b > 1 && cmp_along(&buf[b - 1], &v) > 0; b--)
-                    buf[b] = buf[b - 1];
-                buf[b] = v;
-            }
-        } else {
-            qsort(buf + 1, m - 1, sizeof *buf, cmp_along);
-        }
+        sort_few(buf + 1, m - 1, sizeof *buf, cmp_along);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
         /* the input edge of the pieces */
@@ -1636,25 +1630,6 @@ static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
 }
 
 typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
-/* qsort, by straight insertion when n is small (the assembly's few rings;
- * cmp is a total order, so the result is qsort's) */
-static void sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
-{
-    unsigned char v[64], *a = base;
-    if (n > 16 || size > sizeof v) {
-        qsort(base, n, size, cmp);
-        return;
-    }
-    for (size_t i = 1; i < n; i++) {
-        size_t j = i;
-        memcpy(v, a + i * size, size);
-        for (; j > 0 && cmp(a + (j - 1) * size, v) > 0; j--)
-            memcpy(a + j * size, a + (j - 1) * size, size);
-        if (j != i)
-            memcpy(a + j * size, v, size);
-    }
-}
-
 static int cmp_area(const void *a, const void *b)
 {
     const ring_by_area *x = a, *y = b;
@@ -2049,7 +2024,7 @@ static int assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         size_t *first_hole = (size_t *)(mem + off[14]);
         size_t *next_hole = first_hole + (nr + 1);
         int fail = 0;
-        if (!fail) {
+        {
             for (size_t r = 0; r < nr; r++)
                 first_hole[r] = (size_t)-1;
             for (size_t r = nr; r-- > 0;) {

@@ -111,7 +111,8 @@ static void read_set(reader *r, unsigned rings, unsigned shift, int specials,
         unsigned h = get(r);
         size_t n;
         if ((h & 0xe0) == 0xe0 && set->point_count + BIG_MIN <= TOTAL_MAX) {
-            n = BIG_MIN + (get(r) << 8 | get(r)) % (BIG_MAX - BIG_MIN + 1);
+            unsigned high = get(r); /* one call per operand: their order is unspecified */
+            n = BIG_MIN + (high << 8 | get(r)) % (BIG_MAX - BIG_MIN + 1);
             if (set->point_count + n > TOTAL_MAX)
                 n = TOTAL_MAX - set->point_count;
             uint64_t seed = 0;

@@ -110,6 +110,8 @@ static const char *op_name[4] = {"intersection", "union", "difference", "xor"};
  * one library alone, once per case, and --match TEXT keeps the cases whose
  * name contains TEXT. */
 static const char *only, *match;
+/* --cold: no untimed call before the timed ones (see compare) */
+static int cold;
 
 static void profile_one(const char *name, const shape *a, const shape *b, int op)
 {
@@ -146,7 +148,6 @@ static void profile_one(const char *name, const shape *a, const shape *b, int op
  * second call; from the third call on the memory is reused.  Without the
  * warm-up, a median of 3 calls is one of the first two, and a peer timed
  * after cg finds the heap grown already. */
-static int cold;
 static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
 {
     char name[128], note[160];

@@ -76,23 +76,43 @@ static void square(shape *s, int64_t x, int64_t y, int64_t side, int cw)
     add_ring(s, p, 4, !cw);
 }
 
-typedef struct job { const shape *a, *b; int op; cg_polygon_set64 result; void *peer; double area; } job;
+/* One timed unit: the operation on each of `pairs` pairs of shapes (a[k],
+ * b[k]); small cases take many pairs, so that a sample is long against the
+ * clock's own cost and one lucky or unlucky pair does not decide the row. */
+typedef struct job {
+    const shape *a, *b;
+    size_t pairs;
+    int op;
+    cg_polygon_set64 result;
+    void **peer;
+    double area; /* the sum over the pairs */
+} job;
 
 static void run_cg(void *c)
 {
     job *j = c;
-    cg_clip_boolean64((cg_clip_op)j->op, &j->a->set, CG_CLIP_NON_ZERO, &j->b->set, CG_CLIP_NON_ZERO,
-                      &j->result);
+    for (size_t k = 0; k < j->pairs; k++)
+        cg_clip_boolean64((cg_clip_op)j->op, &j->a[k].set, CG_CLIP_NON_ZERO, &j->b[k].set,
+                          CG_CLIP_NON_ZERO, &j->result);
 }
 static void run_clipper(void *c)
 {
     job *j = c;
-    j->area = peer_clipper_run(j->peer, j->op);
+    j->area = 0;
+    for (size_t k = 0; k < j->pairs; k++)
+        j->area += peer_clipper_run(j->peer[k], j->op);
 }
 static void run_geos(void *c)
 {
     job *j = c;
-    j->area = peer_geos_run(j->peer, j->op);
+    j->area = 0;
+    for (size_t k = 0; k < j->pairs; k++)
+        j->area += peer_geos_run(j->peer[k], j->op);
+}
+
+static peer_input input_of(const shape *s)
+{
+    return (peer_input){s->xy, s->len, s->set.ring_count};
 }
 
 typedef struct peer {
@@ -113,24 +133,56 @@ static const char *only, *match;
 /* --cold: no untimed call before the timed ones (see compare) */
 static int cold;
 
-static void profile_one(const char *name, const shape *a, const shape *b, int op)
+static void prepare_all(job *j, void *(*prepare)(const peer_input *, const peer_input *))
 {
-    job j = {a, b, op, {0}, NULL, 0};
-    peer_input pa = {a->xy, a->len, a->set.ring_count}, pb = {b->xy, b->len, b->set.ring_count};
+    j->peer = malloc(j->pairs * sizeof *j->peer);
+    for (size_t k = 0; k < j->pairs; k++) {
+        peer_input pa = input_of(&j->a[k]), pb = input_of(&j->b[k]);
+        j->peer[k] = prepare(&pa, &pb);
+    }
+}
+
+static void release_all(job *j, void (*release)(void *))
+{
+    for (size_t k = 0; k < j->pairs; k++)
+        release(j->peer[k]);
+    free(j->peer);
+    j->peer = NULL;
+}
+
+/* cg's result over all pairs: the summed area and vertex count (untimed) */
+static double cg_area(job *j, size_t *vertices)
+{
+    double area = 0;
+    *vertices = 0;
+    for (size_t k = 0; k < j->pairs; k++) {
+        cg_clip_boolean64((cg_clip_op)j->op, &j->a[k].set, CG_CLIP_NON_ZERO, &j->b[k].set,
+                          CG_CLIP_NON_ZERO, &j->result);
+        area += cg_polygon_set64_area(&j->result);
+        *vertices += j->result.point_count;
+    }
+    cg_polygon_set64_clear(&j->result);
+    return area;
+}
+
+static void profile_one(const char *name, const shape *a, const shape *b, size_t pairs, int op)
+{
+    job j = {a, b, pairs, op, {0}, NULL, 0};
     double area = 0;
     if (!strcmp(only, "cg")) {
         run_cg(&j);
-        area = cg_polygon_set64_area(&j.result);
         cg_polygon_set64_clear(&j.result);
+        size_t nv;
+        area = cg_area(&j, &nv);
     } else if (!strcmp(only, "clipper") && peer_clipper_available()) {
-        j.peer = peer_clipper_prepare(&pa, &pb);
+        prepare_all(&j, peer_clipper_prepare);
         run_clipper(&j);
-        peer_clipper_free(j.peer);
+        release_all(&j, peer_clipper_free);
         area = j.area;
     } else if (!strcmp(only, "geos") && peer_geos_available()) {
-        j.peer = peer_geos_prepare(&pa, &pb);
+        prepare_all(&j, peer_geos_prepare);
         run_geos(&j);
-        peer_geos_free(j.peer);
+        release_all(&j, peer_geos_free);
         area = j.area;
     } else {
         fprintf(stderr, "bench_clip: --only %s: unknown or not installed\n", only);
@@ -148,24 +200,24 @@ static void profile_one(const char *name, const shape *a, const shape *b, int op
  * second call; from the third call on the memory is reused.  Without the
  * warm-up, a median of 3 calls is one of the first two, and a peer timed
  * after cg finds the heap grown already. */
-static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
+static void compare_pairs(const char *what, const shape *a, const shape *b, size_t pairs, int op,
+                          int runs)
 {
     char name[128], note[160];
     snprintf(name, sizeof name, "clip %s: %s", op_name[op], what);
     if (match && !strstr(name, match))
         return;
     if (only) {
-        profile_one(name, a, b, op);
+        profile_one(name, a, b, pairs, op);
         return;
     }
-    job j = {a, b, op, {0}, NULL, 0};
+    job j = {a, b, pairs, op, {0}, NULL, 0};
     if (!cold)
         run_cg(&j);
-    double t_cg = bench_median_clock(run_cg, &j, runs, CLOCK_PROCESS_CPUTIME_ID);
-    double area_cg = cg_polygon_set64_area(&j.result);
-    size_t nv = j.result.point_count;
+    double t_cg = bench_median_clock(run_cg, &j, runs, CLOCK_PROCESS_CPUTIME_ID) / (double)pairs;
     cg_polygon_set64_clear(&j.result);
-    peer_input pa = {a->xy, a->len, a->set.ring_count}, pb = {b->xy, b->len, b->set.ring_count};
+    size_t nv;
+    double area_cg = cg_area(&j, &nv);
     const peer peers[2] = {
         {"Clipper 6.4", "Clipper (libpolyclipping-dev) not installed", peer_clipper_available,
          peer_clipper_prepare, run_clipper, peer_clipper_free, runs},
@@ -178,15 +230,20 @@ static void compare(const char *what, const shape *a, const shape *b, int op, in
             bench_row(name, t_cg, "-", 0, p->missing);
             continue;
         }
-        j.peer = p->prepare(&pa, &pb);
+        prepare_all(&j, p->prepare);
         if (!cold)
             p->run(&j);
-        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID);
+        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID) / (double)pairs;
         snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
                  area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
         bench_row(name, t_cg, p->name, t, note);
-        p->release(j.peer);
+        release_all(&j, p->release);
     }
+}
+
+static void compare(const char *what, const shape *a, const shape *b, int op, int runs)
+{
+    compare_pairs(what, a, b, 1, op, runs);
 }
 
 static void free_shape(shape *s)
@@ -196,19 +253,32 @@ static void free_shape(shape *s)
     free(s->len);
 }
 
+/* Pairs of star-shaped polygons of n vertices, the second shifted; below
+ * 1,000 vertices, 1,000 / n pairs of different polygons (the time is per
+ * pair, the areas and result vertices are summed over the pairs). */
 static void star_case(size_t n, double r0, const char *label, int ops, int runs)
 {
-    shape a = {0}, b = {0};
-    star(&a, n, 0, 0, r0, 1e6);
-    star(&b, n, 3e5, 2e5, r0, 1e6);
-    finish(&a);
-    finish(&b);
-    char what[80];
-    snprintf(what, sizeof what, "%s, %zu vertices each", label, n);
+    size_t pairs = n < 1000 ? 1000 / n : 1;
+    shape *a = calloc(pairs, sizeof *a), *b = calloc(pairs, sizeof *b);
+    for (size_t k = 0; k < pairs; k++) {
+        star(&a[k], n, 0, 0, r0, 1e6);
+        star(&b[k], n, 3e5, 2e5, r0, 1e6);
+        finish(&a[k]);
+        finish(&b[k]);
+    }
+    char what[96];
+    if (pairs > 1)
+        snprintf(what, sizeof what, "%s, %zu vertices each, %zu pairs", label, n, pairs);
+    else
+        snprintf(what, sizeof what, "%s, %zu vertices each", label, n);
     for (int op = 0; op < ops; op++)
-        compare(what, &a, &b, op, runs);
-    free_shape(&a);
-    free_shape(&b);
+        compare_pairs(what, a, b, pairs, op, runs);
+    for (size_t k = 0; k < pairs; k++) {
+        free_shape(&a[k]);
+        free_shape(&b[k]);
+    }
+    free(a);
+    free(b);
 }
 
 int main(int argc, char **argv)

@@ -1603,6 +1603,123 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_
     return 1;
 }
 
+/* ---- small inputs: crossings found pair by pair ------------------------------ */
+
+/* On few edges, testing every pair for a crossing costs less than a sweep
+ * that only looks for them.  The crossings found are rounded and snapped as
+ * from the second pass on, and the edges split before the first sweep, which
+ * then normally finds nothing more to split and classifies at once.  That
+ * sweep still verifies: whatever is left (a crossing made by the rounding)
+ * is split by further passes as usual. */
+#define PAIRS_MAX_EDGES 48
+
+static inline int orientation(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t cx,
+                              int64_t cy)
+{
+    i128 o = (i128)(bx - ax) * (cy - ay) - (i128)(by - ay) * (cx - ax);
+    return (o > 0) - (o < 0);
+}
+
+/* Do a and b, whose bounding boxes overlap, cross at one point inside both
+ * (neither end of either on the other)? */
+static int cross_inside(const bedge *a, const bedge *b)
+{
+    int s1 = orientation(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb);
+    int s2 = orientation(a->xb, a->yb, a->xt, a->yt, b->xt, b->yt);
+    if (s1 * s2 >= 0)
+        return 0;
+    int s3 = orientation(b->xb, b->yb, b->xt, b->yt, a->xb, a->yb);
+    int s4 = orientation(b->xb, b->yb, b->xt, b->yt, a->xt, a->yt);
+    return s3 * s4 < 0;
+}
+
+static int add_split_point(engine *g, uint32_t e, int64_t x, int64_t y)
+{
+    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, return 0);
+    g->S[g->ns++] = (splitpt){e, x, y};
+    return 1;
+}
+
+/* an edge's bounding box, y from yb to yt */
+typedef struct edge_box { int64_t yb, yt, xlo, xhi; uint32_t e; } edge_box;
+
+/* Every edge through the pixel of a split point g->S[from..] gets a split
+ * point there too (snap rounding, as add_hot_pixel_splits). */
+static int add_pair_hot_pixels(engine *g, const edge_box *B, size_t n, size_t from)
+{
+    size_t end = g->ns;
+    for (size_t q = from; q < end;) {
+        int64_t px = g->S[q].x, py = g->S[q].y;
+        size_t q1 = q + 1; /* the entries of this point: q..q1 */
+        while (q1 < end && g->S[q1].x == px && g->S[q1].y == py)
+            q1++;
+        for (size_t k = 0; k < n && B[k].yb <= py + 1; k++) {
+            if (B[k].yt < py - 1 || B[k].xlo > px + 1 || B[k].xhi < px - 1)
+                continue;
+            uint32_t e = B[k].e;
+            const bedge *E = &g->E[e];
+            size_t r = q;
+            while (r < q1 && g->S[r].edge != e)
+                r++;
+            if (r < q1 || (px == E->xb && py == E->yb) || (px == E->xt && py == E->yt) ||
+                !meets_pixel(E->xb, E->yb, E->xt, E->yt, px, py))
+                continue;
+            if (!add_split_point(g, e, px, py))
+                return 0;
+        }
+        q = q1;
+    }
+    return 1;
+}
+
+/* The split points of every crossing of two edges inside both, rounded, and
+ * of every edge passing a horizontal edge at a point off the grid (as the
+ * sweep would find them), then of the hot pixels.  The edges are visited by
+ * their lowest y, so that the pairs whose y ranges overlap come together. */
+static int add_pair_splits(engine *g)
+{
+    const bedge *E = g->E;
+    edge_box B[PAIRS_MAX_EDGES];
+    size_t n = g->ne;
+    for (size_t i = 0; i < n; i++) {
+        const bedge *e = &E[i];
+        edge_box b = {e->yb, e->yt, e->xb < e->xt ? e->xb : e->xt, e->xb < e->xt ? e->xt : e->xb,
+                      (uint32_t)i};
+        size_t k = i;
+        for (; k > 0 && B[k - 1].yb > b.yb; k--)
+            B[k] = B[k - 1];
+        B[k] = b;
+    }
+    for (size_t i = 0; i < n; i++) {
+        /* (B[j].yb >= B[i].yb: the y ranges overlap while B[j].yb < B[i].yt) */
+        for (size_t j = i + 1; j < n && B[j].yb < B[i].yt; j++) {
+            if (B[j].xlo > B[i].xhi || B[i].xlo > B[j].xhi)
+                continue;
+            const bedge *a = &E[B[i].e], *b = &E[B[j].e];
+            if (!cross_inside(a, b))
+                continue;
+            int64_t px, py;
+            line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px, &py);
+            if (!add_split_point(g, B[i].e, px, py) || !add_split_point(g, B[j].e, px, py))
+                return 0;
+        }
+    }
+    for (size_t h = 0; h < g->nh; h++) {
+        const hseg *H = &g->H[h];
+        for (size_t i = 0; i < n && B[i].yb < H->y; i++) {
+            const bedge *e = &E[B[i].e];
+            int64_t x;
+            if (H->y >= e->yt || B[i].xlo > H->x1 || B[i].xhi < H->x0 || x_is_integer(e, H->y, &x))
+                continue;
+            i128 num = x_num(e, H->y), d = x_den(e);
+            if ((i128)H->x0 * d <= num && num <= (i128)H->x1 * d &&
+                !add_split_point(g, B[i].e, x, H->y))
+                return 0;
+        }
+    }
+    return add_pair_hot_pixels(g, B, n, 0);
+}
+
 /* ---- assembly -------------------------------------------------------------- */
 
 /* Clockwise angle from direction r to direction o, as an order key:
@@ -2387,6 +2504,12 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     size_t nbands = 0;
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
+    if (g->ne + g->nh <= PAIRS_MAX_EDGES) {
+        uint32_t map[PAIRS_MAX_EDGES];
+        size_t kept;
+        if (!add_pair_splits(g) || !apply_splits(g, map, &kept, s.mem, s.memcap))
+            return CG_ENOMEM;
+    }
     for (int pass = 0;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;

@@ -1611,25 +1611,31 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_
  * then normally finds nothing more to split and classifies at once.  That
  * sweep still verifies: whatever is left (a crossing made by the rounding)
  * is split by further passes as usual. */
-#define PAIRS_MAX_EDGES 48
+#define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
 
+/* The side of c from the line a-b: its sign.  `narrow`: every coordinate
+ * difference is below 2^31, so 64-bit products are exact. */
 static inline int orientation(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t cx,
-                              int64_t cy)
+                              int64_t cy, int narrow)
 {
+    if (narrow) {
+        int64_t o = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+        return (o > 0) - (o < 0);
+    }
     i128 o = (i128)(bx - ax) * (cy - ay) - (i128)(by - ay) * (cx - ax);
     return (o > 0) - (o < 0);
 }
 
 /* Do a and b, whose bounding boxes overlap, cross at one point inside both
  * (neither end of either on the other)? */
-static int cross_inside(const bedge *a, const bedge *b)
+static int cross_inside(const bedge *a, const bedge *b, int narrow)
 {
-    int s1 = orientation(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb);
-    int s2 = orientation(a->xb, a->yb, a->xt, a->yt, b->xt, b->yt);
+    int s1 = orientation(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, narrow);
+    int s2 = orientation(a->xb, a->yb, a->xt, a->yt, b->xt, b->yt, narrow);
     if (s1 * s2 >= 0)
         return 0;
-    int s3 = orientation(b->xb, b->yb, b->xt, b->yt, a->xb, a->yb);
-    int s4 = orientation(b->xb, b->yb, b->xt, b->yt, a->xt, a->yt);
+    int s3 = orientation(b->xb, b->yb, b->xt, b->yt, a->xb, a->yb, narrow);
+    int s4 = orientation(b->xb, b->yb, b->xt, b->yt, a->xt, a->yt, narrow);
     return s3 * s4 < 0;
 }
 
@@ -1681,22 +1687,38 @@ static int add_pair_splits(engine *g)
     const bedge *E = g->E;
     edge_box B[PAIRS_MAX_EDGES];
     size_t n = g->ne;
+    int64_t xmin = INT64_MAX, xmax = INT64_MIN, ymin = INT64_MAX, ymax = INT64_MIN;
     for (size_t i = 0; i < n; i++) {
         const bedge *e = &E[i];
-        edge_box b = {e->yb, e->yt, e->xb < e->xt ? e->xb : e->xt, e->xb < e->xt ? e->xt : e->xb,
-                      (uint32_t)i};
-        size_t k = i;
-        for (; k > 0 && B[k - 1].yb > b.yb; k--)
-            B[k] = B[k - 1];
-        B[k] = b;
+        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
+        xmin = xlo < xmin ? xlo : xmin;
+        xmax = xhi > xmax ? xhi : xmax;
+        ymin = e->yb < ymin ? e->yb : ymin;
+        ymax = e->yt > ymax ? e->yt : ymax;
     }
+    /* by yb, ties by number: (yb - ymin, number) packed in one key (the
+     * spread of grid coordinates is below 2^42, n below 2^7) */
+    uint64_t key[PAIRS_MAX_EDGES];
+    for (size_t i = 0; i < n; i++) {
+        uint64_t v = (uint64_t)(E[i].yb - ymin) << 7 | i;
+        size_t k = i;
+        for (; k > 0 && key[k - 1] > v; k--)
+            key[k] = key[k - 1];
+        key[k] = v;
+    }
+    for (size_t k = 0; k < n; k++) {
+        const bedge *e = &E[key[k] & 127];
+        B[k] = (edge_box){e->yb, e->yt, e->xb < e->xt ? e->xb : e->xt,
+                          e->xb < e->xt ? e->xt : e->xb, (uint32_t)(key[k] & 127)};
+    }
+    int narrow = n && xmax - xmin < (INT64_C(1) << 31) && ymax - ymin < (INT64_C(1) << 31);
     for (size_t i = 0; i < n; i++) {
         /* (B[j].yb >= B[i].yb: the y ranges overlap while B[j].yb < B[i].yt) */
         for (size_t j = i + 1; j < n && B[j].yb < B[i].yt; j++) {
             if (B[j].xlo > B[i].xhi || B[i].xlo > B[j].xhi)
                 continue;
             const bedge *a = &E[B[i].e], *b = &E[B[j].e];
-            if (!cross_inside(a, b))
+            if (!cross_inside(a, b, narrow))
                 continue;
             int64_t px, py;
             line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px, &py);
@@ -2504,7 +2526,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     size_t nbands = 0;
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
-    if (g->ne + g->nh <= PAIRS_MAX_EDGES) {
+    int paired = g->ne + g->nh <= PAIRS_MAX_EDGES;
+    if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
         if (!add_pair_splits(g) || !apply_splits(g, map, &kept, s.mem, s.memcap))
@@ -2568,8 +2591,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         log->npt = log->ned = 0;
         log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
         /* (later passes are nearly always the last; small inputs gain
-         * less than the checkpoints cost) */
-        s.log = pass == 0 && g->ne >= 128 ? log : NULL;
+         * less than the checkpoints cost, and a first pass after the pairs'
+         * splits nearly always is the last) */
+        s.log = pass == 0 && !paired && g->ne >= 128 ? log : NULL;
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {

@@ -1058,11 +1058,29 @@ static int run_sweep(sweep *s)
         size_t na = 0, jf = 0, nd = 0;
         int dirty_sorted = 1;
         uint32_t *above = s->nxt;
+        /* the order at yn is checked from above[k0] on, after last (x at
+         * yn of above[k0 - 1]) */
+        double last = -INFINITY;
+        size_t k0 = 0;
         if (nb < 4 * (nf + it - t0) + 32) {
-            /* few edges: one look at each */
+            /* few edges: one look at each, which also takes x at yn and
+             * checks the order there up to the first inversion (k0) */
+            k0 = SIZE_MAX;
+#define TAKE(v, xv)                                                                                \
+    do {                                                                                           \
+        double x_ = (xv);                                                                          \
+        if (k0 == SIZE_MAX) {                                                                      \
+            if (x_ > last + 0.01)                                                                  \
+                last = x_;                                                                         \
+            else                                                                                   \
+                k0 = na;                                                                           \
+        }                                                                                          \
+        above[na++] = (v);                                                                         \
+    } while (0)
             for (size_t k = 0; k < nb; k++) {
                 uint32_t e = below[k];
-                if (E[e].yt == y) {
+                const bedge *ee = &E[e];
+                if (ee->yt == y) {
                     if (s->classify && s->run_open[e] && !close_run(s, e, y))
                         return 0;
                     continue;
@@ -1070,7 +1088,7 @@ static int run_sweep(sweep *s)
                 while (jf < nf) {
                     uint32_t f = fresh[jf];
                     double xf = xc[f];
-                    int c = xc[e] < xf - 0.01 ? -1 : cmp_x(&E[e], &E[f], y, xc[e], xf);
+                    int c = xc[e] < xf - 0.01 ? -1 : cmp_x(ee, &E[f], y, xc[e], xf);
                     if (c < 0)
                         break;
                     if (c == 0) {
@@ -1080,17 +1098,24 @@ static int run_sweep(sweep *s)
                         break; /* the order at yn is settled below */
                     }
                     dirty[nd++] = (uint32_t)na;
-                    above[na++] = f;
+                    TAKE(f, xn[f]);
                     jf++;
                 }
                 if (s->brk[e])
                     dirty[nd++] = (uint32_t)na;
-                above[na++] = e;
+                double xe = yn == ee->yt ? (double)ee->xt
+                                         : (double)ee->xb + (double)(yn - ee->yb) * ee->slope;
+                xn[e] = xe;
+                TAKE(e, xe);
             }
             while (jf < nf) {
                 dirty[nd++] = (uint32_t)na;
-                above[na++] = fresh[jf++];
+                uint32_t f = fresh[jf++];
+                TAKE(f, xn[f]);
             }
+#undef TAKE
+            if (k0 == SIZE_MAX)
+                k0 = na;
         } else {
             size_t jt = t0, ib = 0, ended = 0;
             while (jf < nf || jt < it) {
@@ -1173,9 +1198,8 @@ static int run_sweep(sweep *s)
             break;
         /* the order at yn: an inversion is a crossing inside the beam,
          * unless the two edges meet at y (then it is their order) */
-        double last = -INFINITY; /* x at yn of above[k - 1] */
         size_t cross_lo = SIZE_MAX, cross_hi = 0; /* positions of crossings */
-        for (size_t k = 0; k < na; k++) {
+        for (size_t k = k0; k < na; k++) {
             uint32_t v = above[k];
             const bedge *ev = &E[v];
             double xv = yn == ev->yt ? (double)ev->xt

@@ -1038,10 +1038,17 @@ static int run_sweep(sweep *s)
             fresh[m] = e;
             nf++;
         }
-        /* edges ending here, by x */
+        /* edges ending here, by x: by_top[t0..it), needed only among many
+         * passing edges (few take one look each below; `it` catches up
+         * then) */
         size_t t0 = it;
-        while (it < ne && E[s->by_top[it]].yt == y)
-            it++;
+        if (nb >= 32) {
+            while (it < ne && E[s->by_top[it]].yt < y)
+                it++;
+            t0 = it;
+            while (it < ne && E[s->by_top[it]].yt == y)
+                it++;
+        }
         /* the edges with a run break here, found at the top of the last
          * beam */
         uint32_t *q = s->brkq;

@@ -40,6 +40,14 @@
 
 typedef clip_i128 i128;
 
+/* (keeps a function out of its caller, where it would crowd the registers
+ * of the sweep's hot loop) */
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
 typedef struct bedge {
     int64_t xb, yb, xt, yt; /* bottom and top, yb < yt */
     double slope;           /* dx / dy */
@@ -970,8 +978,8 @@ static int run_sweep(sweep *s)
         int64_t y = s->ys[iy];
         int has_next = iy + 1 < nys;
         int64_t yn = has_next ? s->ys[iy + 1] : y;
-        while (s->band < s->nbands && s->bands[s->band][1] < y)
-            s->band++;
+        while (s->prev && s->band < s->nbands && s->bands[s->band][1] < y)
+            s->band++; /* (bands come with prev only) */
         if (s->prev && s->band > 0 && !s->changed &&
             (s->band == s->nbands || y <= s->bands[s->band][0])) {
             /* between the split edges: the last pass's results hold from
@@ -2395,7 +2403,7 @@ static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, u
 /* Sorts the edges by bottom and by top (from the last pass's orders when
  * there is one), the scanlines (both merged) and the horizontal edges: 0
  * when out of memory. */
-static int sweep_sort(sweep *s, carry *c)
+NOINLINE static int sweep_sort(sweep *s, carry *c)
 {
     engine *g = s->g;
     size_t ne = g->ne;
@@ -2423,21 +2431,19 @@ static int sweep_sort(sweep *s, carry *c)
         i = j = 0;
     }
     int64_t yb = n ? E[s->by_bottom[0]].yb : INT64_MAX, yt = n ? E[s->by_top[0]].yt : INT64_MAX;
-    while (i < n || j < n) {
-        int64_t y;
-        if (yb <= yt) {
-            y = yb;
-            do /* past the edges with this bottom */
-                yb = ++i < n ? E[s->by_bottom[i]].yb : INT64_MAX;
-            while (yb == y);
-        } else {
-            y = yt;
-            do
-                yt = ++j < n ? E[s->by_top[j]].yt : INT64_MAX;
-            while (yt == y);
-        }
-        if (u == 0 || s->ys[u - 1] != y)
-            s->ys[u++] = y;
+    const uint32_t *bb = s->by_bottom, *bt = s->by_top;
+    int64_t *ys = s->ys;
+    for (;;) {
+        int64_t y = yb <= yt ? yb : yt;
+        if (y == INT64_MAX) /* (no y reaches it) */
+            break;
+        /* past the edges with this bottom, with this top: the next y is
+         * larger */
+        while (yb == y)
+            yb = ++i < n ? E[bb[i]].yb : INT64_MAX;
+        while (yt == y)
+            yt = ++j < n ? E[bt[j]].yt : INT64_MAX;
+        ys[u++] = y;
     }
     s->nys = u;
 #ifdef CG_CLIP_CHECK_YS

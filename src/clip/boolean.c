@@ -979,8 +979,8 @@ static int run_sweep(sweep *s)
     s->yspan = nys ? s->ys[nys - 1] - s->ys[0] : 0;
     for (size_t iy = s->start_iy; iy < nys; iy++) {
         int64_t y = s->ys[iy];
-        int has_next = iy + 1 < nys;
-        int64_t yn = has_next ? s->ys[iy + 1] : y;
+        /* the next scanline (the last has none: yn == y) */
+        int64_t yn = iy + 1 < nys ? s->ys[iy + 1] : y;
         while (s->prev && s->band < s->nbands && s->bands[s->band][1] < y)
             s->band++; /* (bands come with prev only) */
         if (s->prev && s->band > 0 && !s->changed &&
@@ -1009,8 +1009,7 @@ static int run_sweep(sweep *s)
                 ip = s->start_ip;
                 it = s->start_it;
                 y = s->ys[iy];
-                has_next = iy + 1 < nys;
-                yn = has_next ? s->ys[iy + 1] : y;
+                yn = iy + 1 < nys ? s->ys[iy + 1] : y;
             }
         }
         if (s->log && s->classify && s->visits >= s->ck_visits) {
@@ -1077,7 +1076,7 @@ static int run_sweep(sweep *s)
         int dirty_sorted = 1;
         uint32_t *above = s->nxt;
         /* the order at yn is checked from above[k0] on, after last (x at
-         * yn of above[k0 - 1]) */
+         * yn of above[k0 - 1], or -INFINITY) */
         double last = -INFINITY;
         size_t k0 = 0;
         if (nb < 4 * (nf + it - t0) + 32) {
@@ -1087,12 +1086,10 @@ static int run_sweep(sweep *s)
 #define TAKE(v, xv)                                                                                \
     do {                                                                                           \
         double x_ = (xv);                                                                          \
-        if (k0 == SIZE_MAX) {                                                                      \
-            if (x_ > last + 0.01)                                                                  \
-                last = x_;                                                                         \
-            else                                                                                   \
-                k0 = na;                                                                           \
-        }                                                                                          \
+        if (x_ > last + 0.01)                                                                      \
+            last = x_;                                                                             \
+        else if (k0 == SIZE_MAX)                                                                   \
+            k0 = na;                                                                               \
         above[na++] = (v);                                                                         \
     } while (0)
             for (size_t k = 0; k < nb; k++) {
@@ -1134,6 +1131,8 @@ static int run_sweep(sweep *s)
 #undef TAKE
             if (k0 == SIZE_MAX)
                 k0 = na;
+            else
+                last = k0 ? xn[above[k0 - 1]] : -INFINITY;
         } else {
             size_t jt = t0, ib = 0, ended = 0;
             while (jf < nf || jt < it) {
@@ -1212,7 +1211,7 @@ static int run_sweep(sweep *s)
         s->act = above;
         s->nxt = t;
         s->nact = na;
-        if (!has_next)
+        if (iy + 1 == nys)
             break;
         /* the order at yn: an inversion is a crossing inside the beam,
          * unless the two edges meet at y (then it is their order) */

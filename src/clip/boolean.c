@@ -811,23 +811,29 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
             continue;
         while (k > done && coincident(&E[above[k - 1]], &E[above[k]]))
             k--;
-        int64_t w[2] = {0, 0};
+        int64_t w0 = 0, w1 = 0; /* (subject's, clip's) */
         if (k > 0) {
-            w[0] = wr0[above[k - 1]];
-            w[1] = wr1[above[k - 1]];
+            w0 = wr0[above[k - 1]];
+            w1 = wr1[above[k - 1]];
         }
-        int left = inside(g, w[0], w[1]);
+        int left = inside(g, w0, w1);
         size_t k2 = k + 1;
         uint32_t rep = above[k];
-        w[E[rep].op] += E[rep].w;
+        if (E[rep].op)
+            w1 += E[rep].w;
+        else
+            w0 += E[rep].w;
         while (k2 < na && coincident(&E[above[k]], &E[above[k2]])) {
             uint32_t b = above[k2];
             if (b < rep)
                 rep = b;
-            w[E[b].op] += E[b].w;
+            if (E[b].op)
+                w1 += E[b].w;
+            else
+                w0 += E[b].w;
             k2++;
         }
-        int right = inside(g, w[0], w[1]);
+        int right = inside(g, w0, w1);
         for (size_t q = k; q < k2; q++) {
             uint32_t e = above[q];
             int boundary = e == rep && left != right;
@@ -843,8 +849,8 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
                 s->run_x[e] = y == E[e].yb ? E[e].xb : round_div(x_num(&E[e], y), x_den(&E[e]));
             }
             s->brk[e] = 0;
-            wr0[e] = (int32_t)w[0];
-            wr1[e] = (int32_t)w[1];
+            wr0[e] = (int32_t)w0;
+            wr1[e] = (int32_t)w1;
         }
         done = k2;
     }
@@ -2374,10 +2380,13 @@ static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, u
         for (size_t i = 0; i < np; i++)
             tmp[i] += (uint32_t)c->kept;
     }
-    size_t i = 0, j = 0, k = 0;
-    if (np < na / 32) {
-        /* few pieces: the place of each among the kept edges by binary
-         * search, the kept edges copied in blocks between them */
+    size_t i = 0, j = 0, k = 0, lg = 1;
+    while (((size_t)1 << lg) < na)
+        lg++;
+    if (np * lg < na) {
+        /* few pieces (a search each costs less than a look at each kept
+         * edge): the place of each among the kept edges by binary search,
+         * the kept edges copied in blocks between them */
         for (; j < np; j++) {
             const bedge *p = &E[tmp[j]];
             size_t lo = i, hi = na;

@@ -980,6 +980,10 @@ static int run_sweep(sweep *s)
     size_t ne = g->ne, nys = s->nys, ip = s->start_ip, it = s->start_it, ih = 0;
     const bedge *E = g->E;
     uint32_t *fresh = s->fresh, *dirty = s->dirty;
+    /* the bottom of the next edge to start (INT64_MAX: none; no y reaches
+     * it) */
+#define NEXT_BOTTOM() (ip < ne ? E[s->by_bottom[ip]].yb : INT64_MAX)
+    int64_t y_start = NEXT_BOTTOM();
     if (!s->start_iy)
         s->nact = 0;
     s->yspan = nys ? s->ys[nys - 1] - s->ys[0] : 0;
@@ -1013,6 +1017,7 @@ static int run_sweep(sweep *s)
                 s->prev_j = j;
                 iy = s->start_iy;
                 ip = s->start_ip;
+                y_start = NEXT_BOTTOM();
                 it = s->start_it;
                 y = s->ys[iy];
                 yn = iy + 1 < nys ? s->ys[iy + 1] : y;
@@ -1041,8 +1046,9 @@ static int run_sweep(sweep *s)
         s->brk_next = bswap;
         /* the edges starting here, by x (by_bottom), ties by x at yn */
         size_t nf = 0;
-        while (ip < ne && E[s->by_bottom[ip]].yb == y) {
+        while (y_start == y) {
             uint32_t e = s->by_bottom[ip++];
+            y_start = NEXT_BOTTOM();
             xc[e] = (double)E[e].xb;
             xn[e] = x_at(&E[e], yn);
             size_t m = nf;
@@ -1294,6 +1300,7 @@ static int run_sweep(sweep *s)
             return 0;
     }
     return 1;
+#undef NEXT_BOTTOM
 }
 
 /* ---- the light sweep ------------------------------------------------------- */

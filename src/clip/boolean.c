@@ -2803,14 +2803,19 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
             g->E = e;
             g->cape = c;
         }
+        /* (held here: the byte stores below would make them be read
+         * again) */
+        const cg_point64 *pts = set->points;
+        bedge *E = g->E;
+        size_t ne = g->ne;
         for (size_t i = a; i < b; i++) {
-            cg_point64 p = set->points[i], q = set->points[i + 1 < b ? i + 1 : a];
-            if (p.y == q.y) {
+            cg_point64 p = pts[i], q = pts[i + 1 < b ? i + 1 : a];
+            if (p.y == q.y) { /* (to g->H) */
                 if (!add_piece(g, p.x, p.y, q.x, q.y, op, NO_ORIG))
                     return CG_ENOMEM;
                 continue;
             }
-            bedge *e = &g->E[g->ne++];
+            bedge *e = &E[ne++];
             int up = p.y < q.y;
             cg_point64 lo = up ? p : q, hi = up ? q : p;
             e->xb = lo.x;
@@ -2822,6 +2827,7 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
             e->op = (uint8_t)op;
             e->slope = (double)(hi.x - lo.x) / (double)(hi.y - lo.y);
         }
+        g->ne = ne;
     }
     return CG_OK;
 }

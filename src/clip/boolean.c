@@ -1208,8 +1208,9 @@ static int run_sweep(sweep *s)
         /* (edges meeting at y were found at the top of the last beam, or
          * just above) */
         /* horizontal edges on this scanline */
-        size_t h0;
-        horizontals_at(g, y, &ih, &h0);
+        size_t h0 = ih;
+        if (ih < g->nh)
+            horizontals_at(g, y, &ih, &h0);
         if (ih > h0) {
             if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
                 return 0;

@@ -35,6 +35,7 @@
 #include "internal.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -1439,14 +1440,74 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
 /* Snap rounding (Hobby): every edge that passes through the pixel of a
  * rounded split point is split there too, so that nearly parallel edges
  * meet at one grid point instead of crossing again a little further on.
- * Used from the second pass on; the points are sorted by y and each edge
- * looks only at those within its y range. */
-static int cmp_split_y(const void *a, const void *b)
+ * Used from the second pass on.  The points are put in a grid of square
+ * cells (about two points a cell; sorted by y, then x, in each cell), and
+ * each edge looks at the cells along it, row by row: the cost follows the
+ * edges' lengths and the points near them, not the points in their y
+ * range (dense crossings of long edges made that quadratic). */
+typedef struct hot_grid {
+    int64_t x0, y0, side;
+    size_t cols, rows;
+    size_t *start; /* the points of cell k: pts[start[k]..start[k + 1]) */
+    cg_point64 *pts;
+} hot_grid;
+
+static int cmp_point_yx(const void *a, const void *b)
 {
-    const splitpt *p = a, *q = b;
+    const cg_point64 *p = a, *q = b;
     if (p->y != q->y)
         return p->y < q->y ? -1 : 1;
     return (p->x > q->x) - (p->x < q->x);
+}
+
+static size_t hot_cell(const hot_grid *h, int64_t x, int64_t y)
+{
+    return (size_t)((y - h->y0) / h->side) * h->cols + (size_t)((x - h->x0) / h->side);
+}
+
+static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
+{
+    int64_t x1 = S[0].x, y1 = S[0].y;
+    h->x0 = x1;
+    h->y0 = y1;
+    for (size_t k = 1; k < ns; k++) {
+        h->x0 = S[k].x < h->x0 ? S[k].x : h->x0;
+        h->y0 = S[k].y < h->y0 ? S[k].y : h->y0;
+        x1 = S[k].x > x1 ? S[k].x : x1;
+        y1 = S[k].y > y1 ? S[k].y : y1;
+    }
+    double w = (double)(x1 - h->x0) + 1, ht = (double)(y1 - h->y0) + 1;
+    double side = ceil(sqrt(w * ht * 2 / (double)ns));
+    for (;;) { /* at most about 4 cells a point, whatever the shape */
+        double cols = floor((w - 1) / side) + 1, rows = floor((ht - 1) / side) + 1;
+        if (cols * rows <= 4 * (double)ns + 64)
+            break;
+        side = ceil(side * 1.5);
+    }
+    h->side = (int64_t)side;
+    h->cols = (size_t)((x1 - h->x0) / h->side) + 1;
+    h->rows = (size_t)((y1 - h->y0) / h->side) + 1;
+    size_t cells = h->cols * h->rows;
+    h->start = calloc(cells + 1, sizeof *h->start);
+    h->pts = malloc(ns * sizeof *h->pts);
+    size_t *next = malloc((cells + 1) * sizeof *next);
+    if (!h->start || !h->pts || !next) {
+        free(next);
+        return 0;
+    }
+    for (size_t k = 0; k < ns; k++)
+        h->start[hot_cell(h, S[k].x, S[k].y) + 1]++;
+    for (size_t c = 0; c < cells; c++)
+        h->start[c + 1] += h->start[c];
+    memcpy(next, h->start, (cells + 1) * sizeof *next);
+    for (size_t k = 0; k < ns; k++)
+        h->pts[next[hot_cell(h, S[k].x, S[k].y)]++] = (cg_point64){S[k].x, S[k].y};
+    free(next);
+    for (size_t c = 0; c < cells; c++)
+        if (h->start[c + 1] - h->start[c] > 1)
+            sort_few(h->pts + h->start[c], h->start[c + 1] - h->start[c], sizeof *h->pts,
+                     cmp_point_yx);
+    return 1;
 }
 
 static int add_hot_pixel_splits(engine *g)
@@ -1454,39 +1515,55 @@ static int add_hot_pixel_splits(engine *g)
     size_t ns = g->ns;
     if (ns == 0)
         return 1;
-    splitpt *pts = malloc(ns * sizeof *pts);
-    if (!pts)
-        return 0;
-    memcpy(pts, g->S, ns * sizeof *pts);
-    qsort(pts, ns, sizeof *pts, cmp_split_y);
-    for (size_t i = 0; i < g->ne; i++) {
-        const bedge *e = &g->E[i];
-        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
-        size_t lo = 0, hi = ns;
-        while (lo < hi) {
-            size_t mid = (lo + hi) / 2;
-            if (pts[mid].y < e->yb - 1)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        for (size_t q = lo; q < ns && pts[q].y <= e->yt + 1; q++) {
-            int64_t px = pts[q].x, py = pts[q].y;
-            if (px < xlo - 1 || px > xhi + 1 || (q > lo && px == pts[q - 1].x && py == pts[q - 1].y))
+    hot_grid h;
+    memset(&h, 0, sizeof h);
+    int ok = hot_grid_build(&h, g->S, ns);
+    for (size_t i = 0; ok && i < g->ne; i++) {
+        const bedge e = g->E[i];
+        int64_t xlo = e.xb < e.xt ? e.xb : e.xt, xhi = e.xb < e.xt ? e.xt : e.xb;
+        if (e.yt + 1 < h.y0)
+            continue;
+        size_t r = e.yb - 1 > h.y0 ? (size_t)((e.yb - 1 - h.y0) / h.side) : 0;
+        for (; ok && r < h.rows; r++) {
+            int64_t ry0 = h.y0 + (int64_t)r * h.side, ry1 = ry0 + h.side - 1;
+            if (ry0 > e.yt + 1)
+                break;
+            /* the edge's x over the row's y and one unit more each way
+             * (clamped to the edge), widened by two units: a pixel whose
+             * centre is there may meet it */
+            int64_t ya = ry0 - 1 > e.yb ? ry0 - 1 : e.yb, yz = ry1 + 1 < e.yt ? ry1 + 1 : e.yt;
+            if (ya > yz)
+                ya = yz = ya > e.yt ? e.yt : e.yb;
+            double xa = x_at(&e, ya), xz = x_at(&e, yz);
+            double lo = (xa < xz ? xa : xz) - 2 - (double)h.x0;
+            double hi = (xa < xz ? xz : xa) + 2 - (double)h.x0;
+            if (hi < 0)
                 continue;
-            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))
-                continue;
-            if (!meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py))
-                continue;
-            GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
-                free(pts);
-                return 0;
-            });
-            g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+            size_t c0 = lo <= 0 ? 0 : (size_t)(lo / (double)h.side);
+            size_t c1 = (size_t)(hi / (double)h.side);
+            if (c1 >= h.cols)
+                c1 = h.cols - 1;
+            for (size_t c = c0; ok && c <= c1; c++) {
+                size_t cell = r * h.cols + c;
+                for (size_t q = h.start[cell]; q < h.start[cell + 1]; q++) {
+                    int64_t px = h.pts[q].x, py = h.pts[q].y;
+                    if ((q > h.start[cell] && px == h.pts[q - 1].x && py == h.pts[q - 1].y) ||
+                        py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
+                        (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
+                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py))
+                        continue;
+                    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
+                        ok = 0;
+                        break;
+                    });
+                    g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+                }
+            }
         }
     }
-    free(pts);
-    return 1;
+    free(h.start);
+    free(h.pts);
+    return ok;
 }
 
 /* Notes input edge e as the input edge of its pieces: its number, NO_ORIG

@@ -1427,6 +1427,13 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
     i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
     if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
         return 0;
+    /* the line through a and b meets the square only if the centre is
+     * within half the square's width across the line, |d x (p - a)| <=
+     * (|dx| + |dy|) / 2: in doubles first, with a wide margin for rounding */
+    double dx = (double)(bx - ax), dy = (double)(by - ay);
+    double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
+    if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
+        return 0;
     int pos = 0, neg = 0;
     i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
     for (int k = 0; k < 4; k++) {
@@ -1510,14 +1517,31 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
     return 1;
 }
 
-static int add_hot_pixel_splits(engine *g)
+static int add_hot_pixel_splits(engine *g, int vertices)
 {
     size_t ns = g->ns;
     if (ns == 0)
         return 1;
     hot_grid h;
     memset(&h, 0, sizeof h);
-    int ok = hot_grid_build(&h, g->S, ns);
+    int ok;
+    if (vertices) {
+        /* the edges' ends are hot pixels too (complete snap rounding) */
+        splitpt *pts = malloc((ns + 2 * g->ne) * sizeof *pts);
+        ok = pts != NULL;
+        if (ok) {
+            memcpy(pts, g->S, ns * sizeof *pts);
+            size_t n = ns;
+            for (size_t i = 0; i < g->ne; i++) {
+                pts[n++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
+                pts[n++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
+            }
+            ok = hot_grid_build(&h, pts, n);
+            free(pts);
+        }
+    } else {
+        ok = hot_grid_build(&h, g->S, ns);
+    }
     for (size_t i = 0; ok && i < g->ne; i++) {
         const bedge e = g->E[i];
         int64_t xlo = e.xb < e.xt ? e.xb : e.xt, xhi = e.xb < e.xt ? e.xt : e.xb;
@@ -2278,6 +2302,14 @@ fail:
 }
 
 #define MAX_PASSES 64
+/* A pass that looked at this many active edges per edge (long active lists:
+ * another whole pass would be dear) snaps to the pixels of the edges' ends
+ * as well as of its rounded points, from then on: complete snap rounding
+ * (Hobby), after which a verifying pass finds nothing to split (on dense
+ * crossings the rounding otherwise makes new ones, pass after pass). */
+#ifndef DENSE_VISITS
+#define DENSE_VISITS 200
+#endif
 
 /* Forgets the arrays of the last pass; their memory is kept for the next. */
 static void sweep_reset(sweep *s)
@@ -2604,6 +2636,7 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
     int paired = g->ne + g->nh <= PAIRS_MAX_EDGES;
+    int dense = 0; /* a pass split many edges: snap to every hot pixel */
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
@@ -2713,7 +2746,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             st = assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
             break;
         }
-        if (pass >= 1 && !add_hot_pixel_splits(g))
+        if (s.visits >= DENSE_VISITS * edges)
+            dense = 1;
+        if ((pass >= 1 || dense) && !add_hot_pixel_splits(g, dense))
             break;
         free(bands);
         bands = NULL;

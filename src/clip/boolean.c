@@ -1707,11 +1707,10 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_
 /* ---- small inputs: crossings found pair by pair ------------------------------ */
 
 /* On few edges, testing every pair for a crossing costs less than a sweep
- * that only looks for them.  The crossings found are rounded and snapped as
- * from the second pass on, and the edges split before the first sweep, which
- * then normally finds nothing more to split and classifies at once.  That
- * sweep still verifies: whatever is left (a crossing made by the rounding)
- * is split by further passes as usual. */
+ * that only looks for them.  The crossings found are rounded as the first
+ * sweep rounds them and the edges split before it, so that it normally
+ * finds nothing more to split and classifies at once.  It still verifies:
+ * a crossing made by the rounding is split by further passes as usual. */
 #define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
 
 /* The side of c from the line a-b: its sign.  `narrow`: every coordinate
@@ -1750,39 +1749,13 @@ static int add_split_point(engine *g, uint32_t e, int64_t x, int64_t y)
 /* an edge's bounding box, y from yb to yt */
 typedef struct edge_box { int64_t yb, yt, xlo, xhi; uint32_t e; } edge_box;
 
-/* Every edge through the pixel of a split point g->S[from..] gets a split
- * point there too (snap rounding, as add_hot_pixel_splits). */
-static int add_pair_hot_pixels(engine *g, const edge_box *B, size_t n, size_t from)
-{
-    size_t end = g->ns;
-    for (size_t q = from; q < end;) {
-        int64_t px = g->S[q].x, py = g->S[q].y;
-        size_t q1 = q + 1; /* the entries of this point: q..q1 */
-        while (q1 < end && g->S[q1].x == px && g->S[q1].y == py)
-            q1++;
-        for (size_t k = 0; k < n && B[k].yb <= py + 1; k++) {
-            if (B[k].yt < py - 1 || B[k].xlo > px + 1 || B[k].xhi < px - 1)
-                continue;
-            uint32_t e = B[k].e;
-            const bedge *E = &g->E[e];
-            size_t r = q;
-            while (r < q1 && g->S[r].edge != e)
-                r++;
-            if (r < q1 || (px == E->xb && py == E->yb) || (px == E->xt && py == E->yt) ||
-                !meets_pixel(E->xb, E->yb, E->xt, E->yt, px, py))
-                continue;
-            if (!add_split_point(g, e, px, py))
-                return 0;
-        }
-        q = q1;
-    }
-    return 1;
-}
-
 /* The split points of every crossing of two edges inside both, rounded, and
- * of every edge passing a horizontal edge at a point off the grid (as the
- * sweep would find them), then of the hot pixels.  The edges are visited by
- * their lowest y, so that the pairs whose y ranges overlap come together. */
+ * of every edge passing a horizontal edge at a point off the grid: those the
+ * first sweep would find, so that the passes after it go as they would
+ * (snapping to hot pixels only where rounding made a new crossing: snapping
+ * at once would collapse slivers narrower than a unit that the exact
+ * rounding keeps).  The edges are visited by their lowest y, so that the
+ * pairs whose y ranges overlap come together. */
 static int add_pair_splits(engine *g)
 {
     const bedge *E = g->E;
@@ -1840,7 +1813,7 @@ static int add_pair_splits(engine *g)
                 return 0;
         }
     }
-    return add_pair_hot_pixels(g, B, n, 0);
+    return 1;
 }
 
 /* ---- assembly -------------------------------------------------------------- */
@@ -2643,7 +2616,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         if (!add_pair_splits(g) || !apply_splits(g, map, &kept, s.mem, s.memcap))
             return CG_ENOMEM;
     }
-    for (int pass = 0;; pass++) {
+    /* (the pairs' splits stand for the first pass) */
+    for (int pass = paired;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
             break;
@@ -2701,9 +2675,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         log->npt = log->ned = 0;
         log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
         /* (later passes are nearly always the last; small inputs gain
-         * less than the checkpoints cost, and a first pass after the pairs'
-         * splits nearly always is the last) */
-        s.log = pass == 0 && !paired && g->ne >= 128 ? log : NULL;
+         * less than the checkpoints cost) */
+        s.log = pass == 0 && g->ne >= 128 ? log : NULL;
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {

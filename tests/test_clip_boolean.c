@@ -262,6 +262,15 @@ static void fixed_cases(void)
     CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
     CHECK_EQ_INT(r.polygon_count, 2);
     CHECK_NEAR(cg_polygon_set64_area(&r), 50, 0);
+    /* two slivers under a unit wide that cross near (45, 13): rounding keeps
+     * them (exact area 23.73; found by the fuzz target when all four edges
+     * were snapped through that point and the result came out empty) */
+    cg_point64 S[] = {{0, 35}, {51, 10}, {3, 38}, {50, 10}};
+    cg_polygon_set64 sl = {0};
+    cg_polygon_set64_add_ring(&sl, S, 4, 1);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &sl, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r), 23.73, 2);
+    cg_polygon_set64_clear(&sl);
     /* a clockwise bow tie half: positive keeps only the counter-clockwise lobe */
     CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_POSITIVE, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 25, 0);

@@ -35,6 +35,7 @@
 #include "internal.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -1481,6 +1482,13 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
     i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
     if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
         return 0;
+    /* the line through a and b meets the square only if the centre is
+     * within half the square's width across the line, |d x (p - a)| <=
+     * (|dx| + |dy|) / 2: in doubles first, with a wide margin for rounding */
+    double dx = (double)(bx - ax), dy = (double)(by - ay);
+    double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
+    if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
+        return 0;
     int pos = 0, neg = 0;
     i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
     for (int k = 0; k < 4; k++) {
@@ -1494,54 +1502,147 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
 /* Snap rounding (Hobby): every edge that passes through the pixel of a
  * rounded split point is split there too, so that nearly parallel edges
  * meet at one grid point instead of crossing again a little further on.
- * Used from the second pass on; the points are sorted by y and each edge
- * looks only at those within its y range. */
-static int cmp_split_y(const void *a, const void *b)
+ * Used from the second pass on.  The points are put in a grid of square
+ * cells (about two points a cell; sorted by y, then x, in each cell), and
+ * each edge looks at the cells along it, row by row: the cost follows the
+ * edges' lengths and the points near them, not the points in their y
+ * range (dense crossings of long edges made that quadratic). */
+typedef struct hot_grid {
+    int64_t x0, y0, side;
+    size_t cols, rows;
+    size_t *start; /* the points of cell k: pts[start[k]..start[k + 1]) */
+    cg_point64 *pts;
+} hot_grid;
+
+static int cmp_point_yx(const void *a, const void *b)
 {
-    const splitpt *p = a, *q = b;
+    const cg_point64 *p = a, *q = b;
     if (p->y != q->y)
         return p->y < q->y ? -1 : 1;
     return (p->x > q->x) - (p->x < q->x);
 }
 
-static int add_hot_pixel_splits(engine *g)
+static size_t hot_cell(const hot_grid *h, int64_t x, int64_t y)
+{
+    return (size_t)((y - h->y0) / h->side) * h->cols + (size_t)((x - h->x0) / h->side);
+}
+
+static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
+{
+    int64_t x1 = S[0].x, y1 = S[0].y;
+    h->x0 = x1;
+    h->y0 = y1;
+    for (size_t k = 1; k < ns; k++) {
+        h->x0 = S[k].x < h->x0 ? S[k].x : h->x0;
+        h->y0 = S[k].y < h->y0 ? S[k].y : h->y0;
+        x1 = S[k].x > x1 ? S[k].x : x1;
+        y1 = S[k].y > y1 ? S[k].y : y1;
+    }
+    double w = (double)(x1 - h->x0) + 1, ht = (double)(y1 - h->y0) + 1;
+    double side = ceil(sqrt(w * ht * 2 / (double)ns));
+    for (;;) { /* at most about 4 cells a point, whatever the shape */
+        double cols = floor((w - 1) / side) + 1, rows = floor((ht - 1) / side) + 1;
+        if (cols * rows <= 4 * (double)ns + 64)
+            break;
+        side = ceil(side * 1.5);
+    }
+    h->side = (int64_t)side;
+    h->cols = (size_t)((x1 - h->x0) / h->side) + 1;
+    h->rows = (size_t)((y1 - h->y0) / h->side) + 1;
+    size_t cells = h->cols * h->rows;
+    h->start = calloc(cells + 1, sizeof *h->start);
+    h->pts = malloc(ns * sizeof *h->pts);
+    size_t *next = malloc((cells + 1) * sizeof *next);
+    if (!h->start || !h->pts || !next) {
+        free(next);
+        return 0;
+    }
+    for (size_t k = 0; k < ns; k++)
+        h->start[hot_cell(h, S[k].x, S[k].y) + 1]++;
+    for (size_t c = 0; c < cells; c++)
+        h->start[c + 1] += h->start[c];
+    memcpy(next, h->start, (cells + 1) * sizeof *next);
+    for (size_t k = 0; k < ns; k++)
+        h->pts[next[hot_cell(h, S[k].x, S[k].y)]++] = (cg_point64){S[k].x, S[k].y};
+    free(next);
+    for (size_t c = 0; c < cells; c++)
+        if (h->start[c + 1] - h->start[c] > 1)
+            sort_few(h->pts + h->start[c], h->start[c + 1] - h->start[c], sizeof *h->pts,
+                     cmp_point_yx);
+    return 1;
+}
+
+static int add_hot_pixel_splits(engine *g, int vertices)
 {
     size_t ns = g->ns;
     if (ns == 0)
         return 1;
-    splitpt *pts = malloc(ns * sizeof *pts);
-    if (!pts)
-        return 0;
-    memcpy(pts, g->S, ns * sizeof *pts);
-    qsort(pts, ns, sizeof *pts, cmp_split_y);
-    for (size_t i = 0; i < g->ne; i++) {
-        const bedge *e = &g->E[i];
-        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
-        size_t lo = 0, hi = ns;
-        while (lo < hi) {
-            size_t mid = (lo + hi) / 2;
-            if (pts[mid].y < e->yb - 1)
-                lo = mid + 1;
-            else
-                hi = mid;
+    hot_grid h;
+    memset(&h, 0, sizeof h);
+    int ok;
+    if (vertices) {
+        /* the edges' ends are hot pixels too (complete snap rounding) */
+        splitpt *pts = malloc((ns + 2 * g->ne) * sizeof *pts);
+        ok = pts != NULL;
+        if (ok) {
+            memcpy(pts, g->S, ns * sizeof *pts);
+            size_t n = ns;
+            for (size_t i = 0; i < g->ne; i++) {
+                pts[n++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
+                pts[n++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
+            }
+            ok = hot_grid_build(&h, pts, n);
+            free(pts);
         }
-        for (size_t q = lo; q < ns && pts[q].y <= e->yt + 1; q++) {
-            int64_t px = pts[q].x, py = pts[q].y;
-            if (px < xlo - 1 || px > xhi + 1 || (q > lo && px == pts[q - 1].x && py == pts[q - 1].y))
+    } else {
+        ok = hot_grid_build(&h, g->S, ns);
+    }
+    for (size_t i = 0; ok && i < g->ne; i++) {
+        const bedge e = g->E[i];
+        int64_t xlo = e.xb < e.xt ? e.xb : e.xt, xhi = e.xb < e.xt ? e.xt : e.xb;
+        if (e.yt + 1 < h.y0)
+            continue;
+        size_t r = e.yb - 1 > h.y0 ? (size_t)((e.yb - 1 - h.y0) / h.side) : 0;
+        for (; ok && r < h.rows; r++) {
+            int64_t ry0 = h.y0 + (int64_t)r * h.side, ry1 = ry0 + h.side - 1;
+            if (ry0 > e.yt + 1)
+                break;
+            /* the edge's x over the row's y and one unit more each way
+             * (clamped to the edge), widened by two units: a pixel whose
+             * centre is there may meet it */
+            int64_t ya = ry0 - 1 > e.yb ? ry0 - 1 : e.yb, yz = ry1 + 1 < e.yt ? ry1 + 1 : e.yt;
+            if (ya > yz)
+                ya = yz = ya > e.yt ? e.yt : e.yb;
+            double xa = x_at(&e, ya), xz = x_at(&e, yz);
+            double lo = (xa < xz ? xa : xz) - 2 - (double)h.x0;
+            double hi = (xa < xz ? xz : xa) + 2 - (double)h.x0;
+            if (hi < 0)
                 continue;
-            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))
-                continue;
-            if (!meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py))
-                continue;
-            GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
-                free(pts);
-                return 0;
-            });
-            g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+            size_t c0 = lo <= 0 ? 0 : (size_t)(lo / (double)h.side);
+            size_t c1 = (size_t)(hi / (double)h.side);
+            if (c1 >= h.cols)
+                c1 = h.cols - 1;
+            for (size_t c = c0; ok && c <= c1; c++) {
+                size_t cell = r * h.cols + c;
+                for (size_t q = h.start[cell]; q < h.start[cell + 1]; q++) {
+                    int64_t px = h.pts[q].x, py = h.pts[q].y;
+                    if ((q > h.start[cell] && px == h.pts[q - 1].x && py == h.pts[q - 1].y) ||
+                        py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
+                        (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
+                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py))
+                        continue;
+                    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
+                        ok = 0;
+                        break;
+                    });
+                    g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+                }
+            }
         }
     }
-    free(pts);
-    return 1;
+    free(h.start);
+    free(h.pts);
+    return ok;
 }
 
 /* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
@@ -1661,11 +1762,10 @@ static int apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_
 /* ---- small inputs: crossings found pair by pair ------------------------------ */
 
 /* On few edges, testing every pair for a crossing costs less than a sweep
- * that only looks for them.  The crossings found are rounded and snapped as
- * from the second pass on, and the edges split before the first sweep, which
- * then normally finds nothing more to split and classifies at once.  That
- * sweep still verifies: whatever is left (a crossing made by the rounding)
- * is split by further passes as usual. */
+ * that only looks for them.  The crossings found are rounded as the first
+ * sweep rounds them and the edges split before it, so that it normally
+ * finds nothing more to split and classifies at once.  It still verifies:
+ * a crossing made by the rounding is split by further passes as usual. */
 #define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
 
 /* The side of c from the line a-b: its sign.  `narrow`: every coordinate
@@ -1704,39 +1804,13 @@ static int add_split_point(engine *g, uint32_t e, int64_t x, int64_t y)
 /* an edge's bounding box, y from yb to yt */
 typedef struct edge_box { int64_t yb, yt, xlo, xhi; uint32_t e; } edge_box;
 
-/* Every edge through the pixel of a split point g->S[from..] gets a split
- * point there too (snap rounding, as add_hot_pixel_splits). */
-static int add_pair_hot_pixels(engine *g, const edge_box *B, size_t n, size_t from)
-{
-    size_t end = g->ns;
-    for (size_t q = from; q < end;) {
-        int64_t px = g->S[q].x, py = g->S[q].y;
-        size_t q1 = q + 1; /* the entries of this point: q..q1 */
-        while (q1 < end && g->S[q1].x == px && g->S[q1].y == py)
-            q1++;
-        for (size_t k = 0; k < n && B[k].yb <= py + 1; k++) {
-            if (B[k].yt < py - 1 || B[k].xlo > px + 1 || B[k].xhi < px - 1)
-                continue;
-            uint32_t e = B[k].e;
-            const bedge *E = &g->E[e];
-            size_t r = q;
-            while (r < q1 && g->S[r].edge != e)
-                r++;
-            if (r < q1 || (px == E->xb && py == E->yb) || (px == E->xt && py == E->yt) ||
-                !meets_pixel(E->xb, E->yb, E->xt, E->yt, px, py))
-                continue;
-            if (!add_split_point(g, e, px, py))
-                return 0;
-        }
-        q = q1;
-    }
-    return 1;
-}
-
 /* The split points of every crossing of two edges inside both, rounded, and
- * of every edge passing a horizontal edge at a point off the grid (as the
- * sweep would find them), then of the hot pixels.  The edges are visited by
- * their lowest y, so that the pairs whose y ranges overlap come together. */
+ * of every edge passing a horizontal edge at a point off the grid: those the
+ * first sweep would find, so that the passes after it go as they would
+ * (snapping to hot pixels only where rounding made a new crossing: snapping
+ * at once would collapse slivers narrower than a unit that the exact
+ * rounding keeps).  The edges are visited by their lowest y, so that the
+ * pairs whose y ranges overlap come together. */
 static int add_pair_splits(engine *g)
 {
     const bedge *E = g->E;
@@ -1794,7 +1868,7 @@ static int add_pair_splits(engine *g)
                 return 0;
         }
     }
-    return add_pair_hot_pixels(g, B, n, 0);
+    return 1;
 }
 
 /* ---- assembly -------------------------------------------------------------- */
@@ -2256,6 +2330,14 @@ fail:
 }
 
 #define MAX_PASSES 64
+/* A pass that looked at this many active edges per edge (long active lists:
+ * another whole pass would be dear) snaps to the pixels of the edges' ends
+ * as well as of its rounded points, from then on: complete snap rounding
+ * (Hobby), after which a verifying pass finds nothing to split (on dense
+ * crossings the rounding otherwise makes new ones, pass after pass). */
+#ifndef DENSE_VISITS
+#define DENSE_VISITS 200
+#endif
 
 /* Forgets the arrays of the last pass; their memory is kept for the next. */
 static void sweep_reset(sweep *s)
@@ -2583,13 +2665,15 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
     int paired = g->ne + g->nh <= PAIRS_MAX_EDGES;
+    int dense = 0; /* a pass split many edges: snap to every hot pixel */
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
         if (!add_pair_splits(g) || !apply_splits(g, map, &kept, s.mem, s.memcap))
             return CG_ENOMEM;
     }
-    for (int pass = 0;; pass++) {
+    /* (the pairs' splits stand for the first pass) */
+    for (int pass = paired;; pass++) {
         if (pass == MAX_PASSES) {
             st = CG_ERANGE;
             break;
@@ -2647,9 +2731,8 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
         log->npt = log->ned = 0;
         log->budget = g->ne / 2 + 256; /* (a small block: no fresh pages) */
         /* (later passes are nearly always the last; small inputs gain
-         * less than the checkpoints cost, and a first pass after the pairs'
-         * splits nearly always is the last) */
-        s.log = pass == 0 && !paired && g->ne >= 128 ? log : NULL;
+         * less than the checkpoints cost) */
+        s.log = pass == 0 && g->ne >= 128 ? log : NULL;
         s.ck_visits = 0;
         int r = run_sweep(&s);
         if (r <= 0) {
@@ -2692,7 +2775,9 @@ static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
             st = assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
             break;
         }
-        if (pass >= 1 && !add_hot_pixel_splits(g))
+        if (s.visits >= DENSE_VISITS * edges)
+            dense = 1;
+        if ((pass >= 1 || dense) && !add_hot_pixel_splits(g, dense))
             break;
         free(bands);
         bands = NULL;

@@ -1,0 +1,462 @@
+/* Assembly of the boolean operations' result: boundary pieces linked into
+ * rings, holes placed in the smallest outer ring around them. */
+#include "boolean_engine.h"
+
+/* ---- assembly -------------------------------------------------------------- */
+
+/* Clockwise angle from direction r to direction o, as an order key:
+ * returns <0 when o1 comes before o2 turning clockwise from r. */
+static int half_cw(i128 rx, i128 ry, i128 ox, i128 oy)
+{
+    i128 c = rx * oy - ry * ox, d = rx * ox + ry * oy;
+    if (c < 0)
+        return 0;
+    if (c == 0 && d < 0)
+        return 1;
+    if (c > 0)
+        return 2;
+    return 3;
+}
+
+static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
+{
+    i128 ax = a->x1 - a->x0, ay = a->y1 - a->y0, bx = b->x1 - b->x0, by = b->y1 - b->y0;
+    int ha = half_cw(rx, ry, ax, ay), hb = half_cw(rx, ry, bx, by);
+    if (ha != hb)
+        return ha < hb;
+    i128 c = ax * by - ay * bx;
+    return c < 0; /* b is clockwise of a */
+}
+
+typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
+static int cmp_area(const void *a, const void *b)
+{
+    const ring_by_area *x = a, *y = b;
+    if (x->area != y->area)
+        return x->area < y->area ? -1 : 1;
+    return (x->ring > y->ring) - (x->ring < y->ring);
+}
+
+typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
+static int cmp_hole_x(const void *a, const void *b)
+{
+    const hole_point *p = a, *q = b;
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    return (p->ring > q->ring) - (p->ring < q->ring);
+}
+
+static int cmp_hole_y(const void *a, const void *b)
+{
+    const hole_point *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->ring > q->ring) - (p->ring < q->ring);
+}
+
+/* first index of a (sorted by x, or by y) whose x (y) is >= v */
+static size_t first_at_least(const hole_point *a, size_t n, int64_t v, int by_y)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if ((by_y ? a[mid].y : a[mid].x) < v)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* a hash of a grid point in [0, 2^bits) */
+static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
+{
+    uint64_t h = (uint64_t)x * 0x9e3779b97f4a7c15u ^ (uint64_t)y * 0xc2b2ae3d27d4eb4fu;
+    h ^= h >> 29;
+    return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
+}
+
+/* The first of the pieces P[0..np) (sorted by start point, y then x)
+ * starting at (vx, vy), np when none: a search that gallops from P[from]
+ * and then halves. */
+static size_t first_leaving(const piece *P, size_t np, size_t from, int64_t vx, int64_t vy)
+{
+#define BEFORE(i) (P[i].y0 < vy || (P[i].y0 == vy && P[i].x0 < vx))
+    size_t lo, hi; /* the first not BEFORE is in [lo, hi] (hi == np: none) */
+    if (BEFORE(from)) {
+        size_t step = 1;
+        lo = from + 1;
+        hi = lo;
+        while (hi < np && BEFORE(hi)) {
+            lo = hi + 1;
+            hi = step < np - hi ? hi + step : np;
+            step *= 2;
+        }
+    } else {
+        size_t step = 1;
+        hi = from;
+        lo = from;
+        while (lo > 0 && !BEFORE(lo - 1)) {
+            hi = lo - 1;
+            lo = step < lo ? lo - step : 0;
+            step *= 2;
+        }
+    }
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (BEFORE(mid))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < np && P[lo].x0 == vx && P[lo].y0 == vy ? lo : np;
+#undef BEFORE
+}
+
+/* whether p is in the hash set h (2^bits entries: index + 1 into pts, 0
+ * free) */
+static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_point64 p)
+{
+    for (size_t i = point_hash(p.x, p.y, bits); h[i]; i = (i + 1) & (((size_t)1 << bits) - 1))
+        if (pts[h[i] - 1].x == p.x && pts[h[i] - 1].y == p.y)
+            return 1;
+    return 0;
+}
+
+typedef struct ringbuf {
+    cg_point64 *pts;
+    size_t n, cap;
+} ringbuf;
+
+/* buf (cap bytes, or NULL) is the sweep's block, no longer needed: the
+ * assembly's arrays are carved from it when they fit (no fresh pages). */
+int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
+{
+    size_t np = g->np;
+    piece *P = g->P;
+    if (np == 0)
+        return 1;
+    /* Every array of the assembly from one block sized from the piece
+     * count (a ring takes each piece at most once and has 3 vertices or
+     * more, so at most np points in all and np / 3 rings): one allocation
+     * per call, which is most of the fixed cost on small inputs. */
+    if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
+        return 0;
+    size_t mr = np / 3 + 1; /* rings at most */
+    size_t bytes = 0, off[16], k = 0;
+#define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
+    ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
+    ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
+    ASM_PART(np, sizeof(piece));        /* 2: sorted pieces */
+    ASM_PART(np, 1);                    /* 3: used */
+    ASM_PART(np, sizeof(keyval));       /* 4: sort temporary */
+    ASM_PART(np, sizeof(cg_point64));   /* 5: ring points */
+    ASM_PART(mr + 1, sizeof(size_t));   /* 6: ring starts */
+    ASM_PART(mr, sizeof(double));       /* 7: area */
+    ASM_PART(mr, 4 * sizeof(int64_t));  /* 8: bounding boxes */
+    ASM_PART(mr, sizeof(size_t));       /* 9: parent */
+    ASM_PART(mr, sizeof(size_t));       /* 10: outer rings */
+    ASM_PART(mr, sizeof(ring_by_area)); /* 11: outers by area */
+    ASM_PART(mr, sizeof(hole_point));   /* 12: hole points */
+    ASM_PART(mr, sizeof(hole_point));   /* 13: candidates */
+    ASM_PART(2 * (mr + 1), sizeof(size_t)); /* 14: first and next hole */
+    /* the first piece leaving a point: by a hash of the point, or on many
+     * pieces (where the lookups would miss the caches) by a search from the
+     * piece that arrives there (a ring's next piece is usually close by in
+     * the order) */
+    int hashed = np < 32768;
+    size_t hbits = 4;
+    while (hashed && ((size_t)1 << hbits) < 2 * np)
+        hbits++;
+    ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: start point -> first piece */
+#undef ASM_PART
+    char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
+    if (!mem)
+        return 0;
+    {
+        keyval *scratch = (keyval *)(mem + off[0]);
+        uint32_t *order = (uint32_t *)(mem + off[1]);
+        piece *sorted = (piece *)(mem + off[2]);
+        if (!boolean_sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
+                           (keyval *)(mem + off[4]))) {
+            free(own);
+            return 0;
+        }
+        for (size_t i = 0; i < np; i++)
+            sorted[i] = P[order[i]];
+        memcpy(P, sorted, np * sizeof *P);
+    }
+    /* the first of the (sorted) pieces leaving each point, by a hash of the
+     * point (open addressing; index + 1, 0 is free) */
+    uint32_t *first = (uint32_t *)(mem + off[15]);
+    size_t hmask = ((size_t)1 << hbits) - 1;
+    if (hashed)
+        memset(first, 0, (hmask + 1) * sizeof *first);
+    for (size_t i = 0; i < np && hashed; i++) {
+        if (i && P[i].x0 == P[i - 1].x0 && P[i].y0 == P[i - 1].y0)
+            continue;
+        size_t h = point_hash(P[i].x0, P[i].y0, hbits);
+        while (first[h])
+            h = (h + 1) & hmask;
+        first[h] = (uint32_t)(i + 1);
+    }
+    unsigned char *used = (unsigned char *)(mem + off[3]);
+    memset(used, 0, np);
+    /* rings collected first: points and ring boundaries (in the block:
+     * never grown, never freed on their own) */
+    cg_polygon_set64 rings = {0};
+    rings.points = (cg_point64 *)(mem + off[5]);
+    rings.ring_start = (size_t *)(mem + off[6]);
+    rings.ring_start[0] = 0;
+    ringbuf rb = {NULL, 0, 0};
+    int ok = 0;
+    for (size_t start = 0; start < np; start++) {
+        if (used[start])
+            continue;
+        /* walked in place, after the rings so far */
+        rb.pts = rings.points + rings.point_count;
+        rb.cap = np - rings.point_count;
+        rb.n = 0;
+        size_t cur = start;
+        used[cur] = 1;
+        for (;;) {
+            if (rb.n == rb.cap)
+                goto fail; /* (cannot happen: each piece is taken once) */
+            rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
+            int64_t vx = P[cur].x1, vy = P[cur].y1;
+            /* outgoing pieces at v: the first of them */
+            size_t lo = hashed ? np : first_leaving(P, np, cur, vx, vy);
+            for (size_t h = point_hash(vx, vy, hbits); hashed && first[h]; h = (h + 1) & hmask) {
+                size_t f = first[h] - 1;
+                if (P[f].x0 == vx && P[f].y0 == vy) {
+                    lo = f;
+                    break;
+                }
+            }
+            size_t best = (size_t)-1;
+            i128 rx = P[cur].x0 - P[cur].x1, ry = P[cur].y0 - P[cur].y1;
+            for (size_t k = lo; k < np && P[k].y0 == vy && P[k].x0 == vx; k++) {
+                if (used[k] && k != start)
+                    continue;
+                if (best == (size_t)-1 || cw_before(rx, ry, &P[k], &P[best]))
+                    best = k;
+            }
+            if (best == (size_t)-1 || best == start)
+                break;
+            cur = best;
+            used[cur] = 1;
+        }
+        /* drop collinear vertices */
+        size_t n = rb.n;
+        int again = 1;
+        while (again && n >= 3) {
+            again = 0;
+            size_t m = 0;
+            for (size_t i = 0; i < n; i++) {
+                cg_point64 a = m ? rb.pts[m - 1] : rb.pts[n - 1], b = rb.pts[i],
+                           c = rb.pts[i + 1 < n ? i + 1 : 0];
+                i128 cr = (i128)(b.x - a.x) * (c.y - b.y) - (i128)(b.y - a.y) * (c.x - b.x);
+                if (cr == 0) {
+                    again = 1;
+                    continue;
+                }
+                rb.pts[m++] = b;
+            }
+            n = m;
+        }
+        if (n < 3)
+            continue;
+        if (rings.ring_count == mr)
+            goto fail; /* (cannot happen, as above) */
+        rings.point_count += n;
+        rings.ring_start[++rings.ring_count] = rings.point_count;
+    }
+    /* classify and nest */
+    {
+        size_t nr = rings.ring_count;
+        double *area = (double *)(mem + off[7]);
+        int64_t(*bb)[4] = (int64_t(*)[4])(mem + off[8]);
+        size_t *parent = (size_t *)(mem + off[9]);
+        size_t *order = (size_t *)(mem + off[10]);
+        size_t nouter = 0;
+        for (size_t r = 0; r < nr; r++) {
+            size_t a = rings.ring_start[r], b = rings.ring_start[r + 1];
+            i128 s = 0;
+            int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+            for (size_t i = a; i < b; i++) {
+                cg_point64 p = rings.points[i], q = rings.points[i + 1 < b ? i + 1 : a];
+                s += (i128)p.x * q.y - (i128)q.x * p.y;
+                if (p.x < x0)
+                    x0 = p.x;
+                if (p.x > x1)
+                    x1 = p.x;
+                if (p.y < y0)
+                    y0 = p.y;
+                if (p.y > y1)
+                    y1 = p.y;
+            }
+            area[r] = (double)s;
+            bb[r][0] = x0;
+            bb[r][1] = y0;
+            bb[r][2] = x1;
+            bb[r][3] = y1;
+            parent[r] = (size_t)-1;
+            if (s > 0)
+                order[nouter++] = r;
+        }
+        /* Each hole goes to the smallest outer containing a point of one
+         * of its edges that is on no other ring (below).  The outers are taken by increasing area; for each, the still unplaced
+         * holes within its box are tested together: the outer's edges are
+         * matched with the hole points sorted by y. */
+        int fail_nest = 0;
+        ring_by_area *ra = (ring_by_area *)(mem + off[11]);
+        size_t nholes = nr - nouter;
+        hole_point *hp = (hole_point *)(mem + off[12]);
+        hole_point *cand = (hole_point *)(mem + off[13]);
+        {
+            for (size_t i = 0; i < nouter; i++)
+                ra[i] = (ring_by_area){area[order[i]], order[i]};
+            boolean_sort_few(ra, nouter, sizeof *ra, cmp_area);
+            /* The point of a hole (in quadrupled coordinates): the midpoint
+             * of one of its edges, or else a quarter point, that is not a
+             * vertex of another ring (rings may touch there, after the
+             * collinear vertex of the hole went away), so that it is on no
+             * other ring. */
+            uint32_t *verts = NULL; /* a hash set of the vertices, when first needed */
+            size_t vbits = 4;
+            size_t nv = rings.point_count;
+            size_t h = 0;
+            for (size_t r = 0; r < nr && !fail_nest; r++) {
+                if (area[r] > 0)
+                    continue;
+                size_t a0 = rings.ring_start[r], a1 = rings.ring_start[r + 1];
+                cg_point64 u0 = rings.points[a0], v0 = rings.points[a0 + 1];
+                int64_t px = 2 * (u0.x + v0.x), py = 2 * (u0.y + v0.y);
+                int found = 0;
+                for (int quarter = 0; quarter < 2 && !found; quarter++) {
+                    for (size_t i = a0; i < a1 && !found; i++) {
+                        cg_point64 u = rings.points[i], v = rings.points[i + 1 < a1 ? i + 1 : a0];
+                        int64_t qx = quarter ? 3 * u.x + v.x : 2 * (u.x + v.x);
+                        int64_t qy = quarter ? 3 * u.y + v.y : 2 * (u.y + v.y);
+                        cg_point64 m = {qx / 4, qy / 4};
+                        if (!(qx & 3) && !(qy & 3) && !verts) {
+                            while (((size_t)1 << vbits) < 2 * nv)
+                                vbits++;
+                            verts = calloc((size_t)1 << vbits, sizeof *verts);
+                            if (!verts) {
+                                fail_nest = 1;
+                                break;
+                            }
+                            for (size_t v = 0; v < nv; v++) {
+                                cg_point64 p = rings.points[v];
+                                size_t h = point_hash(p.x, p.y, vbits);
+                                while (verts[h])
+                                    h = (h + 1) & (((size_t)1 << vbits) - 1);
+                                verts[h] = (uint32_t)(v + 1);
+                            }
+                        }
+                        if ((qx & 3) || (qy & 3) ||
+                            !is_vertex(verts, vbits, rings.points, m)) {
+                            px = qx;
+                            py = qy;
+                            found = 1;
+                        }
+                    }
+                }
+                hp[h++] = (hole_point){px, py, r, 0};
+            }
+            free(verts);
+            if (fail_nest)
+                nholes = 0;
+            boolean_sort_few(hp, nholes, sizeof *hp, cmp_hole_x);
+            size_t unplaced = nholes;
+            for (size_t oi = 0; oi < nouter && unplaced; oi++) {
+                size_t o = ra[oi].ring;
+                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2], by1 = 4 * bb[o][3];
+                /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
+                size_t lo = first_at_least(hp, nholes, bx0, 0);
+                size_t nc = 0;
+                for (size_t k = lo; k < nholes && hp[k].x <= bx1; k++)
+                    if (hp[k].parent == 0 && hp[k].y >= by0 && hp[k].y <= by1) {
+                        cand[nc] = hp[k];
+                        cand[nc].parent = k; /* index back into hp */
+                        nc++;
+                    }
+                if (!nc)
+                    continue;
+                boolean_sort_few(cand, nc, sizeof *cand, cmp_hole_y);
+                unsigned char *in = calloc(nc, 1);
+                if (!in) {
+                    fail_nest = 1;
+                    break;
+                }
+                size_t s0 = rings.ring_start[o], s1 = rings.ring_start[o + 1];
+                for (size_t i = s0; i < s1; i++) {
+                    cg_point64 u = rings.points[i], v = rings.points[i + 1 < s1 ? i + 1 : s0];
+                    int64_t uy = 4 * u.y, vy = 4 * v.y;
+                    if (uy == vy)
+                        continue;
+                    int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
+                    /* candidates with ylo <= y < yhi */
+                    size_t l = first_at_least(cand, nc, ylo, 1);
+                    i128 ux = 4 * (i128)u.x, vx = 4 * (i128)v.x;
+                    for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
+                        i128 mx = cand[k].x, my = cand[k].y;
+                        i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
+                        if (vy > uy ? lhs < rhs : lhs > rhs)
+                            in[k] = !in[k];
+                    }
+                }
+                for (size_t k = 0; k < nc; k++)
+                    if (in[k]) {
+                        hole_point *hpk = &hp[cand[k].parent];
+                        hpk->parent = o + 1;
+                        parent[hpk->ring] = o;
+                        unplaced--;
+                    }
+                free(in);
+            }
+        }
+        if (fail_nest)
+            goto fail;
+        /* output: each outer followed by its holes (a hole without an outer
+         * cannot happen; it would be dropped) */
+        size_t *first_hole = (size_t *)(mem + off[14]);
+        size_t *next_hole = first_hole + (nr + 1);
+        int fail = 0;
+        {
+            for (size_t r = 0; r < nr; r++)
+                first_hole[r] = (size_t)-1;
+            for (size_t r = nr; r-- > 0;) {
+                if (parent[r] != (size_t)-1) {
+                    next_hole[r] = first_hole[parent[r]];
+                    first_hole[parent[r]] = r;
+                }
+            }
+            for (size_t r = 0; r < nr && !fail; r++) {
+                if (area[r] <= 0)
+                    continue;
+                size_t a = rings.ring_start[r];
+                if (cg_polygon_set64_add_ring(result, rings.points + a,
+                                              rings.ring_start[r + 1] - a, 1) != CG_OK) {
+                    fail = 1;
+                    break;
+                }
+                for (size_t h = first_hole[r]; h != (size_t)-1; h = next_hole[h]) {
+                    size_t ha = rings.ring_start[h];
+                    if (cg_polygon_set64_add_ring(result, rings.points + ha,
+                                                  rings.ring_start[h + 1] - ha, 0) != CG_OK) {
+                        fail = 1;
+                        break;
+                    }
+                }
+            }
+        }
+        if (fail)
+            goto fail;
+    }
+    ok = 1;
+fail:
+    free(own);
+    return ok;
+}

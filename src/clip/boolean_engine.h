@@ -1,0 +1,279 @@
+/* The engine of the boolean operations (boolean_*.c): its edges, pieces
+ * and sweep state, the exact helpers its files share, and the step each
+ * file does.  boolean.c describes the algorithm and runs the passes. */
+#ifndef CG_CLIP_BOOLEAN_ENGINE_H
+#define CG_CLIP_BOOLEAN_ENGINE_H
+
+#include "internal.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef clip_i128 i128;
+
+/* NOINLINE keeps a function out of its caller, where it would crowd the
+ * registers of the sweep's hot loop; ALWAYS_INLINE puts the per-scanline
+ * classification into the sweeps (measured cheaper than the calls) */
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define NOINLINE
+#define ALWAYS_INLINE inline
+#endif
+
+typedef struct bedge {
+    int64_t xb, yb, xt, yt; /* bottom and top, yb < yt */
+    double slope;           /* dx / dy */
+    uint32_t orig;          /* the input edge it is a piece of (engine's O), or
+                             * NO_ORIG: itself */
+    int8_t w;               /* winding added when crossed from left to right */
+    uint8_t op;             /* 0 subject, 1 clip */
+} bedge;
+#define NO_ORIG UINT32_MAX
+
+typedef struct hseg { int64_t y, x0, x1; } hseg;
+typedef struct splitpt { uint32_t edge; int64_t x, y; } splitpt;
+typedef struct piece { int64_t x0, y0, x1, y1; } piece;
+
+/* Room for one more item in arr (n items, room for cap; `fail` runs when
+ * memory runs out).  arr may still be the caller's buffer `small` (on the
+ * stack, for small inputs): it moves to the heap when it grows.  GROW is the
+ * same for arrays that are on the heap from the start. */
+#define GROW_SMALL(arr, n, cap, small, fail)                                   \
+    do {                                                                       \
+        if ((n) == (cap)) {                                                    \
+            void *p_ = boolean_grow_from(arr, small, n, &(cap), sizeof *(arr));        \
+            if (!p_)                                                           \
+                fail;                                                          \
+            (arr) = p_;                                                        \
+        }                                                                      \
+    } while (0)
+
+#define GROW(arr, n, cap, fail) GROW_SMALL(arr, n, cap, NULL, fail)
+
+typedef struct engine {
+    bedge *E;
+    size_t ne, cape;
+    hseg *H;
+    size_t nh, caph;
+    splitpt *S;
+    size_t ns, caps;
+    piece *P;
+    size_t np, capp;
+    int64_t (*O)[4]; /* input edges of pieces (x0, y0, x1, y1): O_small or heap */
+    size_t no, capo;
+    int64_t O_small[16][4];
+    /* the caller's buffers that E, S and P start in on small inputs (then
+     * never freed; NULL when none) */
+    bedge *E_small;
+    splitpt *S_small;
+    piece *P_small;
+    cg_clip_op op;
+    cg_clip_fill fill[2];
+    unsigned char table[4]; /* in the result, by (in subject, in clip) */
+    unsigned char near[5][5]; /* inside() for windings -2..2 */
+} engine;
+
+/* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
+ * memory, arr unchanged */
+void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size);
+
+/* Adds the edge (x0, y0)-(x1, y1) of operand op (0 subject, 1 clip) to g:
+ * a horizontal one to g->H, dropped when it is a point; orig as bedge.orig.
+ * 0 when out of memory. */
+int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
+                      uint32_t orig);
+
+/* ---- exact helpers ------------------------------------------------------ */
+
+/* floor(n / d + 1/2) for d > 0 */
+static inline int64_t round_div(i128 n, i128 d)
+{
+    i128 q = n / d, r = n % d;
+    if (r < 0) {
+        q -= 1;
+        r += d;
+    }
+    if (2 * r >= d)
+        q += 1;
+    return (int64_t)q;
+}
+
+/* x of edge e at scanline y as num / den, den > 0 */
+static inline i128 x_num(const bedge *e, int64_t y)
+{
+    return (i128)e->xb * (e->yt - e->yb) + (i128)(y - e->yb) * (e->xt - e->xb);
+}
+
+static inline int64_t x_den(const bedge *e) { return e->yt - e->yb; }
+
+static inline double x_at(const bedge *e, int64_t y)
+{
+    if (y == e->yb)
+        return (double)e->xb;
+    if (y == e->yt)
+        return (double)e->xt;
+    return (double)e->xb + (double)(y - e->yb) * e->slope;
+}
+
+static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
+{
+    i128 n = x_num(e, y), d = x_den(e);
+    *x = round_div(n, d);
+    return (i128)*x * d == n;
+}
+
+/* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
+ * parallel (boolean_sweep.c). */
+int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
+                              int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py);
+
+static inline int fill_in(cg_clip_fill f, int64_t w)
+{
+    switch (f) {
+    case CG_CLIP_EVEN_ODD:
+        return (int)(w & 1);
+    case CG_CLIP_NON_ZERO:
+        return w != 0;
+    case CG_CLIP_POSITIVE:
+        return w > 0;
+    default:
+        return w < 0;
+    }
+}
+
+static inline int inside_rule(const engine *g, int64_t wa, int64_t wb)
+{
+    return g->table[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
+}
+
+/* whether a point with windings wa (subject) and wb (clip) is in the result */
+static inline int inside(const engine *g, int64_t wa, int64_t wb)
+{
+    if ((uint64_t)(wa + 2) < 5 && (uint64_t)(wb + 2) < 5)
+        return g->near[wa + 2][wb + 2];
+    return inside_rule(g, wa, wb);
+}
+
+/* ---- sorting (boolean_sort.c) ----------------------------------------- */
+
+typedef struct keyval { uint64_t key; uint32_t val; } keyval;
+
+/* idx[0..n) = 0..n-1 ordered by (k1, k2), ties by index: k1[i] and k2[i] are
+ * the int64_t fields `stride` bytes apart of record i; scratch holds n
+ * keyvals, tmp n or is NULL.  0 when out of memory. */
+int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                          uint32_t *idx, keyval *scratch, keyval *tmp);
+/* qsort, by straight insertion when n is small */
+void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *));
+
+/* ---- the sweep ------------------------------------------------------------ */
+
+typedef struct sweep {
+    engine *g;
+    int64_t *ys;
+    size_t nys;
+    uint32_t *by_bottom; /* edges sorted by yb */
+    uint32_t *act, *nxt, *fresh, *dirty;
+    uint32_t *by_top, *clus, *seam; /* the light sweep's */
+    keyval *scratch, *scratch2;      /* for sorting */
+    hseg *hsorted;
+    uint32_t *horder;
+    void *mem; /* all of the above, carved from one block */
+    size_t memcap;
+    void *mem_small; /* the caller's block mem starts as (never freed) */
+    int32_t *wr0, *wr1; /* windings right of each edge (its coincident group):
+                         * sums of at most ne <= INT32_MAX terms of +-1 */
+    size_t nact;
+    double *xc, *xn; /* x at the current scanline, at the next one */
+    /* runs */
+    unsigned char *run_open, *run_up;
+    unsigned char *brk, *brk_next; /* a run breaks at this scanline, the next */
+    int64_t *run_x, *run_y;
+    int classify, changed;
+    size_t visits; /* active edges summed over the scanlines (full sweep) */
+    uint32_t *brkq, *brkq_next; /* the edges of brk, of brk_next (full sweep) */
+    size_t nbrkq, capbrkq;
+    int brkq_full;
+    int use_input_lines; /* round on the input edges (early passes) */
+    struct ck_log *log;   /* checkpoints of this pass, or NULL */
+    size_t ck_visits;     /* the next checkpoint once visits reach this */
+    size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
+    int64_t yspan;        /* from the first scanline to the last */
+    /* the hand-over to the last pass's results (boolean_ck_same) */
+    const struct ck_log *prev; /* or NULL */
+    const uint32_t *prev_map;  /* its edge numbers to ours */
+    size_t prev_ne, prev_j;
+    const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
+    size_t nbands, band;
+    size_t (*ranges)[2];       /* the ranges of its pieces taken */
+    size_t nranges;
+} sweep;
+
+/* Checkpoints.  A full pass that splits edges is repeated, but below the
+ * lowest split edge the next pass would see exactly the same edges, events
+ * and classification.  So while a pass still classifies, it notes from time
+ * to time its whole state at the start of a scanline (the active edges in
+ * order, with their x there, windings, open runs and run breaks, and how
+ * many pieces were emitted); the next pass starts at the last such scanline
+ * at or below every split edge, with that state, and keeps the pieces
+ * emitted below it. */
+typedef struct ck_edge {
+    uint32_t e;
+    unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
+    int32_t wr0, wr1;
+    double x;
+    int64_t run_x, run_y;
+} ck_edge;
+typedef struct ck_point { int64_t y; size_t np, first, n; } ck_point;
+typedef struct ck_log {
+    ck_point *pt;
+    size_t npt, cappt;
+    ck_edge *ed;
+    size_t ned, caped;
+    size_t budget; /* most edge records kept */
+    size_t end_np; /* pieces at the end of the pass */
+} ck_log;
+
+/* ---- the steps -------------------------------------------------------- */
+
+/* The full sweep of a pass (boolean_sweep.c): splits what crosses, or, when
+ * nothing needs a split, classifies and emits the pieces.  1 when done, 0
+ * when out of memory, -1 when the active list was out of order (a bug: the
+ * caller gives CG_ERANGE rather than a wrong result). */
+int boolean_run_sweep(sweep *s);
+
+#define LIGHT_BAIL 2
+#define LIGHT_COST 16
+/* The light sweep of a pass expected to find nothing to split
+ * (boolean_sweep.c): 1 when final, LIGHT_BAIL when something needs a split,
+ * 0 when out of memory. */
+int boolean_light_sweep(sweep *s);
+
+/* Checkpoints (boolean_checkpoint.c): notes the state at the start of
+ * scanline y; compares this pass's state with the last pass's checkpoint c;
+ * takes the state of the last checkpoint at or below y (its index + 1, or 0). */
+int boolean_ck_record(sweep *s, int64_t y);
+int boolean_ck_same(const sweep *s, const ck_point *c);
+size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y);
+
+/* Splits (boolean_split.c): snap rounding to the hot pixels of the split
+ * points (and of the edges' ends when `vertices`); every split edge replaced
+ * by its pieces (map[old edge]: its new index, or UINT32_MAX when split). */
+int boolean_add_hot_pixel_splits(engine *g, int vertices);
+int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap);
+
+#define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
+/* The crossings of a small input found pair by pair, as split points
+ * (boolean_pairs.c); 0 when out of memory. */
+int boolean_add_pair_splits(engine *g);
+
+/* The pieces of the final pass linked into rings, holes under their outer
+ * rings (boolean_assemble.c); buf (cap bytes) is scratch.  0 when out of
+ * memory. */
+int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap);
+
+#endif

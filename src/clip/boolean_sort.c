@@ -1,0 +1,249 @@
+/* Sorting for the boolean operations: stable radix and run-merging sorts of
+ * edges and pieces by two integer keys, and qsort for a few records. */
+#include "boolean_engine.h"
+
+/* ---- sorting ------------------------------------------------------------ */
+
+/* v put into a[0..i), in order by key, after the equal keys: a[0..i] in
+ * order */
+static inline void insert_key(keyval *a, size_t i, keyval v)
+{
+    for (; i > 0 && a[i - 1].key > v.key; i--)
+        a[i] = a[i - 1];
+    a[i] = v;
+}
+
+/* Stable sort of a[0..n) by key: straight insertion up to 48 keys, below
+ * 2,048 one pass by the top bits then insertion (when the keys spread
+ * evenly), else an LSD radix sort (6- or 11-bit digits, only as many passes
+ * as the largest key needs); tmp holds n or is NULL. */
+static int radix_sort(keyval *a, size_t n, keyval *tmp)
+{
+    if (n < 2)
+        return 1;
+    uint64_t all = 0;
+    for (size_t i = 0; i < n; i++)
+        all |= a[i].key;
+    if (n <= 48) { /* few keys: straight insertion (stable) */
+        for (size_t i = 1; i < n; i++)
+            insert_key(a, i, a[i]);
+        return 1;
+    }
+    keyval *t = tmp ? tmp : malloc(n * sizeof *t), *src = a, *dst = t;
+    if (!t)
+        return 0;
+    if (n < 2048) {
+        /* one pass by the top bits (about n buckets, stable), then straight
+         * insertion, which moves keys within their bucket only: unless a
+         * bucket holds many keys (uneven keys), then the digits below */
+        int top = 0, b = 6;
+        while (top < 64 && (all >> top))
+            top++;
+        while (((size_t)1 << b) < n)
+            b++;
+        int shift = top > b ? top - b : 0;
+        size_t count[2048], most = 0;
+        memset(count, 0, ((size_t)1 << b) * sizeof count[0]);
+        for (size_t i = 0; i < n; i++) {
+            size_t c = ++count[a[i].key >> shift];
+            most = c > most ? c : most;
+        }
+        if (most <= 16) {
+            size_t sum = 0;
+            for (size_t d = 0; d < ((size_t)1 << b); d++) {
+                size_t c = count[d];
+                count[d] = sum;
+                sum += c;
+            }
+            for (size_t i = 0; i < n; i++)
+                t[count[a[i].key >> shift]++] = a[i];
+            for (size_t i = 0; i < n; i++)
+                insert_key(a, i, t[i]);
+            if (!tmp)
+                free(t);
+            return 1;
+        }
+    }
+    /* small inputs: small digit tables */
+    const int bits = n < 2048 ? 6 : 11;
+    for (int shift = 0; shift < 64 && (all >> shift); shift += bits) {
+        size_t count[1 << 11];
+        memset(count, 0, ((size_t)1 << bits) * sizeof count[0]);
+        for (size_t i = 0; i < n; i++)
+            count[(src[i].key >> shift) & ((1u << bits) - 1)]++;
+        if (count[(src[0].key >> shift) & ((1u << bits) - 1)] == n)
+            continue; /* every key has this digit */
+        size_t sum = 0;
+        for (size_t d = 0; d < (1u << bits); d++) {
+            size_t c = count[d];
+            count[d] = sum;
+            sum += c;
+        }
+        for (size_t i = 0; i < n; i++)
+            dst[count[(src[i].key >> shift) & ((1u << bits) - 1)]++] = src[i];
+        keyval *x = src;
+        src = dst;
+        dst = x;
+    }
+    if (src != a)
+        memcpy(a, src, n * sizeof *a);
+    if (!tmp)
+        free(t);
+    return 1;
+}
+
+/* The natural runs of boolean_sort_two_keys' input, merged: idx[0..n) ordered by
+ * (k1, k2, index) as the radix sort orders it, when the sequence is made
+ * of at most MAX_RUNS ascending or strictly descending runs (the edges of
+ * smooth rings come in a few monotone chains): 1, else 0 (nothing
+ * written).  The runs are merged all at once, straight from the records
+ * (each run's next key at hand, the least of them taken). */
+#define MAX_RUNS 8
+static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                     uint32_t *idx)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+    /* run r: positions at[r], at[r] + step[r], ... up to (excluding) end[r] */
+    ptrdiff_t at[MAX_RUNS], end[MAX_RUNS], step[MAX_RUNS];
+    int64_t h1[MAX_RUNS], h2[MAX_RUNS];
+    size_t nr = 0;
+    for (size_t i = 0; i < n;) {
+        if (nr == MAX_RUNS)
+            return 0;
+        int64_t p1 = KEY(k1, i), p2 = KEY(k2, i);
+        size_t j = i + 1;
+        if (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2))) {
+            /* strictly descending (no ties: backwards, it is in order) */
+            do {
+                p1 = KEY(k1, j);
+                p2 = KEY(k2, j);
+                j++;
+            } while (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2)));
+            at[nr] = (ptrdiff_t)j - 1;
+            end[nr] = (ptrdiff_t)i - 1;
+            step[nr] = -1;
+        } else {
+            while (j < n && (KEY(k1, j) > p1 || (KEY(k1, j) == p1 && KEY(k2, j) >= p2))) {
+                p1 = KEY(k1, j);
+                p2 = KEY(k2, j);
+                j++;
+            }
+            at[nr] = (ptrdiff_t)i;
+            end[nr] = (ptrdiff_t)j;
+            step[nr] = 1;
+        }
+        h1[nr] = KEY(k1, at[nr]);
+        h2[nr] = KEY(k2, at[nr]);
+        nr++;
+        i = j;
+    }
+    for (size_t o = 0; o < n; o++) {
+        size_t b = 0;
+        for (size_t r = 1; r < nr; r++)
+            if (h1[r] < h1[b] ||
+                (h1[r] == h1[b] && (h2[r] < h2[b] || (h2[r] == h2[b] && at[r] < at[b]))))
+                b = r;
+        idx[o] = (uint32_t)at[b];
+        at[b] += step[b];
+        if (at[b] == end[b]) { /* run b is used up: the last takes its place */
+            nr--;
+            at[b] = at[nr];
+            end[b] = end[nr];
+            step[b] = step[nr];
+            h1[b] = h1[nr];
+            h2[b] = h2[nr];
+        } else {
+            h1[b] = KEY(k1, at[b]);
+            h2[b] = KEY(k2, at[b]);
+        }
+    }
+    return 1;
+#undef KEY
+}
+
+/* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
+ * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
+ * NULL.  The natural runs merged when they are few (sort_runs), else a
+ * radix sort by k1, then each run of equal k1 (short in practice) by k2. */
+int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                          uint32_t *idx, keyval *scratch, keyval *tmp)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+    if (n == 0)
+        return 1;
+    if (n <= 32) { /* few: straight insertion (stable: ties by index) */
+        for (size_t i = 0; i < n; i++) {
+            int64_t a1 = KEY(k1, i), a2 = KEY(k2, i);
+            size_t j = i;
+            for (; j > 0 && (KEY(k1, idx[j - 1]) > a1 ||
+                             (KEY(k1, idx[j - 1]) == a1 && KEY(k2, idx[j - 1]) > a2));
+                 j--)
+                idx[j] = idx[j - 1];
+            idx[j] = (uint32_t)i;
+        }
+        return 1;
+    }
+    if (n >= 64) {
+        if (sort_runs(k1, k2, stride, n, idx))
+            return 1;
+    }
+    int64_t lo1 = KEY(k1, 0);
+    for (size_t i = 1; i < n; i++) {
+        int64_t a = KEY(k1, i);
+        lo1 = a < lo1 ? a : lo1;
+    }
+    for (size_t i = 0; i < n; i++)
+        scratch[i] = (keyval){(uint64_t)(KEY(k1, i) - lo1), (uint32_t)i};
+    if (!radix_sort(scratch, n, tmp))
+        return 0;
+    for (size_t i = 0; i < n;) {
+        size_t j = i + 1;
+        while (j < n && scratch[j].key == scratch[i].key)
+            j++;
+        if (j - i > 1) {
+            int64_t lo2 = KEY(k2, scratch[i].val);
+            for (size_t q = i + 1; q < j; q++) {
+                int64_t b = KEY(k2, scratch[q].val);
+                lo2 = b < lo2 ? b : lo2;
+            }
+            for (size_t q = i; q < j; q++)
+                scratch[q].key = (uint64_t)(KEY(k2, scratch[q].val) - lo2);
+            if (j - i > 256) {
+                if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
+                    return 0;
+            } else {
+                for (size_t q = i + 1; q < j; q++) {
+                    keyval v = scratch[q];
+                    size_t m = q;
+                    for (; m > i && scratch[m - 1].key > v.key; m--)
+                        scratch[m] = scratch[m - 1];
+                    scratch[m] = v;
+                }
+            }
+        }
+        i = j;
+    }
+    for (size_t i = 0; i < n; i++)
+        idx[i] = scratch[i].val;
+    return 1;
+#undef KEY
+}
+
+/* qsort, by straight insertion when n is small (the assembly's few rings;
+ * cmp is a total order, so the result is qsort's) */
+void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
+{
+    unsigned char v[64], *a = base;
+    if (n > 16 || size > sizeof v) {
+        qsort(base, n, size, cmp);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        size_t j = i;
+        memcpy(v, a + i * size, size);
+        for (; j > 0 && cmp(a + (j - 1) * size, v) > 0; j--)
+            memcpy(a + j * size, a + (j - 1) * size, size);
+        if (j != i)
+            memcpy(a + j * size, v, size);
+    }
+}

@@ -1,0 +1,301 @@
+/* Splitting for the boolean operations: snap rounding to hot pixels, and
+ * the replacement of every split edge by its pieces. */
+#include "boolean_engine.h"
+
+/* Replaces every edge that has split points by its pieces. */
+typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
+
+static int cmp_along(const void *a, const void *b)
+{
+    const split_sort *p = a, *q = b;
+    if (p->t != q->t)
+        return p->t < q->t ? -1 : 1;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+/* Does the segment a-b meet the closed unit square centred on p (the "hot
+ * pixel" of a rounded point)?  Exact, on doubled coordinates. */
+static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py)
+{
+    i128 x0 = 2 * (i128)px - 1, x1 = 2 * (i128)px + 1, y0 = 2 * (i128)py - 1, y1 = 2 * (i128)py + 1;
+    i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
+    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
+        return 0;
+    /* the line through a and b meets the square only if the centre is
+     * within half the square's width across the line, |d x (p - a)| <=
+     * (|dx| + |dy|) / 2: in doubles first, with a wide margin for rounding */
+    double dx = (double)(bx - ax), dy = (double)(by - ay);
+    double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
+    if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
+        return 0;
+    int pos = 0, neg = 0;
+    i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    for (int k = 0; k < 4; k++) {
+        i128 o = (Bx - Ax) * (cy[k] - Ay) - (By - Ay) * (cx[k] - Ax);
+        pos |= o > 0;
+        neg |= o < 0;
+    }
+    return !(pos && !neg) && !(neg && !pos);
+}
+
+/* Snap rounding (Hobby): every edge that passes through the pixel of a
+ * rounded split point is split there too, so that nearly parallel edges
+ * meet at one grid point instead of crossing again a little further on.
+ * Used from the second pass on.  The points are put in a grid of square
+ * cells (about two points a cell; sorted by y, then x, in each cell), and
+ * each edge looks at the cells along it, row by row: the cost follows the
+ * edges' lengths and the points near them, not the points in their y
+ * range (dense crossings of long edges made that quadratic). */
+typedef struct hot_grid {
+    int64_t x0, y0, side;
+    size_t cols, rows;
+    size_t *start; /* the points of cell k: pts[start[k]..start[k + 1]) */
+    cg_point64 *pts;
+} hot_grid;
+
+static int cmp_point_yx(const void *a, const void *b)
+{
+    const cg_point64 *p = a, *q = b;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+static size_t hot_cell(const hot_grid *h, int64_t x, int64_t y)
+{
+    return (size_t)((y - h->y0) / h->side) * h->cols + (size_t)((x - h->x0) / h->side);
+}
+
+static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
+{
+    int64_t x1 = S[0].x, y1 = S[0].y;
+    h->x0 = x1;
+    h->y0 = y1;
+    for (size_t k = 1; k < ns; k++) {
+        h->x0 = S[k].x < h->x0 ? S[k].x : h->x0;
+        h->y0 = S[k].y < h->y0 ? S[k].y : h->y0;
+        x1 = S[k].x > x1 ? S[k].x : x1;
+        y1 = S[k].y > y1 ? S[k].y : y1;
+    }
+    double w = (double)(x1 - h->x0) + 1, ht = (double)(y1 - h->y0) + 1;
+    double side = ceil(sqrt(w * ht * 2 / (double)ns));
+    for (;;) { /* at most about 4 cells a point, whatever the shape */
+        double cols = floor((w - 1) / side) + 1, rows = floor((ht - 1) / side) + 1;
+        if (cols * rows <= 4 * (double)ns + 64)
+            break;
+        side = ceil(side * 1.5);
+    }
+    h->side = (int64_t)side;
+    h->cols = (size_t)((x1 - h->x0) / h->side) + 1;
+    h->rows = (size_t)((y1 - h->y0) / h->side) + 1;
+    size_t cells = h->cols * h->rows;
+    h->start = calloc(cells + 1, sizeof *h->start);
+    h->pts = malloc(ns * sizeof *h->pts);
+    size_t *next = malloc((cells + 1) * sizeof *next);
+    if (!h->start || !h->pts || !next) {
+        free(next);
+        return 0;
+    }
+    for (size_t k = 0; k < ns; k++)
+        h->start[hot_cell(h, S[k].x, S[k].y) + 1]++;
+    for (size_t c = 0; c < cells; c++)
+        h->start[c + 1] += h->start[c];
+    memcpy(next, h->start, (cells + 1) * sizeof *next);
+    for (size_t k = 0; k < ns; k++)
+        h->pts[next[hot_cell(h, S[k].x, S[k].y)]++] = (cg_point64){S[k].x, S[k].y};
+    free(next);
+    for (size_t c = 0; c < cells; c++)
+        if (h->start[c + 1] - h->start[c] > 1)
+            boolean_sort_few(h->pts + h->start[c], h->start[c + 1] - h->start[c], sizeof *h->pts,
+                     cmp_point_yx);
+    return 1;
+}
+
+int boolean_add_hot_pixel_splits(engine *g, int vertices)
+{
+    size_t ns = g->ns;
+    if (ns == 0)
+        return 1;
+    hot_grid h;
+    memset(&h, 0, sizeof h);
+    int ok;
+    if (vertices) {
+        /* the edges' ends are hot pixels too (complete snap rounding) */
+        splitpt *pts = malloc((ns + 2 * g->ne) * sizeof *pts);
+        ok = pts != NULL;
+        if (ok) {
+            memcpy(pts, g->S, ns * sizeof *pts);
+            size_t n = ns;
+            for (size_t i = 0; i < g->ne; i++) {
+                pts[n++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
+                pts[n++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
+            }
+            ok = hot_grid_build(&h, pts, n);
+            free(pts);
+        }
+    } else {
+        ok = hot_grid_build(&h, g->S, ns);
+    }
+    for (size_t i = 0; ok && i < g->ne; i++) {
+        const bedge e = g->E[i];
+        int64_t xlo = e.xb < e.xt ? e.xb : e.xt, xhi = e.xb < e.xt ? e.xt : e.xb;
+        if (e.yt + 1 < h.y0)
+            continue;
+        size_t r = e.yb - 1 > h.y0 ? (size_t)((e.yb - 1 - h.y0) / h.side) : 0;
+        for (; ok && r < h.rows; r++) {
+            int64_t ry0 = h.y0 + (int64_t)r * h.side, ry1 = ry0 + h.side - 1;
+            if (ry0 > e.yt + 1)
+                break;
+            /* the edge's x over the row's y and one unit more each way
+             * (clamped to the edge), widened by two units: a pixel whose
+             * centre is there may meet it */
+            int64_t ya = ry0 - 1 > e.yb ? ry0 - 1 : e.yb, yz = ry1 + 1 < e.yt ? ry1 + 1 : e.yt;
+            if (ya > yz)
+                ya = yz = ya > e.yt ? e.yt : e.yb;
+            double xa = x_at(&e, ya), xz = x_at(&e, yz);
+            double lo = (xa < xz ? xa : xz) - 2 - (double)h.x0;
+            double hi = (xa < xz ? xz : xa) + 2 - (double)h.x0;
+            if (hi < 0)
+                continue;
+            size_t c0 = lo <= 0 ? 0 : (size_t)(lo / (double)h.side);
+            size_t c1 = (size_t)(hi / (double)h.side);
+            if (c1 >= h.cols)
+                c1 = h.cols - 1;
+            for (size_t c = c0; ok && c <= c1; c++) {
+                size_t cell = r * h.cols + c;
+                for (size_t q = h.start[cell]; q < h.start[cell + 1]; q++) {
+                    int64_t px = h.pts[q].x, py = h.pts[q].y;
+                    if ((q > h.start[cell] && px == h.pts[q - 1].x && py == h.pts[q - 1].y) ||
+                        py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
+                        (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
+                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py))
+                        continue;
+                    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
+                        ok = 0;
+                        break;
+                    });
+                    g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+                }
+            }
+        }
+    }
+    free(h.start);
+    free(h.pts);
+    return ok;
+}
+
+/* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
+ * when out of memory.  (The first few in the engine itself.) */
+static uint32_t add_orig(engine *g, const bedge *e)
+{
+    if (!g->O) {
+        g->O = g->O_small;
+        g->capo = sizeof g->O_small / sizeof g->O_small[0];
+    }
+    GROW_SMALL(g->O, g->no, g->capo, g->O_small, return NO_ORIG);
+    int64_t *o = g->O[g->no];
+    o[0] = e->xb;
+    o[1] = e->yb;
+    o[2] = e->xt;
+    o[3] = e->yt;
+    return (uint32_t)g->no++;
+}
+
+/* map[old edge] receives its new index, or UINT32_MAX when it was split
+ * (the pieces come after the edges kept, in g->E[*kept..]); mem (cap
+ * bytes, or NULL) is scratch. */
+int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
+{
+    size_t old_ne = g->ne, ns = g->ns;
+    split_sort small[34], *buf = small; /* the points of one edge */
+    size_t capbuf = sizeof small / sizeof small[0];
+    /* the split points by edge (a counting sort into order[]; the points of
+     * one edge are put in order along it below), in one block with dead[]:
+     * the caller's `mem` (cap bytes) when large enough */
+    size_t at = (old_ne + 1 + 3) & ~(size_t)3, bytes = at + (old_ne + 1 + ns) * sizeof(uint32_t);
+    unsigned char *own = bytes > cap || !mem ? calloc(bytes, 1) : NULL;
+    unsigned char *dead = own ? own : mem;
+    if (!dead)
+        return 0;
+    if (!own)
+        memset(dead, 0, at + (old_ne + 1) * sizeof(uint32_t)); /* (dead and first) */
+    uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_ne + 1;
+    for (size_t k = 0; k < ns; k++)
+        first[g->S[k].edge + 1]++;
+    for (size_t i = 1; i <= old_ne; i++)
+        first[i] += first[i - 1];
+    for (size_t k = 0; k < ns; k++)
+        order[first[g->S[k].edge]++] = (uint32_t)k;
+    for (size_t i = 0; i < ns;) {
+        size_t j = i;
+        uint32_t ei = g->S[order[i]].edge;
+        while (j < ns && g->S[order[j]].edge == ei)
+            j++;
+        size_t n = j - i;
+        if (n + 2 > capbuf) {
+            capbuf = (n + 2) * 2;
+            split_sort *nb = buf == small ? malloc(capbuf * sizeof *nb)
+                                          : realloc(buf, capbuf * sizeof *nb);
+            if (!nb) {
+                if (buf != small)
+                    free(buf);
+                free(own);
+                return 0;
+            }
+            buf = nb;
+        }
+        bedge e = g->E[ei];
+        i128 dx = e.xt - e.xb, dy = e.yt - e.yb;
+        size_t m = 0;
+        buf[m++] = (split_sort){e.xb, e.yb, -1};
+        for (size_t k = i; k < j; k++) {
+            int64_t x = g->S[order[k]].x, y = g->S[order[k]].y;
+            i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
+            buf[m++] = (split_sort){x, y, t};
+        }
+        boolean_sort_few(buf + 1, m - 1, sizeof *buf, cmp_along);
+        buf[m++] = (split_sort){e.xt, e.yt, 0};
+        dead[ei] = 1;
+        /* the input edge of the pieces */
+        uint32_t orig = e.orig == NO_ORIG ? add_orig(g, &e) : e.orig;
+        if (orig == NO_ORIG) {
+            if (buf != small)
+                free(buf);
+            free(own);
+            return 0;
+        }
+        /* the path direction of the edge: w == -1 means upwards */
+        for (size_t k = 0; k + 1 < m; k++) {
+            split_sort p = buf[k], q = buf[k + 1];
+            if (p.x == q.x && p.y == q.y)
+                continue;
+            int ok = e.w < 0 ? boolean_add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
+                             : boolean_add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
+            if (!ok) {
+                if (buf != small)
+                    free(buf);
+                free(own);
+                return 0;
+            }
+        }
+        i = j;
+    }
+    if (buf != small)
+        free(buf);
+    /* compact */
+    size_t w = 0;
+    for (size_t i = 0; i < old_ne; i++) {
+        map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
+        if (!dead[i])
+            g->E[w++] = g->E[i];
+    }
+    *kept = w;
+    for (size_t i = old_ne; i < g->ne; i++)
+        g->E[w++] = g->E[i];
+    g->ne = w;
+    g->ns = 0;
+    free(own);
+    return 1;
+}

@@ -329,6 +329,20 @@ int main(int argc, char **argv)
         free_shape(&b);
     }
     {
+        /* a coarse grid: spiky stars of 2,000 vertices with radii 10 to 128
+         * units, so that many vertices coincide and many edges overlap or
+         * are collinear (the degenerate cases a sweep must sort out) */
+        shape a = {0}, b = {0};
+        star(&a, 2000, 128, 128, 10, 128);
+        star(&b, 2000, 140, 120, 10, 128);
+        finish(&a);
+        finish(&b);
+        for (int op = 0; op < 4; op++)
+            compare("spiky stars on a 256-unit grid, 2,000 vertices each", &a, &b, op, 5);
+        free_shape(&a);
+        free_shape(&b);
+    }
+    {
         /* a layout: 60 x 60 small squares against a disc of 2,000 vertices */
         shape a = {0}, b = {0};
         for (int i = 0; i < 60; i++)

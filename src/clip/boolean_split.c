@@ -106,10 +106,19 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
     for (size_t k = 0; k < ns; k++)
         h->pts[next[hot_cell(h, S[k].x, S[k].y)]++] = (cg_point64){S[k].x, S[k].y};
     free(next);
-    for (size_t c = 0; c < cells; c++)
-        if (h->start[c + 1] - h->start[c] > 1)
-            boolean_sort_few(h->pts + h->start[c], h->start[c + 1] - h->start[c], sizeof *h->pts,
-                     cmp_point_yx);
+    /* each cell's points in order, each point once (crossings give a point
+     * per edge, and on coarse grids many round to one point) */
+    size_t kept = 0;
+    for (size_t c = 0; c < cells; c++) {
+        size_t a = h->start[c], b = h->start[c + 1];
+        if (b - a > 1)
+            boolean_sort_few(h->pts + a, b - a, sizeof *h->pts, cmp_point_yx);
+        h->start[c] = kept;
+        for (size_t q = a; q < b; q++)
+            if (q == a || h->pts[q].x != h->pts[q - 1].x || h->pts[q].y != h->pts[q - 1].y)
+                h->pts[kept++] = h->pts[q];
+    }
+    h->start[cells] = kept;
     return 1;
 }
 
@@ -167,8 +176,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                 size_t cell = r * h.cols + c;
                 for (size_t q = h.start[cell]; q < h.start[cell + 1]; q++) {
                     int64_t px = h.pts[q].x, py = h.pts[q].y;
-                    if ((q > h.start[cell] && px == h.pts[q - 1].x && py == h.pts[q - 1].y) ||
-                        py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
+                    if (py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
                         (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
                         !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py))
                         continue;

@@ -707,18 +707,64 @@ static double perimeter(const cg_polygon_set64 *r)
     return sum;
 }
 
+/* The four operations on large inputs a and b within [0, extent]^2: results
+ * simple by a grid of cells, rings oriented (outers counter-clockwise, holes
+ * clockwise), membership at sample points, and the area identities. */
+static void check_large_round(const char *tag, int it, const cg_polygon_set64 *a, cg_clip_fill fa,
+                              const cg_polygon_set64 *b, cg_clip_fill fb, check_rng *rng,
+                              double extent, long *membership_checks)
+{
+    cg_polygon_set64 r[4] = {{0}};
+    for (int op = 0; op < 4; op++) {
+        CHECK(cg_clip_boolean64((cg_clip_op)op, a, fa, b, fb, &r[op]) == CG_OK);
+        CHECK_MSG(large_result_is_simple(&r[op]), "%s %d op %d: result edges cross", tag, it, op);
+        int oriented = 1;
+        for (size_t p = 0; p < r[op].polygon_count; p++)
+            for (size_t k = r[op].polygon_start[p]; k < r[op].polygon_start[p + 1]; k++)
+                oriented &= k == r[op].polygon_start[p] ? ring_area2(&r[op], k) > 0
+                                                         : ring_area2(&r[op], k) < 0;
+        CHECK_MSG(oriented, "%s %d op %d: ring orientation", tag, it, op);
+        for (int q = 0; q < 25; q++) {
+            double px = check_rng_range(rng, 0, extent), py = check_rng_range(rng, 0, extent);
+            if (dist_to_set(a, px, py) < 3 || dist_to_set(b, px, py) < 3)
+                continue;
+            int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(a, px, py)),
+                                 fill_rule(fb, winding(b, px, py)));
+            CHECK_MSG(want == (int)(winding(&r[op], px, py) & 1), "%s %d op %d: point (%.1f, %.1f)",
+                      tag, it, op, px, py);
+            (*membership_checks)++;
+        }
+    }
+    /* rounding moves each edge by under a unit: the identities hold
+     * within a unit-wide band along every result edge */
+    cg_polygon_set64 ra = {0}, rb = {0};
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, a, fa, NULL, fa, &ra) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, b, fb, NULL, fb, &rb) == CG_OK);
+    double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
+    double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
+    double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
+    double tol = 0;
+    const cg_polygon_set64 *all[6] = {&r[0], &r[1], &r[2], &r[3], &ra, &rb};
+    for (int k = 0; k < 6; k++)
+        tol += perimeter(all[k]);
+    CHECK_NEAR(U, A + B - I, tol);
+    CHECK_NEAR(X, U - I, tol);
+    CHECK_NEAR(D, A - I, tol);
+    cg_polygon_set64_clear(&ra);
+    cg_polygon_set64_clear(&rb);
+    for (int op = 0; op < 4; op++)
+        cg_polygon_set64_clear(&r[op]);
+}
+
 /* Long random rings whose boundaries cross hundreds of thousands of times:
  * the first pass looks at hundreds of active edges per edge, so it snaps to
- * every hot pixel (the edges' ends too) before the verifying pass.  The
- * results are large: simple by a grid of cells, rings oriented (outers
- * counter-clockwise, holes clockwise), membership at sample points, and the
- * area identities. */
+ * every hot pixel (the edges' ends too) before the verifying pass. */
 static void dense(void)
 {
     check_rng rng = {0xde45e};
     long membership_checks = 0;
     for (int it = 0; it < 2; it++) {
-        cg_polygon_set64 a = {0}, b = {0}, r[4] = {{0}};
+        cg_polygon_set64 a = {0}, b = {0};
         cg_point64 *pts = malloc(600 * sizeof *pts);
         int n = it ? 600 : 450;
         for (int k = 0; k < 2; k++) {
@@ -728,49 +774,45 @@ static void dense(void)
         }
         free(pts);
         cg_clip_fill fa = it ? CG_CLIP_EVEN_ODD : CG_CLIP_NON_ZERO, fb = CG_CLIP_NON_ZERO;
-        for (int op = 0; op < 4; op++) {
-            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r[op]) == CG_OK);
-            CHECK_MSG(large_result_is_simple(&r[op]), "dense %d op %d: result edges cross", it, op);
-            int oriented = 1;
-            for (size_t p = 0; p < r[op].polygon_count; p++)
-                for (size_t k = r[op].polygon_start[p]; k < r[op].polygon_start[p + 1]; k++)
-                    oriented &= k == r[op].polygon_start[p] ? ring_area2(&r[op], k) > 0
-                                                             : ring_area2(&r[op], k) < 0;
-            CHECK_MSG(oriented, "dense %d op %d: ring orientation", it, op);
-            for (int q = 0; q < 25; q++) {
-                double px = check_rng_range(&rng, 0, 1e6), py = check_rng_range(&rng, 0, 1e6);
-                if (dist_to_set(&a, px, py) < 3 || dist_to_set(&b, px, py) < 3)
-                    continue;
-                int want = inside_op((cg_clip_op)op, fill_rule(fa, winding(&a, px, py)),
-                                     fill_rule(fb, winding(&b, px, py)));
-                CHECK_MSG(want == (int)(winding(&r[op], px, py) & 1),
-                          "dense %d op %d: point (%.1f, %.1f)", it, op, px, py);
-                membership_checks++;
-            }
-        }
-        /* rounding moves each edge by under a unit: the identities hold
-         * within a unit-wide band along every result edge */
-        cg_polygon_set64 ra = {0}, rb = {0};
-        CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, fa, NULL, fa, &ra) == CG_OK);
-        CHECK(cg_clip_boolean64(CG_CLIP_UNION, &b, fb, NULL, fb, &rb) == CG_OK);
-        double A = cg_polygon_set64_area(&ra), B = cg_polygon_set64_area(&rb);
-        double I = cg_polygon_set64_area(&r[0]), U = cg_polygon_set64_area(&r[1]);
-        double D = cg_polygon_set64_area(&r[2]), X = cg_polygon_set64_area(&r[3]);
-        double tol = 0;
-        const cg_polygon_set64 *all[6] = {&r[0], &r[1], &r[2], &r[3], &ra, &rb};
-        for (int k = 0; k < 6; k++)
-            tol += perimeter(all[k]);
-        CHECK_NEAR(U, A + B - I, tol);
-        CHECK_NEAR(X, U - I, tol);
-        CHECK_NEAR(D, A - I, tol);
-        cg_polygon_set64_clear(&ra);
-        cg_polygon_set64_clear(&rb);
-        for (int op = 0; op < 4; op++)
-            cg_polygon_set64_clear(&r[op]);
+        check_large_round("dense", it, &a, fa, &b, fb, &rng, 1e6, &membership_checks);
         cg_polygon_set64_clear(&a);
         cg_polygon_set64_clear(&b);
     }
     printf("dense: 2 rounds, %ld membership checks\n", membership_checks);
+}
+
+/* Spiky stars on coarse grids (radii from a twelfth of R to R, R = 32 to
+ * 2,048 units): thousands of crossings among a few hundred scanlines, so
+ * that many vertices coincide and snapped edges coincide, cross a third
+ * edge exactly on a scanline, or pass through one point in groups (the
+ * sweep holds such coincident groups back from rounding unless some other
+ * edge meets them there). */
+static void coarse_stars(void)
+{
+    check_rng rng = {0xc0a75e};
+    long membership_checks = 0;
+    const double radius[4] = {32, 128, 512, 2048};
+    for (int it = 0; it < 8; it++) {
+        double R = radius[it % 4];
+        int n = it < 4 ? 300 : 800;
+        cg_polygon_set64 a = {0}, b = {0};
+        cg_point64 *pts = malloc((size_t)n * sizeof *pts);
+        for (int k = 0; k < 2; k++) {
+            double cx = k ? 1.09 * R : R, cy = k ? 0.94 * R : R;
+            for (int i = 0; i < n; i++) {
+                double t = 2 * M_PI * (i + 0.8 * check_rng_range(&rng, 0, 1)) / n;
+                double r = check_rng_range(&rng, R / 12, R);
+                pts[i] = (cg_point64){llround(cx + r * cos(t)), llround(cy + r * sin(t))};
+            }
+            cg_polygon_set64_add_ring(k ? &b : &a, pts, (size_t)n, 1);
+        }
+        free(pts);
+        cg_clip_fill fa = it & 1 ? CG_CLIP_EVEN_ODD : CG_CLIP_NON_ZERO, fb = CG_CLIP_NON_ZERO;
+        check_large_round("coarse stars", it, &a, fa, &b, fb, &rng, 2.2 * R, &membership_checks);
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+    }
+    printf("coarse stars: 8 rounds, %ld membership checks\n", membership_checks);
 }
 
 int main(void)
@@ -785,5 +827,6 @@ int main(void)
     smooth();
     checkpoint_without_edges();
     dense();
+    coarse_stars();
     return check_finish();
 }

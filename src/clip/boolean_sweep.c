@@ -361,6 +361,28 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
     return 1;
 }
 
+/* Two edges at one point of the next scanline yn meet there: a vertex for
+ * each one that goes on.  At a grid point the run just breaks (meet); off
+ * the grid both take that point rounded, one vertex for the two (each
+ * rounded on its input edge's line, as meet rounds, they would part and
+ * cross again).  Not when they lie on one line: coincident edges stay a
+ * group and need no vertex (on coarse grids, where snapped edges often
+ * coincide, rounding them made new crossings pass after pass).  Where a
+ * third edge crosses such a group there, it splits its neighbour in the
+ * group only, and the passes that verify settle the rest (splitting the
+ * whole group as well was measured slower).  (Out of line: rare, and the
+ * sweep's loop is short of registers.) */
+NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t yn)
+{
+    const bedge *E = s->g->E;
+    int64_t x;
+    if (E[u].yt == yn || E[v].yt == yn || x_is_integer(&E[u], yn, &x)) /* (ends are grid points) */
+        return (E[u].yt == yn || meet(s, u, yn, 1)) && (E[v].yt == yn || meet(s, v, yn, 1));
+    if (coincident(&E[u], &E[v]))
+        return 1;
+    return add_split(s, u, x, yn) && add_split(s, v, x, yn);
+}
+
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
  * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
  * result). */
@@ -633,7 +655,7 @@ int boolean_run_sweep(sweep *s)
             while (m > 0) {
                 uint32_t u = above[m - 1];
                 int c = cmp_x(&E[u], &E[v], yn, xn[u], xn[v]);
-                if (c == 0 && ((E[u].yt > yn && !meet(s, u, yn, 1)) || (E[v].yt > yn && !meet(s, v, yn, 1))))
+                if (c == 0 && (E[u].yt > yn || E[v].yt > yn) && !meet_at_next(s, u, v, yn))
                     return 0;
                 if (c <= 0)
                     break;

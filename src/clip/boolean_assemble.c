@@ -447,12 +447,22 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         {
             for (size_t r = 0; r < nr; r++)
                 first_hole[r] = (size_t)-1;
+            /* the result's arrays at their size at once (no regrowth) */
+            size_t npts = 0, nrings = 0;
             for (size_t r = nr; r-- > 0;) {
                 if (parent[r] != (size_t)-1) {
                     next_hole[r] = first_hole[parent[r]];
                     first_hole[parent[r]] = r;
                 }
+                if (parent[r] != (size_t)-1 || area[r] > 0) {
+                    npts += rings.ring_start[r + 1] - rings.ring_start[r];
+                    nrings++;
+                }
             }
+            if (nouter && cg_polygon_set64_reserve(result, result->point_count + npts,
+                                         result->ring_count + nrings,
+                                         result->polygon_count + nouter) != CG_OK)
+                fail = 1;
             for (size_t r = 0; r < nr && !fail; r++) {
                 if (area[r] <= 0)
                     continue;

@@ -123,6 +123,17 @@ static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_p
     return 0;
 }
 
+/* twice the signed area of the ring p[0..n) */
+static i128 twice_area(const cg_point64 *p, size_t n)
+{
+    i128 s = 0;
+    for (size_t i = 0; i < n; i++) {
+        cg_point64 q = p[i + 1 < n ? i + 1 : 0];
+        s += (i128)p[i].x * q.y - (i128)q.x * p[i].y;
+    }
+    return s;
+}
+
 typedef struct ringbuf {
     cg_point64 *pts;
     size_t n, cap;
@@ -184,7 +195,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         }
         for (size_t i = 0; i < np; i++)
             sorted[i] = P[order[i]];
-        memcpy(P, sorted, np * sizeof *P);
+        P = sorted; /* (g->P is not read after the assembly) */
     }
     /* the first of the (sorted) pieces leaving each point, by a hash of the
      * point (open addressing; index + 1, 0 is free) */
@@ -281,11 +292,11 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         size_t nouter = 0;
         for (size_t r = 0; r < nr; r++) {
             size_t a = rings.ring_start[r], b = rings.ring_start[r + 1];
-            i128 s = 0;
+            uint64_t s64 = 0;
             int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
             for (size_t i = a; i < b; i++) {
                 cg_point64 p = rings.points[i], q = rings.points[i + 1 < b ? i + 1 : a];
-                s += (i128)p.x * q.y - (i128)q.x * p.y;
+                s64 += (uint64_t)p.x * (uint64_t)q.y - (uint64_t)q.x * (uint64_t)p.y;
                 if (p.x < x0)
                     x0 = p.x;
                 if (p.x > x1)
@@ -295,6 +306,15 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                 if (p.y > y1)
                     y1 = p.y;
             }
+            /* twice the area, summed modulo 2^64 above: exact when it
+             * is known to fit, that is when each of the n terms (taken
+             * from the box's corner: the sum is the same) is within
+             * w h and n w h < 2^63 */
+            uint64_t w = (uint64_t)x1 - (uint64_t)x0, hgt = (uint64_t)y1 - (uint64_t)y0;
+            i128 s = w < ((uint64_t)1 << 31) && hgt < ((uint64_t)1 << 31) &&
+                             w * hgt <= (uint64_t)INT64_MAX / (b - a)
+                         ? (i128)(int64_t)s64
+                         : twice_area(rings.points + a, b - a);
             area[r] = (double)s;
             bb[r][0] = x0;
             bb[r][1] = y0;
@@ -427,12 +447,22 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         {
             for (size_t r = 0; r < nr; r++)
                 first_hole[r] = (size_t)-1;
+            /* the result's arrays at their size at once (no regrowth) */
+            size_t npts = 0, nrings = 0;
             for (size_t r = nr; r-- > 0;) {
                 if (parent[r] != (size_t)-1) {
                     next_hole[r] = first_hole[parent[r]];
                     first_hole[parent[r]] = r;
                 }
+                if (parent[r] != (size_t)-1 || area[r] > 0) {
+                    npts += rings.ring_start[r + 1] - rings.ring_start[r];
+                    nrings++;
+                }
             }
+            if (nouter && cg_polygon_set64_reserve(result, result->point_count + npts,
+                                         result->ring_count + nrings,
+                                         result->polygon_count + nouter) != CG_OK)
+                fail = 1;
             for (size_t r = 0; r < nr && !fail; r++) {
                 if (area[r] <= 0)
                     continue;

@@ -16,14 +16,12 @@ static inline void insert_key(keyval *a, size_t i, keyval v)
 /* Stable sort of a[0..n) by key: straight insertion up to 48 keys, below
  * 2,048 one pass by the top bits then insertion (when the keys spread
  * evenly), else an LSD radix sort (6- or 11-bit digits, only as many passes
- * as the largest key needs); tmp holds n or is NULL. */
-static int radix_sort(keyval *a, size_t n, keyval *tmp)
+ * as the largest key needs); all is the OR of the keys, tmp holds n or is
+ * NULL. */
+static int radix_sort_all(keyval *a, size_t n, keyval *tmp, uint64_t all)
 {
     if (n < 2)
         return 1;
-    uint64_t all = 0;
-    for (size_t i = 0; i < n; i++)
-        all |= a[i].key;
     if (n <= 48) { /* few keys: straight insertion (stable) */
         for (size_t i = 1; i < n; i++)
             insert_key(a, i, a[i]);
@@ -90,6 +88,14 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
     if (!tmp)
         free(t);
     return 1;
+}
+
+static int radix_sort(keyval *a, size_t n, keyval *tmp)
+{
+    uint64_t all = 0;
+    for (size_t i = 0; i < n; i++)
+        all |= a[i].key;
+    return radix_sort_all(a, n, tmp, all);
 }
 
 /* The natural runs of boolean_sort_two_keys' input, merged: idx[0..n) ordered by
@@ -187,20 +193,25 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
         if (sort_runs(k1, k2, stride, n, idx))
             return 1;
     }
+    /* the keys from the least (as few digits as they need) */
     int64_t lo1 = KEY(k1, 0);
-    for (size_t i = 1; i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
         int64_t a = KEY(k1, i);
         lo1 = a < lo1 ? a : lo1;
+        scratch[i] = (keyval){(uint64_t)a, (uint32_t)i};
     }
-    for (size_t i = 0; i < n; i++)
-        scratch[i] = (keyval){(uint64_t)(KEY(k1, i) - lo1), (uint32_t)i};
-    if (!radix_sort(scratch, n, tmp))
+    uint64_t all = 0;
+    for (size_t i = 0; i < n; i++) {
+        scratch[i].key -= (uint64_t)lo1;
+        all |= scratch[i].key;
+    }
+    if (!radix_sort_all(scratch, n, tmp, all))
         return 0;
     for (size_t i = 0; i < n;) {
         size_t j = i + 1;
         while (j < n && scratch[j].key == scratch[i].key)
             j++;
-        if (j - i > 1) {
+        if (j - i > 256) { /* by k2 from the least, radix sorted */
             int64_t lo2 = KEY(k2, scratch[i].val);
             for (size_t q = i + 1; q < j; q++) {
                 int64_t b = KEY(k2, scratch[q].val);
@@ -208,17 +219,20 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
             }
             for (size_t q = i; q < j; q++)
                 scratch[q].key = (uint64_t)(KEY(k2, scratch[q].val) - lo2);
-            if (j - i > 256) {
-                if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
-                    return 0;
-            } else {
-                for (size_t q = i + 1; q < j; q++) {
-                    keyval v = scratch[q];
-                    size_t m = q;
-                    for (; m > i && scratch[m - 1].key > v.key; m--)
-                        scratch[m] = scratch[m - 1];
-                    scratch[m] = v;
-                }
+            if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
+                return 0;
+        } else if (j - i > 1) {
+            /* by straight insertion, each k2 keyed as it is taken (the
+             * sign bit flipped: unsigned order is k2's) */
+            const uint64_t flip = (uint64_t)1 << 63;
+            scratch[i].key = (uint64_t)KEY(k2, scratch[i].val) ^ flip;
+            for (size_t q = i + 1; q < j; q++) {
+                keyval v = scratch[q];
+                v.key = (uint64_t)KEY(k2, v.val) ^ flip;
+                size_t m = q;
+                for (; m > i && scratch[m - 1].key > v.key; m--)
+                    scratch[m] = scratch[m - 1];
+                scratch[m] = v;
             }
         }
         i = j;

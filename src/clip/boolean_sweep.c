@@ -100,11 +100,26 @@ static int meet(sweep *s, uint32_t e, int64_t y, int next)
     return add_split(s, e, x, y);
 }
 
+/* Room for more pieces: the first growth goes to one per edge at once (a
+ * result has about as many), the ones after double as GROW_SMALL's.  0 when
+ * out of memory. */
+NOINLINE static int grow_pieces(engine *g)
+{
+    size_t cap = g->capp < g->ne / 2 ? g->ne / 2 : g->capp; /* (doubled) */
+    void *p = boolean_grow_from(g->P, g->P_small, g->np, &cap, sizeof *g->P);
+    if (!p)
+        return 0;
+    g->P = p;
+    g->capp = cap;
+    return 1;
+}
+
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
 {
     if (x0 == x1 && y0 == y1)
         return 1;
-    GROW_SMALL(g->P, g->np, g->capp, g->P_small, return 0);
+    if (g->np == g->capp && !grow_pieces(g))
+        return 0;
     g->P[g->np++] = (piece){x0, y0, x1, y1};
     return 1;
 }

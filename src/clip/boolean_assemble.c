@@ -459,7 +459,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                     nrings++;
                 }
             }
-            if (nouter && cg_polygon_set64_reserve(result, result->point_count + npts,
+            if (nouter && clip_polygon_set64_reserve(result, result->point_count + npts,
                                          result->ring_count + nrings,
                                          result->polygon_count + nouter) != CG_OK)
                 fail = 1;

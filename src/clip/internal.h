@@ -9,9 +9,9 @@ __extension__ typedef __int128 clip_i128;
 /* Room in set for this many points, rings and polygons in all, grown as
  * cg_polygon_set*_add_ring grows it (the capacities come out the same as
  * when the rings are added one by one). */
-cg_status cg_polygon_set_reserve(cg_polygon_set *set, size_t points, size_t rings,
+cg_status clip_polygon_set_reserve(cg_polygon_set *set, size_t points, size_t rings,
                                  size_t polygons);
-cg_status cg_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
+cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
                                    size_t polygons);
 
 #endif

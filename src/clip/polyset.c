@@ -4,83 +4,83 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define DEFINE_SET(SET, POINT, PREFIX)                                                           \
-    void PREFIX##_clear(SET *set)                                                                \
-    {                                                                                            \
-        if (!set)                                                                                \
-            return;                                                                              \
-        free(set->points);                                                                       \
-        free(set->ring_start);                                                                   \
-        free(set->polygon_start);                                                                \
-        memset(set, 0, sizeof *set);                                                             \
-    }                                                                                            \
-    cg_status PREFIX##_reserve(SET *set, size_t points, size_t rings, size_t polygons)        \
-    {                                                                                            \
-        if (points > ((size_t)-1) / 4 / sizeof(POINT) ||                                         \
-            rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                         \
-            polygons > ((size_t)-1) / 4 / sizeof(size_t))                                        \
-            return CG_ENOMEM;                                                                    \
-        if (points > set->point_capacity) {                                                      \
-            size_t cap = set->point_capacity ? set->point_capacity : 64;                         \
-            while (cap < points)                                                                 \
-                cap *= 2;                                                                        \
-            POINT *p = realloc(set->points, cap * sizeof *p);                                    \
-            if (!p)                                                                              \
-                return CG_ENOMEM;                                                                \
-            set->points = p;                                                                     \
-            set->point_capacity = cap;                                                           \
-        }                                                                                        \
-        if (rings + 1 > set->ring_capacity) {                                                    \
-            size_t cap = set->ring_capacity ? set->ring_capacity : 16;                           \
-            while (cap < rings + 1)                                                              \
-                cap *= 2;                                                                        \
-            size_t *r = realloc(set->ring_start, cap * sizeof *r);                               \
-            if (!r)                                                                              \
-                return CG_ENOMEM;                                                                \
-            set->ring_start = r;                                                                 \
-            set->ring_capacity = cap;                                                            \
-        }                                                                                        \
-        if (polygons + 1 > set->polygon_capacity) {                                              \
-            size_t cap = set->polygon_capacity ? set->polygon_capacity : 16;                     \
-            while (cap < polygons + 1)                                                           \
-                cap *= 2;                                                                        \
-            size_t *q = realloc(set->polygon_start, cap * sizeof *q);                            \
-            if (!q)                                                                              \
-                return CG_ENOMEM;                                                                \
-            set->polygon_start = q;                                                              \
-            set->polygon_capacity = cap;                                                         \
-        }                                                                                        \
-        return CG_OK;                                                                            \
-    }                                                                                            \
-    cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)       \
-    {                                                                                            \
-        if (!set || (!points && n))                                                              \
-            return CG_EINVAL;                                                                    \
-        if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                             \
-            return CG_ENOMEM;                                                                    \
-        int new_p = new_polygon || set->polygon_count == 0;                                      \
-        cg_status st = PREFIX##_reserve(set, set->point_count + n, set->ring_count + 1,          \
-                                        set->polygon_count + new_p);                             \
-        if (st != CG_OK)                                                                         \
-            return st;                                                                           \
-        if (new_p) {                                                                             \
-            if (set->polygon_count == 0)                                                         \
-                set->polygon_start[0] = 0;                                                       \
-            set->polygon_count++;                                                                \
-        }                                                                                        \
-        if (set->ring_count == 0)                                                                \
-            set->ring_start[0] = 0;                                                              \
-        if (n)                                                                                   \
-            memcpy(set->points + set->point_count, points, n * sizeof *points);                  \
-        set->point_count += n;                                                                   \
-        set->ring_count++;                                                                       \
-        set->ring_start[set->ring_count] = set->point_count;                                     \
-        set->polygon_start[set->polygon_count] = set->ring_count;                                \
-        return CG_OK;                                                                            \
+#define DEFINE_SET(SET, POINT, PREFIX, RESERVE)                                               \
+    void PREFIX##_clear(SET *set)                                                             \
+    {                                                                                         \
+        if (!set)                                                                             \
+            return;                                                                           \
+        free(set->points);                                                                    \
+        free(set->ring_start);                                                                \
+        free(set->polygon_start);                                                             \
+        memset(set, 0, sizeof *set);                                                          \
+    }                                                                                         \
+    cg_status RESERVE(SET *set, size_t points, size_t rings, size_t polygons)                 \
+    {                                                                                         \
+        if (points > ((size_t)-1) / 4 / sizeof(POINT) ||                                      \
+            rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                      \
+            polygons > ((size_t)-1) / 4 / sizeof(size_t))                                     \
+            return CG_ENOMEM;                                                                 \
+        if (points > set->point_capacity) {                                                   \
+            size_t cap = set->point_capacity ? set->point_capacity : 64;                      \
+            while (cap < points)                                                              \
+                cap *= 2;                                                                     \
+            POINT *p = realloc(set->points, cap * sizeof *p);                                 \
+            if (!p)                                                                           \
+                return CG_ENOMEM;                                                             \
+            set->points = p;                                                                  \
+            set->point_capacity = cap;                                                        \
+        }                                                                                     \
+        if (rings + 1 > set->ring_capacity) {                                                 \
+            size_t cap = set->ring_capacity ? set->ring_capacity : 16;                        \
+            while (cap < rings + 1)                                                           \
+                cap *= 2;                                                                     \
+            size_t *r = realloc(set->ring_start, cap * sizeof *r);                            \
+            if (!r)                                                                           \
+                return CG_ENOMEM;                                                             \
+            set->ring_start = r;                                                              \
+            set->ring_capacity = cap;                                                         \
+        }                                                                                     \
+        if (polygons + 1 > set->polygon_capacity) {                                           \
+            size_t cap = set->polygon_capacity ? set->polygon_capacity : 16;                  \
+            while (cap < polygons + 1)                                                        \
+                cap *= 2;                                                                     \
+            size_t *q = realloc(set->polygon_start, cap * sizeof *q);                         \
+            if (!q)                                                                           \
+                return CG_ENOMEM;                                                             \
+            set->polygon_start = q;                                                           \
+            set->polygon_capacity = cap;                                                      \
+        }                                                                                     \
+        return CG_OK;                                                                         \
+    }                                                                                         \
+    cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)     \
+    {                                                                                         \
+        if (!set || (!points && n))                                                           \
+            return CG_EINVAL;                                                                 \
+        if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                          \
+            return CG_ENOMEM;                                                                 \
+        int new_p = new_polygon || set->polygon_count == 0;                                   \
+        cg_status st = RESERVE(set, set->point_count + n, set->ring_count + 1,                \
+                                 set->polygon_count + new_p);                                 \
+        if (st != CG_OK)                                                                      \
+            return st;                                                                        \
+        if (new_p) {                                                                          \
+            if (set->polygon_count == 0)                                                      \
+                set->polygon_start[0] = 0;                                                    \
+            set->polygon_count++;                                                             \
+        }                                                                                     \
+        if (set->ring_count == 0)                                                             \
+            set->ring_start[0] = 0;                                                           \
+        if (n)                                                                                \
+            memcpy(set->points + set->point_count, points, n * sizeof *points);               \
+        set->point_count += n;                                                                \
+        set->ring_count++;                                                                    \
+        set->ring_start[set->ring_count] = set->point_count;                                  \
+        set->polygon_start[set->polygon_count] = set->ring_count;                             \
+        return CG_OK;                                                                         \
     }
 
-DEFINE_SET(cg_polygon_set, cg_vec2, cg_polygon_set)
-DEFINE_SET(cg_polygon_set64, cg_point64, cg_polygon_set64)
+DEFINE_SET(cg_polygon_set, cg_vec2, cg_polygon_set, clip_polygon_set_reserve)
+DEFINE_SET(cg_polygon_set64, cg_point64, cg_polygon_set64, clip_polygon_set64_reserve)
 
 double cg_polygon_set_ring_area(const cg_polygon_set *set, size_t r)
 {

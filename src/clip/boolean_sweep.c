@@ -135,45 +135,60 @@ static int close_run(sweep *s, uint32_t e, int64_t y)
 }
 
 /* Horizontal boundary pieces on scanline y: between below[] (edges reaching
- * y from below, x at y in xc) and above[] (edges leaving y upwards). */
+ * y from below, x at y in xc) and above[] (edges leaving y upwards), under
+ * the horizontal edges H[h0..h1) at y (sorted by x0).  Elsewhere on the
+ * scanline nothing lies on it, so the windings just below and just above it
+ * agree: there the edges only add up the windings, with no exact look. */
 static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t nb,
-                             const uint32_t *above, size_t na)
+                             const uint32_t *above, size_t na, size_t h0, size_t h1)
 {
     engine *g = s->g;
+    const bedge *E = g->E;
+    const double *xc = s->xc;
     int64_t wb[2] = {0, 0}, wa[2] = {0, 0};
     size_t i = 0, j = 0;
-    int have_prev = 0;
-    int64_t prev_x = 0;
-    while (i < nb || j < na) {
-        /* the leftmost next position */
-        const bedge *e;
-        uint32_t idx;
-        if (j >= na || (i < nb && cmp_x(&g->E[below[i]], &g->E[above[j]], y, s->xc[below[i]],
-                                        s->xc[above[j]]) <= 0))
-            idx = below[i];
-        else
-            idx = above[j];
-        e = &g->E[idx];
-        int64_t X = round_div(x_num(e, y), x_den(e));
-        if (have_prev) {
-            int sb = inside(g, wb[0], wb[1]), sa = inside(g, wa[0], wa[1]);
-            if (sb != sa && X != prev_x) {
-                if (sa ? !emit(g, prev_x, y, X, y) : !emit(g, X, y, prev_x, y))
-                    return 0;
+    for (size_t h = h0; h < h1;) {
+        /* the horizontal edges overlapping from H[h] on: x in [lo, hi] */
+        int64_t lo = g->H[h].x0, hi = g->H[h].x1;
+        for (h++; h < h1 && g->H[h].x0 <= hi; h++)
+            hi = g->H[h].x1 > hi ? g->H[h].x1 : hi;
+        double start = (double)lo - 0.5, end = (double)hi + 0.5;
+        for (; i < nb && xc[below[i]] < start; i++)
+            wb[E[below[i]].op] += E[below[i]].w;
+        for (; j < na && xc[above[j]] < start; j++)
+            wa[E[above[j]].op] += E[above[j]].w;
+        int have_prev = 0;
+        int64_t prev_x = 0;
+        while ((i < nb && xc[below[i]] <= end) || (j < na && xc[above[j]] <= end)) {
+            /* the leftmost next position */
+            uint32_t idx;
+            if (j >= na || (i < nb && cmp_x(&E[below[i]], &E[above[j]], y, xc[below[i]],
+                                            xc[above[j]]) <= 0))
+                idx = below[i];
+            else
+                idx = above[j];
+            const bedge *e = &E[idx];
+            int64_t X = round_div(x_num(e, y), x_den(e));
+            if (have_prev) {
+                int sb = inside(g, wb[0], wb[1]), sa = inside(g, wa[0], wa[1]);
+                if (sb != sa && X != prev_x) {
+                    if (sa ? !emit(g, prev_x, y, X, y) : !emit(g, X, y, prev_x, y))
+                        return 0;
+                }
             }
+            /* apply everything at this position */
+            double xv = xc[idx];
+            while (i < nb && cmp_x(&E[below[i]], e, y, xc[below[i]], xv) == 0) {
+                wb[E[below[i]].op] += E[below[i]].w;
+                i++;
+            }
+            while (j < na && cmp_x(&E[above[j]], e, y, xc[above[j]], xv) == 0) {
+                wa[E[above[j]].op] += E[above[j]].w;
+                j++;
+            }
+            have_prev = 1;
+            prev_x = X;
         }
-        /* apply everything at this position */
-        double xv = s->xc[idx];
-        while (i < nb && cmp_x(&g->E[below[i]], e, y, s->xc[below[i]], xv) == 0) {
-            wb[g->E[below[i]].op] += g->E[below[i]].w;
-            i++;
-        }
-        while (j < na && cmp_x(&g->E[above[j]], e, y, s->xc[above[j]], xv) == 0) {
-            wa[g->E[above[j]].op] += g->E[above[j]].w;
-            j++;
-        }
-        have_prev = 1;
-        prev_x = X;
     }
     return 1;
 }
@@ -642,7 +657,7 @@ int boolean_run_sweep(sweep *s)
             if (!horizontal_meets(s, y, above, na, h0, ih, dirty, &nd))
                 return 0;
             dirty_sorted = 0;
-            if (s->classify && !horizontal_pieces(s, y, below, nb, above, na))
+            if (s->classify && !horizontal_pieces(s, y, below, nb, above, na, h0, ih))
                 return 0;
         }
         s->visits += na;
@@ -845,7 +860,7 @@ int boolean_light_sweep(sweep *s)
             if (s->changed)
                 return LIGHT_BAIL;
             sort_u32(dirty, nd);
-            if (!horizontal_pieces(s, y, below, nb, above, na))
+            if (!horizontal_pieces(s, y, below, nb, above, na, h0, ih))
                 return 0;
         }
         /* new neighbours */

@@ -413,6 +413,12 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t yn)
     return add_split(s, u, x, yn) && add_split(s, v, x, yn);
 }
 
+/* x lies within a unit of [a, b] or [b, a] */
+static inline int near_span(double x, double a, double b)
+{
+    return a < b ? x >= a - 1 && x <= b + 1 : x >= b - 1 && x <= a + 1;
+}
+
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
  * not in order (a bug: the caller gives CG_ERANGE rather than a wrong
  * result). */
@@ -692,8 +698,12 @@ int boolean_run_sweep(sweep *s)
                 if (cmp_x(&E[u], &E[v], y, xc[u], xc[v]) != 0) {
                     /* u and v cross strictly inside the beam: the crossing
                      * of the input edges they come from, rounded, when it
-                     * lies in the beam (no drift), else the crossing of the
-                     * pieces */
+                     * lies in the beam within a unit of both pieces (no
+                     * drift), else the crossing of the pieces.  (Pieces
+                     * bent by earlier splits can cross far from where
+                     * their input edges do: a split there would bend them
+                     * by units, and on coarse grids that went on pass
+                     * after pass.) */
                     const bedge *a = &E[u], *b = &E[v];
                     int64_t px, py, oa[4], ob[4];
                     edge_orig(g, a, oa);
@@ -701,7 +711,8 @@ int boolean_run_sweep(sweep *s)
                     if (!s->use_input_lines ||
                         !boolean_line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2], ob[3],
                                            &px, &py) ||
-                        py < y || py > yn) {
+                        py < y || py > yn || !near_span((double)px, xc[u], xn[u]) ||
+                        !near_span((double)px, xc[v], xn[v])) {
                         boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt,
                                           &px, &py);
                     }

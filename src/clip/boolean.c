@@ -42,8 +42,6 @@
  * share. */
 #include "boolean_engine.h"
 
-/* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
- * memory, arr unchanged */
 void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size)
 {
     size_t c = *cap ? *cap * 2 : 32;
@@ -57,7 +55,7 @@ void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, siz
 }
 
 int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
-                     uint32_t orig)
+                      uint32_t orig)
 {
     if (y0 == y1) {
         if (x0 == x1)
@@ -78,6 +76,9 @@ int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1,
 }
 
 #define MAX_PASSES 64
+/* the light sweep's cost per edge, in active edges looked at by the full
+ * sweep (the pass driver tries it first when the full sweep was dearer) */
+#define LIGHT_COST 16
 /* A pass that looked at this many active edges per edge (long active lists:
  * another whole pass would be dear) snaps to the pixels of the edges' ends
  * as well as of its rounded points, from then on: complete snap rounding
@@ -186,7 +187,7 @@ typedef struct carry {
     int ys_valid;
 } carry;
 
-/* order[0..n) by (k1, k2) of the edges (fields of bedge) */
+/* whether a goes before b (or ties) by (yb, xb), or by (yt, xt) when top */
 static inline int edge_before(const bedge *a, const bedge *b, int top)
 {
     int64_t a1 = top ? a->yt : a->yb, b1 = top ? b->yt : b->yb;
@@ -212,8 +213,8 @@ static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, u
         return 0;
     if (np) {
         const bedge *P = &E[c->kept];
-        if (!boolean_sort_two_keys(top ? &P->yt : &P->yb, top ? &P->xt : &P->xb, sizeof(bedge), np, tmp,
-                           s->scratch, s->scratch2))
+        if (!boolean_sort_two_keys(top ? &P->yt : &P->yb, top ? &P->xt : &P->xb, sizeof(bedge), np,
+                                   tmp, s->scratch, s->scratch2))
             return 0;
         for (size_t i = 0; i < np; i++)
             tmp[i] += (uint32_t)c->kept;
@@ -262,10 +263,10 @@ NOINLINE static int sweep_sort(sweep *s, carry *c)
                  merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
     int from_last = sorted && c->ys_valid && c->nys + c->nsy <= 2 * (ne ? ne : 1);
     if (!sorted)
-        sorted = !ne || (boolean_sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne, s->by_bottom,
-                                       scratch, tmp) &&
-                         boolean_sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne, s->by_top,
-                                       scratch, tmp));
+        sorted = !ne || (boolean_sort_two_keys(&g->E[0].yb, &g->E[0].xb, sizeof(bedge), ne,
+                                               s->by_bottom, scratch, tmp) &&
+                         boolean_sort_two_keys(&g->E[0].yt, &g->E[0].xt, sizeof(bedge), ne,
+                                               s->by_top, scratch, tmp));
     /* the scanlines: the two orders merged, each with its next distinct y
      * at hand (INT64_MAX past its end; no y reaches it) */
     const bedge *E = g->E;
@@ -273,7 +274,8 @@ NOINLINE static int sweep_sort(sweep *s, carry *c)
     if (from_last) {
         /* the last pass's scanlines merged with its split points' y */
         while (i < c->nys || j < c->nsy) {
-            int64_t y = j == c->nsy || (i < c->nys && c->ys[i] <= c->sy[j]) ? c->ys[i++] : c->sy[j++];
+            int64_t y =
+                j == c->nsy || (i < c->nys && c->ys[i] <= c->sy[j]) ? c->ys[i++] : c->sy[j++];
             if (u == 0 || s->ys[u - 1] != y)
                 s->ys[u++] = y;
         }
@@ -314,8 +316,8 @@ NOINLINE static int sweep_sort(sweep *s, carry *c)
     }
 #endif
     if (sorted && g->nh > 1 && !(c->valid && c->nh_sorted == g->nh)) {
-        sorted = boolean_sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder, scratch,
-                               tmp);
+        sorted = boolean_sort_two_keys(&g->H[0].y, &g->H[0].x0, sizeof(hseg), g->nh, s->horder,
+                                       scratch, tmp);
         if (sorted) {
             for (size_t i = 0; i < g->nh; i++)
                 s->hsorted[i] = g->H[s->horder[i]];
@@ -383,7 +385,7 @@ static int cmp_band(const void *a, const void *b)
     return (p[0] > q[0]) - (p[0] < q[0]);
 }
 
-static cg_status boolean_run(engine *g, cg_polygon_set64 *result)
+static cg_status run_passes(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
     memset(&s, 0, sizeof s);
@@ -718,7 +720,7 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
     if (st == CG_OK && g.ne > UINT32_MAX / 4)
         st = CG_ERANGE;
     if (st == CG_OK)
-        st = boolean_run(&g, result);
+        st = run_passes(&g, result);
     if (st != CG_OK)
         cg_polygon_set64_clear(result);
     if (g.E != g.E_small)

@@ -2,10 +2,9 @@
  * rings, holes placed in the smallest outer ring around them. */
 #include "boolean_engine.h"
 
-/* ---- assembly -------------------------------------------------------------- */
-
-/* Clockwise angle from direction r to direction o, as an order key:
- * returns <0 when o1 comes before o2 turning clockwise from r. */
+/* Where direction o lies turning clockwise from direction r, as an order
+ * key: 0 within a half turn, 1 at the half turn, 2 beyond it, 3 along r (a
+ * full turn). */
 static int half_cw(i128 rx, i128 ry, i128 ox, i128 oy)
 {
     i128 c = rx * oy - ry * ox, d = rx * ox + ry * oy;
@@ -18,6 +17,7 @@ static int half_cw(i128 rx, i128 ry, i128 ox, i128 oy)
     return 3;
 }
 
+/* whether piece a's direction comes before b's turning clockwise from r */
 static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
 {
     i128 ax = a->x1 - a->x0, ay = a->y1 - a->y0, bx = b->x1 - b->x0, by = b->y1 - b->y0;
@@ -154,8 +154,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
         return 0;
     size_t mr = np / 3 + 1; /* rings at most */
-    size_t bytes = 0, off[16], k = 0;
-#define ASM_PART(n, size) (off[k++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
+    size_t bytes = 0, off[16], npart = 0;
+#define ASM_PART(n, size) (off[npart++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
     ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
     ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
     ASM_PART(np, sizeof(piece));        /* 2: sorted pieces */
@@ -179,7 +179,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     size_t hbits = 4;
     while (hashed && ((size_t)1 << hbits) < 2 * np)
         hbits++;
-    ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: start point -> first piece */
+    ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: point -> piece */
 #undef ASM_PART
     char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
     if (!mem)
@@ -189,7 +189,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         uint32_t *order = (uint32_t *)(mem + off[1]);
         piece *sorted = (piece *)(mem + off[2]);
         if (!boolean_sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
-                           (keyval *)(mem + off[4]))) {
+                                   (keyval *)(mem + off[4]))) {
             free(own);
             return 0;
         }
@@ -325,8 +325,9 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                 order[nouter++] = r;
         }
         /* Each hole goes to the smallest outer containing a point of one
-         * of its edges that is on no other ring (below).  The outers are taken by increasing area; for each, the still unplaced
-         * holes within its box are tested together: the outer's edges are
+         * of its edges that is on no other ring (below).  The outers are
+         * taken by increasing area; for each, the still unplaced holes
+         * within its box are tested together: the outer's edges are
          * matched with the hole points sorted by y. */
         int fail_nest = 0;
         ring_by_area *ra = (ring_by_area *)(mem + off[11]);
@@ -345,7 +346,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
             uint32_t *verts = NULL; /* a hash set of the vertices, when first needed */
             size_t vbits = 4;
             size_t nv = rings.point_count;
-            size_t h = 0;
+            size_t nhp = 0; /* holes noted in hp */
             for (size_t r = 0; r < nr && !fail_nest; r++) {
                 if (area[r] > 0)
                     continue;
@@ -367,12 +368,12 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                                 fail_nest = 1;
                                 break;
                             }
-                            for (size_t v = 0; v < nv; v++) {
-                                cg_point64 p = rings.points[v];
+                            for (size_t q = 0; q < nv; q++) {
+                                cg_point64 p = rings.points[q];
                                 size_t h = point_hash(p.x, p.y, vbits);
                                 while (verts[h])
                                     h = (h + 1) & (((size_t)1 << vbits) - 1);
-                                verts[h] = (uint32_t)(v + 1);
+                                verts[h] = (uint32_t)(q + 1);
                             }
                         }
                         if ((qx & 3) || (qy & 3) ||
@@ -383,7 +384,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                         }
                     }
                 }
-                hp[h++] = (hole_point){px, py, r, 0};
+                hp[nhp++] = (hole_point){px, py, r, 0};
             }
             free(verts);
             if (fail_nest)
@@ -392,7 +393,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
             size_t unplaced = nholes;
             for (size_t oi = 0; oi < nouter && unplaced; oi++) {
                 size_t o = ra[oi].ring;
-                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2], by1 = 4 * bb[o][3];
+                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2],
+                        by1 = 4 * bb[o][3];
                 /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
                 size_t lo = first_at_least(hp, nholes, bx0, 0);
                 size_t nc = 0;
@@ -460,8 +462,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
                 }
             }
             if (nouter && clip_polygon_set64_reserve(result, result->point_count + npts,
-                                         result->ring_count + nrings,
-                                         result->polygon_count + nouter) != CG_OK)
+                                                     result->ring_count + nrings,
+                                                     result->polygon_count + nouter) != CG_OK)
                 fail = 1;
             for (size_t r = 0; r < nr && !fail; r++) {
                 if (area[r] <= 0)

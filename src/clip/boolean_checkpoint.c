@@ -69,8 +69,9 @@ static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t
 }
 
 /* Takes the state of the last checkpoint L->pt[j] (j >= j0) of the last
- * pass at or below y (every edge active there kept its number, map[] of
- * the last pass's): its index + 1, or 0 when there is none. */
+ * pass at or below y (every edge active there kept its number;
+ * s->prev_map: the last pass's numbers to ours): its index + 1, or 0 when
+ * there is none. */
 size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
 {
     size_t j = L->npt;

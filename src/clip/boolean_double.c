@@ -1,8 +1,9 @@
 /* The double API of the boolean operations: coordinates scaled to the
  * integer grid and back. */
-#include "boolean_engine.h"
+#include "internal.h"
 
-/* ---- the double API ------------------------------------------------------------ */
+#include <math.h>
+#include <stdlib.h>
 
 /* The grid of the double API: multiply by an explicit scale, or (automatic)
  * by 2^exponent with ldexp, which reaches every double's range exactly. */

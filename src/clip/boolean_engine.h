@@ -6,7 +6,6 @@
 
 #include "internal.h"
 
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,7 +44,7 @@ typedef struct piece { int64_t x0, y0, x1, y1; } piece;
 #define GROW_SMALL(arr, n, cap, small, fail)                                   \
     do {                                                                       \
         if ((n) == (cap)) {                                                    \
-            void *p_ = boolean_grow_from(arr, small, n, &(cap), sizeof *(arr));        \
+            void *p_ = boolean_grow_from(arr, small, n, &(cap), sizeof *(arr)); \
             if (!p_)                                                           \
                 fail;                                                          \
             (arr) = p_;                                                        \
@@ -131,6 +130,8 @@ static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
                               int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py);
 
+/* ---- in the result: fill rules and the operation -------------------------- */
+
 static inline int fill_in(cg_clip_fill f, int64_t w)
 {
     switch (f) {
@@ -162,15 +163,15 @@ static inline int inside(const engine *g, int64_t wa, int64_t wb)
 
 typedef struct keyval { uint64_t key; uint32_t val; } keyval;
 
-/* idx[0..n) = 0..n-1 ordered by (k1, k2), ties by index: k1[i] and k2[i] are
- * the int64_t fields `stride` bytes apart of record i; scratch holds n
- * keyvals, tmp n or is NULL.  0 when out of memory. */
+/* idx[0..n) = 0..n-1 ordered by (k1, k2), ties by index: k1 and k2 point at
+ * int64_t fields of record 0, records are `stride` bytes apart; scratch
+ * holds n keyvals, tmp n or is NULL.  0 when out of memory. */
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp);
 /* qsort, by straight insertion when n is small */
 void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *));
 
-/* ---- the sweep ------------------------------------------------------------ */
+/* ---- the sweep's state ---------------------------------------------------- */
 
 typedef struct sweep {
     engine *g;
@@ -178,7 +179,9 @@ typedef struct sweep {
     size_t nys;
     uint32_t *by_bottom; /* edges sorted by yb */
     uint32_t *act, *nxt, *fresh, *dirty;
-    uint32_t *by_top, *clus, *seam; /* the light sweep's */
+    uint32_t *by_top;    /* edges sorted by yt */
+    uint32_t *clus, *seam; /* the light sweep's: the edges through one point; where new
+                            * neighbours meet */
     keyval *scratch, *scratch2;      /* for sorting */
     hseg *hsorted;
     uint32_t *horder;
@@ -212,6 +215,8 @@ typedef struct sweep {
     size_t (*ranges)[2];       /* the ranges of its pieces taken */
     size_t nranges;
 } sweep;
+
+/* ---- checkpoints (boolean_checkpoint.c) ------------------------------------ */
 
 /* Checkpoints.  A full pass that splits edges is repeated, but below the
  * lowest split edge the next pass would see exactly the same edges, events
@@ -247,7 +252,6 @@ typedef struct ck_log {
 int boolean_run_sweep(sweep *s);
 
 #define LIGHT_BAIL 2
-#define LIGHT_COST 16
 /* The light sweep of a pass expected to find nothing to split
  * (boolean_sweep.c): 1 when final, LIGHT_BAIL when something needs a split,
  * 0 when out of memory. */

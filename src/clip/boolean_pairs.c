@@ -1,8 +1,6 @@
 /* Crossings of small inputs found pair by pair, before the first sweep. */
 #include "boolean_engine.h"
 
-/* ---- small inputs: crossings found pair by pair ------------------------------ */
-
 /* On few edges, testing every pair for a crossing costs less than a sweep
  * that only looks for them.  The crossings found are rounded as the first
  * sweep rounds them and the edges split before it, so that it normally
@@ -91,7 +89,8 @@ int boolean_add_pair_splits(engine *g)
             if (!cross_inside(a, b, narrow))
                 continue;
             int64_t px, py;
-            boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px, &py);
+            boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px,
+                                      &py);
             if (!add_split_point(g, B[i].e, px, py) || !add_split_point(g, B[j].e, px, py))
                 return 0;
         }

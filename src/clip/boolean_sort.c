@@ -2,8 +2,6 @@
  * edges and pieces by two integer keys, and qsort for a few records. */
 #include "boolean_engine.h"
 
-/* ---- sorting ------------------------------------------------------------ */
-
 /* v put into a[0..i), in order by key, after the equal keys: a[0..i] in
  * order */
 static inline void insert_key(keyval *a, size_t i, keyval v)
@@ -243,8 +241,9 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
 #undef KEY
 }
 
-/* qsort, by straight insertion when n is small (the assembly's few rings;
- * cmp is a total order, so the result is qsort's) */
+/* qsort, by straight insertion when n is small (the assembly's rings and
+ * holes, a hot-pixel cell's points, an edge's split points; cmp is a total
+ * order, so the result is qsort's) */
 void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *))
 {
     unsigned char v[64], *a = base;

@@ -2,7 +2,7 @@
  * the replacement of every split edge by its pieces. */
 #include "boolean_engine.h"
 
-/* Replaces every edge that has split points by its pieces. */
+/* a split point of an edge; t orders it along the edge */
 typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
 
 static int cmp_along(const void *a, const void *b)
@@ -21,7 +21,8 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
 {
     i128 x0 = 2 * (i128)px - 1, x1 = 2 * (i128)px + 1, y0 = 2 * (i128)py - 1, y1 = 2 * (i128)py + 1;
     i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
-    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) || (Ay > y1 && By > y1))
+    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) ||
+        (Ay > y1 && By > y1))
         return 0;
     /* the line through a and b meets the square only if the centre is
      * within half the square's width across the line, |d x (p - a)| <=
@@ -44,7 +45,8 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
  * rounded split point is split there too, so that nearly parallel edges
  * meet at one grid point instead of crossing again a little further on.
  * Used from the second pass on.  The points are put in a grid of square
- * cells (about two points a cell; sorted by y, then x, in each cell), and
+ * cells (about two points a cell; sorted by y, then x, each point once, in
+ * each cell), and
  * each edge looks at the cells along it, row by row: the cost follows the
  * edges' lengths and the points near them, not the points in their y
  * range (dense crossings of long edges made that quadratic). */
@@ -122,6 +124,7 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
     return 1;
 }
 
+/* Snap rounding to the hot pixels (see hot_grid): 0 when out of memory. */
 int boolean_add_hot_pixel_splits(engine *g, int vertices)
 {
     size_t ns = g->ns;
@@ -182,8 +185,10 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                         continue;
                     GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
                         ok = 0;
-                        break;
+                        break; /* (leaves the macro only, before it sets S) */
                     });
+                    if (!ok)
+                        break; /* out of memory: no room for the point */
                     g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
                 }
             }
@@ -211,7 +216,8 @@ static uint32_t add_orig(engine *g, const bedge *e)
     return (uint32_t)g->no++;
 }
 
-/* map[old edge] receives its new index, or UINT32_MAX when it was split
+/* Replaces every edge that has split points by its pieces: map[old edge]
+ * receives its new index, or UINT32_MAX when it was split
  * (the pieces come after the edges kept, in g->E[*kept..]); mem (cap
  * bytes, or NULL) is scratch. */
 int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)

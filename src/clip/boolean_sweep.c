@@ -449,7 +449,8 @@ int boolean_run_sweep(sweep *s)
             const struct ck_log *L = s->prev;
             while (s->prev_j < L->npt && L->pt[s->prev_j].y < y)
                 s->prev_j++;
-            if (s->prev_j < L->npt && L->pt[s->prev_j].y == y && boolean_ck_same(s, &L->pt[s->prev_j])) {
+            if (s->prev_j < L->npt && L->pt[s->prev_j].y == y &&
+                boolean_ck_same(s, &L->pt[s->prev_j])) {
                 size_t from = L->pt[s->prev_j].np, to = s->prev->end_np, j = 0;
                 if (s->band < s->nbands) {
                     j = boolean_ck_load(s, L, s->prev_j, s->bands[s->band][0]);
@@ -709,12 +710,12 @@ int boolean_run_sweep(sweep *s)
                     edge_orig(g, a, oa);
                     edge_orig(g, b, ob);
                     if (!s->use_input_lines ||
-                        !boolean_line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2], ob[3],
-                                           &px, &py) ||
+                        !boolean_line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2],
+                                                   ob[3], &px, &py) ||
                         py < y || py > yn || !near_span((double)px, xc[u], xn[u]) ||
                         !near_span((double)px, xc[v], xn[v])) {
-                        boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt,
-                                          &px, &py);
+                        boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt,
+                                                  b->yt, &px, &py);
                     }
                     if (py < y)
                         py = y;

@@ -10,8 +10,8 @@ __extension__ typedef __int128 clip_i128;
  * cg_polygon_set*_add_ring grows it (the capacities come out the same as
  * when the rings are added one by one). */
 cg_status clip_polygon_set_reserve(cg_polygon_set *set, size_t points, size_t rings,
-                                 size_t polygons);
-cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
                                    size_t polygons);
+cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
+                                     size_t polygons);
 
 #endif

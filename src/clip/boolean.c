@@ -443,7 +443,8 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
             if (!r)
                 break;
             if (r == 1) {
-                st = boolean_assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
+                st =
+                    boolean_assemble(g, result, &s.mem, &s.memcap, s.mem_small) ? CG_OK : CG_ENOMEM;
                 break;
             }
             /* something to split: start over with the full sweep */
@@ -522,7 +523,7 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         free(saved);
         saved = NULL;
         if (!s.changed) {
-            st = boolean_assemble(g, result, s.mem, s.memcap) ? CG_OK : CG_ENOMEM;
+            st = boolean_assemble(g, result, &s.mem, &s.memcap, s.mem_small) ? CG_OK : CG_ENOMEM;
             break;
         }
         if (s.visits >= DENSE_VISITS * edges)

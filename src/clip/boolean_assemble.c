@@ -139,9 +139,13 @@ typedef struct ringbuf {
     size_t n, cap;
 } ringbuf;
 
-/* buf (cap bytes, or NULL) is the sweep's block, no longer needed: the
- * assembly's arrays are carved from it when they fit (no fresh pages). */
-int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
+/* *buf (*cap bytes) is the sweep's block, no longer needed: the assembly's
+ * arrays are carved from it, replaced by a larger one when they do not fit
+ * (unless it is `fixed`, the caller's buffer on the stack); the caller
+ * frees it.  (A block of its own, as large as the sweep's, would come fresh
+ * from the system call after call.) */
+int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *cap,
+                     const void *fixed)
 {
     size_t np = g->np;
     piece *P = g->P;
@@ -181,18 +185,23 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
         hbits++;
     ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: point -> piece */
 #undef ASM_PART
-    char *own = bytes > cap || !buf ? malloc(bytes) : NULL, *mem = own ? own : buf;
-    if (!mem)
-        return 0;
+    if (bytes > *cap) {
+        if (*buf != fixed)
+            free(*buf);
+        *cap = 0;
+        *buf = malloc(bytes);
+        if (!*buf)
+            return 0;
+        *cap = bytes;
+    }
+    char *mem = *buf;
     {
         keyval *scratch = (keyval *)(mem + off[0]);
         uint32_t *order = (uint32_t *)(mem + off[1]);
         piece *sorted = (piece *)(mem + off[2]);
         if (!boolean_sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
-                                   (keyval *)(mem + off[4]))) {
-            free(own);
+                                   (keyval *)(mem + off[4])))
             return 0;
-        }
         for (size_t i = 0; i < np; i++)
             sorted[i] = P[order[i]];
         P = sorted; /* (g->P is not read after the assembly) */
@@ -489,6 +498,5 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap)
     }
     ok = 1;
 fail:
-    free(own);
     return ok;
 }

@@ -276,8 +276,9 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
 int boolean_add_pair_splits(engine *g);
 
 /* The pieces of the final pass linked into rings, holes under their outer
- * rings (boolean_assemble.c); buf (cap bytes) is scratch.  0 when out of
- * memory. */
-int boolean_assemble(engine *g, cg_polygon_set64 *result, void *buf, size_t cap);
+ * rings (boolean_assemble.c); *buf (*cap bytes) is scratch, replaced by a
+ * larger block when needed unless it is `fixed`.  0 when out of memory. */
+int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *cap,
+                     const void *fixed);
 
 #endif

@@ -312,7 +312,9 @@ int main(int argc, char **argv)
             star_case(n, 9e5, "random polygons", n <= 1000 ? 4 : 2,
                       n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1);
     /* spiky: radius uniform in [0.5, 1]: a scanline meets a third of the edges */
-    star_case(max_n < 1000 ? max_n : 1000, 5e5, "spiky random polygons", 4, 5);
+    for (size_t n = 10; n <= max_n && n <= 1000; n *= 10)
+        if (n >= min_n)
+            star_case(n, 5e5, "spiky random polygons", 4, n <= 100 ? 15 : 5);
     for (size_t n = 100; n <= max_n; n *= 10) {
         if (n < min_n)
             continue;

@@ -255,6 +255,18 @@ static void free_shape(shape *s)
     free(s->len);
 }
 
+/* All four operations on the shapes a and b (made ready here), which are
+ * freed after. */
+static void compare_four_and_free(const char *what, shape *a, shape *b)
+{
+    finish(a);
+    finish(b);
+    for (int op = 0; op < 4; op++)
+        compare(what, a, b, op, 5);
+    free_shape(a);
+    free_shape(b);
+}
+
 /* Pairs of star-shaped polygons of n vertices, the second shifted; below
  * 1,000 vertices, 1,000 / n pairs of different polygons (the time is per
  * pair, the areas and result vertices are summed over the pairs). */
@@ -337,12 +349,7 @@ int main(int argc, char **argv)
         shape a = {0}, b = {0};
         star(&a, 2000, 128, 128, 10, 128);
         star(&b, 2000, 140, 120, 10, 128);
-        finish(&a);
-        finish(&b);
-        for (int op = 0; op < 4; op++)
-            compare("spiky stars on a 256-unit grid, 2,000 vertices each", &a, &b, op, 5);
-        free_shape(&a);
-        free_shape(&b);
+        compare_four_and_free("spiky stars on a 256-unit grid, 2,000 vertices each", &a, &b);
     }
     {
         /* a layout: 60 x 60 small squares against a disc of 2,000 vertices */
@@ -351,12 +358,7 @@ int main(int argc, char **argv)
             for (int k = 0; k < 60; k++)
                 square(&a, i * 10000, k * 10000, 7000, 0);
         ellipse(&b, 2000, 300000, 300000, 280000, 280000, 0, 0);
-        finish(&a);
-        finish(&b);
-        for (int op = 0; op < 4; op++)
-            compare("3,600 squares and a disc", &a, &b, op, 5);
-        free_shape(&a);
-        free_shape(&b);
+        compare_four_and_free("3,600 squares and a disc", &a, &b);
     }
     {
         /* a plate with 400 round holes against a rotated plate */
@@ -367,12 +369,7 @@ int main(int argc, char **argv)
             for (int k = 0; k < 20; k++)
                 ellipse(&a, 32, 50000 + i * 100000, 50000 + k * 100000, 30000, 30000, 0, 1);
         ellipse(&b, 4, 1000000, 1000000, 1200000, 1200000, 0.3, 0);
-        finish(&a);
-        finish(&b);
-        for (int op = 0; op < 4; op++)
-            compare("plate with 400 holes and a square", &a, &b, op, 5);
-        free_shape(&a);
-        free_shape(&b);
+        compare_four_and_free("plate with 400 holes and a square", &a, &b);
     }
     return 0;
 }

@@ -252,12 +252,8 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
             capbuf = (n + 2) * 2;
             split_sort *nb = buf == small ? malloc(capbuf * sizeof *nb)
                                           : realloc(buf, capbuf * sizeof *nb);
-            if (!nb) {
-                if (buf != small)
-                    free(buf);
-                free(own);
-                return 0;
-            }
+            if (!nb)
+                goto fail;
             buf = nb;
         }
         bedge e = g->E[ei];
@@ -274,12 +270,8 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
         dead[ei] = 1;
         /* the input edge of the pieces */
         uint32_t orig = e.orig == NO_ORIG ? add_orig(g, &e) : e.orig;
-        if (orig == NO_ORIG) {
-            if (buf != small)
-                free(buf);
-            free(own);
-            return 0;
-        }
+        if (orig == NO_ORIG)
+            goto fail;
         /* the path direction of the edge: w == -1 means upwards */
         for (size_t k = 0; k + 1 < m; k++) {
             split_sort p = buf[k], q = buf[k + 1];
@@ -287,12 +279,8 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
                 continue;
             int ok = e.w < 0 ? boolean_add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
                              : boolean_add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
-            if (!ok) {
-                if (buf != small)
-                    free(buf);
-                free(own);
-                return 0;
-            }
+            if (!ok)
+                goto fail;
         }
         i = j;
     }
@@ -312,4 +300,9 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
     g->ns = 0;
     free(own);
     return 1;
+fail: /* out of memory */
+    if (buf != small)
+        free(buf);
+    free(own);
+    return 0;
 }

@@ -4,6 +4,23 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* arr with room for `need` items of `size` bytes (the capacity *cap doubled
+ * from `first` until it holds them): arr itself when it has the room (NULL
+ * while nothing was needed); else NULL when out of memory (arr and *cap
+ * unchanged). */
+static void *grow(void *arr, size_t *cap, size_t need, size_t size, size_t first)
+{
+    if (need <= *cap)
+        return arr;
+    size_t c = *cap ? *cap : first;
+    while (c < need)
+        c *= 2;
+    void *p = realloc(arr, c * size);
+    if (p)
+        *cap = c;
+    return p;
+}
+
 #define DEFINE_SET(SET, POINT, PREFIX, RESERVE)                                               \
     void PREFIX##_clear(SET *set)                                                             \
     {                                                                                         \
@@ -20,36 +37,19 @@
             rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                      \
             polygons > ((size_t)-1) / 4 / sizeof(size_t))                                     \
             return CG_ENOMEM;                                                                 \
-        if (points > set->point_capacity) {                                                   \
-            size_t cap = set->point_capacity ? set->point_capacity : 64;                      \
-            while (cap < points)                                                              \
-                cap *= 2;                                                                     \
-            POINT *p = realloc(set->points, cap * sizeof *p);                                 \
-            if (!p)                                                                           \
-                return CG_ENOMEM;                                                             \
-            set->points = p;                                                                  \
-            set->point_capacity = cap;                                                        \
-        }                                                                                     \
-        if (rings + 1 > set->ring_capacity) {                                                 \
-            size_t cap = set->ring_capacity ? set->ring_capacity : 16;                        \
-            while (cap < rings + 1)                                                           \
-                cap *= 2;                                                                     \
-            size_t *r = realloc(set->ring_start, cap * sizeof *r);                            \
-            if (!r)                                                                           \
-                return CG_ENOMEM;                                                             \
-            set->ring_start = r;                                                              \
-            set->ring_capacity = cap;                                                         \
-        }                                                                                     \
-        if (polygons + 1 > set->polygon_capacity) {                                           \
-            size_t cap = set->polygon_capacity ? set->polygon_capacity : 16;                  \
-            while (cap < polygons + 1)                                                        \
-                cap *= 2;                                                                     \
-            size_t *q = realloc(set->polygon_start, cap * sizeof *q);                         \
-            if (!q)                                                                           \
-                return CG_ENOMEM;                                                             \
-            set->polygon_start = q;                                                           \
-            set->polygon_capacity = cap;                                                      \
-        }                                                                                     \
+        void *p = grow(set->points, &set->point_capacity, points, sizeof(POINT), 64);         \
+        if (!p && points)                                                                     \
+            return CG_ENOMEM;                                                                 \
+        set->points = p;                                                                      \
+        p = grow(set->ring_start, &set->ring_capacity, rings + 1, sizeof(size_t), 16);        \
+        if (!p)                                                                               \
+            return CG_ENOMEM;                                                                 \
+        set->ring_start = p;                                                                  \
+        p = grow(set->polygon_start, &set->polygon_capacity, polygons + 1, sizeof(size_t),    \
+                 16);                                                                         \
+        if (!p)                                                                               \
+            return CG_ENOMEM;                                                                 \
+        set->polygon_start = p;                                                               \
         return CG_OK;                                                                         \
     }                                                                                         \
     cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)     \

@@ -815,6 +815,77 @@ static void coarse_stars(void)
     printf("coarse stars: 8 rounds, %ld membership checks\n", membership_checks);
 }
 
+/* same points, rings and polygons */
+static int same_set64(const cg_polygon_set64 *a, const cg_polygon_set64 *b)
+{
+    if (a->point_count != b->point_count || a->ring_count != b->ring_count ||
+        a->polygon_count != b->polygon_count)
+        return 0;
+    if (a->point_count && memcmp(a->points, b->points, a->point_count * sizeof *a->points))
+        return 0;
+    if (a->ring_count &&
+        memcmp(a->ring_start, b->ring_start, (a->ring_count + 1) * sizeof *a->ring_start))
+        return 0;
+    return !a->polygon_count || !memcmp(a->polygon_start, b->polygon_start,
+                                        (a->polygon_count + 1) * sizeof *a->polygon_start);
+}
+
+/* A result passed again and again (its arrays reused, of a larger result
+ * before) and a result that is one of the operands give what a fresh
+ * result gets, for every operation; so does the double API with a result
+ * that is an operand. */
+static void result_reuse(void)
+{
+    check_rng rng = {0x2e05e};
+    cg_polygon_set64 kept = {0};
+    for (int it = 0; it < 300; it++) {
+        cg_polygon_set64 a = {0}, b = {0};
+        int grid = it % 2 ? 12 : 1000;
+        random_ring(&rng, &a, (int)check_rng_int(&rng, 3, it % 7 ? 12 : 60), grid, 1);
+        random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 12), grid, 1);
+        for (int op = 0; op < 4; op++) {
+            cg_polygon_set64 fresh = {0}, as_a = {0}, as_b = {0};
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
+                                    &fresh) == CG_OK);
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
+                                    &kept) == CG_OK);
+            CHECK_MSG(same_set64(&kept, &fresh), "reuse %d op %d: reused result differs", it, op);
+            cg_polygon_set64_add_ring(&as_a, a.points, a.point_count, 1);
+            cg_polygon_set64_add_ring(&as_b, b.points, b.point_count, 1);
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &as_a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
+                                    &as_a) == CG_OK);
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &as_b, CG_CLIP_NON_ZERO,
+                                    &as_b) == CG_OK);
+            CHECK_MSG(same_set64(&as_a, &fresh) && same_set64(&as_b, &fresh),
+                      "reuse %d op %d: result as an operand differs", it, op);
+            cg_polygon_set64_clear(&fresh);
+            cg_polygon_set64_clear(&as_a);
+            cg_polygon_set64_clear(&as_b);
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+    }
+    /* a refused call leaves the reused result empty */
+    CHECK(cg_clip_boolean64((cg_clip_op)9, NULL, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &kept) ==
+          CG_EINVAL);
+    CHECK_EQ_INT(kept.point_count + kept.ring_count + kept.polygon_count, 0);
+    cg_polygon_set64_clear(&kept);
+    /* the double API */
+    cg_vec2 sq[4] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}}, sh[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    cg_polygon_set x = {0}, y = {0}, r = {0};
+    cg_polygon_set_add_ring(&x, sq, 4, 1);
+    cg_polygon_set_add_ring(&y, sh, 4, 1);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &x) == CG_OK);
+    CHECK_EQ_INT(x.point_count, r.point_count);
+    CHECK(x.point_count == r.point_count &&
+          !memcmp(x.points, r.points, r.point_count * sizeof *r.points));
+    CHECK_NEAR(cg_polygon_set_area(&x), 7, 1e-12);
+    cg_polygon_set_clear(&x);
+    cg_polygon_set_clear(&y);
+    cg_polygon_set_clear(&r);
+}
+
 int main(void)
 {
     extremes();
@@ -828,5 +899,6 @@ int main(void)
     checkpoint_without_edges();
     dense();
     coarse_stars();
+    result_reuse();
     return check_finish();
 }

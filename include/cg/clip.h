@@ -141,8 +141,10 @@ typedef enum cg_clip_fill {
 /* Integer coordinates must lie in [-CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD]. */
 #define CG_CLIP_MAX_COORD ((int64_t)1 << 40)
 
-/* Boolean operation on the integer grid.  Result (cleared first) is a list
- * of polygons with holes: outer contours counter-clockwise, holes clockwise,
+/* Boolean operation on the integer grid.  Result (emptied first; its arrays
+ * are reused, so a result passed call after call is not allocated again;
+ * it may be subject or clip, which it then replaces) is a list of polygons
+ * with holes: outer contours counter-clockwise, holes clockwise,
  * no two edges crossing, rings meeting at most at vertices, no collinear
  * consecutive vertices.  Intersection points are rounded to the grid (each
  * output vertex within one unit of the exact arrangement).  CG_ERANGE for
@@ -151,8 +153,9 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                             cg_clip_fill subject_fill, const cg_polygon_set64 *clip,
                             cg_clip_fill clip_fill, cg_polygon_set64 *result);
 
-/* The same on doubles: coordinates are multiplied by scale and rounded to
- * integers, and the result divided by scale.  scale <= 0 picks the largest
+/* The same on doubles (result cleared first; it may be subject or clip):
+ * coordinates are multiplied by scale and rounded to integers, and the
+ * result divided by scale.  scale <= 0 picks the largest
  * power of two that maps the largest |coordinate| of both inputs below 2^36
  * (so about 11 significant digits are kept, at any magnitude).  CG_EINVAL for a NaN or
  * infinite coordinate or scale, CG_ERANGE when a scaled coordinate exceeds

@@ -675,7 +675,17 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
 {
     if (!result)
         return CG_EINVAL;
-    cg_polygon_set64_clear(result);
+    if (result == subject || result == clip) {
+        /* the result replaces an operand: computed beside it first */
+        cg_polygon_set64 own = {0};
+        cg_status st = cg_clip_boolean64(op, subject, subject_fill, clip, clip_fill, &own);
+        cg_polygon_set64_clear(result);
+        *result = own;
+        return st;
+    }
+    /* emptied, its arrays kept: a result passed call after call is not
+     * allocated again */
+    result->point_count = result->ring_count = result->polygon_count = 0;
     if ((unsigned)op > CG_CLIP_XOR || (unsigned)subject_fill > CG_CLIP_NEGATIVE ||
         (unsigned)clip_fill > CG_CLIP_NEGATIVE)
         return CG_EINVAL;

@@ -115,6 +115,14 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
 {
     if (!result)
         return CG_EINVAL;
+    if (result == subject || result == clip) {
+        /* the result replaces an operand: computed beside it first */
+        cg_polygon_set own = {0};
+        cg_status st = cg_clip_boolean(op, subject, subject_fill, clip, clip_fill, scale, &own);
+        cg_polygon_set_clear(result);
+        *result = own;
+        return st;
+    }
     cg_polygon_set_clear(result);
     if (isnan(scale) || isinf(scale))
         return CG_EINVAL;

@@ -886,6 +886,48 @@ static void result_reuse(void)
     cg_polygon_set_clear(&r);
 }
 
+/* A workspace kept over calls of every size (small inputs on the stack,
+ * large ones whose blocks it keeps, growing and shrinking in turn) gives
+ * what calls without one give. */
+static void workspace(void)
+{
+    check_rng rng = {0x3095ace};
+    cg_clip_workspace *ws = cg_clip_workspace_create();
+    CHECK(ws != NULL);
+    cg_polygon_set64 r = {0}, plain = {0};
+    for (int it = 0; it < 120; it++) {
+        cg_polygon_set64 a = {0}, b = {0};
+        int n = it % 3 == 0 ? 8 : it % 3 == 1 ? 200 : 1500;
+        int grid = it % 4 < 2 ? 1000000 : 300;
+        cg_point64 *pts = malloc((size_t)n * sizeof *pts);
+        for (int k = 0; k < 2; k++) {
+            for (int i = 0; i < n; i++) {
+                double t = 2 * M_PI * (i + 0.8 * check_rng_range(&rng, 0, 1)) / n;
+                double rad = check_rng_range(&rng, 0.3, 0.5) * grid;
+                pts[i] = (cg_point64){llround(grid / 2.0 + k * grid / 10.0 + rad * cos(t)),
+                                      llround(grid / 2.0 + rad * sin(t))};
+            }
+            cg_polygon_set64_add_ring(k ? &b : &a, pts, (size_t)n, 1);
+        }
+        free(pts);
+        cg_clip_op op = (cg_clip_op)(it % 4);
+        CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+        CHECK(cg_clip_boolean64(op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &plain) == CG_OK);
+        CHECK_MSG(same_set64(&r, &plain), "workspace %d: result differs", it);
+        if (it % 10 == 0) { /* the result as an operand, with the workspace */
+            CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &a) ==
+                  CG_OK);
+            CHECK_MSG(same_set64(&a, &plain), "workspace %d: result as subject differs", it);
+        }
+        cg_polygon_set64_clear(&a);
+        cg_polygon_set64_clear(&b);
+    }
+    cg_polygon_set64_clear(&r);
+    cg_polygon_set64_clear(&plain);
+    cg_clip_workspace_free(ws);
+    cg_clip_workspace_free(NULL);
+}
+
 int main(void)
 {
     extremes();
@@ -900,5 +942,6 @@ int main(void)
     dense();
     coarse_stars();
     result_reuse();
+    workspace();
     return check_finish();
 }

@@ -153,6 +153,20 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                             cg_clip_fill subject_fill, const cg_polygon_set64 *clip,
                             cg_clip_fill clip_fill, cg_polygon_set64 *result);
 
+/* Memory kept from one boolean operation to the next: a program that runs
+ * many operations passes one workspace to cg_clip_boolean64_ws, which keeps
+ * the engine's large blocks in it (the largest seen so far) instead of
+ * taking them from the system and giving them back on every call.  One
+ * thread at a time per workspace.  NULL when out of memory. */
+typedef struct cg_clip_workspace cg_clip_workspace;
+cg_clip_workspace *cg_clip_workspace_create(void);
+void cg_clip_workspace_free(cg_clip_workspace *ws);
+/* cg_clip_boolean64 with a workspace (or NULL: none). */
+cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
+                               const cg_polygon_set64 *subject, cg_clip_fill subject_fill,
+                               const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
+                               cg_polygon_set64 *result);
+
 /* The same on doubles (result cleared first; it may be subject or clip):
  * coordinates are multiplied by scale and rounded to integers, and the
  * result divided by scale.  scale <= 0 picks the largest

@@ -422,6 +422,12 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         if (!boolean_add_pair_splits(g) || !boolean_apply_splits(g, map, &kept, s.mem, s.memcap))
             return CG_ENOMEM;
     }
+    if (g->ws && g->ws->memcap > s.memcap) { /* (the workspace's block, taken) */
+        s.mem = g->ws->mem;
+        s.memcap = g->ws->memcap;
+        g->ws->mem = NULL;
+        g->ws->memcap = 0;
+    }
     /* (the pairs' splits stand for the first pass) */
     for (int pass = paired;; pass++) {
         if (pass == MAX_PASSES) {
@@ -594,8 +600,15 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
             break;
         }
     }
-    if (s.mem != s.mem_small)
-        free(s.mem);
+    if (s.mem != s.mem_small) {
+        if (g->ws) { /* (given back: the workspace held none meanwhile) */
+            free(g->ws->mem);
+            g->ws->mem = s.mem;
+            g->ws->memcap = s.memcap;
+        } else {
+            free(s.mem);
+        }
+    }
     for (int k = 0; k < 2; k++) {
         free(logs[k].pt);
         free(logs[k].ed);
@@ -669,16 +682,39 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
     return CG_OK;
 }
 
+cg_clip_workspace *cg_clip_workspace_create(void)
+{
+    return calloc(1, sizeof(cg_clip_workspace));
+}
+
+void cg_clip_workspace_free(cg_clip_workspace *ws)
+{
+    if (!ws)
+        return;
+    free(ws->mem);
+    free(ws->E);
+    free(ws->P);
+    free(ws);
+}
+
 cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                             cg_clip_fill subject_fill, const cg_polygon_set64 *clip,
                             cg_clip_fill clip_fill, cg_polygon_set64 *result)
+{
+    return cg_clip_boolean64_ws(NULL, op, subject, subject_fill, clip, clip_fill, result);
+}
+
+cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
+                               const cg_polygon_set64 *subject, cg_clip_fill subject_fill,
+                               const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
+                               cg_polygon_set64 *result)
 {
     if (!result)
         return CG_EINVAL;
     if (result == subject || result == clip) {
         /* the result replaces an operand: computed beside it first */
         cg_polygon_set64 own = {0};
-        cg_status st = cg_clip_boolean64(op, subject, subject_fill, clip, clip_fill, &own);
+        cg_status st = cg_clip_boolean64_ws(ws, op, subject, subject_fill, clip, clip_fill, &own);
         cg_polygon_set64_clear(result);
         *result = own;
         return st;
@@ -691,6 +727,7 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
         return CG_EINVAL;
     engine g;
     memset(&g, 0, sizeof g);
+    g.ws = ws;
     g.op = op;
     g.fill[0] = subject_fill;
     g.fill[1] = clip_fill;
@@ -719,10 +756,21 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
             g.caps = sizeof s_small / sizeof s_small[0];
             g.P = g.P_small = p_small;
             g.capp = sizeof p_small / sizeof p_small[0];
+        } else if (ws && ws->cape >= g.cape) { /* (the workspace's, taken) */
+            g.E = ws->E;
+            g.cape = ws->cape;
+            ws->E = NULL;
+            ws->cape = 0;
         } else {
             g.E = malloc(g.cape * sizeof *g.E);
             if (!g.E)
                 g.cape = 0;
+        }
+        if (ws && !g.P_small && ws->P) {
+            g.P = ws->P;
+            g.capp = ws->capp;
+            ws->P = NULL;
+            ws->capp = 0;
         }
     }
     cg_status st = load(&g, subject, 0);
@@ -734,13 +782,29 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
         st = run_passes(&g, result);
     if (st != CG_OK)
         cg_polygon_set64_clear(result);
-    if (g.E != g.E_small)
-        free(g.E);
+    /* the edges and pieces back to the workspace (the larger of its and
+     * this call's), or freed */
+    if (g.E != g.E_small) {
+        if (ws && g.cape >= ws->cape) {
+            free(ws->E);
+            ws->E = g.E;
+            ws->cape = g.cape;
+        } else {
+            free(g.E);
+        }
+    }
     free(g.H);
     if (g.S != g.S_small)
         free(g.S);
-    if (g.P != g.P_small)
-        free(g.P);
+    if (g.P != g.P_small) {
+        if (ws && g.capp >= ws->capp) {
+            free(ws->P);
+            ws->P = g.P;
+            ws->capp = g.capp;
+        } else {
+            free(g.P);
+        }
+    }
     if (g.O != g.O_small)
         free(g.O);
     return st;

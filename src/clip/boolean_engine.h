@@ -72,9 +72,21 @@ typedef struct engine {
     piece *P_small;
     cg_clip_op op;
     cg_clip_fill fill[2];
+    cg_clip_workspace *ws;  /* the blocks kept between calls, or NULL */
     unsigned char table[4]; /* in the result, by (in subject, in clip) */
     unsigned char near[5][5]; /* inside() for windings -2..2 */
 } engine;
+
+/* The blocks a workspace keeps from call to call: the sweep's block, the
+ * edges and the pieces (each NULL while the call holds it) */
+struct cg_clip_workspace {
+    void *mem;
+    size_t memcap;
+    bedge *E;
+    size_t cape;
+    piece *P;
+    size_t capp;
+};
 
 /* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
  * memory, arr unchanged */

@@ -15,7 +15,9 @@
  *   - on small inputs, sample points more than 2 units from every input and
  *     result edge are in the result exactly when the operation of the two
  *     fill rules says so;
- *   - the same call twice gives the same result;
+ *   - the same call twice gives the same result, and so does the call
+ *     through a workspace kept over all inputs (the engine's blocks left
+ *     by earlier inputs of every size);
  *   - (small inputs) the double API with scale 1 gives the integer API's result; with an
  *     automatic scale the same areas; NaN or infinity gives CG_EINVAL. */
 #include "cg/clip.h"
@@ -338,6 +340,12 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     cg_status s2 = cg_clip_boolean64(op, &A, fa, &B, fb, &R2);
     if (s2 != st[op] || !same64(&R2, &R[op]))
         FAIL(); /* not deterministic */
+    static cg_clip_workspace *ws; /* (kept over the inputs; freed at exit) */
+    if (!ws)
+        ws = cg_clip_workspace_create();
+    if (!ws || cg_clip_boolean64_ws(ws, op, &A, fa, &B, fb, &R2) != st[op] ||
+        !same64(&R2, &R[op]))
+        FAIL(); /* a workspace's blocks changed the result */
     if (!bad) {
         if (sa != CG_OK || sb != CG_OK)
             FAIL();

@@ -153,6 +153,17 @@ cg_status cg_clip_boolean64(cg_clip_op op, const cg_polygon_set64 *subject,
                             cg_clip_fill subject_fill, const cg_polygon_set64 *clip,
                             cg_clip_fill clip_fill, cg_polygon_set64 *result);
 
+/* The same on doubles (result cleared first; it may be subject or clip):
+ * coordinates are multiplied by scale and rounded to integers, and the
+ * result divided by scale.  scale <= 0 picks the largest
+ * power of two that maps the largest |coordinate| of both inputs below 2^36
+ * (so about 11 significant digits are kept, at any magnitude).  CG_EINVAL for a NaN or
+ * infinite coordinate or scale, CG_ERANGE when a scaled coordinate exceeds
+ * CG_CLIP_MAX_COORD. */
+cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_fill subject_fill,
+                          const cg_polygon_set *clip, cg_clip_fill clip_fill, double scale,
+                          cg_polygon_set *result);
+
 /* Memory kept from one boolean operation to the next: a program that runs
  * many operations passes one workspace to cg_clip_boolean64_ws, which keeps
  * the engine's large blocks in it (the largest seen so far) instead of
@@ -166,17 +177,6 @@ cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
                                const cg_polygon_set64 *subject, cg_clip_fill subject_fill,
                                const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
                                cg_polygon_set64 *result);
-
-/* The same on doubles (result cleared first; it may be subject or clip):
- * coordinates are multiplied by scale and rounded to integers, and the
- * result divided by scale.  scale <= 0 picks the largest
- * power of two that maps the largest |coordinate| of both inputs below 2^36
- * (so about 11 significant digits are kept, at any magnitude).  CG_EINVAL for a NaN or
- * infinite coordinate or scale, CG_ERANGE when a scaled coordinate exceeds
- * CG_CLIP_MAX_COORD. */
-cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_fill subject_fill,
-                          const cg_polygon_set *clip, cg_clip_fill clip_fill, double scale,
-                          cg_polygon_set *result);
 
 /* ---- Weiler-Atherton (11.2.2) ------------------------------------------ */
 

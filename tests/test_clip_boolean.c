@@ -922,6 +922,23 @@ static void workspace(void)
         cg_polygon_set64_clear(&a);
         cg_polygon_set64_clear(&b);
     }
+    /* the double API through the same workspace */
+    cg_vec2 sq[4] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}}, sh[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    cg_polygon_set x = {0}, y = {0}, dr = {0}, dplain = {0};
+    cg_polygon_set_add_ring(&x, sq, 4, 1);
+    cg_polygon_set_add_ring(&y, sh, 4, 1);
+    for (int op = 0; op < 4; op++) {
+        CHECK(cg_clip_boolean_ws(ws, (cg_clip_op)op, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0,
+                                 &dr) == CG_OK);
+        CHECK(cg_clip_boolean((cg_clip_op)op, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0,
+                              &dplain) == CG_OK);
+        CHECK(dr.point_count == dplain.point_count &&
+              !memcmp(dr.points, dplain.points, dr.point_count * sizeof *dr.points));
+    }
+    cg_polygon_set_clear(&x);
+    cg_polygon_set_clear(&y);
+    cg_polygon_set_clear(&dr);
+    cg_polygon_set_clear(&dplain);
     cg_polygon_set64_clear(&r);
     cg_polygon_set64_clear(&plain);
     cg_clip_workspace_free(ws);

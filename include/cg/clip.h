@@ -172,11 +172,14 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
 typedef struct cg_clip_workspace cg_clip_workspace;
 cg_clip_workspace *cg_clip_workspace_create(void);
 void cg_clip_workspace_free(cg_clip_workspace *ws);
-/* cg_clip_boolean64 with a workspace (or NULL: none). */
+/* cg_clip_boolean64 and cg_clip_boolean with a workspace (or NULL: none). */
 cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
                                const cg_polygon_set64 *subject, cg_clip_fill subject_fill,
                                const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
                                cg_polygon_set64 *result);
+cg_status cg_clip_boolean_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_polygon_set *subject,
+                             cg_clip_fill subject_fill, const cg_polygon_set *clip,
+                             cg_clip_fill clip_fill, double scale, cg_polygon_set *result);
 
 /* ---- Weiler-Atherton (11.2.2) ------------------------------------------ */
 

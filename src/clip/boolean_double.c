@@ -113,12 +113,20 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
                           const cg_polygon_set *clip, cg_clip_fill clip_fill, double scale,
                           cg_polygon_set *result)
 {
+    return cg_clip_boolean_ws(NULL, op, subject, subject_fill, clip, clip_fill, scale, result);
+}
+
+cg_status cg_clip_boolean_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_polygon_set *subject,
+                             cg_clip_fill subject_fill, const cg_polygon_set *clip,
+                             cg_clip_fill clip_fill, double scale, cg_polygon_set *result)
+{
     if (!result)
         return CG_EINVAL;
     if (result == subject || result == clip) {
         /* the result replaces an operand: computed beside it first */
         cg_polygon_set own = {0};
-        cg_status st = cg_clip_boolean(op, subject, subject_fill, clip, clip_fill, scale, &own);
+        cg_status st =
+            cg_clip_boolean_ws(ws, op, subject, subject_fill, clip, clip_fill, scale, &own);
         cg_polygon_set_clear(result);
         *result = own;
         return st;
@@ -135,7 +143,7 @@ cg_status cg_clip_boolean(cg_clip_op op, const cg_polygon_set *subject, cg_clip_
     if (st == CG_OK)
         st = grid_points(clip, g, &b);
     if (st == CG_OK)
-        st = cg_clip_boolean64(op, &a, subject_fill, &b, clip_fill, &r);
+        st = cg_clip_boolean64_ws(ws, op, &a, subject_fill, &b, clip_fill, &r);
     if (st == CG_OK)
         st = ungrid_points(&r, g, result);
     if (st != CG_OK)

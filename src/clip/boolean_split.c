@@ -19,8 +19,9 @@ static int cmp_along(const void *a, const void *b)
  * pixel" of a rounded point)?  Exact, on doubled coordinates. */
 static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py)
 {
-    i128 x0 = 2 * (i128)px - 1, x1 = 2 * (i128)px + 1, y0 = 2 * (i128)py - 1, y1 = 2 * (i128)py + 1;
-    i128 Ax = 2 * (i128)ax, Ay = 2 * (i128)ay, Bx = 2 * (i128)bx, By = 2 * (i128)by;
+    /* (coordinates are within 2^40 + 1: doubled, they fit 64 bits) */
+    int64_t x0 = 2 * px - 1, x1 = 2 * px + 1, y0 = 2 * py - 1, y1 = 2 * py + 1;
+    int64_t Ax = 2 * ax, Ay = 2 * ay, Bx = 2 * bx, By = 2 * by;
     if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) ||
         (Ay > y1 && By > y1))
         return 0;
@@ -31,12 +32,23 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
     double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
     if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
         return 0;
+    /* the square's corners on both sides of the line (or on it); 64-bit
+     * products when every difference is below 2^30 */
     int pos = 0, neg = 0;
-    i128 cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    int64_t ex = Bx - Ax, ey = By - Ay, far = (int64_t)1 << 30;
+    int narrow = ex < far && ex > -far && ey < far && ey > -far && x1 - Ax < far &&
+                 Ax - x0 < far && y1 - Ay < far && Ay - y0 < far;
     for (int k = 0; k < 4; k++) {
-        i128 o = (Bx - Ax) * (cy[k] - Ay) - (By - Ay) * (cx[k] - Ax);
-        pos |= o > 0;
-        neg |= o < 0;
+        if (narrow) {
+            int64_t o = ex * (cy[k] - Ay) - ey * (cx[k] - Ax);
+            pos |= o > 0;
+            neg |= o < 0;
+        } else {
+            i128 o = (i128)ex * (cy[k] - Ay) - (i128)ey * (cx[k] - Ax);
+            pos |= o > 0;
+            neg |= o < 0;
+        }
     }
     return !(pos && !neg) && !(neg && !pos);
 }

@@ -130,11 +130,24 @@ static inline double x_at(const bedge *e, int64_t y)
     return (double)e->xb + (double)(y - e->yb) * e->slope;
 }
 
+/* x of edge e at scanline y, rounded, in *x: whether it is exact.  In 64
+ * bits when the offset along the edge fits (short edges, coarse grids),
+ * else in 128. */
 static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 {
-    i128 n = x_num(e, y), d = x_den(e);
-    *x = round_div(n, d);
-    return (i128)*x * d == n;
+    int64_t dy = y - e->yb, dx = e->xt - e->xb, d = x_den(e), lim = (int64_t)1 << 30;
+    if (dy < lim && dy > -lim && dx < lim && dx > -lim) { /* (|dy dx| < 2^60) */
+        int64_t q = dy * dx, f = q / d, r = q % d; /* q = f d + r, |r| < d */
+        if (r < 0) {
+            f -= 1;
+            r += d;
+        }
+        *x = e->xb + f + (2 * r >= d);
+        return r == 0;
+    }
+    i128 n = x_num(e, y), dd = d;
+    *x = round_div(n, dd);
+    return (i128)*x * dd == n;
 }
 
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when

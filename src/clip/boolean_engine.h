@@ -150,6 +150,14 @@ static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
     return (i128)*x * dd == n;
 }
 
+/* x of edge e at scanline y, rounded */
+static inline int64_t x_rounded(const bedge *e, int64_t y)
+{
+    int64_t x;
+    x_is_integer(e, y, &x);
+    return x;
+}
+
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
  * parallel (boolean_sweep.c). */
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,

@@ -127,7 +127,7 @@ static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
 static int close_run(sweep *s, uint32_t e, int64_t y)
 {
     const bedge *ed = &s->g->E[e];
-    int64_t x = y == ed->yt ? ed->xt : round_div(x_num(ed, y), x_den(ed));
+    int64_t x = y == ed->yt ? ed->xt : x_rounded(ed, y);
     s->run_open[e] = 0;
     if (s->run_up[e])
         return emit(s->g, s->run_x[e], s->run_y[e], x, y);
@@ -168,7 +168,7 @@ static int horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t 
             else
                 idx = above[j];
             const bedge *e = &E[idx];
-            int64_t X = round_div(x_num(e, y), x_den(e));
+            int64_t X = x_rounded(e, y);
             if (have_prev) {
                 int sb = inside(g, wb[0], wb[1]), sa = inside(g, wa[0], wa[1]);
                 if (sb != sa && X != prev_x) {
@@ -380,7 +380,7 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
                 s->run_open[e] = 1;
                 s->run_up[e] = (unsigned char)up;
                 s->run_y[e] = y;
-                s->run_x[e] = y == E[e].yb ? E[e].xb : round_div(x_num(&E[e], y), x_den(&E[e]));
+                s->run_x[e] = y == E[e].yb ? E[e].xb : x_rounded(&E[e], y);
             }
             s->brk[e] = 0;
             wr0[e] = (int32_t)w0;

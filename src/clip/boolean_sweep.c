@@ -6,9 +6,40 @@
 
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
  * parallel. */
+/* floor(n / d + 1/2) for d > 0, in 64 bits */
+static inline int64_t round_div64(int64_t n, int64_t d)
+{
+    int64_t q = n / d, r = n % d;
+    if (r < 0) {
+        q -= 1;
+        r += d;
+    }
+    return q + (2 * r >= d);
+}
+
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
                               int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py)
 {
+    int64_t lim = (int64_t)1 << 20, d[6] = {ax1 - ax0, ay1 - ay0, bx1 - bx0, by1 - by0, bx0 - ax0,
+                                            by0 - ay0};
+    int narrow = 1;
+    for (int k = 0; k < 6; k++)
+        narrow &= d[k] < lim && d[k] > -lim;
+    if (narrow) { /* every product below 2^61: the same in 64 bits */
+        int64_t den = d[0] * d[3] - d[1] * d[2];
+        if (den == 0)
+            return 0;
+        int64_t num = d[4] * d[3] - d[5] * d[2];
+        if (den < 0) {
+            den = -den;
+            num = -num;
+        }
+        if (num < 0 || num > den)
+            return 0;
+        *px = ax0 + round_div64(num * d[0], den);
+        *py = ay0 + round_div64(num * d[1], den);
+        return 1;
+    }
     i128 dax = ax1 - ax0, day = ay1 - ay0, dbx = bx1 - bx0, dby = by1 - by0;
     i128 den = dax * dby - day * dbx;
     if (den == 0)

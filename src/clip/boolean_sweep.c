@@ -318,24 +318,26 @@ static int horizontal_meets(sweep *s, int64_t y, const uint32_t *above, size_t n
     const engine *g = s->g;
     const bedge *E = g->E;
     size_t hj = h0;
-    int64_t reach = INT64_MIN;
+    /* the union of H[h0..hj) as disjoint intervals, the last [lo, reach]:
+     * the edges come in order of x, and one at x >= (x0 of H[hj - 1]) - 1/2
+     * can only lie in the last (the others end a unit before it starts) */
+    int64_t lo = INT64_MIN, reach = INT64_MIN;
     for (size_t k = 0; k < na; k++) {
         uint32_t e = above[k];
         if (E[e].yb == y)
             continue;
         double xv = s->xc[e];
         while (hj < h1 && (double)g->H[hj].x0 <= xv + 0.5) {
+            if (g->H[hj].x0 > reach)
+                lo = g->H[hj].x0; /* (a new interval) */
             if (g->H[hj].x1 > reach)
                 reach = g->H[hj].x1;
             hj++;
         }
         if ((double)reach >= xv - 0.5) {
-            /* exact: x0 <= x(y) <= reach for some segment */
+            /* exact: lo <= x(y) <= reach */
             i128 n = x_num(&E[e], y), d = x_den(&E[e]);
-            int covered = 0;
-            for (size_t q = h0; q < hj && !covered; q++)
-                covered = (i128)g->H[q].x0 * d <= n && n <= (i128)g->H[q].x1 * d;
-            if (covered) {
+            if ((i128)lo * d <= n && n <= (i128)reach * d) {
                 if (!meet(s, e, y, 0))
                     return 0;
                 dirty[(*nd)++] = (uint32_t)k;

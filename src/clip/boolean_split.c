@@ -5,14 +5,37 @@
 /* a split point of an edge; t orders it along the edge */
 typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
 
+static inline int before_along(const split_sort *p, const split_sort *q)
+{
+    if (p->t != q->t)
+        return p->t < q->t;
+    if (p->y != q->y)
+        return p->y < q->y;
+    return p->x < q->x;
+}
+
 static int cmp_along(const void *a, const void *b)
 {
     const split_sort *p = a, *q = b;
-    if (p->t != q->t)
-        return p->t < q->t ? -1 : 1;
-    if (p->y != q->y)
-        return p->y < q->y ? -1 : 1;
-    return (p->x > q->x) - (p->x < q->x);
+    return before_along(p, q) ? -1 : before_along(q, p);
+}
+
+/* the split points of one edge in order along it: straight insertion up to
+ * 64 (long edges on coarse grids have dozens; a comparison through qsort's
+ * pointer costs more), else qsort */
+static void sort_along(split_sort *a, size_t n)
+{
+    if (n > 64) {
+        qsort(a, n, sizeof *a, cmp_along);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        split_sort v = a[i];
+        size_t j = i;
+        for (; j > 0 && before_along(&v, &a[j - 1]); j--)
+            a[j] = a[j - 1];
+        a[j] = v;
+    }
 }
 
 /* Does the segment a-b meet the closed unit square centred on p (the "hot
@@ -277,7 +300,7 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
-        boolean_sort_few(buf + 1, m - 1, sizeof *buf, cmp_along);
+        sort_along(buf + 1, m - 1);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
         /* the input edge of the pieces */

@@ -22,29 +22,20 @@ int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1
 {
     int64_t lim = (int64_t)1 << 20, d[6] = {ax1 - ax0, ay1 - ay0, bx1 - bx0, by1 - by0, bx0 - ax0,
                                             by0 - ay0};
+    /* every difference below 2^20: every product below 2^61, so 64 bits */
     int narrow = 1;
     for (int k = 0; k < 6; k++)
         narrow &= d[k] < lim && d[k] > -lim;
-    if (narrow) { /* every product below 2^61: the same in 64 bits */
-        int64_t den = d[0] * d[3] - d[1] * d[2];
-        if (den == 0)
-            return 0;
-        int64_t num = d[4] * d[3] - d[5] * d[2];
-        if (den < 0) {
-            den = -den;
-            num = -num;
-        }
-        if (num < 0 || num > den)
-            return 0;
-        *px = ax0 + round_div64(num * d[0], den);
-        *py = ay0 + round_div64(num * d[1], den);
-        return 1;
+    i128 den, num;
+    if (narrow) {
+        den = d[0] * d[3] - d[1] * d[2];
+        num = d[4] * d[3] - d[5] * d[2];
+    } else {
+        den = (i128)d[0] * d[3] - (i128)d[1] * d[2];
+        num = (i128)d[4] * d[3] - (i128)d[5] * d[2];
     }
-    i128 dax = ax1 - ax0, day = ay1 - ay0, dbx = bx1 - bx0, dby = by1 - by0;
-    i128 den = dax * dby - day * dbx;
     if (den == 0)
         return 0;
-    i128 num = (i128)(bx0 - ax0) * dby - (i128)(by0 - ay0) * dbx;
     if (den < 0) {
         den = -den;
         num = -num;
@@ -52,8 +43,13 @@ int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1
     /* the point must be on segment a (0 <= t <= 1) for the products to fit */
     if (num < 0 || num > den)
         return 0;
-    *px = ax0 + round_div(num * dax, den);
-    *py = ay0 + round_div(num * day, den);
+    if (narrow) {
+        *px = ax0 + round_div64((int64_t)num * d[0], (int64_t)den);
+        *py = ay0 + round_div64((int64_t)num * d[1], (int64_t)den);
+    } else {
+        *px = ax0 + round_div(num * d[0], den);
+        *py = ay0 + round_div(num * d[1], den);
+    }
     return 1;
 }
 

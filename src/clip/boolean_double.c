@@ -52,10 +52,14 @@ static cg_status grid_points(const cg_polygon_set *in, grid g, cg_polygon_set64 
         size_t a = in->ring_start[r], b = in->ring_start[r + 1];
         if (b < a || b > in->point_count)
             return CG_EINVAL;
+        /* the ring opened, with room for its points, and filled below */
         cg_status st = cg_polygon_set64_add_ring(out, NULL, 0, 1);
+        if (st == CG_OK)
+            st = clip_polygon_set64_reserve(out, out->point_count + (b - a), out->ring_count,
+                                            out->polygon_count);
         if (st != CG_OK)
             return st;
-        out->ring_count--; /* reopened below point by point */
+        out->ring_count--;
         for (size_t i = a; i < b; i++) {
             double x = to_grid(g, in->points[i].x), y = to_grid(g, in->points[i].y);
             if (!isfinite(x) || !isfinite(y))
@@ -63,16 +67,8 @@ static cg_status grid_points(const cg_polygon_set *in, grid g, cg_polygon_set64 
                                                                               : CG_EINVAL;
             if (fabs(x) > (double)CG_CLIP_MAX_COORD || fabs(y) > (double)CG_CLIP_MAX_COORD)
                 return CG_ERANGE;
-            cg_point64 p = {(int64_t)llround(x), (int64_t)llround(y)};
-            if (out->point_count == out->point_capacity) {
-                size_t cap = out->point_capacity ? out->point_capacity * 2 : 64;
-                cg_point64 *q = realloc(out->points, cap * sizeof *q);
-                if (!q)
-                    return CG_ENOMEM;
-                out->points = q;
-                out->point_capacity = cap;
-            }
-            out->points[out->point_count++] = p;
+            out->points[out->point_count++] =
+                (cg_point64){(int64_t)llround(x), (int64_t)llround(y)};
         }
         out->ring_count++;
         out->ring_start[out->ring_count] = out->point_count;
@@ -86,19 +82,15 @@ static cg_status ungrid_points(const cg_polygon_set64 *in, grid g, cg_polygon_se
     for (size_t p = 0; p < in->polygon_count; p++) {
         for (size_t r = in->polygon_start[p]; r < in->polygon_start[p + 1]; r++) {
             size_t a = in->ring_start[r], b = in->ring_start[r + 1];
+            /* the ring opened, with room for its points, and filled below */
             cg_status st = cg_polygon_set_add_ring(out, NULL, 0, r == in->polygon_start[p]);
+            if (st == CG_OK)
+                st = clip_polygon_set_reserve(out, out->point_count + (b - a), out->ring_count,
+                                              out->polygon_count);
             if (st != CG_OK)
                 return st;
             out->ring_count--;
             for (size_t i = a; i < b; i++) {
-                if (out->point_count == out->point_capacity) {
-                    size_t cap = out->point_capacity ? out->point_capacity * 2 : 64;
-                    cg_vec2 *q = realloc(out->points, cap * sizeof *q);
-                    if (!q)
-                        return CG_ENOMEM;
-                    out->points = q;
-                    out->point_capacity = cap;
-                }
                 out->points[out->point_count++] =
                     cg_vec2_make(from_grid(g, in->points[i].x), from_grid(g, in->points[i].y));
             }

@@ -385,6 +385,20 @@ static int cmp_band(const void *a, const void *b)
     return (p[0] > q[0]) - (p[0] < q[0]);
 }
 
+/* A block a call held (arr, room for cap) given back to a workspace slot
+ * (slot, room for *slot_cap): the larger of the two stays, the other is
+ * freed; the one kept is returned. */
+static void *keep_larger(void *slot, size_t *slot_cap, void *arr, size_t cap)
+{
+    if (cap < *slot_cap) {
+        free(arr);
+        return slot;
+    }
+    free(slot);
+    *slot_cap = cap;
+    return arr;
+}
+
 static cg_status run_passes(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
@@ -601,13 +615,10 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         }
     }
     if (s.mem != s.mem_small) {
-        if (g->ws) { /* (given back: the workspace held none meanwhile) */
-            free(g->ws->mem);
-            g->ws->mem = s.mem;
-            g->ws->memcap = s.memcap;
-        } else {
+        if (g->ws)
+            g->ws->mem = keep_larger(g->ws->mem, &g->ws->memcap, s.mem, s.memcap);
+        else
             free(s.mem);
-        }
     }
     for (int k = 0; k < 2; k++) {
         free(logs[k].pt);
@@ -782,28 +793,21 @@ cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
         st = run_passes(&g, result);
     if (st != CG_OK)
         cg_polygon_set64_clear(result);
-    /* the edges and pieces back to the workspace (the larger of its and
-     * this call's), or freed */
+    /* the edges and pieces back to the workspace, or freed */
     if (g.E != g.E_small) {
-        if (ws && g.cape >= ws->cape) {
-            free(ws->E);
-            ws->E = g.E;
-            ws->cape = g.cape;
-        } else {
+        if (ws)
+            ws->E = keep_larger(ws->E, &ws->cape, g.E, g.cape);
+        else
             free(g.E);
-        }
     }
     free(g.H);
     if (g.S != g.S_small)
         free(g.S);
     if (g.P != g.P_small) {
-        if (ws && g.capp >= ws->capp) {
-            free(ws->P);
-            ws->P = g.P;
-            ws->capp = g.capp;
-        } else {
+        if (ws)
+            ws->P = keep_larger(ws->P, &ws->capp, g.P, g.capp);
+        else
             free(g.P);
-        }
     }
     if (g.O != g.O_small)
         free(g.O);

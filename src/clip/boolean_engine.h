@@ -113,6 +113,17 @@ static inline int64_t round_div(i128 n, i128 d)
     return (int64_t)q;
 }
 
+/* the same in 64 bits */
+static inline int64_t round_div64(int64_t n, int64_t d)
+{
+    int64_t q = n / d, r = n % d;
+    if (r < 0) {
+        q -= 1;
+        r += d;
+    }
+    return q + (2 * r >= d);
+}
+
 /* x of edge e at scanline y as num / den, den > 0 */
 static inline i128 x_num(const bedge *e, int64_t y)
 {
@@ -137,13 +148,9 @@ static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 {
     int64_t dy = y - e->yb, dx = e->xt - e->xb, d = x_den(e), lim = (int64_t)1 << 30;
     if (dy < lim && dy > -lim && dx < lim && dx > -lim) { /* (|dy dx| < 2^60) */
-        int64_t q = dy * dx, f = q / d, r = q % d; /* q = f d + r, |r| < d */
-        if (r < 0) {
-            f -= 1;
-            r += d;
-        }
-        *x = e->xb + f + (2 * r >= d);
-        return r == 0;
+        int64_t q = dy * dx, f = round_div64(q, d);
+        *x = e->xb + f;
+        return f * d == q;
     }
     i128 n = x_num(e, y), dd = d;
     *x = round_div(n, dd);

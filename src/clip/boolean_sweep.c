@@ -6,17 +6,6 @@
 
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
  * parallel. */
-/* floor(n / d + 1/2) for d > 0, in 64 bits */
-static inline int64_t round_div64(int64_t n, int64_t d)
-{
-    int64_t q = n / d, r = n % d;
-    if (r < 0) {
-        q -= 1;
-        r += d;
-    }
-    return q + (2 * r >= d);
-}
-
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
                               int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py)
 {

@@ -81,10 +81,9 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
  * meet at one grid point instead of crossing again a little further on.
  * Used from the second pass on.  The points are put in a grid of square
  * cells (about two points a cell; sorted by y, then x, each point once, in
- * each cell), and
- * each edge looks at the cells along it, row by row: the cost follows the
- * edges' lengths and the points near them, not the points in their y
- * range (dense crossings of long edges made that quadratic). */
+ * each cell), and each edge looks at the cells along it, row by row: the
+ * cost follows the edges' lengths and the points near them, not the points
+ * in their y range (dense crossings of long edges made that quadratic). */
 typedef struct hot_grid {
     int64_t x0, y0, side;
     size_t cols, rows;

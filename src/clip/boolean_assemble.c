@@ -123,17 +123,6 @@ static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_p
     return 0;
 }
 
-/* twice the signed area of the ring p[0..n) */
-static i128 twice_area(const cg_point64 *p, size_t n)
-{
-    i128 s = 0;
-    for (size_t i = 0; i < n; i++) {
-        cg_point64 q = p[i + 1 < n ? i + 1 : 0];
-        s += (i128)p[i].x * q.y - (i128)q.x * p[i].y;
-    }
-    return s;
-}
-
 typedef struct ringbuf {
     cg_point64 *pts;
     size_t n, cap;
@@ -323,7 +312,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
             i128 s = w < ((uint64_t)1 << 31) && hgt < ((uint64_t)1 << 31) &&
                              w * hgt <= (uint64_t)INT64_MAX / (b - a)
                          ? (i128)(int64_t)s64
-                         : twice_area(rings.points + a, b - a);
+                         : clip_ring_twice_area(rings.points + a, b - a);
             area[r] = (double)s;
             bb[r][0] = x0;
             bb[r][1] = y0;

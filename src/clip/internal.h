@@ -14,4 +14,8 @@ cg_status clip_polygon_set_reserve(cg_polygon_set *set, size_t points, size_t ri
 cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
                                      size_t polygons);
 
+/* Twice the signed area of the ring p[0..n) (counter-clockwise positive),
+ * exact (0 below 3 points). */
+clip_i128 clip_ring_twice_area(const cg_point64 *p, size_t n);
+
 #endif

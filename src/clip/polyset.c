@@ -105,21 +105,23 @@ double cg_polygon_set_area(const cg_polygon_set *set)
     return s;
 }
 
+clip_i128 clip_ring_twice_area(const cg_point64 *p, size_t n)
+{
+    clip_i128 s = 0;
+    for (size_t i = 1; i + 1 < n; i++) {
+        clip_i128 x1 = p[i].x - p[0].x, y1 = p[i].y - p[0].y;
+        clip_i128 x2 = p[i + 1].x - p[0].x, y2 = p[i + 1].y - p[0].y;
+        s += x1 * y2 - x2 * y1;
+    }
+    return s;
+}
+
 double cg_polygon_set64_area(const cg_polygon_set64 *set)
 {
     double total = 0;
     for (size_t r = 0; set && r < set->ring_count; r++) {
         size_t a = set->ring_start[r], b = set->ring_start[r + 1];
-        if (b - a < 3)
-            continue;
-        clip_i128 s = 0;
-        cg_point64 o = set->points[a];
-        for (size_t i = a + 1; i + 1 < b; i++) {
-            clip_i128 x1 = set->points[i].x - o.x, y1 = set->points[i].y - o.y;
-            clip_i128 x2 = set->points[i + 1].x - o.x, y2 = set->points[i + 1].y - o.y;
-            s += x1 * y2 - x2 * y1;
-        }
-        total += 0.5 * (double)s;
+        total += 0.5 * (double)clip_ring_twice_area(set->points + a, b - a);
     }
     return total;
 }

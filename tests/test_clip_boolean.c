@@ -781,6 +781,21 @@ static void dense(void)
     printf("dense: 2 rounds, %ld membership checks\n", membership_checks);
 }
 
+/* A random star-shaped ring of n vertices around (cx, cy): vertex i at
+ * angle 2 pi (i + jitter) / n, its radius uniform in [r0, r1]. */
+static void random_star(check_rng *rng, cg_polygon_set64 *set, int n, double cx, double cy,
+                        double r0, double r1)
+{
+    cg_point64 *pts = malloc((size_t)n * sizeof *pts);
+    for (int i = 0; i < n; i++) {
+        double t = 2 * M_PI * (i + 0.8 * check_rng_range(rng, 0, 1)) / n;
+        double r = check_rng_range(rng, r0, r1);
+        pts[i] = (cg_point64){llround(cx + r * cos(t)), llround(cy + r * sin(t))};
+    }
+    cg_polygon_set64_add_ring(set, pts, (size_t)n, 1);
+    free(pts);
+}
+
 /* Spiky stars on coarse grids (radii from a twelfth of R to R, R = 32 to
  * 2,048 units): thousands of crossings among a few hundred scanlines, so
  * that many vertices coincide and snapped edges coincide, cross a third
@@ -796,17 +811,8 @@ static void coarse_stars(void)
         double R = radius[it % 4];
         int n = it < 4 ? 300 : 800;
         cg_polygon_set64 a = {0}, b = {0};
-        cg_point64 *pts = malloc((size_t)n * sizeof *pts);
-        for (int k = 0; k < 2; k++) {
-            double cx = k ? 1.09 * R : R, cy = k ? 0.94 * R : R;
-            for (int i = 0; i < n; i++) {
-                double t = 2 * M_PI * (i + 0.8 * check_rng_range(&rng, 0, 1)) / n;
-                double r = check_rng_range(&rng, R / 12, R);
-                pts[i] = (cg_point64){llround(cx + r * cos(t)), llround(cy + r * sin(t))};
-            }
-            cg_polygon_set64_add_ring(k ? &b : &a, pts, (size_t)n, 1);
-        }
-        free(pts);
+        random_star(&rng, &a, n, R, R, R / 12, R);
+        random_star(&rng, &b, n, 1.09 * R, 0.94 * R, R / 12, R);
         cg_clip_fill fa = it & 1 ? CG_CLIP_EVEN_ODD : CG_CLIP_NON_ZERO, fb = CG_CLIP_NON_ZERO;
         check_large_round("coarse stars", it, &a, fa, &b, fb, &rng, 2.2 * R, &membership_checks);
         cg_polygon_set64_clear(&a);
@@ -898,18 +904,9 @@ static void workspace(void)
     for (int it = 0; it < 120; it++) {
         cg_polygon_set64 a = {0}, b = {0};
         int n = it % 3 == 0 ? 8 : it % 3 == 1 ? 200 : 1500;
-        int grid = it % 4 < 2 ? 1000000 : 300;
-        cg_point64 *pts = malloc((size_t)n * sizeof *pts);
-        for (int k = 0; k < 2; k++) {
-            for (int i = 0; i < n; i++) {
-                double t = 2 * M_PI * (i + 0.8 * check_rng_range(&rng, 0, 1)) / n;
-                double rad = check_rng_range(&rng, 0.3, 0.5) * grid;
-                pts[i] = (cg_point64){llround(grid / 2.0 + k * grid / 10.0 + rad * cos(t)),
-                                      llround(grid / 2.0 + rad * sin(t))};
-            }
-            cg_polygon_set64_add_ring(k ? &b : &a, pts, (size_t)n, 1);
-        }
-        free(pts);
+        double grid = it % 4 < 2 ? 1000000 : 300;
+        random_star(&rng, &a, n, grid / 2, grid / 2, 0.3 * grid, 0.5 * grid);
+        random_star(&rng, &b, n, 0.6 * grid, grid / 2, 0.3 * grid, 0.5 * grid);
         cg_clip_op op = (cg_clip_op)(it % 4);
         CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &r) == CG_OK);
         CHECK(cg_clip_boolean64(op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &plain) == CG_OK);

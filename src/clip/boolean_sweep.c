@@ -85,19 +85,25 @@ static int add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 
 /* Passing edge e meets something at scanline y (the current one, or the
  * next when `next`): a vertex for it there. */
+/* Edge e's run breaks at the current scanline (or the next, `next`): it
+ * meets something at a grid point, where no split is needed. */
+static void break_run(sweep *s, uint32_t e, int next)
+{
+    if (next && !s->brk_next[e]) {
+        if (s->nbrkq < s->capbrkq)
+            s->brkq_next[s->nbrkq++] = e;
+        else
+            s->brkq_full = 1;
+    }
+    (next ? s->brk_next : s->brk)[e] = 1;
+}
+
 static int meet(sweep *s, uint32_t e, int64_t y, int next)
 {
     int64_t x;
     const bedge *ed = &s->g->E[e];
     if (x_is_integer(ed, y, &x)) {
-        if (next && !s->brk_next[e]) {
-            if (s->nbrkq < s->capbrkq)
-                s->brkq_next[s->nbrkq++] = e;
-            else
-                s->brkq_full = 1;
-        }
-        (next ? s->brk_next : s->brk)[e] = 1;
-        /* an exact split is not needed: the run breaks there */
+        break_run(s, e, next);
         return 1;
     }
     /* round the input edge's x there rather than the piece's, so that
@@ -410,7 +416,7 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
 }
 
 /* Two edges at one point of the next scanline yn meet there: a vertex for
- * each one that goes on.  At a grid point the run just breaks (meet); off
+ * each one that goes on.  At a grid point the runs just break; off
  * the grid both take that point rounded, one vertex for the two (each
  * rounded on its input edge's line, as meet rounds, they would part and
  * cross again).  Not when they lie on one line: coincident edges stay a
@@ -424,8 +430,15 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t yn)
 {
     const bedge *E = s->g->E;
     int64_t x;
-    if (E[u].yt == yn || E[v].yt == yn || x_is_integer(&E[u], yn, &x)) /* (ends are grid points) */
-        return (E[u].yt == yn || meet(s, u, yn, 1)) && (E[v].yt == yn || meet(s, v, yn, 1));
+    if (E[u].yt == yn || E[v].yt == yn || x_is_integer(&E[u], yn, &x)) {
+        /* a grid point (ends are grid points): the runs of those that go
+         * on break there */
+        if (E[u].yt > yn)
+            break_run(s, u, 1);
+        if (E[v].yt > yn)
+            break_run(s, v, 1);
+        return 1;
+    }
     if (coincident(&E[u], &E[v]))
         return 1;
     return add_split(s, u, x, yn) && add_split(s, v, x, yn);

@@ -821,6 +821,36 @@ static void coarse_stars(void)
     printf("coarse stars: 8 rounds, %ld membership checks\n", membership_checks);
 }
 
+/* Random self-intersecting polygons of 120-400 vertices on grids of 8 to
+ * 256 units: their crossings are denser than the grid's cells, so the
+ * operations snap every edge to every hot pixel it passes through at once
+ * (complete snap rounding), where edges meet at pixel corners, run along
+ * pixel sides and coincide by the hundred. */
+static void dense_grids(void)
+{
+    check_rng rng = {0xd3e5e};
+    long membership_checks = 0;
+    for (int it = 0; it < 24; it++) {
+        double extent = ldexp(8, it % 6);
+        cg_polygon_set64 set[2] = {{0}};
+        for (int k = 0; k < 2; k++) {
+            int n = 120 + (int)check_rng_range(&rng, 0, 280);
+            cg_point64 *pts = malloc((size_t)n * sizeof *pts);
+            for (int i = 0; i < n; i++)
+                pts[i] = (cg_point64){llround(check_rng_range(&rng, 0, extent)),
+                                      llround(check_rng_range(&rng, 0, extent))};
+            cg_polygon_set64_add_ring(&set[k], pts, (size_t)n, 1);
+            free(pts);
+        }
+        cg_clip_fill fa = (cg_clip_fill)(it % 4), fb = (cg_clip_fill)((it / 4) % 4);
+        check_large_round("dense grids", it, &set[0], fa, &set[1], fb, &rng, extent,
+                          &membership_checks);
+        cg_polygon_set64_clear(&set[0]);
+        cg_polygon_set64_clear(&set[1]);
+    }
+    printf("dense grids: 24 rounds, %ld membership checks\n", membership_checks);
+}
+
 /* same points, rings and polygons */
 static int same_set64(const cg_polygon_set64 *a, const cg_polygon_set64 *b)
 {
@@ -955,6 +985,7 @@ int main(void)
     checkpoint_without_edges();
     dense();
     coarse_stars();
+    dense_grids();
     result_reuse();
     workspace();
     return check_finish();

@@ -54,6 +54,21 @@ void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, siz
     return p;
 }
 
+int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
+                         size_t size)
+{
+    if (need <= *cap)
+        return 1;
+    void *p = *arr == small ? malloc(need * size) : realloc(*arr, need * size);
+    if (!p)
+        return 0;
+    if (*arr == small && n)
+        memcpy(p, *arr, n * size);
+    *arr = p;
+    *cap = need;
+    return 1;
+}
+
 int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
                       uint32_t orig)
 {
@@ -79,11 +94,17 @@ int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1,
 /* the light sweep's cost per edge, in active edges looked at by the full
  * sweep (the pass driver tries it first when the full sweep was dearer) */
 #define LIGHT_COST 16
-/* A pass that looked at this many active edges per edge (long active lists:
- * another whole pass would be dear) snaps to the pixels of the edges' ends
- * as well as of its rounded points, from then on: complete snap rounding
- * (Hobby), after which a verifying pass finds nothing to split (on dense
- * crossings the rounding otherwise makes new ones, pass after pass). */
+/* Complete snap rounding (Hobby): the pixels of the edges' ends, of the
+ * rounded crossings and of the grid points where edges meet are all hot, and
+ * every edge is snapped to each one it passes through; a verifying pass then
+ * finds nothing to split.  On dense crossings the iterated rounding instead
+ * makes new ones, pass after pass.  A pass snaps completely, once, when it
+ * looked at DENSE_VISITS active edges per edge (long active lists: another
+ * whole pass would be dear), or when the first pass's crossings are denser
+ * than one in DENSE_AREA grid cells (a coarse grid). */
+#ifndef DENSE_AREA
+#define DENSE_AREA 64
+#endif
 #ifndef DENSE_VISITS
 #define DENSE_VISITS 200
 #endif
@@ -399,6 +420,23 @@ static void *keep_larger(void *slot, size_t *slot_cap, void *arr, size_t cap)
     return arr;
 }
 
+/* Whether the first pass's split points are dense on the grid: more than
+ * one in DENSE_AREA units of their bounds.  Rounding them then makes new
+ * crossings pass after pass; complete snap rounding settles them at once. */
+static int dense_crossings(const engine *g)
+{
+    if (g->ns < 1024)
+        return 0;
+    int64_t x0 = g->S[0].x, x1 = x0, y0 = g->S[0].y, y1 = y0;
+    for (size_t k = 1; k < g->ns; k++) {
+        x0 = g->S[k].x < x0 ? g->S[k].x : x0;
+        x1 = g->S[k].x > x1 ? g->S[k].x : x1;
+        y0 = g->S[k].y < y0 ? g->S[k].y : y0;
+        y1 = g->S[k].y > y1 ? g->S[k].y : y1;
+    }
+    return ((double)(x1 - x0) + 1) * ((double)(y1 - y0) + 1) < DENSE_AREA * (double)g->ns;
+}
+
 static cg_status run_passes(engine *g, cg_polygon_set64 *result)
 {
     sweep s;
@@ -429,7 +467,8 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
     int paired = g->ne + g->nh <= PAIRS_MAX_EDGES;
-    int dense = 0; /* a pass split many edges: snap to every hot pixel */
+    /* complete snap rounding: 1 for the pass that does it, 2 after */
+    int complete = 0;
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
@@ -477,6 +516,7 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         /* later passes round on the pieces themselves, which settles
          * whatever the input-line rounding could not */
         s.use_input_lines = pass < 8;
+        s.record_meets = pass == 0;
         if (can_resume && !light && nbands) {
             s.prev_map = c.map;
             s.prev_ne = c.n;
@@ -546,9 +586,9 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
             st = boolean_assemble(g, result, &s.mem, &s.memcap, s.mem_small) ? CG_OK : CG_ENOMEM;
             break;
         }
-        if (s.visits >= DENSE_VISITS * edges)
-            dense = 1;
-        if ((pass >= 1 || dense) && !boolean_add_hot_pixel_splits(g, dense))
+        if (!complete && (s.visits >= DENSE_VISITS * edges || (pass == 0 && dense_crossings(g))))
+            complete = 1;
+        if ((pass >= 1 || complete) && !boolean_add_hot_pixel_splits(g, complete == 1))
             break;
         free(bands);
         bands = NULL;
@@ -608,6 +648,9 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         cur ^= 1;
         if (!carry_keep(&c, &s) || !boolean_apply_splits(g, c.map, &c.kept, s.mem, s.memcap))
             break;
+        if (complete && !boolean_merge_coincident(g, c.kept))
+            break;
+        complete += complete == 1;
         c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {
             st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
@@ -801,6 +844,7 @@ cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
             free(g.E);
     }
     free(g.H);
+    free(g.M);
     if (g.S != g.S_small)
         free(g.S);
     if (g.P != g.P_small) {

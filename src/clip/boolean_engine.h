@@ -62,6 +62,10 @@ typedef struct engine {
     size_t ns, caps;
     piece *P;
     size_t np, capp;
+    /* the grid points where the first pass broke runs (edges meeting
+     * there need no split), kept for complete snap rounding */
+    cg_point64 *M;
+    size_t nm, capm;
     int64_t (*O)[4]; /* input edges of pieces (x0, y0, x1, y1): O_small or heap */
     size_t no, capo;
     int64_t O_small[16][4];
@@ -91,6 +95,12 @@ struct cg_clip_workspace {
 /* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
  * memory, arr unchanged */
 void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size);
+
+/* Room for `need` items in *arr (n of them used, room for *cap; it may still
+ * be the caller's buffer `small`), at once: 0 when out of memory (*arr
+ * unchanged) */
+int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
+                         size_t size);
 
 /* Adds the edge (x0, y0)-(x1, y1) of operand op (0 subject, 1 clip) to g:
  * a horizontal one to g->H, dropped when it is a point; orig as bedge.orig.
@@ -242,6 +252,7 @@ typedef struct sweep {
     size_t nbrkq, capbrkq;
     int brkq_full;
     int use_input_lines; /* round on the input edges (early passes) */
+    int record_meets;    /* note the grid points where runs break (g->M) */
     struct ck_log *log;   /* checkpoints of this pass, or NULL */
     size_t ck_visits;     /* the next checkpoint once visits reach this */
     size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
@@ -305,10 +316,15 @@ int boolean_ck_same(const sweep *s, const ck_point *c);
 size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y);
 
 /* Splits (boolean_split.c): snap rounding to the hot pixels of the split
- * points (and of the edges' ends when `vertices`); every split edge replaced
- * by its pieces (map[old edge]: its new index, or UINT32_MAX when split). */
+ * points (complete when `vertices`: of the edges' ends and g->M too, the
+ * split points replaced by the snapping's); every split edge replaced by
+ * its pieces (map[old edge]: its new index, or UINT32_MAX when split). */
 int boolean_add_hot_pixel_splits(engine *g, int vertices);
 int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap);
+/* The pieces g->E[kept..ne) of one operand with the same ends made one,
+ * their windings added (dropped when these cancel): complete snap rounding
+ * on a coarse grid leaves many.  0 when out of memory (g unchanged). */
+int boolean_merge_coincident(engine *g, size_t kept);
 
 #define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
 /* The crossings of a small input found pair by pair, as split points

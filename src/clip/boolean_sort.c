@@ -169,8 +169,9 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
  * NULL.  The natural runs merged when they are few (sort_runs), else a
  * radix sort by k1, then each run of equal k1 by k2 (straight insertion up
- * to 128 records: longer runs come on coarse grids, where many pieces start
- * on one scanline, and insertion is quadratic). */
+ * to RADIX_RUN records: longer runs come on coarse grids, where many pieces
+ * start on one scanline, and insertion is quadratic). */
+#define RADIX_RUN 48
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp)
 {
@@ -211,7 +212,7 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
         size_t j = i + 1;
         while (j < n && scratch[j].key == scratch[i].key)
             j++;
-        if (j - i > 128) { /* by k2 from the least, radix sorted */
+        if (j - i > RADIX_RUN) { /* by k2 from the least, radix sorted */
             int64_t lo2 = KEY(k2, scratch[i].val);
             for (size_t q = i + 1; q < j; q++) {
                 int64_t b = KEY(k2, scratch[q].val);

@@ -21,13 +21,19 @@ static int cmp_along(const void *a, const void *b)
 }
 
 /* the split points of one edge in order along it: straight insertion up to
- * 64 (long edges on coarse grids have dozens; a comparison through qsort's
- * pointer costs more), else qsort */
+ * 64 or when they are nearly in order (long edges on coarse grids have
+ * dozens; complete snap rounding gives them nearly sorted), else qsort (a
+ * comparison through its pointer costs more) */
 static void sort_along(split_sort *a, size_t n)
 {
     if (n > 64) {
-        qsort(a, n, sizeof *a, cmp_along);
-        return;
+        size_t descents = 0;
+        for (size_t i = 1; i < n; i++)
+            descents += before_along(&a[i], &a[i - 1]);
+        if (descents > n / 16) {
+            qsort(a, n, sizeof *a, cmp_along);
+            return;
+        }
     }
     for (size_t i = 1; i < n; i++) {
         split_sort v = a[i];
@@ -38,15 +44,27 @@ static void sort_along(split_sort *a, size_t n)
     }
 }
 
-/* Does the segment a-b meet the closed unit square centred on p (the "hot
- * pixel" of a rounded point)?  Exact, on doubled coordinates. */
-static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py)
+/* Does the segment a-b meet the "hot pixel" of the grid point p?  Exact,
+ * on doubled coordinates.  Two kinds of pixel:
+ * - half_open: the points that round to p, [px - 1/2, px + 1/2) x
+ *   [py - 1/2, py + 1/2).  These tile the plane, so an edge meets its hot
+ *   pixels one after the other, in the order of their centres along it,
+ *   and snapping to them cannot make two edges cross (Hobby's theorem).
+ *   Touching at a shared corner of four pixels, closed ones would let two
+ *   edges take their centres in crossing orders.
+ * - else the open square: the edge passes through its inside (what the
+ *   iterated snap rounding uses; its verifying passes settle the rest). */
+static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py,
+                       int half_open)
 {
     /* (coordinates are within 2^40 + 1: doubled, they fit 64 bits) */
     int64_t x0 = 2 * px - 1, x1 = 2 * px + 1, y0 = 2 * py - 1, y1 = 2 * py + 1;
     int64_t Ax = 2 * ax, Ay = 2 * ay, Bx = 2 * bx, By = 2 * by;
     if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) ||
         (Ay > y1 && By > y1))
+        return 0;
+    /* (the half-open pixel leaves out its right and top sides) */
+    if (half_open && ((Ax >= x1 && Bx >= x1) || (Ay >= y1 && By >= y1)))
         return 0;
     /* the line through a and b meets the square only if the centre is
      * within half the square's width across the line, |d x (p - a)| <=
@@ -55,25 +73,34 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
     double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
     if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
         return 0;
-    /* the square's corners on both sides of the line (or on it); 64-bit
-     * products when every difference is below 2^30 */
-    int pos = 0, neg = 0;
+    /* the square's corners on either side of the line: 64-bit products when
+     * every difference is below 2^30 */
     int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
     int64_t ex = Bx - Ax, ey = By - Ay, far = (int64_t)1 << 30;
     int narrow = ex < far && ex > -far && ey < far && ey > -far && x1 - Ax < far &&
                  Ax - x0 < far && y1 - Ay < far && Ay - y0 < far;
+    /* the half-open pixel as the closed one moved by (-d, -d), d tending to
+     * 0: a corner on the line moves to the side of sign(ey - ex) (the
+     * other corners, an integer from it, stay where they are) */
+    int tie = half_open ? (ey > ex) - (ey < ex) : 0;
+    int pos = 0, neg = 0;
     for (int k = 0; k < 4; k++) {
+        int side;
         if (narrow) {
             int64_t o = ex * (cy[k] - Ay) - ey * (cx[k] - Ax);
-            pos |= o > 0;
-            neg |= o < 0;
+            side = (o > 0) - (o < 0);
         } else {
             i128 o = (i128)ex * (cy[k] - Ay) - (i128)ey * (cx[k] - Ax);
-            pos |= o > 0;
-            neg |= o < 0;
+            side = (o > 0) - (o < 0);
         }
+        if (!side)
+            side = tie;
+        pos += side > 0;
+        neg += side < 0;
     }
-    return !(pos && !neg) && !(neg && !pos);
+    if (half_open) /* (met unless every corner is strictly on one side) */
+        return pos < 4 && neg < 4;
+    return pos && neg;
 }
 
 /* Snap rounding (Hobby): every edge that passes through the pixel of a
@@ -84,6 +111,10 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
  * each cell), and each edge looks at the cells along it, row by row: the
  * cost follows the edges' lengths and the points near them, not the points
  * in their y range (dense crossings of long edges made that quadratic). */
+/* the pixel walk of complete snap rounding: up to this many pixels of edge
+ * per hot point (beyond, the cells of hot_grid) */
+#define PIXEL_WALK 64
+
 typedef struct hot_grid {
     int64_t x0, y0, side;
     size_t cols, rows;
@@ -158,7 +189,118 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
     return 1;
 }
 
-/* Snap rounding to the hot pixels (see hot_grid): 0 when out of memory. */
+/* The hot points of complete snap rounding: the split points, the edges'
+ * ends and the grid points where the sweep broke runs; NULL when out of
+ * memory. */
+static splitpt *complete_hot_points(const engine *g, size_t *n)
+{
+    splitpt *pts = malloc((g->ns + 2 * (g->ne + g->nh) + g->nm) * sizeof *pts);
+    if (!pts)
+        return NULL;
+    memcpy(pts, g->S, g->ns * sizeof *pts);
+    size_t k = g->ns;
+    for (size_t i = 0; i < g->ne; i++) {
+        pts[k++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
+        pts[k++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
+    }
+    for (size_t i = 0; i < g->nh; i++) {
+        pts[k++] = (splitpt){0, g->H[i].x0, g->H[i].y};
+        pts[k++] = (splitpt){0, g->H[i].x1, g->H[i].y};
+    }
+    for (size_t i = 0; i < g->nm; i++)
+        pts[k++] = (splitpt){0, g->M[i].x, g->M[i].y};
+    *n = k;
+    return pts;
+}
+
+/* The hot points in a hash set (open addressing; x == INT64_MIN marks a free
+ * slot: coordinates are far inside the int64 range) */
+typedef struct hot_set {
+    cg_point64 *slot;
+    size_t mask;
+} hot_set;
+
+static inline size_t hot_hash(const hot_set *h, int64_t x, int64_t y)
+{
+    uint64_t k = ((uint64_t)x * 0x9e3779b97f4a7c15u) ^ ((uint64_t)y * 0xc2b2ae3d27d4eb4fu);
+    return (size_t)(k ^ (k >> 31)) & h->mask;
+}
+
+static int hot_set_has(const hot_set *h, int64_t x, int64_t y)
+{
+    for (size_t i = hot_hash(h, x, y);; i = (i + 1) & h->mask) {
+        if (h->slot[i].x == INT64_MIN)
+            return 0;
+        if (h->slot[i].x == x && h->slot[i].y == y)
+            return 1;
+    }
+}
+
+static int hot_set_build(hot_set *h, const splitpt *pts, size_t n)
+{
+    size_t cap = 64;
+    while (cap < 2 * n)
+        cap *= 2;
+    h->slot = malloc(cap * sizeof *h->slot);
+    if (!h->slot)
+        return 0;
+    h->mask = cap - 1;
+    for (size_t i = 0; i < cap; i++)
+        h->slot[i].x = INT64_MIN;
+    for (size_t k = 0; k < n; k++) {
+        size_t i = hot_hash(h, pts[k].x, pts[k].y);
+        while (h->slot[i].x != INT64_MIN && (h->slot[i].x != pts[k].x || h->slot[i].y != pts[k].y))
+            i = (i + 1) & h->mask;
+        h->slot[i] = (cg_point64){pts[k].x, pts[k].y};
+    }
+    return 1;
+}
+
+/* Complete snap rounding when the hot points are dense on the grid: each
+ * edge looks up the pixels along it, row by row, in the order it meets them
+ * (so its split points come sorted along it).  The cost follows the edges'
+ * lengths in grid units, which the caller has bounded. */
+static int snap_along_pixels(engine *g, const hot_set *h, size_t expect)
+{
+    size_t ne = g->ne;
+    void *S = g->S;
+    if (!boolean_reserve_from(&S, g->S_small, g->ns, &g->caps, expect, sizeof *g->S))
+        return 0;
+    g->S = S;
+    for (size_t i = 0; i < ne; i++) {
+        const bedge e = g->E[i];
+        int right = e.xt >= e.xb;
+        for (int64_t py = e.yb; py <= e.yt; py++) {
+            /* the edge's x over the pixel row [py - 1/2, py + 1/2] (clamped
+             * to the edge), widened for rounding: the pixels there */
+            double ya = py == e.yb ? (double)py : (double)py - 0.5;
+            double yz = py == e.yt ? (double)py : (double)py + 0.5;
+            double xa = (double)e.xb + e.slope * (ya - (double)e.yb);
+            double xz = (double)e.xb + e.slope * (yz - (double)e.yb);
+            double lo = xa < xz ? xa : xz, hi = xa < xz ? xz : xa;
+            double eps = 1e-6 + 1e-12 * (fabs(lo) + fabs(hi));
+            int64_t p0 = (int64_t)ceil(lo - 0.5 - eps), p1 = (int64_t)floor(hi + 0.5 + eps);
+            for (int64_t k = 0; k <= p1 - p0; k++) {
+                int64_t px = right ? p0 + k : p1 - k;
+                if ((px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
+                    !hot_set_has(h, px, py))
+                    continue;
+                /* the edge's x over the row overlaps the pixel's by a clear
+                 * margin: some of it is inside; else the exact test */
+                double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
+                double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
+                if (!(in_hi - in_lo > 4 * eps) && !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py, 1))
+                    continue;
+                GROW_SMALL(g->S, g->ns, g->caps, g->S_small, return 0);
+                g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
+            }
+        }
+    }
+    return 1;
+}
+
+/* Snap rounding to the hot pixels (see hot_grid; complete, with the edges'
+ * ends and run breaks too, when `vertices`): 0 when out of memory. */
 int boolean_add_hot_pixel_splits(engine *g, int vertices)
 {
     size_t ns = g->ns;
@@ -168,19 +310,29 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
     memset(&h, 0, sizeof h);
     int ok;
     if (vertices) {
-        /* the edges' ends are hot pixels too (complete snap rounding) */
-        splitpt *pts = malloc((ns + 2 * g->ne) * sizeof *pts);
-        ok = pts != NULL;
-        if (ok) {
-            memcpy(pts, g->S, ns * sizeof *pts);
-            size_t n = ns;
-            for (size_t i = 0; i < g->ne; i++) {
-                pts[n++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
-                pts[n++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
-            }
-            ok = hot_grid_build(&h, pts, n);
-            free(pts);
+        size_t n;
+        splitpt *pts = complete_hot_points(g, &n);
+        if (!pts)
+            return 0;
+        /* every split point is a hot pixel its edge passes through: the
+         * snapping finds it again, in order along the edge */
+        g->ns = 0;
+        double length = 0; /* of the edges, in pixels */
+        for (size_t i = 0; i < g->ne; i++) {
+            const bedge *e = &g->E[i];
+            length += (double)(e->yt - e->yb) + fabs((double)(e->xt - e->xb)) + 1;
         }
+        if (length <= PIXEL_WALK * (double)n) {
+            hot_set hs;
+            ok = hot_set_build(&hs, pts, n);
+            free(pts);
+            /* (each split point found again, and about as many more) */
+            ok = ok && snap_along_pixels(g, &hs, 2 * ns);
+            free(hs.slot);
+            return ok;
+        }
+        ok = hot_grid_build(&h, pts, n);
+        free(pts);
     } else {
         ok = hot_grid_build(&h, g->S, ns);
     }
@@ -215,7 +367,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                     int64_t px = h.pts[q].x, py = h.pts[q].y;
                     if (py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
                         (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
-                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py))
+                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py, vertices))
                         continue;
                     GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
                         ok = 0;
@@ -270,6 +422,15 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
     if (!own)
         memset(dead, 0, at + (old_ne + 1) * sizeof(uint32_t)); /* (dead and first) */
     uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_ne + 1;
+    /* room for the pieces at once: at most one per split point and split
+     * edge */
+    void *E = g->E;
+    if (!boolean_reserve_from(&E, g->E_small, g->ne, &g->cape,
+                              old_ne + ns + (ns < old_ne ? ns : old_ne), sizeof *g->E)) {
+        free(own);
+        return 0;
+    }
+    g->E = E;
     for (size_t k = 0; k < ns; k++)
         first[g->S[k].edge + 1]++;
     for (size_t i = 1; i <= old_ne; i++)
@@ -311,10 +472,13 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
             split_sort p = buf[k], q = buf[k + 1];
             if (p.x == q.x && p.y == q.y)
                 continue;
+            size_t ne = g->ne;
             int ok = e.w < 0 ? boolean_add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
                              : boolean_add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
             if (!ok)
                 goto fail;
+            if (g->ne > ne)
+                g->E[ne].w = e.w; /* (merged edges count more than once) */
         }
         i = j;
     }
@@ -339,4 +503,58 @@ fail: /* out of memory */
         free(buf);
     free(own);
     return 0;
+}
+
+static inline uint64_t piece_hash(const bedge *e)
+{
+    uint64_t h = (uint64_t)e->xb * 0x9e3779b97f4a7c15u;
+    h = (h ^ (uint64_t)e->yb) * 0xff51afd7ed558ccdu;
+    h = (h ^ (uint64_t)e->xt) * 0xc4ceb9fe1a85ec53u;
+    h = (h ^ (uint64_t)e->yt ^ e->op) * 0x9e3779b97f4a7c15u;
+    return h ^ (h >> 29);
+}
+
+static inline int same_piece(const bedge *a, const bedge *b)
+{
+    return a->xb == b->xb && a->yb == b->yb && a->xt == b->xt && a->yt == b->yt && a->op == b->op;
+}
+
+int boolean_merge_coincident(engine *g, size_t kept)
+{
+    size_t n = g->ne - kept, cap = 16;
+    while (cap < 2 * n)
+        cap *= 2;
+    uint32_t *slot = calloc(cap, sizeof *slot); /* a piece's index + 1, or 0 */
+    if (!slot)
+        return 0;
+    bedge *E = g->E;
+    size_t w = kept;
+    for (size_t i = kept; i < g->ne; i++) {
+        size_t h = (size_t)piece_hash(&E[i]) & (cap - 1);
+        while (slot[h] && !same_piece(&E[slot[h] - 1], &E[i]))
+            h = (h + 1) & (cap - 1);
+        if (slot[h]) {
+            bedge *m = &E[slot[h] - 1];
+            int sum = m->w + E[i].w;
+            if (sum >= -127 && sum <= 127) {
+                m->w = (int8_t)sum;
+                if (m->orig != E[i].orig)
+                    m->orig = NO_ORIG; /* (rounded on itself, if ever split) */
+                continue;
+            }
+            /* (a winding beyond int8: kept apart) */
+        }
+        E[w] = E[i];
+        if (!slot[h])
+            slot[h] = (uint32_t)(w + 1);
+        w++;
+    }
+    free(slot);
+    /* the ones whose windings cancel */
+    size_t k = kept;
+    for (size_t i = kept; i < w; i++)
+        if (E[i].w)
+            E[k++] = E[i];
+    g->ne = k;
+    return 1;
 }

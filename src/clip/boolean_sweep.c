@@ -98,13 +98,23 @@ static void break_run(sweep *s, uint32_t e, int next)
     (next ? s->brk_next : s->brk)[e] = 1;
 }
 
+/* the grid point (x, y), where a run breaks, noted in g->M: 0 when out of
+ * memory */
+NOINLINE static int record_meet(sweep *s, int64_t x, int64_t y)
+{
+    engine *g = s->g;
+    GROW(g->M, g->nm, g->capm, return 0);
+    g->M[g->nm++] = (cg_point64){x, y};
+    return 1;
+}
+
 static int meet(sweep *s, uint32_t e, int64_t y, int next)
 {
     int64_t x;
     const bedge *ed = &s->g->E[e];
     if (x_is_integer(ed, y, &x)) {
         break_run(s, e, next);
-        return 1;
+        return !s->record_meets || record_meet(s, x, y);
     }
     /* round the input edge's x there rather than the piece's, so that
      * rounding errors do not add up along an edge split many times */
@@ -429,7 +439,7 @@ static ALWAYS_INLINE int classify_dirty(sweep *s, int64_t y, const uint32_t *abo
 NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t yn)
 {
     const bedge *E = s->g->E;
-    int64_t x;
+    int64_t x = 0;
     if (E[u].yt == yn || E[v].yt == yn || x_is_integer(&E[u], yn, &x)) {
         /* a grid point (ends are grid points): the runs of those that go
          * on break there */
@@ -437,7 +447,8 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t yn)
             break_run(s, u, 1);
         if (E[v].yt > yn)
             break_run(s, v, 1);
-        return 1;
+        /* (an edge's end is a vertex already) */
+        return !s->record_meets || E[u].yt == yn || E[v].yt == yn || record_meet(s, x, yn);
     }
     if (coincident(&E[u], &E[v]))
         return 1;

@@ -825,7 +825,10 @@ static void coarse_stars(void)
  * 256 units: their crossings are denser than the grid's cells, so the
  * operations snap every edge to every hot pixel it passes through at once
  * (complete snap rounding), where edges meet at pixel corners, run along
- * pixel sides and coincide by the hundred. */
+ * pixel sides and coincide by the hundred.  In a third of the rounds a small
+ * square lies 2^20 units away (the hot pixels are then kept in a hash set,
+ * not a bitmap of the bounds), in another third 2^35 (the bounds too wide
+ * for either: the cells of the hot-pixel grid). */
 static void dense_grids(void)
 {
     check_rng rng = {0xd3e5e};
@@ -841,6 +844,11 @@ static void dense_grids(void)
                                       llround(check_rng_range(&rng, 0, extent))};
             cg_polygon_set64_add_ring(&set[k], pts, (size_t)n, 1);
             free(pts);
+        }
+        if (it % 3) {
+            int64_t far = (int64_t)1 << (it % 3 == 1 ? 20 : 35);
+            cg_point64 sq[4] = {{far, far}, {far + 3, far}, {far + 3, far + 3}, {far, far + 3}};
+            cg_polygon_set64_add_ring(&set[1], sq, 4, 1);
         }
         cg_clip_fill fa = (cg_clip_fill)(it % 4), fb = (cg_clip_fill)((it / 4) % 4);
         check_large_round("dense grids", it, &set[0], fa, &set[1], fb, &rng, extent,

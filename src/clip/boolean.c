@@ -588,7 +588,7 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         }
         if (!complete && (s.visits >= DENSE_VISITS * edges || (pass == 0 && dense_crossings(g))))
             complete = 1;
-        if ((pass >= 1 || complete) && !boolean_add_hot_pixel_splits(g, complete == 1))
+        if (pass >= 1 && complete != 1 && !boolean_add_hot_pixel_splits(g, 0))
             break;
         free(bands);
         bands = NULL;
@@ -597,7 +597,9 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         log->end_np = g->np;
         free(ranges);
         ranges = NULL;
-        if (log->npt) { /* (else there is nothing to resume from) */
+        /* (else there is nothing to resume from; nor after complete snap
+         * rounding, which splits nearly every edge) */
+        if (log->npt && complete != 1) {
             /* (when this pass stopped classifying, only the lowest bottom is
              * of use: one band) */
             size_t nb = s.classify ? g->ns : 1;
@@ -646,10 +648,12 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
             }
         }
         cur ^= 1;
-        if (!carry_keep(&c, &s) || !boolean_apply_splits(g, c.map, &c.kept, s.mem, s.memcap))
+        if (!carry_keep(&c, &s) ||
+            !(complete == 1 ? boolean_snap_complete(g, c.map, &c.kept, s.mem, s.memcap)
+                            : boolean_apply_splits(g, c.map, &c.kept, s.mem, s.memcap)))
             break;
-        if (complete && !boolean_merge_coincident(g, c.kept))
-            break;
+        if (complete == 1)
+            c.nh_sorted = 0; /* (its horizontal edges are put in order again) */
         complete += complete == 1;
         c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {

@@ -316,15 +316,45 @@ int boolean_ck_same(const sweep *s, const ck_point *c);
 size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y);
 
 /* Splits (boolean_split.c): snap rounding to the hot pixels of the split
- * points (complete when `vertices`: of the edges' ends and g->M too, the
+ * points (complete when `vertices`: of boolean_complete_hot_points, the
  * split points replaced by the snapping's); every split edge replaced by
  * its pieces (map[old edge]: its new index, or UINT32_MAX when split). */
 int boolean_add_hot_pixel_splits(engine *g, int vertices);
 int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap);
-/* The pieces g->E[kept..ne) of one operand with the same ends made one,
- * their windings added (dropped when these cancel): complete snap rounding
- * on a coarse grid leaves many.  0 when out of memory (g unchanged). */
-int boolean_merge_coincident(engine *g, size_t kept);
+
+/* a point of an edge; t orders it along the edge */
+typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
+
+static inline int before_along(const split_sort *p, const split_sort *q)
+{
+    if (p->t != q->t)
+        return p->t < q->t;
+    if (p->y != q->y)
+        return p->y < q->y;
+    return p->x < q->x;
+}
+
+/* the helpers of the splits, shared with complete snap rounding: a[0..n) in
+ * order along their edge; whether segment a-b meets the hot pixel of p
+ * (half-open: the points that round to p; else its open inside); the hot
+ * points of complete snap rounding (the split points, the edges' ends, g->M;
+ * NULL when out of memory); input edge e noted as its pieces' (NO_ORIG when
+ * out of memory); the pieces of e between its points pts[0..m) (in order
+ * from its bottom), added to g (0 when out of memory) */
+void boolean_sort_along(split_sort *a, size_t n);
+int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py,
+                        int half_open);
+splitpt *boolean_complete_hot_points(const engine *g, size_t *n);
+uint32_t boolean_add_orig(engine *g, const bedge *e);
+int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m);
+
+/* Complete snap rounding (boolean_snap.c), in place of the hot pixels'
+ * splits and their application (same map and kept): every edge routed
+ * through each hot pixel of boolean_complete_hot_points it meets, and the
+ * pieces of one operand with the same ends made one, their windings added
+ * (dropped when these cancel): on a coarse grid many coincide.  0 when out
+ * of memory. */
+int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap);
 
 #define PAIRS_MAX_EDGES 112 /* (below 128: an edge number fits in 7 bits) */
 /* The crossings of a small input found pair by pair, as split points

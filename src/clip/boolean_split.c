@@ -2,18 +2,6 @@
  * the replacement of every split edge by its pieces. */
 #include "boolean_engine.h"
 
-/* a split point of an edge; t orders it along the edge */
-typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
-
-static inline int before_along(const split_sort *p, const split_sort *q)
-{
-    if (p->t != q->t)
-        return p->t < q->t;
-    if (p->y != q->y)
-        return p->y < q->y;
-    return p->x < q->x;
-}
-
 static int cmp_along(const void *a, const void *b)
 {
     const split_sort *p = a, *q = b;
@@ -24,7 +12,7 @@ static int cmp_along(const void *a, const void *b)
  * 64 or when they are nearly in order (long edges on coarse grids have
  * dozens; complete snap rounding gives them nearly sorted), else qsort (a
  * comparison through its pointer costs more) */
-static void sort_along(split_sort *a, size_t n)
+void boolean_sort_along(split_sort *a, size_t n)
 {
     if (n > 64) {
         size_t descents = 0;
@@ -54,8 +42,8 @@ static void sort_along(split_sort *a, size_t n)
  *   edges take their centres in crossing orders.
  * - else the open square: the edge passes through its inside (what the
  *   iterated snap rounding uses; its verifying passes settle the rest). */
-static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py,
-                       int half_open)
+int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py,
+                        int half_open)
 {
     /* (coordinates are within 2^40 + 1: doubled, they fit 64 bits) */
     int64_t x0 = 2 * px - 1, x1 = 2 * px + 1, y0 = 2 * py - 1, y1 = 2 * py + 1;
@@ -111,10 +99,6 @@ static int meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t p
  * each cell), and each edge looks at the cells along it, row by row: the
  * cost follows the edges' lengths and the points near them, not the points
  * in their y range (dense crossings of long edges made that quadratic). */
-/* the pixel walk of complete snap rounding: up to this many pixels of edge
- * per hot point (beyond, the cells of hot_grid) */
-#define PIXEL_WALK 64
-
 typedef struct hot_grid {
     int64_t x0, y0, side;
     size_t cols, rows;
@@ -192,7 +176,7 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
 /* The hot points of complete snap rounding: the split points, the edges'
  * ends and the grid points where the sweep broke runs; NULL when out of
  * memory. */
-static splitpt *complete_hot_points(const engine *g, size_t *n)
+splitpt *boolean_complete_hot_points(const engine *g, size_t *n)
 {
     splitpt *pts = malloc((g->ns + 2 * (g->ne + g->nh) + g->nm) * sizeof *pts);
     if (!pts)
@@ -213,92 +197,6 @@ static splitpt *complete_hot_points(const engine *g, size_t *n)
     return pts;
 }
 
-/* The hot points in a hash set (open addressing; x == INT64_MIN marks a free
- * slot: coordinates are far inside the int64 range) */
-typedef struct hot_set {
-    cg_point64 *slot;
-    size_t mask;
-} hot_set;
-
-static inline size_t hot_hash(const hot_set *h, int64_t x, int64_t y)
-{
-    uint64_t k = ((uint64_t)x * 0x9e3779b97f4a7c15u) ^ ((uint64_t)y * 0xc2b2ae3d27d4eb4fu);
-    return (size_t)(k ^ (k >> 31)) & h->mask;
-}
-
-static int hot_set_has(const hot_set *h, int64_t x, int64_t y)
-{
-    for (size_t i = hot_hash(h, x, y);; i = (i + 1) & h->mask) {
-        if (h->slot[i].x == INT64_MIN)
-            return 0;
-        if (h->slot[i].x == x && h->slot[i].y == y)
-            return 1;
-    }
-}
-
-static int hot_set_build(hot_set *h, const splitpt *pts, size_t n)
-{
-    size_t cap = 64;
-    while (cap < 2 * n)
-        cap *= 2;
-    h->slot = malloc(cap * sizeof *h->slot);
-    if (!h->slot)
-        return 0;
-    h->mask = cap - 1;
-    for (size_t i = 0; i < cap; i++)
-        h->slot[i].x = INT64_MIN;
-    for (size_t k = 0; k < n; k++) {
-        size_t i = hot_hash(h, pts[k].x, pts[k].y);
-        while (h->slot[i].x != INT64_MIN && (h->slot[i].x != pts[k].x || h->slot[i].y != pts[k].y))
-            i = (i + 1) & h->mask;
-        h->slot[i] = (cg_point64){pts[k].x, pts[k].y};
-    }
-    return 1;
-}
-
-/* Complete snap rounding when the hot points are dense on the grid: each
- * edge looks up the pixels along it, row by row, in the order it meets them
- * (so its split points come sorted along it).  The cost follows the edges'
- * lengths in grid units, which the caller has bounded. */
-static int snap_along_pixels(engine *g, const hot_set *h, size_t expect)
-{
-    size_t ne = g->ne;
-    void *S = g->S;
-    if (!boolean_reserve_from(&S, g->S_small, g->ns, &g->caps, expect, sizeof *g->S))
-        return 0;
-    g->S = S;
-    for (size_t i = 0; i < ne; i++) {
-        const bedge e = g->E[i];
-        int right = e.xt >= e.xb;
-        for (int64_t py = e.yb; py <= e.yt; py++) {
-            /* the edge's x over the pixel row [py - 1/2, py + 1/2] (clamped
-             * to the edge), widened for rounding: the pixels there */
-            double ya = py == e.yb ? (double)py : (double)py - 0.5;
-            double yz = py == e.yt ? (double)py : (double)py + 0.5;
-            double xa = (double)e.xb + e.slope * (ya - (double)e.yb);
-            double xz = (double)e.xb + e.slope * (yz - (double)e.yb);
-            double lo = xa < xz ? xa : xz, hi = xa < xz ? xz : xa;
-            double eps = 1e-6 + 1e-12 * (fabs(lo) + fabs(hi));
-            int64_t p0 = (int64_t)ceil(lo - 0.5 - eps), p1 = (int64_t)floor(hi + 0.5 + eps);
-            for (int64_t k = 0; k <= p1 - p0; k++) {
-                int64_t px = right ? p0 + k : p1 - k;
-                if ((px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
-                    !hot_set_has(h, px, py))
-                    continue;
-                /* the edge's x over the row overlaps the pixel's by a clear
-                 * margin: some of it is inside; else the exact test */
-                double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
-                double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
-                if (!(in_hi - in_lo > 4 * eps) && !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py, 1))
-                    continue;
-                GROW_SMALL(g->S, g->ns, g->caps, g->S_small, return 0);
-                g->S[g->ns++] = (splitpt){(uint32_t)i, px, py};
-            }
-        }
-    }
-    return 1;
-}
-
 /* Snap rounding to the hot pixels (see hot_grid; complete, with the edges'
  * ends and run breaks too, when `vertices`): 0 when out of memory. */
 int boolean_add_hot_pixel_splits(engine *g, int vertices)
@@ -311,26 +209,12 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
     int ok;
     if (vertices) {
         size_t n;
-        splitpt *pts = complete_hot_points(g, &n);
+        splitpt *pts = boolean_complete_hot_points(g, &n);
         if (!pts)
             return 0;
         /* every split point is a hot pixel its edge passes through: the
-         * snapping finds it again, in order along the edge */
+         * snapping finds it again */
         g->ns = 0;
-        double length = 0; /* of the edges, in pixels */
-        for (size_t i = 0; i < g->ne; i++) {
-            const bedge *e = &g->E[i];
-            length += (double)(e->yt - e->yb) + fabs((double)(e->xt - e->xb)) + 1;
-        }
-        if (length <= PIXEL_WALK * (double)n) {
-            hot_set hs;
-            ok = hot_set_build(&hs, pts, n);
-            free(pts);
-            /* (each split point found again, and about as many more) */
-            ok = ok && snap_along_pixels(g, &hs, 2 * ns);
-            free(hs.slot);
-            return ok;
-        }
         ok = hot_grid_build(&h, pts, n);
         free(pts);
     } else {
@@ -367,7 +251,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                     int64_t px = h.pts[q].x, py = h.pts[q].y;
                     if (py < e.yb - 1 || py > e.yt + 1 || px < xlo - 1 || px > xhi + 1 ||
                         (px == e.xb && py == e.yb) || (px == e.xt && py == e.yt) ||
-                        !meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py, vertices))
+                        !boolean_meets_pixel(e.xb, e.yb, e.xt, e.yt, px, py, vertices))
                         continue;
                     GROW_SMALL(g->S, g->ns, g->caps, g->S_small, {
                         ok = 0;
@@ -387,7 +271,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
 
 /* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
  * when out of memory.  (The first few in the engine itself.) */
-static uint32_t add_orig(engine *g, const bedge *e)
+uint32_t boolean_add_orig(engine *g, const bedge *e)
 {
     if (!g->O) {
         g->O = g->O_small;
@@ -400,6 +284,28 @@ static uint32_t add_orig(engine *g, const bedge *e)
     o[2] = e->xt;
     o[3] = e->yt;
     return (uint32_t)g->no++;
+}
+
+int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m)
+{
+    /* the input edge of the pieces */
+    uint32_t orig = e->orig == NO_ORIG ? boolean_add_orig(g, e) : e->orig;
+    if (orig == NO_ORIG)
+        return 0;
+    /* the path direction of the edge: w == -1 means upwards */
+    for (size_t k = 0; k + 1 < m; k++) {
+        split_sort p = pts[k], q = pts[k + 1];
+        if (p.x == q.x && p.y == q.y)
+            continue;
+        size_t ne = g->ne;
+        int ok = e->w < 0 ? boolean_add_piece(g, p.x, p.y, q.x, q.y, e->op, orig)
+                          : boolean_add_piece(g, q.x, q.y, p.x, p.y, e->op, orig);
+        if (!ok)
+            return 0;
+        if (g->ne > ne)
+            g->E[ne].w = e->w; /* (merged edges count more than once) */
+    }
+    return 1;
 }
 
 /* Replaces every edge that has split points by its pieces: map[old edge]
@@ -460,26 +366,11 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
-        sort_along(buf + 1, m - 1);
+        boolean_sort_along(buf + 1, m - 1);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
-        /* the input edge of the pieces */
-        uint32_t orig = e.orig == NO_ORIG ? add_orig(g, &e) : e.orig;
-        if (orig == NO_ORIG)
+        if (!boolean_add_pieces_along(g, &e, buf, m))
             goto fail;
-        /* the path direction of the edge: w == -1 means upwards */
-        for (size_t k = 0; k + 1 < m; k++) {
-            split_sort p = buf[k], q = buf[k + 1];
-            if (p.x == q.x && p.y == q.y)
-                continue;
-            size_t ne = g->ne;
-            int ok = e.w < 0 ? boolean_add_piece(g, p.x, p.y, q.x, q.y, e.op, orig)
-                             : boolean_add_piece(g, q.x, q.y, p.x, p.y, e.op, orig);
-            if (!ok)
-                goto fail;
-            if (g->ne > ne)
-                g->E[ne].w = e.w; /* (merged edges count more than once) */
-        }
         i = j;
     }
     if (buf != small)
@@ -503,58 +394,4 @@ fail: /* out of memory */
         free(buf);
     free(own);
     return 0;
-}
-
-static inline uint64_t piece_hash(const bedge *e)
-{
-    uint64_t h = (uint64_t)e->xb * 0x9e3779b97f4a7c15u;
-    h = (h ^ (uint64_t)e->yb) * 0xff51afd7ed558ccdu;
-    h = (h ^ (uint64_t)e->xt) * 0xc4ceb9fe1a85ec53u;
-    h = (h ^ (uint64_t)e->yt ^ e->op) * 0x9e3779b97f4a7c15u;
-    return h ^ (h >> 29);
-}
-
-static inline int same_piece(const bedge *a, const bedge *b)
-{
-    return a->xb == b->xb && a->yb == b->yb && a->xt == b->xt && a->yt == b->yt && a->op == b->op;
-}
-
-int boolean_merge_coincident(engine *g, size_t kept)
-{
-    size_t n = g->ne - kept, cap = 16;
-    while (cap < 2 * n)
-        cap *= 2;
-    uint32_t *slot = calloc(cap, sizeof *slot); /* a piece's index + 1, or 0 */
-    if (!slot)
-        return 0;
-    bedge *E = g->E;
-    size_t w = kept;
-    for (size_t i = kept; i < g->ne; i++) {
-        size_t h = (size_t)piece_hash(&E[i]) & (cap - 1);
-        while (slot[h] && !same_piece(&E[slot[h] - 1], &E[i]))
-            h = (h + 1) & (cap - 1);
-        if (slot[h]) {
-            bedge *m = &E[slot[h] - 1];
-            int sum = m->w + E[i].w;
-            if (sum >= -127 && sum <= 127) {
-                m->w = (int8_t)sum;
-                if (m->orig != E[i].orig)
-                    m->orig = NO_ORIG; /* (rounded on itself, if ever split) */
-                continue;
-            }
-            /* (a winding beyond int8: kept apart) */
-        }
-        E[w] = E[i];
-        if (!slot[h])
-            slot[h] = (uint32_t)(w + 1);
-        w++;
-    }
-    free(slot);
-    /* the ones whose windings cancel */
-    size_t k = kept;
-    for (size_t i = kept; i < w; i++)
-        if (E[i].w)
-            E[k++] = E[i];
-    g->ne = k;
-    return 1;
 }

@@ -1,0 +1,403 @@
+/* Complete snap rounding for the boolean operations (Hobby): used once, when
+ * the crossings are dense on the grid.  Every edge is routed through the
+ * centre of each hot pixel it meets, and the pieces that then coincide are
+ * merged. */
+#include "boolean_engine.h"
+
+/* the pixel walk: up to this many pixels of edge per hot point (beyond, the
+ * cells of the hot-pixel grid: boolean_add_hot_pixel_splits) */
+#define PIXEL_WALK 64
+
+/* The hot points, within the bounds of the edges (where every hot point
+ * is): a bit per grid point of the bounds when these are small against the
+ * points (on coarse grids), else a hash set of keys (y - y0) << 32 |
+ * (x - x0), open addressing with UINT64_MAX for a free slot, grown to stay
+ * at most half full */
+typedef struct hot_set {
+    uint64_t *bits; /* or NULL */
+    uint64_t *slot;
+    size_t mask, count;
+    int64_t x0, y0, x1, y1;
+    uint64_t width;
+} hot_set;
+
+static inline size_t key_hash(uint64_t k, size_t mask)
+{
+    k *= 0x9e3779b97f4a7c15u;
+    return (size_t)(k ^ (k >> 29)) & mask;
+}
+
+static inline uint64_t hot_key(const hot_set *h, int64_t x, int64_t y)
+{
+    return (uint64_t)(y - h->y0) << 32 | (uint64_t)(x - h->x0);
+}
+
+static int hot_set_has(const hot_set *h, int64_t x, int64_t y)
+{
+    if (x < h->x0 || x > h->x1 || y < h->y0 || y > h->y1)
+        return 0;
+    if (h->bits) {
+        uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
+        return (int)(h->bits[b >> 6] >> (b & 63)) & 1;
+    }
+    uint64_t k = hot_key(h, x, y);
+    for (size_t i = key_hash(k, h->mask);; i = (i + 1) & h->mask) {
+        if (h->slot[i] == k)
+            return 1;
+        if (h->slot[i] == UINT64_MAX)
+            return 0;
+    }
+}
+
+/* (room for cap keys; the ones of old[0..oldcap) put in) */
+static int hot_set_alloc(hot_set *h, size_t cap, const uint64_t *old, size_t oldcap)
+{
+    h->slot = malloc(cap * sizeof *h->slot);
+    if (!h->slot)
+        return 0;
+    h->mask = cap - 1;
+    memset(h->slot, 0xff, cap * sizeof *h->slot);
+    for (size_t k = 0; k < oldcap; k++) {
+        if (old[k] == UINT64_MAX)
+            continue;
+        size_t i = key_hash(old[k], h->mask);
+        while (h->slot[i] != UINT64_MAX)
+            i = (i + 1) & h->mask;
+        h->slot[i] = old[k];
+    }
+    return 1;
+}
+
+static int hot_set_add(hot_set *h, int64_t x, int64_t y)
+{
+    if (h->bits) {
+        uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
+        h->bits[b >> 6] |= (uint64_t)1 << (b & 63);
+        return 1;
+    }
+    if (2 * (h->count + 1) > h->mask + 1) {
+        uint64_t *old = h->slot;
+        if (!hot_set_alloc(h, 2 * (h->mask + 1), old, h->mask + 1)) {
+            h->slot = old;
+            return 0;
+        }
+        free(old);
+    }
+    uint64_t k = hot_key(h, x, y);
+    size_t i = key_hash(k, h->mask);
+    while (h->slot[i] != UINT64_MAX && h->slot[i] != k)
+        i = (i + 1) & h->mask;
+    if (h->slot[i] == UINT64_MAX) {
+        h->slot[i] = k;
+        h->count++;
+    }
+    return 1;
+}
+
+/* the bounds of the edges (horizontal ones too) */
+static void edge_bounds(const engine *g, hot_set *h)
+{
+    h->x0 = h->y0 = INT64_MAX;
+    h->x1 = h->y1 = INT64_MIN;
+    for (size_t i = 0; i < g->ne; i++) {
+        const bedge *e = &g->E[i];
+        int64_t lo = e->xb < e->xt ? e->xb : e->xt, hi = e->xb < e->xt ? e->xt : e->xb;
+        h->x0 = lo < h->x0 ? lo : h->x0;
+        h->x1 = hi > h->x1 ? hi : h->x1;
+        h->y0 = e->yb < h->y0 ? e->yb : h->y0;
+        h->y1 = e->yt > h->y1 ? e->yt : h->y1;
+    }
+    for (size_t i = 0; i < g->nh; i++) {
+        const hseg *e = &g->H[i];
+        h->x0 = e->x0 < h->x0 ? e->x0 : h->x0;
+        h->x1 = e->x1 > h->x1 ? e->x1 : h->x1;
+        h->y0 = e->y < h->y0 ? e->y : h->y0;
+        h->y1 = e->y > h->y1 ? e->y : h->y1;
+    }
+}
+
+/* the hot points of boolean_complete_hot_points, straight from the engine
+ * (room at first for one a crossing, each given by its two edges) */
+static int hot_set_build(hot_set *h, const engine *g)
+{
+    size_t n = g->ns / 2 + 2 * (g->ne + g->nh) + g->nm, cap = 64;
+    while (cap < 2 * n)
+        cap *= 2;
+    h->count = 0;
+    h->width = (uint64_t)(h->x1 - h->x0) + 1;
+    double cells = (double)h->width * ((double)(h->y1 - h->y0) + 1);
+    h->bits = NULL;
+    h->slot = NULL;
+    if (cells <= 8 * 8 * (double)cap) { /* (no larger than the hash set) */
+        h->bits = calloc((size_t)(cells / 64) + 1, sizeof *h->bits);
+        if (!h->bits)
+            return 0;
+    } else if (!hot_set_alloc(h, cap, NULL, 0)) {
+        return 0;
+    }
+    int ok = 1;
+    for (size_t k = 0; k < g->ns; k++)
+        ok &= hot_set_add(h, g->S[k].x, g->S[k].y);
+    for (size_t i = 0; i < g->ne; i++)
+        ok &= hot_set_add(h, g->E[i].xb, g->E[i].yb) & hot_set_add(h, g->E[i].xt, g->E[i].yt);
+    for (size_t i = 0; i < g->nh; i++)
+        ok &= hot_set_add(h, g->H[i].x0, g->H[i].y) & hot_set_add(h, g->H[i].x1, g->H[i].y);
+    for (size_t i = 0; i < g->nm; i++)
+        ok &= hot_set_add(h, g->M[i].x, g->M[i].y);
+    return ok;
+}
+
+/* Records made so far, by content: open addressing on a record's index + 1
+ * (0 when free), grown to stay at most half full; the hash of a record by
+ * its index, for the growth. */
+typedef struct rec_index {
+    uint32_t *slot;
+    size_t cap, count;
+} rec_index;
+
+static int index_room(rec_index *x, const void *base, size_t (*hash)(const void *, size_t, size_t))
+{
+    if (2 * (x->count + 1) <= x->cap)
+        return 1;
+    size_t cap = x->cap ? 2 * x->cap : 1024;
+    uint32_t *slot = calloc(cap, sizeof *slot);
+    if (!slot)
+        return 0;
+    for (size_t i = 0; i < x->cap; i++) {
+        if (!x->slot[i])
+            continue;
+        size_t h = hash(base, x->slot[i] - 1, cap);
+        while (slot[h])
+            h = (h + 1) & (cap - 1);
+        slot[h] = x->slot[i];
+    }
+    free(x->slot);
+    x->slot = slot;
+    x->cap = cap;
+    return 1;
+}
+
+static size_t piece_hash(const void *base, size_t i, size_t cap)
+{
+    const bedge *e = (const bedge *)base + i;
+    uint64_t h = (uint64_t)e->xb * 0x9e3779b97f4a7c15u;
+    h = (h ^ (uint64_t)e->yb) * 0xff51afd7ed558ccdu;
+    h = (h ^ (uint64_t)e->xt) * 0xc4ceb9fe1a85ec53u;
+    return key_hash(h ^ (uint64_t)e->yt ^ e->op, cap - 1);
+}
+
+static inline int same_piece(const bedge *a, const bedge *b)
+{
+    return a->xb == b->xb && a->yb == b->yb && a->xt == b->xt && a->yt == b->yt && a->op == b->op;
+}
+
+/* The pieces g->E[from..ne) merged with the ones indexed, each kept once
+ * (the survivors moved down in order): 0 when out of memory.  Windings
+ * beyond int8 stay apart. */
+static int merge_pieces(engine *g, rec_index *x, size_t from)
+{
+    bedge *E = g->E;
+    size_t w = from;
+    for (size_t i = from; i < g->ne; i++) {
+        if (!index_room(x, E, piece_hash))
+            return 0;
+        size_t h = piece_hash(E, i, x->cap);
+        while (x->slot[h] && !same_piece(&E[x->slot[h] - 1], &E[i]))
+            h = (h + 1) & (x->cap - 1);
+        if (x->slot[h]) {
+            bedge *m = &E[x->slot[h] - 1];
+            int sum = m->w + E[i].w;
+            if (sum >= -127 && sum <= 127) {
+                m->w = (int8_t)sum;
+                if (m->orig != E[i].orig)
+                    m->orig = NO_ORIG; /* (rounded on itself, if ever split) */
+                continue;
+            }
+        }
+        E[w] = E[i];
+        if (!x->slot[h]) {
+            x->slot[h] = (uint32_t)(w + 1);
+            x->count++;
+        }
+        w++;
+    }
+    g->ne = w;
+    return 1;
+}
+
+static size_t horizontal_hash(const void *base, size_t i, size_t cap)
+{
+    const hseg *e = (const hseg *)base + i;
+    uint64_t h = ((uint64_t)e->y * 0x9e3779b97f4a7c15u ^ (uint64_t)e->x0) * 0xff51afd7ed558ccdu;
+    return key_hash(h ^ (uint64_t)e->x1, cap - 1);
+}
+
+/* The horizontal edges g->H[from..nh) each kept once with the ones indexed
+ * (they carry no winding: a copy adds nothing): 0 when out of memory */
+static int merge_horizontals(engine *g, rec_index *x, size_t from)
+{
+    hseg *H = g->H;
+    size_t w = from;
+    for (size_t i = from; i < g->nh; i++) {
+        if (!index_room(x, H, horizontal_hash))
+            return 0;
+        size_t h = horizontal_hash(H, i, x->cap);
+        while (x->slot[h] && !(H[x->slot[h] - 1].y == H[i].y && H[x->slot[h] - 1].x0 == H[i].x0 &&
+                               H[x->slot[h] - 1].x1 == H[i].x1))
+            h = (h + 1) & (x->cap - 1);
+        if (x->slot[h])
+            continue;
+        H[w] = H[i];
+        x->slot[h] = (uint32_t)(++w);
+        x->count++;
+    }
+    g->nh = w;
+    return 1;
+}
+
+/* g->E[from..ne) without the pieces whose windings cancelled */
+static void drop_cancelled(engine *g, size_t from)
+{
+    size_t k = from;
+    for (size_t i = from; i < g->ne; i++)
+        if (g->E[i].w)
+            g->E[k++] = g->E[i];
+    g->ne = k;
+}
+
+/* The hot pixels edge e meets, in buf after its bottom (t ordering them
+ * along e), row by row: the pixels there in the order e meets them, looked
+ * up in h.  The number of points in buf, or 0 when out of memory. */
+static size_t walk_pixels(const bedge *e, const hot_set *h, split_sort **buf, size_t *cap,
+                          split_sort *small)
+{
+    i128 dx = e->xt - e->xb, dy = e->yt - e->yb;
+    int right = e->xt >= e->xb;
+    size_t m = 0;
+    (*buf)[m++] = (split_sort){e->xb, e->yb, -1};
+    for (int64_t py = e->yb; py <= e->yt; py++) {
+        /* the edge's x over the pixel row [py - 1/2, py + 1/2] (clamped to
+         * the edge), widened for rounding: the pixels there */
+        double ya = py == e->yb ? (double)py : (double)py - 0.5;
+        double yz = py == e->yt ? (double)py : (double)py + 0.5;
+        double xa = (double)e->xb + e->slope * (ya - (double)e->yb);
+        double xz = (double)e->xb + e->slope * (yz - (double)e->yb);
+        double lo = xa < xz ? xa : xz, hi = xa < xz ? xz : xa;
+        double eps = 1e-6 + 1e-12 * (fabs(lo) + fabs(hi));
+        int64_t p0 = (int64_t)ceil(lo - 0.5 - eps), p1 = (int64_t)floor(hi + 0.5 + eps);
+        for (int64_t k = 0; k <= p1 - p0; k++) {
+            int64_t px = right ? p0 + k : p1 - k;
+            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt) ||
+                !hot_set_has(h, px, py))
+                continue;
+            /* the edge's x over the row overlaps the pixel's by a clear
+             * margin: some of it is inside; else the exact test */
+            double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
+            double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
+            if (!(in_hi - in_lo > 4 * eps) &&
+                !boolean_meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py, 1))
+                continue;
+            if (m + 2 > *cap) { /* (and room for the top) */
+                size_t c = 2 * *cap;
+                split_sort *nb = *buf == small ? malloc(c * sizeof *nb)
+                                               : realloc(*buf, c * sizeof *nb);
+                if (!nb)
+                    return 0;
+                if (*buf == small)
+                    memcpy(nb, small, m * sizeof *nb);
+                *buf = nb;
+                *cap = c;
+            }
+            i128 t = (i128)(px - e->xb) * dx + (i128)(py - e->yb) * dy;
+            (*buf)[m++] = (split_sort){px, py, t};
+        }
+    }
+    return m;
+}
+
+/* Each edge's pixels walked, its pieces added and merged at once: the cost
+ * follows the edges' lengths in grid units (bounded by the caller), and no
+ * split point is stored. */
+static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t *kept,
+                              void *mem, size_t cap)
+{
+    size_t old_ne = g->ne;
+    g->ns = 0;
+    rec_index pieces = {0}, horizontals = {0};
+    unsigned char *own = old_ne > cap || !mem ? calloc(old_ne + 1, 1) : NULL;
+    unsigned char *dead = own ? own : mem;
+    split_sort small[64], *buf = small;
+    size_t capbuf = sizeof small / sizeof small[0];
+    int ok = dead != NULL && merge_horizontals(g, &horizontals, 0);
+    if (ok && !own)
+        memset(dead, 0, old_ne);
+    for (size_t i = 0; ok && i < old_ne; i++) {
+        const bedge e = g->E[i];
+        size_t m = walk_pixels(&e, h, &buf, &capbuf, small);
+        ok = m > 0;
+        if (m < 2)
+            continue; /* (no hot pixel on the way: the edge stays) */
+        boolean_sort_along(buf + 1, m - 1);
+        buf[m++] = (split_sort){e.xt, e.yt, 0};
+        dead[i] = 1;
+        size_t from = g->ne, hfrom = g->nh;
+        ok = boolean_add_pieces_along(g, &e, buf, m) && merge_pieces(g, &pieces, from) &&
+             merge_horizontals(g, &horizontals, hfrom);
+    }
+    if (ok) { /* the edges kept, then the pieces */
+        size_t w = 0;
+        for (size_t i = 0; i < old_ne; i++) {
+            map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
+            if (!dead[i])
+                g->E[w++] = g->E[i];
+        }
+        *kept = w;
+        for (size_t i = old_ne; i < g->ne; i++)
+            g->E[w++] = g->E[i];
+        g->ne = w;
+        drop_cancelled(g, *kept);
+    }
+    if (buf != small)
+        free(buf);
+    free(own);
+    free(pieces.slot);
+    free(horizontals.slot);
+    return ok;
+}
+
+/* the pieces g->E[kept..ne) merged (after the hot-pixel grid's splits) */
+static int merge_all(engine *g, size_t kept)
+{
+    rec_index x = {0};
+    int ok = merge_pieces(g, &x, kept);
+    free(x.slot);
+    if (ok)
+        drop_cancelled(g, kept);
+    return ok;
+}
+
+int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
+{
+    double length = 0; /* of the edges, in pixels */
+    for (size_t i = 0; i < g->ne; i++) {
+        const bedge *e = &g->E[i];
+        length += (double)(e->yt - e->yb) + fabs((double)(e->xt - e->xb)) + 1;
+    }
+    hot_set h;
+    edge_bounds(g, &h);
+    if (length <= PIXEL_WALK * (double)(g->ns + 2 * (g->ne + g->nh) + g->nm) &&
+        h.x1 - h.x0 < INT64_C(1) << 32 && h.y1 - h.y0 < INT64_C(1) << 32) {
+        if (!hot_set_build(&h, g)) {
+            free(h.bits);
+            free(h.slot);
+            return 0;
+        }
+        int ok = snap_by_pixel_walk(g, &h, map, kept, mem, cap);
+        free(h.bits);
+        free(h.slot);
+        return ok;
+    }
+    /* long edges: each looks at the cells of the hot-pixel grid along it */
+    return boolean_add_hot_pixel_splits(g, 1) && boolean_apply_splits(g, map, kept, mem, cap) &&
+           merge_all(g, *kept);
+}

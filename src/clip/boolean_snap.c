@@ -265,6 +265,29 @@ static void drop_cancelled(engine *g, size_t from)
     g->ne = k;
 }
 
+/* floor and ceiling of v (|v| < 2^62) */
+static inline int64_t floor_i64(double v)
+{
+    int64_t t = (int64_t)v;
+    return t - (v < (double)t);
+}
+
+static inline int64_t ceil_i64(double v)
+{
+    int64_t t = (int64_t)v;
+    return t + (v > (double)t);
+}
+
+/* whether hot point (px, py) is in h, (px, py) within its bounds */
+static inline int hot_at(const hot_set *h, int64_t px, int64_t py)
+{
+    if (h->bits) {
+        uint64_t b = (uint64_t)(py - h->y0) * h->width + (uint64_t)(px - h->x0);
+        return (int)(h->bits[b >> 6] >> (b & 63)) & 1;
+    }
+    return hot_set_has(h, px, py);
+}
+
 /* The hot pixels edge e meets, in buf after its bottom (t ordering them
  * along e), row by row: the pixels there in the order e meets them, looked
  * up in h.  The number of points in buf, or 0 when out of memory. */
@@ -273,30 +296,37 @@ static size_t walk_pixels(const bedge *e, const hot_set *h, split_sort **buf, si
 {
     i128 dx = e->xt - e->xb, dy = e->yt - e->yb;
     int right = e->xt >= e->xb;
+    /* (far above the rounding errors of x along the edge) */
+    double eps = 1e-6 + 2e-12 * (fabs((double)e->xb) + fabs((double)e->xt));
     size_t m = 0;
     (*buf)[m++] = (split_sort){e->xb, e->yb, -1};
     for (int64_t py = e->yb; py <= e->yt; py++) {
         /* the edge's x over the pixel row [py - 1/2, py + 1/2] (clamped to
-         * the edge), widened for rounding: the pixels there */
+         * the edge), widened for rounding: the pixels p0..p1 there */
         double ya = py == e->yb ? (double)py : (double)py - 0.5;
         double yz = py == e->yt ? (double)py : (double)py + 0.5;
         double xa = (double)e->xb + e->slope * (ya - (double)e->yb);
         double xz = (double)e->xb + e->slope * (yz - (double)e->yb);
         double lo = xa < xz ? xa : xz, hi = xa < xz ? xz : xa;
-        double eps = 1e-6 + 1e-12 * (fabs(lo) + fabs(hi));
-        int64_t p0 = (int64_t)ceil(lo - 0.5 - eps), p1 = (int64_t)floor(hi + 0.5 + eps);
-        for (int64_t k = 0; k <= p1 - p0; k++) {
-            int64_t px = right ? p0 + k : p1 - k;
-            if ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt) ||
-                !hot_set_has(h, px, py))
+        int64_t p0 = ceil_i64(lo - 0.5 - eps), p1 = floor_i64(hi + 0.5 + eps);
+        /* (the hot points are within the edges' bounds) */
+        int64_t q0 = p0 > h->x0 ? p0 : h->x0, q1 = p1 < h->x1 ? p1 : h->x1;
+        int end_row = py == e->yb || py == e->yt;
+        for (int64_t k = 0; k <= q1 - q0; k++) {
+            int64_t px = right ? q0 + k : q1 - k;
+            if (!hot_at(h, px, py) ||
+                (end_row && ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))))
                 continue;
-            /* the edge's x over the row overlaps the pixel's by a clear
-             * margin: some of it is inside; else the exact test */
-            double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
-            double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
-            if (!(in_hi - in_lo > 4 * eps) &&
-                !boolean_meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py, 1))
-                continue;
+            /* between p0 and p1, the edge's x over the row overlaps the
+             * pixel's by a clear margin: some of the edge is inside; at
+             * the two ends, unless it does, the exact test */
+            if (px == p0 || px == p1) {
+                double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
+                double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
+                if (!(in_hi - in_lo > 4 * eps) &&
+                    !boolean_meets_pixel(e->xb, e->yb, e->xt, e->yt, px, py, 1))
+                    continue;
+            }
             if (m + 2 > *cap) { /* (and room for the top) */
                 size_t c = 2 * *cap;
                 split_sort *nb = *buf == small ? malloc(c * sizeof *nb)

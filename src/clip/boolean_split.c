@@ -302,8 +302,8 @@ int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, s
                           : boolean_add_piece(g, q.x, q.y, p.x, p.y, e->op, orig);
         if (!ok)
             return 0;
-        if (g->ne > ne)
-            g->E[ne].w = e->w; /* (merged edges count more than once) */
+        if (g->ne > ne) /* (a merged edge counts more than once) */
+            g->E[ne].w = (int8_t)(g->E[ne].w * (e->w < 0 ? -e->w : e->w));
     }
     return 1;
 }

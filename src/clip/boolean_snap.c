@@ -68,13 +68,8 @@ static int hot_set_alloc(hot_set *h, size_t cap, const uint64_t *old, size_t old
     return 1;
 }
 
-static int hot_set_add(hot_set *h, int64_t x, int64_t y)
+NOINLINE static int hot_hash_add(hot_set *h, int64_t x, int64_t y)
 {
-    if (h->bits) {
-        uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
-        h->bits[b >> 6] |= (uint64_t)1 << (b & 63);
-        return 1;
-    }
     if (2 * (h->count + 1) > h->mask + 1) {
         uint64_t *old = h->slot;
         if (!hot_set_alloc(h, 2 * (h->mask + 1), old, h->mask + 1)) {
@@ -91,6 +86,15 @@ static int hot_set_add(hot_set *h, int64_t x, int64_t y)
         h->slot[i] = k;
         h->count++;
     }
+    return 1;
+}
+
+static inline int hot_set_add(hot_set *h, int64_t x, int64_t y)
+{
+    if (!h->bits)
+        return hot_hash_add(h, x, y);
+    uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
+    h->bits[b >> 6] |= (uint64_t)1 << (b & 63);
     return 1;
 }
 

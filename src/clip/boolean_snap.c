@@ -1,7 +1,8 @@
 /* Complete snap rounding for the boolean operations (Hobby): used once, when
- * the crossings are dense on the grid.  Every edge is routed through the
- * centre of each hot pixel it meets, and the pieces that then coincide are
- * merged. */
+ * the crossings are dense.  Every edge is routed through the centre of each
+ * hot pixel it meets: on coarse grids by walking its pixels, the pieces that
+ * then coincide merged as they come; else through the cells of the
+ * hot-pixel grid (boolean_split.c). */
 #include "boolean_engine.h"
 
 /* the pixel walk: up to this many pixels of edge per hot point (beyond, the
@@ -399,17 +400,6 @@ static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t
     return ok;
 }
 
-/* the pieces g->E[kept..ne) merged (after the hot-pixel grid's splits) */
-static int merge_all(engine *g, size_t kept)
-{
-    rec_index x = {0};
-    int ok = merge_pieces(g, &x, kept);
-    free(x.slot);
-    if (ok)
-        drop_cancelled(g, kept);
-    return ok;
-}
-
 int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
 {
     double length = 0; /* of the edges, in pixels */
@@ -432,6 +422,5 @@ int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, siz
         return ok;
     }
     /* long edges: each looks at the cells of the hot-pixel grid along it */
-    return boolean_add_hot_pixel_splits(g, 1) && boolean_apply_splits(g, map, kept, mem, cap) &&
-           merge_all(g, *kept);
+    return boolean_add_hot_pixel_splits(g, 1) && boolean_apply_splits(g, map, kept, mem, cap);
 }

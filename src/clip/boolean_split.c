@@ -32,65 +32,6 @@ void boolean_sort_along(split_sort *a, size_t n)
     }
 }
 
-/* Does the segment a-b meet the "hot pixel" of the grid point p?  Exact,
- * on doubled coordinates.  Two kinds of pixel:
- * - half_open: the points that round to p, [px - 1/2, px + 1/2) x
- *   [py - 1/2, py + 1/2).  These tile the plane, so an edge meets its hot
- *   pixels one after the other, in the order of their centres along it,
- *   and snapping to them cannot make two edges cross (Hobby's theorem).
- *   Touching at a shared corner of four pixels, closed ones would let two
- *   edges take their centres in crossing orders.
- * - else the open square: the edge passes through its inside (what the
- *   iterated snap rounding uses; its verifying passes settle the rest). */
-int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t px, int64_t py,
-                        int half_open)
-{
-    /* (coordinates are within 2^40 + 1: doubled, they fit 64 bits) */
-    int64_t x0 = 2 * px - 1, x1 = 2 * px + 1, y0 = 2 * py - 1, y1 = 2 * py + 1;
-    int64_t Ax = 2 * ax, Ay = 2 * ay, Bx = 2 * bx, By = 2 * by;
-    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) ||
-        (Ay > y1 && By > y1))
-        return 0;
-    /* (the half-open pixel leaves out its right and top sides) */
-    if (half_open && ((Ax >= x1 && Bx >= x1) || (Ay >= y1 && By >= y1)))
-        return 0;
-    /* the line through a and b meets the square only if the centre is
-     * within half the square's width across the line, |d x (p - a)| <=
-     * (|dx| + |dy|) / 2: in doubles first, with a wide margin for rounding */
-    double dx = (double)(bx - ax), dy = (double)(by - ay);
-    double u = dy * (double)(px - ax), v = dx * (double)(py - ay);
-    if (fabs(u - v) > 0.5 * (fabs(dx) + fabs(dy)) + 1e-9 * (fabs(u) + fabs(v)) + 1)
-        return 0;
-    /* the square's corners on either side of the line: 64-bit products when
-     * every difference is below 2^30 */
-    int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
-    int64_t ex = Bx - Ax, ey = By - Ay, far = (int64_t)1 << 30;
-    int narrow = ex < far && ex > -far && ey < far && ey > -far && x1 - Ax < far &&
-                 Ax - x0 < far && y1 - Ay < far && Ay - y0 < far;
-    /* the half-open pixel as the closed one moved by (-d, -d), d tending to
-     * 0: a corner on the line moves to the side of sign(ey - ex) (the
-     * other corners, an integer from it, stay where they are) */
-    int tie = half_open ? (ey > ex) - (ey < ex) : 0;
-    int pos = 0, neg = 0;
-    for (int k = 0; k < 4; k++) {
-        int side;
-        if (narrow) {
-            int64_t o = ex * (cy[k] - Ay) - ey * (cx[k] - Ax);
-            side = (o > 0) - (o < 0);
-        } else {
-            i128 o = (i128)ex * (cy[k] - Ay) - (i128)ey * (cx[k] - Ax);
-            side = (o > 0) - (o < 0);
-        }
-        if (!side)
-            side = tie;
-        pos += side > 0;
-        neg += side < 0;
-    }
-    if (half_open) /* (met unless every corner is strictly on one side) */
-        return pos < 4 && neg < 4;
-    return pos && neg;
-}
-
 /* Snap rounding (Hobby): every edge that passes through the pixel of a
  * rounded split point is split there too, so that nearly parallel edges
  * meet at one grid point instead of crossing again a little further on.

@@ -165,13 +165,31 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
 #undef KEY
 }
 
+#define RADIX_RUN 48
+
+/* a[0..n) (records by index, in any order) in stable order by k2, a radix
+ * sort from the least k2 */
+static int radix_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n, keyval *tmp)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+    int64_t lo2 = KEY(k2, a[0].val);
+    for (size_t q = 1; q < n; q++) {
+        int64_t b = KEY(k2, a[q].val);
+        lo2 = b < lo2 ? b : lo2;
+    }
+    for (size_t q = 0; q < n; q++)
+        a[q].key = (uint64_t)(KEY(k2, a[q].val) - lo2);
+    return radix_sort(a, n, tmp);
+#undef KEY
+}
+
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
  * NULL.  The natural runs merged when they are few (sort_runs), else a
- * radix sort by k1, then each run of equal k1 by k2 (straight insertion up
- * to RADIX_RUN records: longer runs come on coarse grids, where many pieces
- * start on one scanline, and insertion is quadratic). */
-#define RADIX_RUN 48
+ * radix sort by k1, then each run of equal k1 by k2 (straight insertion; a
+ * run of more than RADIX_RUN records radix sorted once insertion has moved
+ * records as many times as it has records: on coarse grids hundreds of
+ * pieces start on one scanline in no order, and insertion is quadratic). */
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp)
 {
@@ -212,29 +230,26 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
         size_t j = i + 1;
         while (j < n && scratch[j].key == scratch[i].key)
             j++;
-        if (j - i > RADIX_RUN) { /* by k2 from the least, radix sorted */
-            int64_t lo2 = KEY(k2, scratch[i].val);
-            for (size_t q = i + 1; q < j; q++) {
-                int64_t b = KEY(k2, scratch[q].val);
-                lo2 = b < lo2 ? b : lo2;
-            }
-            for (size_t q = i; q < j; q++)
-                scratch[q].key = (uint64_t)(KEY(k2, scratch[q].val) - lo2);
-            if (!radix_sort(scratch + i, j - i, tmp ? tmp + i : NULL))
-                return 0;
-        } else if (j - i > 1) {
+        if (j - i > 1) {
             /* by straight insertion, each k2 keyed as it is taken (the
-             * sign bit flipped: unsigned order is k2's) */
+             * sign bit flipped: unsigned order is k2's); a long run that
+             * needs many moves (on coarse grids, hundreds of pieces in no
+             * order on one scanline) is radix sorted instead, while one in
+             * order or nearly (a grid of squares) stays cheap */
             const uint64_t flip = (uint64_t)1 << 63;
+            size_t budget = j - i > RADIX_RUN ? j - i : SIZE_MAX, moves = 0;
             scratch[i].key = (uint64_t)KEY(k2, scratch[i].val) ^ flip;
-            for (size_t q = i + 1; q < j; q++) {
+            for (size_t q = i + 1; q < j && moves <= budget; q++) {
                 keyval v = scratch[q];
                 v.key = (uint64_t)KEY(k2, v.val) ^ flip;
                 size_t m = q;
                 for (; m > i && scratch[m - 1].key > v.key; m--)
                     scratch[m] = scratch[m - 1];
                 scratch[m] = v;
+                moves += q - m;
             }
+            if (moves > budget && !radix_by_k2(k2, stride, scratch + i, j - i, tmp ? tmp + i : NULL))
+                return 0;
         }
         i = j;
     }

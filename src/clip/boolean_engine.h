@@ -394,14 +394,12 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
 }
 
 /* the helpers of the splits, shared with complete snap rounding: a[0..n) in
- * order along their edge; the hot
- * points of complete snap rounding (the split points, the edges' ends, g->M;
- * NULL when out of memory); input edge e noted as its pieces' (NO_ORIG when
- * out of memory); the pieces of e between its points pts[0..m) (in order
- * from its bottom), added to g (0 when out of memory) */
+ * order along their edge; the hot points of complete snap rounding (the
+ * split points, the edges' ends, g->M; NULL when out of memory); the pieces
+ * of e between its points pts[0..m) (in order from its bottom), added to g
+ * (0 when out of memory) */
 void boolean_sort_along(split_sort *a, size_t n);
 splitpt *boolean_complete_hot_points(const engine *g, size_t *n);
-uint32_t boolean_add_orig(engine *g, const bedge *e);
 int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m);
 
 /* Complete snap rounding (boolean_snap.c), in place of the hot pixels'

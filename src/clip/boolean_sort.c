@@ -183,6 +183,32 @@ static int radix_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n, ke
 #undef KEY
 }
 
+/* a[0..n) (records by index, in order but for k2) in stable order by k2,
+ * by straight insertion, each k2 keyed as it is taken (the sign bit
+ * flipped: unsigned order is k2's); 0 when that would move records more
+ * than `budget` times (a[] then in no particular order) */
+static ALWAYS_INLINE int insert_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n,
+                                      size_t budget)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+    const uint64_t flip = (uint64_t)1 << 63;
+    size_t moves = 0;
+    a[0].key = (uint64_t)KEY(k2, a[0].val) ^ flip;
+    for (size_t q = 1; q < n; q++) {
+        keyval v = a[q];
+        v.key = (uint64_t)KEY(k2, v.val) ^ flip;
+        size_t m = q;
+        for (; m > 0 && a[m - 1].key > v.key; m--)
+            a[m] = a[m - 1];
+        a[m] = v;
+        moves += q - m;
+        if (moves > budget)
+            return 0;
+    }
+    return 1;
+#undef KEY
+}
+
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
  * NULL.  The natural runs merged when they are few (sort_runs), else a
@@ -230,26 +256,15 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
         size_t j = i + 1;
         while (j < n && scratch[j].key == scratch[i].key)
             j++;
-        if (j - i > 1) {
-            /* by straight insertion, each k2 keyed as it is taken (the
-             * sign bit flipped: unsigned order is k2's); a long run that
-             * needs many moves (on coarse grids, hundreds of pieces in no
-             * order on one scanline) is radix sorted instead, while one in
-             * order or nearly (a grid of squares) stays cheap */
-            const uint64_t flip = (uint64_t)1 << 63;
-            size_t budget = j - i > RADIX_RUN ? j - i : SIZE_MAX, moves = 0;
-            scratch[i].key = (uint64_t)KEY(k2, scratch[i].val) ^ flip;
-            for (size_t q = i + 1; q < j && moves <= budget; q++) {
-                keyval v = scratch[q];
-                v.key = (uint64_t)KEY(k2, v.val) ^ flip;
-                size_t m = q;
-                for (; m > i && scratch[m - 1].key > v.key; m--)
-                    scratch[m] = scratch[m - 1];
-                scratch[m] = v;
-                moves += q - m;
-            }
-            if (moves > budget && !radix_by_k2(k2, stride, scratch + i, j - i, tmp ? tmp + i : NULL))
+        /* a long run that needs many moves (on coarse grids, hundreds of
+         * pieces in no order on one scanline) is radix sorted instead, while
+         * one in order or nearly (a grid of squares) stays cheap */
+        if (j - i > RADIX_RUN) {
+            if (!insert_by_k2(k2, stride, scratch + i, j - i, j - i) &&
+                !radix_by_k2(k2, stride, scratch + i, j - i, tmp ? tmp + i : NULL))
                 return 0;
+        } else if (j - i > 1) {
+            insert_by_k2(k2, stride, scratch + i, j - i, SIZE_MAX);
         }
         i = j;
     }

@@ -12,7 +12,7 @@ static int cmp_along(const void *a, const void *b)
  * 64 or when they are nearly in order (long edges on coarse grids have
  * dozens; complete snap rounding gives them nearly sorted), else qsort (a
  * comparison through its pointer costs more) */
-void boolean_sort_along(split_sort *a, size_t n)
+static inline void sort_along(split_sort *a, size_t n)
 {
     if (n > 64) {
         size_t descents = 0;
@@ -212,7 +212,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
 
 /* Notes input edge e as the input edge of its pieces: its number, NO_ORIG
  * when out of memory.  (The first few in the engine itself.) */
-uint32_t boolean_add_orig(engine *g, const bedge *e)
+static uint32_t add_orig(engine *g, const bedge *e)
 {
     if (!g->O) {
         g->O = g->O_small;
@@ -227,10 +227,11 @@ uint32_t boolean_add_orig(engine *g, const bedge *e)
     return (uint32_t)g->no++;
 }
 
-int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m)
+static ALWAYS_INLINE int add_pieces_along(engine *g, const bedge *e, const split_sort *pts,
+                                          size_t m)
 {
     /* the input edge of the pieces */
-    uint32_t orig = e->orig == NO_ORIG ? boolean_add_orig(g, e) : e->orig;
+    uint32_t orig = e->orig == NO_ORIG ? add_orig(g, e) : e->orig;
     if (orig == NO_ORIG)
         return 0;
     /* the path direction of the edge: w == -1 means upwards */
@@ -247,6 +248,17 @@ int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, s
             g->E[ne].w = (int8_t)(g->E[ne].w * (e->w < 0 ? -e->w : e->w));
     }
     return 1;
+}
+
+/* (the two helpers above, for complete snap rounding; inlined here) */
+void boolean_sort_along(split_sort *a, size_t n)
+{
+    sort_along(a, n);
+}
+
+int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m)
+{
+    return add_pieces_along(g, e, pts, m);
 }
 
 /* Replaces every edge that has split points by its pieces: map[old edge]
@@ -307,10 +319,10 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
             i128 t = (i128)(x - e.xb) * dx + (i128)(y - e.yb) * dy;
             buf[m++] = (split_sort){x, y, t};
         }
-        boolean_sort_along(buf + 1, m - 1);
+        sort_along(buf + 1, m - 1);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[ei] = 1;
-        if (!boolean_add_pieces_along(g, &e, buf, m))
+        if (!add_pieces_along(g, &e, buf, m))
             goto fail;
         i = j;
     }

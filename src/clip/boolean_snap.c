@@ -379,17 +379,8 @@ static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t
         ok = boolean_add_pieces_along(g, &e, buf, m) && merge_pieces(g, &pieces, from) &&
              merge_horizontals(g, &horizontals, hfrom);
     }
-    if (ok) { /* the edges kept, then the pieces */
-        size_t w = 0;
-        for (size_t i = 0; i < old_ne; i++) {
-            map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
-            if (!dead[i])
-                g->E[w++] = g->E[i];
-        }
-        *kept = w;
-        for (size_t i = old_ne; i < g->ne; i++)
-            g->E[w++] = g->E[i];
-        g->ne = w;
+    if (ok) {
+        *kept = boolean_drop_split_edges(g, old_ne, dead, map);
         drop_cancelled(g, *kept);
     }
     if (buf != small)

@@ -261,6 +261,21 @@ int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, s
     return add_pieces_along(g, e, pts, m);
 }
 
+size_t boolean_drop_split_edges(engine *g, size_t old_ne, const unsigned char *dead, uint32_t *map)
+{
+    size_t w = 0;
+    for (size_t i = 0; i < old_ne; i++) {
+        map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
+        if (!dead[i])
+            g->E[w++] = g->E[i];
+    }
+    size_t kept = w;
+    for (size_t i = old_ne; i < g->ne; i++)
+        g->E[w++] = g->E[i];
+    g->ne = w;
+    return kept;
+}
+
 /* Replaces every edge that has split points by its pieces: map[old edge]
  * receives its new index, or UINT32_MAX when it was split
  * (the pieces come after the edges kept, in g->E[*kept..]); mem (cap
@@ -328,17 +343,7 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
     }
     if (buf != small)
         free(buf);
-    /* compact */
-    size_t w = 0;
-    for (size_t i = 0; i < old_ne; i++) {
-        map[i] = dead[i] ? UINT32_MAX : (uint32_t)w;
-        if (!dead[i])
-            g->E[w++] = g->E[i];
-    }
-    *kept = w;
-    for (size_t i = old_ne; i < g->ne; i++)
-        g->E[w++] = g->E[i];
-    g->ne = w;
+    *kept = boolean_drop_split_edges(g, old_ne, dead, map);
     g->ns = 0;
     free(own);
     return 1;

@@ -7,7 +7,7 @@
 
 /* the pixel walk: up to this many pixels of edge per hot point (beyond, the
  * cells of the hot-pixel grid: boolean_add_hot_pixel_splits) */
-#define PIXEL_WALK 64
+#define PIXEL_WALK 16
 
 /* The hot points, within the bounds of the edges (where every hot point
  * is): a bit per grid point of the bounds when these are small against the

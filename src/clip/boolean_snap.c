@@ -391,6 +391,36 @@ static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t
     return ok;
 }
 
+/* The split points and run breaks, once in the hot set: their arrays given
+ * back (the next passes have few; the less a call holds at once, the less
+ * of the heap the C library gives back and takes again on every call) */
+static void release_hot_sources(engine *g)
+{
+    if (!g->S_small) { /* (small inputs keep theirs: it may be the caller's) */
+        free(g->S);
+        g->S = NULL;
+        g->caps = 0;
+    }
+    g->ns = 0;
+    free(g->M);
+    g->M = NULL;
+    g->nm = g->capm = 0;
+}
+
+/* the edges' array cut to their number and a little (the merged pieces are
+ * a fraction of the snapped ones it grew for) */
+static void shrink_edges(engine *g)
+{
+    size_t want = g->ne + g->ne / 4 + 64;
+    if (g->E == g->E_small || g->cape <= 2 * want)
+        return;
+    bedge *e = realloc(g->E, want * sizeof *e);
+    if (e) {
+        g->E = e;
+        g->cape = want;
+    }
+}
+
 int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
 {
     double length = 0; /* of the edges, in pixels */
@@ -407,9 +437,12 @@ int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, siz
             free(h.slot);
             return 0;
         }
+        release_hot_sources(g);
         int ok = snap_by_pixel_walk(g, &h, map, kept, mem, cap);
         free(h.bits);
         free(h.slot);
+        if (ok)
+            shrink_edges(g);
         return ok;
     }
     /* long edges: each looks at the cells of the hot-pixel grid along it */

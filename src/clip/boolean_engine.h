@@ -218,6 +218,9 @@ typedef struct keyval { uint64_t key; uint32_t val; } keyval;
  * holds n keyvals, tmp n or is NULL.  0 when out of memory. */
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp);
+/* a[0..n) in ascending order, branch-free: n a power of two >= 4, tmp
+ * holds n (shorter arrays are padded with UINT64_MAX) */
+void boolean_sort_pow2(uint64_t *a, size_t n, uint64_t *tmp);
 /* qsort, by straight insertion when n is small */
 void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *, const void *));
 

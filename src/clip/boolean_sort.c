@@ -2,6 +2,63 @@
  * edges and pieces by two integer keys, and qsort for a few records. */
 #include "boolean_engine.h"
 
+/* a[i] and a[j] (i < j) in order, branch-free */
+static inline void order_two(uint64_t *a, size_t i, size_t j)
+{
+    uint64_t p = a[i], q = a[j];
+    a[i] = p < q ? p : q;
+    a[j] = p < q ? q : p;
+}
+
+/* out[0..2m) = the sorted x[0..m) and y[0..m) merged, m steps from the
+ * front taking the lesser key and m from the back taking the greater: two
+ * equal runs need no bounds checks (after s steps from the front, s keys
+ * are taken from the two), and the two ends are independent chains of work.
+ * Each step is branch-free: on the few keys of small inputs which side a
+ * key comes from is as good as random, and a branch would often be
+ * mispredicted. */
+static inline void merge_equal(const uint64_t *x, const uint64_t *y, size_t m, uint64_t *out)
+{
+    const uint64_t *xb = x + m - 1, *yb = y + m - 1;
+    uint64_t *ob = out + 2 * m - 1;
+    for (size_t s = 0; s < m; s++) {
+        uint64_t p = *x, q = *y;
+        size_t lesser = p <= q;
+        *out++ = lesser ? p : q;
+        x += lesser;
+        y += 1 - lesser;
+        uint64_t pb = *xb, qb = *yb;
+        size_t greater = pb > qb;
+        *ob-- = greater ? pb : qb;
+        xb -= greater;
+        yb -= 1 - greater;
+    }
+}
+
+/* a[0..n) in ascending order, branch-free: n a power of two >= 4, tmp
+ * holds n (shorter arrays are padded with UINT64_MAX) */
+static void sort_pow2(uint64_t *a, size_t n, uint64_t *tmp)
+{
+    /* blocks of 4 by a sorting network, then merged bottom-up */
+    for (size_t i = 0; i < n; i += 4) {
+        order_two(a, i, i + 1);
+        order_two(a, i + 2, i + 3);
+        order_two(a, i, i + 2);
+        order_two(a, i + 1, i + 3);
+        order_two(a, i + 1, i + 2);
+    }
+    uint64_t *src = a, *dst = tmp;
+    for (size_t w = 4; w < n; w *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * w)
+            merge_equal(src + lo, src + lo + w, w, dst + lo);
+        uint64_t *x = src;
+        src = dst;
+        dst = x;
+    }
+    if (src != a)
+        memcpy(a, src, n * sizeof *a);
+}
+
 /* v put into a[0..i), in order by key, after the equal keys: a[0..i] in
  * order */
 static inline void insert_key(keyval *a, size_t i, keyval v)
@@ -209,18 +266,56 @@ static ALWAYS_INLINE int insert_by_k2(const int64_t *k2, size_t stride, keyval *
 #undef KEY
 }
 
+/* boolean_sort_two_keys through one 63-bit key per record when n <= 64:
+ * k1 and k2, each relative to record 0's, in 29 and 28 bits, then the index
+ * in 6.  1 when the keys' spreads allow, else 0 (idx not written). */
+static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
+                       uint32_t *idx)
+{
+    uint64_t key[64], tmp[64];
+    const char *r1 = (const char *)k1, *r2 = (const char *)k2;
+    uint64_t base1 = (uint64_t)*k1 - ((uint64_t)1 << 28),
+             base2 = (uint64_t)*k2 - ((uint64_t)1 << 27);
+    uint64_t out = 0; /* bits beyond the fields */
+    for (size_t i = 0; i < n; i++, r1 += stride, r2 += stride) {
+        uint64_t d1 = (uint64_t)*(const int64_t *)r1 - base1,
+                 d2 = (uint64_t)*(const int64_t *)r2 - base2;
+        out |= d1 >> 29 | d2 >> 28;
+        key[i] = d1 << 34 | d2 << 6 | i;
+    }
+    if (out)
+        return 0;
+    size_t m = 4;
+    while (m < n)
+        m *= 2;
+    for (size_t i = n; i < m; i++)
+        key[i] = UINT64_MAX; /* (after every key) */
+    sort_pow2(key, m, tmp);
+    for (size_t i = 0; i < n; i++)
+        idx[i] = (uint32_t)(key[i] & 63);
+    return 1;
+}
+
+/* sort_packed is used from PACKED_MIN records (below, straight insertion
+ * costs less) to 64 */
+#define PACKED_MIN 16
+
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
- * NULL.  The natural runs merged when they are few (sort_runs), else a
- * radix sort by k1, then each run of equal k1 by k2 (straight insertion; a
- * run of more than RADIX_RUN records radix sorted once insertion has moved
- * records as many times as it has records: on coarse grids hundreds of
- * pieces start on one scanline in no order, and insertion is quadratic). */
+ * NULL.  From PACKED_MIN to 64 records, one key each, sorted branch-free,
+ * when the keys' spreads fit (sort_packed).  Else the natural runs merged
+ * when they are few (sort_runs), else a radix sort by k1, then each run of
+ * equal k1 by k2 (straight insertion; a run of more than RADIX_RUN records
+ * radix sorted once insertion has moved records as many times as it has
+ * records: on coarse grids hundreds of pieces start on one scanline in no
+ * order, and insertion is quadratic). */
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp)
 {
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
+        return 1;
+    if (n >= PACKED_MIN && n <= 64 && sort_packed(k1, k2, stride, n, idx))
         return 1;
     if (n <= 32) { /* few: straight insertion (stable: ties by index) */
         for (size_t i = 0; i < n; i++) {

@@ -283,11 +283,12 @@ static inline int64_t ceil_i64(double v)
     return t + (v > (double)t);
 }
 
-/* whether hot point (px, py) is in h, (px, py) within its bounds */
-static inline int hot_at(const hot_set *h, int64_t px, int64_t py)
+/* whether hot point (px, py) is in h, (px, py) within its bounds; row is
+ * (py - y0) * width - x0, the bitmap's index of (0, py) (modulo 2^64) */
+static inline int hot_at(const hot_set *h, uint64_t row, int64_t px, int64_t py)
 {
     if (h->bits) {
-        uint64_t b = (uint64_t)(py - h->y0) * h->width + (uint64_t)(px - h->x0);
+        uint64_t b = row + (uint64_t)px;
         return (int)(h->bits[b >> 6] >> (b & 63)) & 1;
     }
     return hot_set_has(h, px, py);
@@ -317,9 +318,10 @@ static size_t walk_pixels(const bedge *e, const hot_set *h, split_sort **buf, si
         /* (the hot points are within the edges' bounds) */
         int64_t q0 = p0 > h->x0 ? p0 : h->x0, q1 = p1 < h->x1 ? p1 : h->x1;
         int end_row = py == e->yb || py == e->yt;
+        uint64_t row = (uint64_t)(py - h->y0) * h->width - (uint64_t)h->x0;
         for (int64_t k = 0; k <= q1 - q0; k++) {
             int64_t px = right ? q0 + k : q1 - k;
-            if (!hot_at(h, px, py) ||
+            if (!hot_at(h, row, px, py) ||
                 (end_row && ((px == e->xb && py == e->yb) || (px == e->xt && py == e->yt))))
                 continue;
             /* between p0 and p1, the edge's x over the row overlaps the

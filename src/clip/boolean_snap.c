@@ -414,7 +414,7 @@ static void release_hot_sources(engine *g)
 static void shrink_edges(engine *g)
 {
     size_t want = g->ne + g->ne / 4 + 64;
-    if (g->E == g->E_small || g->cape <= 2 * want)
+    if (g->E == g->E_small || g->cape <= want + want / 4)
         return;
     bedge *e = realloc(g->E, want * sizeof *e);
     if (e) {

@@ -395,14 +395,14 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
 
 /* the helpers of the splits, shared with complete snap rounding: a[0..n) in
  * order along their edge; the hot points of complete snap rounding (the
- * split points, the edges' ends, g->M; NULL when out of memory); the pieces
- * of e between its points pts[0..m) (in order from its bottom), added to g
- * (0 when out of memory); the edges g->E[0..old_ne) marked dead dropped,
- * the rest moved down with the pieces after them (map[old edge]: its new
- * index or UINT32_MAX; the number kept returned) */
+ * split points, the edges' ends, g->M; NULL when out of memory); the input
+ * edge e's pieces take (e itself noted when it is one; NO_ORIG when out of
+ * memory); the edges g->E[0..old_ne) marked dead dropped, the rest moved
+ * down with the pieces after them (map[old edge]: its new index or
+ * UINT32_MAX; the number kept returned) */
 void boolean_sort_along(split_sort *a, size_t n);
 splitpt *boolean_complete_hot_points(const engine *g, size_t *n);
-int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m);
+uint32_t boolean_orig_of(engine *g, const bedge *e);
 size_t boolean_drop_split_edges(engine *g, size_t old_ne, const unsigned char *dead, uint32_t *map);
 
 /* Complete snap rounding (boolean_snap.c), in place of the hot pixels'

@@ -152,111 +152,145 @@ static int hot_set_build(hot_set *h, const engine *g)
     return ok;
 }
 
-/* Records made so far, by content: open addressing on a record's index + 1
- * (0 when free), grown to stay at most half full; the hash of a record by
- * its index, for the growth. */
-typedef struct rec_index {
+/* The pieces made so far (of g->E or g->H), by content: open addressing on
+ * an index + 1 (0 when free), at most half full */
+typedef struct made_index {
     uint32_t *slot;
-    size_t cap, count;
-} rec_index;
+    size_t mask, count;
+} made_index;
 
-static int index_room(rec_index *x, const void *base, size_t (*hash)(const void *, size_t, size_t))
+static inline size_t piece_key(int64_t xb, int64_t yb, int64_t xt, int64_t yt, unsigned op,
+                               size_t mask)
 {
-    if (2 * (x->count + 1) <= x->cap)
+    uint64_t h = (uint64_t)xb * 0x9e3779b97f4a7c15u;
+    h = (h ^ (uint64_t)yb) * 0xff51afd7ed558ccdu;
+    h = (h ^ (uint64_t)xt) * 0xc4ceb9fe1a85ec53u;
+    return key_hash(h ^ (uint64_t)yt ^ op, mask);
+}
+
+static inline size_t horizontal_key(int64_t y, int64_t x0, int64_t x1, size_t mask)
+{
+    uint64_t h = ((uint64_t)y * 0x9e3779b97f4a7c15u ^ (uint64_t)x0) * 0xff51afd7ed558ccdu;
+    return key_hash(h ^ (uint64_t)x1, mask);
+}
+
+/* room in x for `more` records (of g->E when `pieces`, else of g->H): 0
+ * when out of memory */
+static int index_room(made_index *x, const engine *g, int pieces, size_t more)
+{
+    if (2 * (x->count + more) <= x->mask + 1 && x->slot)
         return 1;
-    size_t cap = x->cap ? 2 * x->cap : 1024;
+    size_t cap = x->slot ? 2 * (x->mask + 1) : 1024;
+    while (cap < 2 * (x->count + more))
+        cap *= 2;
     uint32_t *slot = calloc(cap, sizeof *slot);
     if (!slot)
         return 0;
-    for (size_t i = 0; i < x->cap; i++) {
-        if (!x->slot[i])
+    for (size_t i = 0; x->slot && i <= x->mask; i++) {
+        uint32_t r = x->slot[i];
+        if (!r)
             continue;
-        size_t h = hash(base, x->slot[i] - 1, cap);
+        size_t h;
+        if (pieces) {
+            const bedge *e = &g->E[r - 1];
+            h = piece_key(e->xb, e->yb, e->xt, e->yt, e->op, cap - 1);
+        } else {
+            const hseg *e = &g->H[r - 1];
+            h = horizontal_key(e->y, e->x0, e->x1, cap - 1);
+        }
         while (slot[h])
             h = (h + 1) & (cap - 1);
-        slot[h] = x->slot[i];
+        slot[h] = r;
     }
     free(x->slot);
     x->slot = slot;
-    x->cap = cap;
+    x->mask = cap - 1;
     return 1;
 }
 
-static size_t piece_hash(const void *base, size_t i, size_t cap)
+/* Horizontal edge (y, x0..x1) added to g->H unless it is there (it carries
+ * no winding: a copy adds nothing); x has room.  0 when out of memory. */
+static int add_horizontal_once(engine *g, made_index *x, int64_t y, int64_t x0, int64_t x1)
 {
-    const bedge *e = (const bedge *)base + i;
-    uint64_t h = (uint64_t)e->xb * 0x9e3779b97f4a7c15u;
-    h = (h ^ (uint64_t)e->yb) * 0xff51afd7ed558ccdu;
-    h = (h ^ (uint64_t)e->xt) * 0xc4ceb9fe1a85ec53u;
-    return key_hash(h ^ (uint64_t)e->yt ^ e->op, cap - 1);
+    size_t h = horizontal_key(y, x0, x1, x->mask);
+    for (uint32_t r; (r = x->slot[h]); h = (h + 1) & x->mask) {
+        const hseg *o = &g->H[r - 1];
+        if (o->y == y && o->x0 == x0 && o->x1 == x1)
+            return 1;
+    }
+    GROW(g->H, g->nh, g->caph, return 0);
+    g->H[g->nh++] = (hseg){y, x0, x1};
+    x->slot[h] = (uint32_t)g->nh;
+    x->count++;
+    return 1;
 }
 
-static inline int same_piece(const bedge *a, const bedge *b)
+/* The pieces of edge e between its points pts[0..m) (in order from its
+ * bottom), each counted into the piece made before with its ends and
+ * operand, when there is one, else added (horizontal ones once): the
+ * splits' pieces of an edge (boolean_split.c), without making the copies
+ * first.  0 when out of memory. */
+static int add_merged_pieces(engine *g, const bedge *e, const split_sort *pts, size_t m,
+                             made_index *pieces, made_index *horizontals)
 {
-    return a->xb == b->xb && a->yb == b->yb && a->xt == b->xt && a->yt == b->yt && a->op == b->op;
-}
-
-/* The pieces g->E[from..ne) merged with the ones indexed, each kept once
- * (the survivors moved down in order): 0 when out of memory.  Windings
- * beyond int8 stay apart. */
-static int merge_pieces(engine *g, rec_index *x, size_t from)
-{
-    bedge *E = g->E;
-    size_t w = from;
-    for (size_t i = from; i < g->ne; i++) {
-        if (!index_room(x, E, piece_hash))
-            return 0;
-        size_t h = piece_hash(E, i, x->cap);
-        while (x->slot[h] && !same_piece(&E[x->slot[h] - 1], &E[i]))
-            h = (h + 1) & (x->cap - 1);
-        if (x->slot[h]) {
-            bedge *m = &E[x->slot[h] - 1];
-            int sum = m->w + E[i].w;
+    uint32_t orig = boolean_orig_of(g, e);
+    if (orig == NO_ORIG || !index_room(pieces, g, 1, m) || !index_room(horizontals, g, 0, m))
+        return 0;
+    int count = e->w < 0 ? -e->w : e->w;
+    for (size_t k = 0; k + 1 < m; k++) {
+        split_sort p = pts[k], q = pts[k + 1];
+        if (p.x == q.x && p.y == q.y)
+            continue;
+        if (p.y == q.y) {
+            if (!add_horizontal_once(g, horizontals, p.y, p.x < q.x ? p.x : q.x,
+                                     p.x < q.x ? q.x : p.x))
+                return 0;
+            continue;
+        }
+        /* the path runs from p to q (up the edge's points when w < 0) */
+        int up = (e->w < 0) == (p.y < q.y);
+        split_sort lo = p.y < q.y ? p : q, hi = p.y < q.y ? q : p;
+        int8_t w = (int8_t)(up ? -count : count);
+        size_t h = piece_key(lo.x, lo.y, hi.x, hi.y, e->op, pieces->mask);
+        uint32_t r;
+        for (; (r = pieces->slot[h]); h = (h + 1) & pieces->mask) {
+            const bedge *o = &g->E[r - 1];
+            if (o->xb == lo.x && o->yb == lo.y && o->xt == hi.x && o->yt == hi.y && o->op == e->op)
+                break;
+        }
+        if (r) {
+            bedge *o = &g->E[r - 1];
+            int sum = o->w + w;
             if (sum >= -127 && sum <= 127) {
-                m->w = (int8_t)sum;
-                if (m->orig != E[i].orig)
-                    m->orig = NO_ORIG; /* (rounded on itself, if ever split) */
+                o->w = (int8_t)sum;
+                if (o->orig != orig)
+                    o->orig = NO_ORIG; /* (rounded on itself, if ever split) */
                 continue;
             }
+            /* (a winding beyond int8: kept apart) */
         }
-        E[w] = E[i];
-        if (!x->slot[h]) {
-            x->slot[h] = (uint32_t)(w + 1);
-            x->count++;
+        GROW_SMALL(g->E, g->ne, g->cape, g->E_small, return 0);
+        g->E[g->ne] = (bedge){lo.x, lo.y, hi.x, hi.y,
+                              (double)(hi.x - lo.x) / (double)(hi.y - lo.y), orig, w, e->op};
+        g->ne++;
+        if (!r) {
+            pieces->slot[h] = (uint32_t)g->ne;
+            pieces->count++;
         }
-        w++;
     }
-    g->ne = w;
     return 1;
 }
 
-static size_t horizontal_hash(const void *base, size_t i, size_t cap)
+/* g->H with each horizontal edge once, indexed in x: 0 when out of memory */
+static int index_horizontals(engine *g, made_index *x)
 {
-    const hseg *e = (const hseg *)base + i;
-    uint64_t h = ((uint64_t)e->y * 0x9e3779b97f4a7c15u ^ (uint64_t)e->x0) * 0xff51afd7ed558ccdu;
-    return key_hash(h ^ (uint64_t)e->x1, cap - 1);
-}
-
-/* The horizontal edges g->H[from..nh) each kept once with the ones indexed
- * (they carry no winding: a copy adds nothing): 0 when out of memory */
-static int merge_horizontals(engine *g, rec_index *x, size_t from)
-{
-    hseg *H = g->H;
-    size_t w = from;
-    for (size_t i = from; i < g->nh; i++) {
-        if (!index_room(x, H, horizontal_hash))
+    size_t n = g->nh;
+    g->nh = 0;
+    if (!index_room(x, g, 0, n))
+        return 0;
+    for (size_t i = 0; i < n; i++) /* (moved down in order; the room is there) */
+        if (!add_horizontal_once(g, x, g->H[i].y, g->H[i].x0, g->H[i].x1))
             return 0;
-        size_t h = horizontal_hash(H, i, x->cap);
-        while (x->slot[h] && !(H[x->slot[h] - 1].y == H[i].y && H[x->slot[h] - 1].x0 == H[i].x0 &&
-                               H[x->slot[h] - 1].x1 == H[i].x1))
-            h = (h + 1) & (x->cap - 1);
-        if (x->slot[h])
-            continue;
-        H[w] = H[i];
-        x->slot[h] = (uint32_t)(++w);
-        x->count++;
-    }
-    g->nh = w;
     return 1;
 }
 
@@ -360,12 +394,12 @@ static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t
 {
     size_t old_ne = g->ne;
     g->ns = 0;
-    rec_index pieces = {0}, horizontals = {0};
+    made_index pieces = {0}, horizontals = {0};
     unsigned char *own = old_ne > cap || !mem ? calloc(old_ne + 1, 1) : NULL;
     unsigned char *dead = own ? own : mem;
     split_sort small[64], *buf = small;
     size_t capbuf = sizeof small / sizeof small[0];
-    int ok = dead != NULL && merge_horizontals(g, &horizontals, 0);
+    int ok = dead != NULL && index_horizontals(g, &horizontals);
     if (ok && !own)
         memset(dead, 0, old_ne);
     for (size_t i = 0; ok && i < old_ne; i++) {
@@ -377,9 +411,7 @@ static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t
         boolean_sort_along(buf + 1, m - 1);
         buf[m++] = (split_sort){e.xt, e.yt, 0};
         dead[i] = 1;
-        size_t from = g->ne, hfrom = g->nh;
-        ok = boolean_add_pieces_along(g, &e, buf, m) && merge_pieces(g, &pieces, from) &&
-             merge_horizontals(g, &horizontals, hfrom);
+        ok = add_merged_pieces(g, &e, buf, m, &pieces, &horizontals);
     }
     if (ok) {
         *kept = boolean_drop_split_edges(g, old_ne, dead, map);

@@ -227,11 +227,18 @@ static uint32_t add_orig(engine *g, const bedge *e)
     return (uint32_t)g->no++;
 }
 
+/* the input edge of e's pieces: e's own, or e itself noted (NO_ORIG when
+ * out of memory) */
+static inline uint32_t orig_of(engine *g, const bedge *e)
+{
+    return e->orig == NO_ORIG ? add_orig(g, e) : e->orig;
+}
+
 static ALWAYS_INLINE int add_pieces_along(engine *g, const bedge *e, const split_sort *pts,
                                           size_t m)
 {
     /* the input edge of the pieces */
-    uint32_t orig = e->orig == NO_ORIG ? add_orig(g, e) : e->orig;
+    uint32_t orig = orig_of(g, e);
     if (orig == NO_ORIG)
         return 0;
     /* the path direction of the edge: w == -1 means upwards */
@@ -250,15 +257,15 @@ static ALWAYS_INLINE int add_pieces_along(engine *g, const bedge *e, const split
     return 1;
 }
 
-/* (the two helpers above, for complete snap rounding; inlined here) */
+uint32_t boolean_orig_of(engine *g, const bedge *e)
+{
+    return orig_of(g, e);
+}
+
+/* (for complete snap rounding; inlined here) */
 void boolean_sort_along(split_sort *a, size_t n)
 {
     sort_along(a, n);
-}
-
-int boolean_add_pieces_along(engine *g, const bedge *e, const split_sort *pts, size_t m)
-{
-    return add_pieces_along(g, e, pts, m);
 }
 
 size_t boolean_drop_split_edges(engine *g, size_t old_ne, const unsigned char *dead, uint32_t *map)

@@ -389,12 +389,18 @@ static size_t walk_pixels(const bedge *e, const hot_set *h, split_sort **buf, si
 /* Each edge's pixels walked, its pieces added and merged at once: the cost
  * follows the edges' lengths in grid units (bounded by the caller), and no
  * split point is stored. */
-static int snap_by_pixel_walk(engine *g, const hot_set *h, uint32_t *map, size_t *kept,
-                              void *mem, size_t cap)
+static int snap_by_pixel_walk(engine *g, const hot_set *h, size_t expect, uint32_t *map,
+                              size_t *kept, void *mem, size_t cap)
 {
     size_t old_ne = g->ne;
     g->ns = 0;
     made_index pieces = {0}, horizontals = {0};
+    /* (sized at once for about as many pieces as the crossings' split
+     * points, of which coincide most) */
+    if (!index_room(&pieces, g, 1, expect / 2) || !index_room(&horizontals, g, 0, expect / 4)) {
+        free(pieces.slot);
+        return 0;
+    }
     unsigned char *own = old_ne > cap || !mem ? calloc(old_ne + 1, 1) : NULL;
     unsigned char *dead = own ? own : mem;
     split_sort small[64], *buf = small;
@@ -471,8 +477,9 @@ int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, siz
             free(h.slot);
             return 0;
         }
+        size_t expect = g->ns;
         release_hot_sources(g);
-        int ok = snap_by_pixel_walk(g, &h, map, kept, mem, cap);
+        int ok = snap_by_pixel_walk(g, &h, expect, map, kept, mem, cap);
         free(h.bits);
         free(h.slot);
         if (ok)

@@ -300,6 +300,43 @@ static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size
  * costs less) to 64 */
 #define PACKED_MIN 16
 
+/* At most this many bits for k1 and k2 together: one radix sort on the two
+ * (two passes of 11-bit digits), as on a coarse grid, where a few hundred
+ * scanlines hold thousands of pieces each */
+#define COMBINED_BITS 22
+
+/* a[0..n) (k1 - its least, < 2^COMBINED_BITS, in a[].key; all is their OR)
+ * in stable order by (k1, k2) through one key of both, when k2's spread
+ * fits beside: 1; -1 when it does not (a[] unchanged); 0 when out of
+ * memory. */
+static int sort_combined(const int64_t *k2, size_t stride, size_t n, keyval *a, keyval *tmp,
+                         uint64_t all)
+{
+#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
+    int bits1 = 0;
+    while (bits1 < 64 && (all >> bits1))
+        bits1++;
+    int64_t lo2 = KEY(k2, a[0].val), hi2 = lo2;
+    for (size_t i = 1; i < n; i++) {
+        int64_t b = KEY(k2, a[i].val);
+        lo2 = b < lo2 ? b : lo2;
+        hi2 = b > hi2 ? b : hi2;
+    }
+    uint64_t span2 = (uint64_t)hi2 - (uint64_t)lo2;
+    int bits2 = 0;
+    while (bits2 < 64 && (span2 >> bits2))
+        bits2++;
+    if (bits1 + bits2 > COMBINED_BITS)
+        return -1;
+    uint64_t both = 0;
+    for (size_t i = 0; i < n; i++) {
+        a[i].key = a[i].key << bits2 | (uint64_t)(KEY(k2, a[i].val) - lo2);
+        both |= a[i].key;
+    }
+    return radix_sort_all(a, n, tmp, both);
+#undef KEY
+}
+
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
  * int64 fields of records `stride` bytes apart); scratch of n, tmp of n or
  * NULL.  From PACKED_MIN to 64 records, one key each, sorted branch-free,
@@ -344,6 +381,15 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
     for (size_t i = 0; i < n; i++) {
         scratch[i].key -= (uint64_t)lo1;
         all |= scratch[i].key;
+    }
+    /* (tried when k1 leaves k2 six bits or more: else the look at k2's
+     * spread is mostly wasted) */
+    int combined = all < ((uint64_t)1 << (COMBINED_BITS - 6))
+                       ? sort_combined(k2, stride, n, scratch, tmp, all) : -1;
+    if (combined >= 0) {
+        for (size_t i = 0; combined && i < n; i++)
+            idx[i] = scratch[i].val;
+        return combined;
     }
     if (!radix_sort_all(scratch, n, tmp, all))
         return 0;

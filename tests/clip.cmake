@@ -11,3 +11,22 @@ if(CG_GEOS_C_LIBRARY AND CG_GEOS_C_INCLUDE)
 else()
   message(STATUS "GEOS (libgeos-dev) not found: skipping test_clip_geos")
 endif()
+
+# Boolean operations when memory runs out: the test wraps the C library's
+# allocation functions (GNU ld's --wrap) to make each of libcg's allocations
+# fail in turn.
+include(CheckCSourceCompiles)
+set(CMAKE_REQUIRED_LINK_OPTIONS "-Wl,--wrap=malloc")
+check_c_source_compiles("#include <stdlib.h>
+void *__real_malloc(size_t); void *__wrap_malloc(size_t n) { return __real_malloc(n); }
+int main(void) { free(malloc(1)); return 0; }" CG_LINKER_WRAPS)
+unset(CMAKE_REQUIRED_LINK_OPTIONS)
+if(CG_LINKER_WRAPS)
+  add_executable(clip_oom ${CMAKE_CURRENT_LIST_DIR}/clip_oom.c)
+  target_compile_options(clip_oom PRIVATE ${CG_WARNINGS})
+  target_link_libraries(clip_oom PRIVATE cg_static)
+  target_link_options(clip_oom PRIVATE -Wl,--wrap=malloc -Wl,--wrap=calloc -Wl,--wrap=realloc)
+  add_test(NAME test_clip_oom COMMAND clip_oom)
+else()
+  message(STATUS "the linker has no --wrap: skipping test_clip_oom")
+endif()

@@ -33,14 +33,9 @@ static inline uint64_t hot_key(const hot_set *h, int64_t x, int64_t y)
     return (uint64_t)(y - h->y0) << 32 | (uint64_t)(x - h->x0);
 }
 
-static int hot_set_has(const hot_set *h, int64_t x, int64_t y)
+/* whether the hash set has hot point (x, y), within its bounds */
+NOINLINE static int hot_hash_has(const hot_set *h, int64_t x, int64_t y)
 {
-    if (x < h->x0 || x > h->x1 || y < h->y0 || y > h->y1)
-        return 0;
-    if (h->bits) {
-        uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
-        return (int)(h->bits[b >> 6] >> (b & 63)) & 1;
-    }
     uint64_t k = hot_key(h, x, y);
     for (size_t i = key_hash(k, h->mask);; i = (i + 1) & h->mask) {
         if (h->slot[i] == k)
@@ -325,7 +320,7 @@ static inline int hot_at(const hot_set *h, uint64_t row, int64_t px, int64_t py)
         uint64_t b = row + (uint64_t)px;
         return (int)(h->bits[b >> 6] >> (b & 63)) & 1;
     }
-    return hot_set_has(h, px, py);
+    return hot_hash_has(h, px, py);
 }
 
 /* The hot pixels edge e meets, in buf after its bottom (t ordering them

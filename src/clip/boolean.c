@@ -42,18 +42,6 @@
  * share. */
 #include "boolean_engine.h"
 
-void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size)
-{
-    size_t c = *cap ? *cap * 2 : 32;
-    void *p = arr == small ? malloc(c * size) : realloc(arr, c * size);
-    if (!p)
-        return NULL;
-    if (arr == small && n)
-        memcpy(p, arr, n * size);
-    *cap = c;
-    return p;
-}
-
 int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
                          size_t size)
 {
@@ -67,6 +55,12 @@ int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, s
     *arr = p;
     *cap = need;
     return 1;
+}
+
+void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size)
+{
+    void *p = arr;
+    return boolean_reserve_from(&p, small, n, cap, *cap ? *cap * 2 : 32, size) ? p : NULL;
 }
 
 int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,

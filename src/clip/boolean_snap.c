@@ -364,15 +364,10 @@ static size_t walk_pixels(const bedge *e, const hot_set *h, split_sort **buf, si
                     continue;
             }
             if (m + 2 > *cap) { /* (and room for the top) */
-                size_t c = 2 * *cap;
-                split_sort *nb = *buf == small ? malloc(c * sizeof *nb)
-                                               : realloc(*buf, c * sizeof *nb);
+                split_sort *nb = boolean_grow_from(*buf, small, m, cap, sizeof *nb);
                 if (!nb)
                     return 0;
-                if (*buf == small)
-                    memcpy(nb, small, m * sizeof *nb);
                 *buf = nb;
-                *cap = c;
             }
             i128 t = (i128)(px - e->xb) * dx + (i128)(py - e->yb) * dy;
             (*buf)[m++] = (split_sort){px, py, t};

@@ -393,9 +393,33 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
     return pos && neg;
 }
 
+/* The hot points of complete snap rounding: the split points, the edges'
+ * ends (horizontal ones too) and the grid points where the sweep broke runs
+ * (g->M).  How many, repeats counted; and add(ctx, x, y) for each of them,
+ * 0 when an add gave 0 (inlined with a constant add, at no cost). */
+static inline size_t boolean_hot_point_count(const engine *g)
+{
+    return g->ns + 2 * (g->ne + g->nh) + g->nm;
+}
+
+static inline int boolean_each_hot_point(const engine *g, int (*add)(void *, int64_t, int64_t),
+                                         void *ctx)
+{
+    int ok = 1;
+    for (size_t k = 0; k < g->ns; k++)
+        ok &= add(ctx, g->S[k].x, g->S[k].y);
+    for (size_t i = 0; i < g->ne; i++)
+        ok &= add(ctx, g->E[i].xb, g->E[i].yb) & add(ctx, g->E[i].xt, g->E[i].yt);
+    for (size_t i = 0; i < g->nh; i++)
+        ok &= add(ctx, g->H[i].x0, g->H[i].y) & add(ctx, g->H[i].x1, g->H[i].y);
+    for (size_t i = 0; i < g->nm; i++)
+        ok &= add(ctx, g->M[i].x, g->M[i].y);
+    return ok;
+}
+
 /* the helpers of the splits, shared with complete snap rounding: a[0..n) in
- * order along their edge; the hot points of complete snap rounding (the
- * split points, the edges' ends, g->M; NULL when out of memory); the input
+ * order along their edge; the hot points above in an array (NULL when out
+ * of memory); the input
  * edge e's pieces take (e itself noted when it is one; NO_ORIG when out of
  * memory); the edges g->E[0..old_ne) marked dead dropped, the rest moved
  * down with the pieces after them (map[old edge]: its new index or
@@ -407,7 +431,7 @@ size_t boolean_drop_split_edges(engine *g, size_t old_ne, const unsigned char *d
 
 /* Complete snap rounding (boolean_snap.c), in place of the hot pixels'
  * splits and their application (same map and kept): every edge routed
- * through each hot pixel of boolean_complete_hot_points it meets.  When the
+ * through each hot pixel of boolean_each_hot_point it meets.  When the
  * edges are short in grid units (a coarse grid, where many pieces then
  * coincide), the pieces of one operand with the same ends are made one,
  * their windings added (dropped when these cancel).  0 when out of memory. */

@@ -85,8 +85,9 @@ NOINLINE static int hot_hash_add(hot_set *h, int64_t x, int64_t y)
     return 1;
 }
 
-static inline int hot_set_add(hot_set *h, int64_t x, int64_t y)
+static inline int hot_set_add(void *set, int64_t x, int64_t y)
 {
+    hot_set *h = set;
     if (!h->bits)
         return hot_hash_add(h, x, y);
     uint64_t b = (uint64_t)(y - h->y0) * h->width + (uint64_t)(x - h->x0);
@@ -94,14 +95,17 @@ static inline int hot_set_add(hot_set *h, int64_t x, int64_t y)
     return 1;
 }
 
-/* the bounds of the edges (horizontal ones too) */
-static void edge_bounds(const engine *g, hot_set *h)
+/* the bounds of the edges (horizontal ones too), and the edges' length in
+ * pixels (returned) */
+static double edge_bounds(const engine *g, hot_set *h)
 {
+    double length = 0;
     h->x0 = h->y0 = INT64_MAX;
     h->x1 = h->y1 = INT64_MIN;
     for (size_t i = 0; i < g->ne; i++) {
         const bedge *e = &g->E[i];
         int64_t lo = e->xb < e->xt ? e->xb : e->xt, hi = e->xb < e->xt ? e->xt : e->xb;
+        length += (double)(e->yt - e->yb) + (double)(hi - lo) + 1;
         h->x0 = lo < h->x0 ? lo : h->x0;
         h->x1 = hi > h->x1 ? hi : h->x1;
         h->y0 = e->yb < h->y0 ? e->yb : h->y0;
@@ -114,10 +118,11 @@ static void edge_bounds(const engine *g, hot_set *h)
         h->y0 = e->y < h->y0 ? e->y : h->y0;
         h->y1 = e->y > h->y1 ? e->y : h->y1;
     }
+    return length;
 }
 
-/* the hot points of boolean_complete_hot_points, straight from the engine
- * (room at first for one a crossing, each given by its two edges) */
+/* the hot points (boolean_each_hot_point), straight from the engine (room
+ * at first for one a crossing, each given by its two edges) */
 static int hot_set_build(hot_set *h, const engine *g)
 {
     size_t n = g->ns / 2 + 2 * (g->ne + g->nh) + g->nm, cap = 64;
@@ -135,16 +140,7 @@ static int hot_set_build(hot_set *h, const engine *g)
     } else if (!hot_set_alloc(h, cap, NULL, 0)) {
         return 0;
     }
-    int ok = 1;
-    for (size_t k = 0; k < g->ns; k++)
-        ok &= hot_set_add(h, g->S[k].x, g->S[k].y);
-    for (size_t i = 0; i < g->ne; i++)
-        ok &= hot_set_add(h, g->E[i].xb, g->E[i].yb) & hot_set_add(h, g->E[i].xt, g->E[i].yt);
-    for (size_t i = 0; i < g->nh; i++)
-        ok &= hot_set_add(h, g->H[i].x0, g->H[i].y) & hot_set_add(h, g->H[i].x1, g->H[i].y);
-    for (size_t i = 0; i < g->nm; i++)
-        ok &= hot_set_add(h, g->M[i].x, g->M[i].y);
-    return ok;
+    return boolean_each_hot_point(g, hot_set_add, h);
 }
 
 /* The pieces made so far (of g->E or g->H), by content: open addressing on
@@ -453,14 +449,9 @@ static void shrink_edges(engine *g)
 
 int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap)
 {
-    double length = 0; /* of the edges, in pixels */
-    for (size_t i = 0; i < g->ne; i++) {
-        const bedge *e = &g->E[i];
-        length += (double)(e->yt - e->yb) + fabs((double)(e->xt - e->xb)) + 1;
-    }
     hot_set h;
-    edge_bounds(g, &h);
-    if (length <= PIXEL_WALK * (double)(g->ns + 2 * (g->ne + g->nh) + g->nm) &&
+    double length = edge_bounds(g, &h);
+    if (length <= PIXEL_WALK * (double)boolean_hot_point_count(g) &&
         h.x1 - h.x0 < INT64_C(1) << 32 && h.y1 - h.y0 < INT64_C(1) << 32) {
         if (!hot_set_build(&h, g)) {
             free(h.bits);

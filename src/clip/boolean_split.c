@@ -114,27 +114,21 @@ static int hot_grid_build(hot_grid *h, const splitpt *S, size_t ns)
     return 1;
 }
 
-/* The hot points of complete snap rounding: the split points, the edges'
- * ends and the grid points where the sweep broke runs; NULL when out of
- * memory. */
+/* (boolean_each_hot_point's add: the point appended to the array) */
+static int append_point(void *ctx, int64_t x, int64_t y)
+{
+    splitpt **at = ctx;
+    *(*at)++ = (splitpt){0, x, y};
+    return 1;
+}
+
 splitpt *boolean_complete_hot_points(const engine *g, size_t *n)
 {
-    splitpt *pts = malloc((g->ns + 2 * (g->ne + g->nh) + g->nm) * sizeof *pts);
+    splitpt *pts = malloc(boolean_hot_point_count(g) * sizeof *pts), *at = pts;
     if (!pts)
         return NULL;
-    memcpy(pts, g->S, g->ns * sizeof *pts);
-    size_t k = g->ns;
-    for (size_t i = 0; i < g->ne; i++) {
-        pts[k++] = (splitpt){0, g->E[i].xb, g->E[i].yb};
-        pts[k++] = (splitpt){0, g->E[i].xt, g->E[i].yt};
-    }
-    for (size_t i = 0; i < g->nh; i++) {
-        pts[k++] = (splitpt){0, g->H[i].x0, g->H[i].y};
-        pts[k++] = (splitpt){0, g->H[i].x1, g->H[i].y};
-    }
-    for (size_t i = 0; i < g->nm; i++)
-        pts[k++] = (splitpt){0, g->M[i].x, g->M[i].y};
-    *n = k;
+    boolean_each_hot_point(g, append_point, &at);
+    *n = (size_t)(at - pts);
     return pts;
 }
 

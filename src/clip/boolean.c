@@ -461,8 +461,7 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
     piece *saved = NULL; /* the first pass's pieces (when it classified) */
     size_t saved_cap = 0, (*ranges)[2] = NULL;
     int paired = g->ne + g->nh <= PAIRS_MAX_EDGES;
-    /* complete snap rounding: 1 for the pass that does it, 2 after */
-    int complete = 0;
+    int snapped = 0; /* a pass snapped completely (once is enough) */
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
@@ -580,9 +579,9 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
             st = boolean_assemble(g, result, &s.mem, &s.memcap, s.mem_small) ? CG_OK : CG_ENOMEM;
             break;
         }
-        if (!complete && (s.visits >= DENSE_VISITS * edges || (pass == 0 && dense_crossings(g))))
-            complete = 1;
-        if (pass >= 1 && complete != 1 && !boolean_add_hot_pixel_splits(g, 0))
+        int snap_now =
+            !snapped && (s.visits >= DENSE_VISITS * edges || (pass == 0 && dense_crossings(g)));
+        if (pass >= 1 && !snap_now && !boolean_add_hot_pixel_splits(g, 0))
             break;
         free(bands);
         bands = NULL;
@@ -593,7 +592,7 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         ranges = NULL;
         /* (else there is nothing to resume from; nor after complete snap
          * rounding, which splits nearly every edge) */
-        if (log->npt && complete != 1) {
+        if (log->npt && !snap_now) {
             /* (when this pass stopped classifying, only the lowest bottom is
              * of use: one band) */
             size_t nb = s.classify ? g->ns : 1;
@@ -643,12 +642,13 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         }
         cur ^= 1;
         if (!carry_keep(&c, &s) ||
-            !(complete == 1 ? boolean_snap_complete(g, c.map, &c.kept, s.mem, s.memcap)
-                            : boolean_apply_splits(g, c.map, &c.kept, s.mem, s.memcap)))
+            !(snap_now ? boolean_snap_complete(g, c.map, &c.kept, s.mem, s.memcap)
+                       : boolean_apply_splits(g, c.map, &c.kept, s.mem, s.memcap)))
             break;
-        if (complete == 1)
+        if (snap_now) {
             c.nh_sorted = 0; /* (its horizontal edges are put in order again) */
-        complete += complete == 1;
+            snapped = 1;
+        }
         c.valid = 1;
         if (g->ne > UINT32_MAX / 2) {
             st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */

@@ -2,6 +2,15 @@
  * edges and pieces by two integer keys, and qsort for a few records. */
 #include "boolean_engine.h"
 
+/* the number of bits v needs (0 for 0) */
+static inline int bit_length(uint64_t v)
+{
+    int n = 0;
+    while (n < 64 && (v >> n))
+        n++;
+    return n;
+}
+
 /* a[i] and a[j] (i < j) in order, branch-free */
 static inline void order_two(uint64_t *a, size_t i, size_t j)
 {
@@ -89,9 +98,7 @@ static int radix_sort_all(keyval *a, size_t n, keyval *tmp, uint64_t all)
         /* one pass by the top bits (about n buckets, stable), then straight
          * insertion, which moves keys within their bucket only: unless a
          * bucket holds many keys (uneven keys), then the digits below */
-        int top = 0, b = 6;
-        while (top < 64 && (all >> top))
-            top++;
+        int top = bit_length(all), b = 6;
         while (((size_t)1 << b) < n)
             b++;
         int shift = top > b ? top - b : 0;
@@ -313,19 +320,14 @@ static int sort_combined(const int64_t *k2, size_t stride, size_t n, keyval *a, 
                          uint64_t all)
 {
 #define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
-    int bits1 = 0;
-    while (bits1 < 64 && (all >> bits1))
-        bits1++;
+    int bits1 = bit_length(all);
     int64_t lo2 = KEY(k2, a[0].val), hi2 = lo2;
     for (size_t i = 1; i < n; i++) {
         int64_t b = KEY(k2, a[i].val);
         lo2 = b < lo2 ? b : lo2;
         hi2 = b > hi2 ? b : hi2;
     }
-    uint64_t span2 = (uint64_t)hi2 - (uint64_t)lo2;
-    int bits2 = 0;
-    while (bits2 < 64 && (span2 >> bits2))
-        bits2++;
+    int bits2 = bit_length((uint64_t)hi2 - (uint64_t)lo2);
     if (bits1 + bits2 > COMBINED_BITS)
         return -1;
     uint64_t both = 0;

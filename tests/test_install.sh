@@ -25,7 +25,9 @@ pcdir=$(dirname "$(ls "$prefix"/lib*/pkgconfig/cg.pc)")
 libdir=$(dirname "$pcdir")
 export PKG_CONFIG_PATH="$pcdir"
 cc -std=c11 "$source_dir/examples/transform_points.c" -o "$work/tp-shared" $(pkg-config --cflags --libs cg)
-LD_LIBRARY_PATH="$libdir" "$work/tp-shared" | head -1 | grep -q '^10 0 0$'
+# As a user runs it: no LD_LIBRARY_PATH (the link line carries the rpath).
+env -u LD_LIBRARY_PATH "$work/tp-shared" | head -1 | grep -q '^10 0 0$'
+ldd "$work/tp-shared" | grep "libcg\.so" | grep -qv "not found"
 static_libs=$(pkg-config --static --libs cg | sed "s|-lcg|$libdir/libcg.a|")
 cc -std=c11 "$source_dir/examples/transform_points.c" -o "$work/tp-static" $(pkg-config --cflags cg) $static_libs
 "$work/tp-static" | head -1 | grep -q '^10 0 0$'

@@ -63,12 +63,7 @@ double cg_luminance(cg_vec3 linear_rgb);
  * and of BT.601 YCbCr). */
 double cg_luma(cg_vec3 rgb);
 
-/* Images: an RGBA8 image is sRGB-encoded, an RGBAF image is linear light
- * (see cg/image.h).  These make the other kind: decode gives RGBAF, encode
- * gives RGBA8 (clamped to [0, 1], NaN -> 0, correctly rounded); alpha is
- * copied (scaled by 255).  CG_EINVAL when src is not of the expected format. */
-cg_status cg_image_decode_srgb(const cg_image *src, cg_image **out);
-cg_status cg_image_encode_srgb(const cg_image *src, cg_image **out);
+/* cg_image_decode_srgb and cg_image_encode_srgb are in cg/image.h. */
 
 /* ---- colour models (double) ---------------------------------------------- */
 
@@ -197,20 +192,7 @@ double cg_intensity_expose(double intensity, double exposure);
 /* Nearest of the levels 0, 1/(N-1), ..., 1 (levels in 2..256; the input is
  * clamped first).  Ties round up. */
 double cg_intensity_quantize(double intensity, int levels);
-
-/* Maps a linear RGBAF image to a new encoded RGBA8 image: multiplies by
- * 2^stops, then clamps (exposure <= 0) or applies cg_intensity_expose with
- * that exposure, then encodes sRGB.  Alpha copied.  CG_EINVAL unless src is
- * RGBAF and stops, exposure finite. */
-cg_status cg_image_tonemap(const cg_image *src, double stops, double exposure, cg_image **out);
-
-typedef enum cg_dither {
-    CG_DITHER_NONE = 0,   /* plain quantization to the nearest level */
-    CG_DITHER_BAYER2,     /* ordered dithering, 2x2 Bayer matrix */
-    CG_DITHER_BAYER4,     /* 4x4 */
-    CG_DITHER_BAYER8,     /* 8x8 */
-    CG_DITHER_FLOYD_STEINBERG /* error diffusion 7/16, 3/16, 5/16, 1/16 */
-} cg_dither;
+/* cg_image_tonemap (these on a whole float image) is in cg/image.h. */
 
 /* Quantizes a plane of width x height values (rows `stride` floats apart) to
  * `levels` levels (2..256): out[i] = k / (levels - 1).  Inputs are clamped
@@ -220,12 +202,10 @@ typedef enum cg_dither {
  * to its unvisited neighbours; at the image border the weights of the
  * missing neighbours go to the present ones, so the total intensity is
  * preserved up to the error of the last pixel.  in and out may be the same.
- * CG_EINVAL for bad sizes, levels or method; CG_ENOMEM. */
+ * CG_EINVAL for bad sizes, levels or method; CG_ENOMEM.  The methods
+ * (cg_dither) and cg_image_dither, on a whole image, are in cg/image.h. */
 cg_status cg_dither_plane(const float *in, float *out, int width, int height, size_t stride,
                           int levels, cg_dither method);
-/* The same on each colour channel of an RGBA8 image, on its encoded values
- * (what the screen shows), in place.  Alpha is left alone. */
-cg_status cg_image_dither(cg_image *image, int levels, cg_dither method);
 
 /* Halftoning with cell x cell patterns (cell 2, 3 or 4), for devices with
  * two intensity levels: each input value in [0, 1] becomes a cell of

@@ -116,6 +116,37 @@ cg_status cg_image_read_memory(const void *bytes, size_t size, const char *name,
 cg_status cg_image_write(const cg_image *image, const char *path, cg_file_format format,
                          cg_error *err);
 
+/* ---- whole-image colour operations (implemented with cg/color.h) -------- */
+
+/* Images: an RGBA8 image is sRGB-encoded, an RGBAF image is linear light
+ * (see above).  These make the other kind: decode gives RGBAF, encode
+ * gives RGBA8 (clamped to [0, 1], NaN -> 0, correctly rounded); alpha is
+ * copied (scaled by 255).  CG_EINVAL when src is not of the expected format. */
+cg_status cg_image_decode_srgb(const cg_image *src, cg_image **out);
+cg_status cg_image_encode_srgb(const cg_image *src, cg_image **out);
+
+/* Maps a linear RGBAF image to a new encoded RGBA8 image: multiplies by
+ * 2^stops, then clamps (exposure <= 0) or applies cg_intensity_expose with
+ * that exposure, then encodes sRGB.  Alpha copied.  CG_EINVAL unless src is
+ * RGBAF and stops, exposure finite. */
+cg_status cg_image_tonemap(const cg_image *src, double stops, double exposure, cg_image **out);
+
+typedef enum cg_dither {
+    CG_DITHER_NONE = 0,   /* plain quantization to the nearest level */
+    CG_DITHER_BAYER2,     /* ordered dithering, 2x2 Bayer matrix */
+    CG_DITHER_BAYER4,     /* 4x4 */
+    CG_DITHER_BAYER8,     /* 8x8 */
+    CG_DITHER_FLOYD_STEINBERG /* error diffusion 7/16, 3/16, 5/16, 1/16 */
+} cg_dither;
+
+/* Dithering, as cg_dither_plane (cg/color.h) does it, of each colour channel
+ * of an RGBA8 image, on its encoded values (what the screen shows), in place.
+ * Alpha is left alone. */
+cg_status cg_image_dither(cg_image *image, int levels, cg_dither method);
+
+/* cg_image_rgb_to_model and cg_image_model_to_rgb take a cg_color_model:
+ * they are declared in cg/color.h with the colour models. */
+
 #ifdef __cplusplus
 }
 #endif

@@ -179,29 +179,9 @@ cg_light cg_render_key_light(cg_mat4 view);
 cg_status cg_render(const cg_mesh *mesh, const cg_render_options *options, cg_image *image,
                     cg_error *err);
 
-/* Vertex normals of a mesh, computed as the renderer does when the mesh has
- * none: every corner gets the sum of the unit normals of the faces around its
- * vertex that differ from its own face's normal by at most crease_angle,
- * weighted by the faces' angles at that vertex, normalized.  corner_normals
- * receives face_offsets[face_count] normals (one per face corner, in
- * face_indices order); degenerate faces get a zero normal. */
-cg_status cg_mesh_corner_normals(const cg_mesh *mesh, double crease_angle,
-                                 cg_vec3 *corner_normals);
 
-/* ---- generated meshes (tests, gallery, benchmarks) ----------------------- */
-
-/* A UV sphere of the given radius at the origin: slices >= 3 around the y
- * axis, stacks >= 2 from pole to pole, triangles at the poles and quads
- * elsewhere, closed, counter-clockwise from outside, without normals.
- * 2 * slices * (stacks - 1) triangles.  CG_EINVAL for counts out of range
- * (at most 2^15 each). */
-cg_status cg_mesh_sphere(int slices, int stacks, double radius, cg_mesh **out);
-/* A torus around the y axis: major radius R, minor radius r, segments >= 3
- * around each circle; quads; 2 * major_segments * minor_segments triangles. */
-cg_status cg_mesh_torus(int major_segments, int minor_segments, double major_radius,
-                        double minor_radius, cg_mesh **out);
-/* An axis-aligned box [lo, hi] of 6 quads. */
-cg_status cg_mesh_box(cg_vec3 lo, cg_vec3 hi, cg_mesh **out);
+/* cg_mesh_corner_normals and the generated meshes (cg_mesh_sphere,
+ * cg_mesh_torus, cg_mesh_box) are declared in cg/mesh.h, included above. */
 
 #ifdef __cplusplus
 }

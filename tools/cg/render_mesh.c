@@ -61,20 +61,25 @@ static int place_camera(const char *command, const render_request *r, int bounde
     return CLI_OK;
 }
 
-/* A warning when a frame drew no face although the mesh has some. */
+/* A warning when a frame drew no pixel of a face although the mesh has
+ * faces, saying why. */
 static void warn_if_nothing_drawn(const char *command, const char *path,
                                   const cg_renderer *renderer, const cg_render_options *o)
 {
     cg_render_stats st = cg_renderer_stats(renderer);
-    if (o->edges == CG_EDGES_WIREFRAME || st.triangles == 0 || st.rasterized > 0)
+    if (o->edges == CG_EDGES_WIREFRAME || st.triangles == 0 || st.fragments > 0)
         return;
     if (st.culled == st.triangles)
         fprintf(stderr, "cg: %s: warning: %s: every face was culled as a back face, nothing "
                         "drawn (faces must be counter-clockwise seen from outside; try "
                         "--cull none)\n", command, path);
-    else
-        fprintf(stderr, "cg: %s: warning: %s: no face is in front of the camera, nothing drawn\n",
+    else if (st.object_culled)
+        fprintf(stderr, "cg: %s: warning: %s: the mesh is outside the view, nothing drawn\n",
                 command, path);
+    else
+        fprintf(stderr, "cg: %s: warning: %s: no face covers a pixel centre (%zu of %zu culled "
+                        "as back faces, the others degenerate, too small or outside the view)\n",
+                command, path, st.culled, st.triangles);
 }
 
 /* Draws the frames and writes the output. */

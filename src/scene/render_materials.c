@@ -103,10 +103,14 @@ static cg_status material_pass(const cg_mesh *world, const uint32_t *face_materi
     cg_mesh *coded;
     size_t corners = world->face_offsets[world->face_count];
     cg_status s = cg_mesh_create(&coded, world->vertex_count, world->face_count, corners,
-                                 CG_MESH_FACE_COLORS);
+                                 CG_MESH_FACE_COLORS | CG_MESH_NORMALS);
     if (s != CG_OK)
         return cg_error_set(err, s, "scene: out of memory for the material pass");
     memcpy(coded->positions, world->positions, world->vertex_count * sizeof *world->positions);
+    /* Flat shading never reads vertex normals: given ones spare the
+     * renderer computing them. */
+    for (size_t v = 0; v < world->vertex_count; v++)
+        coded->normals[v] = cg_vec3_make(0, 0, 1);
     memcpy(coded->face_offsets, world->face_offsets, (world->face_count + 1) * sizeof(uint32_t));
     memcpy(coded->face_indices, world->face_indices, corners * sizeof(uint32_t));
     for (size_t f = 0; f < world->face_count; f++) {
@@ -137,29 +141,38 @@ static uint32_t decode(const float *pixel)
            | (uint32_t)(pixel[2] * 256 + 0.5f) << 16;
 }
 
-/* Draws one pass per material used and keeps each one's pixels. */
+/* Draws one pass per material used and keeps each one's pixels; the mesh
+ * is prepared once for all of them. */
 static cg_status material_passes(const cg_scene *scene, const cg_mesh *world,
                                  const uint32_t *face_material, const unsigned char *used,
                                  const cg_render_options *base, cg_image *image, cg_error *err)
 {
     int w = image->width, h = image->height;
     cg_image *ids = NULL, *pass = NULL;
+    cg_renderer *renderer = NULL;
     cg_status s = cg_image_create(&ids, w, h, CG_PIXEL_RGBAF);
     if (s == CG_OK)
         s = cg_image_create(&pass, w, h, image->format);
+    if (s != CG_OK)
+        cg_error_set(err, s, "scene: out of memory for the material passes");
     if (s == CG_OK)
         s = material_pass(world, face_material, base, ids, err);
-    else
-        cg_error_set(err, s, "scene: out of memory for the material passes");
+    if (s == CG_OK)
+        s = cg_renderer_create(world, base, &renderer, err);
     size_t bytes = image->format == CG_PIXEL_RGBAF ? 4 * sizeof(float) : 4;
     int first = 1;
     for (size_t m = 0; m < scene->material_count && s == CG_OK; m++) {
         if (!used[m])
             continue;
         cg_render_options o = *base;
-        if ((s = scene_material_options(scene, &scene->materials[m].surface, &o, err)) != CG_OK
-            || (s = draw(world, &o, first ? image : pass, err)) != CG_OK)
+        if ((s = scene_material_options(scene, &scene->materials[m].surface, &o, err)) != CG_OK)
             break;
+        if ((s = cg_renderer_set_options(renderer, &o)) == CG_OK)
+            s = cg_renderer_draw(renderer, first ? image : pass);
+        if (s != CG_OK) {
+            cg_error_set(err, s, "scene: rendering failed: %s", cg_status_str(s));
+            break;
+        }
         for (int y = 0; !first && y < h; y++) {
             const float *id = (const float *)(ids->data + (size_t)y * ids->stride);
             unsigned char *to = image->data + (size_t)y * image->stride;
@@ -170,6 +183,7 @@ static cg_status material_passes(const cg_scene *scene, const cg_mesh *world,
         }
         first = 0;
     }
+    cg_renderer_free(renderer);
     cg_image_free(ids);
     cg_image_free(pass);
     return s;

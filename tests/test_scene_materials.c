@@ -2,7 +2,9 @@
  * algorithm and the ray tracer.
  *
  * Checker: random scenes of a checkered plane, box and sphere (random cell
- * sizes, plane tilts, object transforms and cameras) lit by an ambient light
+ * sizes, plane tilts, object transforms (mirrors among them, with back faces
+ * culled) and cameras; the objects apart, since the painter's algorithm only
+ * approximates interpenetrating polygons) lit by an ambient light
  * only, so every pixel is exactly one of the two checker colours or the
  * background.  Each pixel is classified in the three pictures; wherever the
  * ray tracer's 5x5 neighbourhood is all one class (two pixels away from cell
@@ -83,26 +85,26 @@ static void checker_scenes(void)
     long compared = 0, checked_both = 0;
     for (int trial = 0; trial < 24; trial++) {
         double size = check_rng_range(&rng, 0.25, 0.8);
-        double tilt = check_rng_range(&rng, -0.3, 0.3), angle = check_rng_range(&rng, -60, 60);
+        double tilt = check_rng_range(&rng, -0.15, 0.15), angle = check_rng_range(&rng, -60, 60);
         double ex = check_rng_range(&rng, -1.5, 1.5), ez = check_rng_range(&rng, 1.5, 3);
         double ey = check_rng_range(&rng, 4, 6);
         int ortho = trial % 3 == 2;
         char json[2048];
         snprintf(json, sizeof json,
                  "{\"image\": {\"width\": %d, \"height\": %d, \"background\": [0, 0, 0]},"
-                 " \"camera\": {\"eye\": [%.3f, %.3f, %.3f], \"target\": [0, 0.3, 0],"
+                 " \"camera\": {\"eye\": [%.3f, %.3f, %.3f], \"target\": [0.4, 0.4, 0],"
                  " \"projection\": \"%s\", \"frame\": true},"
-                 " \"render\": {\"shading\": \"flat\", \"shadows\": false, \"depth\": 0, \"cull\": \"none\"},"
+                 " \"render\": {\"shading\": \"flat\", \"shadows\": false, \"depth\": 0, \"cull\": \"back\"},"
                  " \"lights\": [{\"type\": \"ambient\", \"intensity\": 1}],"
                  " \"materials\": {\"c\": {\"color\": [0.9, 0.02, 0.02], \"ka\": 1, \"kd\": 0,"
                  " \"ks\": 0, \"checker\": {\"color\": [0.02, 0.02, 0.9], \"size\": %.4f}}},"
                  " \"objects\": [{\"type\": \"plane\", \"point\": [0, -0.5, 0],"
                  " \"normal\": [%.3f, 1, %.3f], \"material\": \"c\"},"
-                 " {\"type\": \"box\", \"lo\": [-1, -0.4, -0.5], \"hi\": [0, 0.6, 0.4], \"material\": \"c\","
-                 " \"transform\": [{\"rotate\": %.2f, \"axis\": [0, 1, 0]}]},"
-                 " {\"type\": \"sphere\", \"center\": [0.8, 0.2, 0.2], \"radius\": 0.5, \"material\": \"c\"}]}",
+                 " {\"type\": \"box\", \"lo\": [-1, 0, -0.5], \"hi\": [0, 1, 0.4], \"material\": \"c\","
+                 " \"transform\": [{\"rotate\": %.2f, \"axis\": [0, 1, 0]}%s]},"
+                 " {\"type\": \"sphere\", \"center\": [1.9, 0.6, 0.3], \"radius\": 0.5, \"material\": \"c\"}]}",
                  W, H, ex, ey, ez, ortho ? "orthographic" : "perspective", size, tilt, -tilt,
-                 angle);
+                 angle, trial % 2 ? ", {\"scale\": [-1, 1, 1]}" : "");
         cg_scene *s = parse(json);
         CHECK(s != NULL);
         if (!s)

@@ -113,7 +113,7 @@ static int parse_render_option(const char *command, int argc, char **argv, int *
     return 1;
 }
 
-/* The first option given among those in [first, last] listed in set. */
+/* The first option of set[0..count) that was given, or -1. */
 static int first_given(const render_request *r, const render_option *set, int count)
 {
     for (int k = 0; k < count; k++)
@@ -147,8 +147,7 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command, "%s: not available with a scene file (%s)",
                                option_names[k],
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
-                               : k == OPT_CREASE ? "it applies to mesh files"
-                                                 : "it applies to mesh files only");
+                                                                : "it applies to mesh files");
     if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 6)) >= 0)
         return cli_usage_error(command, "%s: not available with the ray tracer (use --algorithm "
                                         "zbuffer or painter)", option_names[k]);

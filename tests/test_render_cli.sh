@@ -60,7 +60,10 @@ printf 'v 0 0 0\nf 1 2 3\n' > "$work/bad.obj"
 expect 1 "malformed mesh" "$cg" render "$work/bad.obj" -o "$work/x.png"; one_line "malformed mesh"
 [ ! -e "$work/x.png" ] && pass || fail "nothing written on failure"
 printf 'v 0 0 0\nv 1 0 0\n' > "$work/empty.obj"
-expect 0 "mesh without faces: the background" "$cg" render "$work/empty.obj" -o "$work/empty.png" --size 8x8
+expect 1 "mesh without faces" "$cg" render "$work/empty.obj" -o "$work/empty.png" --size 8x8
+one_line "mesh without faces"
+grep -q "empty.obj: nothing to draw" "$work/err" && pass || fail "no faces: the message names the file and why"
+[ ! -e "$work/empty.png" ] && pass || fail "no faces: nothing written"
 expect 0 "camera inside the mesh" "$cg" render "$bunny" -o "$work/in.png" --size 64x48 --eye -0.02,0.1,0 --target 1,0.1,0 --cull none
 grep -q raytrace "$src/tools/cg/render_raytrace.c" && pass || fail "raytrace dispatch file present"
 

@@ -1,27 +1,11 @@
-/* cg trace-render MESH -o OUT.png: the ray tracer (see trace_command.c). */
-#include "cli.h"
+/* cg trace-render MESH -o OUT.png: the alias of `cg render --algorithm raytrace`
+ * (render_command.c). */
 #include "command.h"
-#include "trace_command.h"
+#include "render_command.h"
 
 static int run(int argc, char **argv)
 {
-    raytrace_settings s;
-    raytrace_settings_default(&s);
-    for (int i = 1; i < argc; i++) {
-        if (!cli_is_option(argv[i])) {
-            if (s.input)
-                return cli_usage_error("trace-render", "expected one mesh file, got '%s' as a second",
-                                       argv[i]);
-            s.input = argv[i];
-            continue;
-        }
-        int r = raytrace_parse_option("trace-render", argc, argv, &i, &s);
-        if (r < 0)
-            return CLI_USAGE;
-        if (r == 0)
-            return cli_usage_error("trace-render", "unknown option '%s'", argv[i]);
-    }
-    return raytrace_run("trace-render", &s);
+    return render_command_run("trace-render", argc, argv, 1);
 }
 
 const cg_command cg_command_trace_render = {
@@ -33,10 +17,11 @@ const cg_command cg_command_trace_render = {
     "Whitted ray tracing through a BVH: shadows, mirror reflection, refraction with\n"
     "Fresnel; the mesh (OBJ, OFF, PLY, STL) or the built-in scene 'spheres' (glass\n"
     "and mirror spheres over a checkered plane, soft shadows from an area light).\n"
-    "The options of 'cg render' mean the same here (and 'cg render --algorithm\n"
-    "raytrace' is this ray tracer with its default --spp 1 --depth 5).  A scene file\n"
+    "This command is 'cg render --algorithm raytrace': the same options with the\n"
+    "same meaning and the same pictures, byte for byte (see 'cg help render', which\n"
+    "also lists --view-from, --specular, --shininess and --crease).  A scene file\n"
     "(docs/scene-format.md) is ray traced with its own camera, lights and\n"
-    "materials; --size, --shading, --threads, --spp, --depth and --repeat override it.\n\n"
+    "materials; the options given override them as for 'cg render'.\n\n"
     "  -o FILE              output image (.png, .ppm, .pgm)\n"
     "  --size WxH           image size (default 800x600)\n"
     "  --eye X,Y,Z          camera position (default: frames the whole mesh)\n"
@@ -49,7 +34,8 @@ const cg_command cg_command_trace_render = {
     "  --ambient K          ambient coefficient (default 0.15)\n"
     "  --shading MODE       flat (face normals), gouraud or phong (interpolated normals)\n"
     "  --color COLOR        the mesh's diffuse colour (default light grey)\n"
-    "  --background COLOR   where no object is hit (default black)\n"
+    "  --background COLOR   where no object is hit (default #1d1f27; a sky with\n"
+    "                       --floor and --scene)\n"
     "  --spp N              samples per pixel, stratified (default 1: pixel centres)\n"
     "  --depth N            reflection/refraction recursion limit, 0..64 (default 5)\n"
     "  --no-shadows         no shadow rays\n"
@@ -57,6 +43,6 @@ const cg_command cg_command_trace_render = {
     "  --threads N          worker threads (the picture is the same for any N)\n"
     "  --repeat N           render N times, print the median 'frame: 12.3 ms'\n"
     "  --stats              print the BVH build time and rays per second\n"
-    "  --quiet              no progress on stderr\n",
+    "  --quiet              no progress on stderr (shown for frames over a second)\n",
     run,
 };

@@ -1,5 +1,5 @@
-/* `cg render --algorithm raytrace` (and `cg trace-render`): the ray tracer
- * behind the hook of render_raytrace.h.  The mesh is lit as the rasterizer
+/* `cg render --algorithm raytrace` (and its alias `cg trace-render`): the
+ * ray tracer behind the hook of render_raytrace.h.  The mesh is lit as the rasterizer
  * lights it (cg_render_options: white ambient light times --ambient, kd 1,
  * Blinn-Phong --specular and --shininess, the --light-dir lights or the key
  * light from the camera's upper left), so both renderers give the same
@@ -123,14 +123,6 @@ int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *o
     }
     *out = t;
     return CLI_OK;
-}
-
-int render_raytrace_create(const cg_mesh *mesh, const cg_render_options *options,
-                           render_raytracer **out)
-{
-    raytrace_extra extra;
-    raytrace_extra_default(&extra);
-    return render_raytrace_create_extra(mesh, options, &extra, out);
 }
 
 int render_raytrace_draw(render_raytracer *tracer, cg_image *image)

@@ -1,7 +1,9 @@
-/* `cg render SCENE.json`: load, render with the scene's algorithm (or the
- * command line's), draw the overlays, write. */
+/* `cg render SCENE.json`: load, apply the command line (render_scene_apply.c),
+ * render with the scene's algorithm (or the command line's), draw the
+ * overlays, write. */
 #include "render_scene.h"
 #include "cli.h"
+#include "render_request.h"
 #include "draw_script_run.h"
 #include "cg/scene.h"
 
@@ -9,42 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-render_scene_overrides render_scene_no_overrides(void)
-{
-    render_scene_overrides o = {-1, -1, 0, 0, -1, -1, -1, 0};
-    return o;
-}
-
-int render_scene_option_given(int argc, char **argv, const char *name)
-{
-    for (int i = 1; i < argc; i++)
-        if (cli_option_is(argv[i], name))
-            return 1;
-    return 0;
-}
-
 int render_scene_is_scene(const char *path)
 {
     size_t n = strlen(path);
     return n > 5 && strcmp(path + n - 5, ".json") == 0;
-}
-
-static void apply(cg_scene *scene, const render_scene_overrides *o)
-{
-    if (o->algorithm >= 0)
-        scene->algorithm = (cg_scene_algorithm)o->algorithm;
-    if (o->shading >= 0)
-        scene->shading = (cg_scene_shading)o->shading;
-    if (o->width > 0 && o->height > 0) {
-        scene->width = o->width;
-        scene->height = o->height;
-    }
-    if (o->threads > 0)
-        scene->threads = o->threads;
-    if (o->samples > 0)
-        scene->samples = o->samples;
-    if (o->depth >= 0)
-        scene->max_depth = o->depth;
 }
 
 /* The overlay lines as one script, drawn on the picture. */
@@ -73,14 +43,19 @@ static int draw_overlays(const cg_scene *scene, const char *path, cg_image *imag
     return status;
 }
 
-int render_scene_file(const char *path, const char *out_path, const render_scene_overrides *o)
+int render_scene_file(const char *command, const render_request *r)
 {
+    const char *path = r->trace.input, *out_path = r->trace.common.output;
+    int repeat = r->trace.common.repeat;
     cg_scene *scene;
     cg_error err;
     if (cg_scene_load(path, &scene, &err) != CG_OK)
         return cli_fail("%s", err.message);
-    apply(scene, o);
-    int frames = o->repeat > 0 ? o->repeat : 1;
+    if (render_scene_apply(command, r, scene) != CLI_OK) {
+        cg_scene_free(scene);
+        return CLI_USAGE;
+    }
+    int frames = repeat > 0 ? repeat : 1;
     double *times = malloc(sizeof *times * (size_t)frames);
     cg_image *image = NULL;
     int status = times ? CLI_OK : cli_fail("render: out of memory");
@@ -92,7 +67,7 @@ int render_scene_file(const char *path, const char *out_path, const render_scene
             status = cli_fail("%s", err.message);
         times[i] = cli_now() - start;
     }
-    if (status == CLI_OK && o->repeat > 0)
+    if (status == CLI_OK && repeat > 0)
         fprintf(stderr, "frame: %.1f ms\n", cli_median(times, frames) * 1e3);
     if (status == CLI_OK && scene->overlay_count)
         status = draw_overlays(scene, path, image);

@@ -1,9 +1,10 @@
-/* `cg trace-render`: options, camera, timing and output around the ray
- * tracer hook (see trace_command.h). */
+/* The ray tracer's options, camera, timing and output around the ray tracer
+ * hook (see trace_command.h), for `cg render --algorithm raytrace` and its
+ * alias `cg trace-render`. */
 #include "trace_command.h"
 
 #include "cli.h"
-#include "render_scene.h"
+#include "render_progress.h"
 #include "cg/color.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
@@ -17,6 +18,7 @@ void raytrace_settings_default(raytrace_settings *s)
     memset(s, 0, sizeof *s);
     render_cli_options_default(&s->common);
     s->common.lights_full_first = 1;
+    s->view_from = cg_vec3_make(0, 0, 1);
     raytrace_extra_default(&s->extra);
 }
 
@@ -70,7 +72,8 @@ int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
 }
 
 /* The camera: the classic scene's own view, or framed to the mesh's box
- * [lo, hi] unless --eye places it (as `cg render` does). */
+ * [lo, hi] from the --view-from direction unless --eye places it (as the
+ * rasterizer's path of `cg render` does). */
 static int place_camera(const raytrace_settings *s, int bounded, cg_vec3 lo, cg_vec3 hi,
                         cg_camera *c)
 {
@@ -93,7 +96,7 @@ static int place_camera(const raytrace_settings *s, int bounded, cg_vec3 lo, cg_
         c->target = s->common.have_target ? s->common.target : centre;
     } else {
         c->target = s->common.have_target ? s->common.target : centre;
-        c->eye = cg_vec3_add(c->target, cg_vec3_make(0, 0, 1));
+        c->eye = cg_vec3_add(c->target, s->view_from);
         cg_camera_frame(c, lo, hi, (double)s->common.width / s->common.height);
         if (s->common.have_target) {
             cg_vec3 offset = cg_vec3_sub(c->eye, c->target);
@@ -114,21 +117,6 @@ static int place_camera(const raytrace_settings *s, int bounded, cg_vec3 lo, cg_
     return 1;
 }
 
-typedef struct progress_state {
-    int last;
-} progress_state;
-
-static void show_progress(void *user, double fraction)
-{
-    progress_state *p = user;
-    int percent = (int)(100 * fraction);
-    if (percent / 10 != p->last / 10) {
-        fprintf(stderr, "\rcg: trace-render: %3d%%%s", percent, percent >= 100 ? "\n" : "");
-        fflush(stderr);
-        p->last = percent;
-    }
-}
-
 int raytrace_render(const char *command, const raytrace_settings *s, cg_image **out)
 {
     *out = NULL;
@@ -141,6 +129,12 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     if (s->input) {
         if (cg_mesh_load(s->input, &mesh, &err) != CG_OK)
             return cli_fail("%s", err.message);
+        if (mesh->face_count == 0) {
+            size_t n = mesh->vertex_count;
+            cg_mesh_free(mesh);
+            return cli_fail("%s: %s: nothing to draw: the file has %zu vertices and no faces (a "
+                            "point cloud, lines only, or a truncated file)", command, s->input, n);
+        }
         bounded = cg_mesh_bounds(mesh, &lo, &hi) == CG_OK;
     }
     cg_render_options o = s->common.render;
@@ -151,9 +145,10 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     }
     if ((s->extra.classic_scene || s->extra.floor) && !s->common.have_background)
         o.background = cg_rgba8_to_linear((cg_rgba8){150, 190, 235, 255}); /* a sky */
-    progress_state progress = {-1};
-    if (!s->quiet && !s->common.repeat) {
-        o.progress = show_progress;
+    render_progress progress;
+    render_progress_start(&progress, command);
+    if (!s->quiet) {
+        o.progress = render_progress_show;
         o.progress_user = &progress;
     }
     render_raytracer *tracer;
@@ -171,9 +166,10 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     if (!times)
         status = cli_fail("%s: out of memory", command);
     for (int r = 0; r < runs && status == CLI_OK; r++) {
-        double t0 = cli_now();
+        render_progress_start(&progress, command);
         status = render_raytrace_draw(tracer, image);
-        times[r] = cli_now() - t0;
+        times[r] = cli_now() - progress.start;
+        render_progress_end(&progress);
     }
     if (status == CLI_OK && s->common.repeat > 0)
         fprintf(stderr, "frame: %.1f ms\n", cli_median(times, runs) * 1e3);
@@ -195,34 +191,10 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     return CLI_OK;
 }
 
-/* A scene file through render_scene.h, with the ray tracer. */
-static int run_scene(const raytrace_settings *s)
-{
-    render_scene_overrides o = render_scene_no_overrides();
-    o.algorithm = 2;
-    if (s->common.have_size) {
-        o.width = s->common.width;
-        o.height = s->common.height;
-    }
-    if (s->common.have_shading)
-        o.shading = s->common.render.shading == CG_SHADING_FLAT ? 0
-                    : s->common.render.shading == CG_SHADING_GOURAUD ? 1 : 2;
-    if (s->common.have_threads)
-        o.threads = s->common.render.threads;
-    if (s->have_samples)
-        o.samples = s->extra.samples;
-    if (s->have_depth)
-        o.depth = s->extra.depth;
-    o.repeat = s->common.repeat;
-    return render_scene_file(s->input, s->common.output, &o);
-}
-
 int raytrace_run(const char *command, const raytrace_settings *s)
 {
     if (render_cli_check_output(command, s->common.output) != CLI_OK)
         return CLI_USAGE;
-    if (s->input && !s->extra.classic_scene && render_scene_is_scene(s->input))
-        return run_scene(s);
     cg_image *image;
     int status = raytrace_render(command, s, &image);
     if (status != CLI_OK)

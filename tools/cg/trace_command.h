@@ -21,7 +21,7 @@ typedef struct raytrace_extra {
 
 void raytrace_extra_default(raytrace_extra *extra);
 
-/* render_raytrace_create with the extra settings; mesh is ignored (may be
+/* Prepares the ray tracer (render_raytrace.h) with the extra settings; mesh is ignored (may be
  * NULL) for the classic scene. */
 int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *options,
                                  const raytrace_extra *extra, render_raytracer **out);
@@ -29,9 +29,9 @@ int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *o
 void render_raytrace_stats(const render_raytracer *tracer, double *build_seconds,
                            unsigned long long *rays, double *render_seconds);
 
-/* Everything `cg trace-render` is asked to do.  A scene file (.json) is
- * rendered by render_scene.h with the ray tracer and the options given here
- * (size, shading, threads, --spp, --depth, --repeat) taking precedence. */
+/* Everything the ray tracer is asked to do on a mesh or the classic scene
+ * (`cg render --algorithm raytrace` and `cg trace-render`; render_request.h
+ * parses the command line, scene files go to render_scene.h). */
 typedef struct raytrace_settings {
     const char *input;         /* mesh file, or NULL with extra.classic_scene */
     render_cli_options common; /* the options `cg render` shares (render_options.h) */
@@ -40,6 +40,10 @@ typedef struct raytrace_settings {
     /* Which settings the command line gave (a scene file keeps its own
      * for the others). */
     int have_samples, have_depth;
+    /* --view-from: the direction from the target toward a framed camera
+     * (default 0,0,1; render_request.c parses it). */
+    cg_vec3 view_from;
+    int have_view_from;
     raytrace_extra extra;
 } raytrace_settings;
 
@@ -51,7 +55,7 @@ int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
 /* Renders into a new RGBA8 image (s->repeat times when > 0, printing
  * "frame: 12.3 ms"); returns an exit status. */
 int raytrace_render(const char *command, const raytrace_settings *s, cg_image **out);
-/* raytrace_render, then writes s->output. */
+/* raytrace_render, then writes s->common.output. */
 int raytrace_run(const char *command, const raytrace_settings *s);
 
 #endif

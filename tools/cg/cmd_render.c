@@ -165,17 +165,9 @@ static int run(int argc, char **argv)
     cg_vec3 lo, hi;
     int bounded = cg_mesh_bounds(mesh, &lo, &hi) == CG_OK;
     cg_vec3 centre = bounded ? cg_vec3_scale(cg_vec3_add(lo, hi), 0.5) : cg_vec3_make(0, 0, 0);
-    double radius = bounded ? 0.5 * cg_vec3_length(cg_vec3_sub(hi, lo)) : 1;
-    if (!(radius > 0))
-        radius = 1;
     if (have_eye) {
         camera.eye = eye;
         camera.target = have_target ? target : centre;
-        double distance = cg_vec3_length(cg_vec3_sub(camera.eye, centre));
-        camera.far = distance + radius * 1.01 + 1e-9;
-        camera.near = distance - radius * 1.01;
-        if (camera.near < camera.far * 1e-4)
-            camera.near = camera.far * 1e-4;
         if (!(cg_vec3_length(cg_vec3_sub(camera.target, camera.eye)) > 0)) {
             cg_mesh_free(mesh);
             return cli_usage_error(NAME, "--eye and --target must differ");
@@ -191,7 +183,6 @@ static int run(int argc, char **argv)
                 cg_vec3 offset = cg_vec3_sub(camera.eye, camera.target);
                 camera.target = target;
                 camera.eye = cg_vec3_add(target, offset);
-                camera.far += cg_vec3_length(cg_vec3_sub(target, centre));
             }
             if (ortho > 0)
                 camera.ortho_height = ortho;
@@ -201,6 +192,10 @@ static int run(int argc, char **argv)
     if (cg_vec3_length(cg_vec3_cross(view_dir, camera.up)) <= 1e-12 * cg_vec3_length(view_dir)) {
         cg_mesh_free(mesh);
         return cli_usage_error(NAME, "--up must not be parallel to the viewing direction");
+    }
+    if (render_cli_set_depth(NAME, &common, bounded, lo, hi, &camera) != CLI_OK) {
+        cg_mesh_free(mesh);
+        return CLI_USAGE;
     }
     o.camera = camera;
 
@@ -277,6 +272,8 @@ const cg_command cg_command_render = {
     "  --up X,Y,Z            up direction (default 0,1,0)\n"
     "  --fov DEGREES         vertical field of view, perspective (default 45)\n"
     "  --ortho HEIGHT        parallel projection showing HEIGHT world units vertically\n"
+    "  --near D, --far D     clip distances along the view (default: the mesh's depth\n"
+    "                        range; a parallel view's near may be 0 or negative)\n"
     "Light and material:\n"
     "  --light-dir X,Y,Z     directional light toward which lit surfaces face, strength 1;\n"
     "                        repeatable (default: one light from the camera's upper left)\n"

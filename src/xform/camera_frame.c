@@ -4,6 +4,8 @@
 
 /* The projected box fills 1 / FRAME_MARGIN of the picture's width or height. */
 #define FRAME_MARGIN 1.05
+/* The least distance from a framing eye to the box, in box diagonals. */
+#define FRAME_STANDOFF 0.05
 /* A perspective near plane stays at least this fraction of far, so the
  * float depth buffer keeps about 1,600 steps per depth unit at far. */
 #define NEAR_FAR_RATIO 1e-4
@@ -65,6 +67,8 @@ cg_status cg_camera_fit_depth(cg_camera *camera, cg_vec3 lo, cg_vec3 hi)
         pad = 1e-9 * cg_vec3_length(cg_vec3_sub(camera->target, camera->eye));
     double near = nearest - pad, far = farthest + pad;
     if (!camera->orthographic) {
+        if (nearest > 0) /* the padding never takes more than 0.1% of nearest */
+            near = fmax(near, nearest * (1 - 1e-3));
         if (!(far > 0)) /* the box is behind the eye: an empty, valid range */
             far = cg_vec3_length(cg_vec3_sub(camera->target, camera->eye));
         if (!(near >= far * NEAR_FAR_RATIO))
@@ -144,8 +148,9 @@ cg_status cg_camera_frame(cg_camera *camera, cg_vec3 lo, cg_vec3 hi, double aspe
         fit_axis(x, z, tx, &ex, &dx);
         fit_axis(y, z, ty, &ey, &dy);
         ez = fmin(dx, dy);
-        /* A box seen end-on (projected to a point) still needs distance. */
-        ez = fmin(ez, z_lo - 1e-3 * diagonal);
+        /* A corner pointing at the eye of a wide field of view lets the
+         * eye come right up to it: keep a twentieth of the box away. */
+        ez = fmin(ez, z_lo - FRAME_STANDOFF * diagonal);
     }
     cg_vec3 eye = cg_vec3_add(cg_vec3_add(cg_vec3_scale(right, ex), cg_vec3_scale(up, ey)),
                               cg_vec3_scale(forward, ez));

@@ -159,6 +159,7 @@ static cg_image *render_traced(const cg_mesh *m, const cg_camera *c)
     o.background = (cg_rgbaf){0, 0, 0, 1};
     o.shadows = 0;
     o.max_depth = 0;
+    o.clip_depth = 1; /* the rasterizer's view volume: near and far must enclose them */
     cg_image *img = NULL;
     cg_image_create(&img, WIDTH, HEIGHT, CG_PIXEL_RGBA8);
     CHECK(cg_trace_render(scene, c, &o, img, NULL) == CG_OK);
@@ -257,7 +258,7 @@ static void test_fit_depth_definition(void)
             dmin = fmin(dmin, d);
             dmax = fmax(dmax, d);
         }
-        double room = 2e-3 * (dmax - dmin) + 1e-6;
+        double room = 2e-3 * (dmax - dmin) + 2e-5 * fmax(fabs(dmin), fabs(dmax)) + 1e-9;
         if (!c.orthographic && dmax <= 0) { /* behind the eye: any valid range */
             CHECK(c.near > 0 && c.far > c.near);
             continue;

@@ -58,6 +58,23 @@ expect 0 "--near cuts" "$cg" render "$work/tilted.off" -o "$work/s.pgm" $plain \
   --eye 32,32,10 --target 32,32,0 --ortho 128 --near 10 --far 100
 n=$(lit "$work/s.pgm" 128 128)
 [ "$n" = 40 ] && pass || fail "--near 10 keeps the farther half: $n pixels lit, want 40"
+for algorithm in painter raytrace; do
+  expect 0 "--far cuts, $algorithm" "$cg" render "$work/tilted.off" -o "$work/s.pgm" $plain \
+    --eye 32,32,10 --target 32,32,0 --ortho 128 --far 10 --algorithm $algorithm
+  n=$(lit "$work/s.pgm" 128 128)
+  [ "$n" = 40 ] && pass || fail "--far 10, $algorithm: $n pixels lit, want 40"
+done
+expect 0 "trace-render --near" "$cg" trace-render "$work/tilted.off" -o "$work/s.pgm" $plain \
+  --eye 32,32,10 --target 32,32,0 --fov 170 --near 10 --far 100 --quiet
+expect 0 "render raytrace --near" "$cg" render "$work/tilted.off" -o "$work/z.pgm" $plain \
+  --eye 32,32,10 --target 32,32,0 --fov 170 --near 10 --far 100 --algorithm raytrace
+n=$(lit "$work/s.pgm" 128 128)
+[ "$n" -gt 0 ] && cmp -s "$work/s.pgm" "$work/z.pgm" && pass \
+  || fail "trace-render and render --algorithm raytrace cut at --near alike ($n pixels)"
+expect 0 "zbuffer --near" "$cg" render "$work/tilted.off" -o "$work/z.pgm" $plain \
+  --eye 32,32,10 --target 32,32,0 --fov 170 --near 10 --far 100
+m=$(lit "$work/z.pgm" 128 128)
+[ "$n" = "$m" ] && pass || fail "--near 10 --fov 170: ray tracer $n pixels, z-buffer $m"
 expect 2 "far before near" "$cg" render "$work/strip.off" -o "$work/x.pgm" --near 5 --far 2
 one_line "far before near"
 expect 2 "perspective near 0" "$cg" render "$work/strip.off" -o "$work/x.pgm" --near 0

@@ -150,7 +150,8 @@ cg_camera cg_camera_default(void);
 cg_status cg_camera_frame(cg_camera *camera, cg_vec3 lo, cg_vec3 hi, double aspect);
 /* Sets near and far to enclose the depth range of the box [lo, hi] along
  * the viewing direction: the smallest and largest view-space depth of its
- * eight corners, padded by 0.1% of that range.  A perspective near stays
+ * eight corners, padded by 0.1% of that range and 1e-5 of the depth (a
+ * perspective near by at most 0.1% of itself).  A perspective near stays
  * at least 1e-4 of far (the z-buffer's precision; geometry nearer than
  * that is clipped); a parallel near may be zero or negative.  Nothing else
  * changes.  CG_EINVAL for an empty or non-finite box or an unusable

@@ -61,8 +61,9 @@ cg_status cg_camera_fit_depth(cg_camera *camera, cg_vec3 lo, cg_vec3 hi)
         farthest = fmax(farthest, depth);
     }
     /* A little room on both sides, so faces lying on the box keep clear of
-     * the clip planes after rounding. */
-    double pad = 1e-3 * (farthest - nearest) + 1e-9 * fmax(fabs(nearest), fabs(farthest));
+     * the clip planes after rounding: 0.1% of the range and 1e-5 of the
+     * depth (the ray tracer's hit distances carry float rounding). */
+    double pad = 1e-3 * (farthest - nearest) + 1e-5 * fmax(fabs(nearest), fabs(farthest));
     if (!(pad > 0))
         pad = 1e-9 * cg_vec3_length(cg_vec3_sub(camera->target, camera->eye));
     double near = nearest - pad, far = farthest + pad;

@@ -155,6 +155,14 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
         cg_mesh_free(mesh);
         return CLI_USAGE;
     }
+    if (s->extra.classic_scene || s->extra.floor) {
+        /* Infinite planes: seen to the horizon and up to the eye. */
+        double distance = cg_vec3_length(cg_vec3_sub(o.camera.target, o.camera.eye));
+        if (!s->common.have_far)
+            o.camera.far = INFINITY;
+        if (!s->common.have_near && !o.camera.orthographic)
+            o.camera.near = fmin(o.camera.near, distance * 1e-4);
+    }
     if ((s->extra.classic_scene || s->extra.floor) && !s->common.have_background)
         o.background = cg_rgba8_to_linear((cg_rgba8){150, 190, 235, 255}); /* a sky */
     progress_state progress = {-1};

@@ -96,6 +96,8 @@ typedef struct cg_scene {
 
     cg_camera camera;             /* eye, target, up, fovy or ortho_height, near, far */
     int frame_camera;             /* move the eye so the whole scene fits (keeps direction) */
+    int near_given, far_given;    /* camera.near / far came from the file; otherwise they
+                                     enclose the scene's depth range along the view */
     cg_scene_projection projection;
     double projection_angle;      /* trimetric: about y; oblique: direction of depth (radians) */
     double projection_angle2;     /* trimetric: about x (radians) */

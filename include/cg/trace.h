@@ -173,6 +173,11 @@ typedef struct cg_trace_options {
     int shadows;          /* cast shadow rays */
     cg_trace_normals normals;
     cg_rgbaf background;  /* linear light; alpha kept where no object is hit */
+    /* Non-zero: primary rays see only depths between the camera's near and
+     * far along the viewing direction, the rasterizer's view volume (far
+     * may be +infinity).  0 (default): from the eye, or a parallel camera's
+     * near plane, without end. */
+    int clip_depth;
     /* Called after each finished tile with done/total tiles (from a worker
      * thread, one call at a time); may be NULL. */
     void (*progress)(void *user, int done, int total);

@@ -129,17 +129,39 @@ typedef struct cg_camera {
     int orthographic;   /* 0: perspective with fovy; 1: parallel with ortho_height */
     double fovy;        /* vertical field of view in radians, in (0, pi) */
     double ortho_height; /* height of the visible region for parallel views */
-    double near, far;   /* clip distances along the viewing direction, 0 < near < far */
+    /* Clip distances along the viewing direction, near < far; a
+     * perspective camera needs 0 < near, a parallel one may reach behind
+     * the eye (near <= 0). */
+    double near, far;
 } cg_camera;
 
 /* A perspective camera looking from eye at target with +y up, 45 deg
- * vertical field of view; near and far left for cg_camera_frame to set. */
+ * vertical field of view; near and far left for cg_camera_fit_depth or
+ * cg_camera_frame to set. */
 cg_camera cg_camera_default(void);
 /* Places the camera so the box [lo, hi] fills the view: keeps the viewing
- * direction (target - eye) and field of view, moves the eye back until the
- * box's bounding sphere fits, and sets near and far to enclose it.
- * CG_EINVAL when the box is empty or not finite. */
+ * direction (target - eye), up and field of view and moves eye and target
+ * so the box's projected corners just fit (the projected box touches two
+ * opposite sides of the picture, less a margin of 5%, and is centred across
+ * the other axis; a parallel camera also gets ortho_height).  An up parallel
+ * to the viewing direction is replaced by cg_camera_up_for's.  near and far
+ * as cg_camera_fit_depth sets them.  CG_EINVAL when the box is empty or not
+ * finite. */
 cg_status cg_camera_frame(cg_camera *camera, cg_vec3 lo, cg_vec3 hi, double aspect);
+/* Sets near and far to enclose the depth range of the box [lo, hi] along
+ * the viewing direction: the smallest and largest view-space depth of its
+ * eight corners, padded by 0.1% of that range and 1e-5 of the depth (a
+ * perspective near by at most 0.1% of itself).  A perspective near stays
+ * at least 1e-4 of far (the z-buffer's precision; geometry nearer than
+ * that is clipped); a parallel near may be zero or negative.  Nothing else
+ * changes.  CG_EINVAL for an empty or non-finite box or an unusable
+ * camera (eye on target, up along the view). */
+cg_status cg_camera_fit_depth(cg_camera *camera, cg_vec3 lo, cg_vec3 hi);
+/* up, or when it is zero or parallel to direction, another up: the world
+ * axis least aligned with it (z first) made perpendicular to direction,
+ * signed as if the camera had pitched onto direction (looking down -y with
+ * up +y gives -z, looking up +y gives +z).  direction need not be unit. */
+cg_vec3 cg_camera_up_for(cg_vec3 direction, cg_vec3 up);
 /* View matrix (world to camera space). */
 cg_status cg_camera_view(const cg_camera *camera, cg_mat4 *out);
 /* Projection matrix for the given aspect ratio (width / height). */

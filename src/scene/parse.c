@@ -299,7 +299,9 @@ static cg_status parse_camera(const parser *p, const cJSON *v, cg_scene *s)
     }
     if (projection == CG_SCENE_DIMETRIC && !(s->projection_ratio < 1))
         return fail(p, "camera.ratio", "expected a number between 0.001 and 1 (exclusive) for a dimetric view");
-    if (!(c->far > c->near))
+    s->near_given = cJSON_GetObjectItemCaseSensitive(v, "near") != NULL;
+    s->far_given = cJSON_GetObjectItemCaseSensitive(v, "far") != NULL;
+    if (s->near_given && s->far_given && !(c->far > c->near))
         return fail(p, "camera.far", "expected a distance greater than near (%g)", c->near);
     if (!(cg_vec3_length(cg_vec3_sub(c->target, c->eye)) > 0))
         return fail(p, "camera.target", "expected a point different from the eye");

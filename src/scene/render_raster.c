@@ -14,30 +14,20 @@
 #define SPHERE_SLICES 96
 #define SPHERE_STACKS 48
 
-/* A plane drawn as a square of this many scene radii on a side. */
-#define PLANE_EXTENT 6.0
-
-/* The square standing for an infinite plane: centred on the point of the
- * plane nearest the scene's centre. */
+/* The square standing for an infinite plane (scene_plane_square). */
 static cg_status plane_mesh(const cg_scene_object *o, cg_vec3 center, double radius, cg_mesh **out)
 {
-    cg_vec3 n = cg_vec3_normalize(o->normal);
-    cg_vec3 c = cg_vec3_sub(center, cg_vec3_scale(n, cg_vec3_dot(cg_vec3_sub(center, o->point), n)));
-    cg_vec3 helper = fabs(n.x) < 0.9 ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);
-    cg_vec3 u = cg_vec3_scale(cg_vec3_normalize(cg_vec3_cross(n, helper)), PLANE_EXTENT * radius);
-    cg_vec3 v = cg_vec3_cross(n, u);
+    cg_vec3 corners[4];
+    scene_plane_square(o, center, radius, corners);
     cg_status s = cg_mesh_create(out, 4, 1, 4, 0);
     if (s != CG_OK)
         return s;
     cg_mesh *m = *out;
-    /* Counter-clockwise seen from the side the normal points to. */
-    m->positions[0] = cg_vec3_sub(cg_vec3_sub(c, u), v);
-    m->positions[1] = cg_vec3_sub(cg_vec3_add(c, u), v);
-    m->positions[2] = cg_vec3_add(cg_vec3_add(c, u), v);
-    m->positions[3] = cg_vec3_add(cg_vec3_sub(c, u), v);
-    m->face_offsets[1] = 4;
-    for (uint32_t k = 0; k < 4; k++)
+    for (uint32_t k = 0; k < 4; k++) {
+        m->positions[k] = corners[k];
         m->face_indices[k] = k;
+    }
+    m->face_offsets[1] = 4;
     return CG_OK;
 }
 
@@ -186,10 +176,9 @@ static cg_status raster_part(const cg_scene *scene, size_t i, cg_vec3 center, do
 cg_status scene_world_mesh(const cg_scene *scene, cg_mesh **out, uint32_t **face_material,
                             cg_error *err)
 {
-    cg_vec3 lo, hi;
-    scene_bounds(scene, &lo, &hi);
-    cg_vec3 center = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
-    double radius = fmax(0.5 * cg_vec3_length(cg_vec3_sub(hi, lo)), 1e-6);
+    cg_vec3 center;
+    double radius;
+    scene_plane_extent(scene, &center, &radius);
     size_t n = scene->object_count;
     const cg_mesh **parts = calloc(n ? n : 1, sizeof *parts);
     cg_mesh **owned = calloc(n ? n : 1, sizeof *owned);

@@ -47,6 +47,24 @@ static cg_status add_object(cg_trace_scene *trace, const cg_scene *scene, const 
     return CG_EINVAL;
 }
 
+/* The ray tracer draws planes whole, to the horizon and up to the eye:
+ * unless the file sets them, far is unbounded and a perspective near the
+ * old 1e-4 of the eye's distance to the target, where the rasterizer's
+ * squares (which decide scene_view's range) would cut them. */
+static void open_depth_for_planes(const cg_scene *scene, cg_camera *camera)
+{
+    int planes = 0;
+    for (size_t i = 0; i < scene->object_count; i++)
+        planes |= scene->objects[i].kind == CG_SCENE_PLANE;
+    if (!planes)
+        return;
+    if (!scene->far_given)
+        camera->far = INFINITY;
+    double distance = cg_vec3_length(cg_vec3_sub(camera->target, camera->eye));
+    if (!scene->near_given && !camera->orthographic)
+        camera->near = fmin(camera->near, 1e-4 * distance);
+}
+
 cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *err)
 {
     if (scene_is_oblique(scene))
@@ -58,6 +76,7 @@ cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *e
     cg_status s = scene_view(scene, &camera, &model);
     if (s != CG_OK)
         return cg_error_set(err, s, "scene: the camera cannot see the scene");
+    open_depth_for_planes(scene, &camera);
     cg_trace_scene *trace;
     if ((s = cg_trace_scene_create(&trace)) != CG_OK)
         return cg_error_set(err, s, "scene: cannot create the ray-tracing scene");
@@ -94,6 +113,7 @@ cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *e
         options.shadows = scene->shadows;
         options.normals = scene->shading == CG_SCENE_FLAT ? CG_TRACE_FLAT : CG_TRACE_SMOOTH;
         options.background = scene->background;
+        options.clip_depth = 1;
         if ((s = cg_trace_render(trace, &camera, &options, image, NULL)) != CG_OK)
             cg_error_set(err, s, "scene: ray tracing failed: %s", cg_status_str(s));
     }

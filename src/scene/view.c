@@ -51,6 +51,52 @@ void scene_bounds(const cg_scene *scene, cg_vec3 *lo, cg_vec3 *hi)
     *hi = b;
 }
 
+/* A plane drawn as a square of this many scene radii on a side. */
+#define PLANE_EXTENT 6.0
+
+void scene_plane_extent(const cg_scene *scene, cg_vec3 *center, double *radius)
+{
+    cg_vec3 lo, hi;
+    scene_bounds(scene, &lo, &hi);
+    *center = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
+    *radius = fmax(0.5 * cg_vec3_length(cg_vec3_sub(hi, lo)), 1e-6);
+}
+
+void scene_plane_square(const cg_scene_object *o, cg_vec3 center, double radius,
+                        cg_vec3 corners[4])
+{
+    cg_vec3 n = cg_vec3_normalize(o->normal);
+    cg_vec3 c = cg_vec3_sub(center, cg_vec3_scale(n, cg_vec3_dot(cg_vec3_sub(center, o->point), n)));
+    cg_vec3 helper = fabs(n.x) < 0.9 ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);
+    cg_vec3 u = cg_vec3_scale(cg_vec3_normalize(cg_vec3_cross(n, helper)), PLANE_EXTENT * radius);
+    cg_vec3 v = cg_vec3_cross(n, u);
+    corners[0] = cg_vec3_sub(cg_vec3_sub(c, u), v);
+    corners[1] = cg_vec3_sub(cg_vec3_add(c, u), v);
+    corners[2] = cg_vec3_add(cg_vec3_add(c, u), v);
+    corners[3] = cg_vec3_add(cg_vec3_sub(c, u), v);
+}
+
+/* The box that near and far enclose: scene_bounds and the planes' squares. */
+static void depth_bounds(const cg_scene *scene, cg_vec3 *lo, cg_vec3 *hi)
+{
+    cg_vec3 center;
+    double radius;
+    scene_bounds(scene, lo, hi);
+    scene_plane_extent(scene, &center, &radius);
+    for (size_t i = 0; i < scene->object_count; i++) {
+        const cg_scene_object *o = &scene->objects[i];
+        if (o->kind != CG_SCENE_PLANE)
+            continue;
+        cg_vec3 corners[4];
+        scene_plane_square(o, center, radius, corners);
+        for (int k = 0; k < 4; k++) {
+            cg_vec3 p = cg_mat4_transform_point(o->transform, corners[k]);
+            if (isfinite(p.x) && isfinite(p.y) && isfinite(p.z))
+                grow(lo, hi, p);
+        }
+    }
+}
+
 /* The rotation of an axonometric projection kind. */
 static cg_mat4 axonometric_rotation(const cg_scene *scene)
 {
@@ -102,7 +148,7 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
         c.ortho_height = 1.05 * cg_vec3_length(cg_vec3_sub(hi, lo));
     if (scene_is_oblique(scene)) {
         /* An oblique view is an orthographic one after a shear in view space:
-         * a point d units farther away (view z = -d) moves by ratio d along
+         * a point d units farther away than the target moves by ratio d along
          * the projection angle. */
         double ratio = scene->projection == CG_SCENE_CAVALIER ? 1
                      : scene->projection == CG_SCENE_CABINET ? 0.5 : scene->projection_ratio;
@@ -112,11 +158,27 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
             s = cg_mat4_inverse(view, &inverse_view);
         if (s != CG_OK)
             return s;
-        cg_mat4 shear = cg_proj_oblique(scene->projection_angle, -ratio);
+        /* The shear keeps the target's depth plane in place, so the scene
+         * stays centred however far back the eye stands. */
+        double target_z = -cg_vec3_length(cg_vec3_sub(c.target, c.eye));
+        cg_mat4 shear = cg_mat4_mul(cg_xform3_translate(0, 0, target_z),
+                                    cg_mat4_mul(cg_proj_oblique(scene->projection_angle, -ratio),
+                                                cg_xform3_translate(0, 0, -target_z)));
         *model = cg_mat4_mul(inverse_view, cg_mat4_mul(shear, view));
         /* The shear moves the scene sideways: widen the view to keep it in. */
         c.ortho_height *= 1 + ratio;
     }
+    cg_vec3 depth_lo, depth_hi;
+    depth_bounds(scene, &depth_lo, &depth_hi);
+    cg_status s = cg_camera_fit_depth(&c, depth_lo, depth_hi);
+    if (s != CG_OK)
+        return s;
+    if (scene->near_given)
+        c.near = scene->camera.near;
+    if (scene->far_given)
+        c.far = scene->camera.far;
+    if (!(c.far > c.near))
+        return CG_EINVAL;
     *camera = c;
     return CG_OK;
 }

@@ -137,14 +137,15 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
     return sum;
 }
 
-/* Radiance along the ray (direction unit); *hit_any set when it hits. */
-static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, int depth, double weight,
-                     sampler *rng, int *hit_any)
+/* Radiance along the ray (direction unit) between t_min and t_max (the
+ * camera's near and far for a primary ray); *hit_any set when it hits. */
+static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_min,
+                     double t_max, int depth, double weight, sampler *rng, int *hit_any)
 {
     const cg_trace_options *opt = ctx->options;
     trace_hit hit;
     ctx->rays++;
-    if (!trace_intersect(ctx->scene, origin, direction, 0, INFINITY, &hit)) {
+    if (!trace_intersect(ctx->scene, origin, direction, t_min, t_max, &hit)) {
         if (hit_any)
             *hit_any = 0;
         return cg_vec3_make(opt->background.r, opt->background.g, opt->background.b);
@@ -180,7 +181,7 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, int depth,
             double w = transmit * (1 - fresnel);
             if (w * weight >= MIN_WEIGHT) {
                 cg_vec3 c = trace(ctx, trace_offset(&hit, cg_vec3_scale(ng, -1)), refracted,
-                                  depth + 1, weight * w, rng, NULL);
+                                  0, INFINITY, depth + 1, weight * w, rng, NULL);
                 color = cg_vec3_add(color, cg_vec3_scale(c, w));
             }
         } else {
@@ -188,8 +189,8 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, int depth,
         }
     }
     if (reflect_weight > 0 && reflect_weight * weight >= MIN_WEIGHT) {
-        cg_vec3 c = trace(ctx, trace_offset(&hit, ng), mirror, depth + 1, weight * reflect_weight,
-                          rng, NULL);
+        cg_vec3 c = trace(ctx, trace_offset(&hit, ng), mirror, 0, INFINITY, depth + 1,
+                          weight * reflect_weight, rng, NULL);
         color = cg_vec3_add(color, cg_vec3_scale(c, reflect_weight));
     }
     return color;
@@ -204,6 +205,11 @@ typedef struct job {
     /* Primary rays: origin(x, y) = origin0 + x origin_dx + y origin_dy and
      * direction the same, normalized (both affine in the image point). */
     cg_vec3 origin0, origin_dx, origin_dy, dir0, dir_dx, dir_dy;
+    /* The depths along the viewing axis between which a primary ray sees,
+     * from its origin: near to far from the eye, 0 to far - near from a
+     * parallel camera's near plane.  The unnormalized direction advances
+     * one unit of depth per unit, so t = depth * its length. */
+    double depth_from, depth_to;
     int tiles_x, tiles_total;
     int next_tile, done_tiles;
     pthread_mutex_t lock;
@@ -235,10 +241,13 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
         double px = x + sx, py = y + sy;
         cg_vec3 origin = cg_vec3_add(j->origin0, cg_vec3_add(cg_vec3_scale(j->origin_dx, px),
                                                              cg_vec3_scale(j->origin_dy, py)));
-        cg_vec3 direction = cg_vec3_normalize(cg_vec3_add(
-            j->dir0, cg_vec3_add(cg_vec3_scale(j->dir_dx, px), cg_vec3_scale(j->dir_dy, py))));
+        cg_vec3 step = cg_vec3_add(
+            j->dir0, cg_vec3_add(cg_vec3_scale(j->dir_dx, px), cg_vec3_scale(j->dir_dy, py)));
+        double length = cg_vec3_length(step);
+        cg_vec3 direction = cg_vec3_normalize(step);
         int hit = 0;
-        cg_vec3 c = trace(ctx, origin, direction, 0, 1, &rng, &hit);
+        cg_vec3 c = trace(ctx, origin, direction, j->depth_from * length, j->depth_to * length, 0,
+                          1, &rng, &hit);
         double w = 1.0 / ((double)rows * in_row);
         r += c.x * w;
         g += c.y * w;
@@ -305,6 +314,14 @@ static cg_status setup_camera(job *j, const cg_camera *camera)
     j->dir0 = d[0];
     j->dir_dx = cg_vec3_sub(d[1], d[0]);
     j->dir_dy = cg_vec3_sub(d[2], d[0]);
+    j->depth_from = 0;
+    j->depth_to = INFINITY;
+    if (j->options->clip_depth) {
+        j->depth_from = camera->orthographic ? 0 : camera->near;
+        j->depth_to = camera->orthographic ? camera->far - camera->near : camera->far;
+        if (!(j->depth_to > j->depth_from) || !(j->depth_from >= 0) || isnan(j->depth_to))
+            return CG_EINVAL;
+    }
     return CG_OK;
 }
 

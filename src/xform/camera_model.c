@@ -15,37 +15,6 @@ cg_camera cg_camera_default(void)
     return c;
 }
 
-cg_status cg_camera_frame(cg_camera *camera, cg_vec3 lo, cg_vec3 hi, double aspect)
-{
-    if (!camera || !(hi.x >= lo.x) || !(hi.y >= lo.y) || !(hi.z >= lo.z) || !(aspect > 0))
-        return CG_EINVAL;
-    cg_vec3 center = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
-    double radius = 0.5 * cg_vec3_length(cg_vec3_sub(hi, lo));
-    if (!isfinite(radius))
-        return CG_EINVAL;
-    if (radius == 0)
-        radius = 1;
-    cg_vec3 direction = cg_vec3_sub(camera->target, camera->eye);
-    if (!(cg_vec3_length(direction) > 0))
-        direction = cg_vec3_make(0, 0, -1);
-    direction = cg_vec3_normalize(direction);
-    /* The sphere fits when its angular radius is within half the smaller
-     * field of view. */
-    double half_fov = camera->fovy / 2;
-    double horizontal = atan(tan(half_fov) * aspect);
-    double limit = half_fov < horizontal ? half_fov : horizontal;
-    double distance = camera->orthographic ? 2 * radius : radius / sin(limit);
-    camera->target = center;
-    camera->eye = cg_vec3_sub(center, cg_vec3_scale(direction, distance * 1.05));
-    camera->near = (distance * 1.05 - radius) * 0.5;
-    if (camera->near < distance * 1e-4)
-        camera->near = distance * 1e-4;
-    camera->far = distance * 1.05 + radius * 1.5;
-    if (camera->orthographic)
-        camera->ortho_height = 2 * radius * (aspect < 1 ? 1 / aspect : 1) * 1.05;
-    return CG_OK;
-}
-
 cg_status cg_camera_view(const cg_camera *camera, cg_mat4 *out)
 {
     if (!camera)

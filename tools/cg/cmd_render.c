@@ -35,6 +35,8 @@ const cg_command cg_command_render = {
     "  --up X,Y,Z            up direction (default 0,1,0)\n"
     "  --fov DEGREES         vertical field of view, perspective (default 45)\n"
     "  --ortho HEIGHT        parallel projection showing HEIGHT world units vertically\n"
+    "  --near D, --far D     clip distances along the view (default: the mesh's depth\n"
+    "                        range; a parallel view's near may be 0 or negative)\n"
     "Light and material:\n"
     "  --light-dir X,Y,Z     directional light toward which lit surfaces face, strength 1;\n"
     "                        repeatable (default: one light from the camera's upper left)\n"

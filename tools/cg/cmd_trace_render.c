@@ -29,6 +29,8 @@ const cg_command cg_command_trace_render = {
     "  --up X,Y,Z           up direction (default 0,1,0)\n"
     "  --fov DEGREES        vertical field of view, perspective (default 45)\n"
     "  --ortho HEIGHT       parallel projection showing HEIGHT world units\n"
+    "  --near D, --far D    clip distances along the view (default: the mesh's depth\n"
+    "                       range; a parallel view's rays start at near)\n"
     "  --light-dir X,Y,Z    directional light toward which surfaces face (repeatable;\n"
     "                       default: one from the camera's upper left)\n"
     "  --ambient K          ambient coefficient (default 0.15)\n"

@@ -30,6 +30,7 @@ typedef struct viewer {
     /* orbit camera: target, distance, yaw (about y) and pitch */
     cg_vec3 target;
     double distance, yaw, pitch;
+    cg_vec3 lo, hi; /* the model's box, which near and far enclose */
     double frame_ms;
     int screenshots;
     const char *screenshot_dir;
@@ -42,9 +43,11 @@ static void place_camera(viewer *v)
     c->target = v->target;
     c->eye = cg_vec3_add(v->target, cg_vec3_scale(offset, v->distance));
     c->up = cg_vec3_make(0, 1, 0);
-    /* Near and far follow the distance so that zooming keeps the model. */
+    /* Near and far enclose the model's depth range wherever the orbit and
+     * panning put the eye. */
     c->near = v->distance * 0.01;
     c->far = v->distance * 20;
+    cg_camera_fit_depth(c, v->lo, v->hi);
     if (c->orthographic)
         c->ortho_height = v->distance * 2 * tan(c->fovy / 2);
 }
@@ -207,6 +210,8 @@ static int run(int argc, char **argv)
         cg_camera_frame(&framed, lo, hi, (double)width / height);
     }
     v.options.camera = framed;
+    v.lo = lo;
+    v.hi = hi;
     v.target = framed.target;
     cg_vec3 offset = cg_vec3_sub(framed.eye, framed.target);
     v.distance = cg_vec3_length(offset);

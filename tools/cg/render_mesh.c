@@ -24,17 +24,9 @@ static int place_camera(const char *command, const render_request *r, int bounde
     if (c->ortho_height > 0)
         camera.ortho_height = c->ortho_height;
     cg_vec3 centre = bounded ? cg_vec3_scale(cg_vec3_add(lo, hi), 0.5) : cg_vec3_make(0, 0, 0);
-    double radius = bounded ? 0.5 * cg_vec3_length(cg_vec3_sub(hi, lo)) : 1;
-    if (!(radius > 0))
-        radius = 1;
     if (c->have_eye) {
         camera.eye = c->eye;
         camera.target = c->have_target ? c->target : centre;
-        double distance = cg_vec3_length(cg_vec3_sub(camera.eye, centre));
-        camera.far = distance + radius * 1.01 + 1e-9;
-        camera.near = distance - radius * 1.01;
-        if (camera.near < camera.far * 1e-4)
-            camera.near = camera.far * 1e-4;
         if (!(cg_vec3_length(cg_vec3_sub(camera.target, camera.eye)) > 0))
             return cli_usage_error(command, "--eye and --target must differ");
     } else {
@@ -48,7 +40,6 @@ static int place_camera(const char *command, const render_request *r, int bounde
                 cg_vec3 offset = cg_vec3_sub(camera.eye, camera.target);
                 camera.target = c->target;
                 camera.eye = cg_vec3_add(c->target, offset);
-                camera.far += cg_vec3_length(cg_vec3_sub(c->target, centre));
             }
             if (c->ortho_height > 0)
                 camera.ortho_height = c->ortho_height;
@@ -57,6 +48,8 @@ static int place_camera(const char *command, const render_request *r, int bounde
     cg_vec3 view_dir = cg_vec3_sub(camera.target, camera.eye);
     if (cg_vec3_length(cg_vec3_cross(view_dir, camera.up)) <= 1e-12 * cg_vec3_length(view_dir))
         return cli_usage_error(command, "--up must not be parallel to the viewing direction");
+    if (render_cli_set_depth(command, c, bounded, lo, hi, &camera) != CLI_OK)
+        return CLI_USAGE;
     *out = camera;
     return CLI_OK;
 }

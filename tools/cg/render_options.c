@@ -48,6 +48,24 @@ int render_cli_check_output(const char *command, const char *output)
     return CLI_OK;
 }
 
+int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded,
+                         cg_vec3 lo, cg_vec3 hi, cg_camera *camera)
+{
+    if (bounded)
+        cg_camera_fit_depth(camera, lo, hi); /* the camera was checked: it cannot fail */
+    if (o->have_near)
+        camera->near = o->near;
+    if (o->have_far)
+        camera->far = o->far;
+    if (!camera->orthographic && !(camera->near > 0))
+        return cli_usage_error(command, "--near: expected a distance > 0 for a perspective view, "
+                                        "got %g", camera->near);
+    if (!(camera->far > camera->near))
+        return cli_usage_error(command, "--far: expected a distance greater than near (%g), got %g",
+                               camera->near, camera->far);
+    return CLI_OK;
+}
+
 int render_cli_parse_option(const char *command, int argc, char **argv, int *i,
                             render_cli_options *o)
 {
@@ -95,6 +113,24 @@ int render_cli_parse_option(const char *command, int argc, char **argv, int *i,
             o->ortho_height = 0;
         } else {
             o->ortho_height = x;
+        }
+    } else if (cli_option_is(a, "--near") || cli_option_is(a, "--far")) {
+        int near = cli_option_is(a, "--near");
+        double x;
+        VALUE();
+        if (cli_parse_double(command, near ? "--near" : "--far", v, &x))
+            return -1;
+        if (!isfinite(x)) {
+            cli_usage_error(command, "%s: expected a finite distance, got '%s'",
+                            near ? "--near" : "--far", v);
+            return -1;
+        }
+        if (near) {
+            o->near = x;
+            o->have_near = 1;
+        } else {
+            o->far = x;
+            o->have_far = 1;
         }
     } else if (cli_option_is(a, "--light-dir")) {
         cg_vec3 d;

@@ -13,9 +13,11 @@ typedef struct render_cli_options {
     cg_vec3 eye, target, up; /* --eye, --target, --up (default 0,1,0) */
     double fov_degrees;      /* --fov (default 45) */
     double ortho_height;     /* --ortho; > 0: parallel view (--fov resets it to 0) */
+    double near, far;        /* --near, --far (default: the mesh's depth range) */
     int repeat;              /* --repeat N (0: one frame, no timing line) */
     /* Which of them the command line gave. */
     int have_size, have_eye, have_target, have_shading, have_threads, have_background;
+    int have_near, have_far;
     /* Set by `cg trace-render`: a --light-dir beyond CG_RENDER_MAX_LIGHTS is
      * reported as "too many lights" before its direction is checked (`cg
      * render` checks the direction first and says "at most 8 lights"). */
@@ -32,6 +34,14 @@ void render_cli_options_default(render_cli_options *o);
  * printing a usage error for command. */
 int render_cli_parse_option(const char *command, int argc, char **argv, int *i,
                             render_cli_options *o);
+
+/* Sets the placed camera's near and far: the depth range of the box
+ * [lo, hi] along its viewing direction (cg_camera_fit_depth) when bounded,
+ * then --near and --far where given.  CLI_OK, or the usage error for
+ * command when the two do not make a range (far <= near, or a perspective
+ * near <= 0). */
+int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded,
+                         cg_vec3 lo, cg_vec3 hi, cg_camera *camera);
 
 /* text as an index into names[0..count): 0, or -1 after printing
  * "WHAT: expected A, B or C, got 'TEXT'". */

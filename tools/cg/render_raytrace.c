@@ -105,6 +105,7 @@ int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *o
     t->camera = o->camera;
     t->frame_camera = o->frame_camera;
     t->options = cg_trace_options_default();
+    t->options.clip_depth = 1; /* --near and --far mean what they do for the rasterizer */
     t->options.samples = extra->samples;
     t->options.max_depth = extra->depth;
     t->options.shadows = extra->shadows;

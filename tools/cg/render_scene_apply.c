@@ -35,7 +35,8 @@ static int replace_lights(const char *command, const cg_render_options *o, cg_sc
 }
 
 /* Camera options override the scene's camera as they place a mesh's: --eye
- * turns framing off, --view-from frames from its direction, --fov makes the
+ * turns framing off, --view-from frames from its direction, --near and --far
+ * set the depth range, --fov makes the
  * view perspective and --ortho parallel.  An axonometric projection fixes the
  * viewing direction itself, so a direction given by --eye or --view-from
  * turns it into a plain orthographic one. */
@@ -58,6 +59,15 @@ static void apply_camera(const render_request *r, cg_scene *scene)
     if (r->trace.have_view_from) {
         camera->eye = cg_vec3_add(camera->target, r->trace.view_from);
         scene->frame_camera = 1;
+    }
+    /* --near and --far replace the scene's (or its computed) depth range. */
+    if (c->have_near) {
+        camera->near = c->near;
+        scene->near_given = 1;
+    }
+    if (c->have_far) {
+        camera->far = c->far;
+        scene->far_given = 1;
     }
     /* The later of --fov and --ortho wins, as for meshes. */
     if (c->ortho_height > 0) {

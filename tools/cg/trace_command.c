@@ -111,7 +111,9 @@ static int place_camera(const raytrace_settings *s, int bounded, cg_vec3 lo, cg_
     if (!(distance > 0) || !(cg_vec3_length(c->up) > 0)
         || cg_vec3_length(cg_vec3_cross(view, c->up)) <= 1e-12 * distance)
         return 0;
-    /* Rays start at the eye; a parallel view's start on the near plane. */
+    /* Rays start at the eye; a parallel view's start on the near plane,
+     * which encloses the mesh (the classic scene's spheres and floor reach
+     * beyond any box: there the eye's own plane). */
     c->near = distance * 1e-4;
     c->far = distance * 1e4;
     return 1;
@@ -142,6 +144,18 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
         cg_mesh_free(mesh);
         return cli_usage_error(command, "the eye must differ from the target and up must not be "
                                         "parallel to the viewing direction");
+    }
+    if (render_cli_set_depth(command, &s->common, bounded, lo, hi, &o.camera) != CLI_OK) {
+        cg_mesh_free(mesh);
+        return CLI_USAGE;
+    }
+    if (s->extra.classic_scene || s->extra.floor) {
+        /* Infinite planes: seen to the horizon and up to the eye. */
+        double distance = cg_vec3_length(cg_vec3_sub(o.camera.target, o.camera.eye));
+        if (!s->common.have_far)
+            o.camera.far = INFINITY;
+        if (!s->common.have_near && !o.camera.orthographic)
+            o.camera.near = fmin(o.camera.near, distance * 1e-4);
     }
     if ((s->extra.classic_scene || s->extra.floor) && !s->common.have_background)
         o.background = cg_rgba8_to_linear((cg_rgba8){150, 190, 235, 255}); /* a sky */

@@ -252,6 +252,9 @@ static int parse(draw_script *script, size_t size)
     }
     int capacity = 0, number = 0;
     char *p = script->text;
+    /* A UTF-8 byte-order mark, as some editors write, is not part of line 1. */
+    if (size >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+        p += 3;
     draw_state where = {0};
     where.file = script->file;
     while (*p) {

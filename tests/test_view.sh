@@ -11,6 +11,10 @@ if "$cg" view 2>&1 | grep -q "without SDL2"; then
   echo "0 passed, 0 failed, 1 skipped"
   exit 77
 fi
+# In sanitizer builds: the X11 and SDL video drivers keep allocations until
+# exit that are theirs, not cg's, from dlopen'ed modules no suppression can
+# name; address and undefined-behaviour checks stay on.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 bunny="$source_dir/data/meshes/bunny.obj"
@@ -36,7 +40,7 @@ if [ $status -ne 1 ] || grep -q "no display" "$work/bogus.err" \
   echo "0 passed, 1 failed"
   exit 1
 fi
-env -u DISPLAY -u WAYLAND_DISPLAY SDL_VIDEODRIVER=dummy ASAN_OPTIONS=detect_leaks=0 timeout 3 \
+env -u DISPLAY -u WAYLAND_DISPLAY SDL_VIDEODRIVER=dummy timeout 3 \
   "$cg" view "$bunny" --size 64x48 2>"$work/dummy.err"
 status=$?
 if [ $status -ne 124 ]; then   # the window stays open until the timeout ends it
@@ -52,10 +56,6 @@ for tool in xvfb-run xdotool; do
     exit 77
   fi
 done
-# In sanitizer builds: the X11 and SDL video drivers keep allocations until
-# exit that are theirs, not cg's, from dlopen'ed modules no suppression can
-# name; address and undefined-behaviour checks stay on.
-export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 
 cat > "$work/session.sh" <<SESSION
 set -u

@@ -29,8 +29,12 @@ build: deps
 run: build
 	$(BUILD)/tools/cg/cg demo -o $(OUT)
 
-# Builds and runs every test.
+# Builds and runs every test.  CMake is configured again after the test
+# packages are installed, so that the checks against the peers they bring
+# (GEOS, OSMesa, Embree, ...) are built even when `make run` configured the
+# build before they were there.
 test: test-deps
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	@$(MAKE) --no-print-directory compile
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 

@@ -1,5 +1,5 @@
 # Boolean operations checked against GEOS (area and point membership).  GEOS
-# is used only here and in the benchmark; without it the test is skipped.
+# is used only here and in the benchmark; without it the test says it is skipped.
 find_library(CG_GEOS_C_LIBRARY NAMES geos_c)
 find_path(CG_GEOS_C_INCLUDE NAMES geos_c.h)
 if(CG_GEOS_C_LIBRARY AND CG_GEOS_C_INCLUDE)
@@ -9,7 +9,7 @@ if(CG_GEOS_C_LIBRARY AND CG_GEOS_C_INCLUDE)
   target_link_libraries(clip_geos PRIVATE cg_static ${CG_GEOS_C_LIBRARY})
   add_test(NAME test_clip_geos COMMAND clip_geos)
 else()
-  message(STATUS "GEOS (libgeos-dev) not found: skipping test_clip_geos")
+  cg_add_missing_peer_test(test_clip_geos "GEOS" libgeos-dev)
 endif()
 
 # Boolean operations when memory runs out: the test wraps the C library's

@@ -86,13 +86,20 @@ static void walk(const char *dir)
 
 int main(int argc, char **argv)
 {
-    struct stat st;
-    if (argc < 2 || stat(argv[1], &st) != 0 || !S_ISDIR(st.st_mode)) {
-        printf("skipped: no assimp-testmodels directory (install the Debian package "
-               "assimp-testmodels)\n");
+    /* The first argument that is a directory: CMake passes the one it found,
+     * or every place the package installs to when it found none, so that a
+     * package installed after the build is still found here. */
+    const char *models = NULL;
+    for (int i = 1; i < argc && !models; i++) {
+        struct stat st;
+        if (stat(argv[i], &st) == 0 && S_ISDIR(st.st_mode))
+            models = argv[i];
+    }
+    if (!models) {
+        printf("skipped: no assimp-testmodels directory (apt-get install assimp-testmodels)\n");
         return 77;
     }
-    walk(argv[1]);
+    walk(models);
     printf("%d loaded, %d rejected with a clear error, %d failures\n", loaded, rejected,
            failures);
     return failures || loaded + rejected == 0 ? 1 : 0;

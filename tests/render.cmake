@@ -12,5 +12,5 @@ if(OSMESA_FOUND)
   set_tests_properties(test_render_osmesa PROPERTIES ENVIRONMENT
                        "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_SOURCE_DIR}/osmesa.lsan")
 else()
-  message(STATUS "OSMesa (libosmesa6-dev) not found: test_render_osmesa skipped")
+  cg_add_missing_peer_test(test_render_osmesa "OSMesa" libosmesa6-dev)
 endif()

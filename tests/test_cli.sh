@@ -16,7 +16,7 @@ expect 0 "convert --help" "$cg" convert --help
 expect 2 "no command" "$cg"
 expect 2 "unknown command" "$cg" frobnicate
 [ "$(wc -l < "$work/err")" = 1 ] && pass || fail "one line for an unknown command"
-expect 1 "help unknown" "$cg" help frobnicate
+expect 2 "help unknown" "$cg" help frobnicate
 expect 2 "convert unknown option" "$cg" convert --bogus a b
 [ "$(wc -l < "$work/err")" = 1 ] && pass || fail "one line for an unknown option"
 expect 2 "convert missing args" "$cg" convert only-one.png

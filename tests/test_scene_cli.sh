@@ -56,7 +56,11 @@ check_bad '{"objects": [{"type": "mesh", "file": "missing.obj"}]}' 'objects[0].f
 check_bad '{"objects": [' 'malformed JSON'
 check_bad '{"colour": 1}' 'colour: unknown key'
 check_bad '{"camera": {"projection": "cavalier"}, "render": {"algorithm": "raytrace"}}' 'oblique'
-check_bad '{"overlays": ["line 0 0 zz 1"]}' 'bad.json:1'
+check_bad '{"overlays": ["line 0 0 zz 1"]}' 'bad.json: overlays[0]: expected an integer for X1'
+check_bad '{"overlays": ["color red", "aacircle 10 10 1e12"]}' 'bad.json: overlays[1]: R = 1e12 is out of range'
+check_bad '{"overlays": ["color red", "bogus 1"]}' "bad.json: overlays[1]: unknown command 'bogus'"
+check_bad '{"objects": [{"type": "box", "lo": [0, 0, 0], "hi": [1, 0, 1]}]}' 'bad.json: objects[0].hi: expected every coordinate of hi to be greater than that of lo'
+check_bad '{"objects": [{"type": "box", "lo": [0, 0, 0], "hi": [1, 0, 1]}], "render": {"algorithm": "raytrace"}}' 'objects[0].hi'
 cp "$work/bunny-zbuffer.png" "$work/keep.png"
 printf '{"camera": {"fov": 0}}' > "$work/bad.json"
 "$cg" render "$work/bad.json" -o "$work/keep.png" 2>/dev/null

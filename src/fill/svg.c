@@ -11,6 +11,7 @@
 typedef struct parser {
     const char *text, *at;
     cg_error *err;
+    int too_large; /* length of the number at `at` when it was beyond CG_FILL_MAX_COORD */
 } parser;
 
 static void skip_separators(parser *p)
@@ -21,6 +22,11 @@ static void skip_separators(parser *p)
 
 static cg_status fail(parser *p, const char *what, char command)
 {
+    if (p->too_large) /* still CG_EFORMAT, as cg/fill.h says of every data error */
+        return cg_error_set(p->err, CG_EFORMAT,
+                            "path data, offset %ld: %.*s after '%c' is out of range: coordinates "
+                            "are at most 2^40 = 1099511627776 in magnitude",
+                            (long)(p->at - p->text), p->too_large, p->at, command);
     const char *found = *p->at ? p->at : "end of data";
     int len = *p->at ? 1 : (int)strlen(found);
     return cg_error_set(p->err, CG_EFORMAT, "path data, offset %ld: expected %s after '%c', got '%.*s'",
@@ -30,6 +36,7 @@ static cg_status fail(parser *p, const char *what, char command)
 /* Reads a number; 0 when none is there. */
 static int read_number(parser *p, double *out)
 {
+    p->too_large = 0;
     skip_separators(p);
     const char *s = p->at, *q = s;
     if (*q == '+' || *q == '-')
@@ -65,8 +72,10 @@ static int read_number(parser *p, double *out)
     memcpy(buffer, s, n);
     buffer[n] = 0;
     double v = strtod(buffer, NULL);
-    if (!(fabs(v) <= CG_FILL_MAX_COORD))
+    if (!(fabs(v) <= CG_FILL_MAX_COORD)) {
+        p->too_large = (int)n;
         return 0;
+    }
     *out = v;
     p->at = q;
     return 1;
@@ -207,7 +216,7 @@ cg_status cg_path_append_svg(cg_path *path, const char *data, cg_error *err)
         return cg_error_set(err, CG_EINVAL, "path data: no path or no text");
     fill_path_mark mark;
     fill_path_save(path, &mark);
-    parser p = {data, data, err};
+    parser p = {data, data, err, 0};
     cg_status status = parse(&p, path);
     if (status != CG_OK)
         fill_path_restore(path, &mark);

@@ -624,9 +624,11 @@ static cg_status parse_object(const parser *p, const char *path, const cJSON *v,
         join(key_path, path, "normal");
         return fail(p, key_path, "expected a non-zero normal");
     }
-    if (o->kind == CG_SCENE_BOX && !(o->lo.x <= o->hi.x && o->lo.y <= o->hi.y && o->lo.z <= o->hi.z)) {
+    /* A box of zero size on an axis has no inside (and no mesh to rasterize). */
+    if (o->kind == CG_SCENE_BOX && !(o->lo.x < o->hi.x && o->lo.y < o->hi.y && o->lo.z < o->hi.z)) {
         join(key_path, path, "hi");
-        return fail(p, key_path, "expected every coordinate of hi to be at least that of lo");
+        return fail(p, key_path, "expected every coordinate of hi to be greater than that of lo "
+                                 "(a box of non-zero size on each axis)");
     }
     const cJSON *transform = cJSON_GetObjectItemCaseSensitive(v, "transform");
     if (transform) {

@@ -99,8 +99,10 @@ int cli_parse_size(const char *command, const char *what, const char *text, int 
     }
     if (!ok || w < 1 || h < 1 || w > CG_IMAGE_MAX_SIDE || h > CG_IMAGE_MAX_SIDE
         || (size_t)w * (size_t)h > CG_IMAGE_MAX_PIXELS) {
-        cli_usage_error(command, "%s: expected WIDTHxHEIGHT with at most %zu pixels, got '%s'",
-                        what, CG_IMAGE_MAX_PIXELS, text);
+        cli_usage_error(command,
+                        "%s: expected WIDTHxHEIGHT, each from 1 to %d, at most %zu pixels in all, "
+                        "got '%s'",
+                        what, CG_IMAGE_MAX_SIDE, CG_IMAGE_MAX_PIXELS, text);
         return -1;
     }
     *width = (int)w;

@@ -210,6 +210,24 @@ static int make_directory(const char *path)
     return status;
 }
 
+static int any_section_matches(const demo_section *const *ordered, const char *only)
+{
+    for (int s = 0; s < SECTION_COUNT; s++)
+        if (strstr(ordered[s]->title, only))
+            return 1;
+    return 0;
+}
+
+/* "A; B; C": the section titles for a message (cut short if very long). */
+static const char *section_titles(const demo_section *const *ordered, char *list, size_t room)
+{
+    size_t used = 0;
+    list[0] = '\0';
+    for (int s = 0; s < SECTION_COUNT && used < room; s++)
+        used += (size_t)snprintf(list + used, room - used, "%s%s", s ? "; " : "", ordered[s]->title);
+    return list;
+}
+
 static int run(int argc, char **argv)
 {
     const char *directory = "out", *only = NULL;
@@ -224,13 +242,17 @@ static int run(int argc, char **argv)
             return cli_usage_error("demo", "unexpected argument '%s'", argv[i]);
         }
     }
-    if (make_directory(directory) != 0)
-        return cli_fail("demo: cannot create directory %s: %s", directory, strerror(errno));
-
     const demo_section *ordered[SECTION_COUNT > 0 ? SECTION_COUNT : 1];
     for (int s = 0; s < SECTION_COUNT; s++)
         ordered[s] = sections[s];
     qsort(ordered, SECTION_COUNT, sizeof ordered[0], compare_sections);
+    if (only && !any_section_matches(ordered, only)) {
+        char titles[2048];
+        return cli_usage_error("demo", "--only: no section title contains '%s' (titles: %s)", only,
+                               section_titles(ordered, titles, sizeof titles));
+    }
+    if (make_directory(directory) != 0)
+        return cli_fail("demo: cannot create directory %s: %s", directory, strerror(errno));
 
     demo_context context = {directory, NULL, NULL, 0, 0};
     int status = CLI_OK;

@@ -69,7 +69,7 @@ static int run(int argc, char **argv)
 
 const cg_command cg_command_draw = {
     "draw",
-    "draw lines, circles, ellipses and curves from a script",
+    "draw lines, circles, curves, polygons and paths from a script",
     "usage: cg draw FILE -o OUT [--repeat N]\n\n"
     "Runs the drawing script FILE (- for stdin) and writes the canvas to OUT in the\n"
     "format of its extension: .png, .ppm or .pgm.  One command a line, # starts a\n"
@@ -82,9 +82,17 @@ const cg_command cg_command_draw = {
     "  arc CX CY R START_DEG END_DEG      ellipsearc CX CY RX RY START_DEG END_DEG\n"
     "  bezier X0 Y0 ... Xn Yn             hermite P1X P1Y P4X P4Y R1X R1Y R4X R4Y\n"
     "  bspline X0 Y0 ... (4+ points)      catmullrom X0 Y0 ... (4+ points)\n"
-    "Integer coordinates (pixel indices) for line, polyline, circle, disc, ellipse\n"
-    "and arcs; decimals for the others.  A bad line is reported as FILE:LINE: what\n"
-    "was expected, and no output is written.  See docs/draw-script.md.\n\n"
+    "Filling:\n"
+    "  polygon X0 Y0 X1 Y1 X2 Y2 ...      aapolygon X0 Y0 X1 Y1 X2 Y2 ...\n"
+    "  contour X0 Y0 X1 Y1 X2 Y2 ...      (a hole or further contour of the polygon above)\n"
+    "  fillrule evenodd|nonzero           path SVG_PATH_DATA (M L H V C S Q T A Z)\n"
+    "  fill                stroke         width W             dash ON OFF ...\n"
+    "  join miter|round|bevel             cap butt|round|square\n"
+    "  flood X Y           flood8 X Y     boundaryfill X Y BOUNDARY_COLOR\n"
+    "Integer coordinates (pixel indices) for line, polyline, circle, disc, ellipse,\n"
+    "arcs and the flood seeds; decimals for the others.  A bad line is reported as\n"
+    "FILE:LINE: what was expected, and no output is written.  A UTF-8 byte-order\n"
+    "mark before the first line is skipped.  See docs/draw-script.md.\n\n"
     "  -o OUT       the image to write (required)\n"
     "  --repeat N   draw N times, each on a fresh canvas, and print the median\n"
     "               drawing time on stderr as 'draw: 12.3 ms'\n",

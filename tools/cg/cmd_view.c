@@ -19,6 +19,7 @@
 
 #include <SDL.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define NAME "view"
@@ -160,6 +161,25 @@ static int load(const char *path, int threads, cg_mesh **mesh, cg_render_options
     return CLI_OK;
 }
 
+/* True when a window can be shown.  With no X11 or Wayland display SDL falls
+ * back to its invisible offscreen driver and the viewer would wait forever for
+ * events that never come; a driver the user names in SDL_VIDEODRIVER is
+ * honoured as asked (the dummy and offscreen drivers included). */
+static int have_display(void)
+{
+#if defined(__APPLE__) || defined(_WIN32)
+    return 1;
+#else
+    const char *names[] = {"SDL_VIDEODRIVER", "DISPLAY", "WAYLAND_DISPLAY"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        const char *value = getenv(names[i]);
+        if (value && value[0])
+            return 1;
+    }
+    return 0;
+#endif
+}
+
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *shots = ".";
@@ -190,6 +210,10 @@ static int run(int argc, char **argv)
         threads = 1;
     if (threads > 64)
         threads = 64;
+    if (!have_display())
+        return cli_fail("view: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are "
+                        "unset); run it in a desktop session, or set SDL_VIDEODRIVER to choose a "
+                        "video driver");
 
     viewer v;
     memset(&v, 0, sizeof v);
@@ -345,6 +369,8 @@ const cg_command cg_command_view = {
     "  arrows     orbit        + -   zoom\n"
     "  s          save the window as DIR/cg-view-N.png (default DIR: .)\n"
     "  q, Esc     quit\n\n"
-    "The line at the bottom shows the mode and the time of the last frame.\n",
+    "The line at the bottom shows the mode and the time of the last frame.\n"
+    "The window needs a display (DISPLAY or WAYLAND_DISPLAY); without one cg view\n"
+    "says so and exits with status 1, unless SDL_VIDEODRIVER names a driver.\n",
     run,
 };

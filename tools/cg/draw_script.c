@@ -25,7 +25,10 @@ enum { MAX_SCRIPT_BYTES = 256 << 20 };
 int draw_error(const draw_state *state, const char *format, ...)
 {
     va_list args;
-    fprintf(stderr, "%s:%d: ", state->file, state->line);
+    if (state->json_array) /* line N is item N - 1 of the array */
+        fprintf(stderr, "cg: %s: %s[%d]: ", state->file, state->json_array, state->line - 1);
+    else
+        fprintf(stderr, "%s:%d: ", state->file, state->line);
     va_start(args, format);
     vfprintf(stderr, format, args);
     va_end(args);
@@ -231,8 +234,15 @@ int draw_script_load(const char *path, draw_script *script)
 
 int draw_script_parse(const char *name, const char *text, draw_script *script)
 {
+    return draw_script_parse_array(name, NULL, text, script);
+}
+
+int draw_script_parse_array(const char *name, const char *array, const char *text,
+                            draw_script *script)
+{
     memset(script, 0, sizeof *script);
     script->file = name;
+    script->json_array = array;
     size_t size = strlen(text);
     script->text = malloc(size + 1);
     if (!script->text) {
@@ -252,8 +262,12 @@ static int parse(draw_script *script, size_t size)
     }
     int capacity = 0, number = 0;
     char *p = script->text;
+    /* A UTF-8 byte-order mark, as some editors write, is not part of line 1. */
+    if (size >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
+        p += 3;
     draw_state where = {0};
     where.file = script->file;
+    where.json_array = script->json_array;
     while (*p) {
         number++;
         char *end = strchr(p, '\n');
@@ -332,6 +346,7 @@ static void state_init(const draw_script *script, draw_state *state)
 {
     memset(state, 0, sizeof *state);
     state->file = script->file;
+    state->json_array = script->json_array;
     state->background = (cg_rgba8){255, 255, 255, 255};
     state->color = (cg_rgba8){0, 0, 0, 255};
     state->tolerance = 0.25;

@@ -23,6 +23,7 @@ typedef struct draw_state {
     /* where we are, for messages */
     const char *file; /* script name as given ("-" shows as "<stdin>") */
     int line;         /* line number of the command being run */
+    const char *json_array; /* non-NULL: the lines are this array of a JSON file */
 
     /* the canvas: NULL until `size W H` */
     cg_image *canvas;

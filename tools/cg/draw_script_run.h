@@ -14,6 +14,9 @@ typedef struct draw_line {
 
 typedef struct draw_script {
     const char *file;
+    /* NULL for a script file; "overlays" when the lines are the items of that
+     * array of a scene file: messages then say "FILE: overlays[I]: ..." */
+    const char *json_array;
     char *text;
     draw_line *lines;
     int count;
@@ -24,6 +27,10 @@ typedef struct draw_script {
 int draw_script_load(const char *path, draw_script *script);
 /* The same from a NUL-terminated text; name is used in messages. */
 int draw_script_parse(const char *name, const char *text, draw_script *script);
+/* The same for the items of a JSON array of strings, one a line (the scene
+ * file's "overlays"): messages name the file, the array and the item. */
+int draw_script_parse_array(const char *name, const char *array, const char *text,
+                            draw_script *script);
 void draw_script_free(draw_script *script);
 
 /* Runs every command on a fresh state (defaults: white background, black,

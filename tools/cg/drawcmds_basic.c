@@ -172,7 +172,11 @@ static int run_aacircle(draw_state *s, int argc, char **argv)
         return draw_error(s, "expected a radius R >= 0, got %s", argv[3]);
     if (!(canvas = draw_canvas(s)))
         return 1;
-    return draw_check(s, cg_draw_circle_aa(canvas, v[0], v[1], v[2], s->color));
+    cg_status status = cg_draw_circle_aa(canvas, v[0], v[1], v[2], s->color);
+    if (status == CG_ERANGE)
+        return draw_error(s, "R = %s is out of range: anti-aliased circles take radii up to 1e9",
+                          argv[3]);
+    return draw_check(s, status);
 }
 
 static int run_ellipse(draw_state *s, int argc, char **argv)
@@ -182,7 +186,11 @@ static int run_ellipse(draw_state *s, int argc, char **argv)
     if (ints(s, argc, argv, "ellipse CX CY RX RY", 4, ellipse_names, v)
         || radius_ok(s, v[2], "RX") || radius_ok(s, v[3], "RY") || !(canvas = draw_canvas(s)))
         return 1;
-    return draw_check(s, cg_draw_ellipse(canvas, v[0], v[1], v[2], v[3], s->color));
+    cg_status status = cg_draw_ellipse(canvas, v[0], v[1], v[2], v[3], s->color);
+    if (status == CG_ERANGE)
+        return draw_error(s, "radii %d and %d are out of range: ellipses take radii up to 2^30 = "
+                          "1073741824", v[2], v[3]);
+    return draw_check(s, status);
 }
 
 static int run_aaellipse(draw_state *s, int argc, char **argv)
@@ -195,7 +203,11 @@ static int run_aaellipse(draw_state *s, int argc, char **argv)
         return draw_error(s, "expected radii RX, RY >= 0, got %s and %s", argv[3], argv[4]);
     if (!(canvas = draw_canvas(s)))
         return 1;
-    return draw_check(s, cg_draw_ellipse_aa(canvas, v[0], v[1], v[2], v[3], s->color));
+    cg_status status = cg_draw_ellipse_aa(canvas, v[0], v[1], v[2], v[3], s->color);
+    if (status == CG_ERANGE)
+        return draw_error(s, "radii %s and %s are out of range: anti-aliased ellipses take radii "
+                          "up to 1e9", argv[3], argv[4]);
+    return draw_check(s, status);
 }
 
 static int run_arc(draw_state *s, int argc, char **argv)
@@ -238,8 +250,8 @@ static int curve_status(draw_state *s, cg_status status)
     if (status == CG_EEMPTY)
         return draw_error(s, "zero-length curve: every control point is the same point");
     if (status == CG_ERANGE)
-        return draw_error(s, "curve out of range: coordinates too large or tolerance %g too "
-                             "small for its size",
+        return draw_error(s, "curve out of range: coordinates beyond 1e9 in magnitude (with "
+                             "antialias off), or tolerance %g too small for its size",
                           s->tolerance);
     return draw_check(s, status);
 }

@@ -4,6 +4,7 @@
 #include "draw_script.h"
 #include "cg/fill.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -102,7 +103,8 @@ static int run_width(draw_state *s, int argc, char **argv)
     if (draw_arg_count(s, argc, argv, 1, "width W") || draw_arg_double(s, argv[1], "W", &w))
         return 1;
     if (!(w > 0) || w > CG_FILL_MAX_COORD)
-        return draw_error(s, "expected a stroke width W > 0, got '%s'", argv[1]);
+        return draw_error(s, "expected a stroke width W > 0 and at most 2^40 = 1099511627776, "
+                          "got '%s'", argv[1]);
     s->line_width = w;
     return 0;
 }
@@ -219,6 +221,13 @@ static int add_contour(draw_state *s, draw_fill *f, int argc, char **argv, const
     int n;
     if (draw_arg_points(s, argc, argv, 1, 3, usage, &points, &n))
         return 1;
+    for (int i = 0; i < 2 * n; i++) {
+        if (!(fabs(i % 2 ? points[i / 2].y : points[i / 2].x) <= CG_FILL_MAX_COORD)) {
+            free(points);
+            return draw_error(s, "%c%d = %s is out of range: coordinates are at most 2^40 = "
+                              "1099511627776 in magnitude", i % 2 ? 'Y' : 'X', i / 2, argv[1 + i]);
+        }
+    }
     if (f->point_count + n > f->point_capacity) {
         int capacity = 2 * (f->point_count + n);
         cg_vec2 *grown = realloc(f->points, (size_t)capacity * sizeof *grown);

@@ -43,8 +43,10 @@ static int help(int argc, char **argv)
         return CLI_OK;
     }
     const cg_command *command = find_command(argv[2]);
-    if (!command)
-        return cli_fail("help: unknown command '%s' (run 'cg --help' for the list)", argv[2]);
+    if (!command) { /* bad usage, as `cg bogus` is: the same status */
+        cli_fail("help: unknown command '%s' (run 'cg --help' for the list)", argv[2]);
+        return CLI_USAGE;
+    }
     printf("%s", command->usage);
     return CLI_OK;
 }

@@ -34,7 +34,7 @@ static int draw_overlays(const cg_scene *scene, const char *path, cg_image *imag
     }
     *at = '\0';
     draw_script script;
-    int status = draw_script_parse(path, text, &script);
+    int status = draw_script_parse_array(path, "overlays", text, &script);
     free(text);
     if (status)
         return CLI_FAILED;

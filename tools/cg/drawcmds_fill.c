@@ -132,13 +132,14 @@ static cg_stroke_style stroke_style(const draw_state *s)
 static int draw_polygon(draw_state *s, draw_fill *f, cg_image *canvas, int antialias)
 {
     cg_status status;
+    cg_fill_rule rule = (cg_fill_rule)s->fill_rule;
     if (antialias) {
         cg_paint paint = cg_paint_solid(s->color);
         status = cg_rasterizer_fill_polygon_aa(f->rasterizer, canvas, f->points, f->sizes,
-                                               f->contour_count, (cg_fill_rule)s->fill_rule, &paint);
+                                               f->contour_count, rule, &paint);
     } else {
         status = cg_rasterizer_fill_polygon(f->rasterizer, canvas, f->points, f->sizes,
-                                            f->contour_count, (cg_fill_rule)s->fill_rule, s->color);
+                                            f->contour_count, rule, s->color);
     }
     return draw_check(s, status);
 }

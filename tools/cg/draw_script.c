@@ -42,8 +42,30 @@ int draw_arg_count(const draw_state *state, int argc, char **argv, int n, const 
                       n == 1 ? "" : "s", usage, argc - 1);
 }
 
+/* A sign and at most 9 digits always fit in an int: read directly, the
+ * value strtoll gives.  Returns 0 for any other text, which strtoll reads. */
+static int read_simple_int(const char *text, int *out)
+{
+    const char *p = text;
+    int negative = *p == '-';
+    if (*p == '-' || *p == '+')
+        p++;
+    int v = 0, digits = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (++digits > 9)
+            return 0;
+        v = 10 * v + (*p - '0');
+    }
+    if (*p != '\0' || digits == 0)
+        return 0;
+    *out = negative ? -v : v;
+    return 1;
+}
+
 int draw_arg_int(const draw_state *state, const char *text, const char *what, int *out)
 {
+    if (read_simple_int(text, out))
+        return 0;
     char *end;
     errno = 0;
     long long v = strtoll(text, &end, 10);

@@ -158,4 +158,44 @@ bad "flood8 not an integer" 'size 10 10\nflood8 1.5 3'
 bad "boundaryfill bad colour" 'size 10 10\nboundaryfill 1 1 nocolor'
 bad "dash too fine" 'size 10 10\npath M 0 0 L 9 9\ndash 0.000001 0.000001\nstroke'
 
+# A polygon line and the contour lines after it are drawn as one polygon, but
+# each error still names the line it is on, in the order of the lines.
+names() { # names DESCRIPTION SCRIPT MESSAGE: the one line of stderr
+  local got
+  got=$(printf '%b\n' "$2" | "$cg" draw - -o "$work/bad.png" 2>&1 >/dev/null)
+  if [ "$got" = "$3" ]; then pass; else fail "$1: message '$got', want '$3'"; fi
+}
+names "bad number in the second contour" \
+  'size 10 10\npolygon 1 1 9 1 9 9\ncontour 2 2 3 2 3 3\ncontour 4 4 5 4 5 x' \
+  "<stdin>:4: expected a number for Y2, got 'x'"
+names "too few points in a contour" 'size 10 10\naapolygon 1 1 9 1 9 9\ncontour 2 2 3 2' \
+  "<stdin>:3: 'contour' expects three or more X Y pairs (contour X0 Y0 X1 Y1 X2 Y2 ...), got 4 numbers"
+names "coordinate beyond the fill's range on the polygon line, before a bad contour" \
+  'size 10 10\npolygon 1 1 9 1 9 2e12\ncontour 2 2 3 2 3 y' \
+  "<stdin>:2: Y2 = 2e12 is out of range: coordinates are at most 2^40 = 1099511627776 in magnitude"
+names "coordinate beyond the fill's range on a contour line" \
+  'size 10 10\npolygon 1 1 9 1 9 9\ncontour 2 2 3 2 3 -2e12' \
+  "<stdin>:3: Y2 = -2e12 is out of range: coordinates are at most 2^40 = 1099511627776 in magnitude"
+names "contour after a polygon that came before a line" \
+  'size 10 10\npolygon 1 1 9 1 9 9\nline 0 0 1 1\ncontour 2 2 3 2 3 3' \
+  "<stdin>:4: 'contour' must follow a polygon, aapolygon or contour line"
+
+# Three contour lines after an aapolygon, each a square hole of an 8-pixel
+# square, even-odd: exactly the holes stay background, and a half-covered
+# column of the outer square is half blended.
+draw holes <<SCRIPT && pass || fail "aapolygon with three contours: $(cat "$work/err")"
+size 12 4
+background #000000
+color #ffffff
+fillrule evenodd
+aapolygon 0 0 11.5 0 11.5 3 0 3
+contour 1 1 2 1 2 2 1 2
+contour 4 1 5 1 5 2 4 2
+contour 7 1 8 1 8 2 7 2
+SCRIPT
+for x in 1 4 7; do check_pixel holes $x 1 "0 0 0" "hole at x=$x"; done
+for x in 0 2 3 5 6 8 9 10; do check_pixel holes $x 1 "255 255 255" "ring at x=$x"; done
+check_pixel holes 11 1 "188 188 188" "half-covered pixel (half white in linear light)"
+check_pixel holes 0 3 "0 0 0" "below the polygon"
+
 finish

@@ -4,6 +4,7 @@
 #include "cg/color.h"
 
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -44,8 +45,30 @@ int draw_arg_count(const draw_state *state, int argc, char **argv, int n, const 
                       n == 1 ? "" : "s", usage, argc - 1);
 }
 
+/* A sign and at most 9 digits always fit in an int: read directly, the
+ * value strtoll gives.  Returns 0 for any other text, which strtoll reads. */
+static int read_simple_int(const char *text, int *out)
+{
+    const char *p = text;
+    int negative = *p == '-';
+    if (*p == '-' || *p == '+')
+        p++;
+    int v = 0, digits = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (++digits > 9)
+            return 0;
+        v = 10 * v + (*p - '0');
+    }
+    if (*p != '\0' || digits == 0)
+        return 0;
+    *out = negative ? -v : v;
+    return 1;
+}
+
 int draw_arg_int(const draw_state *state, const char *text, const char *what, int *out)
 {
+    if (read_simple_int(text, out))
+        return 0;
     char *end;
     errno = 0;
     long long v = strtoll(text, &end, 10);
@@ -58,8 +81,55 @@ int draw_arg_int(const draw_state *state, const char *text, const char *what, in
     return 0;
 }
 
+/* The decimal number of text when it is short and simple: a sign, up to 19
+ * digits with at most 22 after the point, and no exponent, whose digits make
+ * an integer m below 2^53.  Then m and 10^k are exact doubles and m / 10^k,
+ * one correctly rounded division, is the value strtod gives (Clinger's fast
+ * path), without strtod's general machinery.  Returns 0 for any other text,
+ * which strtod then reads. */
+static int read_simple_decimal(const char *text, double *out)
+{
+#if FLT_EVAL_METHOD == 0
+    static const double powers_of_ten[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                             1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                             1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const char *p = text;
+    int negative = *p == '-';
+    if (*p == '-' || *p == '+')
+        p++;
+    unsigned long long m = 0;
+    int digits = 0, fraction = -1; /* digits after the point, -1 before it */
+    for (;; p++) {
+        if (*p >= '0' && *p <= '9') {
+            if (++digits > 19)
+                return 0;
+            m = 10 * m + (unsigned)(*p - '0');
+            if (fraction >= 0)
+                fraction++;
+        } else if (*p == '.' && fraction < 0) {
+            fraction = 0;
+        } else {
+            break;
+        }
+    }
+    if (*p != '\0' || digits == 0 || fraction > 22 || m > (1ULL << 53))
+        return 0;
+    double v = (double)m;
+    if (fraction > 0)
+        v /= powers_of_ten[fraction];
+    *out = negative ? -v : v;
+    return 1;
+#else
+    (void)text;
+    (void)out;
+    return 0;
+#endif
+}
+
 int draw_arg_double(const draw_state *state, const char *text, const char *what, double *out)
 {
+    if (read_simple_decimal(text, out))
+        return 0;
     char *end;
     errno = 0;
     double v = strtod(text, &end);
@@ -101,21 +171,28 @@ int draw_arg_points(const draw_state *state, int argc, char **argv, int first, i
     cg_vec2 *points = malloc((size_t)(numbers / 2) * sizeof *points);
     if (!points)
         return draw_error(state, "out of memory");
-    for (int i = 0; i < numbers / 2; i++) {
-        char what[32];
-        snprintf(what, sizeof what, "X%d", i);
-        if (draw_arg_double(state, argv[first + 2 * i], what, &points[i].x)) {
-            free(points);
-            return 1;
-        }
-        snprintf(what, sizeof what, "Y%d", i);
-        if (draw_arg_double(state, argv[first + 2 * i + 1], what, &points[i].y)) {
-            free(points);
-            return 1;
-        }
+    if (draw_arg_point_pairs(state, argv + first, numbers / 2, points)) {
+        free(points);
+        return 1;
     }
     *out = points;
     *count = numbers / 2;
+    return 0;
+}
+
+/* The name of the i-th number of a point list ("X3", "Y3") is made only for
+ * a message: formatting it for every number would cost more than reading it. */
+int draw_arg_point_pairs(const draw_state *state, char **words, int n, cg_vec2 *out)
+{
+    for (int i = 0; i < 2 * n; i++) {
+        double *coordinate = i % 2 ? &out[i / 2].y : &out[i / 2].x;
+        if (read_simple_decimal(words[i], coordinate))
+            continue;
+        char what[32];
+        snprintf(what, sizeof what, "%c%d", i % 2 ? 'Y' : 'X', i / 2);
+        if (draw_arg_double(state, words[i], what, coordinate))
+            return 1;
+    }
     return 0;
 }
 
@@ -359,9 +436,12 @@ static int run_lines(const draw_script *script, draw_state *state)
     for (int i = 0; i < script->count; i++) {
         const draw_line *line = &script->lines[i];
         state->line = line->number;
-        state->command = i;
+        state->next_lines = line + 1;
+        state->next_count = script->count - i - 1;
+        state->consumed = 0;
         if (line->command->run(state, line->argc, line->argv))
             return 1;
+        i += state->consumed;
     }
     return 0;
 }

@@ -19,6 +19,8 @@
 #include "cg/core.h"
 #include "cg/image.h"
 
+struct draw_line;
+
 typedef struct draw_state {
     /* where we are, for messages */
     const char *file; /* script name as given ("-" shows as "<stdin>") */
@@ -34,8 +36,15 @@ typedef struct draw_state {
     double tolerance; /* flattening tolerance in pixels, default 0.25 */
     int antialias;    /* curves drawn with anti-aliased lines (`antialias on`) */
 
+    /* The script's lines after the running command.  A command that takes
+     * the lines continuing it (polygon and its contour lines) reads them here
+     * and sets `consumed` to how many of them it ran; the interpreter skips
+     * those.  next_count is 0 when no line follows. */
+    const struct draw_line *next_lines;
+    int next_count;
+    int consumed;
+
     /* filling (tools/cg/drawcmds_fill.c) */
-    int command;         /* index of the running command in the script */
     int fill_rule;       /* cg_fill_rule of polygon, aapolygon, fill; default non-zero */
     double line_width;   /* `width W` of stroke, default 1 */
     int line_join;       /* cg_line_join, default miter */
@@ -86,6 +95,9 @@ int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out);
  * min_points, an even number of numbers.  *out is malloc'ed (caller frees). */
 int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,
                     const char *usage, cg_vec2 **out, int *count);
+/* The n points of the 2n words (X0 Y0 X1 Y1 ...) into out[0..n-1], each
+ * number as draw_arg_double reads it (errors name it "X3", "Y3"). */
+int draw_arg_point_pairs(const draw_state *state, char **words, int n, cg_vec2 *out);
 
 /* The canvas, or an error "expected 'size W H' before drawing" (NULL). */
 cg_image *draw_canvas(const draw_state *state);

@@ -1,7 +1,7 @@
 /* `cg draw` commands of chapter 10: polygons (aliased and anti-aliased, with
  * contours), SVG paths filled or stroked, stroke style, flood and boundary
  * fill (docs/draw-script.md, "Filling"). */
-#include "draw_script.h"
+#include "draw_script_run.h"
 #include "cg/fill.h"
 
 #include <math.h>
@@ -13,17 +13,10 @@
 typedef struct draw_fill {
     cg_rasterizer *rasterizer;
     cg_path *path;       /* the current path (`path`), for fill and stroke */
-    /* the polygon of the last polygon/aapolygon line and its contours */
+    /* the polygon being drawn: a polygon line's points, then each contour's */
     cg_vec2 *points;
     int *sizes;
     int point_count, contour_count, point_capacity, contour_capacity;
-    int antialias, rule, last_command;
-    cg_rgba8 color;
-    /* canvas rows saved before the polygon was drawn, restored to redraw it
-     * with a new contour */
-    unsigned char *saved;
-    size_t saved_capacity;
-    int saved_top, saved_bottom;
 } draw_fill;
 
 void draw_fill_release(draw_state *state)
@@ -35,7 +28,6 @@ void draw_fill_release(draw_state *state)
     cg_path_free(f->path);
     free(f->points);
     free(f->sizes);
-    free(f->saved);
     free(f);
     state->fill = NULL;
 }
@@ -51,7 +43,6 @@ static draw_fill *fill_of(draw_state *s)
             draw_fill_release(s);
             return NULL;
         }
-        s->fill->last_command = -2;
     }
     double t = s->tolerance < 0.001 ? 0.001 : (s->tolerance > 100 ? 100 : s->tolerance);
     cg_rasterizer_set_tolerance(s->fill->rasterizer, t);
@@ -139,123 +130,67 @@ static cg_stroke_style stroke_style(const draw_state *s)
 
 /* ---- polygons ----------------------------------------------------------------- */
 
-/* Saves canvas rows top..bottom-1 (growing the saved range, whose rows are
- * still as they were before the polygon). */
-static int save_rows(draw_fill *f, const cg_image *canvas, int top, int bottom)
-{
-    if (f->saved_bottom > f->saved_top) {
-        if (top > f->saved_top)
-            top = f->saved_top;
-        if (bottom < f->saved_bottom)
-            bottom = f->saved_bottom;
-    }
-    size_t row = canvas->stride, need = (size_t)(bottom - top) * row;
-    if (need > f->saved_capacity) {
-        unsigned char *grown = malloc(need);
-        if (!grown)
-            return 1;
-        if (f->saved_bottom > f->saved_top)
-            memcpy(grown + (size_t)(f->saved_top - top) * row, f->saved,
-                   (size_t)(f->saved_bottom - f->saved_top) * row);
-        free(f->saved);
-        f->saved = grown;
-        f->saved_capacity = need;
-    } else if (f->saved_bottom > f->saved_top && f->saved_top != top) {
-        memmove(f->saved + (size_t)(f->saved_top - top) * row, f->saved,
-                (size_t)(f->saved_bottom - f->saved_top) * row);
-    }
-    for (int y = top; y < bottom; y++)
-        if (!(f->saved_bottom > f->saved_top && y >= f->saved_top && y < f->saved_bottom))
-            memcpy(f->saved + (size_t)(y - top) * row, canvas->data + (size_t)y * row, row);
-    f->saved_top = top;
-    f->saved_bottom = bottom;
-    return 0;
-}
-
-static void restore_rows(const draw_fill *f, cg_image *canvas)
-{
-    size_t row = canvas->stride;
-    if (f->saved_bottom > f->saved_top)
-        memcpy(canvas->data + (size_t)f->saved_top * row, f->saved,
-               (size_t)(f->saved_bottom - f->saved_top) * row);
-}
-
-/* Rows the points can touch, clamped to the canvas. */
-static void row_span(const cg_vec2 *p, int n, int height, int *top, int *bottom)
-{
-    double lo = p[0].y, hi = p[0].y;
-    for (int i = 1; i < n; i++) {
-        if (p[i].y < lo)
-            lo = p[i].y;
-        if (p[i].y > hi)
-            hi = p[i].y;
-    }
-    lo = floor(lo) - 1;
-    hi = ceil(hi) + 1;
-    *top = lo < 0 ? 0 : (lo > height ? height : (int)lo);
-    *bottom = hi < 0 ? 0 : (hi > height ? height : (int)hi);
-}
-
-static int draw_polygon(draw_state *s, draw_fill *f, cg_image *canvas)
+static int draw_polygon(draw_state *s, draw_fill *f, cg_image *canvas, int antialias)
 {
     cg_status status;
-    if (f->antialias) {
-        cg_paint paint = cg_paint_solid(f->color);
+    cg_fill_rule rule = (cg_fill_rule)s->fill_rule;
+    if (antialias) {
+        cg_paint paint = cg_paint_solid(s->color);
         status = cg_rasterizer_fill_polygon_aa(f->rasterizer, canvas, f->points, f->sizes,
-                                               f->contour_count, (cg_fill_rule)f->rule, &paint);
+                                               f->contour_count, rule, &paint);
     } else {
         status = cg_rasterizer_fill_polygon(f->rasterizer, canvas, f->points, f->sizes,
-                                            f->contour_count, (cg_fill_rule)f->rule, f->color);
+                                            f->contour_count, rule, s->color);
     }
     return draw_check(s, status);
 }
 
-/* Appends the X Y pairs of argv[1..] as a contour; 0 or an error printed. */
+static int reserve(void **items, int *capacity, int needed, size_t size)
+{
+    if (needed <= *capacity)
+        return 0;
+    int grown_capacity = needed > 1 << 29 ? needed : 2 * needed;
+    void *grown = realloc(*items, (size_t)grown_capacity * size);
+    if (!grown)
+        return 1;
+    *items = grown;
+    *capacity = grown_capacity;
+    return 0;
+}
+
+/* Appends the X Y pairs of argv[1..] as a contour; 0 or an error printed.
+ * A point the fill cannot take (beyond CG_FILL_MAX_COORD) is reported on its
+ * own line, as the fill call would report it. */
 static int add_contour(draw_state *s, draw_fill *f, int argc, char **argv, const char *usage)
 {
     int numbers = argc - 1;
     if (numbers < 6 || numbers % 2)
         return draw_error(s, "'%s' expects three or more X Y pairs (%s), got %d number%s",
                           argv[0], usage, numbers, numbers == 1 ? "" : "s");
-    cg_vec2 *points;
-    int n;
-    if (draw_arg_points(s, argc, argv, 1, 3, usage, &points, &n))
+    int n = numbers / 2;
+    if (reserve((void **)&f->points, &f->point_capacity, f->point_count + n, sizeof *f->points)
+        || reserve((void **)&f->sizes, &f->contour_capacity, f->contour_count + 1,
+                   sizeof *f->sizes))
+        return out_of_memory(s);
+    cg_vec2 *points = f->points + f->point_count;
+    if (draw_arg_point_pairs(s, argv + 1, n, points))
         return 1;
     for (int i = 0; i < 2 * n; i++) {
-        if (!(fabs(i % 2 ? points[i / 2].y : points[i / 2].x) <= CG_FILL_MAX_COORD)) {
-            free(points);
+        if (!(fabs(i % 2 ? points[i / 2].y : points[i / 2].x) <= CG_FILL_MAX_COORD))
             return draw_error(s, "%c%d = %s is out of range: coordinates are at most 2^40 = "
                               "1099511627776 in magnitude", i % 2 ? 'Y' : 'X', i / 2, argv[1 + i]);
-        }
     }
-    if (f->point_count + n > f->point_capacity) {
-        int capacity = 2 * (f->point_count + n);
-        cg_vec2 *grown = realloc(f->points, (size_t)capacity * sizeof *grown);
-        if (!grown) {
-            free(points);
-            return out_of_memory(s);
-        }
-        f->points = grown;
-        f->point_capacity = capacity;
-    }
-    if (f->contour_count + 1 > f->contour_capacity) {
-        int capacity = 2 * (f->contour_count + 1);
-        int *grown = realloc(f->sizes, (size_t)capacity * sizeof *grown);
-        if (!grown) {
-            free(points);
-            return out_of_memory(s);
-        }
-        f->sizes = grown;
-        f->contour_capacity = capacity;
-    }
-    memcpy(f->points + f->point_count, points, (size_t)n * sizeof *points);
-    free(points);
     f->point_count += n;
     f->sizes[f->contour_count++] = n;
     return 0;
 }
 
-static int start_polygon(draw_state *s, int argc, char **argv, int antialias, const char *usage)
+static int run_contour(draw_state *s, int argc, char **argv);
+
+/* A polygon line and the contour lines right after it are one polygon, drawn
+ * once with all its contours, in the colour and rule of the polygon line
+ * (no command can come between them). */
+static int run_any_polygon(draw_state *s, int argc, char **argv, int antialias, const char *usage)
 {
     cg_image *canvas = draw_canvas(s);
     draw_fill *f = canvas ? fill_of(s) : NULL;
@@ -266,48 +201,37 @@ static int start_polygon(draw_state *s, int argc, char **argv, int antialias, co
     f->point_count = f->contour_count = 0;
     if (add_contour(s, f, argc, argv, usage))
         return 1;
-    f->antialias = antialias;
-    f->rule = s->fill_rule;
-    f->color = s->color;
-    f->last_command = s->command;
-    f->saved_top = f->saved_bottom = 0;
-    int top, bottom;
-    row_span(f->points, f->point_count, canvas->height, &top, &bottom);
-    if (save_rows(f, canvas, top, bottom))
-        return out_of_memory(s);
-    return draw_polygon(s, f, canvas);
+    int contours = 0;
+    while (contours < s->next_count && s->next_lines[contours].command->run == run_contour) {
+        const draw_line *line = &s->next_lines[contours];
+        s->line = line->number;
+        if (add_contour(s, f, line->argc, line->argv, "contour X0 Y0 X1 Y1 X2 Y2 ..."))
+            return 1;
+        contours++;
+    }
+    s->consumed = contours;
+    return draw_polygon(s, f, canvas, antialias);
 }
 
 static int run_polygon(draw_state *s, int argc, char **argv)
 {
-    return start_polygon(s, argc, argv, 0, "polygon X0 Y0 X1 Y1 X2 Y2 ...");
+    return run_any_polygon(s, argc, argv, 0, "polygon X0 Y0 X1 Y1 X2 Y2 ...");
 }
 
 static int run_aapolygon(draw_state *s, int argc, char **argv)
 {
-    return start_polygon(s, argc, argv, 1, "aapolygon X0 Y0 X1 Y1 X2 Y2 ...");
+    return run_any_polygon(s, argc, argv, 1, "aapolygon X0 Y0 X1 Y1 X2 Y2 ...");
 }
 
-/* A further contour of the polygon on the line before: the canvas rows it
- * touched are restored and the polygon drawn again with every contour. */
+/* The polygon lines take the contour lines that follow them, so a contour
+ * line that runs on its own follows no polygon. */
 static int run_contour(draw_state *s, int argc, char **argv)
 {
-    cg_image *canvas = draw_canvas(s);
-    if (!canvas)
+    (void)argc;
+    (void)argv;
+    if (!draw_canvas(s))
         return 1;
-    draw_fill *f = s->fill;
-    if (!f || f->last_command != s->command - 1)
-        return draw_error(s, "'contour' must follow a polygon, aapolygon or contour line");
-    int first = f->point_count;
-    if (add_contour(s, f, argc, argv, "contour X0 Y0 X1 Y1 X2 Y2 ..."))
-        return 1;
-    f->last_command = s->command;
-    int top, bottom;
-    row_span(f->points + first, f->point_count - first, canvas->height, &top, &bottom);
-    if (save_rows(f, canvas, top, bottom))
-        return out_of_memory(s);
-    restore_rows(f, canvas);
-    return draw_polygon(s, f, canvas);
+    return draw_error(s, "'contour' must follow a polygon, aapolygon or contour line");
 }
 
 /* ---- paths --------------------------------------------------------------------- */

@@ -717,11 +717,11 @@ static void test_encode_tables(void)
     for (int i = 0; i <= 4096; i++) {
         float lo = i / 4096.0f;
         int below = 0;
-        while (below < 255 && cg_srgb_threshold_table[below] <= lo)
+        while (below < 255 && color_srgb_threshold_table[below] <= lo)
             below++;
-        bad += cg_srgb_encode_start[i] != below;
+        bad += color_srgb_encode_start[i] != below;
         if (i < 4096)
-            bucket_bad += cg_srgb_encode_start[i + 1] - cg_srgb_encode_start[i] > 1;
+            bucket_bad += color_srgb_encode_start[i + 1] - color_srgb_encode_start[i] > 1;
     }
     CHECK_EQ_INT(bad, 0);
     CHECK_EQ_INT(bucket_bad, 0);
@@ -734,7 +734,7 @@ static void test_encode_tables(void)
             /* near a threshold a third of the time, anywhere (and outside
              * [0, 1]) otherwise */
             int t = (int)check_rng_range(&r, 0, 255);
-            v[k] = i % 3 == 0 ? nextafterf(cg_srgb_threshold_table[t], (float)check_rng_range(&r, -1, 2))
+            v[k] = i % 3 == 0 ? nextafterf(color_srgb_threshold_table[t], (float)check_rng_range(&r, -1, 2))
                               : (float)check_rng_range(&r, -0.2, 1.2);
         }
         if (i == 0) {

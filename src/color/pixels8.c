@@ -299,7 +299,7 @@ static inline float clamp_byte(float v)
 #define LAB_FORWARD(NAME, ATTR, CH)                                                    \
     ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)    \
     {                                                                                  \
-        const float *dec = cg_srgb_decode_table;                                       \
+        const float *dec = color_srgb_decode_table;                                       \
         float lr[BLOCK], lg[BLOCK], lb[BLOCK];                                         \
         for (int i = 0; i < m; i++) {                                                  \
             lr[i] = dec[in[CH * i]];                                                   \

@@ -24,7 +24,7 @@ double cg_linear_to_srgb(double linear)
 
 float cg_srgb8_to_linear(uint8_t code)
 {
-    return cg_srgb_decode_table[code];
+    return color_srgb_decode_table[code];
 }
 
 uint8_t cg_linear_to_srgb8(float linear)
@@ -39,7 +39,7 @@ uint8_t cg_linear_to_srgb8(float linear)
 
 void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
 {
-    const float *t = cg_srgb_decode_table;
+    const float *t = color_srgb_decode_table;
     size_t i = 0;
 #if defined(__SSE2__)
     if (n >= STREAM_THRESHOLD) {
@@ -62,8 +62,8 @@ void cg_srgb8_encode(const float *in, uint8_t *out, size_t n)
 
 cg_rgbaf cg_rgba8_to_linear(cg_rgba8 color)
 {
-    cg_rgbaf r = {cg_srgb_decode_table[color.r], cg_srgb_decode_table[color.g],
-                  cg_srgb_decode_table[color.b], color.a / 255.0f};
+    cg_rgbaf r = {color_srgb_decode_table[color.r], color_srgb_decode_table[color.g],
+                  color_srgb_decode_table[color.b], color.a / 255.0f};
     return r;
 }
 
@@ -97,9 +97,9 @@ cg_status cg_image_decode_srgb(const cg_image *src, cg_image **out)
         const cg_rgba8 *in = cg_image_row_rgba8((cg_image *)src, y);
         cg_rgbaf *o = cg_image_row_rgbaf(*out, y);
         for (int x = 0; x < src->width; x++) {
-            o[x].r = cg_srgb_decode_table[in[x].r];
-            o[x].g = cg_srgb_decode_table[in[x].g];
-            o[x].b = cg_srgb_decode_table[in[x].b];
+            o[x].r = color_srgb_decode_table[in[x].r];
+            o[x].g = color_srgb_decode_table[in[x].g];
+            o[x].b = color_srgb_decode_table[in[x].b];
             o[x].a = in[x].a * (1.0f / 255.0f);
         }
     }

@@ -7,7 +7,7 @@
 
 #include <math.h>
 
-const float cg_srgb_decode_table[256] = {
+const float color_srgb_decode_table[256] = {
     0.000000000e+00f, 3.035269835e-04f, 6.070539671e-04f, 9.105809506e-04f,
     1.214107934e-03f, 1.517634918e-03f, 1.821161901e-03f, 2.124688885e-03f,
     2.428215868e-03f, 2.731742852e-03f, 3.035269835e-03f, 3.346535764e-03f,
@@ -74,7 +74,7 @@ const float cg_srgb_decode_table[256] = {
     9.734452904e-01f, 9.822505503e-01f, 9.911020971e-01f, 1.000000000e+00f,
 };
 
-const float cg_srgb_threshold_table[256] = {
+const float color_srgb_threshold_table[256] = {
     1.517634918e-04f, 4.552904753e-04f, 7.588174589e-04f, 1.062344442e-03f,
     1.365871426e-03f, 1.669398410e-03f, 1.972925393e-03f, 2.276452377e-03f,
     2.579979360e-03f, 2.883506344e-03f, 3.188300904e-03f, 3.509259350e-03f,
@@ -141,10 +141,10 @@ const float cg_srgb_threshold_table[256] = {
     9.778421388e-01f, 9.866705335e-01f, 9.955452497e-01f, INFINITY,
 };
 
-/* cg_srgb_encode_start[i]: the sRGB code of the linear value i / 4096, i.e. the
+/* color_srgb_encode_start[i]: the sRGB code of the linear value i / 4096, i.e. the
  * number of thresholds <= i / 4096; a linear value in [i/4096, (i+1)/4096)
  * encodes to that code or a few above it. */
-const uint8_t cg_srgb_encode_start[4097] = {
+const uint8_t color_srgb_encode_start[4097] = {
     0, 1, 2, 2, 3, 4, 5, 6, 6, 7, 8, 9, 10, 10, 11, 12,
     13, 13, 14, 15, 15, 16, 16, 17, 18, 18, 19, 19, 20, 20, 21, 21,
     22, 22, 23, 23, 23, 24, 24, 25, 25, 25, 26, 26, 27, 27, 27, 28,

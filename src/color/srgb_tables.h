@@ -10,11 +10,11 @@
 #include <emmintrin.h>
 #endif
 
-extern const float cg_srgb_decode_table[256];
+extern const float color_srgb_decode_table[256];
 /* threshold[k]: least linear value of code k + 1; threshold[255] = +infinity. */
-extern const float cg_srgb_threshold_table[256];
+extern const float color_srgb_threshold_table[256];
 /* encode_start[i]: the code of linear value i / 4096 (i = 0 .. 4096). */
-extern const uint8_t cg_srgb_encode_start[4097];
+extern const uint8_t color_srgb_encode_start[4097];
 
 /* The correctly rounded sRGB code of a linear value, clamped to [0, 1]
  * (NaN gives 0).  The value's 1/4096 bucket gives the least code it can
@@ -24,8 +24,8 @@ static inline uint8_t cg_srgb_encode_unit(float linear)
 {
     float x = linear > 0 ? linear : 0;
     x = x < 1 ? x : 1;
-    unsigned code = cg_srgb_encode_start[(int)(x * 4096.0f)];
-    return (uint8_t)(code + (x >= cg_srgb_threshold_table[code]));
+    unsigned code = color_srgb_encode_start[(int)(x * 4096.0f)];
+    return (uint8_t)(code + (x >= color_srgb_threshold_table[code]));
 }
 
 #if defined(__SSE2__)
@@ -36,11 +36,11 @@ static inline void cg_srgb_encode_rgb(cg_rgba8 *px, __m128 v)
     /* max(v, 0) gives 0 for NaN, as above */
     v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
     __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps(4096.0f)));
-    unsigned c0 = cg_srgb_encode_start[_mm_cvtsi128_si32(i)];
-    unsigned c1 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
-    unsigned c2 = cg_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
-    __m128 next = _mm_setr_ps(cg_srgb_threshold_table[c0], cg_srgb_threshold_table[c1],
-                              cg_srgb_threshold_table[c2], 0.0f);
+    unsigned c0 = color_srgb_encode_start[_mm_cvtsi128_si32(i)];
+    unsigned c1 = color_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
+    unsigned c2 = color_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
+    __m128 next = _mm_setr_ps(color_srgb_threshold_table[c0], color_srgb_threshold_table[c1],
+                              color_srgb_threshold_table[c2], 0.0f);
     int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
     px->r = (uint8_t)(c0 + (up & 1));
     px->g = (uint8_t)(c1 + ((up >> 1) & 1));

@@ -18,7 +18,7 @@ double cg_bernstein(int n, int i, double t)
     return c * pow(t, i) * pow(1 - t, n - i);
 }
 
-int cg_curve_points_finite(const cg_vec2 *p, int count)
+int curve_points_finite(const cg_vec2 *p, int count)
 {
     for (int i = 0; i < count; i++)
         if (!isfinite(p[i].x) || !isfinite(p[i].y))
@@ -33,7 +33,7 @@ static int valid(const void *control, int count, int min)
 
 /* In-place de Casteljau on work[0..count-1]: afterwards work[0] is Q(t);
  * left/right (optional) receive the subdivided control polygons. */
-void cg_curve_casteljau(cg_vec2 *work, int count, double t, cg_vec2 *left, cg_vec2 *right)
+void curve_casteljau(cg_vec2 *work, int count, double t, cg_vec2 *left, cg_vec2 *right)
 {
     double s = 1 - t;
     for (int level = count - 1; level >= 0; level--) {
@@ -49,13 +49,13 @@ void cg_curve_casteljau(cg_vec2 *work, int count, double t, cg_vec2 *left, cg_ve
 
 cg_status cg_bezier_point(const cg_vec2 *control, int count, double t, cg_vec2 *out)
 {
-    if (!valid(control, count, 1) || !out || !isfinite(t) || !cg_curve_points_finite(control, count))
+    if (!valid(control, count, 1) || !out || !isfinite(t) || !curve_points_finite(control, count))
         return CG_EINVAL;
     cg_vec2 small[16], *work = count <= 16 ? small : malloc((size_t)count * sizeof *work);
     if (!work)
         return CG_ENOMEM;
     memcpy(work, control, (size_t)count * sizeof *work);
-    cg_curve_casteljau(work, count, t, NULL, NULL);
+    curve_casteljau(work, count, t, NULL, NULL);
     *out = work[0];
     if (work != small)
         free(work);
@@ -64,7 +64,7 @@ cg_status cg_bezier_point(const cg_vec2 *control, int count, double t, cg_vec2 *
 
 cg_status cg_bezier_tangent(const cg_vec2 *control, int count, double t, cg_vec2 *out)
 {
-    if (!valid(control, count, 2) || !out || !isfinite(t) || !cg_curve_points_finite(control, count))
+    if (!valid(control, count, 2) || !out || !isfinite(t) || !curve_points_finite(control, count))
         return CG_EINVAL;
     /* Q'(t) = n * (the Bézier of the differences of the control points). */
     int n = count - 1;
@@ -73,7 +73,7 @@ cg_status cg_bezier_tangent(const cg_vec2 *control, int count, double t, cg_vec2
         return CG_ENOMEM;
     for (int i = 0; i < n; i++)
         work[i] = cg_vec2_scale(cg_vec2_sub(control[i + 1], control[i]), n);
-    cg_curve_casteljau(work, n, t, NULL, NULL);
+    curve_casteljau(work, n, t, NULL, NULL);
     *out = work[0];
     if (work != small)
         free(work);
@@ -104,13 +104,13 @@ cg_status cg_bezier_point3(const cg_vec3 *control, int count, double t, cg_vec3 
 cg_status cg_bezier_split(const cg_vec2 *control, int count, double t, cg_vec2 *left,
                           cg_vec2 *right)
 {
-    if (!valid(control, count, 1) || !isfinite(t) || !cg_curve_points_finite(control, count))
+    if (!valid(control, count, 1) || !isfinite(t) || !curve_points_finite(control, count))
         return CG_EINVAL;
     cg_vec2 small[16], *work = count <= 16 ? small : malloc((size_t)count * sizeof *work);
     if (!work)
         return CG_ENOMEM;
     memcpy(work, control, (size_t)count * sizeof *work);
-    cg_curve_casteljau(work, count, t, left, right);
+    curve_casteljau(work, count, t, left, right);
     if (work != small)
         free(work);
     return CG_OK;

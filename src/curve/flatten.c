@@ -56,7 +56,7 @@ static cg_status flatten(flattener *f, const cg_vec2 *c, int depth)
         return f->sink(f->user, c[f->count - 1]);
     cg_vec2 *left = f->levels + (size_t)depth * 2 * (size_t)f->count, *right = left + f->count;
     memcpy(f->work, c, (size_t)f->count * sizeof *c);
-    cg_curve_casteljau(f->work, f->count, 0.5, left, right);
+    curve_casteljau(f->work, f->count, 0.5, left, right);
     cg_status status = flatten(f, left, depth + 1);
     return status != CG_OK ? status : flatten(f, right, depth + 1);
 }
@@ -65,7 +65,7 @@ cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
                             cg_point_sink sink, void *user)
 {
     if (!control || !sink || count < 2 || count > CG_BEZIER_MAX_POINTS || !(tolerance > 0)
-        || !isfinite(tolerance) || !cg_curve_points_finite(control, count))
+        || !isfinite(tolerance) || !curve_points_finite(control, count))
         return CG_EINVAL;
     double second = 0, scale = 0;
     for (int i = 0; i < count; i++) {

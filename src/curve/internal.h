@@ -5,9 +5,9 @@
 #include "cg/curve.h"
 
 /* True when every coordinate of the count points is finite. */
-int cg_curve_points_finite(const cg_vec2 *points, int count);
+int curve_points_finite(const cg_vec2 *points, int count);
 /* de Casteljau in place (work[0] becomes Q(t)); left and right, when not
  * NULL, receive the control polygons of [0, t] and [t, 1]. */
-void cg_curve_casteljau(cg_vec2 *work, int count, double t, cg_vec2 *left, cg_vec2 *right);
+void curve_casteljau(cg_vec2 *work, int count, double t, cg_vec2 *left, cg_vec2 *right);
 
 #endif

@@ -81,7 +81,7 @@ static void line_aa(const cg_painter *painter, double x0, double y0, double x1, 
             if (cover[k] > 0 && r >= 0 && r < vmax)
                 cg_cover_add(&batch, (int)(swap ? r : c), (int)(swap ? c : r), (float)cover[k]);
     }
-    cg_cover_flush(&batch);
+    draw_cover_flush(&batch);
 }
 
 cg_status cg_draw_line_aa(cg_image *image, double x0, double y0, double x1, double y1,
@@ -90,7 +90,7 @@ cg_status cg_draw_line_aa(cg_image *image, double x0, double y0, double x1, doub
     if (!image || !image->data || !finite4(x0, y0, x1, y1))
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     line_aa(&painter, x0, y0, x1, y1);
     return CG_OK;
 }
@@ -103,7 +103,7 @@ cg_status cg_draw_polyline_aa(cg_image *image, const cg_vec2 *points, int count,
         if (!isfinite(points[i].x) || !isfinite(points[i].y))
             return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     for (int i = 1; i < count; i++)
         line_aa(&painter, points[i - 1].x, points[i - 1].y, points[i].x, points[i].y);
     return CG_OK;
@@ -156,7 +156,7 @@ static void ring_aa(const cg_painter *painter, double cx, double cy, double rx, 
             }
         }
     }
-    cg_cover_flush(&batch);
+    draw_cover_flush(&batch);
 }
 
 cg_status cg_draw_circle_aa(cg_image *image, double cx, double cy, double r, cg_rgba8 color)
@@ -176,7 +176,7 @@ cg_status cg_draw_ellipse_aa(cg_image *image, double cx, double cy, double rx, d
     if (rx > 1e9 || ry > 1e9)
         return CG_ERANGE;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     if (rx == 0 || ry == 0) {
         line_aa(&painter, cx - rx, cy - ry, cx + rx, cy + ry);
         return CG_OK;

@@ -185,7 +185,7 @@ cg_status cg_draw_circle(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
     if (!image || !image->data || r < 0)
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     if ((long long)cx - r < 0 || (long long)cy - r < 0 || (long long)cx + r >= image->width
         || (long long)cy + r >= image->height) {
         walk_circle(image, cx, cy, r, plot_painter, &painter, painter.opaque ? &painter : NULL);
@@ -242,7 +242,7 @@ static long long disc_half_width(long long r, long long d, long long last)
         return octant_row(r, d); /* the swapped mirror of column d */
     /* Otherwise the last column whose row is at least d: x^2 < r^2 - d(d-1). */
     long long n = r * r - d * d + d;
-    long long x = cg_isqrt(n);
+    long long x = draw_isqrt(n);
     return x * x == n ? x - 1 : x;
 }
 
@@ -251,7 +251,7 @@ cg_status cg_draw_disc(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
     if (!image || !image->data || r < 0)
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     long long last = octant_end(r);
     long long y0 = (long long)cy - r < 0 ? 0 : (long long)cy - r;
     long long y1 = (long long)cy + r >= image->height ? image->height - 1 : (long long)cy + r;
@@ -264,14 +264,14 @@ cg_status cg_draw_disc(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
         if (b >= image->width)
             b = image->width - 1;
         if (a <= b)
-            cg_painter_span(&painter, (int)a, (int)b, (int)y);
+            draw_painter_span(&painter, (int)a, (int)b, (int)y);
     }
     return CG_OK;
 }
 
 /* ---- arcs ---------------------------------------------------------------- */
 
-int cg_arc_contains(double start, double sweep, double dx, double dy_up)
+int draw_arc_contains(double start, double sweep, double dx, double dy_up)
 {
     if (sweep >= 360)
         return 1;
@@ -280,15 +280,15 @@ int cg_arc_contains(double start, double sweep, double dx, double dy_up)
     return rel <= sweep + 1e-9 || rel >= 360 - 1e-9;
 }
 
-void cg_arc_plot(void *context, long long x, long long y)
+void draw_arc_plot(void *context, long long x, long long y)
 {
     const cg_arc_filter *a = context;
     if (cg_painter_visible(a->painter, x, y)
-        && cg_arc_contains(a->start, a->sweep, (double)(x - a->cx), (double)(a->cy - y)))
+        && draw_arc_contains(a->start, a->sweep, (double)(x - a->cx), (double)(a->cy - y)))
         cg_painter_plot(a->painter, (int)x, (int)y);
 }
 
-int cg_arc_range(double start_deg, double end_deg, double *start, double *sweep)
+int draw_arc_range(double start_deg, double end_deg, double *start, double *sweep)
 {
     if (!isfinite(start_deg) || !isfinite(end_deg))
         return 0;
@@ -306,13 +306,13 @@ cg_status cg_draw_arc(cg_image *image, int cx, int cy, int r, double start_deg, 
                       cg_rgba8 color)
 {
     cg_arc_filter a;
-    if (!image || !image->data || r < 0 || !cg_arc_range(start_deg, end_deg, &a.start, &a.sweep))
+    if (!image || !image->data || r < 0 || !draw_arc_range(start_deg, end_deg, &a.start, &a.sweep))
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     a.painter = &painter;
     a.cx = cx;
     a.cy = cy;
-    walk_circle(image, cx, cy, r, cg_arc_plot, &a, NULL);
+    walk_circle(image, cx, cy, r, draw_arc_plot, &a, NULL);
     return CG_OK;
 }

@@ -152,7 +152,7 @@ cg_status cg_draw_ellipse(cg_image *image, int cx, int cy, int rx, int ry, cg_rg
     if (rx == ry)
         return cg_draw_circle(image, cx, cy, rx, color);
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     ellipse e = {cx, cy, rx, ry, (cg_wide)rx * rx, (cg_wide)ry * ry, plot_visible, &painter};
     walk_ellipse(&e, image->width, image->height);
     return CG_OK;
@@ -165,16 +165,16 @@ cg_status cg_draw_ellipse_arc(cg_image *image, int cx, int cy, int rx, int ry, d
     cg_status status = check(image, rx, ry);
     if (status != CG_OK)
         return status;
-    if (!cg_arc_range(start_deg, end_deg, &a.start, &a.sweep))
+    if (!draw_arc_range(start_deg, end_deg, &a.start, &a.sweep))
         return CG_EINVAL;
     if (rx == ry)
         return cg_draw_arc(image, cx, cy, rx, start_deg, end_deg, color);
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     a.painter = &painter;
     a.cx = cx;
     a.cy = cy;
-    ellipse e = {cx, cy, rx, ry, (cg_wide)rx * rx, (cg_wide)ry * ry, cg_arc_plot, &a};
+    ellipse e = {cx, cy, rx, ry, (cg_wide)rx * rx, (cg_wide)ry * ry, draw_arc_plot, &a};
     walk_ellipse(&e, image->width, image->height);
     return CG_OK;
 }

@@ -20,7 +20,7 @@ typedef struct cg_painter {
     int opaque;      /* RGBA8 image and alpha 255: plain stores */
 } cg_painter;
 
-void cg_painter_init(cg_painter *painter, cg_image *image, cg_rgba8 color);
+void draw_painter_init(cg_painter *painter, cg_image *image, cg_rgba8 color);
 
 /* Pixel (x, y) must be inside the image. */
 static inline void cg_painter_plot(const cg_painter *painter, int x, int y)
@@ -47,11 +47,11 @@ static inline void cg_painter_plot_clipped(const cg_painter *painter, long long 
 }
 
 /* Pixels x0..x1 of row y, all inside the image. */
-void cg_painter_span(const cg_painter *painter, int x0, int x1, int y);
+void draw_painter_span(const cg_painter *painter, int x0, int x1, int y);
 
 /* Blends the colour with its alpha scaled by coverage in [0, 1] onto pixel
  * (x, y), which must be inside the image. */
-void cg_painter_cover(const cg_painter *painter, int x, int y, float coverage);
+void draw_painter_cover(const cg_painter *painter, int x, int y, float coverage);
 
 /* Coverage blending in batches: the sRGB decoding and encoding of many
  * opaque RGBA8 pixels is done in one pass each.  Pixels must be inside the
@@ -65,7 +65,7 @@ typedef struct cg_cover_batch {
     float alpha[CG_COVER_BATCH];
 } cg_cover_batch;
 
-void cg_cover_flush(cg_cover_batch *batch);
+void draw_cover_flush(cg_cover_batch *batch);
 static inline void cg_cover_add(cg_cover_batch *batch, int x, int y, float coverage)
 {
     const cg_painter *painter = batch->painter;
@@ -73,12 +73,12 @@ static inline void cg_cover_add(cg_cover_batch *batch, int x, int y, float cover
     if (!(coverage > 0))
         return;
     if (image->format != CG_PIXEL_RGBA8) {
-        cg_painter_cover(painter, x, y, coverage);
+        draw_painter_cover(painter, x, y, coverage);
         return;
     }
     uint8_t *d = image->data + (size_t)y * image->stride + (size_t)x * 4;
     if (d[3] != 255) {
-        cg_painter_cover(painter, x, y, coverage);
+        draw_painter_cover(painter, x, y, coverage);
         return;
     }
     float a = painter->linear.a * (coverage < 1 ? coverage : 1);
@@ -89,12 +89,12 @@ static inline void cg_cover_add(cg_cover_batch *batch, int x, int y, float cover
     batch->pixel[batch->count] = d;
     batch->alpha[batch->count] = a;
     if (++batch->count == CG_COVER_BATCH)
-        cg_cover_flush(batch);
+        draw_cover_flush(batch);
 }
 
 /* The Bresenham line with the options polylines need: skip_first leaves out
  * the pixel (x0, y0) (already drawn as the end of the previous segment). */
-void cg_draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
+void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
                           int skip_first);
 
 /* The first-octant form of a line: the walk starts at (u0, v0) in (major,
@@ -106,19 +106,19 @@ typedef struct cg_line_frame {
     int sv;
 } cg_line_frame;
 
-void cg_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame);
+void draw_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame);
 
 /* The integer square root floor(sqrt(n)) for 0 <= n < 2^63. */
-long long cg_isqrt(long long n);
+long long draw_isqrt(long long n);
 
 /* Arcs: normalises START_DEG/END_DEG to a start in [0, 360) and a sweep in
  * [0, 360] (0 when not finite); and tests whether the direction (dx, dy_up)
  * from the centre lies on the arc (a tiny slack keeps exact boundary
  * directions such as 90 degrees on it). */
-int cg_arc_range(double start_deg, double end_deg, double *start, double *sweep);
-int cg_arc_contains(double start, double sweep, double dx, double dy_up);
+int draw_arc_range(double start_deg, double end_deg, double *start, double *sweep);
+int draw_arc_contains(double start, double sweep, double dx, double dy_up);
 
-/* A pixel callback of the curve walks, and the arc filter: cg_arc_plot
+/* A pixel callback of the curve walks, and the arc filter: draw_arc_plot
  * draws pixel (x, y) when it is in the image and on the arc. */
 typedef void (*cg_pixel_fn)(void *context, long long x, long long y);
 typedef struct cg_arc_filter {
@@ -126,6 +126,6 @@ typedef struct cg_arc_filter {
     long long cx, cy;
     double start, sweep; /* degrees, start in [0, 360), sweep in [0, 360] */
 } cg_arc_filter;
-void cg_arc_plot(void *context, long long x, long long y);
+void draw_arc_plot(void *context, long long x, long long y);
 
 #endif

@@ -12,7 +12,7 @@
  * and runs over the visible steps only. */
 #include "internal.h"
 
-void cg_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame)
+void draw_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame)
 {
     long long dx = (long long)x1 - x0, dy = (long long)y1 - y0;
     long long adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
@@ -49,11 +49,11 @@ static cg_wide ceil_div(cg_wide a, cg_wide b)
     return -floor_div(-a, b);
 }
 
-void cg_draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
+void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
                           int skip_first)
 {
     cg_line_frame l;
-    cg_line_frame_make(x0, y0, x1, y1, &l);
+    draw_line_frame_make(x0, y0, x1, y1, &l);
     const cg_image *image = painter->image;
     long long umax = (l.x_major ? image->width : image->height) - 1;
     long long vmax = (l.x_major ? image->height : image->width) - 1;
@@ -131,8 +131,8 @@ cg_status cg_draw_line(cg_image *image, int x0, int y0, int x1, int y1, cg_rgba8
     if (!image || !image->data)
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
-    cg_draw_line_clipped(&painter, x0, y0, x1, y1, 0);
+    draw_painter_init(&painter, image, color);
+    draw_line_clipped(&painter, x0, y0, x1, y1, 0);
     return CG_OK;
 }
 
@@ -141,13 +141,13 @@ cg_status cg_draw_polyline(cg_image *image, const int *xy, int count, cg_rgba8 c
     if (!image || !image->data || !xy || count < 1)
         return CG_EINVAL;
     cg_painter painter;
-    cg_painter_init(&painter, image, color);
+    draw_painter_init(&painter, image, color);
     if (count == 1) {
         cg_painter_plot_clipped(&painter, xy[0], xy[1]);
         return CG_OK;
     }
     for (int i = 1; i < count; i++)
-        cg_draw_line_clipped(&painter, xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1],
+        draw_line_clipped(&painter, xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1],
                              i > 1);
     return CG_OK;
 }

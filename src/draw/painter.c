@@ -1,7 +1,7 @@
 /* Writing one colour into an image: plain stores or linear-light blending. */
 #include "internal.h"
 
-void cg_painter_init(cg_painter *painter, cg_image *image, cg_rgba8 color)
+void draw_painter_init(cg_painter *painter, cg_image *image, cg_rgba8 color)
 {
     painter->image = image;
     painter->color = color;
@@ -10,7 +10,7 @@ void cg_painter_init(cg_painter *painter, cg_image *image, cg_rgba8 color)
     painter->opaque = image->format == CG_PIXEL_RGBA8 && color.a == 255;
 }
 
-void cg_painter_span(const cg_painter *painter, int x0, int x1, int y)
+void draw_painter_span(const cg_painter *painter, int x0, int x1, int y)
 {
     cg_image *image = painter->image;
     if (painter->opaque) {
@@ -23,7 +23,7 @@ void cg_painter_span(const cg_painter *painter, int x0, int x1, int y)
     }
 }
 
-void cg_painter_cover(const cg_painter *painter, int x, int y, float coverage)
+void draw_painter_cover(const cg_painter *painter, int x, int y, float coverage)
 {
     if (!(coverage > 0))
         return;
@@ -46,7 +46,7 @@ void cg_painter_cover(const cg_painter *painter, int x, int y, float coverage)
     cg_image_blend(image, x, y, c);
 }
 
-long long cg_isqrt(long long n)
+long long draw_isqrt(long long n)
 {
     if (n <= 0)
         return 0;
@@ -58,7 +58,7 @@ long long cg_isqrt(long long n)
     return r;
 }
 
-void cg_cover_flush(cg_cover_batch *batch)
+void draw_cover_flush(cg_cover_batch *batch)
 {
     int n = batch->count;
     if (n == 0)

@@ -6,7 +6,7 @@ cg_status cg_line_trace(int x0, int y0, int x1, int y1,
                         long long *dx, long long *dy, long long *de, long long *dne)
 {
     cg_line_frame l;
-    cg_line_frame_make(x0, y0, x1, y1, &l);
+    draw_line_frame_make(x0, y0, x1, y1, &l);
     long long e = 2 * l.dv, ne = 2 * (l.dv - l.du), f = 2 * l.dv - l.du;
     if (dx)
         *dx = l.du;

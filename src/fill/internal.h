@@ -199,7 +199,7 @@ static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
                           float as)
 {
     if (d->a == 255) {
-        float dr = cg_srgb_decode_table[d->r], dg = cg_srgb_decode_table[d->g], db = cg_srgb_decode_table[d->b];
+        float dr = color_srgb_decode_table[d->r], dg = color_srgb_decode_table[d->g], db = color_srgb_decode_table[d->b];
         d->r = cg_srgb_encode_unit(dr + (r - dr) * as);
         d->g = cg_srgb_encode_unit(dg + (g - dg) * as);
         d->b = cg_srgb_encode_unit(db + (b - db) * as);
@@ -218,9 +218,9 @@ static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
     if (a <= 0)
         return;
     float inv = 1 / a; /* the results are weighted means of values in [0, 1] */
-    d->r = cg_srgb_encode_unit((r * as + cg_srgb_decode_table[d->r] * ad) * inv);
-    d->g = cg_srgb_encode_unit((g * as + cg_srgb_decode_table[d->g] * ad) * inv);
-    d->b = cg_srgb_encode_unit((b * as + cg_srgb_decode_table[d->b] * ad) * inv);
+    d->r = cg_srgb_encode_unit((r * as + color_srgb_decode_table[d->r] * ad) * inv);
+    d->g = cg_srgb_encode_unit((g * as + color_srgb_decode_table[d->g] * ad) * inv);
+    d->b = cg_srgb_encode_unit((b * as + color_srgb_decode_table[d->b] * ad) * inv);
     d->a = (uint8_t)(a * 255.0f + 0.5f);
 }
 
@@ -278,8 +278,8 @@ static inline fill_rgb fill_rgb_make(float r, float g, float b)
 
 static inline __m128 fill_decode_rgb(const cg_rgba8 *px)
 {
-    return _mm_setr_ps(cg_srgb_decode_table[px->r], cg_srgb_decode_table[px->g],
-                       cg_srgb_decode_table[px->b], 0.0f);
+    return _mm_setr_ps(color_srgb_decode_table[px->r], color_srgb_decode_table[px->g],
+                       color_srgb_decode_table[px->b], 0.0f);
 }
 
 static inline uint32_t fill_blend_opaque(uint32_t v, fill_rgb src, float as)

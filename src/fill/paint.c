@@ -130,9 +130,9 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         memcpy(&p->encoded, &paint->color, sizeof p->encoded);
         memcpy(p->encoded_rgba, &paint->color, sizeof p->encoded_rgba);
         p->opaque = paint->color.a == 255;
-        p->same_exact = cg_srgb_decode_table[paint->color.r] == p->r
-                        && cg_srgb_decode_table[paint->color.g] == p->g
-                        && cg_srgb_decode_table[paint->color.b] == p->b;
+        p->same_exact = color_srgb_decode_table[paint->color.r] == p->r
+                        && color_srgb_decode_table[paint->color.g] == p->g
+                        && color_srgb_decode_table[paint->color.b] == p->b;
         if (r->blend_gen == 0 || r->blend_src != p->encoded) {
             r->blend_src = p->encoded;
             fill_next_generation(r);

@@ -221,6 +221,23 @@ typedef struct cg_hemesh_stats {
 cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long **component_genus,
                                   size_t *component_genus_count);
 
+/* Counts of an indexed mesh as it was read, before any repair.  faces are
+ * the polygons the build accepts (3 or more corners, indices in range, no
+ * vertex twice; the others are bad_faces); edges the distinct unordered
+ * vertex pairs joined by a side of one of them; components the classes of
+ * vertices joined through shared faces (an isolated vertex is one);
+ * euler_characteristic V - E + F of these. */
+typedef struct cg_hemesh_input_counts {
+    size_t vertices, edges, faces, bad_faces;
+    size_t isolated_vertices;
+    size_t components;
+    long euler_characteristic;
+} cg_hemesh_input_counts;
+
+/* Counts mesh's topology in O(V + corners), independently of the build.
+ * CG_EINVAL (NULL or inconsistent arrays), CG_ERANGE, CG_ENOMEM. */
+cg_status cg_hemesh_input_counts_compute(const cg_mesh *mesh, cg_hemesh_input_counts *out);
+
 /* Newell's normal of face f: its direction is the unit normal and its length
  * twice the area for a planar polygon. */
 cg_vec3 cg_hemesh_face_newell(const cg_hemesh *m, uint32_t f);

@@ -75,6 +75,19 @@ static int repaired(const cg_hemesh_report *r)
     return r->bad_face_count || r->flipped_face_count || r->cut_edge_count || r->added_vertex_count;
 }
 
+static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t genus_count)
+{
+    if (st->genus >= 0) {
+        printf("genus: %ld\n", st->genus);
+        return;
+    }
+    printf("genus: mixed\n");
+    printf("genus_per_component:");
+    for (size_t i = 0; i < genus_count && i < 64; i++)
+        printf(" %ld", genus[i]);
+    printf("%s\n", genus_count > 64 ? " ..." : "");
+}
+
 /* ---- info -------------------------------------------------------------------- */
 
 static int info(int argc, char **argv)
@@ -106,35 +119,33 @@ static int info(int argc, char **argv)
         return CLI_FAILED;
     }
     cg_hemesh_stats st;
+    cg_hemesh_input_counts input;
     long *genus = NULL;
     size_t genus_count = 0;
-    if (cg_hemesh_stats_compute(h, &st, &genus, &genus_count) != CG_OK) {
+    if (cg_hemesh_input_counts_compute(mesh, &input) != CG_OK
+        || cg_hemesh_stats_compute(h, &st, &genus, &genus_count) != CG_OK) {
         cg_hemesh_free(h);
         cg_mesh_free(mesh);
         cg_hemesh_report_clear(&rep);
         return cli_fail("mesh info: out of memory");
     }
     printf("file: %s\n", path);
-    printf("vertices: %zu\n", st.vertices);
-    printf("edges: %zu\n", st.edges);
-    printf("faces: %zu\n", st.faces);
+    printf("vertices: %zu\n", input.vertices);
+    printf("edges: %zu\n", input.edges);
+    printf("faces: %zu\n", input.faces);
     printf("boundary_loops: %zu\n", st.boundary_loops);
-    printf("components: %zu\n", st.components);
-    printf("euler_characteristic: %ld\n", st.euler_characteristic);
-    if (st.genus >= 0) {
-        printf("genus: %ld\n", st.genus);
-    } else {
-        printf("genus: mixed\n");
-        printf("genus_per_component:");
-        for (size_t i = 0; i < genus_count && i < 64; i++)
-            printf(" %ld", genus[i]);
-        printf("%s\n", genus_count > 64 ? " ..." : "");
-    }
+    printf("components: %zu\n", input.components);
+    printf("euler_characteristic: %ld\n", input.euler_characteristic);
+    print_genus(&st, genus, genus_count);
+    if (st.vertices != input.vertices || st.edges != input.edges || st.faces != input.faces
+        || st.components != input.components)
+        printf("genus_note: boundary_loops and genus are of the repaired manifold (the "
+               "repaired_ counts), the other counts of the input\n");
     int manifold = rep.nonmanifold_edge_count == 0 && rep.nonmanifold_vertex_count == 0;
     printf("manifold: %s\n", manifold ? "yes" : "no");
     printf("oriented: %s\n", rep.misoriented_edge_count == 0 ? "yes" : "no");
     printf("orientable: %s\n", rep.orientable ? "yes" : "no");
-    printf("isolated_vertices: %zu\n", st.isolated_vertices);
+    printf("isolated_vertices: %zu\n", input.isolated_vertices);
     printf("nonmanifold_edges: %zu\n", rep.nonmanifold_edge_count);
     printf("nonmanifold_vertices: %zu\n", rep.nonmanifold_vertex_count);
     printf("misoriented_edges: %zu\n", rep.misoriented_edge_count);
@@ -147,6 +158,11 @@ static int info(int argc, char **argv)
     } else {
         printf("bounding_box_min: none\nbounding_box_max: none\n");
     }
+    printf("repaired_vertices: %zu\n", st.vertices);
+    printf("repaired_edges: %zu\n", st.edges);
+    printf("repaired_faces: %zu\n", st.faces);
+    printf("repaired_components: %zu\n", st.components);
+    printf("repaired_euler_characteristic: %ld\n", st.euler_characteristic);
     if (repaired(&rep))
         print_changes(stdout, "repaired: ", &rep);
     free(genus);

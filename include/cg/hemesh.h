@@ -96,6 +96,10 @@ typedef struct cg_hemesh_report {
     size_t flipped_face_count;    /* faces reversed by CG_HEMESH_ORIENT */
     size_t cut_edge_count;        /* extra edge uses made boundary by the split */
     size_t added_vertex_count;    /* vertices created by splitting vertices */
+    /* edges split at their midpoint because, after the cut, another edge
+     * joined the same two vertices (an indexed mesh names an edge by its
+     * vertices: so the result converts to a manifold cg_mesh) */
+    size_t split_edge_count;
     int orientable;               /* 0 when a component could not be oriented */
     uint32_t *face_map; /* for each hemesh face, the input face it came from */
 } cg_hemesh_report;

@@ -260,6 +260,10 @@ static cg_status match(builder *b, int record)
         }
     }
     /* bucket v now ends at start[v] and begins at start[v - 1] */
+    if (hm_radial_order(b->mesh, off, idx, b->faces, C, bucket, start) != CG_OK) {
+        status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
+        goto done;
+    }
     memset(stamp, 0xff, vn * sizeof *stamp);
     memset(same_way, 0xff, vn * sizeof *same_way);
     size_t edges = 0, nonmanifold = 0, misoriented = 0, cut = 0, entries = 0;
@@ -654,8 +658,21 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         report->cut_edge_count = b.cut;
     if (s == CG_OK)
         s = assemble(&b, out);
+    uint32_t *face_origin = NULL; /* of the faces the edge splits add */
+    size_t split = 0;
+    if (s == CG_OK && b.cut) {
+        s = hm_split_multiple_edges(*out, &split, &face_origin);
+        if (s != CG_OK) {
+            s = cg_error_set(err, s, "hemesh: out of memory");
+            cg_hemesh_free(*out);
+            *out = NULL;
+        }
+        if (report)
+            report->split_edge_count = split;
+    }
     if (s == CG_OK && report) {
-        report->face_map = malloc(b.faces * sizeof *report->face_map);
+        size_t faces = (*out)->face_count;
+        report->face_map = malloc(faces * sizeof *report->face_map);
         if (!report->face_map) {
             s = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");
             cg_hemesh_free(*out);
@@ -663,6 +680,8 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         } else {
             for (size_t f = 0; f < b.faces; f++)
                 report->face_map[f] = b.face_map ? b.face_map[f] : (uint32_t)f;
+            for (size_t f = b.faces; f < faces; f++)
+                report->face_map[f] = report->face_map[face_origin[f - b.faces]];
         }
     }
     free(b.own_offsets);
@@ -671,5 +690,6 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
     free(b.corner_halfedge);
     free(b.edge_vertices);
     free(b.partner);
+    free(face_origin);
     return s;
 }

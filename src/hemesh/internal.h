@@ -27,4 +27,17 @@ void hm_blend_attributes(cg_hemesh *m, uint32_t dst, const uint32_t *src, const 
  * one, rotating from its current (live) half-edge. */
 void hm_fix_vertex_halfedge(cg_hemesh *m, uint32_t v);
 
+/* Reorders the sides of each edge on three or more faces inside bucket
+ * (entries other << 32 | corner << 1 | direction, the bucket of vertex v
+ * ending at end[v]) by their angle about the edge, so that pairing them in
+ * turn pairs neighbours across a solid (see radial.c).  CG_ENOMEM. */
+cg_status hm_radial_order(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
+                          size_t faces, size_t corners, uint64_t *bucket, const uint32_t *end);
+
+/* Splits at its midpoint every edge that joins the same two vertices as an
+ * earlier edge, until no two do (see separate.c); *split receives the
+ * number of splits, *face_origin (malloc'ed, may be NULL) for each face
+ * added, the face it was split from.  CG_ENOMEM. */
+cg_status hm_split_multiple_edges(cg_hemesh *m, size_t *split, uint32_t **face_origin);
+
 #endif

@@ -62,6 +62,10 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
                 r->nonmanifold_edge_count, r->nonmanifold_edge_count == 1 ? "" : "s");
         print_list(f, "edges (vertices counted from 0)", r->nonmanifold_edges, r->nonmanifold_edge_count, 2);
     }
+    if (r->split_edge_count)
+        fprintf(f, "%ssplit %zu edge%s at the midpoint where, once separated, two edges joined "
+                   "the same two vertices\n", prefix,
+                r->split_edge_count, r->split_edge_count == 1 ? "" : "s");
     if (r->added_vertex_count) {
         fprintf(f, "%ssplit %zu non-manifold %s into one per fan (%zu vertices added); ",
                 prefix, r->nonmanifold_vertex_count, r->nonmanifold_vertex_count == 1 ? "vertex" : "vertices",
@@ -72,7 +76,8 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
 
 static int repaired(const cg_hemesh_report *r)
 {
-    return r->bad_face_count || r->flipped_face_count || r->cut_edge_count || r->added_vertex_count;
+    return r->bad_face_count || r->flipped_face_count || r->cut_edge_count || r->added_vertex_count
+           || r->split_edge_count;
 }
 
 static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t genus_count)

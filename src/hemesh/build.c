@@ -260,15 +260,29 @@ static cg_status match(builder *b, int record)
         }
     }
     /* bucket v now ends at start[v] and begins at start[v - 1] */
-    if (hm_radial_order(b->mesh, off, idx, b->faces, C, bucket, start) != CG_OK) {
-        status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-        goto done;
-    }
     memset(stamp, 0xff, vn * sizeof *stamp);
     memset(same_way, 0xff, vn * sizeof *same_way);
     size_t edges = 0, nonmanifold = 0, misoriented = 0, cut = 0, entries = 0;
+    uint32_t *corner_before = NULL;
     for (size_t a = 0; a < V; a++) {
         size_t begin = a ? start[a - 1] : 0, end = start[a];
+        if ((b->flags & CG_HEMESH_SPLIT_NONMANIFOLD) && end - begin >= 3) {
+            /* sizes of the bucket's groups (stamped apart from the pass below);
+             * a group of three or more sides is paired by angle */
+            int crowded = 0;
+            for (size_t i = begin; i < end; i++) {
+                uint32_t other = (uint32_t)(bucket[i] >> 32);
+                if (stamp[other] != ((uint32_t)a | 0x80000000u)) {
+                    stamp[other] = (uint32_t)a | 0x80000000u;
+                    uses[other] = 0;
+                }
+                crowded |= ++uses[other] >= 3;
+            }
+            if (crowded && hm_radial_sort_bucket(b->mesh, off, idx, b->faces, C, &corner_before,
+                                                 (uint32_t)a, bucket + begin, end - begin, uses)
+                               != CG_OK)
+                failed = 1;
+        }
         for (size_t i = begin; i < end; i++) {
             uint64_t entry = bucket[i];
             uint32_t other = (uint32_t)(entry >> 32);
@@ -331,6 +345,7 @@ static cg_status match(builder *b, int record)
             b->corner_halfedge[corner] = 2 * current[other] + dir;
         }
     }
+    free(corner_before);
     if (failed) {
         status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
         goto done;

@@ -27,12 +27,14 @@ void hm_blend_attributes(cg_hemesh *m, uint32_t dst, const uint32_t *src, const 
  * one, rotating from its current (live) half-edge. */
 void hm_fix_vertex_halfedge(cg_hemesh *m, uint32_t v);
 
-/* Reorders the sides of each edge on three or more faces inside bucket
- * (entries other << 32 | corner << 1 | direction, the bucket of vertex v
- * ending at end[v]) by their angle about the edge, so that pairing them in
- * turn pairs neighbours across a solid (see radial.c).  CG_ENOMEM. */
-cg_status hm_radial_order(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
-                          size_t faces, size_t corners, uint64_t *bucket, const uint32_t *end);
+/* Sorts the n entries of the bucket of vertex lo (other << 32 | corner << 1
+ * | direction) by other vertex and, in groups of three or more sides (uses
+ * holds each group's size), by angle about the edge, so that pairing them
+ * in turn pairs neighbours across a solid (see radial.c).  *corner_before
+ * (NULL at first, freed by the caller) is made on first use.  CG_ENOMEM. */
+cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
+                                size_t faces, size_t corners, uint32_t **corner_before, uint32_t lo,
+                                uint64_t *entries, size_t n, const uint32_t *uses);
 
 /* Splits at its midpoint every edge that joins the same two vertices as an
  * earlier edge, until no two do (see separate.c); *split receives the

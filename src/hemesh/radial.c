@@ -62,13 +62,28 @@ static double radial_angle(cg_vec3 lo, cg_vec3 hi, cg_vec3 p)
     return atan2(ux * e2x + uy * e2y + uz * e2z, ux * e1x + uy * e1y + uz * e1z);
 }
 
-/* Sorts one bucket (the sides on vertex lo) by other vertex and angle, then
- * starts each group of three or more sides where the solid begins. */
-static cg_status radial_sort_bucket(const cg_mesh *mesh, const uint32_t *indices,
-                                    const uint32_t *corner_before, uint32_t lo, uint64_t *entries,
-                                    size_t n, const uint32_t *uses)
+/* The corner before each corner in its face, made on first use. */
+static const uint32_t *radial_corner_before(const uint32_t *offsets, size_t faces, size_t corners,
+                                            uint32_t **corner_before)
 {
-    radial_side *sides = malloc(n * sizeof *sides);
+    if (*corner_before)
+        return *corner_before;
+    uint32_t *before = malloc((corners ? corners : 1) * sizeof *before);
+    if (!before)
+        return NULL;
+    for (size_t f = 0; f < faces; f++)
+        for (uint32_t k = offsets[f]; k < offsets[f + 1]; k++)
+            before[k] = k > offsets[f] ? k - 1 : offsets[f + 1] - 1;
+    *corner_before = before;
+    return before;
+}
+
+cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
+                                size_t faces, size_t corners, uint32_t **corner_before, uint32_t lo,
+                                uint64_t *entries, size_t n, const uint32_t *uses)
+{
+    const uint32_t *before = radial_corner_before(offsets, faces, corners, corner_before);
+    radial_side *sides = before ? malloc(n * sizeof *sides) : NULL;
     if (!sides)
         return CG_ENOMEM;
     for (size_t i = 0; i < n; i++) {
@@ -77,9 +92,10 @@ static cg_status radial_sort_bucket(const cg_mesh *mesh, const uint32_t *indices
         sides[i].entry = entries[i];
         sides[i].angle = uses[other] < 3 ? 0.0
                                          : radial_angle(mesh->positions[lo], mesh->positions[other],
-                                                        mesh->positions[indices[corner_before[corner]]]);
+                                                        mesh->positions[indices[before[corner]]]);
     }
     qsort(sides, n, sizeof *sides, radial_compare);
+    /* each group of three or more starts where the solid begins */
     for (size_t i = 0; i < n;) {
         uint32_t other = (uint32_t)(sides[i].entry >> 32);
         size_t m = uses[other], start = 0;
@@ -94,50 +110,4 @@ static cg_status radial_sort_bucket(const cg_mesh *mesh, const uint32_t *indices
     }
     free(sides);
     return CG_OK;
-}
-
-cg_status hm_radial_order(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
-                          size_t faces, size_t corners, uint64_t *bucket, const uint32_t *end)
-{
-    size_t V = mesh->vertex_count;
-    uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
-    uint32_t *uses = malloc((V ? V : 1) * sizeof *uses);
-    uint32_t *corner_before = NULL;
-    cg_status status = CG_OK;
-    if (!stamp || !uses) {
-        status = CG_ENOMEM;
-        goto done;
-    }
-    memset(stamp, 0xff, V * sizeof *stamp);
-    for (size_t a = 0; a < V && status == CG_OK; a++) {
-        size_t begin = a ? end[a - 1] : 0;
-        int crowded = 0;
-        for (size_t i = begin; i < end[a]; i++) {
-            uint32_t other = (uint32_t)(bucket[i] >> 32);
-            if (stamp[other] != (uint32_t)a) {
-                stamp[other] = (uint32_t)a;
-                uses[other] = 0;
-            }
-            crowded |= ++uses[other] >= 3;
-        }
-        if (!crowded)
-            continue;
-        if (!corner_before) { /* the corner before each corner in its face */
-            corner_before = malloc((corners ? corners : 1) * sizeof *corner_before);
-            if (!corner_before) {
-                status = CG_ENOMEM;
-                break;
-            }
-            for (size_t f = 0; f < faces; f++)
-                for (uint32_t k = offsets[f]; k < offsets[f + 1]; k++)
-                    corner_before[k] = k > offsets[f] ? k - 1 : offsets[f + 1] - 1;
-        }
-        status = radial_sort_bucket(mesh, indices, corner_before, (uint32_t)a, bucket + begin,
-                                    end[a] - begin, uses);
-    }
-done:
-    free(stamp);
-    free(uses);
-    free(corner_before);
-    return status;
 }

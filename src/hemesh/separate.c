@@ -77,6 +77,46 @@ done:
     return status;
 }
 
+/* Lists the edges at the vertices from first on that join a vertex an
+ * earlier edge around it already joins (the only ones a split can add). */
+static cg_status separate_find_new(const cg_hemesh *m, size_t first, uint32_t **list, size_t *count)
+{
+    size_t V = m->vertex_count;
+    uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
+    uint32_t *found = NULL;
+    size_t n = 0;
+    if (!stamp)
+        return CG_ENOMEM;
+    memset(stamp, 0xff, V * sizeof *stamp);
+    for (size_t v = first; v < V; v++) {
+        uint32_t h0 = m->vertex_halfedge[v], h = h0;
+        if (h0 >= CG_HEMESH_DELETED)
+            continue;
+        do {
+            uint32_t d = m->halfedges[h ^ 1u].origin;
+            if (stamp[d] != (uint32_t)v) {
+                stamp[d] = (uint32_t)v;
+            } else {
+                if ((n & (n - 1)) == 0) {
+                    uint32_t *p = realloc(found, (n ? 2 * n : 1) * sizeof *p);
+                    if (!p) {
+                        free(found);
+                        free(stamp);
+                        return CG_ENOMEM;
+                    }
+                    found = p;
+                }
+                found[n++] = h >> 1;
+            }
+            h = cg_hemesh_cw(m, h);
+        } while (h != h0);
+    }
+    free(stamp);
+    *list = found;
+    *count = n;
+    return CG_OK;
+}
+
 cg_status hm_split_multiple_edges(cg_hemesh *m, size_t *split, uint32_t **face_origin)
 {
     *split = 0;
@@ -84,11 +124,14 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, size_t *split, uint32_t **face_o
     size_t first_new_face = m->face_count;
     /* A split joins the new vertex to the opposite corners of its triangles;
      * when both are one vertex those two new edges coincide, and the next
-     * round splits one of them (whose opposite corners differ). */
+     * round splits one of them (whose opposite corners differ).  Later
+     * rounds look only at the vertices the last one added. */
+    size_t first_new_vertex = 0;
     for (int round = 0; round < 8; round++) {
         uint32_t *list;
-        size_t n;
-        cg_status s = separate_find(m, &list, &n);
+        size_t n, vertices = m->vertex_count;
+        cg_status s = round ? separate_find_new(m, first_new_vertex, &list, &n) : separate_find(m, &list, &n);
+        first_new_vertex = vertices;
         if (s != CG_OK)
             return s;
         if (!n)

@@ -62,28 +62,28 @@ static double radial_angle(cg_vec3 lo, cg_vec3 hi, cg_vec3 p)
     return atan2(ux * e2x + uy * e2y + uz * e2z, ux * e1x + uy * e1y + uz * e1z);
 }
 
-/* The corner before each corner in its face, made on first use. */
-static const uint32_t *radial_corner_before(const uint32_t *offsets, size_t faces, size_t corners,
-                                            uint32_t **corner_before)
+/* The corner before corner k in its face (for polygons a binary search for
+ * the face: only the sides of non-manifold edges ask). */
+static uint32_t radial_corner_before(const uint32_t *offsets, size_t faces, uint32_t k)
 {
-    if (*corner_before)
-        return *corner_before;
-    uint32_t *before = malloc((corners ? corners : 1) * sizeof *before);
-    if (!before)
-        return NULL;
-    for (size_t f = 0; f < faces; f++)
-        for (uint32_t k = offsets[f]; k < offsets[f + 1]; k++)
-            before[k] = k > offsets[f] ? k - 1 : offsets[f + 1] - 1;
-    *corner_before = before;
-    return before;
+    if (offsets[faces] == 3 * faces) /* every face a triangle */
+        return k % 3 ? k - 1 : k + 2;
+    size_t lo = 0, hi = faces; /* the face f with offsets[f] <= k < offsets[f + 1] */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (offsets[mid] <= k)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return k > offsets[lo] ? k - 1 : offsets[lo + 1] - 1;
 }
 
 cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
-                                size_t faces, size_t corners, uint32_t **corner_before, uint32_t lo,
-                                uint64_t *entries, size_t n, const uint32_t *uses)
+                                size_t faces, uint32_t lo, uint64_t *entries, size_t n,
+                                const uint32_t *uses)
 {
-    const uint32_t *before = radial_corner_before(offsets, faces, corners, corner_before);
-    radial_side *sides = before ? malloc(n * sizeof *sides) : NULL;
+    radial_side *sides = malloc(n * sizeof *sides);
     if (!sides)
         return CG_ENOMEM;
     for (size_t i = 0; i < n; i++) {
@@ -92,9 +92,19 @@ cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, co
         sides[i].entry = entries[i];
         sides[i].angle = uses[other] < 3 ? 0.0
                                          : radial_angle(mesh->positions[lo], mesh->positions[other],
-                                                        mesh->positions[indices[before[corner]]]);
+                                                        mesh->positions[indices[radial_corner_before(offsets, faces, corner)]]);
     }
-    qsort(sides, n, sizeof *sides, radial_compare);
+    if (n <= 24) { /* buckets are about as long as a valence: insertion sort */
+        for (size_t i = 1; i < n; i++) {
+            radial_side x = sides[i];
+            size_t j = i;
+            for (; j > 0 && radial_compare(&sides[j - 1], &x) > 0; j--)
+                sides[j] = sides[j - 1];
+            sides[j] = x;
+        }
+    } else {
+        qsort(sides, n, sizeof *sides, radial_compare);
+    }
     /* each group of three or more starts where the solid begins */
     for (size_t i = 0; i < n;) {
         uint32_t other = (uint32_t)(sides[i].entry >> 32);

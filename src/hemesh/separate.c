@@ -16,65 +16,42 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Lists the live edges that join the same two vertices as a lower edge. */
-static cg_status separate_find(const cg_hemesh *m, uint32_t **list, size_t *count)
+/* Lists the edges among candidates that join the same two vertices as
+ * another edge that is not listed before them. */
+static cg_status separate_find_among(const cg_hemesh *m, const uint32_t *candidates, size_t count,
+                                     uint32_t **list, size_t *found_count)
 {
-    size_t V = m->vertex_count, E = m->halfedge_count / 2;
-    uint32_t *start = calloc(V + 1, sizeof *start);
-    uint32_t *sorted = malloc((E ? E : 1) * sizeof *sorted);
-    uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
     uint32_t *found = NULL;
     size_t n = 0;
-    cg_status status = CG_OK;
-    if (!start || !sorted || !stamp) {
-        status = CG_ENOMEM;
-        goto done;
-    }
-    /* edges by their smaller vertex (a counting sort, edge order kept) */
-    for (size_t e = 0; e < E; e++) {
-        uint32_t a = m->halfedges[2 * e].origin, b = m->halfedges[2 * e + 1].origin;
-        if (a < CG_HEMESH_DELETED)
-            start[(a < b ? a : b) + 1]++;
-    }
-    for (size_t v = 0; v < V; v++)
-        start[v + 1] += start[v];
-    for (size_t e = 0; e < E; e++) {
-        uint32_t a = m->halfedges[2 * e].origin, b = m->halfedges[2 * e + 1].origin;
-        if (a < CG_HEMESH_DELETED)
-            sorted[start[a < b ? a : b]++] = (uint32_t)e;
-    }
-    memset(stamp, 0xff, (V ? V : 1) * sizeof *stamp);
-    for (size_t v = 0; v < V; v++)
-        for (uint32_t i = v ? start[v - 1] : 0; i < start[v]; i++) {
-            uint32_t e = sorted[i];
-            uint32_t a = m->halfedges[2 * e].origin, b = m->halfedges[2 * e + 1].origin;
-            uint32_t other = a == v ? b : a;
-            if (stamp[other] != (uint32_t)v) {
-                stamp[other] = (uint32_t)v;
-                continue;
+    for (size_t i = 0; i < count; i++) {
+        uint32_t e = candidates[i], u = m->halfedges[2 * e].origin, v = m->halfedges[2 * e + 1].origin;
+        uint32_t h0 = m->vertex_halfedge[u], h = h0;
+        int twice = 0;
+        do {
+            uint32_t f = h >> 1;
+            /* another edge to v, not one split already (listed earlier) */
+            if (f != e && m->halfedges[h ^ 1u].origin == v) {
+                twice = 1;
+                for (size_t j = 0; j < n && twice; j++)
+                    twice = found[j] != f;
             }
-            if ((n & (n - 1)) == 0) { /* capacity doubles at powers of two */
-                uint32_t *p = realloc(found, (n ? 2 * n : 1) * sizeof *p);
-                if (!p) {
-                    status = CG_ENOMEM;
-                    goto done;
-                }
-                found = p;
+            h = cg_hemesh_cw(m, h);
+        } while (h != h0 && !twice);
+        if (!twice)
+            continue;
+        if ((n & (n - 1)) == 0) { /* capacity doubles at powers of two */
+            uint32_t *p = realloc(found, (n ? 2 * n : 1) * sizeof *p);
+            if (!p) {
+                free(found);
+                return CG_ENOMEM;
             }
-            found[n++] = e;
+            found = p;
         }
-done:
-    free(start);
-    free(sorted);
-    free(stamp);
-    if (status != CG_OK) {
-        free(found);
-        found = NULL;
-        n = 0;
+        found[n++] = e;
     }
     *list = found;
-    *count = n;
-    return status;
+    *found_count = n;
+    return CG_OK;
 }
 
 /* Lists the edges at the vertices from first on that join a vertex an
@@ -117,7 +94,8 @@ static cg_status separate_find_new(const cg_hemesh *m, size_t first, uint32_t **
     return CG_OK;
 }
 
-cg_status hm_split_multiple_edges(cg_hemesh *m, size_t *split, uint32_t **face_origin)
+cg_status hm_split_multiple_edges(cg_hemesh *m, const uint32_t *candidates, size_t candidate_count,
+                                  size_t *split, uint32_t **face_origin)
 {
     *split = 0;
     *face_origin = NULL;
@@ -130,7 +108,8 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, size_t *split, uint32_t **face_o
     for (int round = 0; round < 8; round++) {
         uint32_t *list;
         size_t n, vertices = m->vertex_count;
-        cg_status s = round ? separate_find_new(m, first_new_vertex, &list, &n) : separate_find(m, &list, &n);
+        cg_status s = round ? separate_find_new(m, first_new_vertex, &list, &n)
+                            : separate_find_among(m, candidates, candidate_count, &list, &n);
         first_new_vertex = vertices;
         if (s != CG_OK)
             return s;

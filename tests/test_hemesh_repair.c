@@ -9,6 +9,7 @@
 
 #include "cg/hemesh.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -338,6 +339,27 @@ static void test_small_cases(void)
     CHECK_EQ_INT(rep.split_edge_count, 0);
     cg_hemesh_report_clear(&rep);
     cg_mesh_free(once);
+    cg_mesh_free(m);
+    /* a Moebius strip of 8 quads: not orientable, cut once and oriented */
+    memset(&s, 0, sizeof s);
+    for (int i = 0; i < 8; i++) {
+        double t = 3.14159265358979 * i / 8;
+        shape_vertex(&s, cos(2 * t) * (2 + cos(t)), sin(2 * t) * (2 + cos(t)), sin(t));
+        shape_vertex(&s, cos(2 * t) * (2 - cos(t)), sin(2 * t) * (2 - cos(t)), -sin(t));
+    }
+    for (uint32_t i = 0; i < 8; i++) {
+        uint32_t a = 2 * i, b = 2 * i + 1, c = i < 7 ? 2 * i + 3 : 0, d = i < 7 ? 2 * i + 2 : 1;
+        shape_quad(&s, a, b, c, d, 0);
+    }
+    m = shape_finish(&s);
+    CHECK(cg_hemesh_input_counts_compute(m, &c) == CG_OK);
+    CHECK_EQ_INT(c.edges, 24);
+    CHECK_EQ_INT(c.euler_characteristic, 0);
+    once = repair("Moebius", 0, m, &rep, &st);
+    CHECK(!rep.orientable);
+    cg_hemesh_report_clear(&rep);
+    cg_mesh_free(once);
+    check_repair("Moebius", 0, m, 0);
     cg_mesh_free(m);
 }
 

@@ -128,6 +128,52 @@ expect_key "$tmp/fixed.txt" oriented yes
 expect_key "$tmp/b2.txt" manifold yes
 expect_key "$tmp/b2.txt" vertices 6
 
+# ---- info describes the file as read; repair converges in one pass
+# a square of two triangles with the first one's reversed copy on it
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\nf 1 3 2\n' > "$tmp/reversed.obj"
+"$cg" mesh info "$tmp/reversed.obj" > "$tmp/rev.txt" || fail "info reversed exited $?"
+expect_key "$tmp/rev.txt" vertices 4
+expect_key "$tmp/rev.txt" edges 5
+expect_key "$tmp/rev.txt" faces 3
+expect_key "$tmp/rev.txt" components 1
+expect_key "$tmp/rev.txt" euler_characteristic 2
+expect_key "$tmp/rev.txt" manifold no
+# the bow-tie as read: 5 vertices, one component; repaired: 6 and 2
+expect_key "$tmp/bowtie.txt" vertices 5
+expect_key "$tmp/bowtie.txt" components 1
+expect_key "$tmp/bowtie.txt" repaired_vertices 6
+expect_key "$tmp/bowtie.txt" repaired_components 2
+grep -q '^genus_note: ' "$tmp/bowtie.txt" || fail "bowtie: no genus_note line"
+grep -q '^genus_note: ' "$tmp/cube.txt" && fail "cube: a genus_note line for a manifold input"
+expect_key "$tmp/cube.txt" repaired_vertices 8
+# repair(x) is a manifold that a second repair leaves byte for byte
+converges() { # converges NAME FILE
+  "$cg" mesh repair "$2" "$tmp/$1.1.obj" > /dev/null || fail "$1: repair exited $?"
+  "$cg" mesh info "$tmp/$1.1.obj" > "$tmp/$1.info" || fail "$1: info of the repair exited $?"
+  expect_key "$tmp/$1.info" manifold yes
+  expect_key "$tmp/$1.info" oriented yes
+  "$cg" mesh repair "$tmp/$1.1.obj" "$tmp/$1.2.obj" > "$tmp/$1.out" || fail "$1: second repair exited $?"
+  grep -q "nothing to repair" "$tmp/$1.out" || fail "$1: second repair: $(head -c 200 "$tmp/$1.out")"
+  cmp -s "$tmp/$1.1.obj" "$tmp/$1.2.obj" && pass || fail "$1: a second repair changed the mesh"
+}
+converges reversed "$tmp/reversed.obj"
+converges bowtie "$tmp/bowtie.obj"
+converges flipped "$tmp/flipped.obj"
+dragon="$src/data/meshes/dragon_vrip_res4.ply.gz"
+if [ -f "$dragon" ]; then
+  "$cg" mesh info "$dragon" > "$tmp/dragon.txt" || fail "info dragon exited $?"
+  expect_key "$tmp/dragon.txt" vertices 5205
+  expect_key "$tmp/dragon.txt" faces 11102
+  # distinct vertex pairs of the faces, counted here from the file itself
+  pairs=$(gzip -dc "$dragon" | awk '/^end_header/ { body = 1; next }
+    body && NF == 4 && $1 == 3 { for (i = 2; i <= 4; i++) { a = $i; b = (i < 4 ? $(i + 1) : $2)
+      if (a > b) { t = a; a = b; b = t } seen[a " " b] = 1 } }
+    END { n = 0; for (k in seen) n++; print n }')
+  expect_key "$tmp/dragon.txt" edges "$pairs"
+  expect_key "$tmp/dragon.txt" manifold no
+  converges dragon "$dragon"
+fi
+
 # ---- bad input: clear one-line errors, non-zero exits, no crash
 expect 1 "no faces" "$cg" mesh info "$tmp/nofaces.obj"
 one_line "no faces"

@@ -96,6 +96,10 @@ typedef struct cg_hemesh_report {
     size_t flipped_face_count;    /* faces reversed by CG_HEMESH_ORIENT */
     size_t cut_edge_count;        /* extra edge uses made boundary by the split */
     size_t added_vertex_count;    /* vertices created by splitting vertices */
+    /* edges split at their midpoint because, after the cut, another edge
+     * joined the same two vertices (an indexed mesh names an edge by its
+     * vertices: so the result converts to a manifold cg_mesh) */
+    size_t split_edge_count;
     int orientable;               /* 0 when a component could not be oriented */
     uint32_t *face_map; /* for each hemesh face, the input face it came from */
 } cg_hemesh_report;
@@ -220,6 +224,23 @@ typedef struct cg_hemesh_stats {
  * face; *component_genus_count its length. */
 cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long **component_genus,
                                   size_t *component_genus_count);
+
+/* Counts of an indexed mesh as it was read, before any repair.  faces are
+ * the polygons the build accepts (3 or more corners, indices in range, no
+ * vertex twice; the others are bad_faces); edges the distinct unordered
+ * vertex pairs joined by a side of one of them; components the classes of
+ * vertices joined through shared faces (an isolated vertex is one);
+ * euler_characteristic V - E + F of these. */
+typedef struct cg_hemesh_input_counts {
+    size_t vertices, edges, faces, bad_faces;
+    size_t isolated_vertices;
+    size_t components;
+    long euler_characteristic;
+} cg_hemesh_input_counts;
+
+/* Counts mesh's topology in O(V + corners), independently of the build.
+ * CG_EINVAL (NULL or inconsistent arrays), CG_ERANGE, CG_ENOMEM. */
+cg_status cg_hemesh_input_counts_compute(const cg_mesh *mesh, cg_hemesh_input_counts *out);
 
 /* Newell's normal of face f: its direction is the unit normal and its length
  * twice the area for a planar polygon. */

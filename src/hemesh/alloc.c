@@ -139,6 +139,39 @@ cg_status hm_reserve(cg_hemesh *m, size_t extra_vertices, size_t extra_edges, si
     return CG_OK;
 }
 
+/* realloc to n elements of size bytes, keeping the block when that fails */
+static void shrink_array(void **p, size_t size, size_t n)
+{
+    if (!*p || !n)
+        return;
+    void *q = realloc(*p, n * size);
+    if (q)
+        *p = q;
+}
+
+void hm_shrink_to_fit(cg_hemesh *m)
+{
+    size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
+    void *p;
+    if (V && V < m->vertex_capacity) {
+        p = m->vertex_halfedge, shrink_array(&p, sizeof *m->vertex_halfedge, V), m->vertex_halfedge = p;
+        p = m->positions, shrink_array(&p, sizeof *m->positions, V), m->positions = p;
+        p = m->normals, shrink_array(&p, sizeof *m->normals, V), m->normals = p;
+        p = m->texcoords, shrink_array(&p, sizeof *m->texcoords, V), m->texcoords = p;
+        p = m->colors, shrink_array(&p, sizeof *m->colors, V), m->colors = p;
+        m->vertex_capacity = V;
+    }
+    if (H && H < m->halfedge_capacity) {
+        p = m->halfedges, shrink_array(&p, sizeof *m->halfedges, H), m->halfedges = p;
+        m->halfedge_capacity = H;
+    }
+    if (F && F < m->face_capacity) {
+        p = m->face_halfedge, shrink_array(&p, sizeof *m->face_halfedge, F), m->face_halfedge = p;
+        p = m->face_colors, shrink_array(&p, sizeof *m->face_colors, F), m->face_colors = p;
+        m->face_capacity = F;
+    }
+}
+
 uint32_t hm_add_vertex(cg_hemesh *m, cg_vec3 position)
 {
     uint32_t v = (uint32_t)m->vertex_count++;

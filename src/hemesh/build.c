@@ -35,6 +35,7 @@ typedef struct builder {
     uint32_t *edge_vertices;   /* 2 per edge: origin of 2e and of 2e + 1 */
     size_t edges;
     size_t nonmanifold, misoriented, cut;
+    uint32_t *cut_edges; /* the cut edges opened, cut of them */
     uint32_t first_nonmanifold[2], first_misoriented[2];
     uint32_t *partner; /* corners, only when orienting */
 } builder;
@@ -230,6 +231,8 @@ static cg_status match(builder *b, int record)
     cg_status status = CG_OK;
     int failed = 0;
     free(b->corner_halfedge);
+    free(b->cut_edges);
+    b->cut_edges = NULL;
     free(b->edge_vertices);
     b->corner_halfedge = malloc((C ? C : 1) * sizeof *b->corner_halfedge);
     b->edge_vertices = malloc((C ? C : 1) * 2 * sizeof *b->edge_vertices);
@@ -265,6 +268,12 @@ static cg_status match(builder *b, int record)
     size_t edges = 0, nonmanifold = 0, misoriented = 0, cut = 0, entries = 0;
     for (size_t a = 0; a < V; a++) {
         size_t begin = a ? start[a - 1] : 0, end = start[a];
+        /* where a third side turns up the bucket is matched again in the
+         * order of radial.c, from the counts it started with */
+        size_t saved_edges = edges, saved_nonmanifold = nonmanifold, saved_misoriented = misoriented,
+               saved_cut = cut, saved_entries = entries;
+        int sorted = !(b->flags & CG_HEMESH_SPLIT_NONMANIFOLD), crowded = 0;
+    match_bucket:
         for (size_t i = begin; i < end; i++) {
             uint64_t entry = bucket[i];
             uint32_t other = (uint32_t)(entry >> 32);
@@ -298,6 +307,10 @@ static cg_status match(builder *b, int record)
                         b->partner[corner] = first[other];
                     }
                 } else if (n == 3) {
+                    if (!sorted) {
+                        crowded = 1;
+                        break;
+                    }
                     /* a non-manifold edge is not counted as misoriented too */
                     if (same_way[other] == (uint32_t)a)
                         misoriented--;
@@ -316,6 +329,8 @@ static cg_status match(builder *b, int record)
                     }
                 }
                 if (occupied[other] & (1u << dir)) {
+                    size_t listed = cut;
+                    list_push(&b->cut_edges, &listed, (uint32_t)edges, &failed);
                     cut++;
                     occupied[other] = 0;
                     current[other] = (uint32_t)edges++;
@@ -325,6 +340,29 @@ static cg_status match(builder *b, int record)
             }
             occupied[other] |= (uint8_t)(1u << dir);
             b->corner_halfedge[corner] = 2 * current[other] + dir;
+        }
+        if (crowded) {
+            crowded = 0;
+            sorted = 1;
+            edges = saved_edges, nonmanifold = saved_nonmanifold, misoriented = saved_misoriented;
+            cut = saved_cut, entries = saved_entries;
+            /* the sizes of the bucket's groups, stamped apart from the matching */
+            for (size_t i = begin; i < end; i++)
+                same_way[bucket[i] >> 32] = CG_HEMESH_NONE;
+            for (size_t i = begin; i < end; i++) {
+                uint32_t other = (uint32_t)(bucket[i] >> 32);
+                if (stamp[other] != ((uint32_t)a | 0x80000000u)) {
+                    stamp[other] = (uint32_t)a | 0x80000000u;
+                    uses[other] = 0;
+                }
+                uses[other]++;
+            }
+            if (hm_radial_sort_bucket(b->mesh, off, idx, b->faces, (uint32_t)a, bucket + begin,
+                                      end - begin, uses) != CG_OK) {
+                failed = 1;
+                break;
+            }
+            goto match_bucket;
         }
     }
     if (failed) {
@@ -431,9 +469,15 @@ static cg_status assemble(builder *b, cg_hemesh **out)
                      | (mesh->colors ? CG_MESH_COLORS : 0u)
                      | (mesh->face_colors ? CG_MESH_FACE_COLORS : 0u);
     cg_hemesh *m;
-    cg_status s = hm_create(&m, V, H, F, flags);
+    /* room for the midpoint splits that cut edges may need (about one per
+     * cut: 3 edges and 2 faces each), so that they do not grow the arrays;
+     * what is left over is given back at the end of the build */
+    size_t room = b->cut && H + 6 * b->cut < 0x7fffffffu && F + 2 * b->cut < 0x7fffffffu ? b->cut : 0;
+    cg_status s = hm_create(&m, V, H + 6 * room, F + 2 * room, flags);
     if (s != CG_OK)
         return cg_error_set(b->err, s, "hemesh: %s", s == CG_ERANGE ? "too many elements" : "out of memory");
+    m->halfedge_count = H;
+    m->face_count = F;
     cg_hemesh_halfedge *he = m->halfedges;
     for (size_t e = 0; e < b->edges; e++) {
         cg_hemesh_halfedge x = {CG_HEMESH_NONE, CG_HEMESH_NONE, b->edge_vertices[2 * e], CG_HEMESH_NONE};
@@ -654,8 +698,23 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         report->cut_edge_count = b.cut;
     if (s == CG_OK)
         s = assemble(&b, out);
+    uint32_t *face_origin = NULL; /* of the faces the edge splits add */
+    size_t split = 0;
+    if (s == CG_OK && b.cut) {
+        s = hm_split_multiple_edges(*out, b.cut_edges, b.cut, &split, &face_origin);
+        if (s != CG_OK) {
+            s = cg_error_set(err, s, "hemesh: out of memory");
+            cg_hemesh_free(*out);
+            *out = NULL;
+        }
+        if (report)
+            report->split_edge_count = split;
+    }
+    if (s == CG_OK) /* after vertex and edge splits */
+        hm_shrink_to_fit(*out);
     if (s == CG_OK && report) {
-        report->face_map = malloc(b.faces * sizeof *report->face_map);
+        size_t faces = (*out)->face_count;
+        report->face_map = malloc(faces * sizeof *report->face_map);
         if (!report->face_map) {
             s = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");
             cg_hemesh_free(*out);
@@ -663,6 +722,8 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         } else {
             for (size_t f = 0; f < b.faces; f++)
                 report->face_map[f] = b.face_map ? b.face_map[f] : (uint32_t)f;
+            for (size_t f = b.faces; f < faces; f++)
+                report->face_map[f] = report->face_map[face_origin[f - b.faces]];
         }
     }
     free(b.own_offsets);
@@ -671,5 +732,7 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
     free(b.corner_halfedge);
     free(b.edge_vertices);
     free(b.partner);
+    free(b.cut_edges);
+    free(face_origin);
     return s;
 }

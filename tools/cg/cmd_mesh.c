@@ -62,6 +62,10 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
                 r->nonmanifold_edge_count, r->nonmanifold_edge_count == 1 ? "" : "s");
         print_list(f, "edges (vertices counted from 0)", r->nonmanifold_edges, r->nonmanifold_edge_count, 2);
     }
+    if (r->split_edge_count)
+        fprintf(f, "%ssplit %zu edge%s at the midpoint where, once separated, two edges joined "
+                   "the same two vertices\n", prefix,
+                r->split_edge_count, r->split_edge_count == 1 ? "" : "s");
     if (r->added_vertex_count) {
         fprintf(f, "%ssplit %zu non-manifold %s into one per fan (%zu vertices added); ",
                 prefix, r->nonmanifold_vertex_count, r->nonmanifold_vertex_count == 1 ? "vertex" : "vertices",
@@ -72,7 +76,21 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
 
 static int repaired(const cg_hemesh_report *r)
 {
-    return r->bad_face_count || r->flipped_face_count || r->cut_edge_count || r->added_vertex_count;
+    return r->bad_face_count || r->flipped_face_count || r->cut_edge_count || r->added_vertex_count
+           || r->split_edge_count;
+}
+
+static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t genus_count)
+{
+    if (st->genus >= 0) {
+        printf("genus: %ld\n", st->genus);
+        return;
+    }
+    printf("genus: mixed\n");
+    printf("genus_per_component:");
+    for (size_t i = 0; i < genus_count && i < 64; i++)
+        printf(" %ld", genus[i]);
+    printf("%s\n", genus_count > 64 ? " ..." : "");
 }
 
 /* ---- info -------------------------------------------------------------------- */
@@ -106,35 +124,33 @@ static int info(int argc, char **argv)
         return CLI_FAILED;
     }
     cg_hemesh_stats st;
+    cg_hemesh_input_counts input;
     long *genus = NULL;
     size_t genus_count = 0;
-    if (cg_hemesh_stats_compute(h, &st, &genus, &genus_count) != CG_OK) {
+    if (cg_hemesh_input_counts_compute(mesh, &input) != CG_OK
+        || cg_hemesh_stats_compute(h, &st, &genus, &genus_count) != CG_OK) {
         cg_hemesh_free(h);
         cg_mesh_free(mesh);
         cg_hemesh_report_clear(&rep);
         return cli_fail("mesh info: out of memory");
     }
     printf("file: %s\n", path);
-    printf("vertices: %zu\n", st.vertices);
-    printf("edges: %zu\n", st.edges);
-    printf("faces: %zu\n", st.faces);
+    printf("vertices: %zu\n", input.vertices);
+    printf("edges: %zu\n", input.edges);
+    printf("faces: %zu\n", input.faces);
     printf("boundary_loops: %zu\n", st.boundary_loops);
-    printf("components: %zu\n", st.components);
-    printf("euler_characteristic: %ld\n", st.euler_characteristic);
-    if (st.genus >= 0) {
-        printf("genus: %ld\n", st.genus);
-    } else {
-        printf("genus: mixed\n");
-        printf("genus_per_component:");
-        for (size_t i = 0; i < genus_count && i < 64; i++)
-            printf(" %ld", genus[i]);
-        printf("%s\n", genus_count > 64 ? " ..." : "");
-    }
+    printf("components: %zu\n", input.components);
+    printf("euler_characteristic: %ld\n", input.euler_characteristic);
+    print_genus(&st, genus, genus_count);
+    if (st.vertices != input.vertices || st.edges != input.edges || st.faces != input.faces
+        || st.components != input.components)
+        printf("genus_note: boundary_loops and genus are of the repaired manifold (the "
+               "repaired_ counts), the other counts of the input\n");
     int manifold = rep.nonmanifold_edge_count == 0 && rep.nonmanifold_vertex_count == 0;
     printf("manifold: %s\n", manifold ? "yes" : "no");
     printf("oriented: %s\n", rep.misoriented_edge_count == 0 ? "yes" : "no");
     printf("orientable: %s\n", rep.orientable ? "yes" : "no");
-    printf("isolated_vertices: %zu\n", st.isolated_vertices);
+    printf("isolated_vertices: %zu\n", input.isolated_vertices);
     printf("nonmanifold_edges: %zu\n", rep.nonmanifold_edge_count);
     printf("nonmanifold_vertices: %zu\n", rep.nonmanifold_vertex_count);
     printf("misoriented_edges: %zu\n", rep.misoriented_edge_count);
@@ -147,6 +163,11 @@ static int info(int argc, char **argv)
     } else {
         printf("bounding_box_min: none\nbounding_box_max: none\n");
     }
+    printf("repaired_vertices: %zu\n", st.vertices);
+    printf("repaired_edges: %zu\n", st.edges);
+    printf("repaired_faces: %zu\n", st.faces);
+    printf("repaired_components: %zu\n", st.components);
+    printf("repaired_euler_characteristic: %ld\n", st.euler_characteristic);
     if (repaired(&rep))
         print_changes(stdout, "repaired: ", &rep);
     free(genus);
@@ -339,14 +360,19 @@ const cg_command cg_command_mesh = {
     "       cg mesh repair IN OUT\n\n"
     "FILE and IN are OBJ, OFF, PLY or STL (optionally .gz); OUT is .obj or .ply.\n\n"
     "info builds the half-edge structure (repairing as `repair` does) and prints\n"
-    "one `key: value` a line: vertices, edges, faces, boundary_loops, components,\n"
-    "euler_characteristic (V - E + F), genus (one number, or `mixed` with\n"
-    "genus_per_component), manifold (yes/no: no edge on more than two faces, no\n"
-    "vertex whose faces form several fans), oriented (yes/no: no edge two faces\n"
-    "run the same way), orientable, isolated_vertices, the counts of each defect,\n"
-    "face_kind and the bounding box; then a `repaired:` line for each change the\n"
-    "counts reflect.  Counts are of the repaired structure (isolated vertices\n"
-    "included; each is a component).  --repeat N builds the structure N times and\n"
+    "one `key: value` a line: vertices, edges (distinct vertex pairs joined by a\n"
+    "face side), faces, boundary_loops, components (faces joined through shared\n"
+    "vertices; an isolated vertex is one), euler_characteristic (V - E + F),\n"
+    "genus (one number, or `mixed` with genus_per_component), manifold (yes/no:\n"
+    "no edge on more than two faces, no vertex whose faces form several fans),\n"
+    "oriented (yes/no: no edge two faces run the same way), orientable,\n"
+    "isolated_vertices, the counts of each defect, face_kind, the bounding box,\n"
+    "then repaired_vertices, repaired_edges, repaired_faces, repaired_components\n"
+    "and repaired_euler_characteristic, and a `repaired:` line for each change.\n"
+    "vertices, edges, faces, components and euler_characteristic describe FILE\n"
+    "as read (faces without bad faces); boundary_loops and genus are of the\n"
+    "repaired manifold, per component, and a genus_note line says so when the\n"
+    "repair changed the counts.  --repeat N builds the structure N times and\n"
     "prints on stderr the median build time and the median time of a one-ring\n"
     "traversal of every vertex: `build: 12.3 ms`, `one-ring: 4.5 ms`.\n\n"
     "subdivide applies N levels (0 to 12) of Loop (triangles only) or\n"
@@ -357,10 +383,14 @@ const cg_command cg_command_mesh = {
     "  - faces are reversed so that each connected component is consistently\n"
     "    oriented (its first face's orientation wins); a non-orientable component\n"
     "    (Moebius strip) is cut along the edges that still disagree;\n"
-    "  - an edge on more than two faces keeps one pair of faces; the other faces\n"
-    "    are separated along it;\n"
+    "  - the faces of an edge on more than two faces are paired by their angle\n"
+    "    about it, each with its neighbour across the solid between them (a face\n"
+    "    with its reversed copy), and the pairs separated along it;\n"
     "  - a vertex whose faces form several fans (touching at a point) becomes one\n"
-    "    vertex per fan, the copies added at the end with the same attributes.\n"
+    "    vertex per fan, the copies added at the end with the same attributes;\n"
+    "  - where two edges then join the same two vertices, all but one are split\n"
+    "    at the midpoint (triangles stay triangles), so the written mesh is a\n"
+    "    manifold and repairing it again changes nothing.\n"
     "Vertex order, attributes, face order and face colours are otherwise kept;\n"
     "isolated vertices are kept.\n",
     run,

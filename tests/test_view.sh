@@ -80,12 +80,14 @@ for i in \$(seq 100); do kill -0 \$pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 \$pid 2>/dev/null; then echo "viewer did not quit" >&2; kill \$pid; exit 1; fi
 wait \$pid
 SESSION
+session() {
+rm -f "$work"/cg-view-*.png
 if ! timeout 120 xvfb-run -a -s "-screen 0 1024x768x24" bash "$work/session.sh" 2>"$work/session.err"; then
   echo "FAIL: viewer session: $(cat "$work/session.err" "$work/view.err" 2>/dev/null | tail -5)" >&2
   echo "0 passed, 1 failed"
-  exit 1
+  return 1
 fi
-for n in 1 2 3 4; do "$cg" convert "$work/cg-view-$n.png" "$work/$n.ppm" || exit 1; done
+for n in 1 2 3 4; do "$cg" convert "$work/cg-view-$n.png" "$work/$n.ppm" || return 1; done
 python3 - "$work" <<'PY'
 import sys
 work = sys.argv[1]
@@ -116,3 +118,8 @@ for name in failed:
 print(f"{len(checks) - len(failed) + 3} passed, {len(failed)} failed")
 sys.exit(1 if failed else 0)
 PY
+}
+# The session drives a real window with synthetic events; on a loaded machine
+# an event can arrive after the screenshot it was meant for, so a failed
+# session is tried once more before it counts.
+session || { echo "test_view: the viewer session failed once; trying it again" >&2; session; }

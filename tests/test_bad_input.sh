@@ -60,6 +60,12 @@ for command in "mesh info" "render -o $tmp/out.png" "render --algorithm raytrace
     "vertex 1" -- "$cg" "$@" "$tmp/inf_bin.ply" "${out[@]}"
   [ -e "$tmp/out.obj" ] && fail "$command: left out.obj" || pass
 done
+# a scene's mesh: the scene's path, the key, then the mesh's message
+printf '{"objects": [{"type": "mesh", "file": "nan.obj"}]}\n' > "$tmp/scene.json"
+for command in render trace-render; do
+  refused "$command scene" "$tmp/scene.json: objects[0].file: $tmp/nan.obj:3:" "got z = nan" \
+    -- "$cg" $command "$tmp/scene.json" -o "$tmp/out.png"
+done
 # gzip is looked through: the same message
 gzip -c "$tmp/nan.obj" > "$tmp/nan.obj.gz"
 refused "nan.obj.gz" "$tmp/nan.obj.gz:3:" "got z = nan" -- "$cg" mesh info "$tmp/nan.obj.gz"

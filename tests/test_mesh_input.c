@@ -335,7 +335,7 @@ static void test_foreign_formats(void)
         {"glTF\2\0\0\0\x20\0\0\0", 12, "model.glb", "a glTF binary file (.glb)"},
         {"glTF\2\0\0\0\x20\0\0\0", 12, "model.obj", "a glTF binary file (.glb)"},
         {"glTF\2\0\0\0\x20\0\0\0", 12, "model", "a glTF binary file (.glb)"},
-        {"{\"asset\": {\"version\": \"2.0\"}}", 30, "scene.bin", "a glTF file (.gltf)"},
+        {"{\"asset\": {\"version\": \"2.0\"}}", 29, "scene.bin", "a glTF file (.gltf)"},
         {"{}", 2, "scene.gltf", "a glTF file (.gltf)"},
         {"Kaydara FBX Binary  \0\x1a\0", 23, "model.bin", "an FBX file (.fbx)"},
         {"; FBX 7.4.0 project file\n", 25, "a.txt", "an FBX file (.fbx)"},
@@ -349,6 +349,14 @@ static void test_foreign_formats(void)
         {"#usda 1.0\n", 10, "mesh", "a USD file (.usda)"},
         {"#VRML V2.0 utf8\n", 16, "mesh", "a VRML file (.wrl)"},
         {"PK\3\4", 4, "mesh", "a ZIP archive"},
+        {"FORM\0\0\0\4LWO2", 12, "mesh", "a LightWave object (.lwo)"},
+        {"AC3Db\nMATERIAL", 14, "mesh", "an AC3D file (.ac)"},
+        {"IDPO\6\0\0\0", 8, "mesh", "a Quake model (.mdl)"},
+        {"*3DSMAX_ASCIIEXPORT 200\n", 24, "mesh", "an ASCII Scene Export file (.ase)"},
+        {"<?xml version=\"1.0\"?>\n<mesh xmlns=\"irrmesh\">", 44, "m",
+         "an Irrlicht mesh (.irrmesh)"},
+        /* NFF starts like OBJ ("v" then a viewpoint): its name tells */
+        {"v\nfrom 0 0 5\nat 0 0 0\n", 22, "scene.nff", "a Neutral File Format file (.nff)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         cg_mesh *m = NULL;

@@ -28,6 +28,26 @@ static const foreign_magic magics[] = {
     {"//Maya ASCII", 12, "a Maya ASCII file (.ma)"},
     {"3D Geometry File Format", 23, "a Rhino file (.3dm)"},
     {"PK\3\4", 4, "a ZIP archive (such as .3mf, .usdz or .zip)"},
+    {"*3DSMAX_ASCIIEXPORT", 19, "an ASCII Scene Export file (.ase)"},
+    {"AC3D", 4, "an AC3D file (.ac)"},
+    {"HMP4", 4, "a 3D GameStudio terrain (.hmp)"},
+    {"HMP5", 4, "a 3D GameStudio terrain (.hmp)"},
+    {"HMP7", 4, "a 3D GameStudio terrain (.hmp)"},
+    {"IDPO", 4, "a Quake model (.mdl)"},
+    {"IDST", 4, "a Half-Life model (.mdl)"},
+    {"IDSQ", 4, "a Half-Life model (.mdl)"},
+    {"IDP2", 4, "a Quake II model (.md2)"},
+    {"IDP3", 4, "a Quake III model (.md3)"},
+    {"IDPC", 4, "a Return to Castle Wolfenstein model (.mdc)"},
+    {"MS3D000000", 10, "a MilkShape 3D file (.ms3d)"},
+    {"INTERQUAKEMODEL", 15, "an Inter-Quake model (.iqm)"},
+    {"BB3D", 4, "a Blitz3D file (.b3d)"},
+    {"HIERARCHY", 9, "a BioVision motion file (.bvh)"},
+    {"Caligari ", 9, "a Caligari trueSpace file (.cob)"},
+    {"quick3Do", 8, "a Quick3D object (.q3o)"},
+    {"quick3Ds", 8, "a Quick3D scene (.q3s)"},
+    {"3DMO", 4, "a Model 3D file (.m3d)"},
+    {"3dmodel", 7, "a Model 3D file (.m3d)"},
 };
 
 typedef struct foreign_extension {
@@ -55,6 +75,21 @@ static const foreign_extension extensions[] = {
     {".md2", "a Quake II model (.md2)"},        {".md3", "a Quake III model (.md3)"},
     {".md5mesh", "a Doom 3 model (.md5mesh)"},  {".ase", "an ASCII Scene Export file (.ase)"},
     {".smd", "a Source model (.smd)"},          {".b3d", "a Blitz3D file (.b3d)"},
+    {".mdl", "a Quake or Half-Life model (.mdl)"}, {".mdc", "an MDC model (.mdc)"},
+    {".hmp", "a 3D GameStudio terrain (.hmp)"}, {".lws", "a LightWave scene (.lws)"},
+    {".lxo", "a Modo file (.lxo)"},             {".nff", "a Neutral File Format file (.nff)"},
+    {".irr", "an Irrlicht scene (.irr)"},       {".irrmesh", "an Irrlicht mesh (.irrmesh)"},
+    {".ac", "an AC3D file (.ac)"},              {".acc", "an AC3D file (.acc)"},
+    {".ac3d", "an AC3D file (.ac3d)"},          {".cob", "a Caligari trueSpace file (.cob)"},
+    {".scn", "a Caligari trueSpace scene (.scn)"}, {".m3d", "a Model 3D file (.m3d)"},
+    {".a3d", "a Model 3D file (.a3d)"},         {".zgl", "a zipped XGL file (.zgl)"},
+    {".xgl", "an XGL file (.xgl)"},             {".ogex", "an OpenGEX file (.ogex)"},
+    {".q3o", "a Quick3D object (.q3o)"},        {".q3s", "a Quick3D scene (.q3s)"},
+    {".bvh", "a BioVision motion file (.bvh)"}, {".ter", "a Terragen terrain (.ter)"},
+    {".3d", "an Unreal mesh (.3d)"},            {".uc", "an Unreal script (.uc)"},
+    {".csm", "a CharacterStudio motion file (.csm)"}, {".sib", "a Silo file (.sib)"},
+    {".iqm", "an Inter-Quake model (.iqm)"},    {".jt", "a JT file (.jt)"},
+    {".md5anim", "a Doom 3 animation (.md5anim)"}, {".mot", "a motion file (.mot)"},
 };
 
 /* Searches the first `limit` bytes for a word (XML root elements). */
@@ -81,6 +116,10 @@ const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size)
             return "a VTK XML file (.vtp, .vtu)";
         if (contains(bytes, size, 4096, "<amf"))
             return "an AMF file (.amf)";
+        if (contains(bytes, size, 4096, "<irr_scene"))
+            return "an Irrlicht scene (.irr)";
+        if (contains(bytes, size, 4096, "<mesh") && contains(bytes, size, 4096, "irrmesh"))
+            return "an Irrlicht mesh (.irrmesh)";
     }
     size_t first = 0;
     while (first < size && first < 64 && (bytes[first] == ' ' || bytes[first] == '\t'
@@ -88,6 +127,13 @@ const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size)
         first++;
     if (first < size && bytes[first] == '{' && contains(bytes, size, 4096, "\"asset\""))
         return "a glTF file (.gltf)";
+    /* LightWave: an IFF FORM whose type is LWO2, LWOB or LWLO */
+    if (size >= 12 && memcmp(bytes, "FORM", 4) == 0
+        && (memcmp(bytes + 8, "LWO2", 4) == 0 || memcmp(bytes + 8, "LWOB", 4) == 0
+            || memcmp(bytes + 8, "LWLO", 4) == 0))
+        return "a LightWave object (.lwo)";
+    if (size >= 4 && memcmp(bytes, "LWSC", 4) == 0)
+        return "a LightWave scene (.lws)";
     /* 3D Studio: main chunk 0x4d4d whose 32-bit length is the file's size */
     if (size >= 6 && bytes[0] == 0x4d && bytes[1] == 0x4d) {
         uint32_t length = (uint32_t)bytes[2] | (uint32_t)bytes[3] << 8

@@ -518,7 +518,9 @@ static void test_numbers(void)
         case 2: snprintf(number, sizeof number, "%.9e", x); break;
         case 3: snprintf(number, sizeof number, "%lld", (long long)check_rng_int(&rng, -99999999, 99999999)); break;
         case 4: snprintf(number, sizeof number, "%.25g", x); break; /* beyond 19 digits */
-        case 5: snprintf(number, sizeof number, "%.3g", x * 1e280); break; /* huge / denormal */
+        case 5: /* huge / denormal, finite (positions cg keeps are) */
+            snprintf(number, sizeof number, "%.3g", isfinite(x * 1e280) ? x * 1e280 : x * 1e250);
+            break;
         case 6: /* 16 to 19 significant digits, the long-double path */
             snprintf(number, sizeof number, "%.*e", (int)check_rng_int(&rng, 15, 18), x);
             break;
@@ -551,15 +553,27 @@ static void test_numbers(void)
     free(text);
     free(expected);
     /* special forms */
-    m = load_text("v 1. .5 -0\nv +1e+2 1E-2 inf\nv nan 0.000000000000000000000000001 "
+    m = load_text("v 1. .5 -0\nv +1e+2 1E-2 1E+300\nv -7 0.000000000000000000000000001 "
                   "123456789012345678901234567890\n",
                   "special.obj", CG_MESH_FORMAT_OBJ, &s, &err);
     CHECK_MSG(s == CG_OK, "%s", err.message);
     if (m) {
         CHECK(m->positions[0].x == 1 && m->positions[0].y == 0.5 && signbit(m->positions[0].z));
-        CHECK(m->positions[1].x == 100 && m->positions[1].y == 0.01 && isinf(m->positions[1].z));
-        CHECK(isnan(m->positions[2].x) && m->positions[2].y == 1e-27
+        CHECK(m->positions[1].x == 100 && m->positions[1].y == 0.01 && m->positions[1].z == 1e300);
+        CHECK(m->positions[2].x == -7 && m->positions[2].y == 1e-27
               && m->positions[2].z == 123456789012345678901234567890.0);
+        cg_mesh_free(m);
+    }
+    /* inf, nan and overflowing numbers are numbers, but not positions cg keeps */
+    static const char *const nonfinite[] = {"inf", "-inf", "nan", "1e400", "-1E+999"};
+    static const char *const shown[] = {"inf", "-inf", "nan", "inf", "-inf"};
+    for (int i = 0; i < 5; i++) {
+        char line[64], expected[96];
+        snprintf(line, sizeof line, "v 1 2 3\nv 0 %s 0\n", nonfinite[i]);
+        snprintf(expected, sizeof expected,
+                 "special.obj:2: expected a finite vertex coordinate, got y = %s", shown[i]);
+        m = load_text(line, "special.obj", CG_MESH_FORMAT_OBJ, &s, &err);
+        CHECK_MSG(s == CG_EFORMAT && !m && strcmp(err.message, expected) == 0, "%s", err.message);
         cg_mesh_free(m);
     }
 }

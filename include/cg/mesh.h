@@ -56,10 +56,15 @@ static inline uint32_t cg_mesh_face_size(const cg_mesh *mesh, size_t f)
     return mesh->face_offsets[f + 1] - mesh->face_offsets[f];
 }
 
-/* Checks that offsets are non-decreasing, every face has at least 3
- * corners, and every index is below vertex_count; CG_EFORMAT with the face
- * number otherwise. */
+/* Checks that every position is finite (no NaN or infinite coordinate),
+ * offsets are non-decreasing, every face has at least 3 corners, and every
+ * index is below vertex_count; CG_EFORMAT with the vertex or face number
+ * otherwise. */
 cg_status cg_mesh_validate(const cg_mesh *mesh, cg_error *err);
+/* The same checks but the positions': for the consumers that leave out the
+ * faces of non-finite vertices themselves (the rasterizer, the painter's
+ * algorithm, the ray tracer, mesh clipping). */
+cg_status cg_mesh_validate_topology(const cg_mesh *mesh, cg_error *err);
 
 /* Axis-aligned bounding box of the finite positions; CG_EEMPTY when there
  * are none. */

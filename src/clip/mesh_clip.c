@@ -201,7 +201,7 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
         !isfinite(box.hi.x) || !isfinite(box.hi.y) || !isfinite(box.hi.z) ||
         box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z)
         return CG_EINVAL;
-    cg_status st = cg_mesh_validate(mesh, NULL);
+    cg_status st = cg_mesh_validate_topology(mesh, NULL);
     if (st != CG_OK)
         return st;
     builder b = {0};

@@ -3,6 +3,7 @@
 
 #include "cg/color.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 
 void builder_init(mesh_builder *b)
@@ -202,4 +203,20 @@ cg_status mesh_check_indices(const mesh_builder *b, const char *name, cg_error *
                                     "vertices",
                                     name, f, b->face_indices[k], b->vertex_count);
     return CG_OK;
+}
+
+cg_status mesh_nonfinite_error(cg_error *err, const char *name, size_t line, size_t byte,
+                               const char *item, cg_vec3 p)
+{
+    int axis = mesh_nonfinite_axis(p);
+    double value = axis == 0 ? p.x : axis == 1 ? p.y : p.z;
+    char where[48];
+    if (line)
+        snprintf(where, sizeof where, ":%zu", line);
+    else
+        snprintf(where, sizeof where, ": byte %zu", byte);
+    return cg_error_set(err, CG_EFORMAT,
+                        "%s%s: expected a finite vertex coordinate, got %c = %g%s%s%s", name,
+                        where, "xyz"[axis < 0 ? 0 : axis], value, item ? " (" : "",
+                        item ? item : "", item ? ")" : "");
 }

@@ -5,6 +5,7 @@
 
 #include "cg/mesh.h"
 
+#include <math.h>
 #include <string.h>
 
 /* ---- the builder -----------------------------------------------------------
@@ -151,6 +152,21 @@ cg_status text_double(text_cursor *t, double *out, const char *what, cg_error *e
  * alpha components are linear already. */
 float mesh_color_component(double value, int is_float, int is_alpha);
 
+/* The first coordinate of p (0 x, 1 y, 2 z) that is NaN or infinite, or -1
+ * when all three are finite. */
+static inline int mesh_nonfinite_axis(cg_vec3 p)
+{
+    return !isfinite(p.x) ? 0 : !isfinite(p.y) ? 1 : !isfinite(p.z) ? 2 : -1;
+}
+
+/* Fails with CG_EFORMAT and "NAME:LINE: expected a finite vertex coordinate,
+ * got y = nan" for p's first coordinate that is not finite; with line 0,
+ * "NAME: byte BYTE: ..." and then " (ITEM)", e.g. "vertex 4", when item is
+ * not NULL.  cg keeps finite positions only, so that bounds, framing,
+ * rendering and the writers never meet NaN or infinity. */
+cg_status mesh_nonfinite_error(cg_error *err, const char *name, size_t line, size_t byte,
+                               const char *item, cg_vec3 p);
+
 /* Checks a loaded mesh's face indices against its vertex count; "name: face F
  * refers to vertex I, but there are only N" otherwise. */
 cg_status mesh_check_indices(const mesh_builder *b, const char *name, cg_error *err);
@@ -165,6 +181,11 @@ cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **o
                    cg_error *err);
 cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
+
+/* A format cg does not read, recognised by its first bytes or by the name's
+ * extension (".gz" looked through): "a glTF binary file (.glb)", or NULL. */
+const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size);
+const char *mesh_foreign_by_name(const char *name);
 
 /* A file read whole into memory (decompressed when gzip); free with free(). */
 cg_status mesh_read_file(const char *path, unsigned char **bytes, size_t *size, cg_error *err);

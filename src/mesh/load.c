@@ -219,6 +219,15 @@ static char *directory_of(const char *path)
     return dir;
 }
 
+static cg_status unsupported(const char *name, const char *format, const char *how,
+                             cg_error *err)
+{
+    return cg_error_set(err, CG_EUNSUPPORTED,
+                        "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY and STL "
+                        "meshes",
+                        name, how, format);
+}
+
 /* gzip is looked through once: a .gz inside a .gz (or a gzip quine) is not opened. */
 static cg_status load(const unsigned char *bytes, size_t size, const char *name,
                       cg_mesh_format format, const char *directory, int gzip_allowed,
@@ -244,10 +253,15 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
     }
     if (size == 0)
         return cg_error_set(err, CG_EFORMAT, "%s: the file is empty", name);
+    const char *foreign = NULL;
     if (format == CG_MESH_FORMAT_AUTO)
         format = sniff(bytes, size);
+    if (format == CG_MESH_FORMAT_AUTO && (foreign = mesh_foreign_by_content(bytes, size)))
+        return unsupported(name, foreign, "this is", err);
     if (format == CG_MESH_FORMAT_AUTO)
         format = cg_mesh_format_from_path(name);
+    if (format == CG_MESH_FORMAT_AUTO && (foreign = mesh_foreign_by_name(name)))
+        return unsupported(name, foreign, "the name says this is", err);
     switch (format) {
     case CG_MESH_FORMAT_OBJ:
         return obj_read((const char *)bytes, size, name, directory, out, err);

@@ -60,6 +60,21 @@ cg_status cg_mesh_validate(const cg_mesh *mesh, cg_error *err)
 {
     if (!mesh)
         return cg_error_set(err, CG_EINVAL, "mesh: none given");
+    for (size_t v = 0; v < mesh->vertex_count; v++) {
+        cg_vec3 p = mesh->positions[v];
+        int axis = !isfinite(p.x) ? 0 : !isfinite(p.y) ? 1 : !isfinite(p.z) ? 2 : -1;
+        if (axis >= 0)
+            return cg_error_set(err, CG_EFORMAT,
+                                "mesh: vertex %zu: expected finite coordinates, got %c = %g", v,
+                                "xyz"[axis], axis == 0 ? p.x : axis == 1 ? p.y : p.z);
+    }
+    return cg_mesh_validate_topology(mesh, err);
+}
+
+cg_status cg_mesh_validate_topology(const cg_mesh *mesh, cg_error *err)
+{
+    if (!mesh)
+        return cg_error_set(err, CG_EINVAL, "mesh: none given");
     if (mesh->face_offsets[0] != 0)
         return cg_error_set(err, CG_EFORMAT, "mesh: face offsets must start at 0");
     for (size_t f = 0; f < mesh->face_count; f++) {

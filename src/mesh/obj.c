@@ -99,8 +99,11 @@ static cg_status read_vertex(obj_reader *r)
                             "%s:%zu: expected 3, 4 or 6 numbers after 'v' (x y z [w] or x y z r g "
                             "b), got %d",
                             r->t.name, r->t.line, n);
+    cg_vec3 position = cg_vec3_make(v[0], v[1], v[2]);
+    if (mesh_nonfinite_axis(position) >= 0)
+        return mesh_nonfinite_error(r->err, r->t.name, r->t.line, 0, NULL, position);
     size_t i;
-    if (builder_push_vertex(&r->b, cg_vec3_make(v[0], v[1], v[2]), &i) != CG_OK)
+    if (builder_push_vertex(&r->b, position, &i) != CG_OK)
         return r->b.vertex_count >= CG_MESH_MAX_VERTICES
                    ? cg_error_set(r->err, CG_ERANGE, "%s:%zu: more vertices than cg_mesh holds",
                                   r->t.name, r->t.line)

@@ -107,8 +107,11 @@ static cg_status read_vertices(off_reader *r, int64_t count)
             r->t.p = n < 0 ? r->t.p : start;
             return off_fail(r, expected);
         }
+        cg_vec3 position = cg_vec3_make(v[0], v[1], v[2]);
+        if (mesh_nonfinite_axis(position) >= 0)
+            return mesh_nonfinite_error(r->err, r->t.name, r->t.line, 0, NULL, position);
         size_t k;
-        if (builder_push_vertex(&r->b, cg_vec3_make(v[0], v[1], v[2]), &k) != CG_OK)
+        if (builder_push_vertex(&r->b, position, &k) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name,
                                 r->t.line);
         int at = 3;

@@ -359,6 +359,18 @@ static void type_range(enum ply_type type, double *lo, double *hi)
     *hi = his[type];
 }
 
+/* Fails when the vertex just read has a coordinate that is not finite; line
+ * (ASCII) or byte (binary, line 0) says where the vertex is. */
+static cg_status check_vertex(ply_reader *r, size_t line, size_t byte)
+{
+    cg_vec3 p = r->b.positions[r->b.vertex_count - 1];
+    if (mesh_nonfinite_axis(p) < 0)
+        return CG_OK;
+    char item[40];
+    snprintf(item, sizeof item, "vertex %zu", r->b.vertex_count - 1);
+    return mesh_nonfinite_error(r->err, r->name, line, byte, line ? NULL : item, p);
+}
+
 /* ---- ASCII body ------------------------------------------------------------ */
 
 static cg_status ascii_fail(ply_reader *r, text_cursor *t, const char *what, uint64_t item,
@@ -455,6 +467,12 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                 if (!ascii_value(&t, p->count_type, &value))
                     return ascii_fail(r, &t, "a list length (a whole number, 0 or more)", item,
                                       kind_name(e));
+                if (value < 0) /* a signed count type: converting it would be undefined */
+                    return cg_error_set(r->err, CG_EFORMAT,
+                                        "%s:%zu: expected a list length of 0 or more in %s "
+                                        "%llu, got %.0f",
+                                        r->name, t.line, kind_name(e), (unsigned long long)item,
+                                        value);
                 uint64_t n = (uint64_t)value;
                 if (p->target == T_CORNERS && n < 3)
                     return cg_error_set(r->err, CG_EFORMAT,
@@ -488,6 +506,8 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                 if (status != CG_OK)
                     return status;
             }
+            if (e->kind == E_VERTEX && check_vertex(r, t.line, 0) != CG_OK)
+                return r->err ? r->err->status : CG_EFORMAT;
         }
         if (e->kind == E_VERTEX)
             r->vertices_read = 1;
@@ -588,6 +608,7 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                 return cg_error_set(r->err, CG_ERANGE, "%s: byte %zu: too many items for cg_mesh",
                                     r->name, at);
             size_t index = e->kind == E_FACE ? r->b.face_count : r->b.vertex_count - 1;
+            size_t item_at = at;
             for (size_t k = 0; k < e->property_count; k++) {
                 const ply_property *p = &props[k];
                 if (!p->count_type) {
@@ -645,6 +666,8 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                 if (status != CG_OK)
                     return status;
             }
+            if (e->kind == E_VERTEX && check_vertex(r, 0, item_at) != CG_OK)
+                return r->err ? r->err->status : CG_EFORMAT;
         }
         if (e->kind == E_VERTEX)
             r->vertices_read = 1;

@@ -11,6 +11,7 @@
  * other is binary with a wrong size (an error saying so). */
 #include "internal.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 
 typedef struct vertex_table {
@@ -106,6 +107,11 @@ static cg_status read_binary(const unsigned char *bytes, size_t size, const char
         for (int k = 0; k < 3; k++, p += 12) {
             uint32_t v;
             cg_vec3 q = cg_vec3_make(load_float(p), load_float(p + 4), load_float(p + 8));
+            if (mesh_nonfinite_axis(q) >= 0) {
+                char item[48];
+                snprintf(item, sizeof item, "triangle %zu, corner %d", t, k);
+                return mesh_nonfinite_error(err, name, 0, (size_t)(p - bytes), item, q);
+            }
             if (merge_vertex(b, table, q, &v) != CG_OK)
                 return cg_error_set(err, CG_ENOMEM, "%s: out of memory", name);
             b->face_indices[b->index_count++] = v;
@@ -176,8 +182,11 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
                     if (s != CG_OK)
                         return s;
                 }
+                cg_vec3 position = cg_vec3_make(c[0], c[1], c[2]);
+                if (mesh_nonfinite_axis(position) >= 0)
+                    return mesh_nonfinite_error(err, name, t.line, 0, NULL, position);
                 uint32_t v;
-                cg_status s = merge_vertex(b, table, cg_vec3_make(c[0], c[1], c[2]), &v);
+                cg_status s = merge_vertex(b, table, position, &v);
                 if (s == CG_OK)
                     s = builder_push_index(b, v);
                 if (s != CG_OK)

@@ -139,7 +139,7 @@ cg_status cg_mesh_corner_normals(const cg_mesh *mesh, double crease_angle,
 {
     if (!mesh || !corner_normals_out || !(crease_angle >= 0))
         return CG_EINVAL;
-    cg_status status = cg_mesh_validate(mesh, NULL);
+    cg_status status = cg_mesh_validate_topology(mesh, NULL);
     if (status != CG_OK)
         return status;
     return compute_corner_normals(mesh, crease_angle, corner_normals_out);
@@ -245,7 +245,7 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
         return cg_error_set(err, CG_EINVAL, "render: no mesh given");
     if (check_options(options) != CG_OK)
         return cg_error_set(err, CG_EINVAL, "render: invalid options");
-    cg_status status = cg_mesh_validate(mesh, err);
+    cg_status status = cg_mesh_validate_topology(mesh, err);
     if (status != CG_OK)
         return status;
     cg_renderer *r = calloc(1, sizeof *r);

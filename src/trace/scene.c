@@ -118,7 +118,7 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         || cg_mat3_inverse(linear_part(&model), &normal_matrix) != CG_OK)
         return CG_EINVAL;
     normal_matrix = cg_mat3_transpose(normal_matrix);
-    cg_status status = cg_mesh_validate(mesh, NULL);
+    cg_status status = cg_mesh_validate_topology(mesh, NULL);
     if (status != CG_OK)
         return status;
     size_t triangles = cg_mesh_triangle_count(mesh);

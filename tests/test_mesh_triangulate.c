@@ -419,7 +419,7 @@ static void test_random_simple(void)
     static polygon p;
     int stars = 0, others = 0;
     for (int c = 0; c < 3000; c++) {
-        int k = (int)rng_int(&rng, 3, c % 10 == 0 ? 60 : 14);
+        int k = (int)rng_int(&rng, 3, c % 10 < 2 ? (c % 2 ? 300 : 100) : 14);
         int made = c % 2 ? random_star(&rng, &p, k, (double)rng_int(&rng, 20, 100000))
                          : random_two_opt(&rng, &p, k, rng_int(&rng, 10, 100000));
         if (!made)
@@ -634,6 +634,27 @@ static void test_degenerate(void)
         CHECK_EQ_INT(sum, twice_area(&p));
         CHECK_EQ_INT(clockwise, 0);
         free(t);
+    }
+    /* a face of 50,000 random corners crossing itself everywhere: bounded
+     * work, still n - 2 triangles of its corners */
+    {
+        uint32_t big = 50000;
+        cg_mesh *r;
+        CHECK_EQ_INT(cg_mesh_create(&r, big, 1, big, 0), CG_OK);
+        for (uint32_t i = 0; i < big; i++) {
+            r->positions[i] = cg_vec3_make((double)rng_int(&rng, 0, 999), (double)rng_int(&rng, 0, 999), 0);
+            r->face_indices[i] = i;
+        }
+        r->face_offsets[1] = big;
+        uint32_t (*rt)[3] = malloc(big * sizeof *rt);
+        CHECK_EQ_INT(cg_mesh_triangulate(r, rt), CG_OK);
+        int ok = 1;
+        for (uint32_t a = 0; a + 2 < big; a++)
+            ok &= rt[a][0] < big && rt[a][1] < big && rt[a][2] < big && rt[a][0] != rt[a][1]
+                  && rt[a][1] != rt[a][2] && rt[a][0] != rt[a][2];
+        CHECK(ok);
+        free(rt);
+        cg_mesh_free(r);
     }
     /* NaN and infinite corners: the fan, no crash */
     cg_mesh *m;

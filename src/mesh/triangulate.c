@@ -25,13 +25,31 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Faces up to this size are triangulated without allocating. */
 #define TRIANGULATE_STACK 32
+/* Faces of more corners find the corners near an ear through a grid. */
+#define TRIANGULATE_GRID 64
+/* Ear tests, grid cells and corners looked at, per corner of the face and
+ * at least, before the rest of the face is cut at nearby convex corners
+ * untested: this bounds the time a face that crosses itself all over
+ * takes.  Simple faces need far less (a 100,000-corner star with sawtooth
+ * spikes 1,540 a corner, rings and outlines of any size a few tens). */
+#define TRIANGULATE_WORK_PER_CORNER 1024
+#define TRIANGULATE_WORK_MIN (1 << 20)
 
 typedef struct ring {
     double (*p)[2];   /* projected corners */
     uint32_t *prev, *next;
+    /* the grid (large faces only): corners by cell, in cell_items from
+     * cell_start[cell] to cell_start[cell + 1]; cut corners are marked */
+    uint32_t *cell_start, *cell_items;
+    unsigned char *cut;
+    int use_grid;
+    uint64_t work;    /* corners that ear tests may still look at */
+    uint32_t cells_x, cells_y;
+    double x0, y0, scale_x, scale_y;
 } ring;
 
 static double orient(const double a[2], const double b[2], const double c[2])
@@ -97,8 +115,71 @@ static int fan_is_exact(const double (*p)[2], uint32_t n)
     return 1;
 }
 
-static int is_ear(const ring *g, uint32_t i)
+static uint32_t cell_x(const ring *g, double x)
 {
+    double c = (x - g->x0) * g->scale_x;
+    return !(c >= 1) ? 0 : c >= g->cells_x - 1 ? g->cells_x - 1 : (uint32_t)c;
+}
+
+static uint32_t cell_y(const ring *g, double y)
+{
+    double c = (y - g->y0) * g->scale_y;
+    return !(c >= 1) ? 0 : c >= g->cells_y - 1 ? g->cells_y - 1 : (uint32_t)c;
+}
+
+/* Sorts the n corners into a grid of about n / 2 cells of the shape of
+ * their bounding box. */
+static void grid_build(ring *g, uint32_t n)
+{
+    double x0 = g->p[0][0], x1 = x0, y0 = g->p[0][1], y1 = y0;
+    for (uint32_t k = 1; k < n; k++) {
+        x0 = fmin(x0, g->p[k][0]), x1 = fmax(x1, g->p[k][0]);
+        y0 = fmin(y0, g->p[k][1]), y1 = fmax(y1, g->p[k][1]);
+    }
+    double w = x1 - x0, h = y1 - y0, cells = n / 2.0;
+    double across = w > 0 && h > 0 ? ceil(sqrt(cells * w / h)) : 1;
+    g->cells_x = (uint32_t)fmin(fmax(across, 1), cells);
+    g->cells_y = (uint32_t)fmax(floor(cells / g->cells_x), 1);
+    g->x0 = x0;
+    g->y0 = y0;
+    g->scale_x = w > 0 ? g->cells_x / w : 0;
+    g->scale_y = h > 0 ? g->cells_y / h : 0;
+    uint32_t count = g->cells_x * g->cells_y;
+    for (uint32_t c = 0; c <= count; c++)
+        g->cell_start[c] = 0;
+    for (uint32_t k = 0; k < n; k++)
+        g->cell_start[cell_y(g, g->p[k][1]) * g->cells_x + cell_x(g, g->p[k][0]) + 1]++;
+    for (uint32_t c = 0; c < count; c++)
+        g->cell_start[c + 1] += g->cell_start[c];
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t c = cell_y(g, g->p[k][1]) * g->cells_x + cell_x(g, g->p[k][0]);
+        g->cell_items[g->cell_start[c]++] = k; /* cell_start[c] ends at c + 1's start */
+        g->cut[k] = 0;
+    }
+    for (uint32_t c = count; c > 0; c--)
+        g->cell_start[c] = g->cell_start[c - 1];
+    g->cell_start[0] = 0;
+}
+
+/* Whether corner s keeps the ear t from being cut: it lies inside or on
+ * the ear and is not a repeat of one of its corners.  A repeat is not
+ * inside: an edge from it into the ear would end inside or on the ear, or
+ * cross an edge of the face (which has no exact triangulation then). */
+static int blocks(const double *const t[3], const double s[2])
+{
+    if (same_point(s, t[0]) || same_point(s, t[1]) || same_point(s, t[2]))
+        return 0;
+    return orient(t[0], t[1], s) >= 0 && orient(t[1], t[2], s) >= 0 && orient(t[2], t[0], s) >= 0;
+}
+
+static int inside_box(const double s[2], const double box[4])
+{
+    return s[0] >= box[0] && s[0] <= box[2] && s[1] >= box[1] && s[1] <= box[3];
+}
+
+static int is_ear(ring *g, uint32_t i)
+{
+    g->work -= g->work > 0;
     uint32_t a = g->prev[i], c = g->next[i];
     const double *t[3] = {g->p[a], g->p[i], g->p[c]};
     double o = orient(t[0], t[1], t[2]);
@@ -106,34 +187,46 @@ static int is_ear(const ring *g, uint32_t i)
         return 1; /* no turn: cutting it changes no area */
     if (!(o > 0))
         return 0;
-    double x0 = fmin(fmin(t[0][0], t[1][0]), t[2][0]), x1 = fmax(fmax(t[0][0], t[1][0]), t[2][0]);
-    double y0 = fmin(fmin(t[0][1], t[1][1]), t[2][1]), y1 = fmax(fmax(t[0][1], t[1][1]), t[2][1]);
-    for (uint32_t q = g->next[c]; q != a; q = g->next[q]) {
-        const double *s = g->p[q];
-        if (s[0] < x0 || s[0] > x1 || s[1] < y0 || s[1] > y1)
-            continue;
-        /* A repeat of a corner of the ear is not inside it.  An edge from
-         * the repeat into the ear would end inside or on it, or cross an
-         * edge of the face: the other corners' tests see the first, and a
-         * face that crosses itself has no exact triangulation anyway. */
-        if (same_point(s, t[0]) || same_point(s, t[1]) || same_point(s, t[2]))
-            continue;
-        if (orient(t[0], t[1], s) >= 0 && orient(t[1], t[2], s) >= 0 && orient(t[2], t[0], s) >= 0)
-            return 0;
+    const double box[4] = {fmin(fmin(t[0][0], t[1][0]), t[2][0]),
+                           fmin(fmin(t[0][1], t[1][1]), t[2][1]),
+                           fmax(fmax(t[0][0], t[1][0]), t[2][0]),
+                           fmax(fmax(t[0][1], t[1][1]), t[2][1])};
+    if (!g->use_grid) {
+        for (uint32_t q = g->next[c]; q != a; q = g->next[q]) {
+            g->work -= g->work > 0;
+            if (inside_box(g->p[q], box) && blocks(t, g->p[q]))
+                return 0;
+        }
+        return 1;
     }
+    uint32_t cx0 = cell_x(g, box[0]), cx1 = cell_x(g, box[2]);
+    uint32_t cy0 = cell_y(g, box[1]), cy1 = cell_y(g, box[3]);
+    for (uint32_t y = cy0; y <= cy1; y++)
+        for (uint32_t x = cx0; x <= cx1; x++) {
+            uint32_t cell = y * g->cells_x + x;
+            g->work -= g->work > 0;
+            for (uint32_t k = g->cell_start[cell]; k < g->cell_start[cell + 1]; k++) {
+                uint32_t q = g->cell_items[k];
+                g->work -= g->work > 0;
+                if (!g->cut[q] && q != a && q != i && q != c && inside_box(g->p[q], box)
+                    && blocks(t, g->p[q]))
+                    return 0;
+            }
+        }
     return 1;
 }
 
-/* The corner cut when a full round finds no ear: the first convex one from
- * start, else start. */
-static uint32_t forced_corner(const ring *g, uint32_t start)
+/* The corner cut when a full round finds no ear, or once the work is
+ * used up: the first convex one of up to `look` corners from start, else
+ * start. */
+static uint32_t forced_corner(ring *g, uint32_t start, uint32_t look)
 {
     uint32_t i = start;
-    do {
+    for (uint32_t k = 0; k < look; k++, i = g->next[i]) {
+        g->work -= g->work > 0;
         if (orient(g->p[g->prev[i]], g->p[i], g->p[g->next[i]]) > 0)
             return i;
-        i = g->next[i];
-    } while (i != start);
+    }
     return start;
 }
 
@@ -145,14 +238,20 @@ static void clip_ears(ring *g, uint32_t n, uint32_t base, uint32_t (*out)[3])
         g->prev[k] = k ? k - 1 : n - 1;
         g->next[k] = k + 1 < n ? k + 1 : 0;
     }
+    g->use_grid = n > TRIANGULATE_GRID;
+    if (g->use_grid)
+        grid_build(g, n);
     uint32_t i = 0, remaining = n, tried = 0;
+    g->work = (uint64_t)TRIANGULATE_WORK_PER_CORNER * n + TRIANGULATE_WORK_MIN;
     size_t t = 0;
     while (remaining > 3) {
-        if (!is_ear(g, i)) {
+        if (!g->work) {
+            i = forced_corner(g, i, 8);
+        } else if (!is_ear(g, i)) {
             i = g->next[i];
             if (++tried < remaining)
                 continue;
-            i = forced_corner(g, i);
+            i = forced_corner(g, i, remaining);
         }
         uint32_t a = g->prev[i], c = g->next[i];
         out[t][0] = base + a;
@@ -160,9 +259,14 @@ static void clip_ears(ring *g, uint32_t n, uint32_t base, uint32_t (*out)[3])
         out[t++][2] = base + c;
         g->next[a] = c;
         g->prev[c] = a;
+        if (g->use_grid)
+            g->cut[i] = 1;
         remaining--;
         tried = 0;
-        i = c;
+        /* Going on past the next corner keeps the ears small: cutting
+         * corner after corner from one side would fan out from one corner
+         * over the whole face. */
+        i = remaining > 3 ? g->next[c] : c;
     }
     out[t][0] = base + g->prev[i];
     out[t][1] = base + i;
@@ -194,14 +298,25 @@ static void ring_free(ring *g)
     free(g->p);
     free(g->prev);
     free(g->next);
+    free(g->cell_start);
+    free(g->cell_items);
+    free(g->cut);
 }
 
+/* Room for faces of n corners (n > TRIANGULATE_STACK). */
 static cg_status ring_alloc(ring *g, size_t n)
 {
+    memset(g, 0, sizeof *g);
     g->p = malloc(n * sizeof *g->p);
     g->prev = malloc(n * sizeof *g->prev);
     g->next = malloc(n * sizeof *g->next);
-    if (!g->p || !g->prev || !g->next) {
+    int grid = n > TRIANGULATE_GRID;
+    if (grid) {
+        g->cell_start = malloc((n + 1) * sizeof *g->cell_start);
+        g->cell_items = malloc(n * sizeof *g->cell_items);
+        g->cut = malloc(n);
+    }
+    if (!g->p || !g->prev || !g->next || (grid && (!g->cell_start || !g->cell_items || !g->cut))) {
         ring_free(g);
         return CG_ENOMEM;
     }
@@ -221,7 +336,7 @@ cg_status cg_mesh_triangulate_face(const cg_mesh *mesh, size_t f, uint32_t (*tri
     uint32_t n = end - begin;
     double p[TRIANGULATE_STACK][2];
     uint32_t prev[TRIANGULATE_STACK], next[TRIANGULATE_STACK];
-    ring g = {p, prev, next};
+    ring g = {.p = p, .prev = prev, .next = next};
     if (n > TRIANGULATE_STACK && ring_alloc(&g, n) != CG_OK)
         return CG_ENOMEM;
     triangulate(mesh, f, &g, triangles);

@@ -70,8 +70,30 @@ cg_status cg_mesh_validate_topology(const cg_mesh *mesh, cg_error *err);
  * are none. */
 cg_status cg_mesh_bounds(const cg_mesh *mesh, cg_vec3 *lo, cg_vec3 *hi);
 
-/* Number of triangles a fan triangulation of every face gives. */
+/* Number of triangles cg_mesh_triangulate gives: n - 2 for a face of n
+ * corners. */
 size_t cg_mesh_triangle_count(const cg_mesh *mesh);
+
+/* ---- triangulation ------------------------------------------------------
+ * Splits face f into cg_mesh_face_size(mesh, f) - 2 triangles, written to
+ * triangles[] as corner numbers (positions k in face_indices,
+ * face_offsets[f] <= k < face_offsets[f + 1], so per-corner data such as
+ * corner normals stays reachable), each counter-clockwise like the face.
+ * The face is projected onto its best-fit plane (Newell's normal); the fan
+ * from the first corner is kept when it covers the face exactly (every
+ * convex face), and concave faces are cut by ear clipping, robust on
+ * collinear and repeated corners, slightly non-planar and self-touching
+ * faces (a hole joined to its outline by a bridge).  Triangles of no area
+ * come out where corners are collinear.  See docs/mesh-io.md.
+ * CG_EINVAL for a bad face number, a face of fewer than 3 corners or an
+ * index out of range; CG_ENOMEM for a face of more than 32 corners when
+ * memory runs out. */
+cg_status cg_mesh_triangulate_face(const cg_mesh *mesh, size_t f, uint32_t (*triangles)[3]);
+
+/* Every face in order: cg_mesh_triangle_count(mesh) triangles, face f's
+ * n - 2 right after those of the faces before it.  Fails like
+ * cg_mesh_validate, or with CG_ENOMEM. */
+cg_status cg_mesh_triangulate(const cg_mesh *mesh, uint32_t (*triangles)[3]);
 
 /* ---- mesh files ---------------------------------------------------------
  * Readers for Wavefront OBJ (with MTL diffuse colours), OFF (and COFF, NOFF,

@@ -1,6 +1,7 @@
 /* Clipping a triangle mesh against an axis-aligned box (11.3): each triangle
  * goes through Sutherland-Hodgman against the six faces of the box with all
- * its vertex attributes; the clipped convex polygon is fanned back into
+ * its vertex attributes (faces of more corners are first split by
+ * cg_mesh_triangulate); the clipped convex polygon is fanned back into
  * triangles.  A new vertex on an edge is computed from the edge's two
  * endpoints in a fixed order (lexicographic by position), so the two
  * triangles sharing an edge create bit-identical vertices, which are then
@@ -209,14 +210,20 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
     b.orig_map = calloc(mesh->vertex_count ? mesh->vertex_count : 1, sizeof *b.orig_map);
     b.w.cap = 1024;
     b.w.slot = calloc(b.w.cap, sizeof *b.w.slot);
-    if (!b.orig_map || !b.w.slot)
+    /* Faces are split by the mesh module's triangulation (concave faces
+     * included), as the renderers split them. */
+    size_t triangle_count = cg_mesh_triangle_count(mesh);
+    uint32_t (*corners)[3] = malloc((triangle_count ? triangle_count : 1) * sizeof *corners);
+    if (!b.orig_map || !b.w.slot || !corners || cg_mesh_triangulate(mesh, corners) != CG_OK)
         goto done;
     const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    size_t next_triangle = 0;
     for (size_t f = 0; f < mesh->face_count; f++) {
-        uint32_t first = mesh->face_offsets[f], count = cg_mesh_face_size(mesh, f);
+        uint32_t count = cg_mesh_face_size(mesh, f);
         for (uint32_t k = 1; k + 1 < count; k++) {
-            uint32_t idx[3] = {mesh->face_indices[first], mesh->face_indices[first + k],
-                               mesh->face_indices[first + k + 1]};
+            const uint32_t *corner = corners[next_triangle++];
+            uint32_t idx[3] = {mesh->face_indices[corner[0]], mesh->face_indices[corner[1]],
+                               mesh->face_indices[corner[2]]};
             cvert a[10], c[10];
             int n = 3, bad = 0;
             for (int i = 0; i < 3; i++) {
@@ -277,6 +284,7 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
         st = CG_OK;
     }
 done:
+    free(corners);
     free(b.verts);
     free(b.tris);
     free(b.tri_face);

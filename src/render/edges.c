@@ -7,8 +7,9 @@
 #include "cg/color.h"
 #include "cg/draw.h"
 
-/* Whether face f (through its first edge's triangle) is turned away from
- * the camera, tested in world space. */
+/* Whether a face, through the largest triangle of its triangulation, is
+ * turned away from the camera, tested in world space (the first three
+ * corners of a concave face may turn the other way). */
 static int back_facing(const render_frame *f, uint32_t a, uint32_t b, uint32_t c)
 {
     float p[3], q[3], r[3];
@@ -90,16 +91,11 @@ cg_status render_edges(render_frame *f)
     const cg_renderer *r = f->r;
     cg_rgba8 color = cg_linear_to_rgba8(f->o->edge_color);
     int hidden = f->o->edges != CG_EDGES_WIREFRAME;
-    size_t face_start = 0;
     for (size_t e = 0; e < r->edge_count; e++) {
         uint32_t face = r->edges[e][2];
-        if (e == 0 || r->edges[e - 1][2] != face)
-            face_start = e;
         if (f->cull) {
-            /* The face's first three corners decide its orientation. */
-            uint32_t a = r->edges[face_start][0], b = r->edges[face_start][1],
-                     c = r->edges[face_start + 1][1];
-            if (back_facing(f, a, b, c))
+            const uint32_t *t = r->triangles[r->face_triangle[face]];
+            if (back_facing(f, t[0], t[1], t[2]))
                 continue;
         }
         clip_vertex p, q;

@@ -203,6 +203,8 @@ struct cg_renderer {
     size_t triangle_count;
     uint32_t (*triangles)[3];
     uint32_t *triangle_face;  /* face each triangle comes from */
+    uint32_t *face_triangle;  /* per face, its triangle of largest area, whose
+                                 turn is the face's (culling its edges) */
     size_t edge_count;
     uint32_t (*edges)[3];     /* prepared vertex a, b, face */
     size_t face_count;

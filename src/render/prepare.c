@@ -1,6 +1,7 @@
-/* Preparing a mesh for rendering: fan triangulation, angle-weighted vertex
- * normals with a crease angle, vertices split where normals or colours
- * differ between the faces around them. */
+/* Preparing a mesh for rendering: the shared triangulation of its faces
+ * (cg_mesh_triangulate), angle-weighted vertex normals with a crease angle,
+ * vertices split where normals or colours differ between the faces around
+ * them. */
 #include "internal.h"
 #include "cg/color.h"
 
@@ -145,6 +146,16 @@ cg_status cg_mesh_corner_normals(const cg_mesh *mesh, double crease_angle,
     return compute_corner_normals(mesh, crease_angle, corner_normals_out);
 }
 
+/* Twice the area of a triangle of corner numbers (0 when not finite). */
+static double corner_triangle_area(const cg_mesh *mesh, const uint32_t corners[3])
+{
+    cg_vec3 a = mesh->positions[mesh->face_indices[corners[0]]];
+    cg_vec3 b = mesh->positions[mesh->face_indices[corners[1]]];
+    cg_vec3 c = mesh->positions[mesh->face_indices[corners[2]]];
+    double area = cg_vec3_length(cg_vec3_cross(cg_vec3_sub(b, a), cg_vec3_sub(c, a)));
+    return isfinite(area) ? area : 0;
+}
+
 static void to_float3(cg_vec3 v, float out[3])
 {
     out[0] = (float)v.x;
@@ -229,6 +240,7 @@ void cg_renderer_free(cg_renderer *r)
     free(r->vertices);
     free(r->triangles);
     free(r->triangle_face);
+    free(r->face_triangle);
     free(r->edges);
     free(r->depth);
     render_buffers_free(r);
@@ -262,14 +274,24 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
     r->vertices = malloc((corners ? corners : 1) * sizeof *r->vertices);
     r->triangles = malloc((r->triangle_count ? r->triangle_count : 1) * sizeof *r->triangles);
     r->triangle_face = malloc((r->triangle_count ? r->triangle_count : 1) * sizeof(uint32_t));
+    r->face_triangle = malloc((mesh->face_count ? mesh->face_count : 1) * sizeof(uint32_t));
     r->edges = malloc((corners ? corners : 1) * sizeof *r->edges);
     incidence in = {0};
     if (!normals || !corner_vertex || !r->vertices || !r->triangles || !r->triangle_face
-        || !r->edges || incidence_build(mesh, &in) != CG_OK) {
+        || !r->face_triangle || !r->edges || incidence_build(mesh, &in) != CG_OK) {
         free(normals);
         free(corner_vertex);
         cg_renderer_free(r);
         return cg_error_set(err, CG_ENOMEM, "render: out of memory preparing %zu faces",
+                            mesh->face_count);
+    }
+    /* Triangles of corner numbers, turned into prepared vertices below. */
+    if (cg_mesh_triangulate(mesh, r->triangles) != CG_OK) {
+        free(normals);
+        free(corner_vertex);
+        incidence_free(&in);
+        cg_renderer_free(r);
+        return cg_error_set(err, CG_ENOMEM, "render: out of memory triangulating %zu faces",
                             mesh->face_count);
     }
     if (mesh->normals) {
@@ -318,11 +340,16 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
     size_t t = 0, e = 0;
     for (size_t f = 0; f < mesh->face_count; f++) {
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        for (uint32_t k = begin + 1; k + 1 < end; k++) {
-            r->triangles[t][0] = corner_vertex[begin];
-            r->triangles[t][1] = corner_vertex[k];
-            r->triangles[t][2] = corner_vertex[k + 1];
-            r->triangle_face[t++] = (uint32_t)f;
+        double largest = -1;
+        for (uint32_t k = begin + 2; k < end; k++, t++) {
+            double area = corner_triangle_area(mesh, r->triangles[t]);
+            if (area > largest) {
+                largest = area;
+                r->face_triangle[f] = (uint32_t)t;
+            }
+            for (int j = 0; j < 3; j++)
+                r->triangles[t][j] = corner_vertex[r->triangles[t][j]];
+            r->triangle_face[t] = (uint32_t)f;
         }
         for (uint32_t k = begin; k < end; k++) {
             r->edges[e][0] = corner_vertex[k];

@@ -151,6 +151,13 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         }
     }
 
+    uint32_t (*corners)[3] = malloc((triangles ? triangles : 1) * sizeof *corners);
+    if (!corners || cg_mesh_triangulate(mesh, corners) != CG_OK) {
+        free(corners);
+        free(corner);
+        return CG_ENOMEM;
+    }
+
     trace_object object;
     memset(&object, 0, sizeof object);
     object.kind = TRACE_MESH;
@@ -160,21 +167,16 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         scene->positions[v0 + i] = cg_mat4_transform_point(model, mesh->positions[i]);
     uint32_t *idx = scene->indices + 3 * t0;
     cg_vec3 *n = scene->normals + 3 * t0;
-    size_t t = 0;
-    for (size_t f = 0; f < mesh->face_count; f++) {
-        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        for (uint32_t k = begin + 1; k + 1 < end; k++) {
-            const uint32_t corners[3] = {begin, k, k + 1};
-            for (int j = 0; j < 3; j++) {
-                uint32_t vertex = mesh->face_indices[corners[j]];
-                idx[3 * t + j] = (uint32_t)v0 + vertex;
-                cg_vec3 normal = corner ? corner[corners[j]] : mesh->normals[vertex];
-                n[3 * t + j] = cg_vec3_normalize(cg_mat3_mul_vec3(normal_matrix, normal));
-            }
-            scene->triangle_object[t0 + t] = object_index;
-            t++;
+    for (size_t t = 0; t < triangles; t++) {
+        for (int j = 0; j < 3; j++) {
+            uint32_t vertex = mesh->face_indices[corners[t][j]];
+            idx[3 * t + j] = (uint32_t)v0 + vertex;
+            cg_vec3 normal = corner ? corner[corners[t][j]] : mesh->normals[vertex];
+            n[3 * t + j] = cg_vec3_normalize(cg_mat3_mul_vec3(normal_matrix, normal));
         }
+        scene->triangle_object[t0 + t] = object_index;
     }
+    free(corners);
     free(corner);
     object.first_triangle = t0;
     object.triangle_count = triangles;

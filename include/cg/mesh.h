@@ -92,7 +92,8 @@ cg_status cg_mesh_triangulate_face(const cg_mesh *mesh, size_t f, uint32_t (*tri
 
 /* Every face in order: cg_mesh_triangle_count(mesh) triangles, face f's
  * n - 2 right after those of the faces before it.  Fails like
- * cg_mesh_validate, or with CG_ENOMEM. */
+ * cg_mesh_validate_topology (a face with a non-finite corner gets its fan:
+ * the renderers leave such faces out), or with CG_ENOMEM. */
 cg_status cg_mesh_triangulate(const cg_mesh *mesh, uint32_t (*triangles)[3]);
 
 /* ---- mesh files ---------------------------------------------------------

@@ -349,7 +349,7 @@ cg_status cg_mesh_triangulate(const cg_mesh *mesh, uint32_t (*triangles)[3])
 {
     if (!mesh || !triangles)
         return CG_EINVAL;
-    cg_status status = cg_mesh_validate(mesh, NULL);
+    cg_status status = cg_mesh_validate_topology(mesh, NULL);
     if (status != CG_OK)
         return status;
     uint32_t largest = 3;

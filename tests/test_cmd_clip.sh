@@ -50,6 +50,12 @@ check "evenodd hole" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fil
 check "nonzero same direction" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill nonzero)" \
     "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
 check "negative" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill negative)" "MULTIPOLYGON EMPTY"
+# one self-intersecting ring around a square and a triangle touching its edge:
+# the result is a valid polygon, the triangle a hole of its own (not a ring
+# through (2 0) twice)
+echo "POLYGON ((0 0, 2 0, 1 2, 3 2, 2 0, 4 0, 4 4, 0 4, 0 0))" > "$tmp/pinch.wkt"
+check "pinch split" "$("$cg" clip boolean union "$tmp/pinch.wkt" "$tmp/e.wkt" --fill evenodd)" \
+    "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (2 0, 1 2, 3 2, 2 0)))"
 "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" --repeat 5 > /dev/null 2> "$tmp/time"
 if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass; else
     fail "--repeat line: $(cat "$tmp/time")"; fi

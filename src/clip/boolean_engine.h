@@ -447,5 +447,9 @@ int boolean_add_pair_splits(engine *g);
  * larger block when needed unless it is `fixed`.  0 when out of memory. */
 int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *cap,
                      const void *fixed);
+/* A ring cut at the points it passes twice into loops that pass each point
+ * once, written back over pts, loop k ending at (*ends)[k] (allocated; free
+ * it) (boolean_pinch.c); 0 when out of memory. */
+int boolean_split_pinches(cg_point64 *pts, size_t n, size_t **ends, size_t *count);
 
 #endif

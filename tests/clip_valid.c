@@ -117,14 +117,15 @@ static double perimeter(const cg_polygon_set *s)
     return l;
 }
 
-/* 1-3 random rings of 3-9 vertices on an n x n grid scaled by `unit`
- * (crossings, shared vertices and edges, repeated and collinear points) */
-static void random_rings(check_rng *rng, cg_polygon_set *s, int n, double unit)
+/* 1-3 random rings of 3 to `most` (at most 64) vertices on an n x n grid
+ * scaled by `unit` (crossings, shared vertices and edges, repeated and
+ * collinear points) */
+static void random_rings(check_rng *rng, cg_polygon_set *s, int n, double unit, int most)
 {
     int rings = (int)check_rng_int(rng, 1, 3);
     for (int r = 0; r < rings; r++) {
-        cg_vec2 p[9];
-        int m = (int)check_rng_int(rng, 3, 9);
+        cg_vec2 p[64];
+        int m = (int)check_rng_int(rng, 3, most);
         for (int i = 0; i < m; i++)
             p[i] = cg_vec2_make(unit * (double)check_rng_int(rng, 0, n),
                                 unit * (double)check_rng_int(rng, 0, n));
@@ -158,16 +159,20 @@ int main(void)
     check_rng rng = {0x5eed0f0e};
     static const int grids[] = {2, 3, 4, 5, 8, 16};
     long results = 0, points = 0;
-    for (int round = 0; round < 4000; round++) {
-        int n = grids[round % 6];
+    static const int crowded[] = {12, 40, 100, 400};
+    for (int round = 0; round < 4400; round++) {
+        /* the last 400 rounds crowded: rings of up to 64 vertices on grids
+         * of 12 to 400 units (many active edges, complete snap rounding) */
+        int big = round >= 4000;
+        int n = big ? crowded[round % 4] : grids[round % 6], most = big ? 64 : 9;
         /* unscaled: every crossing rounded to the grid, edges collapsing;
          * scaled by 1024: the rounding small against the features, so the
          * membership of points away from the edges is the definition's */
         double unit = (round / 6) % 2 ? 1024 : 1;
         cg_polygon_set a = {0}, b = {0};
-        random_rings(&rng, &a, n, unit);
+        random_rings(&rng, &a, n, unit, most);
         if (check_rng_int(&rng, 0, 5))
-            random_rings(&rng, &b, n, unit);
+            random_rings(&rng, &b, n, unit, most);
         cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3);
         cg_clip_fill fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
         cg_polygon_set r[4] = {{0}};

@@ -36,3 +36,17 @@ if(CG_LINKER_WRAPS)
 else()
   message(STATUS "the linker has no --wrap: skipping test_clip_oom")
 endif()
+
+# Line clipping against exact rational clipping with GMP's mpq (libgmp-dev);
+# without GMP the test is skipped.
+find_library(CG_GMP_LIBRARY NAMES gmp)
+find_path(CG_GMP_INCLUDE NAMES gmp.h)
+if(CG_GMP_LIBRARY AND CG_GMP_INCLUDE)
+  add_executable(clip_line_exact ${CMAKE_CURRENT_LIST_DIR}/clip_line_exact.c)
+  target_compile_options(clip_line_exact PRIVATE ${CG_WARNINGS})
+  target_include_directories(clip_line_exact PRIVATE ${CG_GMP_INCLUDE})
+  target_link_libraries(clip_line_exact PRIVATE cg_static ${CG_GMP_LIBRARY} m)
+  add_test(NAME test_clip_line_exact COMMAND clip_line_exact)
+else()
+  message(STATUS "GMP (libgmp-dev) not found: skipping test_clip_line_exact")
+endif()

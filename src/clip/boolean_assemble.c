@@ -128,6 +128,23 @@ typedef struct ringbuf {
     size_t n, cap;
 } ringbuf;
 
+/* Whether a ring passes a point twice, from the indices of its points
+ * with several ways out (count of them; the first ASM_BRANCHES noted):
+ * compared pair by pair, or, with more, taken as yes (the cut then looks
+ * at every point).  In an exclusive or, for one, every crossing of the
+ * operands' edges is such a point, though the rings rarely pass one twice. */
+#define ASM_BRANCHES 32
+static int passes_twice(const cg_point64 *pts, const size_t *at, size_t count)
+{
+    if (count > ASM_BRANCHES)
+        return 1;
+    for (size_t i = 1; i < count; i++)
+        for (size_t j = 0; j < i; j++)
+            if (pts[at[i]].x == pts[at[j]].x && pts[at[i]].y == pts[at[j]].y)
+                return 1;
+    return 0;
+}
+
 /* Adds the ring of the n points at rings->points + rings->point_count to
  * rings, without its collinear vertices (none when fewer than 3 remain); 0
  * when there is no room for it (which the sizes of the assembly's arrays
@@ -259,7 +276,9 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         rb.n = 0;
         size_t cur = start;
         used[cur] = 1;
-        int branched = 0; /* passed a point with several ways out */
+        /* where the ring passed a point with several ways out (the only
+         * points it can pass twice): the first ASM_BRANCHES of them */
+        size_t branch_at[ASM_BRANCHES], branches = 0;
         for (;;) {
             if (rb.n == rb.cap)
                 goto fail; /* (cannot happen: each piece is taken once) */
@@ -283,13 +302,17 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
                 if (best == (size_t)-1 || cw_before(rx, ry, &P[k], &P[best]))
                     best = k;
             }
-            branched |= k - lo > 1;
+            if (k - lo > 1) {
+                if (branches < ASM_BRANCHES)
+                    branch_at[branches] = best == start ? 0 : rb.n;
+                branches++;
+            }
             if (best == (size_t)-1 || best == start)
                 break;
             cur = best;
             used[cur] = 1;
         }
-        if (!branched) {
+        if (!passes_twice(rb.pts, branch_at, branches)) {
             if (!assemble_add_ring(&rings, rb.n, mr))
                 goto fail;
             continue;

@@ -133,7 +133,7 @@ typedef struct ringbuf {
  * compared pair by pair, or, with more, taken as yes (the cut then looks
  * at every point).  In an exclusive or, for one, every crossing of the
  * operands' edges is such a point, though the rings rarely pass one twice. */
-#define ASM_BRANCHES 32
+#define ASM_BRANCHES PINCH_FEW
 static int passes_twice(const cg_point64 *pts, const size_t *at, size_t count)
 {
     if (count > ASM_BRANCHES)
@@ -319,7 +319,7 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         }
         /* a ring through a point twice is cut there into rings of their own */
         size_t *ends, loops;
-        if (!boolean_split_pinches(rb.pts, rb.n, &ends, &loops))
+        if (!boolean_split_pinches(rb.pts, rb.n, branch_at, branches, &ends, &loops))
             goto fail;
         for (size_t k = 0, from = 0; k < loops; from = ends[k++]) {
             memmove(rings.points + rings.point_count, rb.pts + from,

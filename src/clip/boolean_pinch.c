@@ -32,39 +32,60 @@ static int cmp_pinch_point(const void *a, const void *b)
 /* Cuts pts[0..n) (a closed ring) at the points it passes more than once:
  * the loops are written back over pts one after another, loop k ending at
  * (*ends)[k], *count of them (1 when the ring passes every point once).
- * *ends is allocated (free it); 0 when memory ran out. */
-int boolean_split_pinches(cg_point64 *pts, size_t n, size_t **ends, size_t *count)
+ * Only points with several ways out can be passed twice: when there are
+ * at most PINCH_FEW of them, at[0..branches) are their indices in the ring
+ * and they alone are compared; otherwise every point is (sorted).  *ends is
+ * allocated (free it); 0 when memory ran out. */
+int boolean_split_pinches(cg_point64 *pts, size_t n, const size_t *at, size_t branches,
+                          size_t **ends, size_t *count)
 {
     *ends = NULL;
     *count = 0;
     if (n == 0)
         return 1;
-    /* one block: the points sorted, the ring's copy, each point's group of
-     * equal points, each group's place on the stack, the stack, the ends */
-    size_t bytes = n * (sizeof(pinch_point) + sizeof(cg_point64) + 4 * sizeof(size_t));
+    int few = branches <= PINCH_FEW;
+    /* one block: the ring's copy, each point's group of equal points, each
+     * group's place on the stack, the stack, the ends, and the points
+     * sorted (unless few) */
+    size_t bytes = n * (sizeof(cg_point64) + 4 * sizeof(size_t)) +
+                   (few ? 0 : n * sizeof(pinch_point));
     char *mem = malloc(bytes);
     if (!mem)
         return 0;
-    pinch_point *sorted = (pinch_point *)mem;
-    cg_point64 *copy = (cg_point64 *)(sorted + n);
+    cg_point64 *copy = (cg_point64 *)mem;
     size_t *group = (size_t *)(copy + n), *place = group + n, *stack = place + n,
            *end = stack + n;
-    for (size_t i = 0; i < n; i++) {
-        sorted[i] = (pinch_point){pts[i].x, pts[i].y, i};
-        copy[i] = pts[i];
-    }
-    qsort(sorted, n, sizeof *sorted, cmp_pinch_point);
-    /* a group for each point the ring passes more than once */
-    size_t groups = 0;
-    for (size_t i = 0; i < n;) {
-        size_t j = i + 1;
-        while (j < n && sorted[j].x == sorted[i].x && sorted[j].y == sorted[i].y)
-            j++;
-        for (size_t k = i; k < j; k++)
-            group[sorted[k].at] = j - i > 1 ? groups : PINCH_NONE;
-        if (j - i > 1)
-            place[groups++] = PINCH_NONE;
-        i = j;
+    memcpy(copy, pts, n * sizeof *pts);
+    if (few) {
+        /* a group for each point with several ways out: the first of the
+         * noted indices with that point */
+        for (size_t i = 0; i < n; i++)
+            group[i] = PINCH_NONE;
+        for (size_t i = 0; i < branches; i++) {
+            size_t g = i;
+            for (size_t j = 0; j < i && g == i; j++)
+                if (pts[at[j]].x == pts[at[i]].x && pts[at[j]].y == pts[at[i]].y)
+                    g = group[at[j]];
+            group[at[i]] = g;
+            place[i] = PINCH_NONE;
+        }
+    } else {
+        pinch_point *sorted = (pinch_point *)(end + n);
+        for (size_t i = 0; i < n; i++)
+            sorted[i] = (pinch_point){pts[i].x, pts[i].y, i};
+        qsort(sorted, n, sizeof *sorted, cmp_pinch_point);
+        /* a group for each point the ring passes more than once */
+        size_t groups = 0;
+        for (size_t i = 0; i < n;) {
+            size_t j = i + 1;
+            while (j < n && sorted[j].x == sorted[i].x && sorted[j].y == sorted[i].y)
+                j++;
+            for (size_t k = i; k < j; k++)
+                group[sorted[k].at] = j - i > 1 ? groups : PINCH_NONE;
+            if (j - i > 1)
+                place[groups++] = PINCH_NONE;
+            i = j;
+        }
     }
     /* Walk the ring keeping the points since the last cut on a stack; a
      * point already on it closes the loop from there, which is cut off

@@ -276,7 +276,8 @@ static int64_t small_from(double v, int scale)
     if (v == 0)
         return 0;
     int e;
-    int64_t m = (int64_t)split_double(v, &e) << (e - scale);
+    int64_t m = (int64_t)split_double(v, &e); /* (sets e: not in the same expression) */
+    m <<= e - scale;
     return v < 0 ? -m : m;
 }
 

@@ -18,6 +18,12 @@ check "line rejected" "$("$cg" clip line 0 0 10 10 -5 15 15 18)" "rejected"
 check "line rejected lb" "$("$cg" clip line 0 0 10 10 11 0 11 10 --algorithm=liang-barsky)" "rejected"
 check "line point" "$("$cg" clip line 0 0 10 10 5 5 5 5)" "5 5 5 5"
 check "line on edge" "$("$cg" clip line 0 0 10 10 -3 10 13 10)" "0 10 10 10"
+# finite coordinates of any size: b - a overflows (1.7e308) or swamps the
+# window (1e18) in doubles; the answer is the exact clip, rounded
+for alg in cohen-sutherland liang-barsky; do
+    check "line huge $alg" "$("$cg" clip line 0 0 10 10 1.7e308 0 -1.7e308 5 --algorithm $alg)" "10 2.5 0 2.5"
+    check "line large $alg" "$("$cg" clip line 0 0 10 10 1e18 0 -1e18 5 --algorithm $alg)" "10 2.5 0 2.5"
+done
 check "trace last line" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --trace | tail -1)" "0 5.75 10 7.25"
 check "trace first step" "$("$cg" clip line 0 0 10 10 -5 5 15 8 --trace | head -1)" \
     "step 1: P0 (-5, 5) rCode 0001, P1 (15, 8) rCode 0010: clip left"
@@ -50,6 +56,12 @@ check "evenodd hole" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fil
 check "nonzero same direction" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill nonzero)" \
     "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
 check "negative" "$("$cg" clip boolean union "$tmp/h.wkt" "$tmp/e.wkt" --fill negative)" "MULTIPOLYGON EMPTY"
+# one self-intersecting ring around a square and a triangle touching its edge:
+# the result is a valid polygon, the triangle a hole of its own (not a ring
+# through (2 0) twice)
+echo "POLYGON ((0 0, 2 0, 1 2, 3 2, 2 0, 4 0, 4 4, 0 4, 0 0))" > "$tmp/pinch.wkt"
+check "pinch split" "$("$cg" clip boolean union "$tmp/pinch.wkt" "$tmp/e.wkt" --fill evenodd)" \
+    "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (2 0, 1 2, 3 2, 2 0)))"
 "$cg" clip boolean xor "$tmp/a.wkt" "$tmp/b.wkt" --repeat 5 > /dev/null 2> "$tmp/time"
 if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass; else
     fail "--repeat line: $(cat "$tmp/time")"; fi

@@ -128,6 +128,54 @@ typedef struct ringbuf {
     size_t n, cap;
 } ringbuf;
 
+/* Whether a ring passes a point twice, from the indices of its points
+ * with several ways out (count of them; the first ASM_BRANCHES noted):
+ * compared pair by pair, or, with more, taken as yes (the cut then looks
+ * at every point).  In an exclusive or, for one, every crossing of the
+ * operands' edges is such a point, though the rings rarely pass one twice. */
+#define ASM_BRANCHES PINCH_FEW
+static int passes_twice(const cg_point64 *pts, const size_t *at, size_t count)
+{
+    if (count > ASM_BRANCHES)
+        return 1;
+    for (size_t i = 1; i < count; i++)
+        for (size_t j = 0; j < i; j++)
+            if (pts[at[i]].x == pts[at[j]].x && pts[at[i]].y == pts[at[j]].y)
+                return 1;
+    return 0;
+}
+
+/* Adds the ring of the n points at rings->points + rings->point_count to
+ * rings, without its collinear vertices (none when fewer than 3 remain); 0
+ * when there is no room for it (which the sizes of the assembly's arrays
+ * rule out). */
+static int assemble_add_ring(cg_polygon_set64 *rings, size_t n, size_t max_rings)
+{
+    cg_point64 *pts = rings->points + rings->point_count;
+    int again = 1;
+    while (again && n >= 3) {
+        again = 0;
+        size_t m = 0;
+        for (size_t i = 0; i < n; i++) {
+            cg_point64 a = m ? pts[m - 1] : pts[n - 1], b = pts[i], c = pts[i + 1 < n ? i + 1 : 0];
+            i128 cr = (i128)(b.x - a.x) * (c.y - b.y) - (i128)(b.y - a.y) * (c.x - b.x);
+            if (cr == 0) {
+                again = 1;
+                continue;
+            }
+            pts[m++] = b;
+        }
+        n = m;
+    }
+    if (n < 3)
+        return 1;
+    if (rings->ring_count == max_rings)
+        return 0;
+    rings->point_count += n;
+    rings->ring_start[++rings->ring_count] = rings->point_count;
+    return 1;
+}
+
 /* *buf (*cap bytes) is the sweep's block, no longer needed: the assembly's
  * arrays are carved from it, replaced by a larger one when they do not fit
  * (unless it is `fixed`, the caller's buffer on the stack); the caller
@@ -228,6 +276,9 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         rb.n = 0;
         size_t cur = start;
         used[cur] = 1;
+        /* where the ring passed a point with several ways out (the only
+         * points it can pass twice): the first ASM_BRANCHES of them */
+        size_t branch_at[ASM_BRANCHES], branches = 0;
         for (;;) {
             if (rb.n == rb.cap)
                 goto fail; /* (cannot happen: each piece is taken once) */
@@ -244,41 +295,41 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
             }
             size_t best = (size_t)-1;
             i128 rx = P[cur].x0 - P[cur].x1, ry = P[cur].y0 - P[cur].y1;
-            for (size_t k = lo; k < np && P[k].y0 == vy && P[k].x0 == vx; k++) {
+            size_t k = lo;
+            for (; k < np && P[k].y0 == vy && P[k].x0 == vx; k++) {
                 if (used[k] && k != start)
                     continue;
                 if (best == (size_t)-1 || cw_before(rx, ry, &P[k], &P[best]))
                     best = k;
+            }
+            if (k - lo > 1) {
+                if (branches < ASM_BRANCHES)
+                    branch_at[branches] = best == start ? 0 : rb.n;
+                branches++;
             }
             if (best == (size_t)-1 || best == start)
                 break;
             cur = best;
             used[cur] = 1;
         }
-        /* drop collinear vertices */
-        size_t n = rb.n;
-        int again = 1;
-        while (again && n >= 3) {
-            again = 0;
-            size_t m = 0;
-            for (size_t i = 0; i < n; i++) {
-                cg_point64 a = m ? rb.pts[m - 1] : rb.pts[n - 1], b = rb.pts[i],
-                           c = rb.pts[i + 1 < n ? i + 1 : 0];
-                i128 cr = (i128)(b.x - a.x) * (c.y - b.y) - (i128)(b.y - a.y) * (c.x - b.x);
-                if (cr == 0) {
-                    again = 1;
-                    continue;
-                }
-                rb.pts[m++] = b;
-            }
-            n = m;
-        }
-        if (n < 3)
+        if (!passes_twice(rb.pts, branch_at, branches)) {
+            if (!assemble_add_ring(&rings, rb.n, mr))
+                goto fail;
             continue;
-        if (rings.ring_count == mr)
-            goto fail; /* (cannot happen, as above) */
-        rings.point_count += n;
-        rings.ring_start[++rings.ring_count] = rings.point_count;
+        }
+        /* a ring through a point twice is cut there into rings of their own */
+        size_t *ends, loops;
+        if (!boolean_split_pinches(rb.pts, rb.n, branch_at, branches, &ends, &loops))
+            goto fail;
+        for (size_t k = 0, from = 0; k < loops; from = ends[k++]) {
+            memmove(rings.points + rings.point_count, rb.pts + from,
+                    (ends[k] - from) * sizeof *rb.pts);
+            if (!assemble_add_ring(&rings, ends[k] - from, mr)) {
+                free(ends);
+                goto fail;
+            }
+        }
+        free(ends);
     }
     /* classify and nest */
     {

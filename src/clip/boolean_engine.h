@@ -447,5 +447,12 @@ int boolean_add_pair_splits(engine *g);
  * larger block when needed unless it is `fixed`.  0 when out of memory. */
 int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *cap,
                      const void *fixed);
+/* A ring cut at the points it passes twice into loops that pass each point
+ * once, written back over pts, loop k ending at (*ends)[k] (allocated; free
+ * it); at[0..branches) the indices of its points with several ways out,
+ * when there are at most PINCH_FEW (boolean_pinch.c); 0 when out of memory. */
+#define PINCH_FEW 32
+int boolean_split_pinches(cg_point64 *pts, size_t n, const size_t *at, size_t branches,
+                          size_t **ends, size_t *count);
 
 #endif

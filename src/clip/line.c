@@ -1,8 +1,10 @@
 /* Line clipping (11.1): Cohen-Sutherland with the notes' TBRL region codes
  * and Liang-Barsky, in 2D against a window and in 3D against a box. */
 #include "cg/clip.h"
+#include "line_exact.h"
 
 #include <math.h>
+#include <string.h>
 
 static int rect_valid(cg_rect w)
 {
@@ -47,9 +49,131 @@ unsigned cg_clip_rcode3(cg_box3 b, cg_vec3 p)
     return code;
 }
 
-/* At most two clips per endpoint are needed in exact arithmetic; the bound
- * only guards against rounding ping-pong at a corner. */
+/* The clippers below decide and compute exactly (line_exact.c): every
+ * decision is the one of exact arithmetic and every new coordinate is the
+ * exact one rounded to the nearest double, whatever the magnitudes (a
+ * segment from -1.7e308 to 1.7e308 included, whose b - a overflows in
+ * doubles).  An endpoint is moved to a window bound along the *original*
+ * segment, so clipping again never adds to the error of the first clip. */
+
+/* the bits of the rCode in the order Cohen-Sutherland tests them, with the
+ * axis and the bound (1: the high one) of each */
+static const unsigned cs_bits[6] = {CG_RCODE_TOP,  CG_RCODE_BOTTOM, CG_RCODE_RIGHT,
+                                    CG_RCODE_LEFT, CG_RCODE_FAR,    CG_RCODE_NEAR};
+static const int cs_axis[6] = {1, 1, 0, 0, 2, 2};
+static const int cs_high[6] = {1, 0, 1, 0, 1, 0};
+
+/* the rCode of the point at t, exactly */
+static unsigned exact_code(const line_seg *s, const line_param *t, const double *lo,
+                           const double *hi)
+{
+    unsigned code = 0;
+    for (int k = 0; k < 2 * s->dim; k++) {
+        int axis = cs_axis[k];
+        int side = line_side(s, t, axis, cs_high[k] ? hi[axis] : lo[axis]);
+        if (cs_high[k] ? side > 0 : side < 0)
+            code |= cs_bits[k];
+    }
+    return code;
+}
+
+/* At most two clips per endpoint in 2D (three in 3D): the bound guards the
+ * loop all the same. */
 #define CS_MAX_STEPS 16
+
+/* Cohen-Sutherland in dim 2 or 3 on a, b (in: the segment, out: its visible
+ * part); trace only in 2D.  Returns whether a part is visible. */
+static int cs_clip(int dim, double *a, double *b, const double *lo, const double *hi,
+                   cg_clip_trace_fn trace, void *user)
+{
+    line_seg s;
+    line_seg_init(&s, dim, a, b, lo, hi);
+    line_param t[2];
+    line_param_end(&t[0], 0);
+    line_param_end(&t[1], 1);
+    double p[2][3];
+    memcpy(p[0], a, (size_t)dim * sizeof *a);
+    memcpy(p[1], b, (size_t)dim * sizeof *b);
+    unsigned c[2] = {exact_code(&s, &t[0], lo, hi), exact_code(&s, &t[1], lo, hi)};
+#define CS_TRACE(what)                                                                      \
+    do {                                                                                    \
+        if (trace)                                                                          \
+            trace(user, cg_vec2_make(p[0][0], p[0][1]), c[0], cg_vec2_make(p[1][0], p[1][1]), \
+                  c[1], what);                                                              \
+    } while (0)
+    for (int step = 0; step < CS_MAX_STEPS; step++) {
+        if (!(c[0] | c[1])) {
+            CS_TRACE("trivial accept");
+            memcpy(a, p[0], (size_t)dim * sizeof *a);
+            memcpy(b, p[1], (size_t)dim * sizeof *b);
+            return 1;
+        }
+        if (c[0] & c[1]) {
+            CS_TRACE("trivial reject");
+            return 0;
+        }
+        /* The outpoint: an endpoint with a non-zero rCode.  The bit tested
+         * guarantees that b - a is not 0 on its axis: the other endpoint is
+         * not on that side (or the AND above would be non-zero). */
+        int e = c[0] ? 0 : 1, k = 0;
+        while (!(c[e] & cs_bits[k]))
+            k++;
+        static const char *const what[6] = {"clip top",  "clip bottom", "clip right",
+                                            "clip left", "clip far",    "clip near"};
+        CS_TRACE(what[k]);
+        int axis = cs_axis[k];
+        line_param_bound(&s, axis, cs_high[k] ? hi[axis] : lo[axis], &t[e]);
+        for (int j = 0; j < dim; j++)
+            p[e][j] = line_coord(&s, &t[e], j);
+        c[e] = exact_code(&s, &t[e], lo, hi);
+    }
+#undef CS_TRACE
+    return 0;
+}
+
+/* Liang-Barsky in dim 2 or 3, as cs_clip: for each axis the parameters
+ * where the segment enters and leaves the slab between the two bounds; the
+ * visible part runs from the last entry (or 0) to the first exit (or 1). */
+static int lb_clip(int dim, double *a, double *b, const double *lo, const double *hi)
+{
+    line_seg s;
+    line_seg_init(&s, dim, a, b, lo, hi);
+    line_param t0, t1, u;
+    line_param_end(&t0, 0);
+    line_param_end(&t1, 1);
+    for (int j = 0; j < dim; j++) {
+        int dir = (b[j] > a[j]) - (b[j] < a[j]);
+        if (dir == 0) {
+            if (a[j] < lo[j] || a[j] > hi[j])
+                return 0; /* parallel, outside */
+            continue;
+        }
+        line_param_bound(&s, j, dir > 0 ? lo[j] : hi[j], &u);
+        if (line_param_cmp(&s, &u, &t0) > 0)
+            line_param_copy(&t0, &u);
+        line_param_bound(&s, j, dir > 0 ? hi[j] : lo[j], &u);
+        if (line_param_cmp(&s, &u, &t1) < 0)
+            line_param_copy(&t1, &u);
+    }
+    if (line_param_cmp(&s, &t0, &t1) > 0)
+        return 0;
+    for (int j = 0; j < dim; j++) {
+        double x0 = line_coord(&s, &t0, j), x1 = line_coord(&s, &t1, j);
+        a[j] = x0;
+        b[j] = x1;
+    }
+    return 1;
+}
+
+/* Both ends inside: the segment itself (exact, and the common case). */
+static int inside_all(int dim, const double *a, const double *b, const double *lo,
+                      const double *hi)
+{
+    for (int j = 0; j < dim; j++)
+        if (a[j] < lo[j] || a[j] > hi[j] || b[j] < lo[j] || b[j] > hi[j])
+            return 0;
+    return 1;
+}
 
 cg_status cg_clip_line_cohen_sutherland(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted,
                                         cg_clip_trace_fn trace, void *user)
@@ -59,80 +183,18 @@ cg_status cg_clip_line_cohen_sutherland(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int
     *accepted = 0;
     if (!rect_valid(w) || !vec2_finite(*p0) || !vec2_finite(*p1))
         return CG_EINVAL;
-    cg_vec2 a = *p0, b = *p1;
-    unsigned c0 = cg_clip_rcode(w, a), c1 = cg_clip_rcode(w, b);
-    for (int step = 0; step < CS_MAX_STEPS; step++) {
-        if (!(c0 | c1)) {
-            if (trace)
-                trace(user, a, c0, b, c1, "trivial accept");
-            *p0 = a;
-            *p1 = b;
-            *accepted = 1;
-            return CG_OK;
-        }
-        if (c0 & c1) {
-            if (trace)
-                trace(user, a, c0, b, c1, "trivial reject");
-            return CG_OK;
-        }
-        /* The outpoint: an endpoint with a non-zero rCode.  The bit tested
-         * guarantees the denominator is non-zero: the other endpoint is not on
-         * that side (or the AND above would be non-zero). */
-        unsigned out = c0 ? c0 : c1;
-        double x, y;
-        const char *what;
-        if (out & CG_RCODE_TOP) {
-            x = a.x + (b.x - a.x) * (w.ymax - a.y) / (b.y - a.y);
-            y = w.ymax;
-            what = "clip top";
-        } else if (out & CG_RCODE_BOTTOM) {
-            x = a.x + (b.x - a.x) * (w.ymin - a.y) / (b.y - a.y);
-            y = w.ymin;
-            what = "clip bottom";
-        } else if (out & CG_RCODE_RIGHT) {
-            y = a.y + (b.y - a.y) * (w.xmax - a.x) / (b.x - a.x);
-            x = w.xmax;
-            what = "clip right";
-        } else {
-            y = a.y + (b.y - a.y) * (w.xmin - a.x) / (b.x - a.x);
-            x = w.xmin;
-            what = "clip left";
-        }
-        if (trace)
-            trace(user, a, c0, b, c1, what);
-        if (out == c0) {
-            a = cg_vec2_make(x, y);
-            c0 = cg_clip_rcode(w, a);
-        } else {
-            b = cg_vec2_make(x, y);
-            c1 = cg_clip_rcode(w, b);
-        }
+    double a[2] = {p0->x, p0->y}, b[2] = {p1->x, p1->y};
+    double lo[2] = {w.xmin, w.ymin}, hi[2] = {w.xmax, w.ymax};
+    if (!trace && inside_all(2, a, b, lo, hi)) {
+        *accepted = 1;
+        return CG_OK;
     }
-    /* Rounding kept an endpoint a hair outside a corner: the segment only
-     * grazes the corner; report it as not visible. */
-    if (trace)
-        trace(user, a, c0, b, c1, "reject (rounding at a corner)");
+    if (cs_clip(2, a, b, lo, hi, trace, user)) {
+        *p0 = cg_vec2_make(a[0], a[1]);
+        *p1 = cg_vec2_make(b[0], b[1]);
+        *accepted = 1;
+    }
     return CG_OK;
-}
-
-/* One Liang-Barsky boundary test: p t <= q for the visible part. */
-static int lb_edge(double p, double q, double *t0, double *t1)
-{
-    if (p == 0)
-        return q >= 0; /* parallel: visible iff on the inner side */
-    double r = q / p;
-    if (p < 0) {
-        if (r > *t1)
-            return 0;
-        if (r > *t0)
-            *t0 = r;
-    } else {
-        if (r < *t0)
-            return 0;
-        if (r < *t1)
-            *t1 = r;
-    }
-    return 1;
 }
 
 cg_status cg_clip_line_liang_barsky(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted)
@@ -142,25 +204,15 @@ cg_status cg_clip_line_liang_barsky(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *ac
     *accepted = 0;
     if (!rect_valid(w) || !vec2_finite(*p0) || !vec2_finite(*p1))
         return CG_EINVAL;
-    cg_vec2 a = *p0, b = *p1;
-    double dx = b.x - a.x, dy = b.y - a.y, t0 = 0, t1 = 1;
-    if (!lb_edge(-dx, a.x - w.xmin, &t0, &t1) || !lb_edge(dx, w.xmax - a.x, &t0, &t1) ||
-        !lb_edge(-dy, a.y - w.ymin, &t0, &t1) || !lb_edge(dy, w.ymax - a.y, &t0, &t1))
-        return CG_OK;
-    if (t1 < 1)
-        *p1 = cg_vec2_make(a.x + t1 * dx, a.y + t1 * dy);
-    if (t0 > 0)
-        *p0 = cg_vec2_make(a.x + t0 * dx, a.y + t0 * dy);
-    /* The parametric points can round a hair outside the window. */
-    p0->x = fmin(fmax(p0->x, w.xmin), w.xmax);
-    p0->y = fmin(fmax(p0->y, w.ymin), w.ymax);
-    p1->x = fmin(fmax(p1->x, w.xmin), w.xmax);
-    p1->y = fmin(fmax(p1->y, w.ymin), w.ymax);
-    *accepted = 1;
+    double a[2] = {p0->x, p0->y}, b[2] = {p1->x, p1->y};
+    double lo[2] = {w.xmin, w.ymin}, hi[2] = {w.xmax, w.ymax};
+    if (inside_all(2, a, b, lo, hi) || lb_clip(2, a, b, lo, hi)) {
+        *p0 = cg_vec2_make(a[0], a[1]);
+        *p1 = cg_vec2_make(b[0], b[1]);
+        *accepted = 1;
+    }
     return CG_OK;
 }
-
-static double vget(cg_vec3 v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
 
 cg_status cg_clip_line_cohen_sutherland3(cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, int *accepted)
 {
@@ -169,43 +221,12 @@ cg_status cg_clip_line_cohen_sutherland3(cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, 
     *accepted = 0;
     if (!box_valid(box) || !vec3_finite(*p0) || !vec3_finite(*p1))
         return CG_EINVAL;
-    cg_vec3 a = *p0, b = *p1;
-    unsigned c0 = cg_clip_rcode3(box, a), c1 = cg_clip_rcode3(box, b);
-    /* bit order tested: top, bottom, right, left, far, near */
-    static const unsigned bits[6] = {CG_RCODE_TOP, CG_RCODE_BOTTOM, CG_RCODE_RIGHT,
-                                     CG_RCODE_LEFT, CG_RCODE_FAR,   CG_RCODE_NEAR};
-    static const int axes[6] = {1, 1, 0, 0, 2, 2};
-    static const int high[6] = {1, 0, 1, 0, 1, 0};
-    for (int step = 0; step < CS_MAX_STEPS; step++) {
-        if (!(c0 | c1)) {
-            *p0 = a;
-            *p1 = b;
-            *accepted = 1;
-            return CG_OK;
-        }
-        if (c0 & c1)
-            return CG_OK;
-        unsigned out = c0 ? c0 : c1;
-        int k = 0;
-        while (!(out & bits[k]))
-            k++;
-        int axis = axes[k];
-        double plane = vget(high[k] ? box.hi : box.lo, axis);
-        double t = (plane - vget(a, axis)) / (vget(b, axis) - vget(a, axis));
-        cg_vec3 p = cg_vec3_add(a, cg_vec3_scale(cg_vec3_sub(b, a), t));
-        if (axis == 0)
-            p.x = plane;
-        else if (axis == 1)
-            p.y = plane;
-        else
-            p.z = plane;
-        if (out == c0) {
-            a = p;
-            c0 = cg_clip_rcode3(box, a);
-        } else {
-            b = p;
-            c1 = cg_clip_rcode3(box, b);
-        }
+    double a[3] = {p0->x, p0->y, p0->z}, b[3] = {p1->x, p1->y, p1->z};
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    if (inside_all(3, a, b, lo, hi) || cs_clip(3, a, b, lo, hi, NULL, NULL)) {
+        *p0 = cg_vec3_make(a[0], a[1], a[2]);
+        *p1 = cg_vec3_make(b[0], b[1], b[2]);
+        *accepted = 1;
     }
     return CG_OK;
 }
@@ -217,22 +238,12 @@ cg_status cg_clip_line_liang_barsky3(cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, int 
     *accepted = 0;
     if (!box_valid(box) || !vec3_finite(*p0) || !vec3_finite(*p1))
         return CG_EINVAL;
-    cg_vec3 a = *p0, b = *p1, d = cg_vec3_sub(b, a);
-    double t0 = 0, t1 = 1;
-    if (!lb_edge(-d.x, a.x - box.lo.x, &t0, &t1) || !lb_edge(d.x, box.hi.x - a.x, &t0, &t1) ||
-        !lb_edge(-d.y, a.y - box.lo.y, &t0, &t1) || !lb_edge(d.y, box.hi.y - a.y, &t0, &t1) ||
-        !lb_edge(-d.z, a.z - box.lo.z, &t0, &t1) || !lb_edge(d.z, box.hi.z - a.z, &t0, &t1))
-        return CG_OK;
-    if (t1 < 1)
-        *p1 = cg_vec3_add(a, cg_vec3_scale(d, t1));
-    if (t0 > 0)
-        *p0 = cg_vec3_add(a, cg_vec3_scale(d, t0));
-    cg_vec3 *ps[2] = {p0, p1};
-    for (int i = 0; i < 2; i++) {
-        ps[i]->x = fmin(fmax(ps[i]->x, box.lo.x), box.hi.x);
-        ps[i]->y = fmin(fmax(ps[i]->y, box.lo.y), box.hi.y);
-        ps[i]->z = fmin(fmax(ps[i]->z, box.lo.z), box.hi.z);
+    double a[3] = {p0->x, p0->y, p0->z}, b[3] = {p1->x, p1->y, p1->z};
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    if (inside_all(3, a, b, lo, hi) || lb_clip(3, a, b, lo, hi)) {
+        *p0 = cg_vec3_make(a[0], a[1], a[2]);
+        *p1 = cg_vec3_make(b[0], b[1], b[2]);
+        *accepted = 1;
     }
-    *accepted = 1;
     return CG_OK;
 }

@@ -2,6 +2,7 @@
  * (Figure 11.6), fill rules, a mesh cut by a box and frustum culling. */
 #include "clip_view.h"
 #include "demo.h"
+#include "draw_demo.h"
 
 #include "cg/xform.h"
 
@@ -42,24 +43,40 @@ static int add(demo_context *c, const char *file, cg_image *im, const char *capt
     return r;
 }
 
+/* Appends a stroked polyline (world coordinates, width in pixels) to a draw
+ * script, as clip_view_polyline strokes it: round joins and caps. */
+static void script_polyline(script_text *t, const clip_view *v, const cg_vec2 *p, size_t n,
+                            int closed, double width, cg_rgba8 color)
+{
+    script_add(t, "color #%02x%02x%02x%02x\nwidth %.17g\npath", color.r, color.g, color.b,
+               color.a, width);
+    for (size_t i = 0; i < n; i++) {
+        cg_vec2 q = clip_view_map(v, p[i]);
+        script_add(t, " %c %.17g %.17g", i ? 'L' : 'M', q.x, q.y);
+    }
+    script_add(t, "%s\nstroke\n", closed ? " Z" : "");
+}
+
+/* 40 random segments clipped by the window in C; the picture is a draw
+ * script of the segments, the window and the visible parts, so that its
+ * caption's command draws it again. */
 static int lines(demo_context *c, int liang)
 {
-    cg_image *im = canvas(480, 360);
-    if (!im)
-        return 1;
+    script_text t = {.length = 0};
+    script_add(&t, "size 480 360\nbackground white\njoin round\ncap round\n");
     cg_rect w = {-1.5, -1, 1.5, 1};
     clip_view v = clip_view_fit(cg_vec2_make(-3, -2.2), cg_vec2_make(3, 2.2), 480, 360, 10);
     /* the window's lines extended: the nine regions of the rCodes */
     cg_vec2 ext[4][2] = {{{-1.5, -3}, {-1.5, 3}}, {{1.5, -3}, {1.5, 3}}, {{-4, -1}, {4, -1}}, {{-4, 1}, {4, 1}}};
     for (int i = 0; i < 4; i++)
-        clip_view_polyline(im, &v, ext[i], 2, 0, 1, (cg_rgba8){220, 220, 220, 255});
+        script_polyline(&t, &v, ext[i], 2, 0, 1, (cg_rgba8){220, 220, 220, 255});
     cg_vec2 box[4] = {{-1.5, -1}, {1.5, -1}, {1.5, 1}, {-1.5, 1}};
-    clip_view_polyline(im, &v, box, 4, 1, 2.5, WINDOW);
+    script_polyline(&t, &v, box, 4, 1, 2.5, WINDOW);
     uint64_t s = liang ? 99 : 7;
     for (int i = 0; i < 40; i++) {
         cg_vec2 a = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2}, b = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2};
         cg_vec2 seg[2] = {a, b};
-        clip_view_polyline(im, &v, seg, 2, 0, 1.2, GREY);
+        script_polyline(&t, &v, seg, 2, 0, 1.2, GREY);
         int acc = 0;
         if (liang)
             cg_clip_line_liang_barsky(w, &a, &b, &acc);
@@ -67,15 +84,17 @@ static int lines(demo_context *c, int liang)
             cg_clip_line_cohen_sutherland(w, &a, &b, &acc, NULL, NULL);
         if (acc) {
             cg_vec2 in[2] = {a, b};
-            clip_view_polyline(im, &v, in, 2, 0, 3, KEEP);
+            script_polyline(&t, &v, in, 2, 0, 3, KEEP);
         }
     }
-    return add(c, liang ? "clip-liang-barsky.png" : "clip-cohen-sutherland.png", im,
-               liang ? "Liang-Barsky: 40 segments (grey) and their parametric clip against the window (blue)"
-                     : "Cohen-Sutherland: 40 segments (grey) against the window; the extended window "
-                       "edges bound the nine rCode regions (TBRL); visible parts in blue",
-               liang ? "cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --algorithm liang-barsky"
-                     : "cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --trace");
+    return draw_demo_script(
+        c, liang ? "clip-liang-barsky" : "clip-cohen-sutherland", t.text,
+        liang ? "Liang-Barsky: 40 segments (grey) and their parametric clip against the window "
+                "(blue); one segment clipped as text: cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 "
+                "--algorithm liang-barsky"
+              : "Cohen-Sutherland: 40 segments (grey) against the window; the extended window "
+                "edges bound the nine rCode regions (TBRL); visible parts in blue; one segment "
+                "step by step: cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --trace");
 }
 
 static void ring_set(cg_polygon_set *s, const cg_vec2 *p, size_t n, int new_polygon)
@@ -156,8 +175,9 @@ static int polygons(demo_context *c)
     save_wkt(c, "clip-pentagon.wkt", &sp);
     int r = add(c, "clip-sutherland-hodgman.png", im,
                 "Sutherland-Hodgman: the concave W (blue) clipped edge by edge against a convex "
-                "pentagon (red); one output polygon, joined along the window's edge as the notes warn",
-                "cg clip polygon clip-pentagon.wkt clip-w.wkt -o clip-sutherland-hodgman.png");
+                "pentagon (red); one output polygon, joined along the window's edge as the notes warn (the clipped polygon as WKT: cg clip "
+                "polygon clip-pentagon.wkt clip-w.wkt)",
+                "cg demo --only Clipping");
     cg_polygon_set wr = {0};
     if (!r) {
         /* Weiler-Atherton: a comb-shaped window splits a disc into pieces */
@@ -186,12 +206,13 @@ static int polygons(demo_context *c)
         }
         save_wkt(c, "clip-comb.wkt", &cs);
         save_wkt(c, "clip-disc.wkt", &disc);
-        char caption[200];
+        char caption[300];
         snprintf(caption, sizeof caption,
                  "Weiler-Atherton: a disc (blue) clipped by a concave comb (red) gives %zu separate "
-                 "polygons", wr.polygon_count);
+                 "polygons (as WKT: cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm "
+                 "weiler-atherton)", wr.polygon_count);
         r = add(c, "clip-weiler-atherton.png", im, caption,
-                "cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm weiler-atherton -o out.png");
+                "cg demo --only Clipping");
         cg_polygon_set_clear(&disc);
         cg_polygon_set_clear(&cs);
     }
@@ -234,8 +255,9 @@ static int booleans(demo_context *c)
     }
     status |= add(c, "clip-boolean.png", im,
                   "Figure 11.6 by the scanbeam (Vatti-style) boolean operations: A (blue, a disc with a "
-                  "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B",
-                  "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o out.png");
+                  "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B (one of them: "
+                  "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o xor.png)",
+                  "cg demo --only Clipping");
     cg_polygon_set_clear(&a);
     cg_polygon_set_clear(&b);
     cg_polygon_set_clear(&r);
@@ -268,8 +290,9 @@ static int fill_rules(demo_context *c)
     }
     status |= add(c, "clip-fill-rules.png", im,
                   "One self-intersecting set of paths (a pentagram and a clockwise square) under the four fill "
-                  "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes",
-                  "cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o out.png");
+                  "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes "
+                  "(one rule: cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o positive.png)",
+                  "cg demo --only Clipping");
     cg_polygon_set_clear(&s);
     cg_polygon_set_clear(&r);
     return status;

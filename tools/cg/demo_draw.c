@@ -38,8 +38,9 @@ static int zoomed_line(demo_context *context)
     return zoom_add(context, &z, "draw-line-zoom.png",
                     "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the real "
                     "line through the pixel centres, and the midpoints tested at each step "
-                    "(red: below the line, NE chosen; orange: above or on it, E)",
-                    "cg trace line 1 1 22 9");
+                    "(red: below the line, NE chosen; orange: above or on it, E); the steps as "
+                    "text: cg trace line 1 1 22 9",
+                    "cg demo --only 'Lines, circles'");
 }
 
 /* Colours the cells of the first octant as Algorithm 2 selects them. */
@@ -78,8 +79,8 @@ static int zoomed_circle(demo_context *context)
     return zoom_add(context, &z, "draw-circle-zoom.png",
                     "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: octant 1 "
                     "(orange, 0 <= x <= y) is computed and mirrored about the four lines of "
-                    "symmetry; each pixel is drawn once",
-                    "cg trace circle 11");
+                    "symmetry; each pixel is drawn once; the steps as text: cg trace circle 11",
+                    "cg demo --only 'Lines, circles'");
 }
 
 static int lines(demo_context *context)

@@ -156,39 +156,43 @@ static int maze(demo_context *context)
                 "from one seed by the scan-line span algorithm (4-connected), in its own colour");
 }
 
+/* One wall cell of the magnified grid: CELL x CELL pixels from its top-left
+ * grid line, so that cells meeting at a corner touch only diagonally. */
+static void wall_cell(script_text *t, int x, int y, int cell)
+{
+    for (int j = 0; j < cell; j++)
+        script_add(t, "line %d %d %d %d\n", x * cell, y * cell + j, x * cell + cell - 1,
+                   y * cell + j);
+}
+
 /* One-pixel diagonal gaps: a 4-connected fill stops, an 8-connected one
- * leaks through.  Shown magnified. */
+ * leaks through.  Drawn magnified by a script: the walls as blocks of pixels,
+ * the seed fill run on the magnified picture (its connectivity is that of
+ * the pixels), then the grid drawn over it. */
 static int connectivity(demo_context *context)
 {
-    enum { N = 24 };
-    cg_rgba8 white = {255, 255, 255, 255}, wall = {44, 44, 54, 255};
-    cg_rgba8 fills[2] = {{70, 150, 220, 255}, {230, 90, 70, 255}};
-    const char *files[2] = {"fill-connect4.png", "fill-connect8.png"};
+    enum { N = 24, CELL = 11 };
+    const char *fills[2] = {"#4696dc", "#e65a46"};
+    const char *names[2] = {"fill-connect4", "fill-connect8"};
     const char *captions[2] = {
         "Seed fill from the top-left pixel, 4-connected: it stops at the one-pixel diagonal wall",
         "The same seed fill, 8-connected: it slips through the diagonal wall's corners"};
-    int failed = 0;
+    int failed = 0, side = N * CELL + 1;
     for (int k = 0; k < 2; k++) {
-        cg_image *small;
-        zoom z;
-        if (cg_image_create(&small, N, N, CG_PIXEL_RGBA8) != CG_OK)
-            return 1;
-        if (zoom_create(&z, N, N, 11)) {
-            cg_image_free(small);
-            return 1;
-        }
-        cg_image_clear_rgba8(small, white);
+        static script_text t; /* large: a line per pixel row of each wall cell */
+        t.length = 0;
+        script_add(&t, "size %d %d\nbackground #ffffff\ncolor #2c2c36\n", side, side);
         for (int i = 0; i < N; i++) { /* a diagonal wall and short stairs */
-            cg_image_set_rgba8(small, i, N - 1 - i, wall);
+            wall_cell(&t, i, N - 1 - i, CELL);
             if (i % 6 < 3)
-                cg_image_set_rgba8(small, (i + N / 2) % N, i, wall);
+                wall_cell(&t, (i + N / 2) % N, i, CELL);
         }
-        cg_flood_fill(small, 1, 1, fills[k], k ? CG_CONNECT_8 : CG_CONNECT_4, 0, NULL);
-        for (int y = 0; y < N; y++)
-            for (int x = 0; x < N; x++)
-                zoom_fill(&z, x, y, cg_image_get_rgba8(small, x, y));
-        cg_image_free(small);
-        failed |= zoom_add(context, &z, files[k], captions[k], COMMAND);
+        script_add(&t, "color %s\n%s %d %d\ncolor #cdcdcd\n", fills[k], k ? "flood8" : "flood",
+                   CELL + CELL / 2, CELL + CELL / 2);
+        for (int g = 0; g <= N; g++)
+            script_add(&t, "line %d 0 %d %d\nline 0 %d %d %d\n", g * CELL, g * CELL, side - 1,
+                       g * CELL, side - 1, g * CELL);
+        failed |= draw_demo_script(context, names[k], t.text, captions[k]);
     }
     return failed;
 }

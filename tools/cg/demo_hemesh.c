@@ -5,7 +5,6 @@
 #include "cg/hemesh.h"
 #include "cg/xform.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,43 +43,7 @@ static cg_hemesh *make_mesh(const double (*points)[3], size_t n, const uint32_t 
 }
 
 /* Each picture is a draw script written next to it (the meshes are built,
- * subdivided and projected in C), so its caption is `cg draw`.  A sketch is
- * that script, growing as the picture is drawn. */
-typedef struct sketch {
-    char *text;
-    size_t length, capacity;
-    int failed;
-} sketch;
-
-static void sketch_add(sketch *k, const char *format, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-static void sketch_add(sketch *k, const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    int n = vsnprintf(NULL, 0, format, args);
-    va_end(args);
-    if (k->failed || n < 0)
-        return;
-    if (k->length + (size_t)n + 1 > k->capacity) {
-        size_t capacity = 2 * (k->length + (size_t)n + 1);
-        char *grown = realloc(k->text, capacity);
-        if (!grown) {
-            k->failed = 1;
-            return;
-        }
-        k->text = grown;
-        k->capacity = capacity;
-    }
-    va_start(args, format);
-    vsnprintf(k->text + k->length, k->capacity - k->length, format, args);
-    va_end(args);
-    k->length += (size_t)n;
-}
-
+ * subdivided and projected in C), so its caption is `cg draw`. */
 static sketch *blank(int width, int height)
 {
     sketch *k = calloc(1, sizeof *k);

@@ -234,32 +234,26 @@ static int pixel_view(demo_context *context, cg_rasterizer *r)
             }
         cg_image_free(small);
         /* the outline and the pixel centres on the magnified image */
-        cg_path *path;
-        if (cg_path_create(&path) == CG_OK) {
-            for (int i = 0; i < 3; i++)
-                (i ? cg_path_line_to : cg_path_move_to)(path, tri[i].x * CELL + 0.5,
-                                                        tri[i].y * CELL + 0.5);
-            cg_path_close(path);
-            cg_stroke_style style = cg_stroke_style_default();
-            style.width = 2;
-            cg_paint outline = cg_paint_solid(red);
-            cg_rasterizer_stroke_path(r, z.image, path, &style, &outline);
-            cg_paint dot = cg_paint_solid((cg_rgba8){40, 40, 48, 255});
-            for (int y = 0; y < H; y++)
-                for (int x = 0; x < W; x++) {
-                    cg_path_reset(path);
-                    cg_path_arc(path, (x + 0.5) * CELL + 0.5, (y + 0.5) * CELL + 0.5, 1.6, 0,
-                                2 * CG_PI);
-                    cg_rasterizer_fill_path(r, z.image, path, CG_FILL_NONZERO, &dot);
-                }
-            cg_path_free(path);
-        }
-        failed |= zoom_add(context, &z, aa ? "fill-pixels-aa.png" : "fill-pixels-aliased.png",
-                           aa ? "Anti-aliased fill, magnified: each pixel shaded by the exact area "
-                                "of it inside the triangle (signed-area accumulation)"
-                              : "Scan-line fill, magnified: a pixel is painted when its centre "
-                                "(dot) is inside the triangle (red)",
-                           COMMAND);
+        sketch k = {0};
+        zoom_to_script(&z, &k);
+        sketch_add(&k, "color #%02x%02x%02x\nwidth 2\npath", red.r, red.g, red.b);
+        for (int i = 0; i < 3; i++)
+            sketch_add(&k, " %c %.17g %.17g", i ? 'L' : 'M', tri[i].x * CELL + 0.5,
+                       tri[i].y * CELL + 0.5);
+        sketch_add(&k, " Z\nstroke\ncolor #282830\n");
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double cx = (x + 0.5) * CELL + 0.5, cy = (y + 0.5) * CELL + 0.5, d = 1.6;
+                sketch_add(&k, "path M %.17g %.17g A %g %g 0 1 1 %.17g %.17g A %g %g 0 1 1 %.17g "
+                               "%.17g Z\nfill\n",
+                           cx + d, cy, d, d, cx - d, cy, d, d, cx + d, cy);
+            }
+        failed |= zoom_script_add(context, &k, aa ? "fill-pixels-aa" : "fill-pixels-aliased",
+                                  aa ? "Anti-aliased fill, magnified: each pixel shaded by the "
+                                       "exact area of it inside the triangle (signed-area "
+                                       "accumulation)"
+                                     : "Scan-line fill, magnified: a pixel is painted when its "
+                                       "centre (dot) is inside the triangle (red)");
     }
     return failed;
 }

@@ -38,7 +38,7 @@ static int zoomed_line(demo_context *context)
     }
     sketch_add(&k, "color #141414\naaline %.17g %.17g %.17g %.17g\n", zoom_x(&z, x0 + 0.5),
                zoom_x(&z, y0 + 0.5), zoom_x(&z, x1 + 0.5), zoom_x(&z, y1 + 0.5));
-    return zoom_script_add(context, &k, "draw-line-zoom",
+    return draw_demo_sketch(context, &k, "draw-line-zoom",
                            "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the "
                            "real line through the pixel centres, and the midpoints tested at each "
                            "step (red: below the line, NE chosen; orange: above or on it, E); the "
@@ -81,7 +81,7 @@ static int zoomed_circle(demo_context *context)
         sketch_add(&k, "aaline %.17g %.17g %.17g %.17g\n", cx - len * cos(a), cx - len * sin(a),
                    cx + len * cos(a), cx + len * sin(a));
     }
-    return zoom_script_add(context, &k, "draw-circle-zoom",
+    return draw_demo_sketch(context, &k, "draw-circle-zoom",
                            "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: "
                            "octant 1 (orange, 0 <= x <= y) is computed and mirrored about the "
                            "four lines of symmetry; each pixel is drawn once; the steps as text: "

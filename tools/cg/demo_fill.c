@@ -118,7 +118,10 @@ static int gradients(demo_context *context, cg_rasterizer *r)
 }
 
 /* A random maze with a few passages walled up, each separate region
- * flood-filled from one seed in its own colour. */
+ * flood-filled from one seed in its own colour.  The maze is generated in C
+ * and drawn magnified by a script: its walls as rectangles (one per run of
+ * wall pixels in a row), then a flood from each region's seed (magnified by
+ * whole blocks, the regions keep their 4-connectivity). */
 static int maze(demo_context *context)
 {
     enum { CELLS = 40, SCALE = 6 };
@@ -132,6 +135,20 @@ static int maze(demo_context *context)
         cg_image_free(small);
         return 1;
     }
+    sketch k = {0};
+    sketch_add(&k, "size %d %d\nbackground #%02x%02x%02x\ncolor #%02x%02x%02x\n", side * SCALE,
+               side * SCALE, open.r, open.g, open.b, wall.r, wall.g, wall.b);
+    for (int y = 0; y < side; y++)
+        for (int x = 0; x < side;) {
+            int end = x;
+            while (end < side && cg_image_get_rgba8(small, end, y).r == wall.r)
+                end++;
+            if (end > x)
+                sketch_add(&k, "polygon %d %d %d %d %d %d %d %d\n", x * SCALE, y * SCALE,
+                           end * SCALE, y * SCALE, end * SCALE, (y + 1) * SCALE, x * SCALE,
+                           (y + 1) * SCALE);
+            x = end > x ? end : x + 1;
+        }
     static const cg_rgba8 palette[] = {{230, 90, 70, 255},  {70, 150, 220, 255}, {90, 180, 100, 255},
                                        {240, 180, 50, 255}, {160, 100, 200, 255}, {60, 190, 180, 255},
                                        {220, 120, 170, 255}, {150, 150, 60, 255}};
@@ -139,21 +156,18 @@ static int maze(demo_context *context)
     for (int y = 1; y < side; y += 2)
         for (int x = 1; x < side; x += 2) {
             cg_rgba8 p = cg_image_get_rgba8(small, x, y);
-            if (p.r == 255 && p.g == 255 && p.b == 255)
-                cg_flood_fill(small, x, y, palette[regions++ % 8], CG_CONNECT_4, 0, NULL);
+            if (p.r == 255 && p.g == 255 && p.b == 255) {
+                cg_rgba8 c = palette[regions++ % 8];
+                cg_flood_fill(small, x, y, c, CG_CONNECT_4, 0, NULL);
+                sketch_add(&k, "color #%02x%02x%02x\nflood %d %d\n", c.r, c.g, c.b,
+                           x * SCALE + SCALE / 2, y * SCALE + SCALE / 2);
+            }
         }
-    cg_image *image;
-    if (cg_image_create(&image, side * SCALE, side * SCALE, CG_PIXEL_RGBA8) != CG_OK) {
-        cg_image_free(small);
-        return 1;
-    }
-    for (int y = 0; y < side * SCALE; y++)
-        for (int x = 0; x < side * SCALE; x++)
-            cg_image_set_rgba8(image, x, y, cg_image_get_rgba8(small, x / SCALE, y / SCALE));
     cg_image_free(small);
-    return save(context, "fill-maze.png", image,
-                "Flood fill: a random maze with some passages walled up; each region filled "
-                "from one seed by the scan-line span algorithm (4-connected), in its own colour");
+    return draw_demo_sketch(context, &k, "fill-maze",
+                           "Flood fill: a random maze with some passages walled up; each region "
+                           "filled from one seed by the scan-line span algorithm (4-connected), "
+                           "in its own colour");
 }
 
 /* One wall cell of the magnified grid: CELL x CELL pixels from its top-left
@@ -248,7 +262,7 @@ static int pixel_view(demo_context *context, cg_rasterizer *r)
                                "%.17g Z\nfill\n",
                            cx + d, cy, d, d, cx - d, cy, d, d, cx + d, cy);
             }
-        failed |= zoom_script_add(context, &k, aa ? "fill-pixels-aa" : "fill-pixels-aliased",
+        failed |= draw_demo_sketch(context, &k, aa ? "fill-pixels-aa" : "fill-pixels-aliased",
                                   aa ? "Anti-aliased fill, magnified: each pixel shaded by the "
                                        "exact area of it inside the triangle (signed-area "
                                        "accumulation)"

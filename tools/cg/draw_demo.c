@@ -130,7 +130,7 @@ void zoom_to_script(zoom *z, sketch *k)
     z->image = NULL;
 }
 
-int zoom_script_add(demo_context *context, sketch *k, const char *name, const char *caption)
+int draw_demo_sketch(demo_context *context, sketch *k, const char *name, const char *caption)
 {
     int status = k->failed ? 1 : draw_demo_script(context, name, k->text, caption);
     free(k->text);

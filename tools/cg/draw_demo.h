@@ -35,6 +35,10 @@ void sketch_add(sketch *k, const char *format, ...)
 #endif
     ;
 
+/* Writes the sketch as NAME.draw, adds its picture as NAME.png (as
+ * draw_demo_script does) and frees the sketch's text. */
+int draw_demo_sketch(demo_context *context, sketch *k, const char *name, const char *caption);
+
 /* A magnified view: each pixel of a small grid becomes a cell of `cell`
  * image pixels with a thin grid between cells. */
 typedef struct zoom {
@@ -56,9 +60,6 @@ int zoom_add(demo_context *context, zoom *z, const char *file, const char *capti
  * (one aliased polygon per cell), so that overlays can follow as commands;
  * frees the zoom's image. */
 void zoom_to_script(zoom *z, sketch *k);
-/* Writes the script as NAME.draw, adds its picture as NAME.png (as
- * draw_demo_script does) and frees the script. */
-int zoom_script_add(demo_context *context, sketch *k, const char *name, const char *caption);
 /* Maps a point of the grid's pixel plane to the magnified image plane. */
 double zoom_x(const zoom *z, double x);
 

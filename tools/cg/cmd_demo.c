@@ -194,7 +194,7 @@ static int write_page(const demo_context *context, const demo_section **ordered)
                  "code{display:block;font-size:0.8em;color:#555;margin-top:0.2em;"
                  "white-space:pre-wrap}\n</style>\n</head>\n<body>\n"
                  "<h1>cg gallery</h1>\n<p>Every picture below was rendered by cg %s; the "
-                 "command under each one makes it again.</p>\n",
+                 "command under each one, run in this folder, makes it again.</p>\n",
             CG_VERSION_STRING);
     int chapter = -1;
     for (int s = 0; s < SECTION_COUNT; s++) {
@@ -342,6 +342,7 @@ const cg_command cg_command_demo = {
     "Renders one PNG per algorithm into DIR (default: out) and writes\n"
     "DIR/index.html, a page with a section per chapter of the lecture notes;\n"
     "each picture has a caption naming the algorithm and the command that makes\n"
-    "it.  --only renders just the sections whose title contains TEXT.\n",
+    "it, run in DIR (its inputs are written there; see docs/gallery.md).\n"
+    "--only renders just the sections whose title contains TEXT.\n",
     run,
 };

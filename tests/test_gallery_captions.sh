@@ -83,6 +83,10 @@ for picture, attributes in codes:
         passed += 1
     else:
         problems.append("%s: `%s` draws a different picture" % (picture, command))
+# Only the pictures computed per pixel, with no cg command of their own,
+# may fall back on `cg demo --only` (docs/gallery.md): no new ones.
+if demo_captions > 26:
+    problems.append("%d captions say only `cg demo --only` (at most 26)" % demo_captions)
 for p in problems:
     print("FAIL: " + p, file=sys.stderr)
 print("%d of %d captions reproduce their picture (%d by `cg demo --only`)"

@@ -89,6 +89,44 @@ int demo_add(demo_context *context, const char *file, const cg_image *image, con
     return CLI_OK;
 }
 
+/* Creates the directories of path (not its last part); 0 or -1. */
+static int make_parents(const char *path);
+
+int demo_copy_input(demo_context *context, const char *relative)
+{
+#ifdef CG_SOURCE_DIR
+    char from[4096], to[4096], temporary[4200];
+    snprintf(from, sizeof from, "%s/%s", CG_SOURCE_DIR, relative);
+    snprintf(to, sizeof to, "%s/%s", context->directory, relative);
+    snprintf(temporary, sizeof temporary, "%s.tmp", to);
+    FILE *in = fopen(from, "rb");
+    if (!in)
+        return cli_fail("demo: cannot read %s: %s", from, strerror(errno));
+    FILE *out = make_parents(to) == 0 ? fopen(temporary, "wb") : NULL;
+    if (!out) {
+        fclose(in);
+        return cli_fail("demo: cannot write %s: %s", temporary, strerror(errno));
+    }
+    char buffer[65536];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, in)) > 0)
+        if (fwrite(buffer, 1, n, out) != n)
+            break;
+    int failed = ferror(in) || ferror(out);
+    fclose(in);
+    failed |= fclose(out) != 0;
+    if (failed || rename(temporary, to) != 0) {
+        remove(temporary);
+        return cli_fail("demo: cannot write %s", to);
+    }
+    return CLI_OK;
+#else
+    (void)context;
+    (void)relative;
+    return CLI_OK;
+#endif
+}
+
 static void write_escaped(FILE *out, const char *text)
 {
     for (; text && *text; text++) {
@@ -100,6 +138,22 @@ static void write_escaped(FILE *out, const char *text)
         default: fputc(*text, out);
         }
     }
+}
+
+/* The caption's command, also in machine-readable form: data-command is the
+ * command to run in the gallery folder, data-output the file it writes there
+ * (`cg demo --only` writes into out/), which equals the picture. */
+static void write_command(FILE *out, const demo_entry *e)
+{
+    fputs("<code data-command=\"", out);
+    write_escaped(out, e->command);
+    fputs("\" data-output=\"", out);
+    if (strncmp(e->command, "cg demo ", 8) == 0)
+        fputs("out/", out);
+    write_escaped(out, e->file);
+    fputs("\">", out);
+    write_escaped(out, e->command);
+    fputs("</code>", out);
 }
 
 static int compare_sections(const void *a, const void *b)
@@ -140,7 +194,7 @@ static int write_page(const demo_context *context, const demo_section **ordered)
                  "code{display:block;font-size:0.8em;color:#555;margin-top:0.2em;"
                  "white-space:pre-wrap}\n</style>\n</head>\n<body>\n"
                  "<h1>cg gallery</h1>\n<p>Every picture below was rendered by cg %s; the "
-                 "command under each one makes it again.</p>\n",
+                 "command under each one, run in this folder, makes it again.</p>\n",
             CG_VERSION_STRING);
     int chapter = -1;
     for (int s = 0; s < SECTION_COUNT; s++) {
@@ -166,11 +220,8 @@ static int write_page(const demo_context *context, const demo_section **ordered)
             write_escaped(out, e->caption);
             fputs("\"><figcaption>", out);
             write_escaped(out, e->caption);
-            if (e->command) {
-                fputs("<code>", out);
-                write_escaped(out, e->command);
-                fputs("</code>", out);
-            }
+            if (e->command)
+                write_command(out, e);
             fputs("</figcaption></figure>\n", out);
         }
         fputs("</div>\n", out);
@@ -190,7 +241,7 @@ static int write_page(const demo_context *context, const demo_section **ordered)
     return status;
 }
 
-static int make_directory(const char *path)
+static int make_parents(const char *path)
 {
     char *copy = duplicate(path);
     if (!copy)
@@ -205,9 +256,15 @@ static int make_directory(const char *path)
             *p = '/';
         }
     }
-    int status = (mkdir(copy, 0777) == 0 || errno == EEXIST) ? 0 : -1;
     free(copy);
-    return status;
+    return 0;
+}
+
+static int make_directory(const char *path)
+{
+    if (make_parents(path) != 0)
+        return -1;
+    return (mkdir(path, 0777) == 0 || errno == EEXIST) ? 0 : -1;
 }
 
 static int any_section_matches(const demo_section *const *ordered, const char *only)
@@ -285,6 +342,7 @@ const cg_command cg_command_demo = {
     "Renders one PNG per algorithm into DIR (default: out) and writes\n"
     "DIR/index.html, a page with a section per chapter of the lecture notes;\n"
     "each picture has a caption naming the algorithm and the command that makes\n"
-    "it.  --only renders just the sections whose title contains TEXT.\n",
+    "it, run in DIR (its inputs are written there; see docs/gallery.md).\n"
+    "--only renders just the sections whose title contains TEXT.\n",
     run,
 };

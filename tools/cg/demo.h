@@ -19,7 +19,8 @@ typedef struct demo_section {
 
 /* Saves image as FILE (a .png name, no directory) in the gallery folder and
  * adds it to the page with a caption naming the algorithm and the command
- * that reproduces it (NULL when there is none).  Returns 0 or prints an error
+ * that reproduces it (NULL when there is none).  The command runs in the
+ * gallery folder and writes FILE there (`cg demo --only ...` writes out/FILE).  Returns 0 or prints an error
  * and returns non-zero. */
 int demo_add(demo_context *context, const char *file, const cg_image *image, const char *caption,
              const char *command);
@@ -27,5 +28,11 @@ int demo_add(demo_context *context, const char *file, const cg_image *image, con
 /* The gallery folder, for sections that write other files (inputs of the
  * commands they show, for example). */
 const char *demo_directory(const demo_context *context);
+
+/* Copies a file of the source tree (path relative to its root, such as
+ * data/meshes/bunny.obj) to the same relative path in the gallery folder, so
+ * that captions naming it run there.  Does nothing in an installed tool
+ * (no source tree).  Returns 0 or prints an error and returns non-zero. */
+int demo_copy_input(demo_context *context, const char *relative);
 
 #endif

@@ -2,6 +2,7 @@
  * (Figure 11.6), fill rules, a mesh cut by a box and frustum culling. */
 #include "clip_view.h"
 #include "demo.h"
+#include "draw_demo.h"
 
 #include "cg/xform.h"
 
@@ -9,19 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const cg_rgba8 WHITE = {255, 255, 255, 255}, GREY = {170, 170, 170, 255};
+static const cg_rgba8 GREY = {170, 170, 170, 255};
 static const cg_rgba8 INK = {30, 30, 30, 255}, WINDOW = {200, 40, 30, 255};
 static const cg_rgba8 KEEP = {30, 110, 220, 255};
 static const cg_rgba8 RESULT = {251, 188, 5, 235}, RESULT2 = {52, 168, 83, 220};
-
-static cg_image *canvas(int w, int h)
-{
-    cg_image *im = NULL;
-    if (cg_image_create(&im, w, h, CG_PIXEL_RGBA8) != CG_OK)
-        return NULL;
-    cg_image_clear_rgba8(im, WHITE);
-    return im;
-}
 
 /* a deterministic generator for the pictures */
 static double unit(uint64_t *s)
@@ -32,34 +24,91 @@ static double unit(uint64_t *s)
     return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static int add(demo_context *c, const char *file, cg_image *im, const char *caption,
-               const char *command)
+/* Appends a stroked polyline (world coordinates, width in pixels) to a draw
+ * script, as clip_view_polyline strokes it: round joins and caps.  Pixel
+ * coordinates with 4 decimals: the script defines the picture, and this
+ * keeps the mesh pictures' scripts small. */
+static void script_polyline(sketch *t, const clip_view *v, const cg_vec2 *p, size_t n,
+                            int closed, double width, cg_rgba8 color)
 {
-    if (!im)
+    sketch_add(t, "color #%02x%02x%02x%02x\nwidth %.17g\npath", color.r, color.g, color.b,
+               color.a, width);
+    for (size_t i = 0; i < n; i++) {
+        cg_vec2 q = clip_view_map(v, p[i]);
+        sketch_add(t, " %c %.4f %.4f", i ? 'L' : 'M', q.x, q.y);
+    }
+    sketch_add(t, "%s\nstroke\n", closed ? " Z" : "");
+}
+
+/* A draw script for a picture of polygon sets, starting with a white
+ * canvas with round joins and caps (as clip_view strokes). */
+static sketch *canvas(int w, int h)
+{
+    sketch *k = calloc(1, sizeof *k);
+    if (k)
+        sketch_add(k, "size %d %d\nbackground #ffffff\njoin round\ncap round\n", w, h);
+    return k;
+}
+
+/* The set filled anti-aliased under the non-zero rule, as clip_view_fill
+ * does: one aapolygon with a contour line per further ring. */
+static void script_fill(sketch *t, const clip_view *v, const cg_polygon_set *set, cg_rgba8 color)
+{
+    if (!set || set->ring_count == 0)
+        return;
+    sketch_add(t, "color #%02x%02x%02x%02x\nfillrule nonzero\n", color.r, color.g, color.b,
+               color.a);
+    for (size_t r = 0; r < set->ring_count; r++) {
+        sketch_add(t, r ? "contour" : "aapolygon");
+        for (size_t i = set->ring_start[r]; i < set->ring_start[r + 1]; i++) {
+            cg_vec2 q = clip_view_map(v, set->points[i]);
+            sketch_add(t, " %.4f %.4f", q.x, q.y);
+        }
+        sketch_add(t, "\n");
+    }
+}
+
+/* Every ring of the set stroked closed, as clip_view_stroke does. */
+static void script_stroke(sketch *t, const clip_view *v, const cg_polygon_set *set, double width,
+                          cg_rgba8 color)
+{
+    for (size_t r = 0; set && r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        script_polyline(t, v, set->points + a, b - a, 1, width, color);
+    }
+}
+
+/* Writes the script next to its picture, adds the picture and frees both. */
+static int add(demo_context *c, const char *name, sketch *k, const char *caption)
+{
+    if (!k)
         return 1;
-    int r = demo_add(c, file, im, caption, command);
-    cg_image_free(im);
+    int r = draw_demo_sketch(c, k, name, caption);
+    free(k);
     return r;
 }
 
+/* 40 random segments clipped by the window in C; the picture is a draw
+ * script of the segments, the window and the visible parts, so that its
+ * caption's command draws it again. */
 static int lines(demo_context *c, int liang)
 {
-    cg_image *im = canvas(480, 360);
-    if (!im)
+    sketch *k = canvas(480, 360);
+    if (!k)
         return 1;
     cg_rect w = {-1.5, -1, 1.5, 1};
     clip_view v = clip_view_fit(cg_vec2_make(-3, -2.2), cg_vec2_make(3, 2.2), 480, 360, 10);
     /* the window's lines extended: the nine regions of the rCodes */
     cg_vec2 ext[4][2] = {{{-1.5, -3}, {-1.5, 3}}, {{1.5, -3}, {1.5, 3}}, {{-4, -1}, {4, -1}}, {{-4, 1}, {4, 1}}};
     for (int i = 0; i < 4; i++)
-        clip_view_polyline(im, &v, ext[i], 2, 0, 1, (cg_rgba8){220, 220, 220, 255});
+        script_polyline(k, &v, ext[i], 2, 0, 1, (cg_rgba8){220, 220, 220, 255});
     cg_vec2 box[4] = {{-1.5, -1}, {1.5, -1}, {1.5, 1}, {-1.5, 1}};
-    clip_view_polyline(im, &v, box, 4, 1, 2.5, WINDOW);
+    script_polyline(k, &v, box, 4, 1, 2.5, WINDOW);
     uint64_t s = liang ? 99 : 7;
     for (int i = 0; i < 40; i++) {
         cg_vec2 a = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2}, b = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2};
         cg_vec2 seg[2] = {a, b};
-        clip_view_polyline(im, &v, seg, 2, 0, 1.2, GREY);
+        script_polyline(k, &v, seg, 2, 0, 1.2, GREY);
         int acc = 0;
         if (liang)
             cg_clip_line_liang_barsky(w, &a, &b, &acc);
@@ -67,15 +116,17 @@ static int lines(demo_context *c, int liang)
             cg_clip_line_cohen_sutherland(w, &a, &b, &acc, NULL, NULL);
         if (acc) {
             cg_vec2 in[2] = {a, b};
-            clip_view_polyline(im, &v, in, 2, 0, 3, KEEP);
+            script_polyline(k, &v, in, 2, 0, 3, KEEP);
         }
     }
-    return add(c, liang ? "clip-liang-barsky.png" : "clip-cohen-sutherland.png", im,
-               liang ? "Liang-Barsky: 40 segments (grey) and their parametric clip against the window (blue)"
-                     : "Cohen-Sutherland: 40 segments (grey) against the window; the extended window "
-                       "edges bound the nine rCode regions (TBRL); visible parts in blue",
-               liang ? "cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --algorithm liang-barsky"
-                     : "cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --trace");
+    return add(
+        c, liang ? "clip-liang-barsky" : "clip-cohen-sutherland", k,
+        liang ? "Liang-Barsky: 40 segments (grey) and their parametric clip against the window "
+                "(blue); one segment clipped as text: cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 "
+                "--algorithm liang-barsky"
+              : "Cohen-Sutherland: 40 segments (grey) against the window; the extended window "
+                "edges bound the nine rCode regions (TBRL); visible parts in blue; one segment "
+                "step by step: cg clip line -1.5 -1 1.5 1 -2.5 0.3 2 1.9 --trace");
 }
 
 static void ring_set(cg_polygon_set *s, const cg_vec2 *p, size_t n, int new_polygon)
@@ -120,20 +171,20 @@ static void save_wkt(demo_context *c, const char *name, const cg_polygon_set *s)
 }
 
 /* panel (col,row) of a grid: draws A, B faint and the result solid */
-static void panel(cg_image *im, int col, int row, int pw, int ph, const cg_polygon_set *a,
+static void panel(sketch *im, int col, int row, int pw, int ph, const cg_polygon_set *a,
                   const cg_polygon_set *b, const cg_polygon_set *r, cg_vec2 lo, cg_vec2 hi)
 {
     clip_view v = clip_view_fit(lo, hi, pw, ph, 14);
     v.ox += col * pw;
     v.oy += row * ph;
     if (r)
-        clip_view_fill(im, &v, r, RESULT);
+        script_fill(im, &v, r, RESULT);
     if (a)
-        clip_view_stroke(im, &v, a, 1.2, (cg_rgba8){40, 90, 200, 255});
+        script_stroke(im, &v, a, 1.2, (cg_rgba8){40, 90, 200, 255});
     if (b)
-        clip_view_stroke(im, &v, b, 1.2, WINDOW);
+        script_stroke(im, &v, b, 1.2, WINDOW);
     if (r)
-        clip_view_stroke(im, &v, r, 2.2, INK);
+        script_stroke(im, &v, r, 2.2, INK);
 }
 
 static int polygons(demo_context *c)
@@ -149,15 +200,15 @@ static int polygons(demo_context *c)
     if (cg_clip_sutherland_hodgman(W, 10, pent, 5, &out, &n) == CG_OK && n)
         ring_set(&sr, out, n, 1);
     free(out);
-    cg_image *im = canvas(480, 420);
+    sketch *im = canvas(480, 420);
     if (im)
         panel(im, 0, 0, 480, 420, &sw, &sp, &sr, cg_vec2_make(-0.4, -0.2), cg_vec2_make(4.4, 4.8));
     save_wkt(c, "clip-w.wkt", &sw);
     save_wkt(c, "clip-pentagon.wkt", &sp);
-    int r = add(c, "clip-sutherland-hodgman.png", im,
+    int r = add(c, "clip-sutherland-hodgman", im,
                 "Sutherland-Hodgman: the concave W (blue) clipped edge by edge against a convex "
-                "pentagon (red); one output polygon, joined along the window's edge as the notes warn",
-                "cg clip polygon clip-pentagon.wkt clip-w.wkt -o clip-sutherland-hodgman.png");
+                "pentagon (red); one output polygon, joined along the window's edge as the notes warn (the clipped polygon as WKT: cg clip "
+                "polygon clip-pentagon.wkt clip-w.wkt)");
     cg_polygon_set wr = {0};
     if (!r) {
         /* Weiler-Atherton: a comb-shaped window splits a disc into pieces */
@@ -177,21 +228,21 @@ static int polygons(demo_context *c)
                 for (size_t k = wr.polygon_start[p]; k < wr.polygon_start[p + 1]; k++)
                     ring_set(&one, wr.points + wr.ring_start[k], wr.ring_start[k + 1] - wr.ring_start[k],
                              k == wr.polygon_start[p]);
-                clip_view_fill(im, &v, &one, p % 2 ? RESULT2 : RESULT);
+                script_fill(im, &v, &one, p % 2 ? RESULT2 : RESULT);
                 cg_polygon_set_clear(&one);
             }
-            clip_view_stroke(im, &v, &disc, 1.2, (cg_rgba8){40, 90, 200, 255});
-            clip_view_stroke(im, &v, &cs, 1.5, WINDOW);
-            clip_view_stroke(im, &v, &wr, 2.2, INK);
+            script_stroke(im, &v, &disc, 1.2, (cg_rgba8){40, 90, 200, 255});
+            script_stroke(im, &v, &cs, 1.5, WINDOW);
+            script_stroke(im, &v, &wr, 2.2, INK);
         }
         save_wkt(c, "clip-comb.wkt", &cs);
         save_wkt(c, "clip-disc.wkt", &disc);
-        char caption[200];
+        char caption[300];
         snprintf(caption, sizeof caption,
                  "Weiler-Atherton: a disc (blue) clipped by a concave comb (red) gives %zu separate "
-                 "polygons", wr.polygon_count);
-        r = add(c, "clip-weiler-atherton.png", im, caption,
-                "cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm weiler-atherton -o out.png");
+                 "polygons (as WKT: cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm "
+                 "weiler-atherton)", wr.polygon_count);
+        r = add(c, "clip-weiler-atherton", im, caption);
         cg_polygon_set_clear(&disc);
         cg_polygon_set_clear(&cs);
     }
@@ -217,7 +268,7 @@ static int booleans(demo_context *c)
     save_wkt(c, "clip-a.wkt", &a);
     save_wkt(c, "clip-b.wkt", &b);
     const int pw = 300, ph = 240;
-    cg_image *im = canvas(pw * 3, ph * 2);
+    sketch *im = canvas(pw * 3, ph * 2);
     if (!im)
         return 1;
     cg_vec2 lo = {-1.15, -1.3}, hi = {2.25, 1.55};
@@ -232,10 +283,10 @@ static int booleans(demo_context *c)
             status = 1;
         panel(im, (k + 1) % 3, (k + 1) / 3, pw, ph, &a, &b, &r, lo, hi);
     }
-    status |= add(c, "clip-boolean.png", im,
+    status |= add(c, "clip-boolean", im,
                   "Figure 11.6 by the scanbeam (Vatti-style) boolean operations: A (blue, a disc with a "
-                  "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B",
-                  "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o out.png");
+                  "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B (one of them: "
+                  "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o xor.png)");
     cg_polygon_set_clear(&a);
     cg_polygon_set_clear(&b);
     cg_polygon_set_clear(&r);
@@ -257,7 +308,7 @@ static int fill_rules(demo_context *c)
     ring_set(&s, sq, 4, 1);
     save_wkt(c, "clip-star.wkt", &s);
     const int pw = 240, ph = 240;
-    cg_image *im = canvas(pw * 4, ph);
+    sketch *im = canvas(pw * 4, ph);
     if (!im)
         return 1;
     int status = 0;
@@ -266,10 +317,10 @@ static int fill_rules(demo_context *c)
             status = 1;
         panel(im, k, 0, pw, ph, &s, NULL, &r, cg_vec2_make(-1.05, -1.0), cg_vec2_make(1.05, 1.05));
     }
-    status |= add(c, "clip-fill-rules.png", im,
+    status |= add(c, "clip-fill-rules", im,
                   "One self-intersecting set of paths (a pentagram and a clockwise square) under the four fill "
-                  "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes",
-                  "cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o out.png");
+                  "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes "
+                  "(one rule: cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o positive.png)");
     cg_polygon_set_clear(&s);
     cg_polygon_set_clear(&r);
     return status;
@@ -304,7 +355,7 @@ static cg_mesh *torus(int nu, int nv)
     return m;
 }
 
-static void draw_mesh(cg_image *im, const clip_view *v, const cg_mesh *m, cg_mat4 proj, cg_rgba8 col,
+static void draw_mesh(sketch *im, const clip_view *v, const cg_mesh *m, cg_mat4 proj, cg_rgba8 col,
                       double width, int lit)
 {
     for (size_t f = 0; f < m->face_count; f++) {
@@ -323,11 +374,11 @@ static void draw_mesh(cg_image *im, const clip_view *v, const cg_mesh *m, cg_mat
             double shade = 0.35 + 0.65 * nrm.z;
             cg_polygon_set t = {0};
             cg_polygon_set_add_ring(&t, p, 3, 1);
-            clip_view_fill(im, v, &t, (cg_rgba8){(uint8_t)(60 * shade + 40), (uint8_t)(140 * shade + 40),
+            script_fill(im, v, &t, (cg_rgba8){(uint8_t)(60 * shade + 40), (uint8_t)(140 * shade + 40),
                                                   (uint8_t)(230 * shade + 20), 255});
             cg_polygon_set_clear(&t);
         } else {
-            clip_view_polyline(im, v, p, 3, 1, width, col);
+            script_polyline(im, v, p, 3, 1, width, col);
         }
     }
 }
@@ -339,7 +390,7 @@ static int mesh_cut(demo_context *c)
         return 1;
     cg_mat4 proj = cg_proj_axonometric(cg_radians(-30), cg_radians(35));
     const int pw = 320, ph = 300;
-    cg_image *im = canvas(pw * 3, ph);
+    sketch *im = canvas(pw * 3, ph);
     int status = im ? 0 : 1;
     for (int k = 0; k < 3 && !status; k++) {
         /* the box translated along x in steps, as in the notes' Fig. 11.9 */
@@ -367,20 +418,21 @@ static int mesh_cut(demo_context *c)
             p0 = cg_mat4_transform_point(proj, cg_vec3_make(c0[0], c0[1], c0[2]));
             p1 = cg_mat4_transform_point(proj, cg_vec3_make(c1[0], c1[1], c1[2]));
             cg_vec2 seg[2] = {{p0.x, p0.y}, {p1.x, p1.y}};
-            clip_view_polyline(im, &v, seg, 2, 0, 1.5, WINDOW);
+            script_polyline(im, &v, seg, 2, 0, 1.5, WINDOW);
         }
         cg_mesh_free(cut);
     }
     cg_mesh_free(m);
     if (status) {
-        cg_image_free(im);
+        if (im)
+            free(im->text);
+        free(im);
         return 1;
     }
-    return add(c, "clip-mesh-box.png", im,
+    return add(c, "clip-mesh-box", im,
                "3D clipping of a torus (4,032 triangles) against an axis-aligned box moved along x in "
                "steps, as in Fig. 11.9: triangles cut at the box faces with interpolated normals, the "
-               "cut closed (shared edges give the same new vertex)",
-               "cg demo --only Clipping");
+               "cut closed (shared edges give the same new vertex)");
 }
 
 static int culling(demo_context *c)
@@ -390,7 +442,7 @@ static int culling(demo_context *c)
     cg_view_look_at(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, -1), cg_vec3_make(0, 1, 0), &view);
     cg_plane planes[6];
     cg_frustum_planes(cg_mat4_mul(proj, view), planes);
-    cg_image *im = canvas(480, 420);
+    sketch *im = canvas(480, 420);
     if (!im)
         return 1;
     /* top view: x right, -z up */
@@ -407,19 +459,19 @@ static int culling(demo_context *c)
         cg_vec2 p[4] = {{b.lo.x, -b.hi.z}, {b.hi.x, -b.hi.z}, {b.hi.x, -b.lo.z}, {b.lo.x, -b.lo.z}};
         cg_polygon_set_add_ring(&sq, p, 4, 1);
         static const cg_rgba8 col[3] = {{200, 200, 200, 255}, {251, 188, 5, 255}, {52, 168, 83, 255}};
-        clip_view_fill(im, &v, &sq, col[cull]);
-        clip_view_stroke(im, &v, &sq, 0.8, INK);
+        script_fill(im, &v, &sq, col[cull]);
+        script_stroke(im, &v, &sq, 0.8, INK);
         cg_polygon_set_clear(&sq);
     }
     double t = tan(cg_radians(25));
     cg_vec2 fr[4] = {{-t * 1, 1}, {t * 1, 1}, {t * 30, 30}, {-t * 30, 30}};
-    clip_view_polyline(im, &v, fr, 4, 1, 2, WINDOW);
+    script_polyline(im, &v, fr, 4, 1, 2, WINDOW);
     char caption[256];
     snprintf(caption, sizeof caption,
              "Frustum culling by bounding boxes (top view, camera at the bottom looking up): %d outside "
              "(grey), %d crossing a plane (yellow), %d inside (green)",
              counts[0], counts[1], counts[2]);
-    return add(c, "clip-frustum-culling.png", im, caption, "cg demo --only Clipping");
+    return add(c, "clip-frustum-culling", im, caption);
 }
 
 static int render(demo_context *context)

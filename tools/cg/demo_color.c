@@ -164,9 +164,9 @@ static int primaries(demo_context *context, int subtractive)
     }
     return add(context, subtractive ? "color-cmy.png" : "color-rgb.png", image,
                subtractive ? "CMY: cyan, magenta and yellow inks subtract from white paper "
-                             "(C = 1 - R ...); all three give black"
+                             "(C = 1 - R ...); all three give black; as numbers: cg color rgb-cmy 1 0 0"
                            : "RGB: red, green and blue lights add; all three give white",
-               "cg color rgb-cmy 1 0 0");
+               "cg demo --only 'Colour models'");
 }
 
 /* Rows of tints, shades and tones of six hues. */
@@ -226,8 +226,9 @@ static int gamma_ramp(demo_context *context)
                "linear intensities written to the screen uncorrected look like (the display's "
                "power law darkens them). Middle: equal steps of linear light, encoded with the "
                "exact sRGB curve. Bottom: the same steps gamma-corrected for a CRT with "
-               "gamma 2.2 (V = I^(1/2.2)), close to sRGB",
-               "cg color linear-srgb 0.5 0.5 0.5");
+               "gamma 2.2 (V = I^(1/2.2)), close to sRGB; one step as numbers: cg color "
+               "linear-srgb 0.5 0.5 0.5",
+               "cg demo --only 'Colour models'");
 }
 
 static int render_models(demo_context *context)

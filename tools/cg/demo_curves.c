@@ -42,47 +42,81 @@ static const char curves_script[] =
     "color #16a085\n"
     "catmullrom 620 230 640 40 700 200 740 30 780 220\n";
 
+/* Draw-script lines for the pictures below: the curves are computed in C
+ * and written as commands, so each picture's caption is `cg draw`. */
+static void set_color(script_text *t, cg_rgba8 c)
+{
+    script_add(t, "color #%02x%02x%02x\n", c.r, c.g, c.b);
+}
+
+static void polyline_aa(script_text *t, const cg_vec2 *p, int n)
+{
+    for (int i = 0; i + 1 < n; i++)
+        script_add(t, "aaline %.17g %.17g %.17g %.17g\n", p[i].x, p[i].y, p[i + 1].x, p[i + 1].y);
+}
+
+static void disc(script_text *t, cg_vec2 p, int r)
+{
+    script_add(t, "disc %d %d %d\n", (int)p.x, (int)p.y, r);
+}
+
+static void bezier(script_text *t, const cg_vec2 *p, int n, double tolerance)
+{
+    script_add(t, "tolerance %.17g\nbezier", tolerance);
+    for (int i = 0; i < n; i++)
+        script_add(t, " %.17g %.17g", p[i].x, p[i].y);
+    script_add(t, "\n");
+}
+
+static void start(script_text *t, int width, int height)
+{
+    script_add(t, "size %d %d\nbackground #%02x%02x%02x\nantialias on\n", width, height, white.r,
+               white.g, white.b);
+}
+
 /* de Casteljau's construction at t = 0.4 for a quartic. */
 static int casteljau(demo_context *context)
 {
-    cg_image *image;
-    if (cg_image_create(&image, 420, 300, CG_PIXEL_RGBA8) != CG_OK)
-        return 1;
-    cg_image_clear_rgba8(image, white);
+    script_text s = {.length = 0};
+    start(&s, 420, 300);
     cg_vec2 p[5] = {{30, 270}, {70, 40}, {210, 20}, {390, 90}, {330, 280}}, work[5];
     double t = 0.4;
     const cg_rgba8 colours[4] = {polygon, orange, green, blue};
     for (int i = 0; i < 5; i++)
         work[i] = p[i];
     for (int level = 4; level >= 1; level--) {
-        cg_draw_polyline_aa(image, work, level + 1, colours[4 - level]);
+        set_color(&s, colours[4 - level]);
+        polyline_aa(&s, work, level + 1);
         for (int i = 0; i <= level; i++)
-            cg_draw_disc(image, (int)work[i].x, (int)work[i].y, 3, colours[4 - level]);
+            disc(&s, work[i], 3);
         for (int i = 0; i < level; i++)
             work[i] = cg_vec2_add(cg_vec2_scale(work[i], 1 - t), cg_vec2_scale(work[i + 1], t));
     }
     cg_vec2 left[5], right[5];
     cg_bezier_split(p, 5, t, left, right);
-    cg_draw_bezier(image, left, 5, 0.2, CG_DRAW_ANTIALIASED, red);
-    cg_draw_bezier(image, right, 5, 0.2, CG_DRAW_ANTIALIASED, dark);
-    cg_draw_disc(image, (int)work[0].x, (int)work[0].y, 5, red);
-    int status = demo_add(context, "curve-casteljau.png", image,
-                          "de Casteljau's algorithm on a quartic Bezier at t = 0.4: each level "
-                          "interpolates the one before; the last point is Q(0.4), and the "
-                          "intermediate points are the control polygons of the two halves "
-                          "(subdivision: red and dark)",
-                          "cg demo --only 'Parametric curves'");
-    cg_image_free(image);
-    return status;
+    set_color(&s, red);
+    bezier(&s, left, 5, 0.2);
+    set_color(&s, dark);
+    bezier(&s, right, 5, 0.2);
+    set_color(&s, red);
+    disc(&s, work[0], 5);
+    return draw_demo_script(context, "curve-casteljau", s.text,
+                            "de Casteljau's algorithm on a quartic Bezier at t = 0.4: each level "
+                            "interpolates the one before; the last point is Q(0.4), and the "
+                            "intermediate points are the control polygons of the two halves "
+                            "(subdivision: red and dark)");
 }
 
-typedef struct dots { cg_image *image; cg_vec2 last; int count; } dots;
+typedef struct dots { script_text *script; cg_vec2 last; int count; } dots;
 
 static cg_status add_dot(void *user, cg_vec2 p)
 {
     dots *d = user;
-    cg_draw_line_aa(d->image, d->last.x, d->last.y, p.x, p.y, blue);
-    cg_draw_disc(d->image, (int)p.x, (int)p.y, 2, red);
+    cg_vec2 segment[2] = {d->last, p};
+    set_color(d->script, blue);
+    polyline_aa(d->script, segment, 2);
+    set_color(d->script, red);
+    disc(d->script, p, 2);
     d->last = p;
     d->count++;
     return CG_OK;
@@ -91,36 +125,33 @@ static cg_status add_dot(void *user, cg_vec2 p)
 /* The same cubic flattened within 8, 2 and 0.25 pixels. */
 static int flattening(demo_context *context)
 {
-    cg_image *image;
-    if (cg_image_create(&image, 720, 240, CG_PIXEL_RGBA8) != CG_OK)
-        return 1;
-    cg_image_clear_rgba8(image, white);
+    static script_text s; /* large: the flattened points of three curves */
+    s.length = 0;
+    start(&s, 720, 240);
     const double tolerances[3] = {8, 2, 0.25};
     for (int k = 0; k < 3; k++) {
         double ox = 10 + 240 * k;
         cg_vec2 p[4] = {{ox, 220}, {ox + 210, 230}, {ox + 230, 130}, {ox + 120, 10}};
-        cg_draw_bezier(image, p, 4, 0.05, CG_DRAW_ANTIALIASED, polygon);
-        dots d = {image, p[0], 0};
-        cg_draw_disc(image, (int)p[0].x, (int)p[0].y, 2, red);
+        set_color(&s, polygon);
+        bezier(&s, p, 4, 0.05);
+        dots d = {&s, p[0], 0};
+        set_color(&s, red);
+        disc(&s, p[0], 2);
         cg_bezier_flatten(p, 4, tolerances[k], add_dot, &d);
     }
-    int status = demo_add(context, "curve-flatten.png", image,
-                          "Adaptive flattening of one cubic Bezier within 8, 2 and 0.25 pixels (grey: "
-                          "the exact curve): halves are split only where the control points are "
-                          "farther than the tolerance from the chord, so flat parts get few points",
-                          "cg demo --only 'Parametric curves'");
-    cg_image_free(image);
-    return status;
+    return draw_demo_script(context, "curve-flatten", s.text,
+                            "Adaptive flattening of one cubic Bezier within 8, 2 and 0.25 pixels "
+                            "(grey: the exact curve): halves are split only where the control "
+                            "points are farther than the tolerance from the chord, so flat parts "
+                            "get few points");
 }
 
 /* Joins of two Bézier segments: G0 only, G1 and C1, as reported by
  * cg_cubic2_continuity (the colour of the joint says which). */
 static int continuity(demo_context *context)
 {
-    cg_image *image;
-    if (cg_image_create(&image, 720, 220, CG_PIXEL_RGBA8) != CG_OK)
-        return 1;
-    cg_image_clear_rgba8(image, white);
+    script_text s = {.length = 0};
+    start(&s, 720, 220);
     for (int k = 0; k < 3; k++) {
         double ox = 20 + 240 * k;
         cg_cubic2 a = {CG_BASIS_BEZIER, {{ox, 180}, {ox + 20, 60}, {ox + 80, 40}, {ox + 110, 110}}};
@@ -130,23 +161,23 @@ static int continuity(demo_context *context)
         if (k == 2)
             cg_cubic2_join_c1(&a, &b);
         cg_continuity c = cg_cubic2_continuity(&a, &b, 1e-9);
-        for (int s = 0; s < 2; s++) {
-            const cg_cubic2 *q = s ? &b : &a;
-            cg_draw_polyline_aa(image, q->g, 4, polygon);
+        for (int segment = 0; segment < 2; segment++) {
+            const cg_cubic2 *q = segment ? &b : &a;
+            set_color(&s, polygon);
+            polyline_aa(&s, q->g, 4);
             for (int i = 0; i < 4; i++)
-                cg_draw_disc(image, (int)q->g[i].x, (int)q->g[i].y, 2, polygon);
-            cg_draw_bezier(image, q->g, 4, 0.2, CG_DRAW_ANTIALIASED, s ? blue : dark);
+                disc(&s, q->g[i], 2);
+            set_color(&s, segment ? blue : dark);
+            bezier(&s, q->g, 4, 0.2);
         }
-        cg_draw_disc(image, (int)b.g[0].x, (int)b.g[0].y, 5,
-                     c == CG_CONTINUITY_C1 ? green : c == CG_CONTINUITY_G1 ? orange : red);
+        set_color(&s, c == CG_CONTINUITY_C1 ? green : c == CG_CONTINUITY_G1 ? orange : red);
+        disc(&s, b.g[0], 5);
     }
-    int status = demo_add(context, "curve-continuity.png", image,
-                          "Two Bezier segments joined at a knot: G0 only (left, red), a G1 join built "
-                          "by cg_cubic2_join_g1 (middle: P3, P4, P5 collinear) and a C1 join built by "
-                          "cg_cubic2_join_c1 (right: P4 - P3 = P5 - P4), as cg_cubic2_continuity reports",
-                          "cg demo --only 'Parametric curves'");
-    cg_image_free(image);
-    return status;
+    return draw_demo_script(context, "curve-continuity", s.text,
+                            "Two Bezier segments joined at a knot: G0 only (left, red), a G1 join "
+                            "built by cg_cubic2_join_g1 (middle: P3, P4, P5 collinear) and a C1 join "
+                            "built by cg_cubic2_join_c1 (right: P4 - P3 = P5 - P4), as "
+                            "cg_cubic2_continuity reports");
 }
 
 static int render(demo_context *context)

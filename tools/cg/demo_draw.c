@@ -21,11 +21,14 @@ static int zoomed_line(demo_context *context)
     cg_draw_line(grid, x0, y0, x1, y1, ink);
     zoom_fill_drawn(&z, grid, (cg_rgba8){140, 170, 230, 255});
     cg_image_free(grid);
+    sketch k = {0};
+    zoom_to_script(&z, &k);
     /* midpoints (x + 1, y + 1/2) tested at each step, in pixel-centre terms */
     long long dx = x1 - x0, dy = y1 - y0, f = 2 * dy - dx, y = y0;
     for (int x = x0; x < x1; x++) {
         double mx = zoom_x(&z, x + 1.5), my = zoom_x(&z, y + 1.0);
-        cg_draw_disc(z.image, (int)mx, (int)my, 3, f > 0 ? red : orange);
+        cg_rgba8 c = f > 0 ? red : orange;
+        sketch_add(&k, "color #%02x%02x%02x\ndisc %d %d 3\n", c.r, c.g, c.b, (int)mx, (int)my);
         if (f > 0) {
             y++;
             f += 2 * (dy - dx);
@@ -33,13 +36,13 @@ static int zoomed_line(demo_context *context)
             f += 2 * dy;
         }
     }
-    cg_draw_line_aa(z.image, zoom_x(&z, x0 + 0.5), zoom_x(&z, y0 + 0.5), zoom_x(&z, x1 + 0.5),
-                    zoom_x(&z, y1 + 0.5), (cg_rgba8){20, 20, 20, 255});
-    return zoom_add(context, &z, "draw-line-zoom.png",
-                    "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the real "
-                    "line through the pixel centres, and the midpoints tested at each step "
-                    "(red: below the line, NE chosen; orange: above or on it, E)",
-                    "cg trace line 1 1 22 9");
+    sketch_add(&k, "color #141414\naaline %.17g %.17g %.17g %.17g\n", zoom_x(&z, x0 + 0.5),
+               zoom_x(&z, y0 + 0.5), zoom_x(&z, x1 + 0.5), zoom_x(&z, y1 + 0.5));
+    return draw_demo_sketch(context, &k, "draw-line-zoom",
+                           "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the "
+                           "real line through the pixel centres, and the midpoints tested at each "
+                           "step (red: below the line, NE chosen; orange: above or on it, E); the "
+                           "steps as text: cg trace line 1 1 22 9");
 }
 
 /* Colours the cells of the first octant as Algorithm 2 selects them. */
@@ -68,18 +71,21 @@ static int zoomed_circle(demo_context *context)
     octant_cells cells = {&z, c};
     cg_circle_trace(r, octant_cell, &cells);
     double cx = zoom_x(&z, c + 0.5);
-    cg_draw_circle_aa(z.image, cx, cx, r * z.cell, (cg_rgba8){20, 20, 20, 255});
+    sketch k = {0};
+    zoom_to_script(&z, &k);
+    sketch_add(&k, "color #141414\naacircle %.17g %.17g %d\ncolor #787878a0\n", cx, cx,
+               r * z.cell);
     /* the lines of symmetry */
-    for (int k = 0; k < 4; k++) {
-        double a = k * CG_PI / 4, len = (r + 2) * z.cell;
-        cg_draw_line_aa(z.image, cx - len * cos(a), cx - len * sin(a), cx + len * cos(a),
-                        cx + len * sin(a), (cg_rgba8){120, 120, 120, 160});
+    for (int i = 0; i < 4; i++) {
+        double a = i * CG_PI / 4, len = (r + 2) * z.cell;
+        sketch_add(&k, "aaline %.17g %.17g %.17g %.17g\n", cx - len * cos(a), cx - len * sin(a),
+                   cx + len * cos(a), cx + len * sin(a));
     }
-    return zoom_add(context, &z, "draw-circle-zoom.png",
-                    "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: octant 1 "
-                    "(orange, 0 <= x <= y) is computed and mirrored about the four lines of "
-                    "symmetry; each pixel is drawn once",
-                    "cg trace circle 11");
+    return draw_demo_sketch(context, &k, "draw-circle-zoom",
+                           "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: "
+                           "octant 1 (orange, 0 <= x <= y) is computed and mirrored about the "
+                           "four lines of symmetry; each pixel is drawn once; the steps as text: "
+                           "cg trace circle 11");
 }
 
 static int lines(demo_context *context)

@@ -118,7 +118,10 @@ static int gradients(demo_context *context, cg_rasterizer *r)
 }
 
 /* A random maze with a few passages walled up, each separate region
- * flood-filled from one seed in its own colour. */
+ * flood-filled from one seed in its own colour.  The maze is generated in C
+ * and drawn magnified by a script: its walls as rectangles (one per run of
+ * wall pixels in a row), then a flood from each region's seed (magnified by
+ * whole blocks, the regions keep their 4-connectivity). */
 static int maze(demo_context *context)
 {
     enum { CELLS = 40, SCALE = 6 };
@@ -132,6 +135,20 @@ static int maze(demo_context *context)
         cg_image_free(small);
         return 1;
     }
+    sketch k = {0};
+    sketch_add(&k, "size %d %d\nbackground #%02x%02x%02x\ncolor #%02x%02x%02x\n", side * SCALE,
+               side * SCALE, open.r, open.g, open.b, wall.r, wall.g, wall.b);
+    for (int y = 0; y < side; y++)
+        for (int x = 0; x < side;) {
+            int end = x;
+            while (end < side && cg_image_get_rgba8(small, end, y).r == wall.r)
+                end++;
+            if (end > x)
+                sketch_add(&k, "polygon %d %d %d %d %d %d %d %d\n", x * SCALE, y * SCALE,
+                           end * SCALE, y * SCALE, end * SCALE, (y + 1) * SCALE, x * SCALE,
+                           (y + 1) * SCALE);
+            x = end > x ? end : x + 1;
+        }
     static const cg_rgba8 palette[] = {{230, 90, 70, 255},  {70, 150, 220, 255}, {90, 180, 100, 255},
                                        {240, 180, 50, 255}, {160, 100, 200, 255}, {60, 190, 180, 255},
                                        {220, 120, 170, 255}, {150, 150, 60, 255}};
@@ -139,56 +156,57 @@ static int maze(demo_context *context)
     for (int y = 1; y < side; y += 2)
         for (int x = 1; x < side; x += 2) {
             cg_rgba8 p = cg_image_get_rgba8(small, x, y);
-            if (p.r == 255 && p.g == 255 && p.b == 255)
-                cg_flood_fill(small, x, y, palette[regions++ % 8], CG_CONNECT_4, 0, NULL);
+            if (p.r == 255 && p.g == 255 && p.b == 255) {
+                cg_rgba8 c = palette[regions++ % 8];
+                cg_flood_fill(small, x, y, c, CG_CONNECT_4, 0, NULL);
+                sketch_add(&k, "color #%02x%02x%02x\nflood %d %d\n", c.r, c.g, c.b,
+                           x * SCALE + SCALE / 2, y * SCALE + SCALE / 2);
+            }
         }
-    cg_image *image;
-    if (cg_image_create(&image, side * SCALE, side * SCALE, CG_PIXEL_RGBA8) != CG_OK) {
-        cg_image_free(small);
-        return 1;
-    }
-    for (int y = 0; y < side * SCALE; y++)
-        for (int x = 0; x < side * SCALE; x++)
-            cg_image_set_rgba8(image, x, y, cg_image_get_rgba8(small, x / SCALE, y / SCALE));
     cg_image_free(small);
-    return save(context, "fill-maze.png", image,
-                "Flood fill: a random maze with some passages walled up; each region filled "
-                "from one seed by the scan-line span algorithm (4-connected), in its own colour");
+    return draw_demo_sketch(context, &k, "fill-maze",
+                           "Flood fill: a random maze with some passages walled up; each region "
+                           "filled from one seed by the scan-line span algorithm (4-connected), "
+                           "in its own colour");
+}
+
+/* One wall cell of the magnified grid: CELL x CELL pixels from its top-left
+ * grid line, so that cells meeting at a corner touch only diagonally. */
+static void wall_cell(script_text *t, int x, int y, int cell)
+{
+    for (int j = 0; j < cell; j++)
+        script_add(t, "line %d %d %d %d\n", x * cell, y * cell + j, x * cell + cell - 1,
+                   y * cell + j);
 }
 
 /* One-pixel diagonal gaps: a 4-connected fill stops, an 8-connected one
- * leaks through.  Shown magnified. */
+ * leaks through.  Drawn magnified by a script: the walls as blocks of pixels,
+ * the seed fill run on the magnified picture (its connectivity is that of
+ * the pixels), then the grid drawn over it. */
 static int connectivity(demo_context *context)
 {
-    enum { N = 24 };
-    cg_rgba8 white = {255, 255, 255, 255}, wall = {44, 44, 54, 255};
-    cg_rgba8 fills[2] = {{70, 150, 220, 255}, {230, 90, 70, 255}};
-    const char *files[2] = {"fill-connect4.png", "fill-connect8.png"};
+    enum { N = 24, CELL = 11 };
+    const char *fills[2] = {"#4696dc", "#e65a46"};
+    const char *names[2] = {"fill-connect4", "fill-connect8"};
     const char *captions[2] = {
         "Seed fill from the top-left pixel, 4-connected: it stops at the one-pixel diagonal wall",
         "The same seed fill, 8-connected: it slips through the diagonal wall's corners"};
-    int failed = 0;
+    int failed = 0, side = N * CELL + 1;
     for (int k = 0; k < 2; k++) {
-        cg_image *small;
-        zoom z;
-        if (cg_image_create(&small, N, N, CG_PIXEL_RGBA8) != CG_OK)
-            return 1;
-        if (zoom_create(&z, N, N, 11)) {
-            cg_image_free(small);
-            return 1;
-        }
-        cg_image_clear_rgba8(small, white);
+        static script_text t; /* large: a line per pixel row of each wall cell */
+        t.length = 0;
+        script_add(&t, "size %d %d\nbackground #ffffff\ncolor #2c2c36\n", side, side);
         for (int i = 0; i < N; i++) { /* a diagonal wall and short stairs */
-            cg_image_set_rgba8(small, i, N - 1 - i, wall);
+            wall_cell(&t, i, N - 1 - i, CELL);
             if (i % 6 < 3)
-                cg_image_set_rgba8(small, (i + N / 2) % N, i, wall);
+                wall_cell(&t, (i + N / 2) % N, i, CELL);
         }
-        cg_flood_fill(small, 1, 1, fills[k], k ? CG_CONNECT_8 : CG_CONNECT_4, 0, NULL);
-        for (int y = 0; y < N; y++)
-            for (int x = 0; x < N; x++)
-                zoom_fill(&z, x, y, cg_image_get_rgba8(small, x, y));
-        cg_image_free(small);
-        failed |= zoom_add(context, &z, files[k], captions[k], COMMAND);
+        script_add(&t, "color %s\n%s %d %d\ncolor #cdcdcd\n", fills[k], k ? "flood8" : "flood",
+                   CELL + CELL / 2, CELL + CELL / 2);
+        for (int g = 0; g <= N; g++)
+            script_add(&t, "line %d 0 %d %d\nline 0 %d %d %d\n", g * CELL, g * CELL, side - 1,
+                       g * CELL, side - 1, g * CELL);
+        failed |= draw_demo_script(context, names[k], t.text, captions[k]);
     }
     return failed;
 }
@@ -230,32 +248,26 @@ static int pixel_view(demo_context *context, cg_rasterizer *r)
             }
         cg_image_free(small);
         /* the outline and the pixel centres on the magnified image */
-        cg_path *path;
-        if (cg_path_create(&path) == CG_OK) {
-            for (int i = 0; i < 3; i++)
-                (i ? cg_path_line_to : cg_path_move_to)(path, tri[i].x * CELL + 0.5,
-                                                        tri[i].y * CELL + 0.5);
-            cg_path_close(path);
-            cg_stroke_style style = cg_stroke_style_default();
-            style.width = 2;
-            cg_paint outline = cg_paint_solid(red);
-            cg_rasterizer_stroke_path(r, z.image, path, &style, &outline);
-            cg_paint dot = cg_paint_solid((cg_rgba8){40, 40, 48, 255});
-            for (int y = 0; y < H; y++)
-                for (int x = 0; x < W; x++) {
-                    cg_path_reset(path);
-                    cg_path_arc(path, (x + 0.5) * CELL + 0.5, (y + 0.5) * CELL + 0.5, 1.6, 0,
-                                2 * CG_PI);
-                    cg_rasterizer_fill_path(r, z.image, path, CG_FILL_NONZERO, &dot);
-                }
-            cg_path_free(path);
-        }
-        failed |= zoom_add(context, &z, aa ? "fill-pixels-aa.png" : "fill-pixels-aliased.png",
-                           aa ? "Anti-aliased fill, magnified: each pixel shaded by the exact area "
-                                "of it inside the triangle (signed-area accumulation)"
-                              : "Scan-line fill, magnified: a pixel is painted when its centre "
-                                "(dot) is inside the triangle (red)",
-                           COMMAND);
+        sketch k = {0};
+        zoom_to_script(&z, &k);
+        sketch_add(&k, "color #%02x%02x%02x\nwidth 2\npath", red.r, red.g, red.b);
+        for (int i = 0; i < 3; i++)
+            sketch_add(&k, " %c %.17g %.17g", i ? 'L' : 'M', tri[i].x * CELL + 0.5,
+                       tri[i].y * CELL + 0.5);
+        sketch_add(&k, " Z\nstroke\ncolor #282830\n");
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double cx = (x + 0.5) * CELL + 0.5, cy = (y + 0.5) * CELL + 0.5, d = 1.6;
+                sketch_add(&k, "path M %.17g %.17g A %g %g 0 1 1 %.17g %.17g A %g %g 0 1 1 %.17g "
+                               "%.17g Z\nfill\n",
+                           cx + d, cy, d, d, cx - d, cy, d, d, cx + d, cy);
+            }
+        failed |= draw_demo_sketch(context, &k, aa ? "fill-pixels-aa" : "fill-pixels-aliased",
+                                  aa ? "Anti-aliased fill, magnified: each pixel shaded by the "
+                                       "exact area of it inside the triangle (signed-area "
+                                       "accumulation)"
+                                     : "Scan-line fill, magnified: a pixel is painted when its "
+                                       "centre (dot) is inside the triangle (red)");
     }
     return failed;
 }

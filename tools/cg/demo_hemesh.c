@@ -1,15 +1,13 @@
 /* Gallery: the half-edge structure of chapter 9 - half-edges drawn as
  * arrows inside their faces, the one-ring of a vertex, and Loop and
  * Catmull-Clark subdivision levels 0 to 3. */
-#include "demo.h"
-#include "cg/draw.h"
+#include "draw_demo.h"
 #include "cg/hemesh.h"
 #include "cg/xform.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define DEMO_COMMAND "cg demo --only 'Half-edge meshes'"
 
 static const cg_rgba8 white = {255, 255, 255, 255}, ink = {40, 44, 52, 255},
                       faint = {205, 208, 214, 255}, boundary_red = {205, 45, 45, 255},
@@ -44,35 +42,56 @@ static cg_hemesh *make_mesh(const double (*points)[3], size_t n, const uint32_t 
     return h;
 }
 
-static cg_image *blank(int width, int height)
+/* Each picture is a draw script written next to it (the meshes are built,
+ * subdivided and projected in C), so its caption is `cg draw`. */
+static sketch *blank(int width, int height)
 {
-    cg_image *image = NULL;
-    if (cg_image_create(&image, width, height, CG_PIXEL_RGBA8) != CG_OK)
-        return NULL;
-    cg_image_clear_rgba8(image, white);
-    return image;
+    sketch *k = calloc(1, sizeof *k);
+    if (k)
+        sketch_add(k, "size %d %d\nbackground #%02x%02x%02x\n", width, height, white.r, white.g,
+                   white.b);
+    return k;
+}
+
+static void sketch_free(sketch *k)
+{
+    if (k)
+        free(k->text);
+    free(k);
+}
+
+static void set_color(sketch *k, cg_rgba8 c)
+{
+    sketch_add(k, "color #%02x%02x%02x\n", c.r, c.g, c.b);
 }
 
 /* A line about `width` pixels wide: parallel Bresenham lines. */
-static void thick_line(cg_image *image, double x0, double y0, double x1, double y1, int width,
+static void thick_line(sketch *image, double x0, double y0, double x1, double y1, int width,
                        cg_rgba8 color)
 {
+    set_color(image, color);
     for (int dx = 0; dx < width; dx++)
         for (int dy = 0; dy < width; dy++)
-            cg_draw_line(image, (int)lround(x0) + dx - width / 2, (int)lround(y0) + dy - width / 2,
-                         (int)lround(x1) + dx - width / 2, (int)lround(y1) + dy - width / 2, color);
+            sketch_add(image, "line %d %d %d %d\n", (int)lround(x0) + dx - width / 2,
+                       (int)lround(y0) + dy - width / 2, (int)lround(x1) + dx - width / 2,
+                       (int)lround(y1) + dy - width / 2);
 }
 
-static void dot(cg_image *image, double x, double y, int radius, cg_rgba8 color)
+/* The pixels within radius of (x, y), row by row. */
+static void dot(sketch *image, double x, double y, int radius, cg_rgba8 color)
 {
-    for (int dy = -radius; dy <= radius; dy++)
-        for (int dx = -radius; dx <= radius; dx++)
-            if (dx * dx + dy * dy <= radius * radius)
-                cg_image_set_rgba8(image, (int)lround(x) + dx, (int)lround(y) + dy, color);
+    set_color(image, color);
+    for (int dy = -radius; dy <= radius; dy++) {
+        int half = 0;
+        while ((half + 1) * (half + 1) + dy * dy <= radius * radius)
+            half++;
+        int cx = (int)lround(x), cy = (int)lround(y) + dy;
+        sketch_add(image, "line %d %d %d %d\n", cx - half, cy, cx + half, cy);
+    }
 }
 
 /* An arrow from p to q with a head of two strokes. */
-static void arrow(cg_image *image, cg_vec2 p, cg_vec2 q, cg_rgba8 color)
+static void arrow(sketch *image, cg_vec2 p, cg_vec2 q, cg_rgba8 color)
 {
     thick_line(image, p.x, p.y, q.x, q.y, 2, color);
     cg_vec2 d = cg_vec2_normalize(cg_vec2_sub(p, q));
@@ -82,12 +101,13 @@ static void arrow(cg_image *image, cg_vec2 p, cg_vec2 q, cg_rgba8 color)
     thick_line(image, q.x, q.y, q.x + len * r.x, q.y + len * r.y, 2, color);
 }
 
-/* Adds the picture to the gallery and frees it and the mesh. */
-static int finish(demo_context *context, const char *file, cg_image *image, cg_hemesh *h,
+/* Writes the script and adds its picture to the gallery; frees it and the
+ * mesh. */
+static int finish(demo_context *context, const char *name, sketch *image, cg_hemesh *h,
                   const char *caption)
 {
-    int status = demo_add(context, file, image, caption, DEMO_COMMAND);
-    cg_image_free(image);
+    int status = image->failed ? 1 : draw_demo_script(context, name, image->text, caption);
+    sketch_free(image);
     cg_hemesh_free(h);
     return status;
 }
@@ -116,10 +136,10 @@ static int render_halfedges(demo_context *context)
     static const uint32_t faces[] = {4, 0, 1, 4, 3, 4, 1, 2, 5, 4, 3, 3, 4, 6,
                                      3, 4, 7, 6, 3, 4, 5, 7};
     cg_hemesh *h = make_mesh(points, 8, faces, 5);
-    cg_image *image = blank(640, 560);
+    sketch *image = blank(640, 560);
     if (!h || !image) {
         cg_hemesh_free(h);
-        cg_image_free(image);
+        sketch_free(image);
         return 1;
     }
     double scale = 130, ox = 60, oy = 520;
@@ -150,7 +170,7 @@ static int render_halfedges(demo_context *context)
         cg_vec2 p = to_pixel(h->positions[v], scale, ox, oy);
         dot(image, p.x, p.y, 5, ink);
     }
-    return finish(context, "hemesh-halfedges.png", image, h,
+    return finish(context, "hemesh-halfedges", image, h,
                   "Half-edge structure (DCEL): each face's half-edges run counter-clockwise "
                   "inside it (one colour per face); the boundary loop's half-edges (red) "
                   "run clockwise outside, with no face");
@@ -178,7 +198,7 @@ static int front_facing(const cg_hemesh *h, const view *w, uint32_t f)
 }
 
 /* Edges seen from the front dark, hidden ones faint. */
-static void draw_wire(cg_image *image, const cg_hemesh *h, const view *w, int width)
+static void draw_wire(sketch *image, const cg_hemesh *h, const view *w, int width)
 {
     for (int pass = 0; pass < 2; pass++)
         for (uint32_t e = 0; e < h->halfedge_count / 2; e++) {
@@ -216,10 +236,10 @@ static int render_one_ring(demo_context *context)
         cg_hemesh_free(h);
         h = next;
     }
-    cg_image *image = blank(560, 560);
+    sketch *image = blank(560, 560);
     if (!h || !image) {
         cg_hemesh_free(h);
-        cg_image_free(image);
+        sketch_free(image);
         return 1;
     }
     for (size_t v = 0; v < h->vertex_count; v++)
@@ -254,7 +274,7 @@ static int render_one_ring(demo_context *context)
         dot(image, b.x, b.y, 5, blue);
     }
     dot(image, c.x, c.y, 6, boundary_red);
-    return finish(context, "hemesh-one-ring.png", image, h,
+    return finish(context, "hemesh-one-ring", image, h,
                   "One-ring of a vertex found by rotation (h = twin(prev(h))): its "
                   "outgoing half-edges (orange), neighbours and link (blue), in time "
                   "proportional to the valence");
@@ -264,10 +284,10 @@ static int render_levels(demo_context *context, cg_hemesh *h, int loop, const ch
                          const char *caption)
 {
     int panel = 300;
-    cg_image *image = blank(4 * panel, panel);
+    sketch *image = blank(4 * panel, panel);
     if (!h || !image) {
         cg_hemesh_free(h);
-        cg_image_free(image);
+        sketch_free(image);
         return 1;
     }
     for (int level = 0; level <= 3; level++) {
@@ -301,7 +321,7 @@ static int render(demo_context *context)
         return 1;
     static const double tetra[][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     static const uint32_t tetra_faces[] = {3, 0, 1, 2, 3, 0, 2, 3, 3, 0, 3, 1, 3, 1, 3, 2};
-    if (render_levels(context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop.png",
+    if (render_levels(context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop",
                       "Loop subdivision of a tetrahedron, levels 0 to 3: 4, 16, 64 and 256 "
                       "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)"))
         return 1;
@@ -309,7 +329,7 @@ static int render(demo_context *context)
                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     static const uint32_t box_faces[] = {4, 0, 3, 2, 1, 4, 4, 5, 6, 7, 4, 0, 1, 5, 4,
                                          4, 3, 7, 6, 2, 4, 0, 4, 7, 3, 4, 1, 2, 6, 5};
-    return render_levels(context, make_mesh(box, 8, box_faces, 6), 0, "hemesh-catmull-clark.png",
+    return render_levels(context, make_mesh(box, 8, box_faces, 6), 0, "hemesh-catmull-clark",
                          "Catmull-Clark subdivision of a cube, levels 0 to 3: 6, 24, 96 and 384 "
                          "quads, converging to a rounded shape");
 }

@@ -24,8 +24,7 @@ static int render(demo_context *context)
         {"parallel-oblique.png", "Oblique at 30 deg with foreshortening 0.75",
          cg_proj_oblique(cg_radians(30), 0.75)},
     };
-    return wire_render_views(context, views, (int)(sizeof views / sizeof views[0]),
-                             "cg demo --only 'Parallel projections'");
+    return wire_render_views(context, views, (int)(sizeof views / sizeof views[0]));
 }
 
 const demo_section demo_section_parallel = {3, "Parallel projections", render};

@@ -27,8 +27,7 @@ static int render(demo_context *context)
          "Three-point perspective: camera turned and looking down; all three families converge",
          camera(cg_vec3_make(2.4, 3.6, 2.4), cg_vec3_make(0, 0, 0), 60)},
     };
-    return wire_render_views(context, views, (int)(sizeof views / sizeof views[0]),
-                             "cg demo --only 'Perspective projections'");
+    return wire_render_views(context, views, (int)(sizeof views / sizeof views[0]));
 }
 
 const demo_section demo_section_perspective = {3, "Perspective projections", render};

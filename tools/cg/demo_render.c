@@ -116,6 +116,10 @@ static int render_pipeline(demo_context *context)
 {
     cg_mesh *bunny = load_bunny();
     int status = 0;
+    if (bunny && demo_copy_input(context, BUNNY) != 0) {
+        cg_mesh_free(bunny);
+        return 1;
+    }
     /* The bunny under each option of the pipeline. */
     static const struct variant {
         const char *file, *caption, *arguments;
@@ -264,6 +268,10 @@ int demo_render_shading(demo_context *context)
 {
     int status = 0;
     cg_mesh *sphere = NULL, *bunny = load_bunny();
+    if (bunny && demo_copy_input(context, BUNNY) != 0) {
+        cg_mesh_free(bunny);
+        return 1;
+    }
     if (cg_mesh_sphere(14, 8, 1, &sphere) != CG_OK) {
         cg_mesh_free(bunny);
         return 1;

@@ -11,6 +11,19 @@ typedef struct scene_picture {
     int width, height;
 } scene_picture;
 
+#ifdef CG_SOURCE_DIR
+static int copy_scene_inputs(demo_context *context, const char *scene)
+{
+    static const char *const meshes[] = {"data/meshes/bunny.obj", "data/meshes/teapot.obj"};
+    if (demo_copy_input(context, scene) != 0)
+        return 1;
+    for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
+        if (demo_copy_input(context, meshes[i]) != 0)
+            return 1;
+    return 0;
+}
+#endif
+
 static int render(demo_context *context)
 {
 #ifdef CG_SOURCE_DIR
@@ -42,6 +55,13 @@ static int render(demo_context *context)
         if (cg_scene_load(path, &scene, &err) != CG_OK) {
             fprintf(stderr, "demo: %s (skipped)\n", err.message);
             continue;
+        }
+        /* The caption runs in the gallery folder: the scene file and the
+         * meshes it names go there, at their paths in the source tree. */
+        snprintf(path, sizeof path, "examples/scenes/%s.json", p->scene);
+        if (copy_scene_inputs(context, path) != 0) {
+            cg_scene_free(scene);
+            return 1;
         }
         scene->width = p->width;
         scene->height = p->height;

@@ -38,6 +38,8 @@ static int render(demo_context *context)
     if (!probe)
         return 0; /* the mesh is not there (an installed tool): no picture */
     fclose(probe);
+    if (demo_copy_input(context, "data/meshes/bunny.obj") != 0)
+        return 1;
     raytrace_settings_default(&s);
     s.input = CG_SOURCE_DIR "/data/meshes/bunny.obj";
     s.common.width = 400;

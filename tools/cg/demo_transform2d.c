@@ -1,6 +1,5 @@
 /* Gallery: 2D transformations in homogeneous coordinates (chapter 4). */
-#include "demo.h"
-#include "cg/draw.h"
+#include "draw_demo.h"
 #include "cg/xform.h"
 
 #define SIZE 300
@@ -14,36 +13,29 @@ static void to_pixel(cg_vec2 p, int *x, int *y)
     *y = (int)lround(SIZE / 2.0 - SCALE * p.y);
 }
 
-static void draw_shape(cg_image *image, cg_mat3 m, cg_rgba8 color)
+/* The house's outline under m, as `line` commands of a draw script. */
+static void script_shape(script_text *script, cg_mat3 m, const char *color)
 {
+    script_add(script, "color %s\n", color);
     for (int i = 0; i < 5; i++) {
         int x0, y0, x1, y1;
         to_pixel(cg_mat3_transform_point(m, house[i]), &x0, &y0);
         to_pixel(cg_mat3_transform_point(m, house[(i + 1) % 5]), &x1, &y1);
-        cg_draw_line(image, x0, y0, x1, y1, color);
+        script_add(script, "line %d %d %d %d\n", x0, y0, x1, y1);
     }
 }
 
-static void draw_axes(cg_image *image)
+/* The transform is applied in C; the picture is the draw script of the axes,
+ * the house (grey) and its image (red), written next to it. */
+static int picture(demo_context *context, const char *name, const char *caption, cg_mat3 m)
 {
-    cg_rgba8 axis = {200, 200, 200, 255};
-    cg_draw_line(image, 0, SIZE / 2, SIZE - 1, SIZE / 2, axis);
-    cg_draw_line(image, SIZE / 2, 0, SIZE / 2, SIZE - 1, axis);
-}
-
-static int picture(demo_context *context, const char *file, const char *caption, cg_mat3 m)
-{
-    cg_image *image;
-    if (cg_image_create(&image, SIZE, SIZE, CG_PIXEL_RGBA8) != CG_OK)
-        return 1;
-    cg_rgba8 white = {255, 255, 255, 255}, grey = {120, 120, 120, 255}, red = {210, 40, 40, 255};
-    cg_image_clear_rgba8(image, white);
-    draw_axes(image);
-    draw_shape(image, cg_mat3_identity(), grey);
-    draw_shape(image, m, red);
-    int status = demo_add(context, file, image, caption, "cg demo --only '2D transformations'");
-    cg_image_free(image);
-    return status;
+    script_text script = {.length = 0};
+    script_add(&script, "size %d %d\nbackground #ffffff\ncolor #c8c8c8\n", SIZE, SIZE);
+    script_add(&script, "line 0 %d %d %d\nline %d 0 %d %d\n", SIZE / 2, SIZE - 1, SIZE / 2,
+               SIZE / 2, SIZE / 2, SIZE - 1);
+    script_shape(&script, cg_mat3_identity(), "#787878");
+    script_shape(&script, m, "#d22828");
+    return draw_demo_script(context, name, script.text, caption);
 }
 
 static int render(demo_context *context)
@@ -55,20 +47,20 @@ static int render(demo_context *context)
     cg_mat3 move_then_rotate[2] = {cg_xform2_translate(3, 0),
                                    cg_xform2_rotate(cg_radians(90), 0, 0)};
     int failed = 0;
-    failed |= picture(context, "transform-translate.png", "Translation by (2, 1)",
+    failed |= picture(context, "transform-translate", "Translation by (2, 1)",
                       cg_xform2_translate(2, 1));
-    failed |= picture(context, "transform-rotate.png", "Rotation by 45 deg about (2, 0)",
+    failed |= picture(context, "transform-rotate", "Rotation by 45 deg about (2, 0)",
                       cg_xform2_rotate(cg_radians(45), 2, 0));
-    failed |= picture(context, "transform-scale.png", "Scaling by (1.5, 0.5) about (1, 0)",
+    failed |= picture(context, "transform-scale", "Scaling by (1.5, 0.5) about (1, 0)",
                       cg_xform2_scale(1.5, 0.5, 1, 0));
-    failed |= picture(context, "transform-reflect.png", "Reflection about the line y = x/2 + 1",
+    failed |= picture(context, "transform-reflect", "Reflection about the line y = x/2 + 1",
                       reflect);
-    failed |= picture(context, "transform-shear.png", "Shear x' = x + 0.8 y",
+    failed |= picture(context, "transform-shear", "Shear x' = x + 0.8 y",
                       cg_xform2_shear(0.8, 0));
-    failed |= picture(context, "transform-compose-rt.png",
+    failed |= picture(context, "transform-compose-rt",
                       "Composition: rotate 90 deg, then translate by (3, 0)",
                       cg_mat3_compose(rotate_then_move, 2));
-    failed |= picture(context, "transform-compose-tr.png",
+    failed |= picture(context, "transform-compose-tr",
                       "Composition: translate by (3, 0), then rotate 90 deg (order matters)",
                       cg_mat3_compose(move_then_rotate, 2));
     return failed;

@@ -19,6 +19,30 @@ void script_add(script_text *script, const char *format, ...)
         script->length += (size_t)n < room ? (size_t)n : room - 1;
 }
 
+void sketch_add(sketch *k, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(NULL, 0, format, args);
+    va_end(args);
+    if (k->failed || n < 0)
+        return;
+    if (k->length + (size_t)n + 1 > k->capacity) {
+        size_t capacity = 2 * (k->length + (size_t)n + 1);
+        char *grown = realloc(k->text, capacity);
+        if (!grown) {
+            k->failed = 1;
+            return;
+        }
+        k->text = grown;
+        k->capacity = capacity;
+    }
+    va_start(args, format);
+    vsnprintf(k->text + k->length, k->capacity - k->length, format, args);
+    va_end(args);
+    k->length += (size_t)n;
+}
+
 int draw_demo_script(demo_context *context, const char *name, const char *text,
                      const char *caption)
 {
@@ -84,5 +108,32 @@ int zoom_add(demo_context *context, zoom *z, const char *file, const char *capti
     int status = demo_add(context, file, z->image, caption, command);
     cg_image_free(z->image);
     z->image = NULL;
+    return status;
+}
+
+void zoom_to_script(zoom *z, sketch *k)
+{
+    cg_rgba8 grid = cg_image_get_rgba8(z->image, 0, 0);
+    sketch_add(k, "size %d %d\nbackground #%02x%02x%02x\n", z->image->width, z->image->height,
+               grid.r, grid.g, grid.b);
+    int columns = (z->image->width - 1) / z->cell, rows = (z->image->height - 1) / z->cell;
+    for (int y = 0; y < rows; y++)
+        for (int x = 0; x < columns; x++) {
+            /* pixels 1 to cell - 1 of the cell: their centres lie inside */
+            cg_rgba8 c = cg_image_get_rgba8(z->image, x * z->cell + 1, y * z->cell + 1);
+            int x0 = x * z->cell + 1, y0 = y * z->cell + 1, x1 = (x + 1) * z->cell,
+                y1 = (y + 1) * z->cell;
+            sketch_add(k, "color #%02x%02x%02x%02x\npolygon %d %d %d %d %d %d %d %d\n", c.r, c.g,
+                       c.b, c.a, x0, y0, x1, y0, x1, y1, x0, y1);
+        }
+    cg_image_free(z->image);
+    z->image = NULL;
+}
+
+int draw_demo_sketch(demo_context *context, sketch *k, const char *name, const char *caption)
+{
+    int status = k->failed ? 1 : draw_demo_script(context, name, k->text, caption);
+    free(k->text);
+    k->text = NULL;
     return status;
 }

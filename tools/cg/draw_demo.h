@@ -22,6 +22,23 @@ void script_add(script_text *script, const char *format, ...)
 #endif
     ;
 
+/* A script of any length, growing as it is written; failed is set when
+ * memory ran out (the text then stops short). */
+typedef struct sketch {
+    char *text;
+    size_t length, capacity;
+    int failed;
+} sketch;
+void sketch_add(sketch *k, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Writes the sketch as NAME.draw, adds its picture as NAME.png (as
+ * draw_demo_script does) and frees the sketch's text. */
+int draw_demo_sketch(demo_context *context, sketch *k, const char *name, const char *caption);
+
 /* A magnified view: each pixel of a small grid becomes a cell of `cell`
  * image pixels with a thin grid between cells. */
 typedef struct zoom {
@@ -39,6 +56,10 @@ void zoom_fill_drawn(zoom *z, const cg_image *grid, cg_rgba8 color);
 /* Adds the magnified image to the gallery and frees it. */
 int zoom_add(demo_context *context, zoom *z, const char *file, const char *caption,
              const char *command);
+/* Starts a script that draws the zoom's grid and cells as they are now
+ * (one aliased polygon per cell), so that overlays can follow as commands;
+ * frees the zoom's image. */
+void zoom_to_script(zoom *z, sketch *k);
 /* Maps a point of the grid's pixel plane to the magnified image plane. */
 double zoom_x(const zoom *z, double x);
 

@@ -4,6 +4,7 @@
 #include "cg/xform.h"
 
 #include <float.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 static const cg_vec3 cube_vertices[8] = {
@@ -51,7 +52,11 @@ static cg_rgba8 edge_color(cg_vec3 a, cg_vec3 b)
     return grey;
 }
 
-cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, cg_mat4 transform)
+/* Calls emit for each edge of the models projected by transform and fitted
+ * to a width x height picture, in pixels (y down), with its colour. */
+typedef void wire_emit(void *user, int x0, int y0, int x1, int y1, cg_rgba8 color);
+static cg_status wire_edges(int width, int height, const wire_model *models, int model_count,
+                            cg_mat4 transform, wire_emit *emit, void *user)
 {
     double min_x = DBL_MAX, min_y = DBL_MAX, max_x = -DBL_MAX, max_y = -DBL_MAX;
     for (int m = 0; m < model_count; m++) {
@@ -66,11 +71,11 @@ cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, 
             max_y = fmax(max_y, p.y);
         }
     }
-    double margin = 0.08 * fmin(image->width, image->height);
-    double sx = (image->width - 2 * margin) / fmax(max_x - min_x, 1e-9);
-    double sy = (image->height - 2 * margin) / fmax(max_y - min_y, 1e-9);
+    double margin = 0.08 * fmin(width, height);
+    double sx = (width - 2 * margin) / fmax(max_x - min_x, 1e-9);
+    double sy = (height - 2 * margin) / fmax(max_y - min_y, 1e-9);
     double s = fmin(sx, sy);
-    double ox = (image->width - s * (max_x - min_x)) / 2, oy = (image->height - s * (max_y - min_y)) / 2;
+    double ox = (width - s * (max_x - min_x)) / 2, oy = (height - s * (max_y - min_y)) / 2;
     for (int m = 0; m < model_count; m++) {
         for (int e = 0; e < models[m].edge_count; e++) {
             cg_vec3 a = models[m].vertices[models[m].edges[e][0]];
@@ -79,28 +84,46 @@ cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, 
             /* Image y grows downward, projected y upward. */
             int x0 = (int)lround(ox + s * (pa.x - min_x)), y0 = (int)lround(oy + s * (max_y - pa.y));
             int x1 = (int)lround(ox + s * (pb.x - min_x)), y1 = (int)lround(oy + s * (max_y - pb.y));
-            cg_draw_line(image, x0, y0, x1, y1, edge_color(a, b));
+            emit(user, x0, y0, x1, y1, edge_color(a, b));
         }
     }
     return CG_OK;
 }
 
-#include "demo.h"
+static void draw_edge(void *user, int x0, int y0, int x1, int y1, cg_rgba8 color)
+{
+    cg_draw_line(user, x0, y0, x1, y1, color);
+}
 
-int wire_render_views(struct demo_context *context, const wire_view *views, int count,
-                      const char *command)
+cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, cg_mat4 transform)
+{
+    return wire_edges(image->width, image->height, models, model_count, transform, draw_edge, image);
+}
+
+#include "draw_demo.h"
+
+#include <string.h>
+
+static void script_edge(void *user, int x0, int y0, int x1, int y1, cg_rgba8 color)
+{
+    script_add(user, "color #%02x%02x%02x\nline %d %d %d %d\n", color.r, color.g, color.b, x0,
+               y0, x1, y1);
+}
+
+/* The projection is computed in C; each picture is the draw script of its
+ * projected edges, written next to it, so its caption is `cg draw`. */
+int wire_render_views(struct demo_context *context, const wire_view *views, int count)
 {
     wire_model models[2] = {wire_cube(), wire_house()};
-    cg_rgba8 white = {255, 255, 255, 255};
     for (int i = 0; i < count; i++) {
-        cg_image *image;
-        if (cg_image_create(&image, 360, 270, CG_PIXEL_RGBA8) != CG_OK)
+        script_text script = {.length = 0};
+        script_add(&script, "size 360 270\nbackground #ffffff\n");
+        if (wire_edges(360, 270, models, 2, views[i].transform, script_edge, &script) != CG_OK)
             return 1;
-        cg_image_clear_rgba8(image, white);
-        int failed = wire_draw(image, models, 2, views[i].transform) != CG_OK
-                  || demo_add(context, views[i].file, image, views[i].caption, command) != 0;
-        cg_image_free(image);
-        if (failed)
+        char name[256];
+        snprintf(name, sizeof name, "%.*s", (int)(strlen(views[i].file) - strlen(".png")),
+                 views[i].file);
+        if (draw_demo_script(context, name, script.text, views[i].caption) != 0)
             return 1;
     }
     return 0;

@@ -32,8 +32,8 @@ typedef struct wire_view {
     cg_mat4 transform;
 } wire_view;
 
-/* Renders each view to a 360 x 270 picture and adds it to the gallery with
- * the given command; returns 0 or non-zero on failure. */
+/* Writes each view as a draw script of its edges in a 360 x 270 picture
+ * (FILE with .draw for .png) in the gallery folder and adds the picture it
+ * draws, with the caption's command `cg draw`; returns 0 or non-zero. */
 struct demo_context;
-int wire_render_views(struct demo_context *context, const wire_view *views, int count,
-                      const char *command);
+int wire_render_views(struct demo_context *context, const wire_view *views, int count);

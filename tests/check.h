@@ -1,6 +1,20 @@
 /* A small test harness: CHECK macros count passes and failures, print each
  * failure with its location, and check_finish() prints the closing line
- * "N passed, N failed" and gives the exit status. */
+ * "N passed, N failed" and gives the exit status.
+ *
+ * A test program is a list of groups of checks, each a function:
+ *
+ *     int main(int argc, char **argv)
+ *     {
+ *         check_start(argc, argv);
+ *         CHECK_GROUP(octants);
+ *         CHECK_GROUP(bad_input);
+ *         return check_finish();
+ *     }
+ *
+ * prints "== octants: 120 passed, 0 failed" after each group, and
+ * `test_x octants` (or several names) runs only the groups named;
+ * `test_x --list` lists them. */
 #ifndef CG_TEST_CHECK_H
 #define CG_TEST_CHECK_H
 
@@ -8,8 +22,13 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static long check_passed, check_failed;
+/* The groups named on the command line (none: all), and whether each ran. */
+static char **check_only;
+static int check_only_count, check_listing;
+static unsigned long long check_only_ran; /* bit i: check_only[i] matched */
 
 #define CHECK_REPORT(ok, ...)                                                  \
     do {                                                                       \
@@ -39,9 +58,56 @@ static long check_passed, check_failed;
         CHECK_REPORT(check_a_ == check_b_, "%s = %lld, %s = %lld", #a, check_a_, #b, check_b_); \
     } while (0)
 
-/* Prints the closing line; use as `return check_finish();` at the end of main. */
+/* Reads the groups to run from the command line: names, or --list. */
+static inline void check_start(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--list") == 0)
+            check_listing = 1;
+    }
+    check_only = argv + 1;
+    check_only_count = argc - 1 - check_listing;
+    if (check_only_count > 64)
+        check_only_count = 64;
+}
+
+/* Runs one group when it was asked for, and prints its name and counts. */
+static inline void check_group(const char *name, void (*run)(void))
+{
+    if (check_listing) {
+        printf("%s\n", name);
+        return;
+    }
+    if (check_only_count > 0) {
+        int wanted = 0;
+        for (int i = 0; i < check_only_count; i++) {
+            if (strcmp(check_only[i], name) == 0) {
+                wanted = 1;
+                check_only_ran |= 1ULL << i;
+            }
+        }
+        if (!wanted)
+            return;
+    }
+    long passed = check_passed, failed = check_failed;
+    run();
+    printf("== %s: %ld passed, %ld failed\n", name, check_passed - passed, check_failed - failed);
+    fflush(stdout);
+}
+#define CHECK_GROUP(function) check_group(#function, function)
+
+/* Prints the closing line; use as `return check_finish();` at the end of main.
+ * A group named on the command line that does not exist is a failure. */
 static inline int check_finish(void)
 {
+    if (check_listing)
+        return 0;
+    for (int i = 0; i < check_only_count; i++) {
+        if (!(check_only_ran >> i & 1)) {
+            fprintf(stderr, "no group of checks named '%s' (--list lists them)\n", check_only[i]);
+            check_failed++;
+        }
+    }
     printf("%ld passed, %ld failed\n", check_passed, check_failed);
     return check_failed ? 1 : 0;
 }

@@ -358,11 +358,12 @@ static void test_up_for(void)
     CHECK(c.up.z == -1);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_fit_depth_definition();
-    test_frame_tight();
-    test_up_for();
-    test_coverage();
+    check_start(argc, argv);
+    CHECK_GROUP(test_fit_depth_definition);
+    CHECK_GROUP(test_frame_tight);
+    CHECK_GROUP(test_up_for);
+    CHECK_GROUP(test_coverage);
     return check_finish();
 }

@@ -476,13 +476,14 @@ static void frustum(void)
     CHECK(counts[0] > 100 && counts[1] > 100 && counts[2] > 10);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    lines();
-    lines3();
-    sutherland_hodgman();
-    weiler_atherton();
-    mesh_box();
-    frustum();
+    check_start(argc, argv);
+    CHECK_GROUP(lines);
+    CHECK_GROUP(lines3);
+    CHECK_GROUP(sutherland_hodgman);
+    CHECK_GROUP(weiler_atherton);
+    CHECK_GROUP(mesh_box);
+    CHECK_GROUP(frustum);
     return check_finish();
 }

@@ -980,21 +980,22 @@ static void workspace(void)
     cg_clip_workspace_free(NULL);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    extremes();
-    snapping();
-    fixed_cases();
-    double_api();
-    fuzz();
-    stress();
-    crowded();
-    smooth();
-    checkpoint_without_edges();
-    dense();
-    coarse_stars();
-    dense_grids();
-    result_reuse();
-    workspace();
+    check_start(argc, argv);
+    CHECK_GROUP(extremes);
+    CHECK_GROUP(snapping);
+    CHECK_GROUP(fixed_cases);
+    CHECK_GROUP(double_api);
+    CHECK_GROUP(fuzz);
+    CHECK_GROUP(stress);
+    CHECK_GROUP(crowded);
+    CHECK_GROUP(smooth);
+    CHECK_GROUP(checkpoint_without_edges);
+    CHECK_GROUP(dense);
+    CHECK_GROUP(coarse_stars);
+    CHECK_GROUP(dense_grids);
+    CHECK_GROUP(result_reuse);
+    CHECK_GROUP(workspace);
     return check_finish();
 }

@@ -753,20 +753,21 @@ static void test_encode_tables(void)
 #endif
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_srgb();
-    test_encode_tables();
-    test_images();
-    test_reference_values();
-    test_round_trips();
-    test_all_8bit_round_trip();
-    test_8bit_fast_paths();
-    test_bytes_and_buffers();
-    test_by_name();
-    test_bad_input();
-    test_quantize_dither();
-    test_halftone();
-    test_parse();
+    check_start(argc, argv);
+    CHECK_GROUP(test_srgb);
+    CHECK_GROUP(test_encode_tables);
+    CHECK_GROUP(test_images);
+    CHECK_GROUP(test_reference_values);
+    CHECK_GROUP(test_round_trips);
+    CHECK_GROUP(test_all_8bit_round_trip);
+    CHECK_GROUP(test_8bit_fast_paths);
+    CHECK_GROUP(test_bytes_and_buffers);
+    CHECK_GROUP(test_by_name);
+    CHECK_GROUP(test_bad_input);
+    CHECK_GROUP(test_quantize_dither);
+    CHECK_GROUP(test_halftone);
+    CHECK_GROUP(test_parse);
     return check_finish();
 }

@@ -225,13 +225,14 @@ static void test_status_strings(void)
     CHECK_EQ_INT(cg_error_set(NULL, CG_EIO, "x"), CG_EIO);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_inverse_round_trips();
-    test_singular();
-    test_determinant_and_transpose();
-    test_composition_order();
-    test_vectors();
-    test_status_strings();
+    check_start(argc, argv);
+    CHECK_GROUP(test_inverse_round_trips);
+    CHECK_GROUP(test_singular);
+    CHECK_GROUP(test_determinant_and_transpose);
+    CHECK_GROUP(test_composition_order);
+    CHECK_GROUP(test_vectors);
+    CHECK_GROUP(test_status_strings);
     return check_finish();
 }

@@ -334,14 +334,15 @@ static void continuity(void)
     CHECK(cg_cubic2_join_g1(&flat, &other) == CG_EINVAL);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    bernstein();
-    basis_matrices();
-    hermite_and_bases();
-    conversions();
-    casteljau();
-    flattening();
-    continuity();
+    check_start(argc, argv);
+    CHECK_GROUP(bernstein);
+    CHECK_GROUP(basis_matrices);
+    CHECK_GROUP(hermite_and_bases);
+    CHECK_GROUP(conversions);
+    CHECK_GROUP(casteljau);
+    CHECK_GROUP(flattening);
+    CHECK_GROUP(continuity);
     return check_finish();
 }

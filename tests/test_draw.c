@@ -570,17 +570,18 @@ static void bad_input(void)
     cg_image_free(image);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    octant_definition();
-    whole_circles();
-    clipped_circles();
-    huge_circles();
-    discs();
-    ellipses();
-    arcs();
-    antialiased();
-    drawn_curves();
-    bad_input();
+    check_start(argc, argv);
+    CHECK_GROUP(octant_definition);
+    CHECK_GROUP(whole_circles);
+    CHECK_GROUP(clipped_circles);
+    CHECK_GROUP(huge_circles);
+    CHECK_GROUP(discs);
+    CHECK_GROUP(ellipses);
+    CHECK_GROUP(arcs);
+    CHECK_GROUP(antialiased);
+    CHECK_GROUP(drawn_curves);
+    CHECK_GROUP(bad_input);
     return check_finish();
 }

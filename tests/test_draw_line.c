@@ -354,13 +354,14 @@ static void trace_matches(void)
     cg_image_free(image);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    random_lines();
-    clipped_equals_unclipped();
-    huge_lines();
-    edge_cases();
-    blending_once();
-    trace_matches();
+    check_start(argc, argv);
+    CHECK_GROUP(random_lines);
+    CHECK_GROUP(clipped_equals_unclipped);
+    CHECK_GROUP(huge_lines);
+    CHECK_GROUP(edge_cases);
+    CHECK_GROUP(blending_once);
+    CHECK_GROUP(trace_matches);
     return check_finish();
 }

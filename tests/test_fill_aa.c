@@ -978,23 +978,24 @@ static void final_quads(void)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    coverage_is_area();
-    holes();
-    split_aa();
-    strokes();
-    bad_strokes();
-    tiny_segments();
-    svg_paths();
-    curves();
-    final_quads();
-    aa_blending();
-    aa_blending_reused();
-    aa_blend_exact();
-    aa_opaque_over_opaque();
-    aa_wide_interiors();
-    huge_curves();
-    rules_and_paints();
+    check_start(argc, argv);
+    CHECK_GROUP(coverage_is_area);
+    CHECK_GROUP(holes);
+    CHECK_GROUP(split_aa);
+    CHECK_GROUP(strokes);
+    CHECK_GROUP(bad_strokes);
+    CHECK_GROUP(tiny_segments);
+    CHECK_GROUP(svg_paths);
+    CHECK_GROUP(curves);
+    CHECK_GROUP(final_quads);
+    CHECK_GROUP(aa_blending);
+    CHECK_GROUP(aa_blending_reused);
+    CHECK_GROUP(aa_blend_exact);
+    CHECK_GROUP(aa_opaque_over_opaque);
+    CHECK_GROUP(aa_wide_interiors);
+    CHECK_GROUP(huge_curves);
+    CHECK_GROUP(rules_and_paints);
     return check_finish();
 }

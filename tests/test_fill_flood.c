@@ -265,11 +265,12 @@ static void edge_cases(void)
     cg_image_free(copy);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    random_images();
-    mazes_and_spirals();
-    diagonal_gaps();
-    edge_cases();
+    check_start(argc, argv);
+    CHECK_GROUP(random_images);
+    CHECK_GROUP(mazes_and_spirals);
+    CHECK_GROUP(diagonal_gaps);
+    CHECK_GROUP(edge_cases);
     return check_finish();
 }

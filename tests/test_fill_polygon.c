@@ -327,13 +327,14 @@ static void blending(void)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    random_polygons();
-    wide_polygons();
-    tilings();
-    bad_input();
-    split_polygon();
-    blending();
+    check_start(argc, argv);
+    CHECK_GROUP(random_polygons);
+    CHECK_GROUP(wide_polygons);
+    CHECK_GROUP(tilings);
+    CHECK_GROUP(bad_input);
+    CHECK_GROUP(split_polygon);
+    CHECK_GROUP(blending);
     return check_finish();
 }

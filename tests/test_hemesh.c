@@ -599,15 +599,16 @@ static void test_random_voxels(void)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_shapes();
-    test_components();
-    test_geometry();
-    test_attributes();
-    test_bad_input();
-    test_orientation();
-    test_random_soups();
-    test_random_voxels();
+    check_start(argc, argv);
+    CHECK_GROUP(test_shapes);
+    CHECK_GROUP(test_components);
+    CHECK_GROUP(test_geometry);
+    CHECK_GROUP(test_attributes);
+    CHECK_GROUP(test_bad_input);
+    CHECK_GROUP(test_orientation);
+    CHECK_GROUP(test_random_soups);
+    CHECK_GROUP(test_random_voxels);
     return check_finish();
 }

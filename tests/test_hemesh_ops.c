@@ -546,13 +546,14 @@ static void test_catmull_clark(void)
     cg_hemesh_free(h);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_random_operations();
-    test_tetrahedron_refusals();
-    test_removal_boundary();
-    test_diagonals();
-    test_loop();
-    test_catmull_clark();
+    check_start(argc, argv);
+    CHECK_GROUP(test_random_operations);
+    CHECK_GROUP(test_tetrahedron_refusals);
+    CHECK_GROUP(test_removal_boundary);
+    CHECK_GROUP(test_diagonals);
+    CHECK_GROUP(test_loop);
+    CHECK_GROUP(test_catmull_clark);
     return check_finish();
 }

@@ -363,11 +363,12 @@ static void test_small_cases(void)
     cg_mesh_free(m);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_small_cases();
-    test_damaged();
-    test_soups();
-    test_voxels();
+    check_start(argc, argv);
+    CHECK_GROUP(test_small_cases);
+    CHECK_GROUP(test_damaged);
+    CHECK_GROUP(test_soups);
+    CHECK_GROUP(test_voxels);
     return check_finish();
 }

@@ -310,13 +310,14 @@ static void test_file_format_from_path(void)
     CHECK_EQ_INT(cg_file_format_from_path("noext"), CG_FILE_UNKNOWN);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_create();
-    test_pixels_and_blend();
-    test_round_trips();
-    test_bad_files();
-    test_write_never_clobbers();
-    test_file_format_from_path();
+    check_start(argc, argv);
+    CHECK_GROUP(test_create);
+    CHECK_GROUP(test_pixels_and_blend);
+    CHECK_GROUP(test_round_trips);
+    CHECK_GROUP(test_bad_files);
+    CHECK_GROUP(test_write_never_clobbers);
+    CHECK_GROUP(test_file_format_from_path);
     return check_finish();
 }

@@ -336,13 +336,14 @@ static void test_checks(void)
     CHECK(cg_material_check(NULL, NULL) == CG_EINVAL);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_hand_worked();
-    test_back_facing();
-    test_random();
-    test_visibility();
-    test_vector();
-    test_checks();
+    check_start(argc, argv);
+    CHECK_GROUP(test_hand_worked);
+    CHECK_GROUP(test_back_facing);
+    CHECK_GROUP(test_random);
+    CHECK_GROUP(test_visibility);
+    CHECK_GROUP(test_vector);
+    CHECK_GROUP(test_checks);
     return check_finish();
 }

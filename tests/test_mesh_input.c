@@ -386,12 +386,13 @@ static void test_foreign_formats(void)
     cg_mesh_free(m);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_text_formats();
-    test_binary_formats();
-    test_validate();
-    test_negative_list_lengths();
-    test_foreign_formats();
+    check_start(argc, argv);
+    CHECK_GROUP(test_text_formats);
+    CHECK_GROUP(test_binary_formats);
+    CHECK_GROUP(test_validate);
+    CHECK_GROUP(test_negative_list_lengths);
+    CHECK_GROUP(test_foreign_formats);
     return check_finish();
 }

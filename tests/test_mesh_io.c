@@ -840,20 +840,21 @@ static void test_prefixes(void)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    make_temp_dir();
-    test_obj();
-    test_obj_materials();
-    test_off();
-    test_ply();
-    test_stl();
-    test_malformed();
-    test_numbers();
-    test_round_trips();
-    test_real_meshes();
-    test_gzip();
-    test_prefixes();
-    remove_temp_dir();
+    check_start(argc, argv);
+    CHECK_GROUP(make_temp_dir);
+    CHECK_GROUP(test_obj);
+    CHECK_GROUP(test_obj_materials);
+    CHECK_GROUP(test_off);
+    CHECK_GROUP(test_ply);
+    CHECK_GROUP(test_stl);
+    CHECK_GROUP(test_malformed);
+    CHECK_GROUP(test_numbers);
+    CHECK_GROUP(test_round_trips);
+    CHECK_GROUP(test_real_meshes);
+    CHECK_GROUP(test_gzip);
+    CHECK_GROUP(test_prefixes);
+    CHECK_GROUP(remove_temp_dir);
     return check_finish();
 }

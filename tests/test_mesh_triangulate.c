@@ -680,14 +680,15 @@ static void test_degenerate(void)
     cg_mesh_free(m);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_l_hexagon();
-    test_fan_kept();
-    test_random_simple();
-    test_orthogonal_and_holes();
-    test_in_space();
-    test_whole_mesh();
-    test_degenerate();
+    check_start(argc, argv);
+    CHECK_GROUP(test_l_hexagon);
+    CHECK_GROUP(test_fan_kept);
+    CHECK_GROUP(test_random_simple);
+    CHECK_GROUP(test_orthogonal_and_holes);
+    CHECK_GROUP(test_in_space);
+    CHECK_GROUP(test_whole_mesh);
+    CHECK_GROUP(test_degenerate);
     return check_finish();
 }

@@ -816,19 +816,20 @@ static void test_float_lighting(void)
               checked);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_random_scenes();
-    test_closed_mesh_once();
-    test_camera_inside();
-    test_zbuffer_brute_force();
-    test_painter();
-    test_perspective_interpolation();
-    test_culling();
-    test_normals();
-    test_threads_identical();
-    test_float_lighting();
-    test_renderer_reuse();
-    test_bad_input();
+    check_start(argc, argv);
+    CHECK_GROUP(test_random_scenes);
+    CHECK_GROUP(test_closed_mesh_once);
+    CHECK_GROUP(test_camera_inside);
+    CHECK_GROUP(test_zbuffer_brute_force);
+    CHECK_GROUP(test_painter);
+    CHECK_GROUP(test_perspective_interpolation);
+    CHECK_GROUP(test_culling);
+    CHECK_GROUP(test_normals);
+    CHECK_GROUP(test_threads_identical);
+    CHECK_GROUP(test_float_lighting);
+    CHECK_GROUP(test_renderer_reuse);
+    CHECK_GROUP(test_bad_input);
     return check_finish();
 }

@@ -265,12 +265,13 @@ static void test_bad_input(void)
     free(g.count);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_definition();
-    test_top_left();
-    test_tiling();
-    test_fan();
-    test_bad_input();
+    check_start(argc, argv);
+    CHECK_GROUP(test_definition);
+    CHECK_GROUP(test_top_left);
+    CHECK_GROUP(test_tiling);
+    CHECK_GROUP(test_fan);
+    CHECK_GROUP(test_bad_input);
     return check_finish();
 }

@@ -298,11 +298,12 @@ static void test_render(void)
     cg_scene_free(s);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_fields();
-    test_errors();
-    test_mutations();
-    test_render();
+    check_start(argc, argv);
+    CHECK_GROUP(test_fields);
+    CHECK_GROUP(test_errors);
+    CHECK_GROUP(test_mutations);
+    CHECK_GROUP(test_render);
     return check_finish();
 }

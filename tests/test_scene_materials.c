@@ -254,10 +254,11 @@ static void refusals(void)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    checker_scenes();
-    surface_terms();
-    refusals();
+    check_start(argc, argv);
+    CHECK_GROUP(checker_scenes);
+    CHECK_GROUP(surface_terms);
+    CHECK_GROUP(refusals);
     return check_finish();
 }

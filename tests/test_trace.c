@@ -525,14 +525,15 @@ static void test_shadow(void)
     cg_trace_scene_free(scene);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_triangle_and_bad_input();
-    test_optics();
-    test_bvh();
-    test_scene();
-    test_mesh_input();
-    test_index_one();
-    test_shadow();
+    check_start(argc, argv);
+    CHECK_GROUP(test_triangle_and_bad_input);
+    CHECK_GROUP(test_optics);
+    CHECK_GROUP(test_bvh);
+    CHECK_GROUP(test_scene);
+    CHECK_GROUP(test_mesh_input);
+    CHECK_GROUP(test_index_one);
+    CHECK_GROUP(test_shadow);
     return check_finish();
 }

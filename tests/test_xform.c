@@ -299,7 +299,7 @@ static void test_vanishing_points(void)
     /* One-point perspective: the depth edges converge at the image of the
      * view direction, the centre of the image when looking through it. */
     cg_view_look_at(cg_vec3_make(0, 0, 5), cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view);
-    cg_vec2 centre;
+    cg_vec2 centre = {NAN, NAN}; /* stays NaN, and fails, if no point is found */
     CHECK(vanishing_point(cg_mat4_mul(proj, view), cg_vec3_make(0, 0, -1), &centre));
     check_vec2(centre, 0, 0, 1e-15, "vanishing point at the centre");
 }
@@ -359,14 +359,15 @@ static void test_camera_and_viewport(void)
     CHECK_EQ_INT(cg_camera_frame(&cam, hi, lo, 1), CG_EINVAL);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    test_2d_known_points();
-    test_2d_random_invariants();
-    test_3d();
-    test_parallel_projections();
-    test_perspective();
-    test_vanishing_points();
-    test_camera_and_viewport();
+    check_start(argc, argv);
+    CHECK_GROUP(test_2d_known_points);
+    CHECK_GROUP(test_2d_random_invariants);
+    CHECK_GROUP(test_3d);
+    CHECK_GROUP(test_parallel_projections);
+    CHECK_GROUP(test_perspective);
+    CHECK_GROUP(test_vanishing_points);
+    CHECK_GROUP(test_camera_and_viewport);
     return check_finish();
 }

@@ -280,8 +280,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
          * points it can pass twice): the first ASM_BRANCHES of them */
         size_t branch_at[ASM_BRANCHES], branches = 0;
         for (;;) {
-            if (rb.n == rb.cap)
-                goto fail; /* (cannot happen: each piece is taken once) */
+            if (!CG_INVARIANT(rb.n < rb.cap)) /* each piece is taken once */
+                goto fail;
             rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
             int64_t vx = P[cur].x1, vy = P[cur].y1;
             /* outgoing pieces at v: the first of them */
@@ -490,8 +490,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         }
         if (fail_nest)
             goto fail;
-        /* output: each outer followed by its holes (a hole without an outer
-         * cannot happen; it would be dropped) */
+        /* output: each outer followed by its holes (every hole has an outer:
+         * one without would be dropped) */
         size_t *first_hole = (size_t *)(mem + off[14]);
         size_t *next_hole = first_hole + (nr + 1);
         int fail = 0;

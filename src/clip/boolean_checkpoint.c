@@ -93,8 +93,9 @@ size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
     /* (L->ed is NULL when no checkpoint logged an edge) */
     const ck_edge *r = c->n ? L->ed + c->first : NULL;
     for (size_t k = 0; k < c->n; k++)
-        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] == UINT32_MAX)
-            return 0; /* (cannot happen: no active edge there was split) */
+        /* no active edge there was split */
+        if (!CG_INVARIANT(r[k].e < s->prev_ne && s->prev_map[r[k].e] != UINT32_MAX))
+            return 0;
     s->nbrkq = 0;
     s->brkq_full = 0;
     for (size_t k = 0; k < c->n; k++) {

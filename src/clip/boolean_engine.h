@@ -5,6 +5,7 @@
 #define CG_CLIP_BOOLEAN_ENGINE_H
 
 #include "internal.h"
+#include "../core/invariant.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -496,8 +496,8 @@ int boolean_run_sweep(sweep *s)
                 size_t from = L->pt[s->prev_j].np, to = s->prev->end_np, j = 0;
                 if (s->band < s->nbands) {
                     j = boolean_ck_load(s, L, s->prev_j, s->bands[s->band][0]);
-                    if (!j)
-                        return -1; /* (cannot happen: prev_j itself is one) */
+                    if (!CG_INVARIANT(j != 0)) /* prev_j itself is one */
+                        return -1;
                     to = L->pt[j - 1].np;
                 }
                 s->ranges[s->nranges][0] = from;
@@ -665,8 +665,8 @@ int boolean_run_sweep(sweep *s)
             }
             copy_ids(above + na, below + ib, nb - ib);
             na += nb - ib;
-            if (ended != it - t0)
-                return -1; /* not sorted as expected (cannot happen) */
+            if (!CG_INVARIANT(ended == it - t0)) /* sorted as expected */
+                return -1;
             if (q_full) {
                 for (size_t k = 0; k < na; k++)
                     if (s->brk[above[k]])

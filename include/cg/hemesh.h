@@ -19,6 +19,20 @@
  * around a vertex: cg_hemesh_ccw(h) = twin(prev(h)) is the next outgoing
  * half-edge counter-clockwise, cg_hemesh_cw(h) = next(twin(h)) clockwise.
  *
+ * The two halves of edge e = 3, between vertices a and b:
+ *
+ *              b
+ *             /|\        half-edge 6 = 2e runs a -> b, face f on its left
+ *            / | \       half-edge 7 = 2e + 1 runs b -> a, face g on its left
+ *   face f  /  ^ v  \  face g
+ *          /  6| |7  \  edge(6) = edge(7) = 6 / 2 = 7 / 2 = 3
+ *              a
+ *
+ *     halfedges[6] = {next, prev, origin a, face f}
+ *     halfedges[7] = {next, prev, origin b, face g}
+ *     twin(6) = 6 ^ 1 = 7 and twin(7) = 7 ^ 1 = 6: flipping the lowest bit
+ *     moves between the halves, so no twin is stored.
+ *
  * Deletion (edge collapse, vertex and face removal) marks elements with
  * CG_HEMESH_DELETED and keeps the indices of everything else; the live counts
  * are kept up to date, and cg_hemesh_compact renumbers densely.

@@ -338,9 +338,21 @@ static inline int before_along(const split_sort *p, const split_sort *q)
 /* Does the segment a-b meet the "hot pixel" of the grid point p?  Exact,
  * on doubled coordinates.  Two kinds of pixel:
  * - half_open: the points that round to p, [px - 1/2, px + 1/2) x
- *   [py - 1/2, py + 1/2).  These tile the plane, so an edge meets its hot
- *   pixels one after the other, in the order of their centres along it,
- *   and snapping to them cannot make two edges cross (Hobby's theorem).
+ *   [py - 1/2, py + 1/2) (y up, as on the grid):
+ *
+ *       py + 1/2  o - - - - - - o   top side: out (rounds to py + 1)
+ *                 |             :
+ *                 |             :
+ *                 |      + p    :   right side: out (rounds to px + 1)
+ *                 |             :
+ *                 |             :
+ *       py - 1/2  *-------------o   left and bottom sides: in
+ *             px - 1/2       px + 1/2
+ *
+ *   (* the one corner that is in, o the three that are out).  These tile
+ *   the plane, so an edge meets its hot pixels one after the other, in
+ *   the order of their centres along it, and snapping to them cannot make
+ *   two edges cross (Hobby's theorem).
  *   Touching at a shared corner of four pixels, closed ones would let two
  *   edges take their centres in crossing orders.
  * - else the open square: the edge passes through its inside (what the

@@ -175,8 +175,21 @@ static int inside_all(int dim, const double *a, const double *b, const double *l
     return 1;
 }
 
-cg_status cg_clip_line_cohen_sutherland(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted,
-                                        cg_clip_trace_fn trace, void *user)
+/* The segment a-b clipped in dim dimensions by Liang-Barsky or by
+ * Cohen-Sutherland (traced when trace is given; a traced segment goes through
+ * the algorithm even when both ends are inside): 1 when a part remains, then
+ * in a and b. */
+static int clip_segment(int liang_barsky, int dim, double *a, double *b, const double *lo,
+                        const double *hi, cg_clip_trace_fn trace, void *user)
+{
+    if (!trace && inside_all(dim, a, b, lo, hi))
+        return 1;
+    return liang_barsky ? lb_clip(dim, a, b, lo, hi) : cs_clip(dim, a, b, lo, hi, trace, user);
+}
+
+/* The four public entry points: their checks, then clip_segment. */
+static cg_status clip_line2(int liang_barsky, cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted,
+                            cg_clip_trace_fn trace, void *user)
 {
     if (!p0 || !p1 || !accepted)
         return CG_EINVAL;
@@ -185,65 +198,48 @@ cg_status cg_clip_line_cohen_sutherland(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int
         return CG_EINVAL;
     double a[2] = {p0->x, p0->y}, b[2] = {p1->x, p1->y};
     double lo[2] = {w.xmin, w.ymin}, hi[2] = {w.xmax, w.ymax};
-    if (!trace && inside_all(2, a, b, lo, hi)) {
-        *accepted = 1;
-        return CG_OK;
-    }
-    if (cs_clip(2, a, b, lo, hi, trace, user)) {
+    if (clip_segment(liang_barsky, 2, a, b, lo, hi, trace, user)) {
         *p0 = cg_vec2_make(a[0], a[1]);
         *p1 = cg_vec2_make(b[0], b[1]);
         *accepted = 1;
     }
     return CG_OK;
+}
+
+static cg_status clip_line3(int liang_barsky, cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, int *accepted)
+{
+    if (!p0 || !p1 || !accepted)
+        return CG_EINVAL;
+    *accepted = 0;
+    if (!box_valid(box) || !vec3_finite(*p0) || !vec3_finite(*p1))
+        return CG_EINVAL;
+    double a[3] = {p0->x, p0->y, p0->z}, b[3] = {p1->x, p1->y, p1->z};
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    if (clip_segment(liang_barsky, 3, a, b, lo, hi, NULL, NULL)) {
+        *p0 = cg_vec3_make(a[0], a[1], a[2]);
+        *p1 = cg_vec3_make(b[0], b[1], b[2]);
+        *accepted = 1;
+    }
+    return CG_OK;
+}
+
+cg_status cg_clip_line_cohen_sutherland(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted,
+                                        cg_clip_trace_fn trace, void *user)
+{
+    return clip_line2(0, w, p0, p1, accepted, trace, user);
 }
 
 cg_status cg_clip_line_liang_barsky(cg_rect w, cg_vec2 *p0, cg_vec2 *p1, int *accepted)
 {
-    if (!p0 || !p1 || !accepted)
-        return CG_EINVAL;
-    *accepted = 0;
-    if (!rect_valid(w) || !vec2_finite(*p0) || !vec2_finite(*p1))
-        return CG_EINVAL;
-    double a[2] = {p0->x, p0->y}, b[2] = {p1->x, p1->y};
-    double lo[2] = {w.xmin, w.ymin}, hi[2] = {w.xmax, w.ymax};
-    if (inside_all(2, a, b, lo, hi) || lb_clip(2, a, b, lo, hi)) {
-        *p0 = cg_vec2_make(a[0], a[1]);
-        *p1 = cg_vec2_make(b[0], b[1]);
-        *accepted = 1;
-    }
-    return CG_OK;
+    return clip_line2(1, w, p0, p1, accepted, NULL, NULL);
 }
 
 cg_status cg_clip_line_cohen_sutherland3(cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, int *accepted)
 {
-    if (!p0 || !p1 || !accepted)
-        return CG_EINVAL;
-    *accepted = 0;
-    if (!box_valid(box) || !vec3_finite(*p0) || !vec3_finite(*p1))
-        return CG_EINVAL;
-    double a[3] = {p0->x, p0->y, p0->z}, b[3] = {p1->x, p1->y, p1->z};
-    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-    if (inside_all(3, a, b, lo, hi) || cs_clip(3, a, b, lo, hi, NULL, NULL)) {
-        *p0 = cg_vec3_make(a[0], a[1], a[2]);
-        *p1 = cg_vec3_make(b[0], b[1], b[2]);
-        *accepted = 1;
-    }
-    return CG_OK;
+    return clip_line3(0, box, p0, p1, accepted);
 }
 
 cg_status cg_clip_line_liang_barsky3(cg_box3 box, cg_vec3 *p0, cg_vec3 *p1, int *accepted)
 {
-    if (!p0 || !p1 || !accepted)
-        return CG_EINVAL;
-    *accepted = 0;
-    if (!box_valid(box) || !vec3_finite(*p0) || !vec3_finite(*p1))
-        return CG_EINVAL;
-    double a[3] = {p0->x, p0->y, p0->z}, b[3] = {p1->x, p1->y, p1->z};
-    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-    if (inside_all(3, a, b, lo, hi) || lb_clip(3, a, b, lo, hi)) {
-        *p0 = cg_vec3_make(a[0], a[1], a[2]);
-        *p1 = cg_vec3_make(b[0], b[1], b[2]);
-        *accepted = 1;
-    }
-    return CG_OK;
+    return clip_line3(1, box, p0, p1, accepted);
 }

@@ -16,6 +16,7 @@ if(CG_GEOS_C_LIBRARY AND CG_GEOS_C_INCLUDE)
   add_test(NAME test_clip_valid COMMAND clip_valid)
 else()
   cg_add_missing_peer_test(test_clip_geos "GEOS" libgeos-dev)
+  cg_add_missing_peer_test(test_clip_valid "GEOS" libgeos-dev)
 endif()
 
 # Boolean operations when memory runs out: the test wraps the C library's
@@ -38,7 +39,7 @@ else()
 endif()
 
 # Line clipping against exact rational clipping with GMP's mpq (libgmp-dev);
-# without GMP the test is skipped.
+# without GMP the test reports itself skipped and names the package.
 find_library(CG_GMP_LIBRARY NAMES gmp)
 find_path(CG_GMP_INCLUDE NAMES gmp.h)
 if(CG_GMP_LIBRARY AND CG_GMP_INCLUDE)
@@ -48,5 +49,5 @@ if(CG_GMP_LIBRARY AND CG_GMP_INCLUDE)
   target_link_libraries(clip_line_exact PRIVATE cg_static ${CG_GMP_LIBRARY} m)
   add_test(NAME test_clip_line_exact COMMAND clip_line_exact)
 else()
-  message(STATUS "GMP (libgmp-dev) not found: skipping test_clip_line_exact")
+  cg_add_missing_peer_test(test_clip_line_exact "GMP" libgmp-dev)
 endif()

@@ -289,7 +289,7 @@ typedef struct render_frame {
     frame_vertex *vertices;
     float *attributes;          /* attribute_count per vertex, valid where */
     atomic_uchar *states;       /* ... the vertex's state is 2 (see
-                                   vertex_attributes in pipeline.c) */
+                                   vertex_attributes in pipeline.h) */
     int thread_count;
     render_chunk *chunks;       /* chunk_count triangle ranges, in mesh order */
     int chunk_count;

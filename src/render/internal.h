@@ -194,7 +194,7 @@ typedef struct prepared_vertex {
 } prepared_vertex;
 
 struct render_chunk;
-struct render_pool;
+struct core_worker_pool;
 
 struct cg_renderer {
     cg_render_options options;
@@ -230,7 +230,7 @@ struct cg_renderer {
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
-    struct render_pool *pool;   /* worker threads kept between frames */
+    struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;           /* the thread count it was started for */
 };
 

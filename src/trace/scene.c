@@ -53,7 +53,21 @@ void cg_trace_scene_free(cg_trace_scene *scene)
     free(scene->indices);
     free(scene->triangle_object);
     cg_bvh_free(scene->bvh);
+    core_worker_pool_free(scene->pool);
     free(scene);
+}
+
+core_worker_pool *trace_scene_pool(cg_trace_scene *scene, int threads)
+{
+    if (threads < 2)
+        return NULL;
+    if (scene->pool_threads != threads) {
+        core_worker_pool_free(scene->pool);
+        if (core_worker_pool_create(threads, &scene->pool) != CG_OK)
+            scene->pool = NULL;
+        scene->pool_threads = threads;
+    }
+    return scene->pool;
 }
 
 /* Grows *array of *capacity elements of size to hold need elements. */
@@ -260,9 +274,9 @@ cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *secon
     if (!scene->built) {
         cg_bvh_free(scene->bvh);
         scene->bvh = NULL;
-        cg_status status = cg_bvh_build_threads(scene->positions, scene->vertex_count,
-                                                scene->indices, scene->triangle_count,
-                                                threads, &scene->bvh);
+        cg_status status = trace_bvh_build(scene->positions, scene->vertex_count,
+                                           scene->indices, scene->triangle_count,
+                                           trace_scene_pool(scene, threads), &scene->bvh);
         if (status != CG_OK)
             return status;
         scene->built = 1;

@@ -15,16 +15,12 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
     if (c->failed)
         return;
     size_t tiles = (size_t)f->tile_count;
-    if (c->bin_start_capacity < tiles) {
-        free(c->bin_start);
-        free(c->bin_fill);
-        c->bin_start = malloc((tiles + 1) * sizeof *c->bin_start);
-        c->bin_fill = malloc(tiles * sizeof *c->bin_fill);
-        c->bin_start_capacity = c->bin_start && c->bin_fill ? tiles : 0;
-        if (!c->bin_start_capacity) {
-            c->failed = 1;
-            return;
-        }
+    if (core_array_reserve((void **)&c->bin_start, &c->bin_start_capacity, tiles + 1,
+                           sizeof *c->bin_start) != CG_OK
+        || core_array_reserve((void **)&c->bin_fill, &c->bin_fill_capacity, tiles,
+                              sizeof *c->bin_fill) != CG_OK) {
+        c->failed = 1;
+        return;
     }
     uint32_t *start = c->bin_start, *fill = c->bin_fill;
     memset(start, 0, (tiles + 1) * sizeof *start);
@@ -44,12 +40,11 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
     }
     for (size_t t = 0; t < tiles; t++)
         start[t + 1] += start[t];
-    void *list = grow(c->bin_list, &c->bin_capacity, total ? total : 1, sizeof *c->bin_list);
-    if (!list) {
+    if (core_array_reserve((void **)&c->bin_list, &c->bin_capacity, total ? total : 1,
+                           sizeof *c->bin_list) != CG_OK) {
         c->failed = 1;
         return;
     }
-    c->bin_list = list;
     memcpy(fill, start, tiles * sizeof *fill);
     for (size_t i = 0; i < c->setup_count; i++) {
         const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);

@@ -9,19 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A buffer of the renderer kept between frames, with room for needed items
- * of size bytes; its contents are not kept when it has to be replaced.  NULL
- * (and capacity 0) when memory runs out. */
-static void *reserve(void *buffer, size_t *capacity, size_t needed, size_t size)
-{
-    if (needed <= *capacity)
-        return buffer;
-    free(buffer);
-    buffer = malloc(needed * size);
-    *capacity = buffer ? needed : 0;
-    return buffer;
-}
-
 static cg_status frame_camera(cg_renderer *r, double aspect, cg_camera *camera)
 {
     *camera = r->options.camera;
@@ -99,6 +86,7 @@ void render_buffers_free(cg_renderer *r)
     free(r->chunks);
     r->chunks = NULL;
     r->chunk_count = 0;
+    r->chunk_capacity = 0;
     free(r->frame_vertices);
     free(r->frame_attributes);
     free(r->frame_states);
@@ -117,13 +105,14 @@ static cg_status frame_vertex_buffers(render_frame *f)
     cg_renderer *r = f->r;
     size_t count = r->vertex_count ? r->vertex_count : 1;
     size_t floats = count * (size_t)(f->attribute_count ? f->attribute_count : 1);
-    r->frame_vertices = reserve(r->frame_vertices, &r->frame_vertex_capacity, count,
-                                sizeof *r->frame_vertices);
-    r->frame_attributes = reserve(r->frame_attributes, &r->frame_attribute_capacity, floats,
-                                  sizeof *r->frame_attributes);
-    r->frame_states = reserve(r->frame_states, &r->frame_state_capacity, count,
-                              sizeof *r->frame_states);
-    if (!r->frame_vertices || !r->frame_attributes || !r->frame_states)
+    /* The vertex count is the mesh's: these grow at the first frame only
+     * (and the attributes when the shading needs more of them). */
+    if (core_array_reserve((void **)&r->frame_vertices, &r->frame_vertex_capacity, count,
+                           sizeof *r->frame_vertices) != CG_OK
+        || core_array_reserve((void **)&r->frame_attributes, &r->frame_attribute_capacity, floats,
+                              sizeof *r->frame_attributes) != CG_OK
+        || core_array_reserve((void **)&r->frame_states, &r->frame_state_capacity, count,
+                              sizeof *r->frame_states) != CG_OK)
         return CG_ENOMEM;
     f->vertices = r->frame_vertices;
     f->attributes = r->frame_attributes;
@@ -140,12 +129,11 @@ static cg_status frame_chunks(render_frame *f)
     size_t wanted = (r->triangle_count + TRIANGLE_BLOCK - 1) / TRIANGLE_BLOCK;
     f->chunk_count = wanted < 1 ? 1 : wanted > MAX_CHUNKS ? MAX_CHUNKS : (int)wanted;
     if (r->chunk_count < f->chunk_count) {
-        render_chunk *chunks = realloc(r->chunks, (size_t)f->chunk_count * sizeof *chunks);
-        if (!chunks)
+        if (core_array_reserve((void **)&r->chunks, &r->chunk_capacity, (size_t)f->chunk_count,
+                               sizeof *r->chunks) != CG_OK)
             return CG_ENOMEM;
-        memset(chunks + r->chunk_count, 0,
-               (size_t)(f->chunk_count - r->chunk_count) * sizeof *chunks);
-        r->chunks = chunks;
+        memset(r->chunks + r->chunk_count, 0,
+               (size_t)(f->chunk_count - r->chunk_count) * sizeof *r->chunks);
         r->chunk_count = f->chunk_count;
     }
     for (int i = 0; i < f->chunk_count; i++) {
@@ -215,19 +203,15 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     f.tiles_y = (f.height + RENDER_TILE - 1) / RENDER_TILE;
     f.tile_count = f.tiles_x * f.tiles_y;
     size_t pixels = (size_t)f.width * (size_t)f.height;
-    if (r->depth_size < pixels) {
-        float *depth = realloc(r->depth, pixels * sizeof *depth);
-        if (!depth)
-            return CG_ENOMEM;
-        r->depth = depth;
-        r->depth_size = pixels;
-    }
+    if (core_array_reserve((void **)&r->depth, &r->depth_capacity, pixels, sizeof *r->depth)
+        != CG_OK)
+        return CG_ENOMEM;
     f.depth = r->depth;
     /* Which tiles hold infinite depth from an earlier frame of this size. */
     int same_layout = r->depth_width == f.width && r->depth_height == f.height;
     if (r->clean_tile_capacity < (size_t)f.tile_count) {
-        r->clean_tiles = reserve(r->clean_tiles, &r->clean_tile_capacity, (size_t)f.tile_count, 1);
-        if (!r->clean_tiles)
+        if (core_array_reserve((void **)&r->clean_tiles, &r->clean_tile_capacity,
+                               (size_t)f.tile_count, 1) != CG_OK)
             return CG_ENOMEM;
         same_layout = 0;
     }

@@ -214,7 +214,7 @@ struct cg_renderer {
     /* frame state */
     cg_camera camera;
     float *depth;
-    size_t depth_size;
+    size_t depth_capacity;    /* floats */
     int depth_valid;
     int depth_width, depth_height;
     cg_render_stats stats;
@@ -225,7 +225,8 @@ struct cg_renderer {
     atomic_uchar *frame_states;
     size_t frame_vertex_capacity, frame_attribute_capacity, frame_state_capacity;
     struct render_chunk *chunks;
-    int chunk_count;
+    int chunk_count;          /* chunks initialized */
+    size_t chunk_capacity;
     unsigned char *clean_tiles; /* per tile of the last frame's size: its depth
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
@@ -263,7 +264,7 @@ typedef struct render_chunk {
     size_t setup_stride;        /* the frame->stride the capacity counts */
     uint32_t *bin_start;        /* tile_count + 1 */
     uint32_t *bin_fill;         /* tile_count */
-    size_t bin_start_capacity;  /* in tiles */
+    size_t bin_start_capacity, bin_fill_capacity;
     uint32_t *bin_list;         /* setup indices by tile */
     size_t bin_capacity;
     painter_polygon *polygons;  /* painter's only */

@@ -11,6 +11,7 @@
  * broken by splitting P (or Q) along the other's plane.  The tests run in
  * screen space (pixels, window depth), where the projection is parallel. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -26,7 +27,7 @@ typedef struct painter {
     const render_frame *f;
     painter_polygon *polygons;
     node *nodes;
-    size_t count, capacity, limit;
+    size_t count, polygon_capacity, node_capacity, limit;
     double depth_scale;
 } painter;
 
@@ -132,18 +133,11 @@ static int may_precede(const painter *pt, int p, int q)
 
 static int add_polygon(painter *pt, const painter_polygon *p)
 {
-    if (pt->count == pt->capacity) {
-        size_t capacity = pt->capacity * 2 + 16;
-        painter_polygon *polygons = realloc(pt->polygons, capacity * sizeof *polygons);
-        if (!polygons)
-            return -1;
-        pt->polygons = polygons;
-        node *nodes = realloc(pt->nodes, capacity * sizeof *nodes);
-        if (!nodes)
-            return -1;
-        pt->nodes = nodes;
-        pt->capacity = capacity;
-    }
+    if (core_array_reserve((void **)&pt->polygons, &pt->polygon_capacity, pt->count + 1,
+                           sizeof *pt->polygons) != CG_OK
+        || core_array_reserve((void **)&pt->nodes, &pt->node_capacity, pt->count + 1,
+                              sizeof *pt->nodes) != CG_OK)
+        return -1;
     pt->polygons[pt->count] = *p;
     memset(&pt->nodes[pt->count], 0, sizeof(node));
     describe(pt, (int)pt->count);

@@ -17,9 +17,9 @@
 #define CG_RENDER_PIPELINE_H
 
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdatomic.h>
-#include <stdlib.h>
 
 /* Shading modes (the values of cg_shading). */
 enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
@@ -91,21 +91,6 @@ void render_triangle_stage(render_frame *f, render_chunk *c, int painter);
 /* Tile lists of one chunk (counting sort by tile, mesh order kept), in
  * buffers kept from frame to frame. */
 void render_bin_chunk(render_frame *f, render_chunk *c);
-
-/* Grows buffer (keeping its contents) to room for needed items of size
- * bytes; NULL when memory runs out (buffer is then still valid). */
-static inline void *grow(void *buffer, size_t *capacity, size_t needed, size_t size)
-{
-    if (needed <= *capacity)
-        return buffer;
-    size_t capacity2 = *capacity ? *capacity : 64;
-    while (capacity2 < needed)
-        capacity2 *= 2;
-    void *p = realloc(buffer, capacity2 * size);
-    if (p)
-        *capacity = capacity2;
-    return p;
-}
 
 /* ---- the tiles (clear.c) and the team of threads (team.c) ------------------- */
 

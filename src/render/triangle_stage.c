@@ -22,12 +22,10 @@ static setup_triangle *next_setup(render_frame *f, render_chunk *c)
     size_t needed = c->setup_count + 1 + f->setup_slack;
     if (needed <= c->setup_capacity)
         return (setup_triangle *)(c->setups + c->setup_count * f->stride);
-    void *p = grow(c->setups, &c->setup_capacity, needed, f->stride);
-    if (!p) {
+    if (core_array_reserve((void **)&c->setups, &c->setup_capacity, needed, f->stride) != CG_OK) {
         c->failed = 1;
         return NULL;
     }
-    c->setups = p;
     return (setup_triangle *)(c->setups + c->setup_count * f->stride);
 }
 
@@ -45,13 +43,11 @@ static void emit_polygon(render_chunk *c, const screen_vertex *v, int n, const f
 {
     if (c->failed)
         return;
-    painter_polygon *p = grow(c->polygons, &c->polygon_capacity, c->polygon_count + 1,
-                              sizeof *p);
-    if (!p) {
+    if (core_array_reserve((void **)&c->polygons, &c->polygon_capacity, c->polygon_count + 1,
+                           sizeof *c->polygons) != CG_OK) {
         c->failed = 1;
         return;
     }
-    c->polygons = p;
     painter_polygon *out = &c->polygons[c->polygon_count++];
     out->n = n;
     memcpy(out->color, color, sizeof out->color);

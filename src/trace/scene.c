@@ -3,6 +3,7 @@
  * Triangles of every mesh share one BVH (in world space); spheres and planes
  * are few and tested one by one. */
 #include "internal.h"
+#include "../core/array.h"
 #include "cg/render.h"
 
 #include <stdlib.h>
@@ -70,29 +71,10 @@ core_worker_pool *trace_scene_pool(cg_trace_scene *scene, int threads)
     return scene->pool;
 }
 
-/* Grows *array of *capacity elements of size to hold need elements. */
-static int reserve(void **array, size_t *capacity, size_t need, size_t size)
-{
-    if (need <= *capacity)
-        return 1;
-    size_t cap = *capacity ? *capacity : 8;
-    while (cap < need) {
-        if (cap > SIZE_MAX / 2 / size)
-            return 0;
-        cap *= 2;
-    }
-    void *p = realloc(*array, cap * size);
-    if (!p)
-        return 0;
-    *array = p;
-    *capacity = cap;
-    return 1;
-}
-
 static cg_status add_object(cg_trace_scene *scene, const trace_object *object)
 {
-    if (!reserve((void **)&scene->objects, &scene->object_capacity, scene->object_count + 1,
-                 sizeof *scene->objects))
+    if (core_array_reserve((void **)&scene->objects, &scene->object_capacity,
+                           scene->object_count + 1, sizeof *scene->objects) != CG_OK)
         return CG_ENOMEM;
     scene->objects[scene->object_count++] = *object;
     cg_bvh_free(scene->bvh);
@@ -139,19 +121,16 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
     size_t v0 = scene->vertex_count, t0 = scene->triangle_count;
     if (mesh->vertex_count > UINT32_MAX - v0 || triangles > 0x7fffffff - t0)
         return CG_ERANGE;
-    size_t normal_capacity = scene->normal_capacity;
-    size_t object_capacity = scene->triangle_object_capacity;
-    if (!reserve((void **)&scene->positions, &scene->vertex_capacity, v0 + mesh->vertex_count,
-                 sizeof *scene->positions)
-        || !reserve((void **)&scene->normals, &normal_capacity, 3 * (t0 + triangles),
-                    sizeof *scene->normals)
-        || !reserve((void **)&scene->indices, &scene->index_capacity, 3 * (t0 + triangles),
-                    sizeof *scene->indices)
-        || !reserve((void **)&scene->triangle_object, &object_capacity, t0 + triangles,
-                    sizeof *scene->triangle_object))
+    if (core_array_reserve((void **)&scene->positions, &scene->vertex_capacity,
+                           v0 + mesh->vertex_count, sizeof *scene->positions) != CG_OK
+        || core_array_reserve((void **)&scene->normals, &scene->normal_capacity,
+                              3 * (t0 + triangles), sizeof *scene->normals) != CG_OK
+        || core_array_reserve((void **)&scene->indices, &scene->index_capacity,
+                              3 * (t0 + triangles), sizeof *scene->indices) != CG_OK
+        || core_array_reserve((void **)&scene->triangle_object,
+                              &scene->triangle_object_capacity, t0 + triangles,
+                              sizeof *scene->triangle_object) != CG_OK)
         return CG_ENOMEM;
-    scene->normal_capacity = normal_capacity;
-    scene->triangle_object_capacity = object_capacity;
     /* Normals at face corners: the file's vertex normals, or the
      * renderer's crease-angle normals (cg/render.h) when it has none. */
     cg_vec3 *corner = NULL;
@@ -245,8 +224,8 @@ cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light)
 {
     if (!scene || !light || cg_light_check(light, NULL) != CG_OK)
         return CG_EINVAL;
-    if (!reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count + 1,
-                 sizeof *scene->lights))
+    if (core_array_reserve((void **)&scene->lights, &scene->light_capacity,
+                           scene->light_count + 1, sizeof *scene->lights) != CG_OK)
         return CG_ENOMEM;
     scene->lights[scene->light_count++] = *light;
     return CG_OK;
@@ -258,8 +237,8 @@ cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_ar
         || !finite3(light->edge_v) || !finite3(light->color) || light->color.x < 0
         || light->color.y < 0 || light->color.z < 0 || light->samples < 1 || light->samples > 64)
         return CG_EINVAL;
-    if (!reserve((void **)&scene->area_lights, &scene->area_light_capacity,
-                 scene->area_light_count + 1, sizeof *scene->area_lights))
+    if (core_array_reserve((void **)&scene->area_lights, &scene->area_light_capacity,
+                           scene->area_light_count + 1, sizeof *scene->area_lights) != CG_OK)
         return CG_ENOMEM;
     scene->area_lights[scene->area_light_count++] = *light;
     return CG_OK;

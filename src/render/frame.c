@@ -153,111 +153,130 @@ static cg_status frame_chunks(render_frame *f)
     return CG_OK;
 }
 
-cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
+/* The frame's camera, matrices, lights and modes for drawing into image. */
+static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
 {
-    if (!r || !image || !image->data || image->width <= 0 || image->height <= 0
-        || (image->format != CG_PIXEL_RGBA8 && image->format != CG_PIXEL_RGBAF))
-        return CG_EINVAL;
-    if (image->width > CG_RASTER_MAX_SIDE || image->height > CG_RASTER_MAX_SIDE)
-        return CG_ERANGE;
     const cg_render_options *o = &r->options;
-    memset(&r->stats, 0, sizeof r->stats);
-    r->stats.triangles = r->triangle_count;
-    r->depth_valid = 0;
-    render_frame f;
-    memset(&f, 0, sizeof f);
-    f.r = r;
-    f.o = o;
-    f.image = image;
-    f.width = image->width;
-    f.height = image->height;
-    double aspect = (double)f.width / f.height;
+    memset(f, 0, sizeof *f);
+    f->r = r;
+    f->o = o;
+    f->image = image;
+    f->width = image->width;
+    f->height = image->height;
+    double aspect = (double)f->width / f->height;
     cg_camera camera;
     cg_mat4 view, projection;
     if (frame_camera(r, aspect, &camera) != CG_OK || cg_camera_view(&camera, &view) != CG_OK
         || cg_camera_projection(&camera, aspect, &projection) != CG_OK)
         return CG_EINVAL;
     r->camera = camera;
-    f.model = o->model;
-    f.mvp = cg_mat4_mul(projection, cg_mat4_mul(view, o->model));
+    f->model = o->model;
+    f->mvp = cg_mat4_mul(projection, cg_mat4_mul(view, o->model));
     cg_mat4 inverse;
     if (cg_mat4_inverse(o->model, &inverse) != CG_OK)
         return CG_EINVAL;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            f.normal_matrix[i][j] = (float)inverse.m[j][i];
-    setup_lighting(&f, &camera, &view);
-    f.fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
-    f.shading = f.fill_background ? MODE_FLAT : (int)o->shading;
-    f.attribute_count = f.shading == MODE_FLAT ? 0 : f.shading == MODE_GOURAUD ? 3
-                        : r->varying_color ? 9 : 6;
-    f.cull = o->cull == CG_CULL_BACK;
-    f.background[0] = o->background.r;
-    f.background[1] = o->background.g;
-    f.background[2] = o->background.b;
-    f.background[3] = o->background.a;
-    f.background8 = cg_linear_to_rgba8(o->background);
-    f.stride = SETUP_SIZE(f.attribute_count);
-    f.setup_slack = (sizeof(setup_triangle) + f.stride - 1) / f.stride;
-    f.tiles_x = (f.width + RENDER_TILE - 1) / RENDER_TILE;
-    f.tiles_y = (f.height + RENDER_TILE - 1) / RENDER_TILE;
-    f.tile_count = f.tiles_x * f.tiles_y;
-    size_t pixels = (size_t)f.width * (size_t)f.height;
+            f->normal_matrix[i][j] = (float)inverse.m[j][i];
+    setup_lighting(f, &camera, &view);
+    f->fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
+    f->shading = f->fill_background ? MODE_FLAT : (int)o->shading;
+    f->attribute_count = f->shading == MODE_FLAT ? 0 : f->shading == MODE_GOURAUD ? 3
+                         : r->varying_color ? 9 : 6;
+    f->cull = o->cull == CG_CULL_BACK;
+    f->background[0] = o->background.r;
+    f->background[1] = o->background.g;
+    f->background[2] = o->background.b;
+    f->background[3] = o->background.a;
+    f->background8 = cg_linear_to_rgba8(o->background);
+    f->stride = SETUP_SIZE(f->attribute_count);
+    f->setup_slack = (sizeof(setup_triangle) + f->stride - 1) / f->stride;
+    f->tiles_x = (f->width + RENDER_TILE - 1) / RENDER_TILE;
+    f->tiles_y = (f->height + RENDER_TILE - 1) / RENDER_TILE;
+    f->tile_count = f->tiles_x * f->tiles_y;
+    return CG_OK;
+}
+
+/* The depth buffer and the tiles known to hold infinite depth, kept by the
+ * renderer from frame to frame. */
+static cg_status frame_depth_buffers(render_frame *f)
+{
+    cg_renderer *r = f->r;
+    size_t pixels = (size_t)f->width * (size_t)f->height;
     if (core_array_reserve((void **)&r->depth, &r->depth_capacity, pixels, sizeof *r->depth)
         != CG_OK)
         return CG_ENOMEM;
-    f.depth = r->depth;
+    f->depth = r->depth;
     /* Which tiles hold infinite depth from an earlier frame of this size. */
-    int same_layout = r->depth_width == f.width && r->depth_height == f.height;
-    if (r->clean_tile_capacity < (size_t)f.tile_count) {
+    int same_layout = r->depth_width == f->width && r->depth_height == f->height;
+    if (r->clean_tile_capacity < (size_t)f->tile_count) {
         if (core_array_reserve((void **)&r->clean_tiles, &r->clean_tile_capacity,
-                               (size_t)f.tile_count, 1) != CG_OK)
+                               (size_t)f->tile_count, 1) != CG_OK)
             return CG_ENOMEM;
         same_layout = 0;
     }
     if (!same_layout)
-        memset(r->clean_tiles, 0, (size_t)f.tile_count);
-    f.clean_tiles = r->clean_tiles;
-    r->depth_width = f.width;
-    r->depth_height = f.height;
+        memset(r->clean_tiles, 0, (size_t)f->tile_count);
+    f->clean_tiles = r->clean_tiles;
+    r->depth_width = f->width;
+    r->depth_height = f->height;
+    return CG_OK;
+}
 
-    /* Whole-object culling: the bounding box against the six planes. */
+/* Whole-object culling: the planes of the view volume that the mesh's
+ * bounding box lies wholly outside of (0x3f when it has no bounds). */
+static unsigned object_outside(const render_frame *f)
+{
+    const cg_renderer *r = f->r;
     unsigned all = 0x3f;
     if (r->has_bounds) {
         for (int i = 0; i < 8; i++) {
             cg_vec3 p = {(i & 1) ? r->hi.x : r->lo.x, (i & 2) ? r->hi.y : r->lo.y,
                          (i & 4) ? r->hi.z : r->lo.z};
-            cg_vec4 c = cg_mat4_mul_vec4(f.mvp, cg_vec4_from_point(p));
+            cg_vec4 c = cg_mat4_mul_vec4(f->mvp, cg_vec4_from_point(p));
             double cc[4] = {c.x, c.y, c.z, c.w};
             all &= render_outcode(cc);
         }
     }
-    if (all || r->triangle_count == 0 || o->edges == CG_EDGES_WIREFRAME) {
-        r->stats.object_culled = all != 0 && r->has_bounds;
-        render_clear_tile(&f, 0, 0, f.width, f.height, 0, 1);
-        memset(f.clean_tiles, 1, (size_t)f.tile_count);
-        r->depth_valid = 1;
-        if (o->edges == CG_EDGES_WIREFRAME && !all && r->triangle_count) {
-            if (frame_vertex_buffers(&f) != CG_OK)
-                return CG_ENOMEM;
-            render_vertex_stage(&f, 0, r->vertex_count);
-            r->depth_valid = 0;
-            return render_edges(&f);
-        }
-        return CG_OK;
-    }
+    return all;
+}
 
-    f.thread_count = o->threads;
-    if ((size_t)f.thread_count > r->triangle_count)
-        f.thread_count = (int)r->triangle_count;
-    if (frame_vertex_buffers(&f) != CG_OK || frame_chunks(&f) != CG_OK)
+/* A frame without faces to draw (the object culled, no triangles, or a
+ * wireframe): the background, and the wireframe's edges. */
+static cg_status draw_without_faces(render_frame *f, unsigned outside)
+{
+    cg_renderer *r = f->r;
+    r->stats.object_culled = outside != 0 && r->has_bounds;
+    render_clear_tile(f, 0, 0, f->width, f->height, 0, 1);
+    memset(f->clean_tiles, 1, (size_t)f->tile_count);
+    r->depth_valid = 1;
+    if (f->o->edges == CG_EDGES_WIREFRAME && !outside && r->triangle_count) {
+        if (frame_vertex_buffers(f) != CG_OK)
+            return CG_ENOMEM;
+        render_vertex_stage(f, 0, r->vertex_count);
+        r->depth_valid = 0;
+        return render_edges(f);
+    }
+    return CG_OK;
+}
+
+/* The faces through the stages on the team of threads (and the painter's
+ * algorithm after them), then the edges drawn over. */
+static cg_status draw_faces(render_frame *f)
+{
+    cg_renderer *r = f->r;
+    const cg_render_options *o = f->o;
+    f->thread_count = o->threads;
+    if ((size_t)f->thread_count > r->triangle_count)
+        f->thread_count = (int)r->triangle_count;
+    if (frame_vertex_buffers(f) != CG_OK || frame_chunks(f) != CG_OK)
         return CG_ENOMEM;
     int painter = o->algorithm != CG_RENDER_ZBUFFER;
     size_t fragments;
-    render_run_phases(&f, painter, &fragments);
+    render_run_phases(f, painter, &fragments);
     cg_status status = CG_OK;
-    for (int i = 0; i < f.chunk_count && status == CG_OK; i++) {
-        render_chunk *c = &f.chunks[i];
+    for (int i = 0; i < f->chunk_count && status == CG_OK; i++) {
+        render_chunk *c = &f->chunks[i];
         if (c->failed)
             status = CG_ENOMEM;
         r->stats.culled += c->culled;
@@ -267,14 +286,36 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     }
     r->stats.fragments += fragments;
     if (status == CG_OK && painter) {
-        memset(f.clean_tiles, 0, (size_t)f.tile_count); /* painted over everywhere */
-        status = render_painter(&f);
+        memset(f->clean_tiles, 0, (size_t)f->tile_count); /* painted over everywhere */
+        status = render_painter(f);
     }
     if (status == CG_OK) {
         r->depth_valid = 1;
-        r->stats.splits = f.splits;
+        r->stats.splits = f->splits;
         if (o->edges == CG_EDGES_HIDDEN_LINE || o->edges == CG_EDGES_OVERLAY)
-            status = render_edges(&f);
+            status = render_edges(f);
     }
     return status;
+}
+
+cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
+{
+    if (!r || !image || !image->data || image->width <= 0 || image->height <= 0
+        || (image->format != CG_PIXEL_RGBA8 && image->format != CG_PIXEL_RGBAF))
+        return CG_EINVAL;
+    if (image->width > CG_RASTER_MAX_SIDE || image->height > CG_RASTER_MAX_SIDE)
+        return CG_ERANGE;
+    memset(&r->stats, 0, sizeof r->stats);
+    r->stats.triangles = r->triangle_count;
+    r->depth_valid = 0;
+    render_frame f;
+    cg_status status = frame_begin(r, image, &f);
+    if (status == CG_OK)
+        status = frame_depth_buffers(&f);
+    if (status != CG_OK)
+        return status;
+    unsigned outside = object_outside(&f);
+    if (outside || r->triangle_count == 0 || r->options.edges == CG_EDGES_WIREFRAME)
+        return draw_without_faces(&f, outside);
+    return draw_faces(&f);
 }

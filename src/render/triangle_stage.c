@@ -96,9 +96,140 @@ void render_finish_setup(const render_frame *f, setup_triangle *t, const float c
     t->color8.a = 255;
 }
 
-void render_triangle_stage(render_frame *f, render_chunk *c, int painter)
+/* A triangle wholly inside the view volume: set up from the vertices the
+ * vertex stage projected and snapped; back faces leave before anything
+ * else is read. */
+static inline void setup_inside(render_frame *f, render_chunk *c, size_t i, const uint32_t *tri,
+                                const frame_vertex *const v[3])
 {
     const int n = f->attribute_count;
+    int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
+                   - (int64_t)(v[1]->sy - v[0]->sy) * (v[2]->sx - v[0]->sx);
+    if (area > 0 && f->cull) {
+        c->culled++;
+        return;
+    }
+    render_corner corner[3];
+    for (int k = 0; k < 3; k++) {
+        corner[k].x = v[k]->sx;
+        corner[k].y = v[k]->sy;
+        corner[k].z = v[k]->sz;
+        corner[k].iw = v[k]->siw;
+        corner[k].a = NULL;
+    }
+    const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
+    /* Set up in place at the end of the chunk's list, attributes after:
+     * only triangles that cover a pixel need them. */
+    setup_triangle *t = next_setup(f, c);
+    if (!t)
+        return;
+    int result = render_setup_fixed(pc, f->width, f->height, 0, f->cull, t);
+    if (result < 0) {
+        c->culled++;
+        return;
+    }
+    if (result == 0) {
+        c->rejected++;
+        return;
+    }
+    if (n > 0) {
+        /* In the setup's order: turned around unless clockwise. */
+        static const int turned[3] = {0, 2, 1}, kept[3] = {0, 1, 2};
+        const int *order = area > 0 ? kept : turned;
+        float local[RENDER_MAX_ATTRIBUTES];
+        for (int k = 0; k < 3; k++)
+            memcpy(t->a + k * n, vertex_attributes(f, tri[order[k]], local),
+                   sizeof(float) * (size_t)n);
+    }
+    float color[3];
+    triangle_color(f, i, color);
+    render_finish_setup(f, t, color);
+    emit_setup(f, c, t);
+}
+
+/* The triangle clipped against the planes in `any` (none: as it is) and
+ * projected into s; returns the corner count, 0 when nothing usable is
+ * left (fewer than three corners, or one not in front of the eye). */
+static int clip_and_project(render_frame *f, render_chunk *c, const uint32_t *tri, unsigned any,
+                            screen_vertex s[RENDER_MAX_POLYGON])
+{
+    const int n = f->attribute_count;
+    clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
+    for (int k = 0; k < 3; k++) {
+        render_clip_position(f, tri[k], in[k].c);
+        if (n > 0) {
+            const float *a = vertex_attributes(f, tri[k], in[k].a);
+            if (a != in[k].a)
+                memcpy(in[k].a, a, sizeof(float) * (size_t)n);
+        }
+    }
+    int count = 3;
+    const clip_vertex *corners = in;
+    if (any) {
+        c->clipped++;
+        count = render_clip_polygon(in, 3, any, n, polygon);
+        corners = polygon;
+    }
+    int usable = count >= 3;
+    for (int k = 0; k < count; k++) {
+        if (!(corners[k].c[3] > 0))
+            usable = 0;
+        render_project(&corners[k], f->width, f->height, n, &s[k]);
+    }
+    return usable ? count : 0;
+}
+
+/* The painter's algorithm keeps the clipped polygon whole, culled by the
+ * orientation of all its corners. */
+static void keep_polygon(render_frame *f, render_chunk *c, size_t i, const screen_vertex *s,
+                         int count)
+{
+    float color[3];
+    triangle_color(f, i, color);
+    double area = 0;
+    for (int k = 0; k < count; k++) {
+        const screen_vertex *p = &s[k], *q = &s[(k + 1) % count];
+        area += (q->x - p->x) * (q->y + p->y);
+    }
+    /* area > 0 for polygons the camera sees counter-clockwise (front). */
+    if (f->cull && area <= 0) {
+        c->culled++;
+        return;
+    }
+    emit_polygon(c, s, count, color);
+}
+
+/* The z-buffer sets up the clipped polygon as a fan of triangles. */
+static void setup_fan(render_frame *f, render_chunk *c, size_t i, const screen_vertex *s,
+                      int count)
+{
+    const int n = f->attribute_count;
+    float color[3];
+    int colored = 0, culled = 0, emitted = 0;
+    for (int k = 1; k + 1 < count; k++) {
+        setup_triangle t;
+        int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->cull, &t);
+        if (result < 0)
+            culled = 1;
+        if (result != 1)
+            continue;
+        if (!colored) {
+            /* Lit only once the triangle is known to be visible. */
+            triangle_color(f, i, color);
+            colored = 1;
+        }
+        render_finish_setup(f, &t, color);
+        emit_setup(f, c, &t);
+        emitted++;
+    }
+    if (culled && !emitted)
+        c->culled++;
+    else if (!emitted)
+        c->rejected++;
+}
+
+void render_triangle_stage(render_frame *f, render_chunk *c, int painter)
+{
     for (size_t i = c->begin; i < c->end; i++) {
         const uint32_t *tri = f->r->triangles[i];
         const frame_vertex *v[3] = {&f->vertices[tri[0]], &f->vertices[tri[1]],
@@ -110,118 +241,16 @@ void render_triangle_stage(render_frame *f, render_chunk *c, int painter)
             continue;
         }
         if (!painter && v[0]->projected && v[1]->projected && v[2]->projected) {
-            /* Inside the frustum: set up from the snapped vertices; back
-             * faces leave before anything else is read. */
-            int64_t area = (int64_t)(v[1]->sx - v[0]->sx) * (v[2]->sy - v[0]->sy)
-                           - (int64_t)(v[1]->sy - v[0]->sy) * (v[2]->sx - v[0]->sx);
-            if (area > 0 && f->cull) {
-                c->culled++;
-                continue;
-            }
-            render_corner corner[3];
-            for (int k = 0; k < 3; k++) {
-                corner[k].x = v[k]->sx;
-                corner[k].y = v[k]->sy;
-                corner[k].z = v[k]->sz;
-                corner[k].iw = v[k]->siw;
-                corner[k].a = NULL;
-            }
-            const render_corner *pc[3] = {&corner[0], &corner[1], &corner[2]};
-            /* Set up in place at the end of the chunk's list, attributes
-             * after: only triangles that cover a pixel need them. */
-            setup_triangle *t = next_setup(f, c);
-            if (!t)
-                continue;
-            int result = render_setup_fixed(pc, f->width, f->height, 0, f->cull, t);
-            if (result < 0) {
-                c->culled++;
-                continue;
-            }
-            if (result == 0) {
-                c->rejected++;
-                continue;
-            }
-            if (n > 0) {
-                /* In the setup's order: turned around unless clockwise. */
-                static const int turned[3] = {0, 2, 1}, kept[3] = {0, 1, 2};
-                const int *order = area > 0 ? kept : turned;
-                float local[RENDER_MAX_ATTRIBUTES];
-                for (int k = 0; k < 3; k++)
-                    memcpy(t->a + k * n, vertex_attributes(f, tri[order[k]], local),
-                           sizeof(float) * (size_t)n);
-            }
-            float color[3];
-            triangle_color(f, i, color);
-            render_finish_setup(f, t, color);
-            emit_setup(f, c, t);
+            setup_inside(f, c, i, tri, v);
             continue;
-        }
-        clip_vertex in[3], polygon[RENDER_MAX_POLYGON];
-        for (int k = 0; k < 3; k++) {
-            render_clip_position(f, tri[k], in[k].c);
-            if (n > 0) {
-                const float *a = vertex_attributes(f, tri[k], in[k].a);
-                if (a != in[k].a)
-                    memcpy(in[k].a, a, sizeof(float) * (size_t)n);
-            }
-        }
-        int count = 3;
-        const clip_vertex *corners = in;
-        if (any) {
-            c->clipped++;
-            count = render_clip_polygon(in, 3, any, n, polygon);
-            corners = polygon;
         }
         screen_vertex s[RENDER_MAX_POLYGON];
-        int usable = count >= 3;
-        for (int k = 0; k < count; k++) {
-            if (!(corners[k].c[3] > 0))
-                usable = 0;
-            render_project(&corners[k], f->width, f->height, n, &s[k]);
-        }
-        if (!usable) {
+        int count = clip_and_project(f, c, tri, any, s);
+        if (count == 0)
             c->rejected++;
-            continue;
-        }
-        float color[3];
-        int colored = 0;
-        if (painter) {
-            triangle_color(f, i, color);
-            /* Culling by the orientation of the whole polygon. */
-            double area = 0;
-            for (int k = 0; k < count; k++) {
-                const screen_vertex *p = &s[k], *q = &s[(k + 1) % count];
-                area += (q->x - p->x) * (q->y + p->y);
-            }
-            /* area > 0 for polygons the camera sees counter-clockwise (front). */
-            if (f->cull && area <= 0) {
-                c->culled++;
-                continue;
-            }
-            emit_polygon(c, s, count, color);
-            continue;
-        }
-        int culled = 0, emitted = 0;
-        for (int k = 1; k + 1 < count; k++) {
-            setup_triangle t;
-            int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->cull,
-                                      &t);
-            if (result < 0)
-                culled = 1;
-            if (result != 1)
-                continue;
-            if (!colored) {
-                /* Lit only once the triangle is known to be visible. */
-                triangle_color(f, i, color);
-                colored = 1;
-            }
-            render_finish_setup(f, &t, color);
-            emit_setup(f, c, &t);
-            emitted++;
-        }
-        if (culled && !emitted)
-            c->culled++;
-        else if (!emitted)
-            c->rejected++;
+        else if (painter)
+            keep_polygon(f, c, i, s, count);
+        else
+            setup_fan(f, c, i, s, count);
     }
 }

@@ -266,26 +266,32 @@ cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *secon
     return CG_OK;
 }
 
+/* A box growing to hold points; empty until the first finite point. */
+typedef struct bounds_box {
+    int any;
+    cg_vec3 lo, hi;
+} bounds_box;
+
+/* Grows box to hold p; points that are not finite are left out. */
+static inline void bounds_add(bounds_box *box, cg_vec3 p)
+{
+    if (!finite3(p))
+        return;
+    if (!box->any) {
+        box->lo = box->hi = p;
+        box->any = 1;
+    }
+    box->lo = cg_vec3_make(fmin(box->lo.x, p.x), fmin(box->lo.y, p.y), fmin(box->lo.z, p.z));
+    box->hi = cg_vec3_make(fmax(box->hi.x, p.x), fmax(box->hi.y, p.y), fmax(box->hi.z, p.z));
+}
+
 cg_status cg_trace_scene_bounds(const cg_trace_scene *scene, cg_vec3 *lo, cg_vec3 *hi)
 {
     if (!scene || !lo || !hi)
         return CG_EINVAL;
-    int any = 0;
-    cg_vec3 a = {0, 0, 0}, b = {0, 0, 0};
-#define GROW(p)                                                                          \
-    do {                                                                                 \
-        cg_vec3 q_ = (p);                                                                \
-        if (finite3(q_)) {                                                               \
-            if (!any) {                                                                  \
-                a = b = q_;                                                              \
-                any = 1;                                                                 \
-            }                                                                            \
-            a = cg_vec3_make(fmin(a.x, q_.x), fmin(a.y, q_.y), fmin(a.z, q_.z));         \
-            b = cg_vec3_make(fmax(b.x, q_.x), fmax(b.y, q_.y), fmax(b.z, q_.z));         \
-        }                                                                                \
-    } while (0)
+    bounds_box box = {0, {0, 0, 0}, {0, 0, 0}};
     for (size_t i = 0; i < 3 * scene->triangle_count; i++)
-        GROW(scene->positions[scene->indices[i]]);
+        bounds_add(&box, scene->positions[scene->indices[i]]);
     for (size_t i = 0; i < scene->object_count; i++) {
         const trace_object *o = &scene->objects[i];
         if (o->kind != TRACE_SPHERE || o->radius == 0)
@@ -294,14 +300,13 @@ cg_status cg_trace_scene_bounds(const cg_trace_scene *scene, cg_vec3 *lo, cg_vec
             cg_vec3 c = cg_vec3_make(corner & 1 ? o->radius : -o->radius,
                                      corner & 2 ? o->radius : -o->radius,
                                      corner & 4 ? o->radius : -o->radius);
-            GROW(cg_mat4_transform_point(o->to_world, cg_vec3_add(o->center, c)));
+            bounds_add(&box, cg_mat4_transform_point(o->to_world, cg_vec3_add(o->center, c)));
         }
     }
-#undef GROW
-    if (!any)
+    if (!box.any)
         return CG_EEMPTY;
-    *lo = a;
-    *hi = b;
+    *lo = box.lo;
+    *hi = box.hi;
     return CG_OK;
 }
 

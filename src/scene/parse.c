@@ -92,7 +92,9 @@ cg_status cg_scene_parse(const char *text, size_t size, const char *name, const 
         cJSON_Delete(root);
         return cg_error_set(err, status, "%s: out of memory", name);
     }
-    scene_parser p = {name, err, base_dir, load_meshes};
+    /* scene_create_empty gives the default material room of its own. */
+    scene_capacities capacity = {.materials = 1};
+    scene_parser p = {name, err, base_dir, load_meshes, &capacity};
     status = parse_scene(&p, root, scene);
     cJSON_Delete(root);
     if (status != CG_OK) {

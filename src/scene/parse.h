@@ -19,12 +19,19 @@
 #include <cjson/cJSON.h>
 #include <stddef.h>
 
-/* Everything a parsing function needs to report an error. */
+/* The room allocated for each growing array of the scene being read (the
+ * scene's counts say how much of it is used). */
+typedef struct scene_capacities {
+    size_t lights, area_lights, materials, objects, overlays;
+} scene_capacities;
+
+/* Everything a parsing function needs to report an error and grow the scene. */
 typedef struct scene_parser {
     const char *name;     /* file name for messages */
     cg_error *err;
     const char *base_dir; /* mesh paths are relative to it (NULL: current folder) */
     int load_meshes;      /* 0: check mesh entries but read no files */
+    scene_capacities *capacity;
 } scene_parser;
 
 /* The size of a buffer holding a JSON path such as "objects[3].transform[0]". */
@@ -78,8 +85,10 @@ cg_status scene_get_choice(const scene_parser *p, const char *path, const cJSON 
 cg_status scene_read_numbers(const scene_parser *p, const char *path, const cJSON *v, int n,
                              double *out);
 
-/* Makes room for one more item in a growing array of count items. */
-cg_status scene_reserve(const scene_parser *p, void **items, size_t count, size_t item_size);
+/* Makes room for one more item in *items, a growing array of count items
+ * in room for *capacity (src/core/array.h); out of memory is reported. */
+cg_status scene_reserve(const scene_parser *p, void **items, size_t *capacity, size_t count,
+                        size_t item_size);
 
 /* The parts of the format.  The top-level ones take the value of their key;
  * the items of an array ("lights", "objects") take their path too. */

@@ -38,7 +38,8 @@ cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON
             return st;
         if (!(cg_vec3_length(cg_vec3_cross(a.edge_u, a.edge_v)) > 0))
             return scene_fail(p, path, "expected edge_u and edge_v spanning a rectangle");
-        if ((st = scene_reserve(p, (void **)&s->area_lights, s->area_light_count, sizeof a)))
+        if ((st = scene_reserve(p, (void **)&s->area_lights, &p->capacity->area_lights,
+                                s->area_light_count, sizeof a)))
             return st;
         s->area_lights[s->area_light_count++] = a;
         return CG_OK;
@@ -64,7 +65,8 @@ cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON
     cg_error check;
     if (cg_light_check(&light, &check) != CG_OK)
         return scene_fail(p, path, "%s", check.message);
-    if ((st = scene_reserve(p, (void **)&s->lights, s->light_count, sizeof light)))
+    if ((st = scene_reserve(p, (void **)&s->lights, &p->capacity->lights, s->light_count,
+                            sizeof light)))
         return st;
     s->lights[s->light_count++] = light;
     return CG_OK;

@@ -57,15 +57,12 @@ cg_status scene_parse_materials(const scene_parser *p, const cJSON *v, cg_scene 
         cg_scene_material m = scene_default_material();
         if ((st = parse_material(p, path, item, &m)))
             return st;
-        cg_scene_material *grown = realloc(s->materials, (s->material_count + 1) * sizeof *grown);
-        m.name = grown ? malloc(strlen(item->string) + 1) : NULL;
-        if (!grown || !m.name) {
-            if (grown)
-                s->materials = grown;
+        if ((st = scene_reserve(p, (void **)&s->materials, &p->capacity->materials,
+                                s->material_count, sizeof *s->materials)))
+            return st;
+        if (!(m.name = malloc(strlen(item->string) + 1)))
             return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-        }
         strcpy(m.name, item->string);
-        s->materials = grown;
         s->materials[s->material_count++] = m;
     }
     return CG_OK;

@@ -27,7 +27,8 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
                                        "lo", "hi", "material", "transform", NULL};
     cg_status st;
     if ((st = scene_need_object(p, path, v)) || (st = scene_check_keys(p, path, v, keys))
-        || (st = scene_reserve(p, (void **)&s->objects, s->object_count, sizeof *s->objects)))
+        || (st = scene_reserve(p, (void **)&s->objects, &p->capacity->objects, s->object_count,
+                                 sizeof *s->objects)))
         return st;
     /* Counted before it is read so that cg_scene_free releases a half-read
      * object too. */
@@ -103,7 +104,8 @@ cg_status scene_parse_overlay(const scene_parser *p, const char *path, const cJS
 {
     if (!cJSON_IsString(v) || strchr(v->valuestring, '\n'))
         return scene_expected(p, path, "one line of a cg draw script", v);
-    cg_status st = scene_reserve(p, (void **)&s->overlays, s->overlay_count, sizeof *s->overlays);
+    cg_status st = scene_reserve(p, (void **)&s->overlays, &p->capacity->overlays,
+                                 s->overlay_count, sizeof *s->overlays);
     if (st)
         return st;
     size_t length = strlen(v->valuestring) + 1;

@@ -2,6 +2,7 @@
  * vectors, colours and choices, each checked against its range, and the
  * messages that name the JSON path and what was expected (parse.h). */
 #include "parse.h"
+#include "../core/array.h"
 #include "cg/color.h"
 
 #include <math.h>
@@ -222,15 +223,10 @@ cg_status scene_get_choice(const scene_parser *p, const char *path, const cJSON 
     return scene_expected(p, key_path, what, v);
 }
 
-/* Makes room for one more item in a growing array of count items; the
- * capacity doubles, so n appends cost O(n). */
-cg_status scene_reserve(const scene_parser *p, void **items, size_t count, size_t item_size)
+cg_status scene_reserve(const scene_parser *p, void **items, size_t *capacity, size_t count,
+                        size_t item_size)
 {
-    if (count & (count - 1)) /* not a power of two: there is room */
-        return CG_OK;
-    void *grown = realloc(*items, (count ? 2 * count : 1) * item_size);
-    if (!grown)
+    if (core_array_reserve(items, capacity, count + 1, item_size) != CG_OK)
         return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
-    *items = grown;
     return CG_OK;
 }

@@ -92,4 +92,5 @@ const cg_command cg_command_color = {
     "  cg color srgb-linear 0.5 0.5 0.5\n"
     "  cg color rgb-lab cornflowerblue\n",
     run,
+    NULL,
 };

@@ -37,4 +37,5 @@ const cg_command cg_command_convert = {
     "writes OUT in the format of its extension: .png, .ppm (binary P6) or .pgm\n"
     "(binary P5, luminance).  OUT is replaced only when writing succeeds.\n",
     run,
+    NULL,
 };

@@ -345,4 +345,5 @@ const cg_command cg_command_demo = {
     "it, run in DIR (its inputs are written there; see docs/gallery.md).\n"
     "--only renders just the sections whose title contains TEXT.\n",
     run,
+    NULL,
 };

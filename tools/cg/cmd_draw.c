@@ -97,4 +97,5 @@ const cg_command cg_command_draw = {
     "  --repeat N   draw N times, each on a fresh canvas, and print the median\n"
     "               drawing time on stderr as 'draw: 12.3 ms'\n",
     run,
+    NULL,
 };

@@ -394,4 +394,5 @@ const cg_command cg_command_mesh = {
     "Vertex order, attributes, face order and face colours are otherwise kept;\n"
     "isolated vertices are kept.\n",
     run,
+    NULL,
 };

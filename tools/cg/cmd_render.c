@@ -72,4 +72,5 @@ const cg_command cg_command_render = {
     "  --stats               print the BVH build time and rays per second\n"
     "Frames that take longer than a second show their progress on stderr.\n",
     run,
+    NULL,
 };

@@ -126,4 +126,5 @@ const cg_command cg_command_trace = {
     "(0 <= dy <= dx) as the drawing code does; its pixels are shown in the real\n"
     "image.  The circle is centred on (0, 0); its first octant is traced.\n",
     run,
+    NULL,
 };

@@ -47,4 +47,5 @@ const cg_command cg_command_trace_render = {
     "  --stats              print the BVH build time and rays per second\n"
     "  --quiet              no progress on stderr (shown for frames over a second)\n",
     run,
+    NULL,
 };

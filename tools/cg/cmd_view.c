@@ -373,4 +373,5 @@ const cg_command cg_command_view = {
     "The window needs a display (DISPLAY or WAYLAND_DISPLAY); without one cg view\n"
     "says so and exits with status 1, unless SDL_VIDEODRIVER names a driver.\n",
     run,
+    NULL,
 };

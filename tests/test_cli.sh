@@ -78,5 +78,20 @@ done
 for action in line polygon boolean; do
   grep -q "^Options of cg clip $action:" "$work/out" && pass || fail "help clip: no options of $action"
 done
+# Every option `cg help` lists is one the command knows (the help and the
+# parser read the same table): given alone, none is an unknown option.
+listed=0
+for name in clip color convert demo draw mesh render trace trace-render view; do
+  "$cg" help "$name" | awk '/^Options of cg [a-z-]+ [a-z-]+:$/ {action = $5; sub(":", "", action)}
+                           /^Options:$/ {action = ""}
+                           /^  -/ {sub(",", "", $1); print action, $1}' > "$work/listed"
+  while read -r action option; do
+    [ -n "$option" ] || { option=$action; action=""; }
+    listed=$((listed + 1))
+    "$cg" $name $action "$option" >/dev/null 2>"$work/err" </dev/null
+    grep -q "unknown option" "$work/err" && fail "cg $name $action: $option is listed but unknown" || pass
+  done < "$work/listed"
+done
+[ "$listed" -ge 50 ] && pass || fail "cg help lists only $listed options in all"
 
 finish

@@ -55,6 +55,21 @@ static int in_range(const cli_option *option, double value)
     return low_ok && high_ok;
 }
 
+int cli_read_double(const char *command, const cli_option *option, const char *text,
+                    double *out)
+{
+    const char *what = option->what ? option->what : option->name;
+    double value;
+    if (cli_parse_double(command, what, text, &value))
+        return -1;
+    if (option->range_text && !in_range(option, value)) {
+        cli_usage_error(command, "%s: expected %s, got '%s'", what, option->range_text, text);
+        return -1;
+    }
+    *out = value;
+    return 0;
+}
+
 /* Reads text, the value of option, into arguments: 0 or -1 after printing. */
 static int store_value(const char *command, const cli_option *option, const char *text,
                        void *arguments)
@@ -69,17 +84,8 @@ static int store_value(const char *command, const cli_option *option, const char
         *MEMBER(int, arguments, at) = (int)value;
         return 0;
     }
-    case CLI_DOUBLE: {
-        double value;
-        if (cli_parse_double(command, what, text, &value))
-            return -1;
-        if (option->range_text && !in_range(option, value)) {
-            cli_usage_error(command, "%s: expected %s, got '%s'", what, option->range_text, text);
-            return -1;
-        }
-        *MEMBER(double, arguments, at) = value;
-        return 0;
-    }
+    case CLI_DOUBLE:
+        return cli_read_double(command, option, text, MEMBER(double, arguments, at));
     case CLI_STRING:
         *MEMBER(const char *, arguments, at) = text;
         return 0;

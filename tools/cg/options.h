@@ -116,6 +116,12 @@ typedef struct cli_syntax {
 int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
               const char **positionals, int *count);
 
+/* A CLI_DOUBLE's reading, for a CLI_CUSTOM parse that does more with the
+ * number: text as a finite number in the option's range (when range_text is
+ * set).  0, or -1 after printing the usage error. */
+int cli_read_double(const char *command, const cli_option *option, const char *text,
+                    double *out);
+
 /* True when the option (a pointer into one of syntax's tables) was given,
  * for an option that has a given counter. */
 int cli_given(const cli_option *option, const void *arguments);

@@ -10,6 +10,19 @@
 
 #include <string.h>
 
+/* The tiles a set-up triangle's pixel box touches, inclusive. */
+typedef struct tile_range {
+    int x0, y0, x1, y1;
+} tile_range;
+
+static inline tile_range tiles_under(const render_frame *f, const render_chunk *c, size_t i)
+{
+    const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
+    tile_range r = {t->box[0] / RENDER_TILE, t->box[1] / RENDER_TILE,
+                    (t->box[2] - 1) / RENDER_TILE, (t->box[3] - 1) / RENDER_TILE};
+    return r;
+}
+
 void render_bin_chunk(render_frame *f, render_chunk *c)
 {
     if (c->failed)
@@ -26,13 +39,12 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
     memset(start, 0, (tiles + 1) * sizeof *start);
     size_t total = 0;
     for (size_t i = 0; i < c->setup_count; i++) {
-        const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
-        int tx0 = t->box[0] / RENDER_TILE, tx1 = (t->box[2] - 1) / RENDER_TILE;
-        int ty0 = t->box[1] / RENDER_TILE, ty1 = (t->box[3] - 1) / RENDER_TILE;
-        for (int ty = ty0; ty <= ty1; ty++)
-            for (int tx = tx0; tx <= tx1; tx++)
+        tile_range tiles_of = tiles_under(f, c, i);
+        for (int ty = tiles_of.y0; ty <= tiles_of.y1; ty++)
+            for (int tx = tiles_of.x0; tx <= tiles_of.x1; tx++)
                 start[ty * f->tiles_x + tx + 1]++;
-        total += (size_t)(tx1 - tx0 + 1) * (size_t)(ty1 - ty0 + 1);
+        total += (size_t)(tiles_of.x1 - tiles_of.x0 + 1)
+                 * (size_t)(tiles_of.y1 - tiles_of.y0 + 1);
     }
     if (total > UINT32_MAX) {
         c->failed = 1;
@@ -47,11 +59,9 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
     }
     memcpy(fill, start, tiles * sizeof *fill);
     for (size_t i = 0; i < c->setup_count; i++) {
-        const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
-        int tx0 = t->box[0] / RENDER_TILE, tx1 = (t->box[2] - 1) / RENDER_TILE;
-        int ty0 = t->box[1] / RENDER_TILE, ty1 = (t->box[3] - 1) / RENDER_TILE;
-        for (int ty = ty0; ty <= ty1; ty++)
-            for (int tx = tx0; tx <= tx1; tx++)
+        tile_range tiles_of = tiles_under(f, c, i);
+        for (int ty = tiles_of.y0; ty <= tiles_of.y1; ty++)
+            for (int tx = tiles_of.x0; tx <= tiles_of.x1; tx++)
                 c->bin_list[fill[ty * f->tiles_x + tx]++] = (uint32_t)i;
     }
 }

@@ -71,6 +71,18 @@ core_worker_pool *trace_scene_pool(cg_trace_scene *scene, int threads)
     return scene->pool;
 }
 
+/* An object of the kind with its material and centre (a plane's point),
+ * everything else zero. */
+static trace_object object_of(trace_kind kind, const cg_trace_material *material, cg_vec3 center)
+{
+    trace_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = kind;
+    o.material = *material;
+    o.center = center;
+    return o;
+}
+
 static cg_status add_object(cg_trace_scene *scene, const trace_object *object)
 {
     if (core_array_reserve((void **)&scene->objects, &scene->object_capacity,
@@ -151,10 +163,7 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         return CG_ENOMEM;
     }
 
-    trace_object object;
-    memset(&object, 0, sizeof object);
-    object.kind = TRACE_MESH;
-    object.material = *material;
+    trace_object object = object_of(TRACE_MESH, material, cg_vec3_make(0, 0, 0));
     uint32_t object_index = (uint32_t)scene->object_count;
     for (size_t i = 0; i < mesh->vertex_count; i++)
         scene->positions[v0 + i] = cg_mat4_transform_point(model, mesh->positions[i]);
@@ -187,11 +196,7 @@ cg_status cg_trace_scene_add_sphere(cg_trace_scene *scene, cg_vec3 center, doubl
     if (!scene || !material || !material_valid(material) || !finite3(center) || !isfinite(radius)
         || radius < 0)
         return CG_EINVAL;
-    trace_object o;
-    memset(&o, 0, sizeof o);
-    o.kind = TRACE_SPHERE;
-    o.material = *material;
-    o.center = center;
+    trace_object o = object_of(TRACE_SPHERE, material, center);
     o.radius = radius;
     o.to_world = transform ? *transform : cg_mat4_identity();
     if (!affine(&o.to_world) || cg_mat4_inverse(o.to_world, &o.to_object) != CG_OK)
@@ -207,11 +212,7 @@ cg_status cg_trace_scene_add_plane(cg_trace_scene *scene, cg_vec3 point, cg_vec3
     if (!scene || !material || !material_valid(material) || !finite3(point) || !finite3(normal)
         || !(cg_vec3_length(normal) > 0))
         return CG_EINVAL;
-    trace_object o;
-    memset(&o, 0, sizeof o);
-    o.kind = TRACE_PLANE;
-    o.material = *material;
-    o.center = point;
+    trace_object o = object_of(TRACE_PLANE, material, point);
     o.plane_normal = cg_vec3_normalize(normal);
     /* Two axes in the plane for its checker pattern. */
     cg_vec3 helper = fabs(o.plane_normal.x) < 0.9 ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);

@@ -187,6 +187,60 @@ static inline void render_edges_at(const setup_triangle *t, int x, int y, raster
     render_edge_at(t, 0, 1, px, py, &out->w[2], &out->step_x[2], &out->step_y[2]);
 }
 
+/* The covered run [*begin, *end) of a row whose edge functions are w at
+ * pixel offset 0 and change by step per pixel, within [0, width): exact
+ * integer bounds of where all three are >= 0.
+ *
+ *                        top vertex
+ *                            /\               (a triangle, clockwise on the
+ *                left edge  /  \  right edge   y-down screen: every edge
+ *               (step > 0) /    \ (step < 0)   function is positive inside)
+ *                         /      \            step: change per pixel right
+ *   row:    o    o    o  / #    # \  o    o        o  centre not covered
+ *   i:      0    1    2 /  3    4  \ 5    6        #  centre covered
+ *                      /   ^begin   \^end (exclusive)
+ *                     /______________\      bottom edge: step 0, so a
+ *                                                 row is wholly in or out
+ *
+ *   edge k at the centre of pixel i of the row:   e_k(i) = w[k] + i step[k]
+ *   a rising edge (step > 0) is >= 0 from       i = ceil(-w / step)
+ *   a falling edge (step < 0) is >= 0 up to     i = floor(w / -step)
+ *   begin = the largest of the lower bounds, end = 1 + the smallest of the
+ *   upper ones, both kept within [0, width).
+ *
+ * The top-left rule is already in w: render_edge_at subtracts 1 from an
+ * edge that is neither a top nor a left edge, so a centre exactly on the
+ * right edge above (e = 0 - 1) is not covered, and one exactly on the left
+ * edge (e = 0) is: two triangles sharing an edge never both draw a pixel. */
+static inline void render_row_span(const int64_t w[3], const int64_t step[3], int width,
+                                   int *begin, int *end)
+{
+    int64_t lo = 0, hi = width; /* exclusive */
+    for (int k = 0; k < 3; k++) {
+        if (step[k] > 0) {
+            if (w[k] < 0) {
+                int64_t first = (-w[k] + step[k] - 1) / step[k];
+                if (first > lo)
+                    lo = first;
+            }
+        } else if (step[k] < 0) {
+            if (w[k] < 0) {
+                hi = 0;
+            } else {
+                int64_t last = w[k] / -step[k] + 1;
+                if (last < hi)
+                    hi = last;
+            }
+        } else if (w[k] < 0) {
+            hi = 0;
+        }
+    }
+    if (lo > width)
+        lo = width;
+    *begin = (int)lo;
+    *end = (int)(hi > lo ? hi : lo);
+}
+
 /* ---- the renderer ------------------------------------------------------- */
 
 typedef struct prepared_vertex {

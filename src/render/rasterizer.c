@@ -1,7 +1,8 @@
 /* The tiled rasterizer, the pipeline's last stage: a set-up triangle drawn
  * inside one tile (or, for the painter's algorithm, the whole image).  Each
  * row of the triangle's box inside the tile is reduced to its covered run by
- * the three integer edge functions (row_span), then the run is shaded pixel
+ * the three integer edge functions (render_row_span in internal.h, with a
+ * picture), then the run is shaded pixel
  * by pixel -- flat, Gouraud or Phong -- behind the depth test.  The edge
  * functions are exact (fixed-point vertices, 64-bit products), so a pixel
  * centre on an edge shared by two triangles is drawn by exactly one of them
@@ -31,60 +32,6 @@ static inline void store(unsigned char *row, int x, const float c[3], const int 
         p->b = c[2];
         p->a = 1;
     }
-}
-
-/* The covered run [*begin, *end) of a row whose edge functions are w at
- * pixel offset 0 and change by step per pixel, within [0, width): exact
- * integer bounds of where all three are >= 0.
- *
- *                        top vertex
- *                            /\               (a triangle, clockwise on the
- *                left edge  /  \  right edge   y-down screen: every edge
- *               (step > 0) /    \ (step < 0)   function is positive inside)
- *                         /      \            step: change per pixel right
- *   row:    o    o    o  / #    # \  o    o        o  centre not covered
- *   i:      0    1    2 /  3    4  \ 5    6        #  centre covered
- *                      /   ^begin   \^end (exclusive)
- *                     /______________\      bottom edge: step 0, so a
- *                                                 row is wholly in or out
- *
- *   edge k at the centre of pixel i of the row:   e_k(i) = w[k] + i step[k]
- *   a rising edge (step > 0) is >= 0 from       i = ceil(-w / step)
- *   a falling edge (step < 0) is >= 0 up to     i = floor(w / -step)
- *   begin = the largest of the lower bounds, end = 1 + the smallest of the
- *   upper ones, both kept within [0, width).
- *
- * The top-left rule is already in w: render_edge_at subtracts 1 from an
- * edge that is neither a top nor a left edge, so a centre exactly on the
- * right edge above (e = 0 - 1) is not covered, and one exactly on the left
- * edge (e = 0) is: two triangles sharing an edge never both draw a pixel. */
-static inline void row_span(const int64_t w[3], const int64_t step[3], int width, int *begin,
-                            int *end)
-{
-    int64_t lo = 0, hi = width; /* exclusive */
-    for (int k = 0; k < 3; k++) {
-        if (step[k] > 0) {
-            if (w[k] < 0) {
-                int64_t first = (-w[k] + step[k] - 1) / step[k];
-                if (first > lo)
-                    lo = first;
-            }
-        } else if (step[k] < 0) {
-            if (w[k] < 0) {
-                hi = 0;
-            } else {
-                int64_t last = w[k] / -step[k] + 1;
-                if (last < hi)
-                    hi = last;
-            }
-        } else if (w[k] < 0) {
-            hi = 0;
-        }
-    }
-    if (lo > width)
-        lo = width;
-    *begin = (int)lo;
-    *end = (int)(hi > lo ? hi : lo);
 }
 
 /* Gouraud colour along one covered run of a row.  Colour / w and 1 / w are
@@ -297,7 +244,7 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
                     end = i + 1;
                 }
         } else {
-            row_span(e.w, e.step_x, x1 - x0, &begin, &end);
+            render_row_span(e.w, e.step_x, x1 - x0, &begin, &end);
         }
         if (begin >= end)
             continue;

@@ -167,23 +167,12 @@ cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_
             continue;
         raster_edges e;
         render_edges_at(&t, t.box[0], t.box[1], &e);
+        /* One covered run per row: the triangle is convex. */
         for (int y = t.box[1]; y < t.box[3]; y++) {
-            int64_t w0 = e.w[0], w1 = e.w[1], w2 = e.w[2];
-            int run = -1;
-            for (int x = t.box[0]; x < t.box[2]; x++) {
-                int inside = (w0 | w1 | w2) >= 0;
-                if (inside && run < 0)
-                    run = x;
-                else if (!inside && run >= 0) {
-                    span(user, y, run, x);
-                    run = -1;
-                }
-                w0 += e.step_x[0];
-                w1 += e.step_x[1];
-                w2 += e.step_x[2];
-            }
-            if (run >= 0)
-                span(user, y, run, t.box[2]);
+            int begin, end;
+            render_row_span(e.w, e.step_x, t.box[2] - t.box[0], &begin, &end);
+            if (begin < end)
+                span(user, y, t.box[0] + begin, t.box[0] + end);
             for (int k2 = 0; k2 < 3; k2++)
                 e.w[k2] += e.step_y[k2];
         }

@@ -211,23 +211,191 @@ static cg_status check_faces(builder *b)
  * same vertex pair fills edges in turn: a side takes the half-edge of its
  * direction in the group's current edge, or opens a new edge (a cut) when
  * that half-edge is taken. */
+
+/* What a matching pass has counted so far (saved and restored around a
+ * bucket that has to be matched again). */
+typedef struct matching_counts {
+    size_t edges, nonmanifold, misoriented, cut;
+    size_t entries; /* of report->nonmanifold_edges (2 per edge) */
+} matching_counts;
+
+/* The scratch of one matching pass.  The per-vertex arrays are indexed by
+ * the other vertex of a side in the bucket of vertex a; stamp says which
+ * bucket last touched an entry. */
+typedef struct matching {
+    uint32_t *start;  /* V + 1: bucket v ends at start[v] once the sides are sorted */
+    uint64_t *bucket; /* corners: other vertex << 32 | corner << 1 | (larger to smaller) */
+    uint32_t *stamp, *current, *uses, *same_way;
+    uint8_t *occupied;       /* which half-edges of the current edge are taken */
+    uint32_t *first, *second; /* the group's first two corners, only when orienting */
+    cg_hemesh_report *report; /* NULL: this pass records nothing */
+    matching_counts counts;
+    int failed;
+} matching;
+
+/* Sorts the sides into the buckets of their smaller vertex (a counting sort). */
+static void sort_sides(const builder *b, matching *mt)
+{
+    size_t V = b->mesh->vertex_count;
+    const uint32_t *off = b->offsets, *idx = b->indices;
+    for (size_t f = 0; f < b->faces; f++) {
+        uint32_t begin = off[f], end = off[f + 1];
+        uint32_t prev = idx[end - 1];
+        for (uint32_t k = begin; k < end; k++) {
+            uint32_t v = idx[k];
+            mt->start[(prev < v ? prev : v) + 1]++;
+            prev = v;
+        }
+    }
+    for (size_t v = 0; v < V; v++)
+        mt->start[v + 1] += mt->start[v];
+    for (size_t f = 0; f < b->faces; f++) {
+        uint32_t begin = off[f], end = off[f + 1];
+        for (uint32_t k = begin; k < end; k++) {
+            uint32_t a = idx[k], c = idx[k + 1 < end ? k + 1 : begin];
+            uint32_t lo = a < c ? a : c, hi = a < c ? c : a;
+            mt->bucket[mt->start[lo]++] = (uint64_t)hi << 32 | (uint64_t)k << 1 | (uint64_t)(a > c);
+        }
+    }
+}
+
+/* Opens a new edge on the vertices (a, other): the current edge of their group. */
+static void open_edge(builder *b, matching *mt, uint32_t a, uint32_t other)
+{
+    mt->current[other] = (uint32_t)mt->counts.edges++;
+    b->edge_vertices[2 * mt->current[other]] = a;
+    b->edge_vertices[2 * mt->current[other] + 1] = other;
+}
+
+/* The third side of edge (a, other): the edge is non-manifold. */
+static void count_nonmanifold(builder *b, matching *mt, uint32_t a, uint32_t other)
+{
+    matching_counts *n = &mt->counts;
+    /* a non-manifold edge is not counted as misoriented too */
+    if (mt->same_way[other] == a)
+        n->misoriented--;
+    if (!n->nonmanifold) {
+        b->first_nonmanifold[0] = a;
+        b->first_nonmanifold[1] = other;
+    }
+    n->nonmanifold++;
+    if (mt->report) {
+        list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity, a,
+                  &mt->failed);
+        list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity,
+                  other, &mt->failed);
+    }
+    if (mt->first) {
+        b->partner[mt->first[other]] = CG_HEMESH_NONE;
+        b->partner[mt->second[other]] = CG_HEMESH_NONE;
+    }
+}
+
+/* Matches the sides of bucket a (bucket[begin..end)).  Returns 1 when a
+ * third side turns up in a bucket that is not sorted (then what this
+ * bucket counted must be undone and the bucket sorted and matched again),
+ * else 0. */
+static int match_bucket(builder *b, matching *mt, uint32_t a, size_t begin, size_t end, int sorted)
+{
+    for (size_t i = begin; i < end; i++) {
+        uint64_t entry = mt->bucket[i];
+        uint32_t other = (uint32_t)(entry >> 32);
+        uint32_t corner = (uint32_t)(entry & 0xffffffffu) >> 1;
+        uint32_t dir = (uint32_t)entry & 1u;
+        if (b->partner)
+            b->partner[corner] = CG_HEMESH_NONE;
+        if (mt->stamp[other] != a) {
+            mt->stamp[other] = a;
+            mt->uses[other] = 1;
+            mt->occupied[other] = 0;
+            open_edge(b, mt, a, other);
+            if (mt->first)
+                mt->first[other] = corner;
+        } else {
+            uint32_t n = ++mt->uses[other];
+            if (n == 2) {
+                if (mt->occupied[other] & (1u << dir)) {
+                    if (!mt->counts.misoriented) {
+                        b->first_misoriented[0] = a;
+                        b->first_misoriented[1] = other;
+                    }
+                    mt->counts.misoriented++;
+                    mt->same_way[other] = a;
+                }
+                if (mt->first) {
+                    mt->second[other] = corner;
+                    b->partner[mt->first[other]] = corner;
+                    b->partner[corner] = mt->first[other];
+                }
+            } else if (n == 3) {
+                if (!sorted)
+                    return 1;
+                count_nonmanifold(b, mt, a, other);
+            }
+            if (mt->occupied[other] & (1u << dir)) {
+                size_t listed = mt->counts.cut;
+                list_push(&b->cut_edges, &listed, &b->cut_capacity,
+                          (uint32_t)mt->counts.edges, &mt->failed);
+                mt->counts.cut++;
+                mt->occupied[other] = 0;
+                open_edge(b, mt, a, other);
+            }
+        }
+        mt->occupied[other] |= (uint8_t)(1u << dir);
+        b->corner_halfedge[corner] = 2 * mt->current[other] + dir;
+    }
+    return 0;
+}
+
+/* Sorts a crowded bucket about its vertex in the order of radial.c, from
+ * the sizes of its groups, so that it can be matched again. */
+static cg_status sort_crowded_bucket(builder *b, matching *mt, uint32_t a, size_t begin,
+                                     size_t end)
+{
+    /* the sizes of the bucket's groups, stamped apart from the matching */
+    for (size_t i = begin; i < end; i++)
+        mt->same_way[mt->bucket[i] >> 32] = CG_HEMESH_NONE;
+    for (size_t i = begin; i < end; i++) {
+        uint32_t other = (uint32_t)(mt->bucket[i] >> 32);
+        if (mt->stamp[other] != (a | 0x80000000u)) {
+            mt->stamp[other] = a | 0x80000000u;
+            mt->uses[other] = 0;
+        }
+        mt->uses[other]++;
+    }
+    return hm_radial_sort_bucket(b->mesh, b->offsets, b->indices, b->faces, a,
+                                 mt->bucket + begin, end - begin, mt->uses);
+}
+
+static void matching_free(matching *mt)
+{
+    free(mt->start);
+    free(mt->bucket);
+    free(mt->stamp);
+    free(mt->current);
+    free(mt->uses);
+    free(mt->occupied);
+    free(mt->same_way);
+    free(mt->first);
+    free(mt->second);
+}
+
 static cg_status match(builder *b, int record)
 {
     size_t V = b->mesh->vertex_count, C = b->corners;
-    const uint32_t *off = b->offsets, *idx = b->indices;
-    cg_hemesh_report *rep = record ? b->report : NULL;
     size_t vn = V ? V : 1;
-    uint32_t *start = calloc(V + 1, sizeof *start);
-    uint64_t *bucket = malloc((C ? C : 1) * sizeof *bucket);
-    uint32_t *stamp = malloc(vn * sizeof *stamp);
-    uint32_t *current = malloc(vn * sizeof *current);
-    uint32_t *uses = malloc(vn * sizeof *uses);
-    uint8_t *occupied = malloc(vn);
-    uint32_t *same_way = malloc(vn * sizeof *same_way);
-    uint32_t *first = b->partner ? malloc(vn * sizeof *first) : NULL;
-    uint32_t *second = b->partner ? malloc(vn * sizeof *second) : NULL;
-    cg_status status = CG_OK;
-    int failed = 0;
+    matching mt;
+    memset(&mt, 0, sizeof mt);
+    mt.report = record ? b->report : NULL;
+    mt.start = calloc(V + 1, sizeof *mt.start);
+    mt.bucket = malloc((C ? C : 1) * sizeof *mt.bucket);
+    mt.stamp = malloc(vn * sizeof *mt.stamp);
+    mt.current = malloc(vn * sizeof *mt.current);
+    mt.uses = malloc(vn * sizeof *mt.uses);
+    mt.occupied = malloc(vn);
+    mt.same_way = malloc(vn * sizeof *mt.same_way);
+    mt.first = b->partner ? malloc(vn * sizeof *mt.first) : NULL;
+    mt.second = b->partner ? malloc(vn * sizeof *mt.second) : NULL;
     free(b->corner_halfedge);
     free(b->cut_edges);
     b->cut_edges = NULL;
@@ -235,158 +403,40 @@ static cg_status match(builder *b, int record)
     free(b->edge_vertices);
     b->corner_halfedge = malloc((C ? C : 1) * sizeof *b->corner_halfedge);
     b->edge_vertices = malloc((C ? C : 1) * 2 * sizeof *b->edge_vertices);
-    if (!start || !bucket || !stamp || !current || !uses || !occupied || !same_way
-        || (b->partner && (!first || !second)) || !b->corner_halfedge || !b->edge_vertices) {
-        status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-        goto done;
+    if (!mt.start || !mt.bucket || !mt.stamp || !mt.current || !mt.uses || !mt.occupied
+        || !mt.same_way || (b->partner && (!mt.first || !mt.second)) || !b->corner_halfedge
+        || !b->edge_vertices) {
+        matching_free(&mt);
+        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
     }
-    /* counting sort of the sides by their smaller vertex */
-    for (size_t f = 0; f < b->faces; f++) {
-        uint32_t begin = off[f], end = off[f + 1];
-        uint32_t prev = idx[end - 1];
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t v = idx[k];
-            start[(prev < v ? prev : v) + 1]++;
-            prev = v;
-        }
-    }
-    for (size_t v = 0; v < V; v++)
-        start[v + 1] += start[v];
-    /* entry: other vertex << 32 | corner << 1 | (side goes larger to smaller) */
-    for (size_t f = 0; f < b->faces; f++) {
-        uint32_t begin = off[f], end = off[f + 1];
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t a = idx[k], c = idx[k + 1 < end ? k + 1 : begin];
-            uint32_t lo = a < c ? a : c, hi = a < c ? c : a;
-            bucket[start[lo]++] = (uint64_t)hi << 32 | (uint64_t)k << 1 | (uint64_t)(a > c);
-        }
-    }
-    /* bucket v now ends at start[v] and begins at start[v - 1] */
-    memset(stamp, 0xff, vn * sizeof *stamp);
-    memset(same_way, 0xff, vn * sizeof *same_way);
-    size_t edges = 0, nonmanifold = 0, misoriented = 0, cut = 0, entries = 0;
-    for (size_t a = 0; a < V; a++) {
-        size_t begin = a ? start[a - 1] : 0, end = start[a];
+    sort_sides(b, &mt);
+    memset(mt.stamp, 0xff, vn * sizeof *mt.stamp);
+    memset(mt.same_way, 0xff, vn * sizeof *mt.same_way);
+    for (size_t a = 0; a < V && !mt.failed; a++) {
+        size_t begin = a ? mt.start[a - 1] : 0, end = mt.start[a];
         /* where a third side turns up the bucket is matched again in the
          * order of radial.c, from the counts it started with */
-        size_t saved_edges = edges, saved_nonmanifold = nonmanifold, saved_misoriented = misoriented,
-               saved_cut = cut, saved_entries = entries;
-        int sorted = !(b->flags & CG_HEMESH_SPLIT_NONMANIFOLD), crowded = 0;
-    match_bucket:
-        for (size_t i = begin; i < end; i++) {
-            uint64_t entry = bucket[i];
-            uint32_t other = (uint32_t)(entry >> 32);
-            uint32_t corner = (uint32_t)(entry & 0xffffffffu) >> 1;
-            uint32_t dir = (uint32_t)entry & 1u;
-            if (b->partner)
-                b->partner[corner] = CG_HEMESH_NONE;
-            if (stamp[other] != (uint32_t)a) {
-                stamp[other] = (uint32_t)a;
-                uses[other] = 1;
-                occupied[other] = 0;
-                current[other] = (uint32_t)edges++;
-                b->edge_vertices[2 * current[other]] = (uint32_t)a;
-                b->edge_vertices[2 * current[other] + 1] = other;
-                if (first)
-                    first[other] = corner;
-            } else {
-                uint32_t n = ++uses[other];
-                if (n == 2) {
-                    if (occupied[other] & (1u << dir)) {
-                        if (!misoriented) {
-                            b->first_misoriented[0] = (uint32_t)a;
-                            b->first_misoriented[1] = other;
-                        }
-                        misoriented++;
-                        same_way[other] = (uint32_t)a;
-                    }
-                    if (first) {
-                        second[other] = corner;
-                        b->partner[first[other]] = corner;
-                        b->partner[corner] = first[other];
-                    }
-                } else if (n == 3) {
-                    if (!sorted) {
-                        crowded = 1;
-                        break;
-                    }
-                    /* a non-manifold edge is not counted as misoriented too */
-                    if (same_way[other] == (uint32_t)a)
-                        misoriented--;
-                    if (!nonmanifold) {
-                        b->first_nonmanifold[0] = (uint32_t)a;
-                        b->first_nonmanifold[1] = other;
-                    }
-                    nonmanifold++;
-                    if (rep) {
-                        list_push(&rep->nonmanifold_edges, &entries,
-                                  &b->nonmanifold_edge_capacity, (uint32_t)a, &failed);
-                        list_push(&rep->nonmanifold_edges, &entries,
-                                  &b->nonmanifold_edge_capacity, other, &failed);
-                    }
-                    if (first) {
-                        b->partner[first[other]] = CG_HEMESH_NONE;
-                        b->partner[second[other]] = CG_HEMESH_NONE;
-                    }
-                }
-                if (occupied[other] & (1u << dir)) {
-                    size_t listed = cut;
-                    list_push(&b->cut_edges, &listed, &b->cut_capacity, (uint32_t)edges, &failed);
-                    cut++;
-                    occupied[other] = 0;
-                    current[other] = (uint32_t)edges++;
-                    b->edge_vertices[2 * current[other]] = (uint32_t)a;
-                    b->edge_vertices[2 * current[other] + 1] = other;
-                }
-            }
-            occupied[other] |= (uint8_t)(1u << dir);
-            b->corner_halfedge[corner] = 2 * current[other] + dir;
-        }
-        if (crowded) {
-            crowded = 0;
-            sorted = 1;
-            edges = saved_edges, nonmanifold = saved_nonmanifold, misoriented = saved_misoriented;
-            cut = saved_cut, entries = saved_entries;
-            /* the sizes of the bucket's groups, stamped apart from the matching */
-            for (size_t i = begin; i < end; i++)
-                same_way[bucket[i] >> 32] = CG_HEMESH_NONE;
-            for (size_t i = begin; i < end; i++) {
-                uint32_t other = (uint32_t)(bucket[i] >> 32);
-                if (stamp[other] != ((uint32_t)a | 0x80000000u)) {
-                    stamp[other] = (uint32_t)a | 0x80000000u;
-                    uses[other] = 0;
-                }
-                uses[other]++;
-            }
-            if (hm_radial_sort_bucket(b->mesh, off, idx, b->faces, (uint32_t)a, bucket + begin,
-                                      end - begin, uses) != CG_OK) {
-                failed = 1;
-                break;
-            }
-            goto match_bucket;
+        matching_counts saved = mt.counts;
+        int sorted = !(b->flags & CG_HEMESH_SPLIT_NONMANIFOLD);
+        if (match_bucket(b, &mt, (uint32_t)a, begin, end, sorted)) {
+            mt.counts = saved;
+            if (sort_crowded_bucket(b, &mt, (uint32_t)a, begin, end) != CG_OK)
+                mt.failed = 1;
+            else
+                match_bucket(b, &mt, (uint32_t)a, begin, end, 1);
         }
     }
-    if (failed) {
-        status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-        goto done;
+    int failed = mt.failed;
+    if (!failed) {
+        if (mt.report)
+            mt.report->nonmanifold_edge_count = mt.counts.entries / 2;
+        b->edges = mt.counts.edges;
+        b->nonmanifold = mt.counts.nonmanifold;
+        b->misoriented = mt.counts.misoriented;
+        b->cut = mt.counts.cut;
     }
-    if (rep)
-        rep->nonmanifold_edge_count = entries / 2;
-    b->edges = edges;
-    b->nonmanifold = nonmanifold;
-    b->misoriented = misoriented;
-    b->cut = cut;
-done:
-    free(start);
-    free(bucket);
-    free(stamp);
-    free(current);
-    free(uses);
-    free(occupied);
-    free(same_way);
-    free(first);
-    free(second);
-    return status;
+    matching_free(&mt);
+    return failed ? cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory") : CG_OK;
 }
 
 /* Step 3: orient each component by a breadth-first walk over faces joined

@@ -15,46 +15,11 @@
  *    the cycles of the rotation, and a vertex with several is split (or is
  *    an error).
  */
-#include "internal.h"
-#include "../core/array.h"
+#include "build.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct builder {
-    const cg_mesh *mesh;
-    unsigned flags;
-    cg_hemesh_report *report;
-    cg_error *err;
-    /* the working faces: kept faces, possibly reversed */
-    size_t faces, corners;
-    const uint32_t *offsets, *indices;
-    uint32_t *own_offsets, *own_indices, *face_map;
-    /* matching */
-    uint32_t *corner_halfedge; /* corners */
-    uint32_t *edge_vertices;   /* 2 per edge: origin of 2e and of 2e + 1 */
-    size_t edges;
-    size_t nonmanifold, misoriented, cut;
-    uint32_t *cut_edges; /* the cut edges opened, cut of them */
-    uint32_t first_nonmanifold[2], first_misoriented[2];
-    uint32_t *partner; /* corners, only when orienting */
-    /* the room of the growing lists: cut_edges and the report's three */
-    size_t cut_capacity, bad_face_capacity, nonmanifold_edge_capacity,
-        nonmanifold_vertex_capacity;
-} builder;
-
-/* Appends value to *list (count items in room for *capacity); sets *failed
- * when memory runs out. */
-static void list_push(uint32_t **list, size_t *count, size_t *capacity, uint32_t value,
-                      int *failed)
-{
-    if (core_array_reserve((void **)list, capacity, *count + 1, sizeof **list) != CG_OK) {
-        *failed = 1;
-        return;
-    }
-    (*list)[(*count)++] = value;
-}
 
 void cg_hemesh_report_clear(cg_hemesh_report *report)
 {
@@ -65,145 +30,6 @@ void cg_hemesh_report_clear(cg_hemesh_report *report)
     free(report->nonmanifold_vertices);
     free(report->face_map);
     memset(report, 0, sizeof *report);
-}
-
-/* Step 1: which faces are usable. */
-
-/* Whether face f is bad: fewer than 3 corners, a vertex out of range or a
- * vertex twice.  When it is and why is not NULL, why (160 bytes) receives
- * the reason.  *stamp is per-vertex scratch, allocated on first need for
- * faces too large to compare corner pairs. */
-static cg_status face_is_bad(const cg_mesh *mesh, size_t f, uint32_t **stamp, char *why,
-                             int *is_bad)
-{
-    uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-    const size_t why_size = 160;
-    *is_bad = 1;
-    if (end < begin || end - begin < 3) {
-        if (why)
-            snprintf(why, why_size, "has %ld corners, expected 3 or more", (long)end - (long)begin);
-        return CG_OK;
-    }
-    for (uint32_t k = begin; k < end; k++)
-        if (mesh->face_indices[k] >= mesh->vertex_count) {
-            if (why)
-                snprintf(why, why_size, "refers to vertex %u, but there are %zu",
-                         mesh->face_indices[k], mesh->vertex_count);
-            return CG_OK;
-        }
-    if (end - begin <= 8) {
-        for (uint32_t i = begin; i < end; i++)
-            for (uint32_t j = i + 1; j < end; j++)
-                if (mesh->face_indices[i] == mesh->face_indices[j]) {
-                    if (why)
-                        snprintf(why, why_size, "repeats vertex %u", mesh->face_indices[i]);
-                    return CG_OK;
-                }
-    } else {
-        if (!*stamp && !(*stamp = calloc(mesh->vertex_count, sizeof **stamp)))
-            return CG_ENOMEM;
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t v = mesh->face_indices[k];
-            if ((*stamp)[v] == (uint32_t)f + 1) {
-                if (why)
-                    snprintf(why, why_size, "repeats vertex %u", v);
-                return CG_OK;
-            }
-            (*stamp)[v] = (uint32_t)f + 1;
-        }
-    }
-    *is_bad = 0;
-    return CG_OK;
-}
-
-/* Lists the bad faces in increasing order into *list (*count of them in room
- * for *capacity), sums the corners of the others into *kept_corners, and
- * gives the first bad face's reason in why (160 bytes). */
-static cg_status list_bad_faces(const cg_mesh *mesh, uint32_t **list, size_t *count,
-                                size_t *capacity, size_t *kept_corners, char *why)
-{
-    uint32_t *stamp = NULL;
-    int failed = 0;
-    *kept_corners = 0;
-    for (size_t f = 0; f < mesh->face_count && !failed; f++) {
-        int is_bad;
-        if (face_is_bad(mesh, f, &stamp, *count ? NULL : why, &is_bad) != CG_OK) {
-            failed = 1;
-        } else if (is_bad) {
-            list_push(list, count, capacity, (uint32_t)f, &failed);
-        } else {
-            *kept_corners += mesh->face_offsets[f + 1] - mesh->face_offsets[f];
-        }
-    }
-    free(stamp);
-    return failed ? CG_ENOMEM : CG_OK;
-}
-
-/* A private copy of the faces without the bad ones (bad_count of them,
- * listed in increasing order), and the map to the input faces. */
-static cg_status copy_kept_faces(builder *b, const uint32_t *bad, size_t bad_count)
-{
-    const cg_mesh *mesh = b->mesh;
-    b->own_offsets = malloc((b->faces + 1) * sizeof *b->own_offsets);
-    b->own_indices = malloc((b->corners ? b->corners : 1) * sizeof *b->own_indices);
-    b->face_map = malloc(b->faces * sizeof *b->face_map);
-    if (!b->own_offsets || !b->own_indices || !b->face_map)
-        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    size_t nf = 0, k = 0, next_bad = 0;
-    b->own_offsets[0] = 0;
-    for (size_t f = 0; f < mesh->face_count; f++) {
-        if (next_bad < bad_count && bad[next_bad] == f) {
-            next_bad++;
-            continue;
-        }
-        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        memcpy(b->own_indices + k, mesh->face_indices + begin, (end - begin) * sizeof *b->own_indices);
-        k += end - begin;
-        b->face_map[nf++] = (uint32_t)f;
-        b->own_offsets[nf] = (uint32_t)k;
-    }
-    b->offsets = b->own_offsets;
-    b->indices = b->own_indices;
-    return CG_OK;
-}
-
-static cg_status check_faces(builder *b)
-{
-    const cg_mesh *mesh = b->mesh;
-    cg_hemesh_report *rep = b->report;
-    /* The bad faces go into the report, or into a list of our own. */
-    uint32_t *own_list = NULL;
-    size_t own_count = 0, own_capacity = 0, kept_corners;
-    uint32_t **list = rep ? &rep->bad_faces : &own_list;
-    size_t *bad = rep ? &rep->bad_face_count : &own_count;
-    size_t *capacity = rep ? &b->bad_face_capacity : &own_capacity;
-    char why[160] = "";
-    cg_status status = list_bad_faces(mesh, list, bad, capacity, &kept_corners, why);
-    if (status != CG_OK)
-        status = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    else if (*bad && !(b->flags & CG_HEMESH_DROP_BAD_FACES))
-        status = cg_error_set(b->err, CG_EFORMAT,
-                              "hemesh: face %u %s (%zu bad face%s in all; CG_HEMESH_DROP_BAD_FACES "
-                              "leaves them out)",
-                              (*list)[0], why, *bad, *bad == 1 ? "" : "s");
-    else if (mesh->face_count == *bad)
-        status = cg_error_set(b->err, CG_EEMPTY, "hemesh: the mesh has no usable faces (%zu given)",
-                              mesh->face_count);
-    else if (kept_corners > 0x7ffffffful)
-        status = cg_error_set(b->err, CG_ERANGE, "hemesh: %zu face corners, at most 2^31 - 1",
-                              kept_corners);
-    if (status == CG_OK) {
-        b->faces = mesh->face_count - *bad;
-        b->corners = kept_corners;
-        if (*bad) {
-            status = copy_kept_faces(b, *list, *bad);
-        } else {
-            b->offsets = mesh->face_offsets;
-            b->indices = mesh->face_indices;
-        }
-    }
-    free(own_list);
-    return status;
 }
 
 /* Step 2: match the sides of the faces into edges.  The side of corner k
@@ -234,7 +60,7 @@ typedef struct matching {
 } matching;
 
 /* Sorts the sides into the buckets of their smaller vertex (a counting sort). */
-static void sort_sides(const builder *b, matching *mt)
+static void sort_sides(const hm_builder *b, matching *mt)
 {
     size_t V = b->mesh->vertex_count;
     const uint32_t *off = b->offsets, *idx = b->indices;
@@ -260,7 +86,7 @@ static void sort_sides(const builder *b, matching *mt)
 }
 
 /* Opens a new edge on the vertices (a, other): the current edge of their group. */
-static void open_edge(builder *b, matching *mt, uint32_t a, uint32_t other)
+static void open_edge(hm_builder *b, matching *mt, uint32_t a, uint32_t other)
 {
     mt->current[other] = (uint32_t)mt->counts.edges++;
     b->edge_vertices[2 * mt->current[other]] = a;
@@ -268,7 +94,7 @@ static void open_edge(builder *b, matching *mt, uint32_t a, uint32_t other)
 }
 
 /* The third side of edge (a, other): the edge is non-manifold. */
-static void count_nonmanifold(builder *b, matching *mt, uint32_t a, uint32_t other)
+static void count_nonmanifold(hm_builder *b, matching *mt, uint32_t a, uint32_t other)
 {
     matching_counts *n = &mt->counts;
     /* a non-manifold edge is not counted as misoriented too */
@@ -280,10 +106,10 @@ static void count_nonmanifold(builder *b, matching *mt, uint32_t a, uint32_t oth
     }
     n->nonmanifold++;
     if (mt->report) {
-        list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity, a,
-                  &mt->failed);
-        list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity,
-                  other, &mt->failed);
+        hm_list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity, a,
+                     &mt->failed);
+        hm_list_push(&mt->report->nonmanifold_edges, &n->entries, &b->nonmanifold_edge_capacity,
+                     other, &mt->failed);
     }
     if (mt->first) {
         b->partner[mt->first[other]] = CG_HEMESH_NONE;
@@ -295,7 +121,8 @@ static void count_nonmanifold(builder *b, matching *mt, uint32_t a, uint32_t oth
  * third side turns up in a bucket that is not sorted (then what this
  * bucket counted must be undone and the bucket sorted and matched again),
  * else 0. */
-static int match_bucket(builder *b, matching *mt, uint32_t a, size_t begin, size_t end, int sorted)
+static int match_bucket(hm_builder *b, matching *mt, uint32_t a, size_t begin, size_t end,
+                        int sorted)
 {
     for (size_t i = begin; i < end; i++) {
         uint64_t entry = mt->bucket[i];
@@ -334,8 +161,8 @@ static int match_bucket(builder *b, matching *mt, uint32_t a, size_t begin, size
             }
             if (mt->occupied[other] & (1u << dir)) {
                 size_t listed = mt->counts.cut;
-                list_push(&b->cut_edges, &listed, &b->cut_capacity,
-                          (uint32_t)mt->counts.edges, &mt->failed);
+                hm_list_push(&b->cut_edges, &listed, &b->cut_capacity,
+                             (uint32_t)mt->counts.edges, &mt->failed);
                 mt->counts.cut++;
                 mt->occupied[other] = 0;
                 open_edge(b, mt, a, other);
@@ -349,7 +176,7 @@ static int match_bucket(builder *b, matching *mt, uint32_t a, size_t begin, size
 
 /* Sorts a crowded bucket about its vertex in the order of radial.c, from
  * the sizes of its groups, so that it can be matched again. */
-static cg_status sort_crowded_bucket(builder *b, matching *mt, uint32_t a, size_t begin,
+static cg_status sort_crowded_bucket(hm_builder *b, matching *mt, uint32_t a, size_t begin,
                                      size_t end)
 {
     /* the sizes of the bucket's groups, stamped apart from the matching */
@@ -380,7 +207,7 @@ static void matching_free(matching *mt)
     free(mt->second);
 }
 
-static cg_status match(builder *b, int record)
+static cg_status match(hm_builder *b, int record)
 {
     size_t V = b->mesh->vertex_count, C = b->corners;
     size_t vn = V ? V : 1;
@@ -441,7 +268,7 @@ static cg_status match(builder *b, int record)
 
 /* Step 3: orient each component by a breadth-first walk over faces joined
  * by edges with exactly two sides; then reverse the faces that need it. */
-static cg_status orient(builder *b)
+static cg_status orient(hm_builder *b)
 {
     size_t F = b->faces, C = b->corners;
     if (!b->own_indices) { /* reversing faces needs a private copy */
@@ -511,236 +338,6 @@ static cg_status orient(builder *b)
     return CG_OK;
 }
 
-/* Step 4: the structure itself. */
-
-/* The half-edge structure with the edges of the matching, their links not
- * yet made, and room for the midpoint splits that cut edges may need. */
-static cg_status create_structure(const builder *b, cg_hemesh **out)
-{
-    const cg_mesh *mesh = b->mesh;
-    size_t V = mesh->vertex_count, F = b->faces, H = 2 * b->edges;
-    unsigned flags = (mesh->normals ? CG_MESH_NORMALS : 0u) | (mesh->texcoords ? CG_MESH_TEXCOORDS : 0u)
-                     | (mesh->colors ? CG_MESH_COLORS : 0u)
-                     | (mesh->face_colors ? CG_MESH_FACE_COLORS : 0u);
-    cg_hemesh *m;
-    /* room for the midpoint splits that cut edges may need (about one per
-     * cut: 3 edges and 2 faces each), so that they do not grow the arrays;
-     * what is left over is given back at the end of the build */
-    size_t room = b->cut && H + 6 * b->cut < 0x7fffffffu && F + 2 * b->cut < 0x7fffffffu ? b->cut : 0;
-    cg_status s = hm_create(&m, V, H + 6 * room, F + 2 * room, flags);
-    if (s != CG_OK)
-        return cg_error_set(b->err, s, "hemesh: %s", s == CG_ERANGE ? "too many elements" : "out of memory");
-    m->halfedge_count = H;
-    m->face_count = F;
-    for (size_t e = 0; e < b->edges; e++) {
-        cg_hemesh_halfedge x = {CG_HEMESH_NONE, CG_HEMESH_NONE, b->edge_vertices[2 * e], CG_HEMESH_NONE};
-        m->halfedges[2 * e] = x;
-        x.origin = b->edge_vertices[2 * e + 1];
-        m->halfedges[2 * e + 1] = x;
-    }
-    *out = m;
-    return CG_OK;
-}
-
-/* Links the face loops, then the boundary loops: the next of boundary
- * half-edge x (ending at u) is the boundary half-edge leaving u found by
- * rotating from twin(x).  Fills rotation (h -> twin(prev(h))) and marks the
- * boundary half-edges in on_boundary. */
-static void link_loops(const builder *b, cg_hemesh *m, uint32_t *rotation, uint64_t *on_boundary)
-{
-    cg_hemesh_halfedge *he = m->halfedges;
-    size_t H = m->halfedge_count;
-    for (size_t f = 0; f < b->faces; f++) {
-        uint32_t begin = b->offsets[f], end = b->offsets[f + 1];
-        uint32_t prev = b->corner_halfedge[end - 1];
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t h = b->corner_halfedge[k];
-            he[h].face = (uint32_t)f;
-            he[h].prev = prev;
-            rotation[h] = prev ^ 1u;
-            he[prev].next = h;
-            prev = h;
-        }
-        m->face_halfedge[f] = b->corner_halfedge[begin];
-    }
-    for (size_t x = 0; x < H; x++) {
-        if (he[x].face != CG_HEMESH_NONE)
-            continue;
-        uint32_t h = (uint32_t)x ^ 1u;
-        size_t guard = 0;
-        while (he[h].face != CG_HEMESH_NONE && guard++ < H)
-            h = he[h].prev ^ 1u;
-        he[x].next = h;
-        he[h].prev = (uint32_t)x;
-        rotation[h] = (uint32_t)x ^ 1u;
-        on_boundary[x >> 6] |= (uint64_t)1 << (x & 63);
-    }
-}
-
-/* The fans are the cycles of the rotation.  Each vertex gets the first
- * half-edge of its first fan (a boundary one where the fan has one); the
- * first half-edges of the other fans go into *extra (count, capacity). */
-static void find_fans(builder *b, cg_hemesh *m, const uint32_t *rotation, uint64_t *seen,
-                      const uint64_t *on_boundary, uint32_t **extra, size_t *count,
-                      size_t *capacity, int *failed)
-{
-    const cg_hemesh_halfedge *he = m->halfedges;
-    for (size_t v = 0; v < b->mesh->vertex_count; v++)
-        m->vertex_halfedge[v] = CG_HEMESH_NONE;
-    for (size_t h0 = 0; h0 < m->halfedge_count; h0++) {
-        if (seen[h0 >> 6] >> (h0 & 63) & 1)
-            continue;
-        uint32_t v = he[h0].origin, h = (uint32_t)h0, boundary = CG_HEMESH_NONE;
-        do {
-            seen[h >> 6] |= (uint64_t)1 << (h & 63);
-            if (on_boundary[h >> 6] >> (h & 63) & 1)
-                boundary = h;
-            h = rotation[h];
-        } while (h != h0);
-        uint32_t pick = boundary != CG_HEMESH_NONE ? boundary : (uint32_t)h0;
-        if (m->vertex_halfedge[v] == CG_HEMESH_NONE) {
-            m->vertex_halfedge[v] = pick;
-            continue;
-        }
-        /* a second (or later) fan at v */
-        list_push(extra, count, capacity, pick, failed);
-    }
-}
-
-/* Counts the distinct vertices of the extra fans (each fan's vertex is its
- * first half-edge's origin) into *vertices with the smallest in *first, and
- * lists them in the report. */
-static void count_fan_vertices(builder *b, const cg_hemesh *m, const uint32_t *extra,
-                               size_t count, size_t *vertices, uint32_t *first, int *failed)
-{
-    size_t V = b->mesh->vertex_count;
-    uint8_t *mark = calloc(V, 1);
-    if (!mark) {
-        *failed = 1;
-        return;
-    }
-    for (size_t i = 0; i < count; i++) {
-        uint32_t v = m->halfedges[extra[i]].origin;
-        if (!mark[v]) {
-            mark[v] = 1;
-            if (!*vertices || v < *first)
-                *first = v;
-            (*vertices)++;
-        }
-    }
-    cg_hemesh_report *rep = b->report;
-    if (rep)
-        for (size_t v = 0; v < V; v++)
-            if (mark[v])
-                list_push(&rep->nonmanifold_vertices, &rep->nonmanifold_vertex_count,
-                          &b->nonmanifold_vertex_capacity, (uint32_t)v, failed);
-    free(mark);
-}
-
-/* The attributes of the input vertices and faces. */
-static void copy_attributes(const builder *b, cg_hemesh *m)
-{
-    const cg_mesh *mesh = b->mesh;
-    size_t V = mesh->vertex_count;
-    memcpy(m->positions, mesh->positions, V * sizeof *m->positions);
-    if (mesh->normals)
-        memcpy(m->normals, mesh->normals, V * sizeof *m->normals);
-    if (mesh->texcoords)
-        memcpy(m->texcoords, mesh->texcoords, V * sizeof *m->texcoords);
-    if (mesh->colors)
-        memcpy(m->colors, mesh->colors, V * sizeof *m->colors);
-    for (size_t f = 0; f < b->faces && mesh->face_colors; f++)
-        m->face_colors[f] = mesh->face_colors[b->face_map ? b->face_map[f] : f];
-    m->live_vertices = V;
-    m->live_edges = b->edges;
-    m->live_faces = b->faces;
-}
-
-/* Splits the vertices: one new vertex (a copy of the old one) per extra fan. */
-static cg_status split_fans(cg_hemesh *m, const uint32_t *extra, size_t count)
-{
-    cg_status s = hm_reserve(m, count, 0, 0);
-    if (s != CG_OK)
-        return s;
-    cg_hemesh_halfedge *he = m->halfedges;
-    for (size_t i = 0; i < count; i++) {
-        uint32_t h0 = extra[i], old = he[h0].origin;
-        uint32_t v = hm_add_vertex(m, m->positions[old]);
-        double one = 1.0;
-        hm_blend_attributes(m, v, &old, &one, 1);
-        if (m->normals)
-            m->normals[v] = m->normals[old];
-        m->vertex_halfedge[v] = h0;
-        uint32_t h = h0;
-        do {
-            he[h].origin = v;
-            h = he[h].prev ^ 1u;
-        } while (h != h0);
-    }
-    return CG_OK;
-}
-
-static cg_status assemble(builder *b, cg_hemesh **out)
-{
-    size_t V = b->mesh->vertex_count, H = 2 * b->edges;
-    cg_hemesh *m = NULL;
-    cg_status s = create_structure(b, &m);
-    if (s != CG_OK)
-        return s;
-    /* The fan walk jumps around memory, so it runs on a compact copy of the
-     * rotation h -> twin(prev(h)) (4 bytes a half-edge) and two bitmaps,
-     * filled while linking, rather than on the 16-byte half-edges. */
-    size_t words = H / 64 + 1;
-    /* the edge vertices (2 per edge = H entries) are read by create_structure
-     * and no longer needed: their memory, already mapped, holds the rotation */
-    uint32_t *rotation = b->edge_vertices;
-    uint64_t *seen = calloc(2 * words, sizeof *seen), *on_boundary = seen ? seen + words : NULL;
-    if (!seen) {
-        cg_hemesh_free(m);
-        return cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    }
-    link_loops(b, m, rotation, on_boundary);
-    size_t nonmanifold_vertices = 0;
-    uint32_t first_bad_vertex = 0;
-    int failed = 0;
-    uint32_t *extra_fans = NULL; /* first half-edge of each extra fan */
-    size_t extra_count = 0, extra_capacity = 0;
-    find_fans(b, m, rotation, seen, on_boundary, &extra_fans, &extra_count, &extra_capacity,
-              &failed);
-    free(seen);
-    if (extra_count)
-        count_fan_vertices(b, m, extra_fans, extra_count, &nonmanifold_vertices,
-                           &first_bad_vertex, &failed);
-    if (failed)
-        s = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
-    else if (nonmanifold_vertices && !(b->flags & CG_HEMESH_SPLIT_NONMANIFOLD))
-        s = cg_error_set(b->err, CG_EFORMAT,
-                         "hemesh: the faces around vertex %u form more than one fan "
-                         "(non-manifold; %zu such vertices; CG_HEMESH_SPLIT_NONMANIFOLD "
-                         "splits them)",
-                         first_bad_vertex, nonmanifold_vertices);
-    if (s == CG_OK) {
-        copy_attributes(b, m);
-        if (extra_count && (s = split_fans(m, extra_fans, extra_count)) != CG_OK)
-            cg_error_set(b->err, s, "hemesh: out of memory");
-    }
-    free(extra_fans);
-    if (s != CG_OK) {
-        cg_hemesh_free(m);
-        return s;
-    }
-    cg_hemesh_report *rep = b->report;
-    if (rep) {
-        rep->added_vertex_count = extra_count;
-        size_t isolated = 0;
-        for (size_t v = 0; v < V; v++)
-            isolated += m->vertex_halfedge[v] == CG_HEMESH_NONE;
-        rep->isolated_vertex_count = isolated;
-    }
-    *out = m;
-    return CG_OK;
-}
-
 cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
                           cg_hemesh_report *report, cg_error *err)
 {
@@ -760,13 +357,13 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         return cg_error_set(err, CG_ERANGE, "hemesh: too many vertices or faces");
     if (report)
         report->orientable = 1;
-    builder b;
+    hm_builder b;
     memset(&b, 0, sizeof b);
     b.mesh = mesh;
     b.flags = flags;
     b.report = report;
     b.err = err;
-    cg_status s = check_faces(&b);
+    cg_status s = hm_build_check_faces(&b);
     if (s == CG_OK && (flags & CG_HEMESH_ORIENT)) {
         b.partner = malloc((b.corners ? b.corners : 1) * sizeof *b.partner);
         if (!b.partner)
@@ -801,7 +398,7 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
     if (s == CG_OK && report)
         report->cut_edge_count = b.cut;
     if (s == CG_OK)
-        s = assemble(&b, out);
+        s = hm_build_assemble(&b, out);
     uint32_t *face_origin = NULL; /* of the faces the edge splits add */
     size_t split = 0;
     if (s == CG_OK && b.cut) {

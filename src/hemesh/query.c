@@ -262,15 +262,6 @@ cg_status cg_hemesh_compute_normals(cg_hemesh *m)
 
 /* ---- counts -------------------------------------------------------------- */
 
-static uint32_t find_root(uint32_t *parent, uint32_t x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 /* The scratch of cg_hemesh_stats_compute, one entry per vertex (indexed by
  * a component's root vertex for the per-component counts) or per half-edge. */
 typedef struct stats_scratch {
@@ -298,8 +289,8 @@ static void union_components(const cg_hemesh *m, uint32_t *parent)
     for (size_t h = 0; h < m->halfedge_count; h += 2) {
         if (m->halfedges[h].origin == CG_HEMESH_DELETED)
             continue;
-        uint32_t a = find_root(parent, m->halfedges[h].origin);
-        uint32_t b = find_root(parent, m->halfedges[h + 1].origin);
+        uint32_t a = hm_find_root(parent, m->halfedges[h].origin);
+        uint32_t b = hm_find_root(parent, m->halfedges[h + 1].origin);
         if (a != b) {
             if (a < b)
                 parent[b] = a;
@@ -317,7 +308,7 @@ static void count_boundary_loops(const cg_hemesh *m, stats_scratch *s, cg_hemesh
             || m->halfedges[h].face != CG_HEMESH_NONE)
             continue;
         out->boundary_loops++;
-        s->loops[find_root(s->parent, m->halfedges[h].origin)]++;
+        s->loops[hm_find_root(s->parent, m->halfedges[h].origin)]++;
         uint32_t x = (uint32_t)h;
         do {
             s->seen[x] = 1;
@@ -360,18 +351,18 @@ static void count_component_euler(const cg_hemesh *m, stats_scratch *s, cg_hemes
     for (size_t v = 0; v < m->vertex_count; v++) {
         if (m->vertex_halfedge[v] == CG_HEMESH_DELETED)
             continue;
-        uint32_t r = find_root(s->parent, (uint32_t)v);
+        uint32_t r = hm_find_root(s->parent, (uint32_t)v);
         if (r == v)
             out->components++;
         s->chi[r]++;
     }
     for (size_t h = 0; h < m->halfedge_count; h += 2)
         if (m->halfedges[h].origin != CG_HEMESH_DELETED)
-            s->chi[find_root(s->parent, m->halfedges[h].origin)]--;
+            s->chi[hm_find_root(s->parent, m->halfedges[h].origin)]--;
     for (size_t f = 0; f < m->face_count; f++) {
         if (m->face_halfedge[f] >= CG_HEMESH_DELETED)
             continue;
-        uint32_t r = find_root(s->parent, m->halfedges[m->face_halfedge[f]].origin);
+        uint32_t r = hm_find_root(s->parent, m->halfedges[m->face_halfedge[f]].origin);
         s->chi[r]++;
         s->has_face[r] = 1;
     }

@@ -114,14 +114,22 @@ static double loop_beta(size_t n)
     return (0.625 - c * c) / (double)n;
 }
 
-cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
+/* The start of both schemes: checks the arguments and gives input's dense
+ * form (*owned: a compacted copy to free, or NULL when input is dense). */
+static cg_status subdivide_begin(const cg_hemesh *input, cg_hemesh **out, const cg_hemesh **m,
+                                 cg_hemesh **owned)
 {
     if (!input || !out)
         return CG_EINVAL;
     *out = NULL;
+    return dense(input, m, owned);
+}
+
+cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
+{
     const cg_hemesh *m;
     cg_hemesh *owned;
-    cg_status s = dense(input, &m, &owned);
+    cg_status s = subdivide_begin(input, out, &m, &owned);
     if (s != CG_OK)
         return s;
     size_t V = m->vertex_count, E = m->halfedge_count / 2, F = m->face_count;
@@ -349,12 +357,9 @@ static void catmull_clark_vertex_points(const cg_hemesh *m, cg_hemesh *r)
 
 cg_status cg_hemesh_subdivide_catmull_clark(const cg_hemesh *input, cg_hemesh **out)
 {
-    if (!input || !out)
-        return CG_EINVAL;
-    *out = NULL;
     const cg_hemesh *m;
     cg_hemesh *owned;
-    cg_status s = dense(input, &m, &owned);
+    cg_status s = subdivide_begin(input, out, &m, &owned);
     if (s != CG_OK)
         return s;
     size_t V = m->vertex_count, E = m->halfedge_count / 2, F = m->face_count;

@@ -20,7 +20,8 @@ static int half_cw(i128 rx, i128 ry, i128 ox, i128 oy)
 /* whether piece a's direction comes before b's turning clockwise from r */
 static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
 {
-    i128 ax = a->x1 - a->x0, ay = a->y1 - a->y0, bx = b->x1 - b->x0, by = b->y1 - b->y0;
+    i128 ax = a->x_end - a->x_start, ay = a->y_end - a->y_start, bx = b->x_end - b->x_start,
+         by = b->y_end - b->y_start;
     int ha = half_cw(rx, ry, ax, ay), hb = half_cw(rx, ry, bx, by);
     if (ha != hb)
         return ha < hb;
@@ -76,20 +77,21 @@ static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
     return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
 }
 
-/* The first of the pieces P[0..np) (sorted by start point, y then x)
- * starting at (vx, vy), np when none: a search that gallops from P[from]
+/* The first of the pieces pieces[0..np) (sorted by start point, y then x)
+ * starting at (vx, vy), np when none: a search that gallops from pieces[from]
  * and then halves. */
-static size_t first_leaving(const piece *P, size_t np, size_t from, int64_t vx, int64_t vy)
+static size_t first_leaving(const piece *pieces, size_t piece_count, size_t from, int64_t vx,
+                            int64_t vy)
 {
-#define BEFORE(i) (P[i].y0 < vy || (P[i].y0 == vy && P[i].x0 < vx))
+#define BEFORE(i) (pieces[i].y_start < vy || (pieces[i].y_start == vy && pieces[i].x_start < vx))
     size_t lo, hi; /* the first not BEFORE is in [lo, hi] (hi == np: none) */
     if (BEFORE(from)) {
         size_t step = 1;
         lo = from + 1;
         hi = lo;
-        while (hi < np && BEFORE(hi)) {
+        while (hi < piece_count && BEFORE(hi)) {
             lo = hi + 1;
-            hi = step < np - hi ? hi + step : np;
+            hi = step < piece_count - hi ? hi + step : piece_count;
             step *= 2;
         }
     } else {
@@ -109,7 +111,8 @@ static size_t first_leaving(const piece *P, size_t np, size_t from, int64_t vx, 
         else
             hi = mid;
     }
-    return lo < np && P[lo].x0 == vx && P[lo].y0 == vy ? lo : np;
+    return lo < piece_count && pieces[lo].x_start == vx && pieces[lo].y_start == vy ? lo
+                                                                                    : piece_count;
 #undef BEFORE
 }
 
@@ -124,8 +127,8 @@ static int is_vertex(const uint32_t *h, size_t bits, const cg_point64 *pts, cg_p
 }
 
 typedef struct ringbuf {
-    cg_point64 *pts;
-    size_t n, cap;
+    cg_point64 *points;
+    size_t count, capacity;
 } ringbuf;
 
 /* Whether a ring passes a point twice, from the indices of its points
@@ -184,43 +187,43 @@ static int assemble_add_ring(cg_polygon_set64 *rings, size_t n, size_t max_rings
 int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *cap,
                      const void *fixed)
 {
-    size_t np = g->np;
-    piece *P = g->P;
-    if (np == 0)
+    size_t piece_count = g->piece_count;
+    piece *pieces = g->pieces;
+    if (piece_count == 0)
         return 1;
     /* Every array of the assembly from one block sized from the piece
      * count (a ring takes each piece at most once and has 3 vertices or
      * more, so at most np points in all and np / 3 rings): one allocation
      * per call, which is most of the fixed cost on small inputs. */
-    if (np > ((size_t)-1) / 256 || np >= UINT32_MAX)
+    if (piece_count > ((size_t)-1) / 256 || piece_count >= UINT32_MAX)
         return 0;
-    size_t mr = np / 3 + 1; /* rings at most */
+    size_t max_rings = piece_count / 3 + 1; /* rings at most */
     size_t bytes = 0, off[16], npart = 0;
 #define ASM_PART(n, size) (off[npart++] = bytes, bytes += ((n) * (size) + 15) & ~(size_t)15)
-    ASM_PART(np, sizeof(keyval));       /* 0: sort scratch */
-    ASM_PART(np, sizeof(uint32_t));     /* 1: sort order */
-    ASM_PART(np, sizeof(piece));        /* 2: sorted pieces */
-    ASM_PART(np, 1);                    /* 3: used */
-    ASM_PART(np, sizeof(keyval));       /* 4: sort temporary */
-    ASM_PART(np, sizeof(cg_point64));   /* 5: ring points */
-    ASM_PART(mr + 1, sizeof(size_t));   /* 6: ring starts */
-    ASM_PART(mr, sizeof(double));       /* 7: area */
-    ASM_PART(mr, 4 * sizeof(int64_t));  /* 8: bounding boxes */
-    ASM_PART(mr, sizeof(size_t));       /* 9: parent */
-    ASM_PART(mr, sizeof(size_t));       /* 10: outer rings */
-    ASM_PART(mr, sizeof(ring_by_area)); /* 11: outers by area */
-    ASM_PART(mr, sizeof(hole_point));   /* 12: hole points */
-    ASM_PART(mr, sizeof(hole_point));   /* 13: candidates */
-    ASM_PART(2 * (mr + 1), sizeof(size_t)); /* 14: first and next hole */
+    ASM_PART(piece_count, sizeof(keyval)); /* 0: sort scratch */
+    ASM_PART(piece_count, sizeof(uint32_t)); /* 1: sort order */
+    ASM_PART(piece_count, sizeof(piece)); /* 2: sorted pieces */
+    ASM_PART(piece_count, 1); /* 3: used */
+    ASM_PART(piece_count, sizeof(keyval)); /* 4: sort temporary */
+    ASM_PART(piece_count, sizeof(cg_point64)); /* 5: ring points */
+    ASM_PART(max_rings + 1, sizeof(size_t)); /* 6: ring starts */
+    ASM_PART(max_rings, sizeof(double)); /* 7: area */
+    ASM_PART(max_rings, 4 * sizeof(int64_t)); /* 8: bounding boxes */
+    ASM_PART(max_rings, sizeof(size_t)); /* 9: parent */
+    ASM_PART(max_rings, sizeof(size_t)); /* 10: outer rings */
+    ASM_PART(max_rings, sizeof(ring_by_area)); /* 11: outers by area */
+    ASM_PART(max_rings, sizeof(hole_point)); /* 12: hole points */
+    ASM_PART(max_rings, sizeof(hole_point)); /* 13: candidates */
+    ASM_PART(2 * (max_rings + 1), sizeof(size_t)); /* 14: first and next hole */
     /* the first piece leaving a point: by a hash of the point, or on many
      * pieces (where the lookups would miss the caches) by a search from the
      * piece that arrives there (a ring's next piece is usually close by in
      * the order) */
-    int hashed = np < 32768;
-    size_t hbits = 4;
-    while (hashed && ((size_t)1 << hbits) < 2 * np)
-        hbits++;
-    ASM_PART(hashed ? (size_t)1 << hbits : 0, sizeof(uint32_t)); /* 15: point -> piece */
+    int hashed = piece_count < 32768;
+    size_t hash_bits = 4;
+    while (hashed && ((size_t)1 << hash_bits) < 2 * piece_count)
+        hash_bits++;
+    ASM_PART(hashed ? (size_t)1 << hash_bits : 0, sizeof(uint32_t)); /* 15: point -> piece */
 #undef ASM_PART
     if (bytes > *cap) {
         if (*buf != fixed)
@@ -236,75 +239,78 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         keyval *scratch = (keyval *)(mem + off[0]);
         uint32_t *order = (uint32_t *)(mem + off[1]);
         piece *sorted = (piece *)(mem + off[2]);
-        if (!boolean_sort_two_keys(&P[0].y0, &P[0].x0, sizeof(piece), np, order, scratch,
-                                   (keyval *)(mem + off[4])))
+        if (!boolean_sort_two_keys(&pieces[0].y_start, &pieces[0].x_start, sizeof(piece),
+                                   piece_count, order, scratch, (keyval *)(mem + off[4])))
             return 0;
-        for (size_t i = 0; i < np; i++)
-            sorted[i] = P[order[i]];
-        P = sorted; /* (g->P is not read after the assembly) */
+        for (size_t i = 0; i < piece_count; i++)
+            sorted[i] = pieces[order[i]];
+        pieces = sorted; /* (g->pieces is not read after the assembly) */
     }
     /* the first of the (sorted) pieces leaving each point, by a hash of the
      * point (open addressing; index + 1, 0 is free) */
     uint32_t *first = (uint32_t *)(mem + off[15]);
-    size_t hmask = ((size_t)1 << hbits) - 1;
+    size_t hash_mask = ((size_t)1 << hash_bits) - 1;
     if (hashed)
-        memset(first, 0, (hmask + 1) * sizeof *first);
-    for (size_t i = 0; i < np && hashed; i++) {
-        if (i && P[i].x0 == P[i - 1].x0 && P[i].y0 == P[i - 1].y0)
+        memset(first, 0, (hash_mask + 1) * sizeof *first);
+    for (size_t i = 0; i < piece_count && hashed; i++) {
+        if (i && pieces[i].x_start == pieces[i - 1].x_start &&
+            pieces[i].y_start == pieces[i - 1].y_start)
             continue;
-        size_t h = point_hash(P[i].x0, P[i].y0, hbits);
+        size_t h = point_hash(pieces[i].x_start, pieces[i].y_start, hash_bits);
         while (first[h])
-            h = (h + 1) & hmask;
+            h = (h + 1) & hash_mask;
         first[h] = (uint32_t)(i + 1);
     }
     unsigned char *used = (unsigned char *)(mem + off[3]);
-    memset(used, 0, np);
+    memset(used, 0, piece_count);
     /* rings collected first: points and ring boundaries (in the block:
      * never grown, never freed on their own) */
     cg_polygon_set64 rings = {0};
     rings.points = (cg_point64 *)(mem + off[5]);
     rings.ring_start = (size_t *)(mem + off[6]);
     rings.ring_start[0] = 0;
-    ringbuf rb = {NULL, 0, 0};
+    ringbuf walk = {NULL, 0, 0};
     int ok = 0;
-    for (size_t start = 0; start < np; start++) {
+    for (size_t start = 0; start < piece_count; start++) {
         if (used[start])
             continue;
         /* walked in place, after the rings so far */
-        rb.pts = rings.points + rings.point_count;
-        rb.cap = np - rings.point_count;
-        rb.n = 0;
+        walk.points = rings.points + rings.point_count;
+        walk.capacity = piece_count - rings.point_count;
+        walk.count = 0;
         size_t cur = start;
         used[cur] = 1;
         /* where the ring passed a point with several ways out (the only
          * points it can pass twice): the first ASM_BRANCHES of them */
         size_t branch_at[ASM_BRANCHES], branches = 0;
         for (;;) {
-            if (!CG_INVARIANT(rb.n < rb.cap)) /* each piece is taken once */
+            if (!CG_INVARIANT(walk.count < walk.capacity)) /* each piece is taken once */
                 goto fail;
-            rb.pts[rb.n++] = (cg_point64){P[cur].x0, P[cur].y0};
-            int64_t vx = P[cur].x1, vy = P[cur].y1;
+            walk.points[walk.count++] = (cg_point64){pieces[cur].x_start, pieces[cur].y_start};
+            int64_t vx = pieces[cur].x_end, vy = pieces[cur].y_end;
             /* outgoing pieces at v: the first of them */
-            size_t lo = hashed ? np : first_leaving(P, np, cur, vx, vy);
-            for (size_t h = point_hash(vx, vy, hbits); hashed && first[h]; h = (h + 1) & hmask) {
+            size_t lo = hashed ? piece_count : first_leaving(pieces, piece_count, cur, vx, vy);
+            for (size_t h = point_hash(vx, vy, hash_bits); hashed && first[h];
+                 h = (h + 1) & hash_mask) {
                 size_t f = first[h] - 1;
-                if (P[f].x0 == vx && P[f].y0 == vy) {
+                if (pieces[f].x_start == vx && pieces[f].y_start == vy) {
                     lo = f;
                     break;
                 }
             }
             size_t best = (size_t)-1;
-            i128 rx = P[cur].x0 - P[cur].x1, ry = P[cur].y0 - P[cur].y1;
+            i128 rx = pieces[cur].x_start - pieces[cur].x_end,
+                 ry = pieces[cur].y_start - pieces[cur].y_end;
             size_t k = lo;
-            for (; k < np && P[k].y0 == vy && P[k].x0 == vx; k++) {
+            for (; k < piece_count && pieces[k].y_start == vy && pieces[k].x_start == vx; k++) {
                 if (used[k] && k != start)
                     continue;
-                if (best == (size_t)-1 || cw_before(rx, ry, &P[k], &P[best]))
+                if (best == (size_t)-1 || cw_before(rx, ry, &pieces[k], &pieces[best]))
                     best = k;
             }
             if (k - lo > 1) {
                 if (branches < ASM_BRANCHES)
-                    branch_at[branches] = best == start ? 0 : rb.n;
+                    branch_at[branches] = best == start ? 0 : walk.count;
                 branches++;
             }
             if (best == (size_t)-1 || best == start)
@@ -312,19 +318,19 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
             cur = best;
             used[cur] = 1;
         }
-        if (!passes_twice(rb.pts, branch_at, branches)) {
-            if (!assemble_add_ring(&rings, rb.n, mr))
+        if (!passes_twice(walk.points, branch_at, branches)) {
+            if (!assemble_add_ring(&rings, walk.count, max_rings))
                 goto fail;
             continue;
         }
         /* a ring through a point twice is cut there into rings of their own */
         size_t *ends, loops;
-        if (!boolean_split_pinches(rb.pts, rb.n, branch_at, branches, &ends, &loops))
+        if (!boolean_split_pinches(walk.points, walk.count, branch_at, branches, &ends, &loops))
             goto fail;
         for (size_t k = 0, from = 0; k < loops; from = ends[k++]) {
-            memmove(rings.points + rings.point_count, rb.pts + from,
-                    (ends[k] - from) * sizeof *rb.pts);
-            if (!assemble_add_ring(&rings, ends[k] - from, mr)) {
+            memmove(rings.points + rings.point_count, walk.points + from,
+                    (ends[k] - from) * sizeof *walk.points);
+            if (!assemble_add_ring(&rings, ends[k] - from, max_rings)) {
                 free(ends);
                 goto fail;
             }
@@ -333,19 +339,19 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
     }
     /* classify and nest */
     {
-        size_t nr = rings.ring_count;
+        size_t ring_count = rings.ring_count;
         double *area = (double *)(mem + off[7]);
-        int64_t(*bb)[4] = (int64_t(*)[4])(mem + off[8]);
+        int64_t(*boxes)[4] = (int64_t(*)[4])(mem + off[8]);
         size_t *parent = (size_t *)(mem + off[9]);
         size_t *order = (size_t *)(mem + off[10]);
-        size_t nouter = 0;
-        for (size_t r = 0; r < nr; r++) {
+        size_t outer_count = 0;
+        for (size_t r = 0; r < ring_count; r++) {
             size_t a = rings.ring_start[r], b = rings.ring_start[r + 1];
-            uint64_t s64 = 0;
+            uint64_t area_mod64 = 0;
             int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
             for (size_t i = a; i < b; i++) {
                 cg_point64 p = rings.points[i], q = rings.points[i + 1 < b ? i + 1 : a];
-                s64 += (uint64_t)p.x * (uint64_t)q.y - (uint64_t)q.x * (uint64_t)p.y;
+                area_mod64 += (uint64_t)p.x * (uint64_t)q.y - (uint64_t)q.x * (uint64_t)p.y;
                 if (p.x < x0)
                     x0 = p.x;
                 if (p.x > x1)
@@ -362,16 +368,16 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
             uint64_t w = (uint64_t)x1 - (uint64_t)x0, hgt = (uint64_t)y1 - (uint64_t)y0;
             i128 s = w < ((uint64_t)1 << 31) && hgt < ((uint64_t)1 << 31) &&
                              w * hgt <= (uint64_t)INT64_MAX / (b - a)
-                         ? (i128)(int64_t)s64
+                         ? (i128)(int64_t)area_mod64
                          : clip_ring_twice_area(rings.points + a, b - a);
             area[r] = (double)s;
-            bb[r][0] = x0;
-            bb[r][1] = y0;
-            bb[r][2] = x1;
-            bb[r][3] = y1;
+            boxes[r][0] = x0;
+            boxes[r][1] = y0;
+            boxes[r][2] = x1;
+            boxes[r][3] = y1;
             parent[r] = (size_t)-1;
             if (s > 0)
-                order[nouter++] = r;
+                order[outer_count++] = r;
         }
         /* Each hole goes to the smallest outer containing a point of one
          * of its edges that is on no other ring (below).  The outers are
@@ -379,14 +385,14 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
          * within its box are tested together: the outer's edges are
          * matched with the hole points sorted by y. */
         int fail_nest = 0;
-        ring_by_area *ra = (ring_by_area *)(mem + off[11]);
-        size_t nholes = nr - nouter;
-        hole_point *hp = (hole_point *)(mem + off[12]);
-        hole_point *cand = (hole_point *)(mem + off[13]);
+        ring_by_area *outers_by_area = (ring_by_area *)(mem + off[11]);
+        size_t hole_count = ring_count - outer_count;
+        hole_point *hole_points = (hole_point *)(mem + off[12]);
+        hole_point *candidates = (hole_point *)(mem + off[13]);
         {
-            for (size_t i = 0; i < nouter; i++)
-                ra[i] = (ring_by_area){area[order[i]], order[i]};
-            boolean_sort_few(ra, nouter, sizeof *ra, cmp_area);
+            for (size_t i = 0; i < outer_count; i++)
+                outers_by_area[i] = (ring_by_area){area[order[i]], order[i]};
+            boolean_sort_few(outers_by_area, outer_count, sizeof *outers_by_area, cmp_area);
             /* The point of a hole (in quadrupled coordinates): the midpoint
              * of one of its edges, or else a quarter point, that is not a
              * vertex of another ring (rings may touch there, after the
@@ -395,8 +401,8 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
             uint32_t *verts = NULL; /* a hash set of the vertices, when first needed */
             size_t vbits = 4;
             size_t nv = rings.point_count;
-            size_t nhp = 0; /* holes noted in hp */
-            for (size_t r = 0; r < nr && !fail_nest; r++) {
+            size_t noted_holes = 0; /* holes noted in hp */
+            for (size_t r = 0; r < ring_count && !fail_nest; r++) {
                 if (area[r] > 0)
                     continue;
                 size_t a0 = rings.ring_start[r], a1 = rings.ring_start[r + 1];
@@ -433,30 +439,31 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
                         }
                     }
                 }
-                hp[nhp++] = (hole_point){px, py, r, 0};
+                hole_points[noted_holes++] = (hole_point){px, py, r, 0};
             }
             free(verts);
             if (fail_nest)
-                nholes = 0;
-            boolean_sort_few(hp, nholes, sizeof *hp, cmp_hole_x);
-            size_t unplaced = nholes;
-            for (size_t oi = 0; oi < nouter && unplaced; oi++) {
-                size_t o = ra[oi].ring;
-                int64_t bx0 = 4 * bb[o][0], by0 = 4 * bb[o][1], bx1 = 4 * bb[o][2],
-                        by1 = 4 * bb[o][3];
+                hole_count = 0;
+            boolean_sort_few(hole_points, hole_count, sizeof *hole_points, cmp_hole_x);
+            size_t unplaced = hole_count;
+            for (size_t oi = 0; oi < outer_count && unplaced; oi++) {
+                size_t o = outers_by_area[oi].ring;
+                int64_t bx0 = 4 * boxes[o][0], by0 = 4 * boxes[o][1], bx1 = 4 * boxes[o][2],
+                        by1 = 4 * boxes[o][3];
                 /* candidates: holes with bx0 <= x <= bx1 (binary search), in y range */
-                size_t lo = first_at_least(hp, nholes, bx0, 0);
-                size_t nc = 0;
-                for (size_t k = lo; k < nholes && hp[k].x <= bx1; k++)
-                    if (hp[k].parent == 0 && hp[k].y >= by0 && hp[k].y <= by1) {
-                        cand[nc] = hp[k];
-                        cand[nc].parent = k; /* index back into hp */
-                        nc++;
+                size_t lo = first_at_least(hole_points, hole_count, bx0, 0);
+                size_t candidate_count = 0;
+                for (size_t k = lo; k < hole_count && hole_points[k].x <= bx1; k++)
+                    if (hole_points[k].parent == 0 && hole_points[k].y >= by0 &&
+                        hole_points[k].y <= by1) {
+                        candidates[candidate_count] = hole_points[k];
+                        candidates[candidate_count].parent = k; /* index back into hp */
+                        candidate_count++;
                     }
-                if (!nc)
+                if (!candidate_count)
                     continue;
-                boolean_sort_few(cand, nc, sizeof *cand, cmp_hole_y);
-                unsigned char *in = calloc(nc, 1);
+                boolean_sort_few(candidates, candidate_count, sizeof *candidates, cmp_hole_y);
+                unsigned char *in = calloc(candidate_count, 1);
                 if (!in) {
                     fail_nest = 1;
                     break;
@@ -469,18 +476,18 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
                         continue;
                     int64_t ylo = uy < vy ? uy : vy, yhi = uy < vy ? vy : uy;
                     /* candidates with ylo <= y < yhi */
-                    size_t l = first_at_least(cand, nc, ylo, 1);
+                    size_t l = first_at_least(candidates, candidate_count, ylo, 1);
                     i128 ux = 4 * (i128)u.x, vx = 4 * (i128)v.x;
-                    for (size_t k = l; k < nc && cand[k].y < yhi; k++) {
-                        i128 mx = cand[k].x, my = cand[k].y;
+                    for (size_t k = l; k < candidate_count && candidates[k].y < yhi; k++) {
+                        i128 mx = candidates[k].x, my = candidates[k].y;
                         i128 lhs = (mx - ux) * (vy - uy), rhs = (vx - ux) * (my - uy);
                         if (vy > uy ? lhs < rhs : lhs > rhs)
                             in[k] = !in[k];
                     }
                 }
-                for (size_t k = 0; k < nc; k++)
+                for (size_t k = 0; k < candidate_count; k++)
                     if (in[k]) {
-                        hole_point *hpk = &hp[cand[k].parent];
+                        hole_point *hpk = &hole_points[candidates[k].parent];
                         hpk->parent = o + 1;
                         parent[hpk->ring] = o;
                         unplaced--;
@@ -493,14 +500,14 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
         /* output: each outer followed by its holes (every hole has an outer:
          * one without would be dropped) */
         size_t *first_hole = (size_t *)(mem + off[14]);
-        size_t *next_hole = first_hole + (nr + 1);
+        size_t *next_hole = first_hole + (ring_count + 1);
         int fail = 0;
         {
-            for (size_t r = 0; r < nr; r++)
+            for (size_t r = 0; r < ring_count; r++)
                 first_hole[r] = (size_t)-1;
             /* the result's arrays at their size at once (no regrowth) */
             size_t npts = 0, nrings = 0;
-            for (size_t r = nr; r-- > 0;) {
+            for (size_t r = ring_count; r-- > 0;) {
                 if (parent[r] != (size_t)-1) {
                     next_hole[r] = first_hole[parent[r]];
                     first_hole[parent[r]] = r;
@@ -510,11 +517,11 @@ int boolean_assemble(engine *g, cg_polygon_set64 *result, void **buf, size_t *ca
                     nrings++;
                 }
             }
-            if (nouter && clip_polygon_set64_reserve(result, result->point_count + npts,
-                                                     result->ring_count + nrings,
-                                                     result->polygon_count + nouter) != CG_OK)
+            if (outer_count && clip_polygon_set64_reserve(
+                                   result, result->point_count + npts, result->ring_count + nrings,
+                                   result->polygon_count + outer_count) != CG_OK)
                 fail = 1;
-            for (size_t r = 0; r < nr && !fail; r++) {
+            for (size_t r = 0; r < ring_count && !fail; r++) {
                 if (area[r] <= 0)
                     continue;
                 size_t a = rings.ring_start[r];

@@ -77,19 +77,25 @@ static inline size_t point_hash(int64_t x, int64_t y, size_t bits)
     return (size_t)((h * 0xbf58476d1ce4e5b9u) >> (64 - bits));
 }
 
-/* The first of the pieces pieces[0..np) (sorted by start point, y then x)
- * starting at (vx, vy), np when none: a search that gallops from pieces[from]
+/* whether piece p starts before the point (vx, vy), in the order of
+ * the start points by y, then x */
+static inline int starts_before(const piece *p, int64_t vx, int64_t vy)
+{
+    return p->y_start < vy || (p->y_start == vy && p->x_start < vx);
+}
+
+/* The first of the pieces pieces[0..piece_count) (sorted by start point, y then x)
+ * starting at (vx, vy), piece_count when none: a search that gallops from pieces[from]
  * and then halves. */
 static size_t first_leaving(const piece *pieces, size_t piece_count, size_t from, int64_t vx,
                             int64_t vy)
 {
-#define BEFORE(i) (pieces[i].y_start < vy || (pieces[i].y_start == vy && pieces[i].x_start < vx))
-    size_t lo, hi; /* the first not BEFORE is in [lo, hi] (hi == np: none) */
-    if (BEFORE(from)) {
+    size_t lo, hi; /* the first not starting before v is in [lo, hi] (hi == np: none) */
+    if (starts_before(&pieces[from], vx, vy)) {
         size_t step = 1;
         lo = from + 1;
         hi = lo;
-        while (hi < piece_count && BEFORE(hi)) {
+        while (hi < piece_count && starts_before(&pieces[hi], vx, vy)) {
             lo = hi + 1;
             hi = step < piece_count - hi ? hi + step : piece_count;
             step *= 2;
@@ -98,7 +104,7 @@ static size_t first_leaving(const piece *pieces, size_t piece_count, size_t from
         size_t step = 1;
         hi = from;
         lo = from;
-        while (lo > 0 && !BEFORE(lo - 1)) {
+        while (lo > 0 && !starts_before(&pieces[lo - 1], vx, vy)) {
             hi = lo - 1;
             lo = step < lo ? lo - step : 0;
             step *= 2;
@@ -106,14 +112,13 @@ static size_t first_leaving(const piece *pieces, size_t piece_count, size_t from
     }
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if (BEFORE(mid))
+        if (starts_before(&pieces[mid], vx, vy))
             lo = mid + 1;
         else
             hi = mid;
     }
     return lo < piece_count && pieces[lo].x_start == vx && pieces[lo].y_start == vy ? lo
                                                                                     : piece_count;
-#undef BEFORE
 }
 
 /* whether p is in the hash set h (2^bits entries: index + 1 into pts, 0

@@ -42,6 +42,9 @@ int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1
     return 1;
 }
 
+/* whether edge e ends at scanline y */
+static inline int ends_at(const edge *e, int64_t y) { return e->y_top == y; }
+
 /* the input edge e is a piece of */
 static inline void edge_orig(const engine *g, const edge *e, int64_t o[4])
 {
@@ -450,8 +453,8 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t y_nex
 {
     const edge *edges = s->engine->edges;
     int64_t x = 0;
-    if (edges[u].y_top == y_next || edges[v].y_top == y_next ||
-        x_is_integer(&edges[u], y_next, &x)) {
+    int either_ends = ends_at(&edges[u], y_next) || ends_at(&edges[v], y_next);
+    if (either_ends || x_is_integer(&edges[u], y_next, &x)) {
         /* a grid point (ends are grid points): the runs of those that go
          * on break there */
         if (edges[u].y_top > y_next)
@@ -459,8 +462,7 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t y_nex
         if (edges[v].y_top > y_next)
             break_run(s, v, 1);
         /* (an edge's end is a vertex already) */
-        return !s->record_meets || edges[u].y_top == y_next || edges[v].y_top == y_next ||
-               record_meet(s, x, y_next);
+        return !s->record_meets || either_ends || record_meet(s, x, y_next);
     }
     if (coincident(&edges[u], &edges[v]))
         return 1;
@@ -471,6 +473,36 @@ NOINLINE static int meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t y_nex
 static inline int near_span(double x, double a, double b)
 {
     return a < b ? x >= a - 1 && x <= b + 1 : x >= b - 1 && x <= a + 1;
+}
+
+/* the bottom of edge by_bottom[next_start], the next to start (INT64_MAX
+ * when none is left: no y reaches it) */
+static inline int64_t bottom_of_next(const sweep *s, size_t next_start)
+{
+    return next_start < s->engine->edge_count ? s->engine->edges[s->by_bottom[next_start]].y_bottom
+                                              : INT64_MAX;
+}
+
+/* x of e at y, y above its bottom (by the slope, exact at its top) */
+static inline double x_above(const edge *e, int64_t y)
+{
+    return y == e->y_top ? (double)e->x_top
+                         : (double)e->x_bottom + (double)(y - e->y_bottom) * e->slope;
+}
+
+/* Edge e put at above[above_count] (the count with it returned), x_next its
+ * x at the next scanline: the order there is checked on the way, *last the
+ * x of the edge before, *check_from the first position out of order
+ * (SIZE_MAX while none is) */
+static inline size_t take_in_order(uint32_t *above, size_t above_count, uint32_t e, double x_next,
+                                   double *last, size_t *check_from)
+{
+    if (x_next > *last + 0.01)
+        *last = x_next;
+    else if (*check_from == SIZE_MAX)
+        *check_from = above_count;
+    above[above_count] = e;
+    return above_count + 1;
 }
 
 /* Returns 1 when done, 0 when out of memory, -1 when the active list was
@@ -485,9 +517,7 @@ int boolean_run_sweep(sweep *s)
     uint32_t *starting = s->starting, *dirty = s->dirty;
     /* the bottom of the next edge to start (INT64_MAX: none; no y reaches
      * it) */
-#define NEXT_BOTTOM()                                                                              \
-    (next_start < edge_count ? edges[s->by_bottom[next_start]].y_bottom : INT64_MAX)
-    int64_t y_start = NEXT_BOTTOM();
+    int64_t y_start = bottom_of_next(s, next_start);
     if (!s->start_scanline)
         s->active_count = 0;
     s->y_span = scanline_count ? s->scanlines[scanline_count - 1] - s->scanlines[0] : 0;
@@ -525,7 +555,7 @@ int boolean_run_sweep(sweep *s)
                 s->prev_checkpoint = j;
                 scanline = s->start_scanline;
                 next_start = s->start_bottom;
-                y_start = NEXT_BOTTOM();
+                y_start = bottom_of_next(s, next_start);
                 next_end = s->start_top;
                 y = s->scanlines[scanline];
                 y_next = scanline + 1 < scanline_count ? s->scanlines[scanline + 1] : y;
@@ -557,7 +587,7 @@ int boolean_run_sweep(sweep *s)
         size_t starting_count = 0;
         while (y_start == y) {
             uint32_t e = s->by_bottom[next_start++];
-            y_start = NEXT_BOTTOM();
+            y_start = bottom_of_next(s, next_start);
             x_current[e] = (double)edges[e].x_bottom;
             x_next[e] = x_at(&edges[e], y_next);
             size_t m = starting_count;
@@ -605,19 +635,10 @@ int boolean_run_sweep(sweep *s)
             /* few edges: one look at each, which also takes x at yn and
              * checks the order there up to the first inversion (k0) */
             check_from = SIZE_MAX;
-#define TAKE(v, xv)                                                                                \
-    do {                                                                                           \
-        double x_ = (xv);                                                                          \
-        if (x_ > last + 0.01)                                                                      \
-            last = x_;                                                                             \
-        else if (check_from == SIZE_MAX)                                                           \
-            check_from = above_count;                                                              \
-        above[above_count++] = (v);                                                                \
-    } while (0)
             for (size_t k = 0; k < below_count; k++) {
                 uint32_t e = below[k];
                 const edge *ee = &edges[e];
-                if (ee->y_top == y) {
+                if (ends_at(ee, y)) {
                     if (s->classify && s->run_open[e] && !close_run(s, e, y))
                         return 0;
                     continue;
@@ -636,23 +657,21 @@ int boolean_run_sweep(sweep *s)
                         break; /* the order at yn is settled below */
                     }
                     dirty[dirty_count++] = (uint32_t)above_count;
-                    TAKE(f, x_next[f]);
+                    above_count =
+                        take_in_order(above, above_count, f, x_next[f], &last, &check_from);
                     starting_at++;
                 }
                 if (s->run_break[e])
                     dirty[dirty_count++] = (uint32_t)above_count;
-                double xe = y_next == ee->y_top ? (double)ee->x_top
-                                                : (double)ee->x_bottom +
-                                                      (double)(y_next - ee->y_bottom) * ee->slope;
+                double xe = x_above(ee, y_next);
                 x_next[e] = xe;
-                TAKE(e, xe);
+                above_count = take_in_order(above, above_count, e, xe, &last, &check_from);
             }
             while (starting_at < starting_count) {
                 dirty[dirty_count++] = (uint32_t)above_count;
                 uint32_t f = starting[starting_at++];
-                TAKE(f, x_next[f]);
+                above_count = take_in_order(above, above_count, f, x_next[f], &last, &check_from);
             }
-#undef TAKE
             if (check_from == SIZE_MAX)
                 check_from = above_count;
             else
@@ -670,7 +689,7 @@ int boolean_run_sweep(sweep *s)
                 while (below_at < below_count &&
                        cmp_xi(&edges[below[below_at]], y, X, x_current[below[below_at]]) == 0) {
                     uint32_t e = below[below_at++];
-                    if (edges[e].y_top == y) {
+                    if (ends_at(&edges[e], y)) {
                         ended++;
                         if (s->classify && s->run_open[e] && !close_run(s, e, y))
                             return 0;
@@ -748,9 +767,7 @@ int boolean_run_sweep(sweep *s)
         for (size_t k = check_from; k < above_count; k++) {
             uint32_t v = above[k];
             const edge *ev = &edges[v];
-            double xv = y_next == ev->y_top
-                            ? (double)ev->x_top
-                            : (double)ev->x_bottom + (double)(y_next - ev->y_bottom) * ev->slope;
+            double xv = x_above(ev, y_next);
             x_next[v] = xv;
             if (xv > last + 0.01) {
                 last = xv;
@@ -825,7 +842,6 @@ int boolean_run_sweep(sweep *s)
             return 0;
     }
     return 1;
-#undef NEXT_BOTTOM
 }
 
 /* ---- the light sweep ------------------------------------------------------- */
@@ -901,7 +917,7 @@ int boolean_light_sweep(sweep *s)
             while (point_end < below_count &&
                    cmp_xi(&edges[below[point_end]], y, X, x_at(&edges[below[point_end]], y)) == 0) {
                 uint32_t e = below[point_end++];
-                if (edges[e].y_top == y) {
+                if (ends_at(&edges[e], y)) {
                     ended++;
                     if (s->run_open[e] && !close_run(s, e, y))
                         return 0;

@@ -41,6 +41,7 @@
  * boolean_double.c (the double API); boolean_engine.h holds what they
  * share. */
 #include "boolean_engine.h"
+#include "../core/arena.h"
 
 int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
                          size_t size)
@@ -117,11 +118,37 @@ static void sweep_reset(sweep *s)
     s->block_size = cap;
 }
 
-static void *carve(char **p, size_t bytes)
+/* The arrays of a pass over g's edges, taken from arena (measuring, then
+ * carving; light: the light sweep's too). */
+static void sweep_take_arrays(sweep *s, core_arena *arena, int light)
 {
-    void *r = *p;
-    *p += (bytes + 15) & ~(size_t)15;
-    return r;
+    size_t edge_room = s->engine->edge_count ? s->engine->edge_count : 1,
+           horizontal_count = s->engine->horizontal_count;
+    size_t sort_room = edge_room > horizontal_count ? edge_room : horizontal_count;
+    uint32_t **edge_lists[] = {&s->by_bottom,        &s->by_top,     &s->active,
+                               &s->next_active,      &s->starting,   &s->break_queue,
+                               &s->break_queue_next, &s->point_edges};
+    for (size_t i = 0; i < (light ? 8u : 7u); i++)
+        *edge_lists[i] = core_arena_take(arena, edge_room, sizeof(uint32_t));
+    s->run_x = core_arena_take(arena, edge_room, sizeof *s->run_x);
+    s->run_y = core_arena_take(arena, edge_room, sizeof *s->run_y);
+    s->winding_subject = core_arena_take(arena, edge_room, sizeof *s->winding_subject);
+    s->winding_clip = core_arena_take(arena, edge_room, sizeof *s->winding_clip);
+    s->x_current = core_arena_take(arena, edge_room, sizeof *s->x_current);
+    s->x_next = core_arena_take(arena, edge_room, sizeof *s->x_next);
+    s->scanlines = core_arena_take(arena, 2 * edge_room, sizeof *s->scanlines);
+    /* dirty positions: new edges and run breaks at points, queued run
+     * breaks, horizontal meets: each at most once per position */
+    s->dirty = core_arena_take(arena, 3 * edge_room, sizeof *s->dirty);
+    /* run_open, run_up, run_break, run_break_next in one block (cleared at
+     * once) */
+    s->run_open = core_arena_take(arena, 4 * edge_room, 1);
+    s->sort_scratch = core_arena_take(arena, sort_room, sizeof *s->sort_scratch);
+    s->sort_tmp = core_arena_take(arena, sort_room, sizeof *s->sort_tmp);
+    s->horizontals_sorted = core_arena_take(arena, horizontal_count, sizeof *s->horizontals_sorted);
+    s->horizontal_order = core_arena_take(arena, horizontal_count, sizeof *s->horizontal_order);
+    if (light)
+        s->seams = core_arena_take(arena, 3 * edge_room + 1, sizeof *s->seams);
 }
 
 /* The arrays of a pass over g's edges, carved from one block kept from pass
@@ -129,55 +156,22 @@ static void *carve(char **p, size_t bytes)
  * and reused ones are much cheaper): 0 when out of memory. */
 static int sweep_alloc(sweep *s, int light)
 {
-    size_t edge_room = s->engine->edge_count ? s->engine->edge_count : 1,
-           horizontal_count = s->engine->horizontal_count;
-    size_t nscratch = edge_room > horizontal_count ? edge_room : horizontal_count;
-    uint32_t **ids[] = {&s->by_bottom, &s->by_top,      &s->active,           &s->next_active,
-                        &s->starting,  &s->break_queue, &s->break_queue_next, &s->point_edges};
-    int64_t **i64[] = {&s->run_x, &s->run_y};
-    int32_t **i32[] = {&s->winding_subject, &s->winding_clip};
-    double **f64[] = {&s->x_current, &s->x_next};
-    size_t nids = light ? 8 : 7, need = 32 * 16 + 4 * edge_room;
-    need +=
-        (nids * edge_room + 3 * edge_room + (light ? 3 * edge_room + 1 : 0) + horizontal_count) *
-        sizeof(uint32_t);
-    need += (2 * edge_room + 2 * edge_room) * sizeof(int64_t) + 2 * edge_room * sizeof(int32_t) +
-            2 * edge_room * sizeof(double);
-    need += 2 * nscratch * sizeof(keyval) + horizontal_count * sizeof(horizontal_edge);
-    if (need > s->block_size) {
-        if (s->block != s->block_small)
-            free(s->block);
-        s->block_size = 0;
-        need += need / 8 + 2048; /* the next pass usually has a few more edges */
-        s->block = malloc(need);
-        if (!s->block)
-            return 0;
-        s->block_size = need;
-    }
-    char *p = s->block;
-    for (size_t i = 0; i < nids; i++)
-        *ids[i] = carve(&p, edge_room * sizeof(uint32_t));
-    for (size_t i = 0; i < sizeof i64 / sizeof i64[0]; i++)
-        *i64[i] = carve(&p, edge_room * sizeof(int64_t));
-    for (size_t i = 0; i < sizeof i32 / sizeof i32[0]; i++)
-        *i32[i] = carve(&p, edge_room * sizeof(int32_t));
-    for (size_t i = 0; i < sizeof f64 / sizeof f64[0]; i++)
-        *f64[i] = carve(&p, edge_room * sizeof(double));
-    s->scanlines = carve(&p, 2 * edge_room * sizeof *s->scanlines);
-    /* dirty positions: new edges and run breaks at points, queued run
-     * breaks, horizontal meets: each at most once per position */
-    s->dirty = carve(&p, 3 * edge_room * sizeof *s->dirty);
-    s->run_open = carve(&p, 4 * edge_room); /* and run_up, run_break, run_break_next */
+    core_arena measure = core_arena_measuring();
+    sweep_take_arrays(s, &measure, light);
+    if (measure.failed)
+        return 0;
+    size_t need = measure.used;
+    /* (the next pass usually has a few more edges) */
+    if (need > s->block_size && core_arena_block(&s->block, &s->block_size, need + need / 8 + 2048,
+                                                 s->block_small) != CG_OK)
+        return 0;
+    core_arena carve = core_arena_on(s->block, s->block_size);
+    sweep_take_arrays(s, &carve, light);
+    size_t edge_room = s->engine->edge_count ? s->engine->edge_count : 1;
     s->run_up = s->run_open + edge_room;
     s->run_break = s->run_open + 2 * edge_room;
     s->run_break_next = s->run_open + 3 * edge_room;
     memset(s->run_open, 0, 4 * edge_room);
-    s->sort_scratch = carve(&p, nscratch * sizeof *s->sort_scratch);
-    s->sort_tmp = carve(&p, nscratch * sizeof *s->sort_tmp);
-    s->horizontals_sorted = carve(&p, horizontal_count * sizeof *s->horizontals_sorted);
-    s->horizontal_order = carve(&p, horizontal_count * sizeof *s->horizontal_order);
-    if (light)
-        s->seams = carve(&p, (3 * edge_room + 1) * sizeof *s->seams);
     s->break_queue_capacity = edge_room;
     return 1;
 }

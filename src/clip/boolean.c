@@ -35,13 +35,13 @@
  *
  * This file loads the operands and runs the passes; the steps are in
  * boolean_pairs.c (the crossings of small inputs, pair by pair),
- * boolean_sweep.c (the sweeps), boolean_checkpoint.c (where a pass after
+ * boolean_prepare.c (a pass's arrays and orders), boolean_sweep.c (the
+ * sweeps), boolean_checkpoint.c (where a pass after
  * splits resumes), boolean_split.c (snap rounding and splitting),
  * boolean_assemble.c (rings and holes), boolean_sort.c, and
  * boolean_double.c (the double API); boolean_engine.h holds what they
  * share. */
 #include "boolean_engine.h"
-#include "../core/arena.h"
 
 int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
                          size_t size)
@@ -105,304 +105,6 @@ int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
 #define DENSE_VISITS 200
 #endif
 
-/* Forgets the arrays of the last pass; their memory is kept for the next. */
-static void sweep_reset(sweep *s)
-{
-    engine *g = s->engine;
-    void *mem = s->block, *mem_small = s->block_small;
-    size_t cap = s->block_size;
-    memset(s, 0, sizeof *s);
-    s->engine = g;
-    s->block = mem;
-    s->block_small = mem_small;
-    s->block_size = cap;
-}
-
-/* The arrays of a pass over g's edges, taken from arena (measuring, then
- * carving; light: the light sweep's too). */
-static void sweep_take_arrays(sweep *s, core_arena *arena, int light)
-{
-    size_t edge_room = s->engine->edge_count ? s->engine->edge_count : 1,
-           horizontal_count = s->engine->horizontal_count;
-    size_t sort_room = edge_room > horizontal_count ? edge_room : horizontal_count;
-    uint32_t **edge_lists[] = {&s->by_bottom,        &s->by_top,     &s->active,
-                               &s->next_active,      &s->starting,   &s->break_queue,
-                               &s->break_queue_next, &s->point_edges};
-    for (size_t i = 0; i < (light ? 8u : 7u); i++)
-        *edge_lists[i] = core_arena_take(arena, edge_room, sizeof(uint32_t));
-    s->run_x = core_arena_take(arena, edge_room, sizeof *s->run_x);
-    s->run_y = core_arena_take(arena, edge_room, sizeof *s->run_y);
-    s->winding_subject = core_arena_take(arena, edge_room, sizeof *s->winding_subject);
-    s->winding_clip = core_arena_take(arena, edge_room, sizeof *s->winding_clip);
-    s->x_current = core_arena_take(arena, edge_room, sizeof *s->x_current);
-    s->x_next = core_arena_take(arena, edge_room, sizeof *s->x_next);
-    s->scanlines = core_arena_take(arena, 2 * edge_room, sizeof *s->scanlines);
-    /* dirty positions: new edges and run breaks at points, queued run
-     * breaks, horizontal meets: each at most once per position */
-    s->dirty = core_arena_take(arena, 3 * edge_room, sizeof *s->dirty);
-    /* run_open, run_up, run_break, run_break_next in one block (cleared at
-     * once) */
-    s->run_open = core_arena_take(arena, 4 * edge_room, 1);
-    s->sort_scratch = core_arena_take(arena, sort_room, sizeof *s->sort_scratch);
-    s->sort_tmp = core_arena_take(arena, sort_room, sizeof *s->sort_tmp);
-    s->horizontals_sorted = core_arena_take(arena, horizontal_count, sizeof *s->horizontals_sorted);
-    s->horizontal_order = core_arena_take(arena, horizontal_count, sizeof *s->horizontal_order);
-    if (light)
-        s->seams = core_arena_take(arena, 3 * edge_room + 1, sizeof *s->seams);
-}
-
-/* The arrays of a pass over g's edges, carved from one block kept from pass
- * to pass (large blocks come fresh from the system, page by page, so fewer
- * and reused ones are much cheaper): 0 when out of memory. */
-static int sweep_alloc(sweep *s, int light)
-{
-    core_arena measure = core_arena_measuring();
-    sweep_take_arrays(s, &measure, light);
-    if (measure.failed)
-        return 0;
-    size_t need = measure.used;
-    /* (the next pass usually has a few more edges) */
-    if (need > s->block_size && core_arena_block(&s->block, &s->block_size, need + need / 8 + 2048,
-                                                 s->block_small) != CG_OK)
-        return 0;
-    core_arena carve = core_arena_on(s->block, s->block_size);
-    sweep_take_arrays(s, &carve, light);
-    size_t edge_room = s->engine->edge_count ? s->engine->edge_count : 1;
-    s->run_up = s->run_open + edge_room;
-    s->run_break = s->run_open + 2 * edge_room;
-    s->run_break_next = s->run_open + 3 * edge_room;
-    memset(s->run_open, 0, 4 * edge_room);
-    s->break_queue_capacity = edge_room;
-    return 1;
-}
-
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t p = *(const int64_t *)a, q = *(const int64_t *)b;
-    return (p > q) - (p < q);
-}
-
-/* What a pass leaves to the next: its orders of the edges and where its
- * edges went (boolean_apply_splits). */
-typedef struct carry {
-    uint32_t *by_bottom, *by_top, *map;
-    uint32_t *block_small; /* the caller's block of 3 * 64 they start in */
-    size_t edge_count, capacity; /* edges of the last pass (room for cap) */
-    size_t kept; /* of them, not split: now g->edges[0..kept) */
-    size_t horizontals_sorted; /* g->horizontals[0..horizontals_sorted) is in order */
-    int valid;
-    /* the last pass's scanlines and the distinct y of its split points
-     * (sorted), when they were few: the next pass's scanlines are the two
-     * merged (a split edge's pieces form a path from its bottom to its top,
-     * so every scanline stays one, and each split point's y becomes one) */
-    int64_t *scanlines, *split_ys;
-    size_t scanline_count, split_y_count, scanline_capacity, split_y_capacity;
-    int scanlines_valid;
-} carry;
-
-/* whether a goes before b (or ties) by (y_bottom, x_bottom), or by (y_top, x_top) when top */
-static inline int edge_before(const edge *a, const edge *b, int top)
-{
-    int64_t a1 = top ? a->y_top : a->y_bottom, b1 = top ? b->y_top : b->y_bottom;
-    if (a1 != b1)
-        return a1 < b1;
-    return (top ? a->x_top : a->x_bottom) <= (top ? b->x_top : b->x_bottom);
-}
-
-/* out = the edges kept (in their last order, renumbered) merged with the
- * pieces, sorted; tmp holds the pieces' order.  0 when the count is off. */
-static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, uint32_t *tmp,
-                       int top)
-{
-    engine *g = s->engine;
-    const edge *edges = g->edges;
-    size_t edge_count = g->edge_count, part_count = edge_count - c->kept, kept_count = 0;
-    for (size_t i = 0; i < c->edge_count; i++) {
-        uint32_t m = c->map[old[i]];
-        if (m != UINT32_MAX)
-            old[kept_count++] = m;
-    }
-    if (kept_count != c->kept)
-        return 0;
-    if (part_count) {
-        const edge *parts = &edges[c->kept];
-        if (!boolean_sort_two_keys(top ? &parts->y_top : &parts->y_bottom,
-                                   top ? &parts->x_top : &parts->x_bottom, sizeof(edge), part_count,
-                                   tmp, s->sort_scratch, s->sort_tmp))
-            return 0;
-        for (size_t i = 0; i < part_count; i++)
-            tmp[i] += (uint32_t)c->kept;
-    }
-    size_t i = 0, j = 0, k = 0, lg = 1;
-    while (((size_t)1 << lg) < kept_count)
-        lg++;
-    if (part_count * lg < kept_count) {
-        /* few pieces (a search each costs less than a look at each kept
-         * edge): the place of each among the kept edges by binary search,
-         * the kept edges copied in blocks between them */
-        for (; j < part_count; j++) {
-            const edge *p = &edges[tmp[j]];
-            size_t lo = i, hi = kept_count;
-            while (lo < hi) {
-                size_t mid = lo + (hi - lo) / 2;
-                if (edge_before(&edges[old[mid]], p, top))
-                    lo = mid + 1;
-                else
-                    hi = mid;
-            }
-            memcpy(out + k, old + i, (lo - i) * sizeof *out);
-            k += lo - i;
-            i = lo;
-            out[k++] = tmp[j];
-        }
-        memcpy(out + k, old + i, (kept_count - i) * sizeof *out);
-        return 1;
-    }
-    while (i < kept_count || j < part_count)
-        out[k++] =
-            j >= part_count || (i < kept_count && edge_before(&edges[old[i]], &edges[tmp[j]], top))
-                ? old[i++]
-                : tmp[j++];
-    return 1;
-}
-
-/* Sorts the edges by bottom and by top (from the last pass's orders when
- * there is one), the scanlines (both merged) and the horizontal edges: 0
- * when out of memory. */
-NOINLINE static int sweep_sort(sweep *s, carry *c)
-{
-    engine *g = s->engine;
-    size_t edge_count = g->edge_count;
-    keyval *scratch = s->sort_scratch, *tmp = s->sort_tmp;
-    /* edges by bottom and by top; the scanlines are both merged */
-    int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->starting, 0) &&
-                 merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
-    int from_last = sorted && c->scanlines_valid &&
-                    c->scanline_count + c->split_y_count <= 2 * (edge_count ? edge_count : 1);
-    if (!sorted)
-        sorted = !edge_count ||
-                 (boolean_sort_two_keys(&g->edges[0].y_bottom, &g->edges[0].x_bottom, sizeof(edge),
-                                        edge_count, s->by_bottom, scratch, tmp) &&
-                  boolean_sort_two_keys(&g->edges[0].y_top, &g->edges[0].x_top, sizeof(edge),
-                                        edge_count, s->by_top, scratch, tmp));
-    /* the scanlines: the two orders merged, each with its next distinct y
-     * at hand (INT64_MAX past its end; no y reaches it) */
-    const edge *edges = g->edges;
-    size_t u = 0, i = 0, j = 0, n = sorted && !from_last ? edge_count : 0;
-    if (from_last) {
-        /* the last pass's scanlines merged with its split points' y */
-        while (i < c->scanline_count || j < c->split_y_count) {
-            int64_t y = j == c->split_y_count ||
-                                (i < c->scanline_count && c->scanlines[i] <= c->split_ys[j])
-                            ? c->scanlines[i++]
-                            : c->split_ys[j++];
-            if (u == 0 || s->scanlines[u - 1] != y)
-                s->scanlines[u++] = y;
-        }
-        i = j = 0;
-    }
-    int64_t yb = n ? edges[s->by_bottom[0]].y_bottom : INT64_MAX,
-            yt = n ? edges[s->by_top[0]].y_top : INT64_MAX;
-    const uint32_t *bb = s->by_bottom, *bt = s->by_top;
-    int64_t *ys = s->scanlines;
-    for (;;) {
-        int64_t y = yb <= yt ? yb : yt;
-        if (y == INT64_MAX) /* (no y reaches it) */
-            break;
-        /* past the edges with this bottom, with this top: the next y is
-         * larger */
-        while (yb == y)
-            yb = ++i < n ? edges[bb[i]].y_bottom : INT64_MAX;
-        while (yt == y)
-            yt = ++j < n ? edges[bt[j]].y_top : INT64_MAX;
-        ys[u++] = y;
-    }
-    s->scanline_count = u;
-#ifdef CG_CLIP_CHECK_YS
-    if (from_last) {
-        size_t v = 0;
-        int64_t *all = malloc(2 * edge_count * sizeof *all);
-        for (size_t q = 0; q < edge_count; q++) {
-            all[v++] = edges[q].yb;
-            all[v++] = edges[q].yt;
-        }
-        qsort(all, v, sizeof *all, cmp_i64);
-        size_t w = 0;
-        for (size_t q = 0; q < v; q++)
-            if (!w || all[w - 1] != all[q])
-                all[w++] = all[q];
-        if (w != u || memcmp(all, s->ys, u * sizeof *all))
-            abort();
-        free(all);
-    }
-#endif
-    if (sorted && g->horizontal_count > 1 &&
-        !(c->valid && c->horizontals_sorted == g->horizontal_count)) {
-        sorted = boolean_sort_two_keys(&g->horizontals[0].y, &g->horizontals[0].x_left,
-                                       sizeof(horizontal_edge), g->horizontal_count,
-                                       s->horizontal_order, scratch, tmp);
-        if (sorted) {
-            for (size_t i = 0; i < g->horizontal_count; i++)
-                s->horizontals_sorted[i] = g->horizontals[s->horizontal_order[i]];
-            memcpy(g->horizontals, s->horizontals_sorted,
-                   g->horizontal_count * sizeof *g->horizontals);
-        }
-    }
-    c->horizontals_sorted = g->horizontal_count;
-    c->valid = 0;
-    return sorted;
-}
-
-/* Keeps the orders of this pass for the next one (before boolean_apply_splits). */
-static int carry_keep(carry *c, const sweep *s)
-{
-    size_t edge_count = s->engine->edge_count;
-    if (edge_count > c->capacity) {
-        size_t cap = edge_count + edge_count / 2;
-        if (c->by_bottom != c->block_small)
-            free(c->by_bottom); /* (the three arrays in one block) */
-        c->capacity = 0;
-        c->by_bottom = malloc(3 * cap * sizeof *c->by_bottom);
-        if (!c->by_bottom)
-            return 0;
-        c->by_top = c->by_bottom + cap;
-        c->map = c->by_top + cap;
-        c->capacity = cap;
-    }
-    memcpy(c->by_bottom, s->by_bottom, edge_count * sizeof *c->by_bottom);
-    memcpy(c->by_top, s->by_top, edge_count * sizeof *c->by_top);
-    c->edge_count = edge_count;
-    /* the scanlines and the split points' y, when these are few */
-    const engine *g = s->engine;
-    c->scanlines_valid = 0;
-    if (g->split_count > edge_count / 16)
-        return 1;
-    if (s->scanline_count > c->scanline_capacity) {
-        free(c->scanlines);
-        c->scanline_capacity = 0;
-        c->scanlines = malloc((s->scanline_count + s->scanline_count / 2) * sizeof *c->scanlines);
-        if (!c->scanlines)
-            return 0;
-        c->scanline_capacity = s->scanline_count + s->scanline_count / 2;
-    }
-    if (g->split_count > c->split_y_capacity) {
-        free(c->split_ys);
-        c->split_y_capacity = 0;
-        c->split_ys = malloc(g->split_count * sizeof *c->split_ys);
-        if (!c->split_ys)
-            return 0;
-        c->split_y_capacity = g->split_count;
-    }
-    memcpy(c->scanlines, s->scanlines, s->scanline_count * sizeof *c->scanlines);
-    c->scanline_count = s->scanline_count;
-    for (size_t i = 0; i < g->split_count; i++)
-        c->split_ys[i] = g->splits[i].y;
-    qsort(c->split_ys, g->split_count, sizeof *c->split_ys, cmp_i64);
-    c->split_y_count = g->split_count;
-    c->scanlines_valid = 1;
-    return 1;
-}
-
 static int cmp_band(const void *a, const void *b)
 {
     const int64_t *p = a, *q = b;
@@ -440,48 +142,310 @@ static int dense_crossings(const engine *g)
     return ((double)(x1 - x0) + 1) * ((double)(y1 - y0) + 1) < DENSE_AREA * (double)g->split_count;
 }
 
+/* What the passes hand on to each other. */
+typedef struct passes {
+    engine *g;
+    sweep s; /* the sweep of the current pass */
+    carry c; /* the last pass's orders and where its edges went */
+    ck_log logs[2]; /* this pass's checkpoints, the last pass's */
+    int current_log; /* this pass's, in logs[] */
+    int can_resume; /* the next pass may resume from logs[current_log] */
+    int snapped; /* a pass snapped completely (once is enough) */
+    size_t visits; /* active edges looked at by the last full sweep */
+    size_t swept_edges; /* its edges */
+    /* the y ranges of the edges split by the last pass (merged) */
+    int64_t (*bands)[2];
+    size_t band_count;
+    /* the first pass's pieces (when it classified), and the ranges of them
+     * the next pass takes */
+    piece *saved;
+    size_t saved_capacity;
+    size_t (*ranges)[2];
+    /* small inputs: the sweep's block (and the assembly's, the splits') on
+     * the stack, and the orders kept between passes */
+    max_align_t block_small[8192 / sizeof(max_align_t)];
+    uint32_t carry_small[3 * 64];
+} passes;
+
+static void passes_init(passes *p, engine *g)
+{
+    memset(p, 0, offsetof(passes, block_small));
+    p->g = g;
+    p->s.engine = g;
+    p->s.block = p->s.block_small = p->block_small;
+    p->s.block_size = sizeof p->block_small;
+    p->c.block_small = p->carry_small;
+    p->c.by_bottom = p->carry_small;
+    p->c.by_top = p->carry_small + 64;
+    p->c.map = p->carry_small + 128;
+    p->c.capacity = 64;
+}
+
+static void passes_free(passes *p)
+{
+    engine *g = p->g;
+    sweep *s = &p->s;
+    if (s->block != s->block_small) {
+        if (g->workspace)
+            g->workspace->block = keep_larger(g->workspace->block, &g->workspace->block_size,
+                                              s->block, s->block_size);
+        else
+            free(s->block);
+    }
+    for (int k = 0; k < 2; k++) {
+        free(p->logs[k].checkpoints);
+        free(p->logs[k].edges);
+    }
+    free(p->saved);
+    free(p->ranges);
+    free(p->bands);
+    if (p->c.by_bottom != p->c.block_small)
+        free(p->c.by_bottom); /* (and by_top, map) */
+    free(p->c.scanlines);
+    free(p->c.split_ys);
+}
+
+/* What a step of a pass leads to. */
+enum { PASS_FAILED, PASS_DONE, PASS_GO_ON };
+
+/* The light sweep, and the assembly when it finds the pass final
+ * (PASS_DONE, *st set); PASS_GO_ON when something needs a split (the full
+ * sweep then runs), PASS_FAILED when out of memory. */
+static int light_pass(passes *p, cg_polygon_set64 *result, cg_status *st)
+{
+    engine *g = p->g;
+    sweep *s = &p->s;
+    g->piece_count = 0;
+    s->classify = 1;
+    s->changed = 0;
+    int r = boolean_light_sweep(s);
+    if (!r)
+        return PASS_FAILED;
+    if (r == 1) {
+        *st = boolean_assemble(g, result, &s->block, &s->block_size, s->block_small) ? CG_OK
+                                                                                     : CG_ENOMEM;
+        return PASS_DONE;
+    }
+    /* something to split: start over with the full sweep */
+    size_t edge_room = g->edge_count ? g->edge_count : 1;
+    memset(s->run_open, 0, 4 * edge_room); /* and run_up, run_break, run_break_next */
+    g->split_count = 0;
+    return PASS_GO_ON;
+}
+
+/* The full sweep set to start at the last pass's checkpoint below its
+ * lowest split edge, with the pieces emitted below it (kept in the engine,
+ * or, when the first pass's pieces are saved, taken as a range of them). */
+static void resume_from_checkpoint(passes *p)
+{
+    engine *g = p->g;
+    sweep *s = &p->s;
+    const ck_log *last = &p->logs[p->current_log ^ 1];
+    s->prev_map = p->c.map;
+    s->prev_edge_count = p->c.edge_count;
+    s->prev_checkpoint = boolean_ck_load(s, last, 0, p->bands[0][0]);
+    size_t below = s->prev_checkpoint ? last->checkpoints[s->prev_checkpoint - 1].piece_count : 0;
+    if (!p->saved) {
+        g->piece_count = below;
+        return;
+    }
+    /* its pieces stay where they are; this pass emits only those of the
+     * bands, and notes the ranges it takes */
+    s->prev_log = last;
+    s->bands = (const int64_t(*)[2])p->bands;
+    s->band_count = p->band_count;
+    s->taken_ranges = p->ranges;
+    if (below) {
+        p->ranges[0][0] = 0;
+        p->ranges[0][1] = below;
+        s->taken_count = 1;
+    }
+}
+
+/* The pieces of the saved ranges taken, then this pass's after them, as the
+ * engine's pieces: 0 when out of memory. */
+static int take_saved_pieces(passes *p)
+{
+    engine *g = p->g;
+    const sweep *s = &p->s;
+    piece *saved = p->saved;
+    size_t w = 0;
+    for (size_t k = 0; k < s->taken_count; k++) {
+        memmove(saved + w, saved + p->ranges[k][0],
+                (p->ranges[k][1] - p->ranges[k][0]) * sizeof *saved);
+        w += p->ranges[k][1] - p->ranges[k][0];
+    }
+    if (w + g->piece_count > p->saved_capacity) {
+        piece *q = realloc(saved, (w + g->piece_count) * sizeof *q);
+        if (!q)
+            return 0;
+        p->saved = saved = q;
+        p->saved_capacity = w + g->piece_count;
+    }
+    if (g->piece_count)
+        memcpy(saved + w, g->pieces, g->piece_count * sizeof *saved);
+    if (g->pieces != g->pieces_small)
+        free(g->pieces);
+    g->pieces = saved;
+    g->piece_capacity = p->saved_capacity;
+    g->piece_count += w;
+    p->saved = NULL;
+    return 1;
+}
+
+/* The y ranges of the edges this pass split, merged into bands (one band
+ * from the lowest bottom when the pass stopped classifying: only that is
+ * of use then); after the first pass, its pieces saved for the next to
+ * take the ranges between the bands.  0 when out of memory. */
+static int note_split_bands(passes *p, int pass)
+{
+    engine *g = p->g;
+    const sweep *s = &p->s;
+    size_t nb = s->classify ? g->split_count : 1;
+    int64_t(*bands)[2] = malloc(nb * sizeof *bands);
+    if (!bands)
+        return 0;
+    p->bands = bands;
+    bands[0][0] = INT64_MAX;
+    bands[0][1] = INT64_MIN;
+    for (size_t i = 0; i < g->split_count; i++) {
+        const edge *e = &g->edges[g->splits[i].edge];
+        size_t k = nb == 1 ? 0 : i;
+        bands[k][0] = nb == 1 && bands[0][0] < e->y_bottom ? bands[0][0] : e->y_bottom;
+        bands[k][1] = nb == 1 && bands[0][1] > e->y_top ? bands[0][1] : e->y_top;
+    }
+    qsort(bands, nb, sizeof *bands, cmp_band);
+    size_t band_count = 0;
+    for (size_t i = 0; i < nb; i++) {
+        if (band_count && bands[i][0] <= bands[band_count - 1][1]) {
+            if (bands[i][1] > bands[band_count - 1][1])
+                bands[band_count - 1][1] = bands[i][1];
+        } else {
+            bands[band_count][0] = bands[i][0];
+            bands[band_count][1] = bands[i][1];
+            band_count++;
+        }
+    }
+    p->band_count = band_count;
+    p->can_resume = 1;
+    if (pass != 0 || !s->classify || !g->piece_count)
+        return 1;
+    p->ranges = malloc((band_count + 1) * sizeof *p->ranges);
+    if (p->ranges && g->pieces == g->pieces_small) { /* (saved is freed) */
+        piece *q = malloc(g->piece_capacity * sizeof *q);
+        if (q)
+            memcpy(q, g->pieces, g->piece_count * sizeof *q);
+        else {
+            free(p->ranges);
+            p->ranges = NULL;
+        }
+        g->pieces = q ? q : g->pieces;
+    }
+    if (p->ranges) {
+        p->saved = g->pieces; /* (the next pass starts a new array) */
+        p->saved_capacity = g->piece_capacity;
+        g->pieces = NULL;
+        g->piece_capacity = 0;
+        g->piece_count = 0;
+    }
+    return 1;
+}
+
+/* One full pass (after the light sweep, when that was tried): PASS_DONE
+ * when it was final (the result assembled, *st set), PASS_GO_ON when it
+ * split edges (the next pass verifies), PASS_FAILED when out of memory or
+ * (with *st set) out of range. */
+static int full_pass(passes *p, int pass, int light, cg_polygon_set64 *result, cg_status *st)
+{
+    engine *g = p->g;
+    sweep *s = &p->s;
+    g->piece_count = 0;
+    s->classify = 1;
+    s->changed = 0;
+    /* later passes round on the pieces themselves, which settles whatever
+     * the input-line rounding could not */
+    s->use_input_lines = pass < 8;
+    s->record_meets = pass == 0;
+    if (p->can_resume && !light && p->band_count)
+        resume_from_checkpoint(p);
+    ck_log *log = &p->logs[p->current_log];
+    log->checkpoint_count = log->edge_count = 0;
+    log->budget = g->edge_count / 2 + 256; /* (a small block: no fresh pages) */
+    /* (later passes are nearly always the last; small inputs gain less
+     * than the checkpoints cost) */
+    s->log = pass == 0 && g->edge_count >= 128 ? log : NULL;
+    s->checkpoint_visits = 0;
+    int r = boolean_run_sweep(s);
+    if (r <= 0) {
+        if (r < 0)
+            *st = CG_ERANGE;
+        return PASS_FAILED;
+    }
+    /* (a pass that started at a checkpoint looked at fewer edges than a
+     * whole one would have: the last count stands unless larger) */
+    if (!s->start_scanline || s->visits > p->visits)
+        p->visits = s->visits;
+    p->swept_edges = g->edge_count;
+    if (p->saved && s->prev_log && s->taken_count && !take_saved_pieces(p))
+        return PASS_FAILED;
+    free(p->saved);
+    p->saved = NULL;
+    if (!s->changed) {
+        *st = boolean_assemble(g, result, &s->block, &s->block_size, s->block_small) ? CG_OK
+                                                                                     : CG_ENOMEM;
+        return PASS_DONE;
+    }
+    int snap_now = !p->snapped && (s->visits >= DENSE_VISITS * p->swept_edges ||
+                                   (pass == 0 && dense_crossings(g)));
+    if (pass >= 1 && !snap_now && !boolean_add_hot_pixel_splits(g, 0))
+        return PASS_FAILED;
+    free(p->bands);
+    p->bands = NULL;
+    p->band_count = 0;
+    p->can_resume = 0;
+    log->end_piece_count = g->piece_count;
+    free(p->ranges);
+    p->ranges = NULL;
+    /* (else there is nothing to resume from; nor after complete snap
+     * rounding, which splits nearly every edge) */
+    if (log->checkpoint_count && !snap_now && !note_split_bands(p, pass))
+        return PASS_FAILED;
+    p->current_log ^= 1;
+    carry *c = &p->c;
+    if (!boolean_carry_keep(c, s) ||
+        !(snap_now ? boolean_snap_complete(g, c->map, &c->kept, s->block, s->block_size)
+                   : boolean_apply_splits(g, c->map, &c->kept, s->block, s->block_size)))
+        return PASS_FAILED;
+    if (snap_now) {
+        c->horizontals_sorted = 0; /* (its horizontal edges are put in order again) */
+        p->snapped = 1;
+    }
+    c->valid = 1;
+    if (g->edge_count > UINT32_MAX / 2) {
+        *st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
+        return PASS_FAILED;
+    }
+    return PASS_GO_ON;
+}
+
 static cg_status run_passes(engine *g, cg_polygon_set64 *result)
 {
-    sweep s;
-    memset(&s, 0, sizeof s);
-    s.engine = g;
-    /* small inputs: the sweep's block (and the assembly's, the splits')
-     * on the stack, and the orders kept between passes */
-    max_align_t mem_small[8192 / sizeof(max_align_t)];
-    s.block = s.block_small = mem_small;
-    s.block_size = sizeof mem_small;
-    uint32_t carry_small[3 * 64];
+    passes state, *p = &state; /* (on the stack: small inputs need no allocation) */
+    passes_init(p, g);
     cg_status st = CG_ENOMEM;
-    size_t visits = 0, swept_edges = 0; /* of the last full sweep */
-    carry c;
-    memset(&c, 0, sizeof c);
-    c.block_small = carry_small;
-    c.by_bottom = carry_small;
-    c.by_top = carry_small + 64;
-    c.map = carry_small + 128;
-    c.capacity = 64;
-    ck_log logs[2]; /* this pass's checkpoints, the last pass's */
-    memset(logs, 0, sizeof logs);
-    int current_log = 0, can_resume = 0;
-    /* the y ranges of the edges split by the last pass (merged), and its
-     * pieces */
-    int64_t(*bands)[2] = NULL;
-    size_t band_count = 0;
-    piece *saved = NULL; /* the first pass's pieces (when it classified) */
-    size_t saved_capacity = 0, (*ranges)[2] = NULL;
+    sweep *s = &p->s;
     int paired = g->edge_count + g->horizontal_count <= PAIRS_MAX_EDGES;
-    int snapped = 0; /* a pass snapped completely (once is enough) */
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
         if (!boolean_add_pair_splits(g) ||
-            !boolean_apply_splits(g, map, &kept, s.block, s.block_size))
+            !boolean_apply_splits(g, map, &kept, s->block, s->block_size))
             return CG_ENOMEM;
     }
-    if (g->workspace &&
-        g->workspace->block_size > s.block_size) { /* (the workspace's block, taken) */
-        s.block = g->workspace->block;
-        s.block_size = g->workspace->block_size;
+    if (g->workspace && g->workspace->block_size > s->block_size) {
+        /* (the workspace's block, taken) */
+        s->block = g->workspace->block;
+        s->block_size = g->workspace->block_size;
         g->workspace->block = NULL;
         g->workspace->block_size = 0;
     }
@@ -494,203 +458,17 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
         /* After the first pass, most passes find nothing more to split.
          * The light sweep costs about LIGHT_COST active edges' worth of work
          * per edge; it is tried first when the full sweep was dearer. */
-        int light = pass >= 1 && visits > LIGHT_COST * swept_edges;
-        sweep_reset(&s);
-        if (!sweep_alloc(&s, light) || !sweep_sort(&s, &c))
+        int light = pass >= 1 && p->visits > LIGHT_COST * p->swept_edges;
+        boolean_sweep_reset(s);
+        if (!boolean_sweep_alloc(s, light) || !boolean_sweep_sort(s, &p->c))
             break;
-        if (light) {
-            g->piece_count = 0;
-            s.classify = 1;
-            s.changed = 0;
-            int r = boolean_light_sweep(&s);
-            if (!r)
-                break;
-            if (r == 1) {
-                st = boolean_assemble(g, result, &s.block, &s.block_size, s.block_small)
-                         ? CG_OK
-                         : CG_ENOMEM;
-                break;
-            }
-            /* something to split: start over with the full sweep */
-            memset(s.run_open, 0,
-                   4 * (g->edge_count ? g->edge_count
-                                      : 1)); /* and run_up, run_break, run_break_next */
-            g->split_count = 0;
-        }
-        g->piece_count = 0;
-        s.classify = 1;
-        s.changed = 0;
-        /* later passes round on the pieces themselves, which settles
-         * whatever the input-line rounding could not */
-        s.use_input_lines = pass < 8;
-        s.record_meets = pass == 0;
-        if (can_resume && !light && band_count) {
-            s.prev_map = c.map;
-            s.prev_edge_count = c.edge_count;
-            s.prev_checkpoint = boolean_ck_load(&s, &logs[current_log ^ 1], 0, bands[0][0]);
-            size_t below =
-                s.prev_checkpoint
-                    ? logs[current_log ^ 1].checkpoints[s.prev_checkpoint - 1].piece_count
-                    : 0;
-            if (saved) {
-                /* its pieces stay where they are; this pass emits only
-                 * those of the bands, and notes the ranges it takes */
-                s.prev_log = &logs[current_log ^ 1];
-                s.bands = (const int64_t(*)[2])bands;
-                s.band_count = band_count;
-                s.taken_ranges = ranges;
-                if (below) {
-                    ranges[0][0] = 0;
-                    ranges[0][1] = below;
-                    s.taken_count = 1;
-                }
-            } else {
-                g->piece_count = below;
-            }
-        }
-        ck_log *log = &logs[current_log];
-        log->checkpoint_count = log->edge_count = 0;
-        log->budget = g->edge_count / 2 + 256; /* (a small block: no fresh pages) */
-        /* (later passes are nearly always the last; small inputs gain
-         * less than the checkpoints cost) */
-        s.log = pass == 0 && g->edge_count >= 128 ? log : NULL;
-        s.checkpoint_visits = 0;
-        int r = boolean_run_sweep(&s);
-        if (r <= 0) {
-            if (r < 0)
-                st = CG_ERANGE;
+        int next = light ? light_pass(p, result, &st) : PASS_GO_ON;
+        if (next == PASS_GO_ON)
+            next = full_pass(p, pass, light, result, &st);
+        if (next != PASS_GO_ON)
             break;
-        }
-        /* (a pass that started at a checkpoint looked at fewer edges than a
-         * whole one would have: the last count stands unless larger) */
-        if (!s.start_scanline || s.visits > visits)
-            visits = s.visits;
-        swept_edges = g->edge_count;
-        if (saved && s.prev_log && s.taken_count) {
-            /* the pieces taken, then this pass's */
-            size_t w = 0;
-            for (size_t k = 0; k < s.taken_count; k++) {
-                memmove(saved + w, saved + ranges[k][0],
-                        (ranges[k][1] - ranges[k][0]) * sizeof *saved);
-                w += ranges[k][1] - ranges[k][0];
-            }
-            if (w + g->piece_count > saved_capacity) {
-                piece *q = realloc(saved, (w + g->piece_count) * sizeof *q);
-                if (!q)
-                    break;
-                saved = q;
-                saved_capacity = w + g->piece_count;
-            }
-            if (g->piece_count)
-                memcpy(saved + w, g->pieces, g->piece_count * sizeof *saved);
-            if (g->pieces != g->pieces_small)
-                free(g->pieces);
-            g->pieces = saved;
-            g->piece_capacity = saved_capacity;
-            g->piece_count += w;
-            saved = NULL;
-        }
-        free(saved);
-        saved = NULL;
-        if (!s.changed) {
-            st = boolean_assemble(g, result, &s.block, &s.block_size, s.block_small) ? CG_OK
-                                                                                     : CG_ENOMEM;
-            break;
-        }
-        int snap_now = !snapped && (s.visits >= DENSE_VISITS * swept_edges ||
-                                    (pass == 0 && dense_crossings(g)));
-        if (pass >= 1 && !snap_now && !boolean_add_hot_pixel_splits(g, 0))
-            break;
-        free(bands);
-        bands = NULL;
-        band_count = 0;
-        can_resume = 0;
-        log->end_piece_count = g->piece_count;
-        free(ranges);
-        ranges = NULL;
-        /* (else there is nothing to resume from; nor after complete snap
-         * rounding, which splits nearly every edge) */
-        if (log->checkpoint_count && !snap_now) {
-            /* (when this pass stopped classifying, only the lowest bottom is
-             * of use: one band) */
-            size_t nb = s.classify ? g->split_count : 1;
-            bands = malloc(nb * sizeof *bands);
-            if (!bands)
-                break;
-            bands[0][0] = INT64_MAX;
-            bands[0][1] = INT64_MIN;
-            for (size_t i = 0; i < g->split_count; i++) {
-                const edge *e = &g->edges[g->splits[i].edge];
-                size_t k = nb == 1 ? 0 : i;
-                bands[k][0] = nb == 1 && bands[0][0] < e->y_bottom ? bands[0][0] : e->y_bottom;
-                bands[k][1] = nb == 1 && bands[0][1] > e->y_top ? bands[0][1] : e->y_top;
-            }
-            qsort(bands, nb, sizeof *bands, cmp_band);
-            for (size_t i = 0; i < nb; i++) {
-                if (band_count && bands[i][0] <= bands[band_count - 1][1]) {
-                    if (bands[i][1] > bands[band_count - 1][1])
-                        bands[band_count - 1][1] = bands[i][1];
-                } else {
-                    bands[band_count][0] = bands[i][0];
-                    bands[band_count][1] = bands[i][1];
-                    band_count++;
-                }
-            }
-            can_resume = 1;
-            if (pass == 0 && s.classify && g->piece_count) {
-                ranges = malloc((band_count + 1) * sizeof *ranges);
-                if (ranges && g->pieces == g->pieces_small) { /* (saved is freed) */
-                    piece *q = malloc(g->piece_capacity * sizeof *q);
-                    if (q)
-                        memcpy(q, g->pieces, g->piece_count * sizeof *q);
-                    else {
-                        free(ranges);
-                        ranges = NULL;
-                    }
-                    g->pieces = q ? q : g->pieces;
-                }
-                if (ranges) {
-                    saved = g->pieces; /* (the next pass starts a new array) */
-                    saved_capacity = g->piece_capacity;
-                    g->pieces = NULL;
-                    g->piece_capacity = 0;
-                    g->piece_count = 0;
-                }
-            }
-        }
-        current_log ^= 1;
-        if (!carry_keep(&c, &s) ||
-            !(snap_now ? boolean_snap_complete(g, c.map, &c.kept, s.block, s.block_size)
-                       : boolean_apply_splits(g, c.map, &c.kept, s.block, s.block_size)))
-            break;
-        if (snap_now) {
-            c.horizontals_sorted = 0; /* (its horizontal edges are put in order again) */
-            snapped = 1;
-        }
-        c.valid = 1;
-        if (g->edge_count > UINT32_MAX / 2) {
-            st = CG_ERANGE; /* too many pieces for 32-bit edge numbers */
-            break;
-        }
     }
-    if (s.block != s.block_small) {
-        if (g->workspace)
-            g->workspace->block =
-                keep_larger(g->workspace->block, &g->workspace->block_size, s.block, s.block_size);
-        else
-            free(s.block);
-    }
-    for (int k = 0; k < 2; k++) {
-        free(logs[k].checkpoints);
-        free(logs[k].edges);
-    }
-    free(saved);
-    free(ranges);
-    free(bands);
-    if (c.by_bottom != c.block_small)
-        free(c.by_bottom); /* (and by_top, map) */
-    free(c.scanlines);
-    free(c.split_ys);
+    passes_free(p);
     return st;
 }
 

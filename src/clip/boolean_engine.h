@@ -337,6 +337,39 @@ typedef struct sweep {
     size_t taken_count;
 } sweep;
 
+/* ---- a pass's arrays and orders (boolean_prepare.c) ---------------------- */
+
+/* What a pass leaves to the next: its orders of the edges and where its
+ * edges went (boolean_apply_splits). */
+typedef struct carry {
+    uint32_t *by_bottom, *by_top, *map;
+    uint32_t *block_small; /* the caller's block of 3 * 64 they start in */
+    size_t edge_count, capacity; /* edges of the last pass (room for cap) */
+    size_t kept; /* of them, not split: now g->edges[0..kept) */
+    size_t horizontals_sorted; /* g->horizontals[0..horizontals_sorted) is in order */
+    int valid;
+    /* the last pass's scanlines and the distinct y of its split points
+     * (sorted), when they were few: the next pass's scanlines are the two
+     * merged (a split edge's pieces form a path from its bottom to its top,
+     * so every scanline stays one, and each split point's y becomes one) */
+    int64_t *scanlines, *split_ys;
+    size_t scanline_count, split_y_count, scanline_capacity, split_y_capacity;
+    int scanlines_valid;
+} carry;
+
+/* Forgets the arrays of the last pass; their memory is kept for the next. */
+void boolean_sweep_reset(sweep *s);
+/* The arrays of a pass over the engine's edges (the light sweep's too when
+ * `light`), carved from the sweep's block: 0 when out of memory. */
+int boolean_sweep_alloc(sweep *s, int light);
+/* Sorts the edges by bottom and by top (from the last pass's orders in c
+ * when there are some), the scanlines and the horizontal edges: 0 when out
+ * of memory. */
+int boolean_sweep_sort(sweep *s, carry *c);
+/* Keeps the orders of this pass in c for the next one (before
+ * boolean_apply_splits): 0 when out of memory. */
+int boolean_carry_keep(carry *c, const sweep *s);
+
 /* ---- checkpoints (boolean_checkpoint.c) ------------------------------------ */
 
 /* Checkpoints.  A full pass that splits edges is repeated, but below the

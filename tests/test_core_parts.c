@@ -1,12 +1,15 @@
 /* The shared parts of src/core: the growable array's growth policy, its
  * refusal of sizes that overflow, and the typed array's macros; the worker
  * pool's blocks, each claimed exactly once, on any number of workers, with
- * threads that fail to start or wake late. */
+ * threads that fail to start or wake late; the arena's measuring and
+ * carving, its refusals, and its blocks. */
+#include "../src/core/arena.h"
 #include "../src/core/array.h"
 #include "../src/core/worker_pool.h"
 #include "check.h"
 
 #include <stdint.h>
+#include <string.h>
 #include <time.h>
 
 static void growth_policy(void)
@@ -263,6 +266,102 @@ static void worker_pool_late_threads(void)
     core_worker_pool_free(pool);
 }
 
+/* A sequence of takes (sizes from a small generator, some empty, some of
+ * odd sizes) measured, then carved from a block of exactly that size: every
+ * block aligned, inside the allocation, after the one before without
+ * overlap, and the carving uses what the measuring said. */
+static uint64_t arena_rng = 0x243f6a8885a308d3u;
+static size_t arena_random(size_t limit)
+{
+    arena_rng ^= arena_rng << 13;
+    arena_rng ^= arena_rng >> 7;
+    arena_rng ^= arena_rng << 17;
+    return (size_t)(arena_rng % limit);
+}
+
+static void arena_measure_then_carve(void)
+{
+    for (int round = 0; round < 200; round++) {
+        size_t takes = 1 + arena_random(24), count[24], size[24];
+        for (size_t k = 0; k < takes; k++) {
+            count[k] = arena_random(5) == 0 ? 0 : arena_random(1000);
+            size[k] = 1 + arena_random(40);
+        }
+        core_arena measure = core_arena_measuring();
+        size_t bytes = 0;
+        for (size_t k = 0; k < takes; k++) {
+            CHECK(core_arena_take(&measure, count[k], size[k]) == NULL);
+            bytes += (count[k] * size[k] + CORE_ARENA_ALIGN - 1) / CORE_ARENA_ALIGN *
+                     CORE_ARENA_ALIGN;
+        }
+        CHECK(!measure.failed);
+        CHECK_EQ_INT(measure.used, bytes);
+        void *block = NULL;
+        size_t block_size = 0;
+        CHECK(core_arena_block(&block, &block_size, measure.used, NULL) == CG_OK);
+        CHECK(block_size >= measure.used);
+        core_arena carve = core_arena_on(block, measure.used);
+        char *end = block;
+        int aligned = 1, ordered = 1, inside = 1;
+        for (size_t k = 0; k < takes; k++) {
+            char *p = core_arena_take(&carve, count[k], size[k]);
+            aligned &= (uintptr_t)(p - (char *)block) % CORE_ARENA_ALIGN == 0;
+            ordered &= p >= end;
+            inside &= p + count[k] * size[k] <= (char *)block + measure.used;
+            memset(p, (int)k, count[k] * size[k]); /* (the sanitizer build checks the room) */
+            end = p + count[k] * size[k];
+        }
+        CHECK(aligned && ordered && inside);
+        CHECK(!carve.failed);
+        CHECK_EQ_INT(carve.used, measure.used);
+        free(block);
+    }
+}
+
+static void arena_refusals(void)
+{
+    char room[64] = {0};
+    core_arena arena = core_arena_on(room, sizeof room);
+    CHECK(core_arena_take(&arena, 3, 8) == room);
+    CHECK_EQ_INT(arena.used, 32);
+    CHECK(core_arena_take(&arena, 0, 8) == room + 32 && arena.used == 32);
+    /* more than is left: refused, nothing taken */
+    CHECK(core_arena_take(&arena, 33, 1) == NULL && arena.failed);
+    CHECK_EQ_INT(arena.used, 32);
+    arena.failed = 0;
+    CHECK(core_arena_take(&arena, 32, 1) == room + 32 && !arena.failed);
+    CHECK(core_arena_take(&arena, 1, 1) == NULL && arena.failed);
+    /* sizes that overflow a size_t, measured or carved */
+    core_arena measure = core_arena_measuring();
+    CHECK(core_arena_take(&measure, SIZE_MAX / 2 + 1, 2) == NULL && measure.failed);
+    measure = core_arena_measuring();
+    CHECK(core_arena_take(&measure, SIZE_MAX - 3, 1) == NULL && measure.failed);
+    measure = core_arena_measuring();
+    core_arena_take(&measure, SIZE_MAX / 2, 1);
+    CHECK(!measure.failed);
+    core_arena_take(&measure, SIZE_MAX / 2, 1); /* (the total overflows) */
+    CHECK(measure.failed);
+}
+
+static void arena_blocks(void)
+{
+    char stack[128] = {0};
+    void *block = stack;
+    size_t size = sizeof stack;
+    CHECK(core_arena_block(&block, &size, 100, stack) == CG_OK);
+    CHECK(block == stack && size == sizeof stack); /* room enough: kept */
+    CHECK(core_arena_block(&block, &size, 1000, stack) == CG_OK); /* the stack is not freed */
+    CHECK(block != stack && size == 1000);
+    memset(block, 1, 1000);
+    CHECK(core_arena_block(&block, &size, 4000, stack) == CG_OK);
+    CHECK(size == 4000);
+    memset(block, 2, 4000);
+    CHECK(core_arena_block(&block, &size, SIZE_MAX, stack) == CG_ENOMEM);
+    CHECK(block == NULL && size == 0);
+    CHECK(core_arena_block(&block, &size, 0, stack) == CG_OK && block != NULL);
+    free(block);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -272,5 +371,8 @@ int main(int argc, char **argv)
     CHECK_GROUP(worker_pool_claims);
     CHECK_GROUP(worker_pool_failed_threads);
     CHECK_GROUP(worker_pool_late_threads);
+    CHECK_GROUP(arena_measure_then_carve);
+    CHECK_GROUP(arena_refusals);
+    CHECK_GROUP(arena_blocks);
     return check_finish();
 }

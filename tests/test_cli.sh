@@ -78,6 +78,26 @@ done
 for action in line polygon boolean; do
   grep -q "^Options of cg clip $action:" "$work/out" && pass || fail "help clip: no options of $action"
 done
+# ---- the readers grow as far as their input goes: a draw script and a WKT
+# file padded past their first blocks (many lines, long lines, many words)
+# give the same results as the compact ones.
+awk 'BEGIN { printf "size 64 48\ncolor red\npolygon"; for (i = 0; i < 40; i++) {
+             a = 6.283185307 * i / 40; printf " %.3f %.3f", 32 + 20 * cos(a), 24 + 18 * sin(a) }
+             print "" }' > "$work/compact.txt"
+{ for i in $(seq 1 3000); do echo "# padding line $i, to make the script long"; done
+  cat "$work/compact.txt"; } > "$work/padded.txt"
+expect 0 "compact script" "$cg" draw "$work/compact.txt" -o "$work/compact.ppm"
+expect 0 "padded script" "$cg" draw "$work/padded.txt" -o "$work/padded.ppm"
+cmp -s "$work/compact.ppm" "$work/padded.ppm" && pass || fail "a long script drew another picture"
+awk 'BEGIN { printf "POLYGON(("; for (i = 0; i < 3000; i++) { a = 6.283185307 * i / 3000
+             printf "%.9f %.9f, ", 10 * cos(a), 10 * sin(a) } print "10 0))" }' > "$work/big.wkt"
+{ head -c 70000 /dev/zero | tr '\0' ' '; cat "$work/big.wkt"; } > "$work/padded.wkt"
+expect 0 "big WKT" "$cg" clip boolean union "$work/big.wkt" "$src/tests/fuzz/corpus/wkt/empty.wkt"
+cp "$work/out" "$work/big.out"
+[ "$(tr -cd ',' < "$work/big.out" | wc -c)" -ge 2900 ] && pass || fail "the big ring lost its points"
+expect 0 "padded WKT" "$cg" clip boolean union "$work/padded.wkt" "$src/tests/fuzz/corpus/wkt/empty.wkt"
+cmp -s "$work/out" "$work/big.out" && pass || fail "padding changed the WKT result"
+
 # Every option `cg help` lists is one the command knows (the help and the
 # parser read the same table): given alone, none is an unknown option.
 listed=0

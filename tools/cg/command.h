@@ -1,6 +1,7 @@
-/* One subcommand of the cg tool.  Each tools/cg/cmd_<name>.c defines
- * `const cg_command cg_command_<name>`; the build lists them by file name
- * (cmake/registry.cmake), so adding a subcommand touches no shared file. */
+/* One subcommand of the cg tool.  Each tools/cg/commands/cmd_<name>.c (and
+ * gallery/cmd_demo.c) defines `const cg_command cg_command_<name>`; the
+ * build lists them by file name (cmake/registry.cmake), so adding a
+ * subcommand touches no shared file.  Its options are tables of options.h. */
 #ifndef CG_TOOL_COMMAND_H
 #define CG_TOOL_COMMAND_H
 

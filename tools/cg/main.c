@@ -1,4 +1,5 @@
-/* The cg command: dispatches to one subcommand per tools/cg/cmd_<name>.c. */
+/* The cg command: dispatches to one subcommand per tools/cg/commands/cmd_<name>.c
+ * (and gallery/cmd_demo.c); `cg help NAME` prints its usage and options. */
 #include "cg/core.h"
 #include "cli.h"
 #include "command.h"

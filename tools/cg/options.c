@@ -163,6 +163,9 @@ int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
                                    argument);
         }
     }
+    if (positional_count < syntax->min_positionals)
+        return cli_usage_error(command, "%s", syntax->too_few ? syntax->too_few
+                                                              : "too few arguments");
     if (count)
         *count = positional_count;
     return CLI_OK;
@@ -171,6 +174,26 @@ int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
 int cli_given(const cli_option *option, const void *arguments)
 {
     return option->given && *MEMBER(const int, arguments, option->given - 1) > 0;
+}
+
+int cli_run_action(const char *command, int argc, char **argv, const cli_action *actions,
+                   size_t count, const char *missing, const char *unknown)
+{
+    for (size_t k = 0; argc >= 2 && k < count; k++)
+        if (strcmp(argv[1], actions[k].name) == 0)
+            return actions[k].run(argc - 1, argv + 1);
+    char list[256] = "";
+    for (size_t k = 0; k < count; k++) {
+        strncat(list, actions[k].name, sizeof list - strlen(list) - 1);
+        if (k + 1 < count)
+            strncat(list, k + 2 == count ? " or " : ", ", sizeof list - strlen(list) - 1);
+    }
+    if (argc < 2)
+        return missing ? cli_usage_error(command, "%s", missing)
+                       : cli_usage_error(command, "expected %s", list);
+    if (unknown)
+        return cli_usage_error(command, unknown, argv[1]);
+    return cli_usage_error(command, "unknown action '%s' (expected %s)", argv[1], list);
 }
 
 /* ---- the help ---------------------------------------------------------------- */

@@ -16,6 +16,7 @@
  *     static const cli_syntax draw_syntax = {
  *         .command = "draw", .groups = draw_groups,
  *         .max_positionals = 1, .too_many = "expected one script, got '%s' as a second",
+ *         .min_positionals = 1, .too_few = "expected a script FILE",
  *     };
  *     ...
  *     draw_arguments a = {NULL, 1};
@@ -103,6 +104,10 @@ typedef struct cli_syntax {
      * one more is refused with too_many (a format taking the argument). */
     int max_positionals;
     const char *too_many;
+    /* Fewer than min_positionals are refused with too_few (a message),
+     * once every argument is read. */
+    int min_positionals;
+    const char *too_few;
     /* Instead, when set: called for each positional argument (index from 0)
      * as it comes; 0, or -1 after printing a usage error. */
     int (*positional)(const char *command, int index, const char *text, void *arguments);
@@ -125,6 +130,20 @@ int cli_read_double(const char *command, const cli_option *option, const char *t
 /* True when the option (a pointer into one of syntax's tables) was given,
  * for an option that has a given counter. */
 int cli_given(const cli_option *option, const void *arguments);
+
+/* One action of a command that has several (`cg clip line`): its name and
+ * the function that runs it, given argv[0] = the action's name. */
+typedef struct cli_action {
+    const char *name;
+    int (*run)(int argc, char **argv);
+} cli_action;
+
+/* Runs the action argv[1] names with argv[1..argc), and returns its exit
+ * status; with no action, the usage error missing, and with another name the
+ * usage error unknown (a format taking the name).  NULL for either gives
+ * "expected A, B or C" and "unknown action 'X' (expected A, B or C)". */
+int cli_run_action(const char *command, int argc, char **argv, const cli_action *actions,
+                   size_t count, const char *missing, const char *unknown);
 
 /* The help of the syntaxes' options, after a command's usage text:
  * "Options of cg clip line:" (or "Options:") and one line per option, its

@@ -2,6 +2,7 @@
 #include "clip_view.h"
 
 #include "cg/fill.h"
+#include "../../../src/core/array.h"
 
 #include <ctype.h>
 #include <stdlib.h>
@@ -83,14 +84,9 @@ static cg_status ring(wkt *w, cg_polygon_set *set)
                               w->name, w->pos);
             goto done;
         }
-        if (n == cap) {
-            cap = cap ? 2 * cap : 16;
-            cg_vec2 *q = realloc(pts, cap * sizeof *q);
-            if (!q) {
-                st = cg_error_set(w->err, CG_ENOMEM, "%s: out of memory", w->name);
-                goto done;
-            }
-            pts = q;
+        if (core_array_reserve((void **)&pts, &cap, n + 1, sizeof *pts) != CG_OK) {
+            st = cg_error_set(w->err, CG_ENOMEM, "%s: out of memory", w->name);
+            goto done;
         }
         pts[n++] = cg_vec2_make(x, y);
     } while (accept_char(w, ','));
@@ -159,11 +155,12 @@ cg_status clip_wkt_read(const char *path, cg_polygon_set *set, cg_error *err)
     FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (!f)
         return cg_error_set(err, CG_EIO, "%s: cannot open", path);
-    size_t n = 0, cap = 4096;
-    char *buf = malloc(cap);
+    size_t n = 0, cap = 0;
+    char *buf = NULL;
     cg_status st = CG_OK;
     for (;;) {
-        if (!buf) {
+        /* room for a read of 4096 bytes or more, and the final NUL */
+        if (core_array_reserve((void **)&buf, &cap, n + 4096, 1) != CG_OK) {
             st = cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
             break;
         }
@@ -174,11 +171,6 @@ cg_status clip_wkt_read(const char *path, cg_polygon_set *set, cg_error *err)
                 st = cg_error_set(err, CG_EIO, "%s: read error", path);
             break;
         }
-        cap *= 2;
-        char *q = realloc(buf, cap);
-        if (!q)
-            free(buf);
-        buf = q;
     }
     if (f != stdin)
         fclose(f);

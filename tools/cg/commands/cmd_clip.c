@@ -32,7 +32,6 @@ static void print_trace(void *user, cg_vec2 p0, unsigned c0, cg_vec2 p1, unsigne
 /* cg clip line: the window and the segment as eight numbers, the options. */
 typedef struct line_arguments {
     double numbers[8]; /* XMIN YMIN XMAX YMAX X0 Y0 X1 Y1 */
-    int count;
     int liang_barsky; /* --algorithm liang-barsky */
     int trace;
 } line_arguments;
@@ -45,7 +44,6 @@ static int line_number(const char *command, int index, const char *text, void *a
         cli_usage_error(command, "line: expected 8 numbers, got '%s' as a ninth", text);
         return -1;
     }
-    a->count = index + 1;
     return cli_parse_double(command, names[index], text, &a->numbers[index]);
 }
 
@@ -59,17 +57,16 @@ static const cli_option line_options[] = {
 static const cli_option_group line_groups[] = {CLI_GROUP(NULL, line_options), {0}};
 static const cli_syntax line_syntax = {
     .command = "clip", .action = "line", .groups = line_groups, .positional = line_number,
+    .min_positionals = 8, .too_few = "line: expected XMIN YMIN XMAX YMAX X0 Y0 X1 Y1",
 };
 
 static int line(int argc, char **argv)
 {
-    line_arguments a = {{0}, 0, 0, 0};
+    line_arguments a = {{0}, 0, 0};
     if (cli_parse(&line_syntax, argc, argv, &a, NULL, NULL) != CLI_OK)
         return CLI_USAGE;
-    int count = a.count, trace = a.trace, liang = a.liang_barsky;
+    int trace = a.trace, liang = a.liang_barsky;
     const double *v = a.numbers;
-    if (count != 8)
-        return cli_usage_error("clip", "line: expected XMIN YMIN XMAX YMAX X0 Y0 X1 Y1");
     if (v[0] > v[2] || v[1] > v[3])
         return cli_usage_error("clip", "line: the window needs XMIN <= XMAX and YMIN <= YMAX");
     if (trace && liang)
@@ -147,6 +144,7 @@ static const cli_option_group boolean_groups[] = {CLI_GROUP(NULL, boolean_option
 static const cli_syntax boolean_syntax = {
     .command = "clip", .action = "boolean", .groups = boolean_groups,
     .max_positionals = 3, .too_many = "boolean: unexpected argument '%s'",
+    .min_positionals = 3, .too_few = "boolean: expected OPERATION A B",
 };
 
 static int boolean(int argc, char **argv)
@@ -154,16 +152,12 @@ static int boolean(int argc, char **argv)
     static const char *ops[4] = {"intersection", "union", "difference", "xor"};
     boolean_arguments arguments = {CG_CLIP_EVEN_ODD, NULL, 0};
     const char *positionals[3];
-    int count = 0;
-    if (cli_parse(&boolean_syntax, argc, argv, &arguments, positionals, &count) != CLI_OK)
+    if (cli_parse(&boolean_syntax, argc, argv, &arguments, positionals, NULL) != CLI_OK)
         return CLI_USAGE;
-    const char *opname = count > 0 ? positionals[0] : NULL, *out = arguments.output;
-    const char *files[2] = {count > 1 ? positionals[1] : NULL, count > 2 ? positionals[2] : NULL};
-    int nfiles = count > 0 ? count - 1 : 0;
+    const char *opname = positionals[0], *out = arguments.output;
+    const char *files[2] = {positionals[1], positionals[2]};
     long repeat = arguments.repeat;
     cg_clip_fill fill = (cg_clip_fill)arguments.fill;
-    if (!opname || nfiles != 2)
-        return cli_usage_error("clip", "boolean: expected OPERATION A B");
     int op = -1;
     for (int i = 0; i < 4; i++)
         if (strcmp(opname, ops[i]) == 0)
@@ -235,19 +229,17 @@ static const cli_option_group polygon_groups[] = {CLI_GROUP(NULL, polygon_option
 static const cli_syntax polygon_syntax = {
     .command = "clip", .action = "polygon", .groups = polygon_groups,
     .max_positionals = 2, .too_many = "polygon: unexpected argument '%s'",
+    .min_positionals = 2, .too_few = "polygon: expected WINDOW SUBJECT",
 };
 
 static int polygon(int argc, char **argv)
 {
     polygon_arguments arguments = {0, NULL};
     const char *files[2] = {NULL, NULL};
-    int nfiles = 0;
-    if (cli_parse(&polygon_syntax, argc, argv, &arguments, files, &nfiles) != CLI_OK)
+    if (cli_parse(&polygon_syntax, argc, argv, &arguments, files, NULL) != CLI_OK)
         return CLI_USAGE;
     const char *out = arguments.output;
     int weiler = arguments.weiler_atherton;
-    if (nfiles != 2)
-        return cli_usage_error("clip", "polygon: expected WINDOW SUBJECT");
     if (out && cg_file_format_from_path(out) == CG_FILE_UNKNOWN)
         return cli_usage_error("clip", "-o %s: unknown image format (expected .png, .ppm)", out);
     cg_polygon_set w = {0}, s = {0}, r = {0};
@@ -294,16 +286,9 @@ done:
 
 static int run(int argc, char **argv)
 {
-    if (argc < 2)
-        return cli_usage_error("clip", "expected line, polygon or boolean");
-    if (strcmp(argv[1], "line") == 0)
-        return line(argc - 1, argv + 1);
-    if (strcmp(argv[1], "boolean") == 0)
-        return boolean(argc - 1, argv + 1);
-    if (strcmp(argv[1], "polygon") == 0)
-        return polygon(argc - 1, argv + 1);
-    return cli_usage_error("clip", "unknown clip command '%s' (expected line, polygon or boolean)",
-                           argv[1]);
+    static const cli_action actions[] = {{"line", line}, {"polygon", polygon}, {"boolean", boolean}};
+    return cli_run_action("clip", argc, argv, actions, 3, NULL,
+                          "unknown clip command '%s' (expected line, polygon or boolean)");
 }
 
 static const cli_syntax *const clip_syntaxes[] = {&line_syntax, &polygon_syntax, &boolean_syntax,

@@ -7,16 +7,14 @@
 static const cli_syntax convert_syntax = {
     .command = "convert", .max_positionals = 2,
     .too_many = "expected two files, got '%s' as a third",
+    .min_positionals = 2, .too_few = "expected IN and OUT files",
 };
 
 static int run(int argc, char **argv)
 {
     const char *paths[2];
-    int count = 0;
-    if (cli_parse(&convert_syntax, argc, argv, NULL, paths, &count) != CLI_OK)
+    if (cli_parse(&convert_syntax, argc, argv, NULL, paths, NULL) != CLI_OK)
         return CLI_USAGE;
-    if (count != 2)
-        return cli_usage_error("convert", "expected IN and OUT files");
     if (cg_file_format_from_path(paths[1]) == CG_FILE_UNKNOWN)
         return cli_usage_error("convert", "%s: unknown output format (expected .png, .ppm, .pgm)",
                                paths[1]);

@@ -21,6 +21,7 @@ static const cli_option_group draw_groups[] = {CLI_GROUP(NULL, draw_options), {0
 static const cli_syntax draw_syntax = {
     .command = "draw", .groups = draw_groups, .max_positionals = 1,
     .too_many = "expected one script, got '%s' as a second",
+    .min_positionals = 1, .too_few = "expected a script FILE (or - for stdin)",
 };
 static const cli_syntax *const draw_syntaxes[] = {&draw_syntax, NULL};
 
@@ -32,8 +33,6 @@ static int run(int argc, char **argv)
         return CLI_USAGE;
     const char *output = arguments.output;
     long repeat = arguments.repeat;
-    if (!input)
-        return cli_usage_error("draw", "expected a script FILE (or - for stdin)");
     if (!output)
         return cli_usage_error("draw", "expected -o OUT.png (or .ppm, .pgm)");
     if (cg_file_format_from_path(output) == CG_FILE_UNKNOWN)

@@ -187,17 +187,16 @@ static const cli_option_group info_groups[] = {CLI_GROUP(NULL, info_options), {0
 static const cli_syntax info_syntax = {
     .command = "mesh", .action = "info", .groups = info_groups, .max_positionals = 1,
     .too_many = "info: expected one FILE, got '%s' as a second",
+    .min_positionals = 1, .too_few = "info: expected a mesh FILE",
 };
 
 static int info(int argc, char **argv)
 {
     const char *path = NULL;
     info_arguments arguments = {0};
-    if (cli_parse(&info_syntax, argc - 1, argv + 1, &arguments, &path, NULL) != CLI_OK)
+    if (cli_parse(&info_syntax, argc, argv, &arguments, &path, NULL) != CLI_OK)
         return CLI_USAGE;
     long repeat = arguments.repeat;
-    if (!path)
-        return cli_usage_error("mesh", "info: expected a mesh FILE");
     cg_mesh *mesh;
     if (load(path, &mesh))
         return CLI_FAILED;
@@ -242,6 +241,14 @@ static int save(const cg_hemesh *h, const char *path)
     return CLI_OK;
 }
 
+/* Writes h to path, then frees it: the exit status. */
+static int save_and_free(cg_hemesh *h, const char *path)
+{
+    int status = save(h, path);
+    cg_hemesh_free(h);
+    return status;
+}
+
 static int check_output(const char *what, const char *path)
 {
     cg_mesh_format f = cg_mesh_format_from_path(path);
@@ -251,18 +258,27 @@ static int check_output(const char *what, const char *path)
     return CLI_OK;
 }
 
-/* Checks OUT's format, then loads IN and builds it with every repair. */
-static int load_for_output(const char *what, const char *in, const char *out, cg_hemesh **h,
-                           cg_hemesh_report *report)
+/* Checks OUT's format, then loads IN and builds it with every repair; what
+ * the repair changed is printed to `to`, each line after prefix.  *changed
+ * says whether it changed anything. */
+static int load_for_output(const char *what, const char *in, const char *out, FILE *to,
+                           const char *prefix, cg_hemesh **h, int *changed)
 {
     if (check_output(what, out))
         return CLI_USAGE;
     cg_mesh *mesh;
     if (load(in, &mesh))
         return CLI_FAILED;
-    int status = build(what, mesh, h, report);
+    cg_hemesh_report report;
+    int status = build(what, mesh, h, &report);
     cg_mesh_free(mesh);
-    return status;
+    if (status)
+        return status;
+    *changed = repaired(&report);
+    if (*changed)
+        print_changes(to, prefix, &report);
+    cg_hemesh_report_clear(&report);
+    return CLI_OK;
 }
 
 /* --loop N or --catmull-clark N: the scheme, and the levels in either. */
@@ -293,7 +309,7 @@ static int subdivide(int argc, char **argv)
     subdivide_arguments arguments = {0, 0, 0, 0};
     const char *paths[2];
     int count = 0;
-    if (cli_parse(&subdivide_syntax, argc - 1, argv + 1, &arguments, paths, &count) != CLI_OK)
+    if (cli_parse(&subdivide_syntax, argc, argv, &arguments, paths, &count) != CLI_OK)
         return CLI_USAGE;
     if (arguments.loop_given + arguments.catmull_clark_given > 1)
         return cli_usage_error("mesh", "subdivide: give one of --loop and --catmull-clark");
@@ -304,13 +320,11 @@ static int subdivide(int argc, char **argv)
     if (count != 2)
         return cli_usage_error("mesh", "subdivide: expected IN and OUT files");
     cg_hemesh *h = NULL;
-    cg_hemesh_report rep;
-    int status = load_for_output("subdivide", paths[0], paths[1], &h, &rep);
+    int changed;
+    int status = load_for_output("subdivide", paths[0], paths[1], stderr,
+                                 "cg: mesh subdivide: input repaired: ", &h, &changed);
     if (status)
         return status;
-    if (repaired(&rep))
-        print_changes(stderr, "cg: mesh subdivide: input repaired: ", &rep);
-    cg_hemesh_report_clear(&rep);
     /* the result grows fourfold per level: refuse what cannot fit */
     double faces = (double)h->live_faces, corners = 0;
     for (uint32_t f = 0; f < h->face_count; f++)
@@ -335,50 +349,35 @@ static int subdivide(int argc, char **argv)
         if (s != CG_OK)
             return cli_fail("mesh subdivide: %s", cg_status_str(s));
     }
-    status = save(h, paths[1]);
-    cg_hemesh_free(h);
-    return status;
+    return save_and_free(h, paths[1]);
 }
 
 static const cli_syntax repair_syntax = {
     .command = "mesh", .action = "repair", .max_positionals = 2,
     .too_many = "repair: expected IN and OUT, got '%s' as a third",
+    .min_positionals = 2, .too_few = "repair: expected IN and OUT files",
 };
 
 static int repair(int argc, char **argv)
 {
     const char *paths[2];
-    int count = 0;
-    if (cli_parse(&repair_syntax, argc - 1, argv + 1, NULL, paths, &count) != CLI_OK)
+    if (cli_parse(&repair_syntax, argc, argv, NULL, paths, NULL) != CLI_OK)
         return CLI_USAGE;
-    if (count != 2)
-        return cli_usage_error("mesh", "repair: expected IN and OUT files");
     cg_hemesh *h = NULL;
-    cg_hemesh_report rep;
-    int status = load_for_output("repair", paths[0], paths[1], &h, &rep);
+    int changed;
+    int status = load_for_output("repair", paths[0], paths[1], stdout, "", &h, &changed);
     if (status)
         return status;
-    if (repaired(&rep))
-        print_changes(stdout, "", &rep);
-    else
+    if (!changed)
         printf("nothing to repair: the mesh is a consistently oriented manifold\n");
-    cg_hemesh_report_clear(&rep);
-    status = save(h, paths[1]);
-    cg_hemesh_free(h);
-    return status;
+    return save_and_free(h, paths[1]);
 }
 
 static int run(int argc, char **argv)
 {
-    if (argc < 2)
-        return cli_usage_error("mesh", "expected info, subdivide or repair");
-    if (strcmp(argv[1], "info") == 0)
-        return info(argc, argv);
-    if (strcmp(argv[1], "subdivide") == 0)
-        return subdivide(argc, argv);
-    if (strcmp(argv[1], "repair") == 0)
-        return repair(argc, argv);
-    return cli_usage_error("mesh", "unknown action '%s' (expected info, subdivide or repair)", argv[1]);
+    static const cli_action actions[] = {
+        {"info", info}, {"subdivide", subdivide}, {"repair", repair}};
+    return cli_run_action("mesh", argc, argv, actions, 3, NULL, NULL);
 }
 
 static const cli_syntax *const mesh_syntaxes[] = {&info_syntax, &subdivide_syntax, NULL};

@@ -24,16 +24,14 @@ static int line_step(void *user, const cg_line_step *s)
 
 static const cli_syntax line_syntax = {
     .command = "trace", .max_positionals = 4, .too_many = "expected 'line X1 Y1 X2 Y2'",
+    .min_positionals = 4, .too_few = "expected 'line X1 Y1 X2 Y2'",
 };
 
 static int trace_line(int argc, char **argv)
 {
     const char *texts[4];
-    int count = 0;
-    if (cli_parse(&line_syntax, argc, argv, NULL, texts, &count) != CLI_OK)
+    if (cli_parse(&line_syntax, argc, argv, NULL, texts, NULL) != CLI_OK)
         return CLI_USAGE;
-    if (count != 4)
-        return cli_usage_error("trace", "expected 'line X1 Y1 X2 Y2'");
     long v[4];
     const char *names[4] = {"X1", "Y1", "X2", "Y2"};
     for (int i = 0; i < 4; i++)
@@ -94,6 +92,7 @@ static int circle_step(void *user, const cg_circle_step *s)
 
 static const cli_syntax circle_syntax = {
     .command = "trace", .max_positionals = 1, .too_many = "expected 'circle R'",
+    .min_positionals = 1, .too_few = "expected 'circle R'",
 };
 
 static int trace_circle(int argc, char **argv)
@@ -102,8 +101,6 @@ static int trace_circle(int argc, char **argv)
     long r;
     if (cli_parse(&circle_syntax, argc, argv, NULL, &radius, NULL) != CLI_OK)
         return CLI_USAGE;
-    if (!radius)
-        return cli_usage_error("trace", "expected 'circle R'");
     if (cli_parse_long("trace", "R", radius, 0, MAX_STEPS, &r))
         return CLI_USAGE;
     printf("Bresenham's circle (Algorithm 2), radius %ld: first octant 0 <= x <= y from (0, %ld)\n",
@@ -122,13 +119,10 @@ static int trace_circle(int argc, char **argv)
 
 static int run(int argc, char **argv)
 {
-    if (argc < 2)
-        return cli_usage_error("trace", "expected 'line X1 Y1 X2 Y2' or 'circle R'");
-    if (strcmp(argv[1], "line") == 0)
-        return trace_line(argc - 1, argv + 1);
-    if (strcmp(argv[1], "circle") == 0)
-        return trace_circle(argc - 1, argv + 1);
-    return cli_usage_error("trace", "unknown figure '%s' (expected line or circle)", argv[1]);
+    static const cli_action figures[] = {{"line", trace_line}, {"circle", trace_circle}};
+    return cli_run_action("trace", argc, argv, figures, 2,
+                          "expected 'line X1 Y1 X2 Y2' or 'circle R'",
+                          "unknown figure '%s' (expected line or circle)");
 }
 
 const cg_command cg_command_trace = {

@@ -28,6 +28,7 @@ static const cli_option_group view_groups[] = {CLI_GROUP(NULL, view_options), {0
 static const cli_syntax view_syntax = {
     .command = "view", .groups = view_groups, .max_positionals = 1,
     .too_many = "expected one MESH or SCENE file, got '%s' as well",
+    .min_positionals = 1, .too_few = "expected a MESH or SCENE file",
 };
 static const cli_syntax *const view_syntaxes[] = {&view_syntax, NULL};
 
@@ -354,8 +355,6 @@ static int run(int argc, char **argv)
         return CLI_USAGE;
     int width = arguments.size.width, height = arguments.size.height;
     int threads = arguments.threads < 1 ? 1 : arguments.threads > 64 ? 64 : arguments.threads;
-    if (!path)
-        return cli_usage_error(NAME, "expected a MESH or SCENE file");
     if (!have_display())
         return cli_fail("view: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are "
                         "unset); run it in a desktop session, or set SDL_VIDEODRIVER to choose a "

@@ -146,9 +146,6 @@ static const cli_option light_options[] = {
     {.name = "--background", .kind = CLI_LINEAR_COLOR, .offset = RENDER(background),
      .value_name = "COLOR", .given = GIVEN(OPT_BACKGROUND),
      .help = "background (default #1d1f27; a sky with --floor and --scene)"},
-    {.name = "--edge-color", .kind = CLI_LINEAR_COLOR, .offset = RENDER(edge_color),
-     .value_name = "COLOR", .given = GIVEN(OPT_EDGE_COLOR),
-     .help = "colour of wireframe and hidden lines"},
 };
 
 static const cli_option pipeline_options[] = {
@@ -159,14 +156,26 @@ static const cli_option pipeline_options[] = {
      .range_text = "a number >= 0 and <= 180",
      .help = "computed normals are split where faces meet at a\n"
              "larger angle (default 60)"},
-    {.name = "--cull", .kind = CLI_CHOICE, .offset = RENDER(cull), .choices = culls,
-     .given = GIVEN(OPT_CULL),
-     .help = "back-face culling; front faces are counter-clockwise as\n"
-             "seen by the camera (default back)"},
     {.name = "--algorithm", .kind = CLI_CHOICE, .offset = offsetof(render_request, algorithm),
      .choices = algorithms, .given = GIVEN(OPT_ALGORITHM),
      .help = "visible-surface algorithm (default zbuffer); depth-sort is\n"
              "painter's without its overlap tests, to show their purpose"},
+    CLI_OPTION_THREADS(render_request, trace.common.render.threads, GIVEN(OPT_THREADS),
+                       "worker threads, 1 to 64; the picture is the same for any N"),
+    CLI_OPTION_REPEAT(render_request, trace.common.repeat, 100000,
+                      "render N frames after loading and print the median time\n"
+                      "on stderr as 'frame: 12.3 ms'"),
+    {.name = "--quiet", .kind = CLI_FLAG, .offset = offsetof(render_request, trace.quiet),
+     .flag_value = 1, .given = GIVEN(OPT_QUIET),
+     .help = "no progress on stderr (shown for frames over a second)"},
+};
+
+/* The rasterizer's own (the ray tracer sees both faces and draws no edges). */
+static const cli_option raster_options[] = {
+    {.name = "--cull", .kind = CLI_CHOICE, .offset = RENDER(cull), .choices = culls,
+     .given = GIVEN(OPT_CULL),
+     .help = "back-face culling; front faces are counter-clockwise as\n"
+             "seen by the camera (default back)"},
     {.name = "--wireframe", .kind = CLI_FLAG, .offset = RENDER(edges),
      .flag_value = CG_EDGES_WIREFRAME, .given = GIVEN(OPT_WIREFRAME), .help = "every edge, no faces"},
     {.name = "--hidden-line", .kind = CLI_FLAG, .offset = RENDER(edges),
@@ -177,14 +186,9 @@ static const cli_option pipeline_options[] = {
     {.name = "--output-depth", .kind = CLI_FLAG, .offset = offsetof(render_request, output_depth),
      .flag_value = 1, .given = GIVEN(OPT_OUTPUT_DEPTH),
      .help = "write the depth buffer (near light, far dark) instead"},
-    CLI_OPTION_THREADS(render_request, trace.common.render.threads, GIVEN(OPT_THREADS),
-                       "worker threads, 1 to 64; the picture is the same for any N"),
-    CLI_OPTION_REPEAT(render_request, trace.common.repeat, 100000,
-                      "render N frames after loading and print the median time\n"
-                      "on stderr as 'frame: 12.3 ms'"),
-    {.name = "--quiet", .kind = CLI_FLAG, .offset = offsetof(render_request, trace.quiet),
-     .flag_value = 1, .given = GIVEN(OPT_QUIET),
-     .help = "no progress on stderr (shown for frames over a second)"},
+    {.name = "--edge-color", .kind = CLI_LINEAR_COLOR, .offset = RENDER(edge_color),
+     .value_name = "COLOR", .given = GIVEN(OPT_EDGE_COLOR),
+     .help = "colour of wireframe and hidden lines"},
 };
 
 static const cli_option raytrace_options[] = {
@@ -211,6 +215,7 @@ static const cli_option_group render_groups[] = {
               camera_options),
     CLI_GROUP("Light and material:", light_options),
     CLI_GROUP("Pipeline:", pipeline_options),
+    CLI_GROUP("Rasterizer (not with --algorithm raytrace):", raster_options),
     CLI_GROUP("Ray tracer (--algorithm raytrace only):", raytrace_options),
     {0},
 };

@@ -2,6 +2,7 @@
  * the argument helpers of draw_script.h. */
 #include "draw_script_run.h"
 #include "cg/color.h"
+#include "../../../src/core/array.h"
 
 #include <errno.h>
 #include <float.h>
@@ -22,6 +23,8 @@ static const draw_command_table *const tables[] = {
 #undef DRAW_COMMANDS
 
 enum { MAX_SCRIPT_BYTES = 256 << 20 };
+/* The room a read asks for at least, in bytes. */
+enum { READ_CHUNK = 4096 };
 
 int draw_error(const draw_state *state, const char *format, ...)
 {
@@ -226,8 +229,10 @@ static char *read_all(const char *path, size_t *size)
     FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (!f)
         return NULL;
-    size_t cap = 4096, n = 0;
-    char *text = malloc(cap);
+    size_t cap = 0, n = 0;
+    char *text = NULL;
+    if (core_array_reserve((void **)&text, &cap, READ_CHUNK, 1) != CG_OK)
+        text = NULL;
     while (text) {
         if (n + 1 >= cap) {
             if (cap >= MAX_SCRIPT_BYTES) {
@@ -236,14 +241,11 @@ static char *read_all(const char *path, size_t *size)
                 errno = EFBIG;
                 break;
             }
-            char *grown = realloc(text, cap * 2);
-            if (!grown) {
+            if (core_array_reserve((void **)&text, &cap, n + READ_CHUNK, 1) != CG_OK) {
                 free(text);
                 text = NULL;
                 break;
             }
-            text = grown;
-            cap *= 2;
         }
         size_t got = fread(text + n, 1, cap - n - 1, f);
         n += got;
@@ -337,7 +339,8 @@ static int parse(draw_script *script, size_t size)
         draw_script_free(script);
         return 1;
     }
-    int capacity = 0, number = 0;
+    size_t capacity = 0;
+    int number = 0;
     char *p = script->text;
     /* A UTF-8 byte-order mark, as some editors write, is not part of line 1. */
     if (size >= 3 && memcmp(p, "\xef\xbb\xbf", 3) == 0)
@@ -352,9 +355,10 @@ static int parse(draw_script *script, size_t size)
         if (end)
             *end = '\0';
         /* Split into words, stopping at a comment. */
-        int argc = 0, cap = 8;
-        char **argv = malloc((size_t)cap * sizeof *argv);
-        if (!argv)
+        int argc = 0;
+        size_t cap = 0;
+        char **argv = NULL;
+        if (core_array_reserve((void **)&argv, &cap, 8, sizeof *argv) != CG_OK)
             goto out_of_memory;
         char *q = p;
         for (;;) {
@@ -370,14 +374,10 @@ static int parse(draw_script *script, size_t size)
                 break;
             if (*q)
                 *q++ = '\0';
-            if (argc + 1 >= cap) {
-                cap *= 2;
-                char **grown = realloc(argv, (size_t)cap * sizeof *grown);
-                if (!grown) {
-                    free(argv);
-                    goto out_of_memory;
-                }
-                argv = grown;
+            /* the word and the NULL that ends the list */
+            if (core_array_reserve((void **)&argv, &cap, (size_t)argc + 2, sizeof *argv) != CG_OK) {
+                free(argv);
+                goto out_of_memory;
             }
             argv[argc++] = word;
         }
@@ -397,14 +397,10 @@ static int parse(draw_script *script, size_t size)
             draw_script_free(script);
             return 1;
         }
-        if (script->count == capacity) {
-            capacity = capacity ? capacity * 2 : 64;
-            draw_line *grown = realloc(script->lines, (size_t)capacity * sizeof *grown);
-            if (!grown) {
-                free(argv);
-                goto out_of_memory;
-            }
-            script->lines = grown;
+        if (core_array_reserve((void **)&script->lines, &capacity, (size_t)script->count + 1,
+                               sizeof *script->lines) != CG_OK) {
+            free(argv);
+            goto out_of_memory;
         }
         draw_line *line = &script->lines[script->count++];
         line->number = number;

@@ -6,7 +6,7 @@
  * in order on a draw_state; with --repeat N it runs them N times, each time
  * from a fresh state.
  *
- * Commands come in groups, one file each: tools/cg/drawcmds_<group>.c defines
+ * Commands come in groups, one file each: tools/cg/draw/drawcmds_<group>.c defines
  *     const draw_command_table draw_commands_<group> = {"group", list, count};
  * and the build lists every such file (cmake/registry.cmake, macro
  * DRAW_COMMANDS), so a new group touches no shared file.  A command's run

@@ -3,6 +3,7 @@
  * fill (docs/draw-script.md, "Filling"). */
 #include "draw_script_run.h"
 #include "cg/fill.h"
+#include "../../../src/core/array.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,7 +17,8 @@ typedef struct draw_fill {
     /* the polygon being drawn: a polygon line's points, then each contour's */
     cg_vec2 *points;
     int *sizes;
-    int point_count, contour_count, point_capacity, contour_capacity;
+    int point_count, contour_count;
+    size_t point_capacity, contour_capacity;
 } draw_fill;
 
 void draw_fill_release(draw_state *state)
@@ -145,19 +147,6 @@ static int draw_polygon(draw_state *s, draw_fill *f, cg_image *canvas, int antia
     return draw_check(s, status);
 }
 
-static int reserve(void **items, int *capacity, int needed, size_t size)
-{
-    if (needed <= *capacity)
-        return 0;
-    int grown_capacity = needed > 1 << 29 ? needed : 2 * needed;
-    void *grown = realloc(*items, (size_t)grown_capacity * size);
-    if (!grown)
-        return 1;
-    *items = grown;
-    *capacity = grown_capacity;
-    return 0;
-}
-
 /* Appends the X Y pairs of argv[1..] as a contour; 0 or an error printed.
  * A point the fill cannot take (beyond CG_FILL_MAX_COORD) is reported on its
  * own line, as the fill call would report it. */
@@ -168,9 +157,10 @@ static int add_contour(draw_state *s, draw_fill *f, int argc, char **argv, const
         return draw_error(s, "'%s' expects three or more X Y pairs (%s), got %d number%s",
                           argv[0], usage, numbers, numbers == 1 ? "" : "s");
     int n = numbers / 2;
-    if (reserve((void **)&f->points, &f->point_capacity, f->point_count + n, sizeof *f->points)
-        || reserve((void **)&f->sizes, &f->contour_capacity, f->contour_count + 1,
-                   sizeof *f->sizes))
+    if (core_array_reserve((void **)&f->points, &f->point_capacity,
+                           (size_t)f->point_count + (size_t)n, sizeof *f->points) != CG_OK
+        || core_array_reserve((void **)&f->sizes, &f->contour_capacity,
+                              (size_t)f->contour_count + 1, sizeof *f->sizes) != CG_OK)
         return out_of_memory(s);
     cg_vec2 *points = f->points + f->point_count;
     if (draw_arg_point_pairs(s, argv + 1, n, points))

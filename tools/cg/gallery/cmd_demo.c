@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "command.h"
 #include "demo.h"
+#include "../../../src/core/array.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -73,14 +74,9 @@ int demo_add(demo_context *context, const char *file, const cg_image *image, con
     free(path);
     if (status != CLI_OK)
         return status;
-    if (context->count == context->capacity) {
-        size_t capacity = context->capacity ? context->capacity * 2 : 64;
-        demo_entry *grown = realloc(context->entries, capacity * sizeof *grown);
-        if (!grown)
-            return cli_fail("demo: out of memory");
-        context->entries = grown;
-        context->capacity = capacity;
-    }
+    if (core_array_reserve((void **)&context->entries, &context->capacity, context->count + 1,
+                           sizeof *context->entries) != CG_OK)
+        return cli_fail("demo: out of memory");
     demo_entry *entry = &context->entries[context->count++];
     entry->section = context->current;
     entry->file = duplicate(file);

@@ -1,7 +1,7 @@
 /* The demo gallery: `cg demo` renders one picture per algorithm and writes an
  * index.html with a section per chapter of the lecture notes.
  *
- * Each tools/cg/demo_<name>.c defines `const demo_section demo_section_<name>`;
+ * Each tools/cg/gallery/demo_<name>.c defines `const demo_section demo_section_<name>`;
  * the build lists them by file name (cmake/registry.cmake). */
 #ifndef CG_TOOL_DEMO_H
 #define CG_TOOL_DEMO_H

@@ -1,6 +1,7 @@
 /* Gallery helpers of the chapter 2 sections. */
 #include "script_pictures.h"
 #include "draw_script_run.h"
+#include "../../../src/core/array.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -27,15 +28,10 @@ void sketch_add(sketch *k, const char *format, ...)
     va_end(args);
     if (k->failed || n < 0)
         return;
-    if (k->length + (size_t)n + 1 > k->capacity) {
-        size_t capacity = 2 * (k->length + (size_t)n + 1);
-        char *grown = realloc(k->text, capacity);
-        if (!grown) {
-            k->failed = 1;
-            return;
-        }
-        k->text = grown;
-        k->capacity = capacity;
+    if (core_array_reserve((void **)&k->text, &k->capacity, k->length + (size_t)n + 1, 1)
+        != CG_OK) {
+        k->failed = 1;
+        return;
     }
     va_start(args, format);
     vsnprintf(k->text + k->length, k->capacity - k->length, format, args);

@@ -182,6 +182,12 @@ cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **o
 cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
 
+/* glTF 2.0, .gltf or .glb (gltf.c); directory as for obj_read. */
+cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,
+                    const char *directory, cg_mesh **out, cg_error *err);
+/* True when the bytes are JSON text with an "asset" member near the start. */
+int mesh_looks_like_gltf_json(const unsigned char *bytes, size_t size);
+
 /* A format cg does not read, recognised by its first bytes or by the name's
  * extension (".gz" looked through): "a glTF binary file (.glb)", or NULL. */
 const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size);

@@ -30,6 +30,8 @@ cg_mesh_format cg_mesh_format_from_path(const char *path)
         return CG_MESH_FORMAT_PLY;
     if (has_suffix(path, length, ".stl"))
         return CG_MESH_FORMAT_STL;
+    if (has_suffix(path, length, ".gltf") || has_suffix(path, length, ".glb"))
+        return CG_MESH_FORMAT_GLTF;
     return CG_MESH_FORMAT_AUTO;
 }
 
@@ -194,6 +196,10 @@ static cg_mesh_format sniff(const unsigned char *b, size_t size)
     size_t i = 0;
     while (i < size && (b[i] == ' ' || b[i] == '\t'))
         i++;
+    if (size >= 4 && memcmp(b, "glTF", 4) == 0)
+        return CG_MESH_FORMAT_GLTF;
+    if (mesh_looks_like_gltf_json(b, size))
+        return CG_MESH_FORMAT_GLTF;
     if (size - i >= 6 && memcmp(b + i, "solid", 5) == 0
         && (b[i + 5] == ' ' || b[i + 5] == '\t' || b[i + 5] == '\n' || b[i + 5] == '\r'))
         return CG_MESH_FORMAT_STL;
@@ -223,8 +229,8 @@ static cg_status unsupported(const char *name, const char *format, const char *h
                              cg_error *err)
 {
     return cg_error_set(err, CG_EUNSUPPORTED,
-                        "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY and STL "
-                        "meshes",
+                        "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY, STL and "
+                        "glTF meshes",
                         name, how, format);
 }
 
@@ -273,6 +279,8 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
         return ply_read(bytes, size, name, out, err);
     case CG_MESH_FORMAT_STL:
         return stl_read(bytes, size, name, out, err);
+    case CG_MESH_FORMAT_GLTF:
+        return gltf_read(bytes, size, name, directory, out, err);
     case CG_MESH_FORMAT_AUTO:
         break;
     }
@@ -281,8 +289,8 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
                       || bytes[0] == 'm'))
         return obj_read((const char *)bytes, size, name, directory, out, err);
     return cg_error_set(err, CG_EFORMAT,
-                        "%s: unknown mesh format (expected OBJ, OFF, PLY or STL, by content or by "
-                        "extension)",
+                        "%s: unknown mesh format (expected OBJ, OFF, PLY, STL or glTF, by content or "
+                        "by extension)",
                         name);
 }
 

@@ -312,6 +312,9 @@ cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,
         s = check_asset(&doc);
     if (s == CG_OK)
         s = read_lists(&doc);
+    size_t scene;
+    if (s == CG_OK) /* the document's own structure before any buffer is read */
+        s = gltf_get_index(&doc, doc.root, "", "scene", 0, &doc.scenes, "scenes", &scene);
     if (s == CG_OK)
         s = gltf_load_buffers(&doc);
     if (s == CG_OK)

@@ -55,10 +55,15 @@ static cg_status attribute(gltf_document *doc, const cJSON *attributes, const ch
     if ((s = gltf_accessor_describe(doc, index, out)) != CG_OK)
         return s;
     int ok_type = strstr(types, out->type) != NULL;
+    int small_unsigned = out->component_type == GLTF_UNSIGNED_BYTE
+                         || out->component_type == GLTF_UNSIGNED_SHORT;
+    int small_integer = small_unsigned || out->component_type == GLTF_BYTE
+                        || out->component_type == GLTF_SHORT;
     int ok_component = out->component_type == GLTF_FLOAT
-                       || (!float_only && out->normalized
-                           && (out->component_type == GLTF_UNSIGNED_BYTE
-                               || out->component_type == GLTF_UNSIGNED_SHORT));
+                       || (!float_only && out->normalized && small_unsigned)
+                       /* KHR_mesh_quantization: integer positions, normals and texcoords */
+                       || (doc->quantized && strcmp(key, "COLOR_0") != 0 && small_integer
+                           && (out->normalized || strcmp(key, "NORMAL") != 0));
     if (!ok_type || !ok_component)
         return cg_error_set(doc->err, CG_EFORMAT,
                             "%s: %s.%s: expected an accessor of %s %s, got accessors[%zu]: %s of "
@@ -74,6 +79,35 @@ static cg_status attribute(gltf_document *doc, const cJSON *attributes, const ch
                             doc->name, path, key, count, index, out->count);
     *present = 1;
     return CG_OK;
+}
+
+/* Checks an attribute's name (the specification's semantics, or an
+ * application's starting with '_') and notes which numbered sets appear. */
+static cg_status check_semantic(gltf_document *doc, const char *path, const char *name,
+                                unsigned long long sets[4])
+{
+    static const char *const families[4] = {"TEXCOORD_", "COLOR_", "JOINTS_", "WEIGHTS_"};
+    if (name[0] == '_' || strcmp(name, "POSITION") == 0 || strcmp(name, "NORMAL") == 0
+        || strcmp(name, "TANGENT") == 0)
+        return CG_OK;
+    for (int k = 0; k < 4; k++) {
+        size_t n = strlen(families[k]);
+        if (strncmp(name, families[k], n) != 0)
+            continue;
+        const char *digits = name + n;
+        size_t length = strlen(digits);
+        int ok = length >= 1 && length <= 2 && (length == 1 || digits[0] != '0');
+        for (size_t i = 0; i < length; i++)
+            ok &= digits[i] >= '0' && digits[i] <= '9';
+        if (ok && atoi(digits) < 64) {
+            sets[k] |= 1ULL << atoi(digits);
+            return CG_OK;
+        }
+    }
+    return cg_error_set(doc->err, CG_EFORMAT,
+                        "%s: %s.%.40s: expected POSITION, NORMAL, TANGENT, TEXCOORD_n, COLOR_n, "
+                        "JOINTS_n, WEIGHTS_n or a name starting with '_'",
+                        doc->name, path, name);
 }
 
 static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const char *path,
@@ -99,14 +133,26 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
     p->material = material;
     char attributes_path[96];
     snprintf(attributes_path, sizeof attributes_path, "%s.attributes", path);
-    /* every attribute is an accessor index */
+    /* every attribute is an accessor index with a known name */
+    unsigned long long sets[4] = {0, 0, 0, 0}; /* TEXCOORD_n, COLOR_n, JOINTS_n, WEIGHTS_n */
     for (const cJSON *a = attributes->child; a; a = a->next) {
         size_t index;
         if ((s = gltf_get_index(doc, attributes, attributes_path, a->string, 1, &doc->accessors,
                                 "accessors", &index))
             != CG_OK)
             return s;
+        if ((s = check_semantic(doc, attributes_path, a->string, sets)) != CG_OK)
+            return s;
     }
+    static const char *const families[4] = {"TEXCOORD", "COLOR", "JOINTS", "WEIGHTS"};
+    for (int k = 0; k < 4; k++)
+        if (sets[k] & (sets[k] + 1)) /* not 0b0..01..1: a gap */
+            return cg_error_set(doc->err, CG_EFORMAT,
+                                "%s: %s: expected %s_0, %s_1, ... without a gap, got %s_%d without "
+                                "%s_%d",
+                                doc->name, attributes_path, families[k], families[k],
+                                families[k], 63 - __builtin_clzll(sets[k]), families[k],
+                                __builtin_ctzll(~sets[k]));
     s = attribute(doc, attributes, attributes_path, "POSITION", 1, "VEC3", SIZE_MAX, &p->position,
                   &p->has_position);
     size_t count = p->has_position ? p->position.count : SIZE_MAX;

@@ -247,8 +247,9 @@ cg_status gltf_collect_instances(gltf_document *doc, gltf_instance_array *out)
     }
     if (s == CG_OK)
         s = scene_roots(doc, parent, &roots, &root_count);
-    /* depth first, children in order: push them in reverse */
-    for (size_t r = root_count; s == CG_OK && r-- > 0;) {
+    /* depth first, roots and children in order: each root's tree is walked
+     * with a stack onto which children go in reverse */
+    for (size_t r = 0; s == CG_OK && r < root_count; r++) {
         walk_entry root = {roots[r], cg_mat4_identity()};
         if (core_array_push(&stack, root) != CG_OK)
             s = gltf_out_of_memory(doc);

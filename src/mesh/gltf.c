@@ -252,7 +252,18 @@ static cg_status build_mesh(gltf_document *doc, cg_mesh **out)
 {
     gltf_instance_array instances = {0};
     gltf_totals totals;
-    cg_status s = gltf_collect_instances(doc, &instances);
+    cg_status s = CG_OK;
+    /* every buffer view and accessor, used or not, follows the rules */
+    for (size_t i = 0; s == CG_OK && i < doc->buffer_views.count; i++) {
+        gltf_view view;
+        s = gltf_get_view(doc, i, &view);
+    }
+    for (size_t i = 0; s == CG_OK && i < doc->accessors.count; i++) {
+        gltf_accessor accessor;
+        s = gltf_accessor_describe(doc, i, &accessor);
+    }
+    if (s == CG_OK)
+        s = gltf_collect_instances(doc, &instances);
     if (s == CG_OK)
         s = gltf_count_primitives(doc, &instances, &totals);
     cg_mesh *mesh = NULL;

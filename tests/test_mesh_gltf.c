@@ -664,6 +664,35 @@ static void broken_files(void)
          " \"materials\": [{\"emissiveTexture\": {\"index\": 0}}]}",
          "images[0]: expected either a uri or a bufferView, got neither"},
     };
+    /* memory follows the file: a huge all-zero accessor, or a mesh repeated
+     * by many nodes, is refused before anything that size is allocated */
+    bytes nodes = {0};
+    const char *head = "{\"asset\": {\"version\": \"2.0\"}, \"accessors\": [{\"componentType\": "
+                       "5126, \"count\": 300000, \"type\": \"VEC3\"}], \"meshes\": "
+                       "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"mode\": 0}]}], "
+                       "\"nodes\": [";
+    put(&nodes, head, strlen(head));
+    for (int i = 0; i < 200; i++)
+        put(&nodes, i ? ", {\"mesh\": 0}" : "{\"mesh\": 0}", i ? 13 : 11);
+    put(&nodes, "]}", 3);
+    mesh = NULL;
+    CHECK_MSG(load_text((const char *)nodes.data, "points.gltf", &mesh, &err) == CG_OK,
+              "points are never made: %s", err.message);
+    cg_mesh_free(mesh);
+    char *triangles = strstr((char *)nodes.data, "\"mode\": 0");
+    triangles[8] = '4';
+    mesh = NULL;
+    CHECK_MSG(load_text((const char *)nodes.data, "forest.gltf", &mesh, &err) == CG_ERANGE && !mesh
+                  && strstr(err.message, "forest.gltf: meshes[0]: the default scene's instances "
+                                         "make more than"),
+              "%s", err.message);
+    free(nodes.data);
+    const char *zeros = "{\"asset\": {\"version\": \"2.0\"}, \"accessors\": "
+                        "[{\"componentType\": 5126, \"count\": 4000000000, \"type\": \"MAT4\"}]}";
+    CHECK_MSG(load_text(zeros, "zeros.gltf", &mesh, &err) == CG_ERANGE
+                  && strstr(err.message, "zeros.gltf: accessors[0].count: 4000000000 MAT4 "
+                                         "elements without a bufferView"),
+              "%s", err.message);
     for (size_t i = 0; i < sizeof documents / sizeof documents[0]; i++) {
         mesh = NULL;
         cg_status s = load_text(documents[i].text, "doc.gltf", &mesh, &err);

@@ -309,6 +309,7 @@ cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,
     gltf_document doc;
     memset(&doc, 0, sizeof doc);
     doc.name = name;
+    doc.input_bytes = size;
     doc.directory = directory;
     doc.err = err;
     *out = NULL;

@@ -177,6 +177,11 @@ cg_status gltf_accessor_describe(gltf_document *doc, size_t index, gltf_accessor
     out->type = type_names[type_index];
     layout l = layout_of(out);
     if (view == SIZE_MAX) {
+        if (out->count * (size_t)out->components > gltf_element_budget(doc))
+            return cg_error_set(doc->err, CG_ERANGE,
+                                "%s: %s.count: %zu %s elements without a bufferView (all zeros) "
+                                "are more than cg reads from a file of %zu bytes",
+                                doc->name, path, out->count, type, doc->input_bytes);
         if (cJSON_GetObjectItemCaseSensitive(accessor, "byteOffset"))
             return cg_error_set(doc->err, CG_EFORMAT,
                                 "%s: %s.byteOffset: expected no byteOffset without a bufferView",

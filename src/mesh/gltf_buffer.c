@@ -176,6 +176,8 @@ cg_status gltf_load_buffers(gltf_document *doc)
             if ((s = load_uri(doc, uri, path, &loaded->owned, &size)) != CG_OK)
                 return s;
             loaded->bytes = loaded->owned;
+            if (strncmp(uri, "data:", 5) != 0)
+                doc->input_bytes += size;
         }
         if (size < (size_t)length)
             return cg_error_set(doc->err, CG_EFORMAT,

@@ -51,7 +51,23 @@ typedef struct gltf_document {
     size_t glb_binary_size;
     gltf_skipped skipped;
     int quantized; /* KHR_mesh_quantization used: integer positions, normals, texcoords */
+    size_t input_bytes; /* the file's size plus its external buffers' */
 } gltf_document;
+
+/* The most elements the reader makes for a file of doc->input_bytes bytes:
+ * accessors without a buffer view (all zeros) and the default scene's
+ * vertices and triangles (instancing repeats a mesh) stay within
+ * GLTF_ELEMENTS_PER_BYTE per input byte plus GLTF_ELEMENTS_FREE, so that
+ * memory follows the file's size however its JSON multiplies the data. */
+#define GLTF_ELEMENTS_PER_BYTE 64
+#define GLTF_ELEMENTS_FREE ((size_t)1 << 20)
+static inline size_t gltf_element_budget(const gltf_document *doc)
+{
+    size_t budget = GLTF_ELEMENTS_FREE;
+    if (doc->input_bytes > (SIZE_MAX - budget) / GLTF_ELEMENTS_PER_BYTE)
+        return SIZE_MAX;
+    return budget + GLTF_ELEMENTS_PER_BYTE * doc->input_bytes;
+}
 
 /* ---- JSON access (gltf_json.c) -------------------------------------------
  * Each getter reads member `key` of object `object`, whose JSON path is

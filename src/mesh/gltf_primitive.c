@@ -225,7 +225,7 @@ typedef struct counting {
 static cg_status count_visit(gltf_document *doc, const primitive *p, size_t mesh, size_t index,
                              void *context)
 {
-    (void)mesh, (void)index;
+    (void)index;
     counting *c = context;
     gltf_totals *t = c->totals;
     int drawn = p->has_position && p->mode >= MODE_TRIANGLES;
@@ -245,6 +245,13 @@ static cg_status count_visit(gltf_document *doc, const primitive *p, size_t mesh
                             "%s: the default scene has more vertices or triangles than cg_mesh "
                             "holds",
                             doc->name);
+    size_t budget = gltf_element_budget(doc);
+    if (t->vertices + p->position.count > budget
+        || t->triangles + p->triangles > budget - (t->vertices + p->position.count))
+        return cg_error_set(doc->err, CG_ERANGE,
+                            "%s: meshes[%zu]: the default scene's instances make more than %zu "
+                            "vertices and triangles, more than cg makes from a file of %zu bytes",
+                            doc->name, mesh, budget, doc->input_bytes);
     t->vertices += p->position.count;
     t->triangles += p->triangles;
     t->all_normals &= p->has_normal;
@@ -327,6 +334,11 @@ static cg_status fill_vertices(gltf_document *doc, const primitive *p, filling *
                              "(%g, %g, %g)",
                              doc->name, p->position.index, i, q.x, q.y, q.z);
         mesh->positions[base + i] = cg_mat4_transform_point(f->instance->world, q);
+        if (s == CG_OK && mesh_nonfinite_axis(mesh->positions[base + i]) >= 0)
+            s = cg_error_set(doc->err, CG_ERANGE,
+                             "%s: nodes[%zu]: the world transform takes POSITION element %zu of "
+                             "accessors[%zu] beyond the range of doubles",
+                             doc->name, f->instance->node, i, p->position.index);
     }
     free(values);
     if (s == CG_OK && mesh->normals && (s = read_all(doc, &p->normal, &values)) == CG_OK) {

@@ -35,6 +35,12 @@ static cg_status local_matrix(gltf_document *doc, const cJSON *node, const char 
                             "both",
                             doc->name, path);
     if (has_matrix) {
+        /* decomposable into TRS, so affine: the last row is 0 0 0 1 */
+        if (matrix[3] != 0 || matrix[7] != 0 || matrix[11] != 0 || matrix[15] != 1)
+            return cg_error_set(doc->err, CG_EFORMAT,
+                                "%s: %s.matrix: expected an affine matrix (a last row of 0 0 0 1, "
+                                "elements 3, 7, 11, 15), got %g %g %g %g",
+                                doc->name, path, matrix[3], matrix[7], matrix[11], matrix[15]);
         for (int column = 0; column < 4; column++)
             for (int row = 0; row < 4; row++)
                 out->m[row][column] = matrix[column * 4 + row];

@@ -846,9 +846,10 @@ static void external_files(void)
         snprintf(image, sizeof image, "%s/wood grain.png", dir);
         CHECK_MSG(m->base_color_map.image_path && strcmp(m->base_color_map.image_path, image) == 0,
                   "image path '%s'", m->base_color_map.image_path);
-        CHECK(m->base_color_map.srgb == 1);
-        CHECK(m->base_color_map.wrap_u == CG_MESH_WRAP_CLAMP
-              && m->base_color_map.wrap_v == CG_MESH_WRAP_MIRRORED_REPEAT
+        CHECK(m->base_color_map.encoding == CG_TEXTURE_SRGB
+              && m->normal_map.encoding == CG_TEXTURE_LINEAR);
+        CHECK(m->base_color_map.wrap_u == CG_TEXTURE_CLAMP
+              && m->base_color_map.wrap_v == CG_TEXTURE_MIRRORED_REPEAT
               && m->base_color_map.magnify_nearest);
         CHECK(m->base_color_map.offset[0] == 0.5 && m->base_color_map.rotation == 1.5
               && m->base_color_map.scale[0] == 2 && m->base_color_map.scale[1] == 3);

@@ -10,6 +10,7 @@
 
 #include "cg/core.h"
 #include "cg/image.h"
+#include "cg/texture.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -32,11 +33,11 @@ typedef struct cg_mesh_texture_ref {
     char *image_path;
     unsigned char *image_bytes;
     size_t image_byte_count;
-    int srgb;               /* 1: colour data in sRGB (base colour, emissive,
-                               specular); 0: linear data (normal, roughness,
-                               occlusion, alpha, bump) */
+    cg_texture_encoding encoding; /* CG_TEXTURE_SRGB for colour (base colour,
+                               emissive, specular), CG_TEXTURE_LINEAR for data
+                               (normal, metallic-roughness, occlusion, alpha, bump) */
     int texcoord_set;       /* glTF texCoord (cg_mesh carries set 0) */
-    int wrap_u, wrap_v;     /* CG_MESH_WRAP_* */
+    cg_texture_wrap wrap_u, wrap_v; /* glTF sampler wrapS, wrapT; OBJ: -clamp on */
     int magnify_nearest;    /* glTF magFilter NEAREST (0: linear or unset) */
     /* KHR_texture_transform, in glTF's texture space (origin top-left):
      * uv' = translate(offset) rotate(rotation) scale(scale) uv */
@@ -45,7 +46,6 @@ typedef struct cg_mesh_texture_ref {
                                multiplier; 1 otherwise */
 } cg_mesh_texture_ref;
 
-enum { CG_MESH_WRAP_REPEAT = 0, CG_MESH_WRAP_MIRRORED_REPEAT = 1, CG_MESH_WRAP_CLAMP = 2 };
 enum { CG_MESH_MATERIAL_PHONG = 0, CG_MESH_MATERIAL_METALLIC_ROUGHNESS = 1 };
 enum { CG_MESH_ALPHA_OPAQUE = 0, CG_MESH_ALPHA_MASK = 1, CG_MESH_ALPHA_BLEND = 2 };
 

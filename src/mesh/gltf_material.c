@@ -89,10 +89,10 @@ static cg_status read_sampler(gltf_document *doc, size_t index, cg_mesh_texture_
                              "33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT)",
                              cJSON_GetObjectItemCaseSensitive(sampler, keys[k]));
     }
-    t->wrap_u = wrap[0] == 33071 ? CG_MESH_WRAP_CLAMP
-                : wrap[0] == 33648 ? CG_MESH_WRAP_MIRRORED_REPEAT : CG_MESH_WRAP_REPEAT;
-    t->wrap_v = wrap[1] == 33071 ? CG_MESH_WRAP_CLAMP
-                : wrap[1] == 33648 ? CG_MESH_WRAP_MIRRORED_REPEAT : CG_MESH_WRAP_REPEAT;
+    t->wrap_u = wrap[0] == 33071 ? CG_TEXTURE_CLAMP
+                : wrap[0] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT : CG_TEXTURE_REPEAT;
+    t->wrap_v = wrap[1] == 33071 ? CG_TEXTURE_CLAMP
+                : wrap[1] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT : CG_TEXTURE_REPEAT;
     t->magnify_nearest = mag == 9728;
     return CG_OK;
 }
@@ -309,7 +309,6 @@ static cg_status read_material(gltf_document *doc, size_t index, cg_mesh_materia
     m->base_color = color;
     m->emissive = glow;
     m->unlit = unlit != NULL;
-    m->normal_map.srgb = m->occlusion_map.srgb = m->metallic_roughness_map.srgb = 0;
     return CG_OK;
 }
 

@@ -101,9 +101,11 @@ cg_mesh_material cg_mesh_material_default(void)
     memset(&empty, 0, sizeof empty);
     empty.scale[0] = empty.scale[1] = 1;
     empty.amount = 1;
+    empty.encoding = CG_TEXTURE_SRGB;
+    empty.wrap_u = empty.wrap_v = CG_TEXTURE_REPEAT;
     m.base_color_map = m.specular_map = m.emissive_map = empty;
+    empty.encoding = CG_TEXTURE_LINEAR;
     m.alpha_map = m.bump_map = m.normal_map = m.metallic_roughness_map = m.occlusion_map = empty;
-    m.base_color_map.srgb = m.specular_map.srgb = m.emissive_map.srgb = 1;
     return m;
 }
 

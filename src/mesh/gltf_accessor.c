@@ -259,6 +259,20 @@ static double read_component(const unsigned char *p, int type, int normalized)
 static void read_elements(const gltf_accessor *a, const unsigned char *bytes, size_t stride,
                           size_t count, double *values)
 {
+    size_t k = (size_t)a->components;
+    if (a->component_type == GLTF_FLOAT && strncmp(a->type, "MAT", 3) != 0) {
+        /* the common case, without a switch per component */
+        for (size_t i = 0; i < count; i++) {
+            const unsigned char *element = bytes + i * stride;
+            for (size_t c = 0; c < k; c++) {
+                uint32_t bits = read_u32(element + 4 * c);
+                float f;
+                memcpy(&f, &bits, sizeof f);
+                values[i * k + c] = f;
+            }
+        }
+        return;
+    }
     layout l = layout_of(a);
     size_t size = component_size(a->component_type);
     size_t offsets[16];
@@ -338,8 +352,23 @@ cg_status gltf_accessor_read_indices(gltf_document *doc, const gltf_accessor *a,
                             "short or int (5121, 5123, 5125), not normalized; got %s of %d%s",
                             doc->name, a->index, a->type, a->component_type,
                             a->normalized ? ", normalized" : "");
-    /* through doubles (8 bytes per index, freed at once): one reading path for
-     * every accessor, sparse ones included */
+    const cJSON *accessor = doc->accessors.items[a->index];
+    const cJSON *view_item = cJSON_GetObjectItemCaseSensitive(accessor, "bufferView");
+    if (view_item && !cJSON_GetObjectItemCaseSensitive(accessor, "sparse")) {
+        /* straight from the view */
+        gltf_view v;
+        cg_status s = gltf_get_view(doc, (size_t)view_item->valuedouble, &v);
+        if (s != CG_OK)
+            return s;
+        const cJSON *offset = cJSON_GetObjectItemCaseSensitive(accessor, "byteOffset");
+        size_t size = component_size(a->component_type);
+        size_t stride = v.byte_stride ? v.byte_stride : size;
+        const unsigned char *p = v.bytes + (offset ? (size_t)offset->valuedouble : 0);
+        for (size_t i = 0; i < a->count; i++, p += stride)
+            values[i] = size == 1 ? p[0] : size == 2 ? (uint32_t)(p[0] | p[1] << 8) : read_u32(p);
+        return CG_OK;
+    }
+    /* sparse or all zeros: through doubles (8 bytes per index, freed at once) */
     double *all = malloc(a->count * sizeof *all);
     if (!all)
         return gltf_out_of_memory(doc);

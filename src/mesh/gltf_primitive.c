@@ -302,6 +302,7 @@ typedef struct filling {
     const gltf_instance *instance;
     cg_mat4 normal_matrix;
     int mirrored;
+    int identity; /* the world matrix is the identity: nothing to move */
     size_t vertex, triangle; /* next free */
 } filling;
 
@@ -318,46 +319,69 @@ static cg_status read_all(gltf_document *doc, const gltf_accessor *a, double **v
     return s;
 }
 
+/* p moved by the affine matrix m (glTF node matrices are affine: TRS, or a
+ * matrix whose last row is checked to be 0 0 0 1). */
+static cg_vec3 affine_point(const cg_mat4 *m, cg_vec3 p)
+{
+    return cg_vec3_make(m->m[0][0] * p.x + m->m[0][1] * p.y + m->m[0][2] * p.z + m->m[0][3],
+                        m->m[1][0] * p.x + m->m[1][1] * p.y + m->m[1][2] * p.z + m->m[1][3],
+                        m->m[2][0] * p.x + m->m[2][1] * p.y + m->m[2][2] * p.z + m->m[2][3]);
+}
+
+static cg_vec3 linear_vector(const cg_mat4 *m, cg_vec3 v)
+{
+    return cg_vec3_make(m->m[0][0] * v.x + m->m[0][1] * v.y + m->m[0][2] * v.z,
+                        m->m[1][0] * v.x + m->m[1][1] * v.y + m->m[1][2] * v.z,
+                        m->m[2][0] * v.x + m->m[2][1] * v.y + m->m[2][2] * v.z);
+}
+
+static cg_status read_positions(gltf_document *doc, const primitive *p, filling *f)
+{
+    /* straight into the mesh: a cg_vec3 array is an array of doubles */
+    cg_vec3 *out = f->mesh->positions + f->vertex;
+    cg_status s = gltf_accessor_read_doubles(doc, &p->position, &out->x);
+    const cg_mat4 *world = &f->instance->world;
+    for (size_t i = 0; s == CG_OK && i < p->position.count; i++) {
+        cg_vec3 q = out[i];
+        if (mesh_nonfinite_axis(q) >= 0)
+            return cg_error_set(doc->err, CG_EFORMAT,
+                                "%s: accessors[%zu]: element %zu: expected a finite POSITION, got "
+                                "(%g, %g, %g)",
+                                doc->name, p->position.index, i, q.x, q.y, q.z);
+        if (!f->identity)
+            out[i] = affine_point(world, q);
+        if (mesh_nonfinite_axis(out[i]) >= 0)
+            return cg_error_set(doc->err, CG_ERANGE,
+                                "%s: nodes[%zu]: the world transform takes POSITION element %zu "
+                                "of accessors[%zu] beyond the range of doubles",
+                                doc->name, f->instance->node, i, p->position.index);
+    }
+    return s;
+}
+
 static cg_status fill_vertices(gltf_document *doc, const primitive *p, filling *f)
 {
     cg_mesh *mesh = f->mesh;
     size_t base = f->vertex, n = p->position.count;
-    double *values;
-    cg_status s = read_all(doc, &p->position, &values);
-    if (s != CG_OK)
-        return s;
-    for (size_t i = 0; i < n && s == CG_OK; i++) {
-        cg_vec3 q = cg_vec3_make(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
-        if (mesh_nonfinite_axis(q) >= 0)
-            s = cg_error_set(doc->err, CG_EFORMAT,
-                             "%s: accessors[%zu]: element %zu: expected a finite POSITION, got "
-                             "(%g, %g, %g)",
-                             doc->name, p->position.index, i, q.x, q.y, q.z);
-        mesh->positions[base + i] = cg_mat4_transform_point(f->instance->world, q);
-        if (s == CG_OK && mesh_nonfinite_axis(mesh->positions[base + i]) >= 0)
-            s = cg_error_set(doc->err, CG_ERANGE,
-                             "%s: nodes[%zu]: the world transform takes POSITION element %zu of "
-                             "accessors[%zu] beyond the range of doubles",
-                             doc->name, f->instance->node, i, p->position.index);
-    }
-    free(values);
-    if (s == CG_OK && mesh->normals && (s = read_all(doc, &p->normal, &values)) == CG_OK) {
+    cg_status s = read_positions(doc, p, f);
+    if (s == CG_OK && mesh->normals
+        && (s = gltf_accessor_read_doubles(doc, &p->normal, &mesh->normals[base].x)) == CG_OK) {
         for (size_t i = 0; i < n; i++) {
-            cg_vec3 v = cg_vec3_make(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
-            v = cg_mat4_transform_vector(f->normal_matrix, v);
+            cg_vec3 v = mesh->normals[base + i];
+            if (!f->identity)
+                v = linear_vector(&f->normal_matrix, v);
             double length = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
             mesh->normals[base + i] = length > 0 && isfinite(length)
                                           ? cg_vec3_make(v.x / length, v.y / length, v.z / length)
                                           : cg_vec3_make(0, 0, 0);
         }
-        free(values);
     }
     if (s == CG_OK && mesh->texcoords && p->has_texcoord
-        && (s = read_all(doc, &p->texcoord, &values)) == CG_OK) {
+        && (s = gltf_accessor_read_doubles(doc, &p->texcoord, &mesh->texcoords[base].x))
+               == CG_OK)
         for (size_t i = 0; i < n; i++)
-            mesh->texcoords[base + i] = cg_vec2_make(values[2 * i], 1.0 - values[2 * i + 1]);
-        free(values);
-    }
+            mesh->texcoords[base + i].y = 1.0 - mesh->texcoords[base + i].y;
+    double *values;
     if (s == CG_OK && mesh->colors && p->has_color
         && (s = read_all(doc, &p->color, &values)) == CG_OK) {
         size_t k = (size_t)p->color.components;
@@ -371,36 +395,27 @@ static cg_status fill_vertices(gltf_document *doc, const primitive *p, filling *
     return s;
 }
 
-static cg_status fill_visit(gltf_document *doc, const primitive *p, size_t mesh_index,
-                            size_t index, void *context)
+/* Reads a primitive's indices into out and checks them against its vertices. */
+static cg_status read_indices(gltf_document *doc, const primitive *p, size_t mesh_index,
+                              size_t index, uint32_t *out)
 {
-    filling *f = context;
-    if (!p->has_position || p->mode < MODE_TRIANGLES)
-        return CG_OK;
-    cg_status s = fill_vertices(doc, p, f);
-    if (s != CG_OK)
-        return s;
-    size_t n = p->has_indices ? p->indices.count : p->position.count;
-    uint32_t *indices = NULL;
-    if (p->has_indices) {
-        if (!(indices = malloc(n * sizeof *indices)))
-            return gltf_out_of_memory(doc);
-        if ((s = gltf_accessor_read_indices(doc, &p->indices, indices)) != CG_OK) {
-            free(indices);
-            return s;
-        }
-        for (size_t i = 0; i < n; i++)
-            if (indices[i] >= p->position.count) {
-                s = cg_error_set(doc->err, CG_EFORMAT,
-                                 "%s: meshes[%zu].primitives[%zu].indices: expected indices below "
-                                 "%zu (the POSITION count), got %u (accessors[%zu], element %zu)",
-                                 doc->name, mesh_index, index, p->position.count, indices[i],
-                                 p->indices.index, i);
-                free(indices);
-                return s;
-            }
-    }
+    cg_status s = gltf_accessor_read_indices(doc, &p->indices, out);
+    for (size_t i = 0; s == CG_OK && i < p->indices.count; i++)
+        if (out[i] >= p->position.count)
+            return cg_error_set(doc->err, CG_EFORMAT,
+                                "%s: meshes[%zu].primitives[%zu].indices: expected indices below "
+                                "%zu (the POSITION count), got %u (accessors[%zu], element %zu)",
+                                doc->name, mesh_index, index, p->position.count, out[i],
+                                p->indices.index, i);
+    return s;
+}
+
+/* The triangles of a primitive into the mesh, from its indices (NULL: the
+ * vertices in order). */
+static void put_triangles(const primitive *p, const uint32_t *indices, filling *f)
+{
     cg_mesh *mesh = f->mesh;
+    uint32_t material = p->material == SIZE_MAX ? CG_MESH_NO_MATERIAL : (uint32_t)p->material;
     for (size_t t = 0; t < p->triangles; t++) {
         size_t corner[3];
         if (p->mode == MODE_TRIANGLES) {
@@ -416,24 +431,48 @@ static cg_status fill_visit(gltf_document *doc, const primitive *p, size_t mesh_
             corner[2] = swap;
         }
         size_t face = f->triangle + t;
-        for (int k = 0; k < 3; k++) {
-            size_t v = indices ? indices[corner[k]] : corner[k];
-            mesh->face_indices[3 * face + (size_t)k] = (uint32_t)(f->vertex + v);
-        }
+        uint32_t v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = (uint32_t)(f->vertex + (indices ? indices[corner[k]] : corner[k]));
+        /* indices may be this very array (TRIANGLES read in place): write after reading */
+        for (int k = 0; k < 3; k++)
+            mesh->face_indices[3 * face + (size_t)k] = v[k];
         mesh->face_offsets[face + 1] = (uint32_t)(3 * (face + 1));
         if (mesh->face_materials)
-            mesh->face_materials[face]
-                = p->material == SIZE_MAX ? CG_MESH_NO_MATERIAL : (uint32_t)p->material;
+            mesh->face_materials[face] = material;
     }
-    free(indices);
+}
+
+static cg_status fill_visit(gltf_document *doc, const primitive *p, size_t mesh_index,
+                            size_t index, void *context)
+{
+    filling *f = context;
+    if (!p->has_position || p->mode < MODE_TRIANGLES)
+        return CG_OK;
+    cg_status s = fill_vertices(doc, p, f);
+    if (s != CG_OK)
+        return s;
+    uint32_t *indices = NULL, *scratch = NULL;
+    if (p->has_indices && p->mode == MODE_TRIANGLES) {
+        /* as many indices as corners: read them where the corners go */
+        indices = f->mesh->face_indices + 3 * f->triangle;
+    } else if (p->has_indices) {
+        if (!(indices = scratch = malloc(p->indices.count * sizeof *indices)))
+            return gltf_out_of_memory(doc);
+    }
+    if (indices)
+        s = read_indices(doc, p, mesh_index, index, indices);
+    if (s == CG_OK)
+        put_triangles(p, indices, f);
+    free(scratch);
     f->vertex += p->position.count;
     f->triangle += p->triangles;
-    return CG_OK;
+    return s;
 }
 
 cg_status gltf_fill_mesh(gltf_document *doc, const gltf_instance_array *instances, cg_mesh *mesh)
 {
-    filling f = {mesh, NULL, cg_mat4_identity(), 0, 0, 0};
+    filling f = {mesh, NULL, cg_mat4_identity(), 0, 0, 0, 0};
     if (mesh->colors)
         for (size_t i = 0; i < mesh->vertex_count; i++) {
             cg_rgbaf white = {1, 1, 1, 1};
@@ -447,6 +486,8 @@ cg_status gltf_fill_mesh(gltf_document *doc, const gltf_instance_array *instance
         else
             f.normal_matrix = f.instance->world; /* singular: the mesh is flat anyway */
         f.mirrored = cg_mat4_determinant(f.instance->world) < 0;
+        cg_mat4 identity = cg_mat4_identity();
+        f.identity = memcmp(&identity, &f.instance->world, sizeof identity) == 0;
         cg_status s = each_primitive(doc, f.instance->mesh, fill_visit, &f);
         if (s != CG_OK)
             return s;

@@ -184,8 +184,9 @@ typedef enum cg_mesh_format {
     CG_MESH_FORMAT_PLY,         /* loading: any PLY; saving: binary little-endian */
     CG_MESH_FORMAT_PLY_ASCII,   /* saving: ASCII PLY (loading: same as CG_MESH_FORMAT_PLY) */
     CG_MESH_FORMAT_PLY_BINARY,  /* saving: binary little-endian PLY */
-    CG_MESH_FORMAT_STL,         /* loading only: ASCII or binary, told apart by content */
-    CG_MESH_FORMAT_GLTF         /* loading only: .gltf (JSON) or .glb (binary), by content */
+    CG_MESH_FORMAT_STL,         /* loading: ASCII or binary, by content; saving: binary */
+    CG_MESH_FORMAT_GLTF         /* loading: .gltf (JSON) or .glb (binary), by content;
+                                   saving: .glb */
 } cg_mesh_format;
 
 /* Largest file accepted, after gzip decompression: 4 GiB. */
@@ -212,8 +213,13 @@ cg_status cg_mesh_load_memory(const void *bytes, size_t size, const char *name,
 
 /* Writes the mesh to path through a temporary file renamed into place, so
  * an existing file is replaced only by a complete one.  Numbers are written
- * so that they read back exactly (positions as doubles in PLY).  OBJ face
- * colours go to a material library PATH-without-.obj.mtl beside it. */
+ * so that they read back exactly (positions as doubles in PLY), but in STL
+ * and glTF, which hold floats.  OBJ face colours go to a material library
+ * PATH-without-.obj.mtl beside it.  Each format keeps what it carries: OFF
+ * positions, normals, colours, texture coordinates and face colours; STL
+ * the triangles (faces triangulated); glTF (.glb) the triangles, normals,
+ * texture coordinates, vertex colours and the material table's factors,
+ * one primitive per material (texture maps are not written). */
 cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,
                        cg_error *err);
 

@@ -199,6 +199,12 @@ cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **o
 cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
 
+/* Writers beside save.c's OBJ and PLY: OFF and binary STL (save_off_stl.c),
+ * glTF binary (gltf_write.c).  The mesh is valid (cg_mesh_save checks). */
+cg_status off_write(const cg_mesh *m, const char *path, cg_error *err);
+cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err);
+cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err);
+
 /* glTF 2.0, .gltf or .glb (gltf.c); directory as for obj_read. */
 cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,
                     const char *directory, cg_mesh **out, cg_error *err);

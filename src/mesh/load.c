@@ -1,6 +1,7 @@
 /* Loading mesh files: reading (and gunzipping) the bytes, telling the format
  * from the content or the name, and calling the reader. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -35,22 +36,15 @@ cg_mesh_format cg_mesh_format_from_path(const char *path)
     return CG_MESH_FORMAT_AUTO;
 }
 
-/* Appends to a growing buffer, doubling; fails beyond CG_MESH_MAX_FILE_BYTES. */
+/* Appends to a growing buffer (src/core/array.h), keeping one spare byte
+ * after the data; fails beyond CG_MESH_MAX_FILE_BYTES. */
 static cg_status append(unsigned char **buffer, size_t *size, size_t *capacity,
                         const unsigned char *bytes, size_t n)
 {
     if (n > CG_MESH_MAX_FILE_BYTES - *size)
         return CG_ERANGE;
-    if (*capacity - *size < n) {
-        size_t c = *capacity ? *capacity : 65536;
-        while (c - *size < n)
-            c *= 2;
-        unsigned char *grown = realloc(*buffer, c + 1);
-        if (!grown)
-            return CG_ENOMEM;
-        *buffer = grown;
-        *capacity = c;
-    }
+    if (core_array_reserve((void **)buffer, capacity, *size + n + 1, 1) != CG_OK)
+        return CG_ENOMEM;
     memcpy(*buffer + *size, bytes, n);
     *size += n;
     return CG_OK;
@@ -139,11 +133,11 @@ cg_status mesh_read_file(const char *path, unsigned char **bytes, size_t *size, 
     struct stat st;
     if (fstat(fileno(file), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0
         && (uint64_t)st.st_size <= CG_MESH_MAX_FILE_BYTES) {
-        capacity = (size_t)st.st_size;
-        if (!(buffer = malloc(capacity + 1)))
+        capacity = (size_t)st.st_size + 1; /* the spare byte append keeps too */
+        if (!(buffer = malloc(capacity)))
             s = CG_ENOMEM;
-        while (s == CG_OK && used < capacity
-               && (got = fread(buffer + used, 1, capacity - used, file)) > 0)
+        while (s == CG_OK && used < capacity - 1
+               && (got = fread(buffer + used, 1, capacity - 1 - used, file)) > 0)
             used += got;
     }
     while (s == CG_OK && (got = fread(chunk, 1, sizeof chunk, file)) > 0)

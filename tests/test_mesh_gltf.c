@@ -658,6 +658,26 @@ static void broken_files(void)
          "the number 2"},
         {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"alphaMode\": \"CLEAR\"}]}",
          "materials[0].alphaMode: expected \"OPAQUE\", \"MASK\" or \"BLEND\""},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"cameras\": [{\"type\": \"perspective\", "
+         "\"perspective\": {\"yfov\": 0.8, \"znear\": 0}}]}",
+         "cameras[0].perspective: expected znear > 0"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"cameras\": [{\"type\": \"orthographic\", "
+         "\"orthographic\": {\"xmag\": 1, \"ymag\": 1, \"znear\": 2, \"zfar\": 1}}]}",
+         "cameras[0].orthographic: expected znear >= 0 and zfar > znear"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"cameras\": [{\"type\": \"fisheye\"}]}",
+         "cameras[0].type: expected \"perspective\" or \"orthographic\""},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"extensions\": {\"KHR_lights_punctual\": "
+         "{\"lights\": [{\"type\": \"spot\", \"spot\": {\"innerConeAngle\": 1, "
+         "\"outerConeAngle\": 0.5}}]}}}",
+         "lights[0].spot: expected 0 <= innerConeAngle < outerConeAngle <= pi/2"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"extensions\": {\"KHR_lights_punctual\": "
+         "{\"lights\": [{\"type\": \"point\", \"intensity\": -1}]}}}",
+         "lights[0]: expected intensity >= 0"},
+        {"{\"asset\": {\"version\": \"2.0\"}, \"extensions\": {\"KHR_lights_punctual\": "
+         "{\"lights\": [{\"type\": \"point\"}]}}, \"nodes\": [{\"extensions\": "
+         "{\"KHR_lights_punctual\": {\"light\": 1}}}]}",
+         "nodes[0].extensions.KHR_lights_punctual.light: expected an index into "
+         "KHR_lights_punctual.lights (0 to 0), got the number 1"},
         {"{\"asset\": {\"version\": \"2.0\"}, \"samplers\": [{\"wrapS\": 1}]}",
          "samplers[0].wrapS: expected 33071 (CLAMP_TO_EDGE)"},
         {"{\"asset\": {\"version\": \"2.0\"}, \"images\": [{}], \"textures\": [{\"source\": 0}],"
@@ -693,6 +713,17 @@ static void broken_files(void)
                   && strstr(err.message, "zeros.gltf: accessors[0].count: 4000000000 MAT4 "
                                          "elements without a bufferView"),
               "%s", err.message);
+    const char *lit = "{\"asset\": {\"version\": \"2.0\"}, \"cameras\": [{\"type\": "
+                      "\"perspective\", \"perspective\": {\"yfov\": 0.8, \"znear\": 0.1}}], "
+                      "\"extensions\": {\"KHR_lights_punctual\": {\"lights\": [{\"type\": "
+                      "\"spot\", \"color\": [1, 0.5, 0], \"spot\": {}}]}}, \"nodes\": "
+                      "[{\"camera\": 0, \"extensions\": {\"KHR_lights_punctual\": {\"light\": "
+                      "0}}}]}";
+    mesh = NULL;
+    CHECK_MSG(load_text(lit, "lit.gltf", &mesh, &err) == CG_OK, "%s", err.message);
+    CHECK(mesh && mesh->notes && strstr(mesh->notes, "lit.gltf: 1 camera(s)")
+          && strstr(mesh->notes, "1 KHR_lights_punctual light(s)"));
+    cg_mesh_free(mesh);
     for (size_t i = 0; i < sizeof documents / sizeof documents[0]; i++) {
         mesh = NULL;
         cg_status s = load_text(documents[i].text, "doc.gltf", &mesh, &err);

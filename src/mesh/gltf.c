@@ -263,6 +263,8 @@ static cg_status build_mesh(gltf_document *doc, cg_mesh **out)
         s = gltf_accessor_describe(doc, i, &accessor);
     }
     if (s == CG_OK)
+        s = gltf_check_cameras_and_lights(doc);
+    if (s == CG_OK)
         s = gltf_collect_instances(doc, &instances);
     if (s == CG_OK)
         s = gltf_count_primitives(doc, &instances, &totals);

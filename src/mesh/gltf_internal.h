@@ -7,6 +7,9 @@
  *   gltf_accessor.c  accessors: component types, strides, normalized, sparse
  *   gltf_scene.c     scenes, the node hierarchy and its world transforms
  *   gltf_primitive.c primitives to triangles in world space
+ *   gltf_material.c  materials, textures, images, samplers
+ *   gltf_camera.c    cameras and KHR_lights_punctual lights (checked)
+ *   gltf_write.c     the .glb writer
  *
  * Every message starts with the file name and the JSON path of the value at
  * fault ("box.gltf: accessors[2].count: expected ..."). */
@@ -190,6 +193,10 @@ cg_status gltf_count_primitives(gltf_document *doc, const gltf_instance_array *i
  * space. */
 cg_status gltf_fill_mesh(gltf_document *doc, const gltf_instance_array *instances,
                          cg_mesh *mesh);
+
+/* ---- cameras and lights (gltf_camera.c) ------------------------------------ */
+/* Checks every camera and KHR_lights_punctual light. */
+cg_status gltf_check_cameras_and_lights(gltf_document *doc);
 
 /* ---- materials (gltf_material.c) ----------------------------------------- */
 /* Checks materials, textures, images and samplers against the

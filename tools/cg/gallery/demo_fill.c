@@ -1,7 +1,7 @@
 /* Gallery: filling (chapter 10) - even-odd against non-zero, joins and caps,
  * dashes and gradients, a flood-filled maze, 4- against 8-connectivity. */
 #include "demo.h"
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "cg/fill.h"
 #include "../../tests/maze.h"
 

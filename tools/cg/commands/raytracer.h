@@ -1,12 +1,12 @@
 /* The dispatch point of `cg render --algorithm raytrace`.
  *
- * render_request.c parses the options, trace_command.c loads the mesh, fixes
+ * render_request.c parses the options, raytrace_run.c loads the mesh, fixes
  * the camera (framed to the mesh unless --eye was given; options->frame_camera
- * is then 0) and calls render_raytrace_create_extra (trace_command.h) and the
- * two functions below; render_raytrace.c implements them with the ray tracer
+ * is then 0) and calls render_raytrace_create_extra (raytrace_run.h) and the
+ * two functions below; raytracer.c implements them with the ray tracer
  * (module trace). */
-#ifndef CG_TOOL_RENDER_RAYTRACE_H
-#define CG_TOOL_RENDER_RAYTRACE_H
+#ifndef CG_TOOL_RAYTRACER_H
+#define CG_TOOL_RAYTRACER_H
 
 #include "cg/mesh.h"
 #include "cg/render.h"

@@ -1,7 +1,7 @@
 /* Gallery: the half-edge structure of chapter 9 - half-edges drawn as
  * arrows inside their faces, the one-ring of a vertex, and Loop and
  * Catmull-Clark subdivision levels 0 to 3. */
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "cg/hemesh.h"
 #include "cg/xform.h"
 

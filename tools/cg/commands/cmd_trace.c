@@ -1,4 +1,6 @@
-/* cg trace line X1 Y1 X2 Y2 | circle R: Algorithms 1 and 2 step by step. */
+/* cg trace line X1 Y1 X2 Y2 | circle R: Algorithms 1 and 2 step by step
+ * (a trace of the algorithm, not the ray tracer: that is cg trace-render,
+ * cmd_trace_render.c and raytrace_run.c). */
 #include "cli.h"
 #include "command.h"
 #include "cg/draw.h"

@@ -6,7 +6,7 @@
 #define CG_TOOL_RENDER_REQUEST_H
 
 #include "options.h"
-#include "trace_command.h"
+#include "raytrace_run.h"
 
 /* --algorithm, in the order of its choices. */
 typedef enum render_algorithm {

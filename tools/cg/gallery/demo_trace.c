@@ -1,7 +1,7 @@
 /* Gallery: ray tracing (section 5.4) - the classic scene of glass and mirror
  * spheres over a checkered floor, and a scanned mesh with shadows. */
 #include "demo.h"
-#include "trace_command.h"
+#include "raytrace_run.h"
 #include "cg/color.h"
 
 #include <stdio.h>

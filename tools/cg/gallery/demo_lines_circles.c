@@ -1,5 +1,5 @@
 /* Gallery: scan conversion of lines, circles and ellipses (sections 2.1-2.2). */
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "cg/draw.h"
 
 #include <stdio.h>
@@ -148,4 +148,4 @@ static int render(demo_context *context)
            || antialiased(context);
 }
 
-const demo_section demo_section_draw = {2, "Lines, circles and ellipses", render};
+const demo_section demo_section_lines_circles = {2, "Lines, circles and ellipses", render};

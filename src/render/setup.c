@@ -1,5 +1,9 @@
-/* Triangle setup and the edge-function rasterizer with fixed-point vertices
- * and the top-left fill rule. */
+/* Triangle setup, between clipping and the rasterizer: the corners snapped
+ * to the 1/256-pixel grid, ordered clockwise on the screen (back faces
+ * culled by the sign of the area), the pixel box and 1 / area the
+ * rasterizer's edge functions need; tiny triangles that cover no pixel
+ * centre are dropped here.  Also cg_raster_triangle, one triangle through
+ * the same edge functions and top-left rule for a caller's span function. */
 #include "internal.h"
 
 #include <string.h>

@@ -1,13 +1,14 @@
-/* `cg trace-render`: the ray tracer's own command.  It takes the options of
- * `cg render` (into a cg_render_options, as cmd_render.c does) plus the ray
- * tracer's (--spp, --depth, --stats, --no-shadows, --floor, --scene), and
- * renders through the same hook as `cg render --algorithm raytrace`
- * (render_raytrace.h), extended here with those extra settings. */
-#ifndef CG_TOOL_TRACE_COMMAND_H
-#define CG_TOOL_TRACE_COMMAND_H
+/* The ray tracer's path of `cg render --algorithm raytrace` and of its alias
+ * `cg trace-render` on a mesh or the classic scene: the settings (those of
+ * `cg render` plus the ray tracer's --spp, --depth, --stats, --no-shadows,
+ * --floor, --scene), the camera, the frames and their timing, the output.
+ * The tracer itself is raytracer.h; `cg trace` (cmd_trace.c) is another
+ * thing, the step-by-step traces of Bresenham's algorithms. */
+#ifndef CG_TOOL_RAYTRACE_RUN_H
+#define CG_TOOL_RAYTRACE_RUN_H
 
 #include "render_options.h"
-#include "render_raytrace.h"
+#include "raytracer.h"
 #include "cg/render.h"
 
 /* What the ray tracer adds to cg_render_options. */
@@ -21,7 +22,7 @@ typedef struct raytrace_extra {
 
 void raytrace_extra_default(raytrace_extra *extra);
 
-/* Prepares the ray tracer (render_raytrace.h) with the extra settings; mesh is ignored (may be
+/* Prepares the ray tracer (raytracer.h) with the extra settings; mesh is ignored (may be
  * NULL) for the classic scene. */
 int render_raytrace_create_extra(const cg_mesh *mesh, const cg_render_options *options,
                                  const raytrace_extra *extra, render_raytracer **out);

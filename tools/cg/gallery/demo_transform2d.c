@@ -1,5 +1,5 @@
 /* Gallery: 2D transformations in homogeneous coordinates (chapter 4). */
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "cg/xform.h"
 
 #define SIZE 300

@@ -100,7 +100,7 @@ cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, 
     return wire_edges(image->width, image->height, models, model_count, transform, draw_edge, image);
 }
 
-#include "draw_demo.h"
+#include "script_pictures.h"
 
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /* Gallery helpers of the chapter 2 sections: pictures made by `cg draw`
  * scripts, and magnified pixel grids for showing the algorithms at work. */
-#ifndef CG_TOOL_DRAW_DEMO_H
-#define CG_TOOL_DRAW_DEMO_H
+#ifndef CG_TOOL_SCRIPT_PICTURES_H
+#define CG_TOOL_SCRIPT_PICTURES_H
 
 #include "demo.h"
 #include "cg/image.h"

@@ -1,13 +1,13 @@
 /* `cg render --algorithm raytrace` (and its alias `cg trace-render`): the
- * ray tracer behind the hook of render_raytrace.h.  The mesh is lit as the rasterizer
+ * ray tracer behind the hook of raytracer.h.  The mesh is lit as the rasterizer
  * lights it (cg_render_options: white ambient light times --ambient, kd 1,
  * Blinn-Phong --specular and --shininess, the --light-dir lights or the key
  * light from the camera's upper left), so both renderers give the same
  * picture apart from shadows and the ray tracer's reflections. */
-#include "render_raytrace.h"
+#include "raytracer.h"
 
 #include "cli.h"
-#include "trace_command.h"
+#include "raytrace_run.h"
 #include "cg/light.h"
 #include "cg/trace.h"
 

@@ -2,7 +2,7 @@
  * (Figure 11.6), fill rules, a mesh cut by a box and frustum culling. */
 #include "clip_view.h"
 #include "demo.h"
-#include "draw_demo.h"
+#include "script_pictures.h"
 
 #include "cg/xform.h"
 

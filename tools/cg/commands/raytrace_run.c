@@ -1,7 +1,7 @@
 /* The ray tracer's options, camera, timing and output around the ray tracer
- * hook (see trace_command.h), for `cg render --algorithm raytrace` and its
+ * hook (see raytrace_run.h), for `cg render --algorithm raytrace` and its
  * alias `cg trace-render`. */
-#include "trace_command.h"
+#include "raytrace_run.h"
 
 #include "cli.h"
 #include "render_progress.h"

@@ -112,15 +112,9 @@ static void save(demo_context *context, const cg_mesh *mesh, const char *name)
     cg_mesh_save(mesh, path, CG_MESH_FORMAT_AUTO, NULL);
 }
 
-static int render_pipeline(demo_context *context)
+/* The bunny under each option of the pipeline. */
+static int bunny_variants(demo_context *context, const cg_mesh *bunny)
 {
-    cg_mesh *bunny = load_bunny();
-    int status = 0;
-    if (bunny && demo_copy_input(context, BUNNY) != 0) {
-        cg_mesh_free(bunny);
-        return 1;
-    }
-    /* The bunny under each option of the pipeline. */
     static const struct variant {
         const char *file, *caption, *arguments;
         cg_render_algorithm algorithm;
@@ -146,10 +140,10 @@ static int render_pipeline(demo_context *context)
          " --edges --edge-color '#1b1b1c' --shading flat", CG_RENDER_ZBUFFER, CG_EDGES_OVERLAY,
          CG_CULL_BACK, CG_SHADING_FLAT},
     };
-    cg_render_options o;
-    for (size_t i = 0; bunny && i < sizeof variants / sizeof variants[0]; i++) {
+    int status = 0;
+    for (size_t i = 0; i < sizeof variants / sizeof variants[0]; i++) {
         const struct variant *v = &variants[i];
-        o = base_options();
+        cg_render_options o = base_options();
         o.algorithm = v->algorithm;
         o.edges = v->edges;
         o.cull = v->cull;
@@ -161,35 +155,43 @@ static int render_pipeline(demo_context *context)
                  v->file);
         status |= shot(context, bunny, &o, v->file, v->caption, command);
     }
-    o = base_options();
+    return status;
+}
+
+/* A parallel view framed to the bunny. */
+static int bunny_orthographic(demo_context *context, const cg_mesh *bunny)
+{
+    cg_render_options o = base_options();
     o.camera.orthographic = 1;
     o.camera.eye = cg_vec3_make(1, 0.6, 1);
-    if (bunny) {
-        /* The height framing chose, so that the command repeats the view. */
-        cg_renderer *framed;
-        cg_image *probe;
-        char command[256];
-        double height = 0.2;
-        if (cg_renderer_create(bunny, &o, &framed, NULL) == CG_OK) {
-            if (cg_image_create(&probe, W, H, CG_PIXEL_RGBA8) == CG_OK
-                && cg_renderer_draw(framed, probe) == CG_OK)
-                height = cg_renderer_camera(framed).ortho_height;
-            cg_image_free(probe);
-            cg_renderer_free(framed);
-        }
-        o.frame_camera = 1;
-        snprintf(command, sizeof command,
-                 "cg render " BUNNY " --size 320x240 --view-from 1,0.6,1 --ortho %.9g -o render-ortho.png",
-                 height);
-        status |= shot(context, bunny, &o, "render-ortho.png",
-                       "Orthographic (parallel) camera from the front right, framed to the mesh",
-                       command);
+    /* The height framing chose, so that the command repeats the view. */
+    cg_renderer *framed;
+    cg_image *probe;
+    char command[256];
+    double height = 0.2;
+    if (cg_renderer_create(bunny, &o, &framed, NULL) == CG_OK) {
+        if (cg_image_create(&probe, W, H, CG_PIXEL_RGBA8) == CG_OK
+            && cg_renderer_draw(framed, probe) == CG_OK)
+            height = cg_renderer_camera(framed).ortho_height;
+        cg_image_free(probe);
+        cg_renderer_free(framed);
     }
-    /* The depth buffer itself. */
-    o = base_options();
+    o.frame_camera = 1;
+    snprintf(command, sizeof command,
+             "cg render " BUNNY " --size 320x240 --view-from 1,0.6,1 --ortho %.9g -o render-ortho.png",
+             height);
+    return shot(context, bunny, &o, "render-ortho.png",
+                "Orthographic (parallel) camera from the front right, framed to the mesh", command);
+}
+
+/* The depth buffer itself. */
+static int bunny_depth(demo_context *context, const cg_mesh *bunny)
+{
+    cg_render_options o = base_options();
     cg_renderer *r;
     cg_image *image = NULL;
-    if (bunny && cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
+    int status = 0;
+    if (cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
         if (cg_image_create(&image, W, H, CG_PIXEL_RGBA8) == CG_OK
             && cg_renderer_draw(r, image) == CG_OK && cg_renderer_depth_image(r, image) == CG_OK)
             status |= demo_add(context, "render-depth.png", image,
@@ -198,41 +200,51 @@ static int render_pipeline(demo_context *context)
         cg_image_free(image);
         cg_renderer_free(r);
     }
+    return status;
+}
 
-    /* Painter's: where plain depth sorting fails. */
+/* Painter's: where plain depth sorting fails. */
+static int depth_sort_cycle(demo_context *context)
+{
     cg_mesh *cycle = sticks();
-    if (cycle) {
-        save(context, cycle, "sticks.obj");
-        o = base_options();
-        o.cull = CG_CULL_NONE;
-        o.camera.eye = cg_vec3_make(0, 0, 4);
-        o.ambient = 0.35;
-        static const struct {
-            cg_render_algorithm algorithm;
-            const char *file, *caption, *arguments;
-        } sorts[] = {
-            {CG_RENDER_DEPTH_SORT, "render-sort-naive.png",
-             "Plain depth sort: each stick lies over the next, so any order of whole polygons is "
-             "wrong somewhere", " --algorithm depth-sort"},
-            {CG_RENDER_PAINTER, "render-sort-painter.png",
-             "Painter's with Newell's tests: the cycle is found and broken by splitting a polygon "
-             "along another's plane", " --algorithm painter"},
-            {CG_RENDER_ZBUFFER, "render-sort-zbuffer.png",
-             "The z-buffer on the same sticks: per-pixel depth needs no ordering", ""},
-        };
-        for (int i = 0; i < 3; i++) {
-            char command[256];
-            o.algorithm = sorts[i].algorithm;
-            snprintf(command, sizeof command,
-                     "cg render sticks.obj --size 320x240 --cull none --ambient 0.35%s -o %s",
-                     sorts[i].arguments, sorts[i].file);
-            status |= shot(context, cycle, &o, sorts[i].file, sorts[i].caption, command);
-        }
-        cg_mesh_free(cycle);
+    if (!cycle)
+        return 0;
+    save(context, cycle, "sticks.obj");
+    cg_render_options o = base_options();
+    o.cull = CG_CULL_NONE;
+    o.camera.eye = cg_vec3_make(0, 0, 4);
+    o.ambient = 0.35;
+    static const struct {
+        cg_render_algorithm algorithm;
+        const char *file, *caption, *arguments;
+    } sorts[] = {
+        {CG_RENDER_DEPTH_SORT, "render-sort-naive.png",
+         "Plain depth sort: each stick lies over the next, so any order of whole polygons is "
+         "wrong somewhere", " --algorithm depth-sort"},
+        {CG_RENDER_PAINTER, "render-sort-painter.png",
+         "Painter's with Newell's tests: the cycle is found and broken by splitting a polygon "
+         "along another's plane", " --algorithm painter"},
+        {CG_RENDER_ZBUFFER, "render-sort-zbuffer.png",
+         "The z-buffer on the same sticks: per-pixel depth needs no ordering", ""},
+    };
+    int status = 0;
+    for (int i = 0; i < 3; i++) {
+        char command[256];
+        o.algorithm = sorts[i].algorithm;
+        snprintf(command, sizeof command,
+                 "cg render sticks.obj --size 320x240 --cull none --ambient 0.35%s -o %s",
+                 sorts[i].arguments, sorts[i].file);
+        status |= shot(context, cycle, &o, sorts[i].file, sorts[i].caption, command);
     }
+    cg_mesh_free(cycle);
+    return status;
+}
 
-    /* Clipping: the camera inside a room, walls crossing w = 0. */
+/* Clipping: the camera inside a room, walls crossing w = 0. */
+static int camera_inside_room(demo_context *context)
+{
     cg_mesh *room = NULL, *ball = NULL, *scene = NULL;
+    int status = 0;
     if (cg_mesh_box(cg_vec3_make(-2, -1, -2), cg_vec3_make(2, 1.5, 2), &room) == CG_OK
         && cg_mesh_torus(48, 24, 0.6, 0.25, &ball) == CG_OK) {
         for (size_t i = 0; i < ball->vertex_count; i++)
@@ -241,7 +253,7 @@ static int render_pipeline(demo_context *context)
     }
     if (scene) {
         save(context, scene, "room.obj");
-        o = base_options();
+        cg_render_options o = base_options();
         o.frame_camera = 0;
         o.cull = CG_CULL_NONE;
         o.shading = CG_SHADING_PHONG;
@@ -259,6 +271,24 @@ static int render_pipeline(demo_context *context)
     cg_mesh_free(room);
     cg_mesh_free(ball);
     cg_mesh_free(scene);
+    return status;
+}
+
+static int render_pipeline(demo_context *context)
+{
+    cg_mesh *bunny = load_bunny();
+    int status = 0;
+    if (bunny && demo_copy_input(context, BUNNY) != 0) {
+        cg_mesh_free(bunny);
+        return 1;
+    }
+    if (bunny) {
+        status |= bunny_variants(context, bunny);
+        status |= bunny_orthographic(context, bunny);
+        status |= bunny_depth(context, bunny);
+    }
+    status |= depth_sort_cycle(context);
+    status |= camera_inside_room(context);
     cg_mesh_free(bunny);
     return status;
 }

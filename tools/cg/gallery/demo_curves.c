@@ -1,5 +1,5 @@
 /* Gallery: parametric cubic curves and Bézier curves (section 2.3). */
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "cg/curve.h"
 #include "cg/draw.h"
 

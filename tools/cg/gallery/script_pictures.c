@@ -1,5 +1,5 @@
 /* Gallery helpers of the chapter 2 sections. */
-#include "draw_demo.h"
+#include "script_pictures.h"
 #include "draw_script_run.h"
 
 #include <stdarg.h>

@@ -202,150 +202,175 @@ static int have_display(void)
 #endif
 }
 
+/* Loads the model, frames the view of the whole of it (or takes the scene's
+ * camera) and makes the renderer and the frame. */
+static int viewer_open(viewer *v, const char *path, int threads, int width, int height)
+{
+    cg_mesh *mesh = NULL;
+    int status = load(path, threads, &mesh, &v->options);
+    if (status != CLI_OK)
+        return status;
+    cg_vec3 lo, hi;
+    if (cg_mesh_bounds(mesh, &lo, &hi) != CG_OK) {
+        lo = cg_vec3_make(-1, -1, -1);
+        hi = cg_vec3_make(1, 1, 1);
+    }
+    cg_camera framed = v->options.camera;
+    if (!render_scene_is_scene(path)) {
+        framed.eye = cg_vec3_add(framed.target, cg_vec3_make(0, 0, 1));
+        cg_camera_frame(&framed, lo, hi, (double)width / height);
+    }
+    v->options.camera = framed;
+    v->lo = lo;
+    v->hi = hi;
+    v->target = framed.target;
+    cg_vec3 offset = cg_vec3_sub(framed.eye, framed.target);
+    v->distance = cg_vec3_length(offset);
+    v->yaw = atan2(offset.x, offset.z);
+    v->pitch = asin(offset.y / v->distance);
+    cg_error err;
+    if (cg_renderer_create(mesh, &v->options, &v->renderer, &err) != CG_OK) {
+        cg_mesh_free(mesh);
+        return cli_fail("%s: %s", path, err.message);
+    }
+    cg_mesh_free(mesh);
+    if (cg_image_create(&v->frame, width, height, CG_PIXEL_RGBA8) != CG_OK) {
+        cg_renderer_free(v->renderer);
+        return cli_fail("view: cannot make a %dx%d frame", width, height);
+    }
+    return CLI_OK;
+}
+
+/* The window, its renderer and the texture the frame is copied to. */
+typedef struct window {
+    SDL_Window *window;
+    SDL_Renderer *screen;
+    SDL_Texture *texture;
+} window;
+
+static int window_open(window *w, const char *path, int width, int height)
+{
+    memset(w, 0, sizeof *w);
+    if (SDL_Init(SDL_INIT_VIDEO) != 0)
+        return cli_fail("view: cannot open a window: %s", SDL_GetError());
+    char title[512];
+    snprintf(title, sizeof title, "cg view - %s", path);
+    w->window = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
+                                 height, SDL_WINDOW_SHOWN);
+    w->screen = w->window ? SDL_CreateRenderer(w->window, -1, 0) : NULL;
+    if (!w->screen && w->window)
+        w->screen = SDL_CreateRenderer(w->window, -1, SDL_RENDERER_SOFTWARE);
+    /* ABGR8888 is R, G, B, A in memory order on little-endian machines, and
+     * RGBA8888 on big-endian ones: cg's byte order either way. */
+    w->texture = w->screen ? SDL_CreateTexture(w->screen,
+                                               SDL_BYTEORDER == SDL_LIL_ENDIAN ? SDL_PIXELFORMAT_ABGR8888
+                                                                               : SDL_PIXELFORMAT_RGBA8888,
+                                               SDL_TEXTUREACCESS_STREAMING, width, height)
+                           : NULL;
+    if (!w->texture)
+        return cli_fail("view: cannot open a window: %s", SDL_GetError());
+    return CLI_OK;
+}
+
+static void window_close(window *w)
+{
+    if (w->texture)
+        SDL_DestroyTexture(w->texture);
+    if (w->screen)
+        SDL_DestroyRenderer(w->screen);
+    if (w->window)
+        SDL_DestroyWindow(w->window);
+    SDL_Quit();
+}
+
+/* Applies one event; returns 1 when the picture must be drawn again, -1 to
+ * quit.  *dragging is the mouse button held down, or 0. */
+static int handle_event(viewer *v, const SDL_Event *e, int *dragging)
+{
+    switch (e->type) {
+    case SDL_QUIT:
+        return -1;
+    case SDL_KEYDOWN:
+        return key(v, e->key.keysym.sym);
+    case SDL_MOUSEBUTTONDOWN:
+        *dragging = e->button.button;
+        return 0;
+    case SDL_MOUSEBUTTONUP:
+        *dragging = 0;
+        return 0;
+    case SDL_MOUSEMOTION:
+        if (*dragging == SDL_BUTTON_LEFT) {
+            v->yaw -= e->motion.xrel * 0.01;
+            v->pitch = fmax(-1.5, fmin(1.5, v->pitch + e->motion.yrel * 0.01));
+            return 1;
+        }
+        if (*dragging) {
+            pan(v, e->motion.xrel, e->motion.yrel);
+            return 1;
+        }
+        return 0;
+    case SDL_MOUSEWHEEL:
+        v->distance *= pow(0.9, e->wheel.y);
+        return 1;
+    case SDL_WINDOWEVENT:
+        return e->window.event == SDL_WINDOWEVENT_EXPOSED;
+    default:
+        return 0;
+    }
+}
+
+/* Draws and shows a frame whenever the events asked for one, until quit. */
+static int event_loop(viewer *v, window *w)
+{
+    int dirty = 1, dragging = 0;
+    for (;;) {
+        if (dirty) {
+            int status = draw_frame(v);
+            if (status != CLI_OK)
+                return status;
+            SDL_UpdateTexture(w->texture, NULL, v->frame->data, (int)v->frame->stride);
+            SDL_RenderClear(w->screen);
+            SDL_RenderCopy(w->screen, w->texture, NULL, NULL);
+            SDL_RenderPresent(w->screen);
+            dirty = 0;
+        }
+        SDL_Event e;
+        if (!SDL_WaitEvent(&e))
+            return CLI_OK;
+        do {
+            int change = handle_event(v, &e, &dragging);
+            if (change < 0)
+                return CLI_OK;
+            dirty |= change;
+        } while (SDL_PollEvent(&e));
+    }
+}
+
 static int run(int argc, char **argv)
 {
     view_arguments arguments = {{1280, 720}, SDL_GetCPUCount(), "."};
     const char *path = NULL;
     if (cli_parse(&view_syntax, argc, argv, &arguments, &path, NULL) != CLI_OK)
         return CLI_USAGE;
-    const char *shots = arguments.screenshot_dir;
     int width = arguments.size.width, height = arguments.size.height;
-    long threads = arguments.threads;
+    int threads = arguments.threads < 1 ? 1 : arguments.threads > 64 ? 64 : arguments.threads;
     if (!path)
         return cli_usage_error(NAME, "expected a MESH or SCENE file");
-    if (threads < 1)
-        threads = 1;
-    if (threads > 64)
-        threads = 64;
     if (!have_display())
         return cli_fail("view: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are "
                         "unset); run it in a desktop session, or set SDL_VIDEODRIVER to choose a "
                         "video driver");
-
     viewer v;
     memset(&v, 0, sizeof v);
-    v.screenshot_dir = shots;
-    cg_mesh *mesh = NULL;
-    int status = load(path, (int)threads, &mesh, &v.options);
+    v.screenshot_dir = arguments.screenshot_dir;
+    int status = viewer_open(&v, path, threads, width, height);
     if (status != CLI_OK)
         return status;
-    /* Start from the framed view of the whole model (or the scene's camera). */
-    cg_vec3 lo, hi;
-    if (cg_mesh_bounds(mesh, &lo, &hi) != CG_OK) {
-        lo = cg_vec3_make(-1, -1, -1);
-        hi = cg_vec3_make(1, 1, 1);
-    }
-    cg_camera framed = v.options.camera;
-    if (!render_scene_is_scene(path)) {
-        framed.eye = cg_vec3_add(framed.target, cg_vec3_make(0, 0, 1));
-        cg_camera_frame(&framed, lo, hi, (double)width / height);
-    }
-    v.options.camera = framed;
-    v.lo = lo;
-    v.hi = hi;
-    v.target = framed.target;
-    cg_vec3 offset = cg_vec3_sub(framed.eye, framed.target);
-    v.distance = cg_vec3_length(offset);
-    v.yaw = atan2(offset.x, offset.z);
-    v.pitch = asin(offset.y / v.distance);
-    cg_error err;
-    if (cg_renderer_create(mesh, &v.options, &v.renderer, &err) != CG_OK) {
-        cg_mesh_free(mesh);
-        return cli_fail("%s: %s", path, err.message);
-    }
-    cg_mesh_free(mesh);
-    if (cg_image_create(&v.frame, width, height, CG_PIXEL_RGBA8) != CG_OK) {
-        cg_renderer_free(v.renderer);
-        return cli_fail("view: cannot make a %dx%d frame", width, height);
-    }
-
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-        cg_renderer_free(v.renderer);
-        cg_image_free(v.frame);
-        return cli_fail("view: cannot open a window: %s", SDL_GetError());
-    }
-    char title[512];
-    snprintf(title, sizeof title, "cg view - %s", path);
-    SDL_Window *window = SDL_CreateWindow(title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                          width, height, SDL_WINDOW_SHOWN);
-    SDL_Renderer *screen = window ? SDL_CreateRenderer(window, -1, 0) : NULL;
-    if (!screen && window)
-        screen = SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE);
-    /* ABGR8888 is R, G, B, A in memory order on little-endian machines, and
-     * RGBA8888 on big-endian ones: cg's byte order either way. */
-    SDL_Texture *texture = screen ? SDL_CreateTexture(screen,
-                                                      SDL_BYTEORDER == SDL_LIL_ENDIAN ? SDL_PIXELFORMAT_ABGR8888
-                                                                                      : SDL_PIXELFORMAT_RGBA8888,
-                                                      SDL_TEXTUREACCESS_STREAMING, width, height)
-                                  : NULL;
-    if (!texture)
-        status = cli_fail("view: cannot open a window: %s", SDL_GetError());
-
-    int dirty = 1, dragging = 0;
-    while (status == CLI_OK) {
-        if (dirty) {
-            if ((status = draw_frame(&v)) != CLI_OK)
-                break;
-            SDL_UpdateTexture(texture, NULL, v.frame->data, (int)v.frame->stride);
-            SDL_RenderClear(screen);
-            SDL_RenderCopy(screen, texture, NULL, NULL);
-            SDL_RenderPresent(screen);
-            dirty = 0;
-        }
-        SDL_Event e;
-        if (!SDL_WaitEvent(&e))
-            break;
-        do {
-            int change = 0;
-            switch (e.type) {
-            case SDL_QUIT:
-                change = -1;
-                break;
-            case SDL_KEYDOWN:
-                change = key(&v, e.key.keysym.sym);
-                break;
-            case SDL_MOUSEBUTTONDOWN:
-                dragging = e.button.button;
-                break;
-            case SDL_MOUSEBUTTONUP:
-                dragging = 0;
-                break;
-            case SDL_MOUSEMOTION:
-                if (dragging == SDL_BUTTON_LEFT) {
-                    v.yaw -= e.motion.xrel * 0.01;
-                    v.pitch = fmax(-1.5, fmin(1.5, v.pitch + e.motion.yrel * 0.01));
-                    change = 1;
-                } else if (dragging) {
-                    pan(&v, e.motion.xrel, e.motion.yrel);
-                    change = 1;
-                }
-                break;
-            case SDL_MOUSEWHEEL:
-                v.distance *= pow(0.9, e.wheel.y);
-                change = 1;
-                break;
-            case SDL_WINDOWEVENT:
-                change = e.window.event == SDL_WINDOWEVENT_EXPOSED;
-                break;
-            default:
-                break;
-            }
-            if (change < 0) {
-                status = -1;
-                break;
-            }
-            dirty |= change;
-        } while (SDL_PollEvent(&e));
-    }
-    if (status == -1)
-        status = CLI_OK;
-    if (texture)
-        SDL_DestroyTexture(texture);
-    if (screen)
-        SDL_DestroyRenderer(screen);
-    if (window)
-        SDL_DestroyWindow(window);
-    SDL_Quit();
+    window w;
+    status = window_open(&w, path, width, height);
+    if (status == CLI_OK)
+        status = event_loop(&v, &w);
+    window_close(&w);
     cg_renderer_free(v.renderer);
     cg_image_free(v.frame);
     return status;

@@ -96,6 +96,86 @@ static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t gen
 
 /* ---- info -------------------------------------------------------------------- */
 
+/* The `key: value` lines of cg mesh info. */
+static void print_info(const char *path, const cg_mesh *mesh,
+                       const cg_hemesh_input_counts *input, const cg_hemesh_stats *st,
+                       const long *genus, size_t genus_count, const cg_hemesh_report *rep)
+{
+    printf("file: %s\n", path);
+    printf("vertices: %zu\n", input->vertices);
+    printf("edges: %zu\n", input->edges);
+    printf("faces: %zu\n", input->faces);
+    printf("boundary_loops: %zu\n", st->boundary_loops);
+    printf("components: %zu\n", input->components);
+    printf("euler_characteristic: %ld\n", input->euler_characteristic);
+    print_genus(st, genus, genus_count);
+    if (st->vertices != input->vertices || st->edges != input->edges || st->faces != input->faces
+        || st->components != input->components)
+        printf("genus_note: boundary_loops and genus are of the repaired manifold (the "
+               "repaired_ counts), the other counts of the input\n");
+    int manifold = rep->nonmanifold_edge_count == 0 && rep->nonmanifold_vertex_count == 0;
+    printf("manifold: %s\n", manifold ? "yes" : "no");
+    printf("oriented: %s\n", rep->misoriented_edge_count == 0 ? "yes" : "no");
+    printf("orientable: %s\n", rep->orientable ? "yes" : "no");
+    printf("isolated_vertices: %zu\n", input->isolated_vertices);
+    printf("nonmanifold_edges: %zu\n", rep->nonmanifold_edge_count);
+    printf("nonmanifold_vertices: %zu\n", rep->nonmanifold_vertex_count);
+    printf("misoriented_edges: %zu\n", rep->misoriented_edge_count);
+    printf("bad_faces: %zu\n", rep->bad_face_count);
+    printf("face_kind: %s\n", st->all_triangles ? "triangles" : st->all_quads ? "quads" : "polygons");
+    cg_vec3 lo, hi;
+    if (cg_mesh_bounds(mesh, &lo, &hi) == CG_OK) {
+        printf("bounding_box_min: %.9g %.9g %.9g\n", lo.x, lo.y, lo.z);
+        printf("bounding_box_max: %.9g %.9g %.9g\n", hi.x, hi.y, hi.z);
+    } else {
+        printf("bounding_box_min: none\nbounding_box_max: none\n");
+    }
+    printf("repaired_vertices: %zu\n", st->vertices);
+    printf("repaired_edges: %zu\n", st->edges);
+    printf("repaired_faces: %zu\n", st->faces);
+    printf("repaired_components: %zu\n", st->components);
+    printf("repaired_euler_characteristic: %ld\n", st->euler_characteristic);
+    if (repaired(rep))
+        print_changes(stdout, "repaired: ", rep);
+}
+
+/* --repeat N: N builds and N one-ring traversals, their median times on
+ * stderr. */
+static int time_repeats(const cg_mesh *mesh, const cg_hemesh *h, long repeat)
+{
+    int status = CLI_OK;
+    double *build_times = malloc((size_t)repeat * sizeof *build_times);
+    double *ring_times = malloc((size_t)repeat * sizeof *ring_times);
+    cg_vec3 *average = malloc((h->vertex_count ? h->vertex_count : 1) * sizeof *average);
+    if (!build_times || !ring_times || !average) {
+        status = cli_fail("mesh info: out of memory");
+    } else {
+        for (long i = 0; i < repeat && status == CLI_OK; i++) {
+            cg_hemesh *again = NULL;
+            double t0 = cli_now();
+            cg_status s = cg_hemesh_build(mesh, repair_flags, &again, NULL, NULL);
+            build_times[i] = cli_now() - t0;
+            cg_hemesh_free(again);
+            if (s != CG_OK)
+                status = cli_fail("mesh info: build failed on repeat %ld", i + 1);
+            t0 = cli_now();
+            cg_hemesh_neighbor_average(h, average);
+            ring_times[i] = cli_now() - t0;
+        }
+        if (status == CLI_OK) {
+            /* as `build: 12.3 ms`; three decimals below a millisecond */
+            double b = 1e3 * cli_median(build_times, (int)repeat);
+            double r = 1e3 * cli_median(ring_times, (int)repeat);
+            fprintf(stderr, b >= 1 ? "build: %.1f ms\n" : "build: %.3f ms\n", b);
+            fprintf(stderr, r >= 1 ? "one-ring: %.1f ms\n" : "one-ring: %.3f ms\n", r);
+        }
+    }
+    free(build_times);
+    free(ring_times);
+    free(average);
+    return status;
+}
+
 typedef struct info_arguments {
     int repeat;
 } info_arguments;
@@ -139,76 +219,10 @@ static int info(int argc, char **argv)
         cg_hemesh_report_clear(&rep);
         return cli_fail("mesh info: out of memory");
     }
-    printf("file: %s\n", path);
-    printf("vertices: %zu\n", input.vertices);
-    printf("edges: %zu\n", input.edges);
-    printf("faces: %zu\n", input.faces);
-    printf("boundary_loops: %zu\n", st.boundary_loops);
-    printf("components: %zu\n", input.components);
-    printf("euler_characteristic: %ld\n", input.euler_characteristic);
-    print_genus(&st, genus, genus_count);
-    if (st.vertices != input.vertices || st.edges != input.edges || st.faces != input.faces
-        || st.components != input.components)
-        printf("genus_note: boundary_loops and genus are of the repaired manifold (the "
-               "repaired_ counts), the other counts of the input\n");
-    int manifold = rep.nonmanifold_edge_count == 0 && rep.nonmanifold_vertex_count == 0;
-    printf("manifold: %s\n", manifold ? "yes" : "no");
-    printf("oriented: %s\n", rep.misoriented_edge_count == 0 ? "yes" : "no");
-    printf("orientable: %s\n", rep.orientable ? "yes" : "no");
-    printf("isolated_vertices: %zu\n", input.isolated_vertices);
-    printf("nonmanifold_edges: %zu\n", rep.nonmanifold_edge_count);
-    printf("nonmanifold_vertices: %zu\n", rep.nonmanifold_vertex_count);
-    printf("misoriented_edges: %zu\n", rep.misoriented_edge_count);
-    printf("bad_faces: %zu\n", rep.bad_face_count);
-    printf("face_kind: %s\n", st.all_triangles ? "triangles" : st.all_quads ? "quads" : "polygons");
-    cg_vec3 lo, hi;
-    if (cg_mesh_bounds(mesh, &lo, &hi) == CG_OK) {
-        printf("bounding_box_min: %.9g %.9g %.9g\n", lo.x, lo.y, lo.z);
-        printf("bounding_box_max: %.9g %.9g %.9g\n", hi.x, hi.y, hi.z);
-    } else {
-        printf("bounding_box_min: none\nbounding_box_max: none\n");
-    }
-    printf("repaired_vertices: %zu\n", st.vertices);
-    printf("repaired_edges: %zu\n", st.edges);
-    printf("repaired_faces: %zu\n", st.faces);
-    printf("repaired_components: %zu\n", st.components);
-    printf("repaired_euler_characteristic: %ld\n", st.euler_characteristic);
-    if (repaired(&rep))
-        print_changes(stdout, "repaired: ", &rep);
+    print_info(path, mesh, &input, &st, genus, genus_count, &rep);
     free(genus);
     cg_hemesh_report_clear(&rep);
-    int status = CLI_OK;
-    if (repeat > 0) {
-        double *build_times = malloc((size_t)repeat * sizeof *build_times);
-        double *ring_times = malloc((size_t)repeat * sizeof *ring_times);
-        cg_vec3 *average = malloc((h->vertex_count ? h->vertex_count : 1) * sizeof *average);
-        if (!build_times || !ring_times || !average) {
-            status = cli_fail("mesh info: out of memory");
-        } else {
-            for (long i = 0; i < repeat && status == CLI_OK; i++) {
-                cg_hemesh *again = NULL;
-                double t0 = cli_now();
-                cg_status s = cg_hemesh_build(mesh, repair_flags, &again, NULL, NULL);
-                build_times[i] = cli_now() - t0;
-                cg_hemesh_free(again);
-                if (s != CG_OK)
-                    status = cli_fail("mesh info: build failed on repeat %ld", i + 1);
-                t0 = cli_now();
-                cg_hemesh_neighbor_average(h, average);
-                ring_times[i] = cli_now() - t0;
-            }
-            if (status == CLI_OK) {
-                /* as `build: 12.3 ms`; three decimals below a millisecond */
-                double b = 1e3 * cli_median(build_times, (int)repeat);
-                double r = 1e3 * cli_median(ring_times, (int)repeat);
-                fprintf(stderr, b >= 1 ? "build: %.1f ms\n" : "build: %.3f ms\n", b);
-                fprintf(stderr, r >= 1 ? "one-ring: %.1f ms\n" : "one-ring: %.3f ms\n", r);
-            }
-        }
-        free(build_times);
-        free(ring_times);
-        free(average);
-    }
+    int status = repeat > 0 ? time_repeats(mesh, h, repeat) : CLI_OK;
     cg_hemesh_free(h);
     cg_mesh_free(mesh);
     return status;

@@ -75,16 +75,20 @@ printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty floa
 refused "list length -1" "$tmp/neg.ply:13: expected a list length of 0 or more in face 0, got -1" \
   -- "$cg" mesh info "$tmp/neg.ply"
 
+# ---- glTF files that break the format are refused with the place and the reason
+printf 'glTF\002\000\000\000\014\000\000\000' > "$tmp/short.glb"
+refused "truncated glb" "$tmp/short.glb: byte 12: expected a 12-byte GLB header and a JSON chunk" \
+  -- "$cg" mesh info "$tmp/short.glb"
+printf '{"asset": {"version": "2.0"}, "scene": 0}\n' > "$tmp/noscene.gltf"
+refused "gltf scene index" "$tmp/noscene.gltf: scene: expected an index into scenes" \
+  -- "$cg" render "$tmp/noscene.gltf" -o "$tmp/out.png"
+
 # ---- formats cg does not read, by content and by name
-printf 'glTF\002\000\000\000\040\000\000\000{"asset":{"version":"2.0"}}   ' > "$tmp/model.glb"
-cp "$tmp/model.glb" "$tmp/model_glb.obj"
-printf '{"asset": {"version": "2.0"}, "meshes": []}\n' > "$tmp/model.gltf"
 printf 'Kaydara FBX Binary  \000\032\000' > "$tmp/model.fbx"
 printf '<?xml version="1.0"?>\n<COLLADA version="1.4.1"></COLLADA>\n' > "$tmp/model.dae"
 printf 'BLENDER-v300' > "$tmp/model.blend"
 printf 'v 0 0 0\n' > "$tmp/model.3ds"
-for pair in "model.glb:a glTF binary file (.glb)" "model_glb.obj:a glTF binary file (.glb)" \
-            "model.gltf:a glTF file (.gltf)" "model.fbx:an FBX file (.fbx)" \
+for pair in "model.fbx:an FBX file (.fbx)" \
             "model.dae:a COLLADA file (.dae)" "model.blend:a Blender file (.blend)" \
             "model.3ds:a 3D Studio file (.3ds)"; do
   file=${pair%%:*} format=${pair#*:}

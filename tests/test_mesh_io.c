@@ -709,7 +709,7 @@ static void test_round_trips(void)
     cg_mesh *m = random_mesh(&rng, 0);
     cg_error err;
     CHECK(cg_mesh_save(m, "/nonexistent-dir/x.obj", CG_MESH_FORMAT_AUTO, &err) == CG_EIO);
-    CHECK(cg_mesh_save(m, "/tmp/x.stl", CG_MESH_FORMAT_AUTO, &err) == CG_EUNSUPPORTED);
+    CHECK(cg_mesh_save(m, "/tmp/x.fbx", CG_MESH_FORMAT_AUTO, &err) == CG_EUNSUPPORTED);
     char path[512];
     snprintf(path, sizeof path, "%s/invalid.ply", temp_dir);
     m->face_indices[0] = (uint32_t)m->vertex_count;

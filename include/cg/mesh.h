@@ -10,6 +10,7 @@
 
 #include "cg/core.h"
 #include "cg/image.h"
+#include "cg/texture.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -19,6 +20,60 @@ extern "C" {
  * CG_MESH_MAX_INDICES face corners in one mesh. */
 #define CG_MESH_MAX_VERTICES 0xfffffffeu
 #define CG_MESH_MAX_INDICES 0xfffffffeu
+
+/* ---- materials as the file gives them ------------------------------------
+ * A mesh file's material table: what OBJ's .mtl and glTF's materials say,
+ * in one shape, for the renderers to shade (OBJ with Phong / Blinn-Phong,
+ * glTF with metallic-roughness).  Colours are linear light. */
+
+/* A texture a material uses.  image_path names a file (resolved against the
+ * model's or the .mtl's directory), or image_bytes holds an image embedded
+ * in the model (glTF data: URI or GLB buffer view); both NULL: no texture. */
+typedef struct cg_mesh_texture_ref {
+    char *image_path;
+    unsigned char *image_bytes;
+    size_t image_byte_count;
+    cg_texture_encoding encoding; /* CG_TEXTURE_SRGB for colour (base colour,
+                               emissive, specular), CG_TEXTURE_LINEAR for data
+                               (normal, metallic-roughness, occlusion, alpha, bump) */
+    int texcoord_set;       /* glTF texCoord (cg_mesh carries set 0) */
+    cg_texture_wrap wrap_u, wrap_v; /* glTF sampler wrapS, wrapT; OBJ: -clamp on */
+    int magnify_nearest;    /* glTF magFilter NEAREST (0: linear or unset) */
+    /* KHR_texture_transform, in glTF's texture space (origin top-left):
+     * uv' = translate(offset) rotate(rotation) scale(scale) uv */
+    double offset[2], rotation, scale[2];
+    double amount;          /* normal map scale, occlusion strength, -bm bump
+                               multiplier; 1 otherwise */
+} cg_mesh_texture_ref;
+
+enum { CG_MESH_MATERIAL_PHONG = 0, CG_MESH_MATERIAL_METALLIC_ROUGHNESS = 1 };
+enum { CG_MESH_ALPHA_OPAQUE = 0, CG_MESH_ALPHA_MASK = 1, CG_MESH_ALPHA_BLEND = 2 };
+
+typedef struct cg_mesh_material {
+    char *name;             /* "" when the file gives none */
+    int model;              /* CG_MESH_MATERIAL_PHONG (OBJ) or _METALLIC_ROUGHNESS (glTF) */
+    cg_rgbaf base_color;    /* Kd with alpha d (1 - Tr); glTF baseColorFactor */
+    cg_rgbaf specular;      /* Ks (Phong) */
+    double shininess;       /* Ns (Phong) */
+    int illum;              /* OBJ illumination model (2 when not given) */
+    double metallic, roughness;  /* glTF factors */
+    cg_rgbaf emissive;      /* Ke; glTF emissiveFactor times KHR_materials_emissive_strength */
+    int alpha_mode;         /* CG_MESH_ALPHA_*: BLEND when d < 1 in OBJ */
+    double alpha_cutoff;    /* MASK threshold (glTF alphaCutoff, 0.5 by default) */
+    int double_sided;
+    int unlit;              /* KHR_materials_unlit */
+    cg_mesh_texture_ref base_color_map;         /* map_Kd; baseColorTexture (sRGB) */
+    cg_mesh_texture_ref specular_map;           /* map_Ks (sRGB) */
+    cg_mesh_texture_ref alpha_map;              /* map_d (linear) */
+    cg_mesh_texture_ref bump_map;               /* map_bump / bump (linear heights) */
+    cg_mesh_texture_ref normal_map;             /* norm; normalTexture (linear) */
+    cg_mesh_texture_ref metallic_roughness_map; /* metallicRoughnessTexture (linear: G, B) */
+    cg_mesh_texture_ref occlusion_map;          /* occlusionTexture (linear: R) */
+    cg_mesh_texture_ref emissive_map;           /* emissiveTexture (sRGB) */
+} cg_mesh_material;
+
+/* A face without a material (face_materials entry). */
+#define CG_MESH_NO_MATERIAL UINT32_MAX
 
 typedef struct cg_mesh {
     size_t vertex_count;
@@ -32,6 +87,15 @@ typedef struct cg_mesh {
     uint32_t *face_indices;  /* face_offsets[face_count] corners */
     cg_rgbaf *face_colors;   /* face_count diffuse colours (OBJ usemtl, PLY, OFF), or NULL;
                                 alpha 0 marks a face the file gives no colour */
+
+    /* Set by the file readers; NULL / 0 otherwise.  cg_mesh_free frees them. */
+    size_t material_count;
+    cg_mesh_material *materials;  /* material_count */
+    uint32_t *face_materials;     /* face_count indices into materials or
+                                     CG_MESH_NO_MATERIAL; NULL when no face has one */
+    char *notes;                  /* what the reader left out or could not find, one
+                                     line each ("model.glb: 1 skin(s) (the rest pose
+                                     is drawn)"), or NULL */
 } cg_mesh;
 
 /* Which optional arrays cg_mesh_create allocates. */
@@ -49,6 +113,12 @@ enum {
 cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count,
                          size_t index_count, unsigned flags);
 void cg_mesh_free(cg_mesh *mesh);
+/* Frees what a material owns (name, texture paths and bytes) and zeroes it. */
+void cg_mesh_material_clear(cg_mesh_material *material);
+/* A material with the defaults both formats start from: white, opaque,
+ * Phong with Ks 0 and Ns 0, metallic 1 and roughness 1, alpha cutoff 0.5,
+ * illum 2, texture references empty with scale 1 and amount 1. */
+cg_mesh_material cg_mesh_material_default(void);
 
 /* Number of corners of face f. */
 static inline uint32_t cg_mesh_face_size(const cg_mesh *mesh, size_t f)
@@ -98,8 +168,12 @@ cg_status cg_mesh_triangulate(const cg_mesh *mesh, uint32_t (*triangles)[3]);
 
 /* ---- mesh files ---------------------------------------------------------
  * Readers for Wavefront OBJ (with MTL diffuse colours), OFF (and COFF, NOFF,
- * STOFF and their combinations), PLY (ASCII, binary little- and big-endian)
- * and STL (ASCII and binary); writers for OBJ and PLY.  Any of them may be
+ * STOFF and their combinations), PLY (ASCII, binary little- and big-endian),
+ * STL (ASCII and binary) and glTF 2.0 (.gltf with external or data: URI
+ * buffers, .glb); writers for OBJ and PLY.  A glTF file gives the triangles
+ * of its default scene in world space (node transforms applied), its
+ * materials in the material table, and texture coordinates turned to cg's
+ * convention (v' = 1 - v: origin bottom-left, as OBJ).  Any of them may be
  * gzip-compressed (detected by content).  See docs/mesh-io.md for the
  * accepted variants, limits and messages. */
 typedef enum cg_mesh_format {
@@ -110,7 +184,9 @@ typedef enum cg_mesh_format {
     CG_MESH_FORMAT_PLY,         /* loading: any PLY; saving: binary little-endian */
     CG_MESH_FORMAT_PLY_ASCII,   /* saving: ASCII PLY (loading: same as CG_MESH_FORMAT_PLY) */
     CG_MESH_FORMAT_PLY_BINARY,  /* saving: binary little-endian PLY */
-    CG_MESH_FORMAT_STL          /* loading only: ASCII or binary, told apart by content */
+    CG_MESH_FORMAT_STL,         /* loading: ASCII or binary, by content; saving: binary */
+    CG_MESH_FORMAT_GLTF         /* loading: .gltf (JSON) or .glb (binary), by content;
+                                   saving: .glb */
 } cg_mesh_format;
 
 /* Largest file accepted, after gzip decompression: 4 GiB. */
@@ -137,8 +213,13 @@ cg_status cg_mesh_load_memory(const void *bytes, size_t size, const char *name,
 
 /* Writes the mesh to path through a temporary file renamed into place, so
  * an existing file is replaced only by a complete one.  Numbers are written
- * so that they read back exactly (positions as doubles in PLY).  OBJ face
- * colours go to a material library PATH-without-.obj.mtl beside it. */
+ * so that they read back exactly (positions as doubles in PLY), but in STL
+ * and glTF, which hold floats.  OBJ face colours go to a material library
+ * PATH-without-.obj.mtl beside it.  Each format keeps what it carries: OFF
+ * positions, normals, colours, texture coordinates and face colours; STL
+ * the triangles (faces triangulated); glTF (.glb) the triangles, normals,
+ * texture coordinates, vertex colours and the material table's factors,
+ * one primitive per material (texture maps are not written). */
 cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,
                        cg_error *err);
 

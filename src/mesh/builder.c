@@ -3,6 +3,7 @@
 
 #include "cg/color.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -219,4 +220,22 @@ cg_status mesh_nonfinite_error(cg_error *err, const char *name, size_t line, siz
                         "%s%s: expected a finite vertex coordinate, got %c = %g%s%s%s", name,
                         where, "xyz"[axis < 0 ? 0 : axis], value, item ? " (" : "",
                         item ? item : "", item ? ")" : "");
+}
+
+cg_status mesh_note(char **notes, const char *format, ...)
+{
+    char line[600];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(line, sizeof line, format, args);
+    va_end(args);
+    size_t old = *notes ? strlen(*notes) : 0, n = strlen(line);
+    char *grown = realloc(*notes, old + n + 2);
+    if (!grown)
+        return CG_ENOMEM;
+    memcpy(grown + old, line, n);
+    grown[old + n] = '\n';
+    grown[old + n + 1] = '\0';
+    *notes = grown;
+    return CG_OK;
 }

@@ -1,8 +1,8 @@
 /* Mesh and scene formats that cg does not read, told apart by their first
  * bytes or by the file's extension, so that a user who passes one gets its
  * name instead of a parse error from whichever reader the bytes resemble
- * (a glTF binary file starts with "glTF", which looks like an OBJ group
- * line; VTK and USDA files start with '#', an OBJ comment). */
+ * (VTK and USDA files start with '#', an OBJ comment).  glTF, which cg reads,
+ * is told by mesh_looks_like_gltf_json and the "glTF" magic. */
 #include "internal.h"
 
 #include <strings.h>
@@ -14,7 +14,6 @@ typedef struct foreign_magic {
 } foreign_magic;
 
 static const foreign_magic magics[] = {
-    {"glTF", 4, "a glTF binary file (.glb)"},
     {"Kaydara FBX Binary", 18, "an FBX file (.fbx)"},
     {"; FBX", 5, "an FBX file (.fbx)"},
     {"BLENDER", 7, "a Blender file (.blend)"},
@@ -56,7 +55,6 @@ typedef struct foreign_extension {
 } foreign_extension;
 
 static const foreign_extension extensions[] = {
-    {".glb", "a glTF binary file (.glb)"},      {".gltf", "a glTF file (.gltf)"},
     {".fbx", "an FBX file (.fbx)"},             {".3ds", "a 3D Studio file (.3ds)"},
     {".dae", "a COLLADA file (.dae)"},          {".blend", "a Blender file (.blend)"},
     {".usd", "a USD file (.usd)"},              {".usda", "a USD file (.usda)"},
@@ -102,6 +100,17 @@ static int contains(const unsigned char *bytes, size_t size, size_t limit, const
     return 0;
 }
 
+int mesh_looks_like_gltf_json(const unsigned char *bytes, size_t size)
+{
+    size_t first = 0;
+    if (size >= 3 && memcmp(bytes, "\xEF\xBB\xBF", 3) == 0)
+        first = 3;
+    while (first < size && first < 64 && (bytes[first] == ' ' || bytes[first] == '\t'
+                                           || bytes[first] == '\n' || bytes[first] == '\r'))
+        first++;
+    return first < size && bytes[first] == '{' && contains(bytes, size, 4096, "\"asset\"");
+}
+
 const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size)
 {
     for (size_t i = 0; i < sizeof magics / sizeof magics[0]; i++)
@@ -121,12 +130,6 @@ const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size)
         if (contains(bytes, size, 4096, "<mesh") && contains(bytes, size, 4096, "irrmesh"))
             return "an Irrlicht mesh (.irrmesh)";
     }
-    size_t first = 0;
-    while (first < size && first < 64 && (bytes[first] == ' ' || bytes[first] == '\t'
-                                           || bytes[first] == '\n' || bytes[first] == '\r'))
-        first++;
-    if (first < size && bytes[first] == '{' && contains(bytes, size, 4096, "\"asset\""))
-        return "a glTF file (.gltf)";
     /* LightWave: an IFF FORM whose type is LWO2, LWOB or LWLO */
     if (size >= 12 && memcmp(bytes, "FORM", 4) == 0
         && (memcmp(bytes + 8, "LWO2", 4) == 0 || memcmp(bytes + 8, "LWOB", 4) == 0

@@ -171,6 +171,23 @@ cg_status mesh_nonfinite_error(cg_error *err, const char *name, size_t line, siz
  * refers to vertex I, but there are only N" otherwise. */
 cg_status mesh_check_indices(const mesh_builder *b, const char *name, cg_error *err);
 
+/* Appends one line (printf-style, a newline added) to *notes, a growing
+ * string (NULL at first); CG_ENOMEM leaves *notes as it was. */
+cg_status mesh_note(char **notes, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Reads the MTL library at path into materials[m] for each m whose name is
+ * names[m] (the others are skipped); has_kd[m] is set where Kd is given.
+ * *found is 0 when the file cannot be read (nothing else happens).  Maps
+ * whose file is missing are noted in *notes.  CG_EFORMAT with
+ * "path:line: ..." for a malformed statement. */
+cg_status mtl_read_library(const char *path, char **names, size_t count,
+                           cg_mesh_material *materials, unsigned char *has_kd, char **notes,
+                           cg_error *err, int *found);
+
 /* The readers.  bytes need not be NUL-terminated.  directory (may be NULL)
  * is where OBJ material libraries are looked for. */
 cg_status obj_read(const char *bytes, size_t size, const char *name, const char *directory,
@@ -181,6 +198,18 @@ cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **o
                    cg_error *err);
 cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
+
+/* Writers beside save.c's OBJ and PLY: OFF and binary STL (save_off_stl.c),
+ * glTF binary (gltf_write.c).  The mesh is valid (cg_mesh_save checks). */
+cg_status off_write(const cg_mesh *m, const char *path, cg_error *err);
+cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err);
+cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err);
+
+/* glTF 2.0, .gltf or .glb (gltf.c); directory as for obj_read. */
+cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,
+                    const char *directory, cg_mesh **out, cg_error *err);
+/* True when the bytes are JSON text with an "asset" member near the start. */
+int mesh_looks_like_gltf_json(const unsigned char *bytes, size_t size);
 
 /* A format cg does not read, recognised by its first bytes or by the name's
  * extension (".gz" looked through): "a glTF binary file (.glb)", or NULL. */

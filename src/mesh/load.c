@@ -1,6 +1,7 @@
 /* Loading mesh files: reading (and gunzipping) the bytes, telling the format
  * from the content or the name, and calling the reader. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -30,25 +31,20 @@ cg_mesh_format cg_mesh_format_from_path(const char *path)
         return CG_MESH_FORMAT_PLY;
     if (has_suffix(path, length, ".stl"))
         return CG_MESH_FORMAT_STL;
+    if (has_suffix(path, length, ".gltf") || has_suffix(path, length, ".glb"))
+        return CG_MESH_FORMAT_GLTF;
     return CG_MESH_FORMAT_AUTO;
 }
 
-/* Appends to a growing buffer, doubling; fails beyond CG_MESH_MAX_FILE_BYTES. */
+/* Appends to a growing buffer (src/core/array.h), keeping one spare byte
+ * after the data; fails beyond CG_MESH_MAX_FILE_BYTES. */
 static cg_status append(unsigned char **buffer, size_t *size, size_t *capacity,
                         const unsigned char *bytes, size_t n)
 {
     if (n > CG_MESH_MAX_FILE_BYTES - *size)
         return CG_ERANGE;
-    if (*capacity - *size < n) {
-        size_t c = *capacity ? *capacity : 65536;
-        while (c - *size < n)
-            c *= 2;
-        unsigned char *grown = realloc(*buffer, c + 1);
-        if (!grown)
-            return CG_ENOMEM;
-        *buffer = grown;
-        *capacity = c;
-    }
+    if (core_array_reserve((void **)buffer, capacity, *size + n + 1, 1) != CG_OK)
+        return CG_ENOMEM;
     memcpy(*buffer + *size, bytes, n);
     *size += n;
     return CG_OK;
@@ -137,11 +133,11 @@ cg_status mesh_read_file(const char *path, unsigned char **bytes, size_t *size, 
     struct stat st;
     if (fstat(fileno(file), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0
         && (uint64_t)st.st_size <= CG_MESH_MAX_FILE_BYTES) {
-        capacity = (size_t)st.st_size;
-        if (!(buffer = malloc(capacity + 1)))
+        capacity = (size_t)st.st_size + 1; /* the spare byte append keeps too */
+        if (!(buffer = malloc(capacity)))
             s = CG_ENOMEM;
-        while (s == CG_OK && used < capacity
-               && (got = fread(buffer + used, 1, capacity - used, file)) > 0)
+        while (s == CG_OK && used < capacity - 1
+               && (got = fread(buffer + used, 1, capacity - 1 - used, file)) > 0)
             used += got;
     }
     while (s == CG_OK && (got = fread(chunk, 1, sizeof chunk, file)) > 0)
@@ -194,6 +190,10 @@ static cg_mesh_format sniff(const unsigned char *b, size_t size)
     size_t i = 0;
     while (i < size && (b[i] == ' ' || b[i] == '\t'))
         i++;
+    if (size >= 4 && memcmp(b, "glTF", 4) == 0)
+        return CG_MESH_FORMAT_GLTF;
+    if (mesh_looks_like_gltf_json(b, size))
+        return CG_MESH_FORMAT_GLTF;
     if (size - i >= 6 && memcmp(b + i, "solid", 5) == 0
         && (b[i + 5] == ' ' || b[i + 5] == '\t' || b[i + 5] == '\n' || b[i + 5] == '\r'))
         return CG_MESH_FORMAT_STL;
@@ -223,8 +223,8 @@ static cg_status unsupported(const char *name, const char *format, const char *h
                              cg_error *err)
 {
     return cg_error_set(err, CG_EUNSUPPORTED,
-                        "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY and STL "
-                        "meshes",
+                        "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY, STL and "
+                        "glTF meshes",
                         name, how, format);
 }
 
@@ -273,6 +273,8 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
         return ply_read(bytes, size, name, out, err);
     case CG_MESH_FORMAT_STL:
         return stl_read(bytes, size, name, out, err);
+    case CG_MESH_FORMAT_GLTF:
+        return gltf_read(bytes, size, name, directory, out, err);
     case CG_MESH_FORMAT_AUTO:
         break;
     }
@@ -281,8 +283,8 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
                       || bytes[0] == 'm'))
         return obj_read((const char *)bytes, size, name, directory, out, err);
     return cg_error_set(err, CG_EFORMAT,
-                        "%s: unknown mesh format (expected OBJ, OFF, PLY or STL, by content or by "
-                        "extension)",
+                        "%s: unknown mesh format (expected OBJ, OFF, PLY, STL or glTF, by content or "
+                        "by extension)",
                         name);
 }
 

@@ -2,6 +2,7 @@
 #include "cg/mesh.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 static void *zeroed(size_t count, size_t size)
 {
@@ -53,7 +54,59 @@ void cg_mesh_free(cg_mesh *mesh)
     free(mesh->face_offsets);
     free(mesh->face_indices);
     free(mesh->face_colors);
+    for (size_t i = 0; i < mesh->material_count; i++)
+        cg_mesh_material_clear(&mesh->materials[i]);
+    free(mesh->materials);
+    free(mesh->face_materials);
+    free(mesh->notes);
     free(mesh);
+}
+
+static void texture_ref_clear(cg_mesh_texture_ref *t)
+{
+    free(t->image_path);
+    free(t->image_bytes);
+    t->image_path = NULL;
+    t->image_bytes = NULL;
+    t->image_byte_count = 0;
+}
+
+void cg_mesh_material_clear(cg_mesh_material *material)
+{
+    if (!material)
+        return;
+    free(material->name);
+    cg_mesh_texture_ref *maps[] = {&material->base_color_map, &material->specular_map,
+                                   &material->alpha_map,      &material->bump_map,
+                                   &material->normal_map,     &material->metallic_roughness_map,
+                                   &material->occlusion_map,  &material->emissive_map};
+    for (size_t i = 0; i < sizeof maps / sizeof maps[0]; i++)
+        texture_ref_clear(maps[i]);
+    memset(material, 0, sizeof *material);
+}
+
+cg_mesh_material cg_mesh_material_default(void)
+{
+    cg_mesh_material m;
+    memset(&m, 0, sizeof m);
+    cg_rgbaf white = {1, 1, 1, 1}, black = {0, 0, 0, 1};
+    m.base_color = white;
+    m.specular = black;
+    m.emissive = black;
+    m.illum = 2;
+    m.metallic = 1;
+    m.roughness = 1;
+    m.alpha_cutoff = 0.5;
+    cg_mesh_texture_ref empty;
+    memset(&empty, 0, sizeof empty);
+    empty.scale[0] = empty.scale[1] = 1;
+    empty.amount = 1;
+    empty.encoding = CG_TEXTURE_SRGB;
+    empty.wrap_u = empty.wrap_v = CG_TEXTURE_REPEAT;
+    m.base_color_map = m.specular_map = m.emissive_map = empty;
+    empty.encoding = CG_TEXTURE_LINEAR;
+    m.alpha_map = m.bump_map = m.normal_map = m.metallic_roughness_map = m.occlusion_map = empty;
+    return m;
 }
 
 cg_status cg_mesh_validate(const cg_mesh *mesh, cg_error *err)

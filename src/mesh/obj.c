@@ -10,6 +10,7 @@
  * table).  A file that uses each position with one pair keeps its vertex
  * numbering exactly. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,6 +41,9 @@ typedef struct obj_reader {
     /* mtllib lines, to read once the whole file is known */
     char **libraries;
     size_t library_count, library_capacity;
+    /* what the libraries say of each material (material_count), and notes */
+    cg_mesh_material *mesh_materials;
+    char *notes;
 } obj_reader;
 
 static cg_status obj_fail(obj_reader *r, const char *what)
@@ -50,24 +54,6 @@ static cg_status obj_fail(obj_reader *r, const char *what)
 static cg_status out_of_memory(obj_reader *r)
 {
     return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name, r->t.line);
-}
-
-/* Grows *array (element size `size`) so that index `needed - 1` fits. */
-static int grow(void **array, size_t *capacity, size_t needed, size_t size)
-{
-    if (needed <= *capacity)
-        return 1;
-    size_t c = *capacity < 64 ? 64 : *capacity + *capacity / 2;
-    if (c < needed)
-        c = needed;
-    if (c > SIZE_MAX / size)
-        return 0;
-    void *grown = realloc(*array, c * size);
-    if (!grown)
-        return 0;
-    *array = grown;
-    *capacity = c;
-    return 1;
 }
 
 /* Reads up to max numbers to the end of the line; returns how many, or -1. */
@@ -126,7 +112,8 @@ static cg_status read_texcoord(obj_reader *r)
         return r->err ? r->err->status : CG_EFORMAT;
     if (n < 1)
         return obj_fail(r, "a texture coordinate (u [v [w]])");
-    if (!grow((void **)&r->tex, &r->tex_capacity, r->tex_count + 1, sizeof *r->tex))
+    if (core_array_reserve((void **)&r->tex, &r->tex_capacity, r->tex_count + 1, sizeof *r->tex)
+        != CG_OK)
         return out_of_memory(r);
     r->tex[r->tex_count++] = cg_vec2_make(v[0], v[1]);
     return CG_OK;
@@ -140,7 +127,8 @@ static cg_status read_normal(obj_reader *r)
         return r->err ? r->err->status : CG_EFORMAT;
     if (n != 3)
         return obj_fail(r, "3 numbers after 'vn'");
-    if (!grow((void **)&r->nor, &r->nor_capacity, r->nor_count + 1, sizeof *r->nor))
+    if (core_array_reserve((void **)&r->nor, &r->nor_capacity, r->nor_count + 1, sizeof *r->nor)
+        != CG_OK)
         return out_of_memory(r);
     r->nor[r->nor_count++] = cg_vec3_make(v[0], v[1], v[2]);
     return CG_OK;
@@ -245,8 +233,9 @@ static cg_status read_face(obj_reader *r)
     if (builder_end_face(&r->b) != CG_OK)
         return out_of_memory(r);
     if (r->face_material) {
-        if (!grow((void **)&r->face_material, &r->face_material_capacity, r->b.face_count,
-                  sizeof *r->face_material))
+        if (core_array_reserve((void **)&r->face_material, &r->face_material_capacity,
+                               r->b.face_count, sizeof *r->face_material)
+            != CG_OK)
             return out_of_memory(r);
         r->face_material[r->b.face_count - 1] = r->current_material;
     }
@@ -280,7 +269,9 @@ static cg_status read_usemtl(obj_reader *r)
     while (m < r->material_count && strcmp(r->materials[m], name) != 0)
         m++;
     if (m == r->material_count) {
-        if (!grow((void **)&r->materials, &r->material_capacity, m + 1, sizeof *r->materials)) {
+        if (core_array_reserve((void **)&r->materials, &r->material_capacity, m + 1,
+                               sizeof *r->materials)
+            != CG_OK) {
             free(name);
             return out_of_memory(r);
         }
@@ -305,8 +296,9 @@ static cg_status read_mtllib(obj_reader *r)
     char *name = rest_of_line(r);
     if (!name)
         return out_of_memory(r);
-    if (!grow((void **)&r->libraries, &r->library_capacity, r->library_count + 1,
-              sizeof *r->libraries)) {
+    if (core_array_reserve((void **)&r->libraries, &r->library_capacity, r->library_count + 1,
+                           sizeof *r->libraries)
+        != CG_OK) {
         free(name);
         return out_of_memory(r);
     }
@@ -316,63 +308,13 @@ static cg_status read_mtllib(obj_reader *r)
 
 /* ---- material libraries ------------------------------------------------ */
 
-/* Reads the Kd of every material this file uses from one library. */
-static cg_status parse_library(obj_reader *r, const char *bytes, size_t size, const char *name,
-                               cg_rgbaf *colors, unsigned char *known)
-{
-    text_cursor t = {bytes, bytes + size, name, 1};
-    size_t current = OBJ_NONE;
-    while (t.p < t.end) {
-        text_skip_blanks(&t);
-        const char *word = t.p;
-        while (t.p < t.end && !is_space(*t.p))
-            t.p++;
-        size_t length = (size_t)(t.p - word);
-        if (length == 6 && memcmp(word, "newmtl", 6) == 0) {
-            text_skip_blanks(&t);
-            const char *start = t.p, *stop = t.p;
-            while (stop < t.end && !is_line_end(*stop))
-                stop++;
-            while (stop > start && is_blank(stop[-1]))
-                stop--;
-            current = OBJ_NONE;
-            for (size_t m = 0; m < r->material_count; m++)
-                if (strlen(r->materials[m]) == (size_t)(stop - start)
-                    && memcmp(r->materials[m], start, (size_t)(stop - start)) == 0)
-                    current = m;
-        } else if (length == 2 && memcmp(word, "Kd", 2) == 0 && current != OBJ_NONE) {
-            text_skip_blanks(&t);
-            if (t.p < t.end && (*t.p == 's' || *t.p == 'x')) { /* Kd spectral / Kd xyz */
-                text_next_line(&t);
-                continue;
-            }
-            double c[3];
-            cg_status s = text_double(&t, &c[0], "a red value after Kd", r->err);
-            if (s != CG_OK)
-                return s;
-            c[1] = c[2] = c[0];
-            if (!text_at_line_end(&t)) {
-                if ((s = text_double(&t, &c[1], "a green value", r->err)) != CG_OK
-                    || (s = text_double(&t, &c[2], "a blue value", r->err)) != CG_OK)
-                    return s;
-            }
-            cg_rgbaf color = {(float)c[0], (float)c[1], (float)c[2], 1};
-            colors[current] = color;
-            known[current] = 1;
-        }
-        text_next_line(&t);
-    }
-    return CG_OK;
-}
-
-/* Looks for the library `file` beside the OBJ file; a missing one is skipped. */
-static cg_status load_library(obj_reader *r, const char *directory, const char *file,
-                              cg_rgbaf *colors, unsigned char *known, int *found)
+/* The library `file` (as the mtllib line names it) beside the OBJ file. */
+static char *library_path(const char *directory, const char *file)
 {
     size_t dl = strlen(directory), fl = strlen(file);
     char *path = malloc(dl + fl + 2);
     if (!path)
-        return out_of_memory(r);
+        return NULL;
     if (file[0] == '/' || dl == 0) {
         memcpy(path, file, fl + 1);
     } else {
@@ -380,31 +322,32 @@ static cg_status load_library(obj_reader *r, const char *directory, const char *
         path[dl] = '/';
         memcpy(path + dl + 1, file, fl + 1);
     }
-    unsigned char *bytes = NULL;
-    size_t size = 0;
-    cg_status s = mesh_read_file(path, &bytes, &size, NULL);
-    *found = s == CG_OK;
-    if (s == CG_OK)
-        s = parse_library(r, (const char *)bytes, size, path, colors, known);
-    else
-        s = CG_OK; /* a missing or unreadable library: no colours */
-    free(bytes);
+    return path;
+}
+
+static cg_status read_library(obj_reader *r, const char *directory, const char *file,
+                              unsigned char *has_kd, int *found)
+{
+    char *path = library_path(directory, file);
+    if (!path)
+        return out_of_memory(r);
+    cg_status s = mtl_read_library(path, r->materials, r->material_count, r->mesh_materials,
+                                   has_kd, &r->notes, r->err, found);
     free(path);
     return s;
 }
 
-static cg_status apply_materials(obj_reader *r, const char *directory)
+/* Reads every mtllib line's libraries into the material table; a library
+ * that cannot be read is a note, and its materials keep the defaults. */
+static cg_status read_libraries(obj_reader *r, const char *directory, unsigned char *has_kd)
 {
-    if (!r->face_material || r->material_count == 0 || !directory)
-        return CG_OK;
-    cg_rgbaf *colors = calloc(r->material_count, sizeof *colors);
-    unsigned char *known = calloc(r->material_count, 1);
-    cg_status s = colors && known ? CG_OK : out_of_memory(r);
+    cg_status s = CG_OK;
     for (size_t l = 0; s == CG_OK && l < r->library_count; l++) {
         int found = 0;
-        s = load_library(r, directory, r->libraries[l], colors, known, &found);
+        s = read_library(r, directory, r->libraries[l], has_kd, &found);
         /* "mtllib a.mtl b.mtl": several names on one line */
         if (s == CG_OK && !found && strpbrk(r->libraries[l], " \t")) {
+            int any = 0;
             char *names = r->libraries[l];
             for (char *word = names; s == CG_OK && *word;) {
                 while (is_blank(*word))
@@ -414,16 +357,46 @@ static cg_status apply_materials(obj_reader *r, const char *directory)
                     stop++;
                 char saved = *stop;
                 *stop = '\0';
-                if (stop > word)
-                    s = load_library(r, directory, word, colors, known, &found);
+                if (stop > word) {
+                    s = read_library(r, directory, word, has_kd, &found);
+                    any |= found;
+                }
                 *stop = saved;
                 word = stop;
             }
+            found = any;
         }
+        if (s == CG_OK && !found && mesh_note(&r->notes, "%s: material library %s not found; "
+                                                         "its materials keep no colour",
+                                              r->t.name, r->libraries[l])
+                                        != CG_OK)
+            s = out_of_memory(r);
     }
+    return s;
+}
+
+/* The material table (one entry per usemtl name, defaults first), the
+ * libraries read into it, and the face colours of the materials with Kd. */
+static cg_status apply_materials(obj_reader *r, const char *directory)
+{
+    if (!r->face_material || r->material_count == 0)
+        return CG_OK;
+    r->mesh_materials = calloc(r->material_count, sizeof *r->mesh_materials);
+    unsigned char *has_kd = calloc(r->material_count, 1);
+    cg_status s = r->mesh_materials && has_kd ? CG_OK : out_of_memory(r);
+    for (size_t m = 0; s == CG_OK && m < r->material_count; m++) {
+        r->mesh_materials[m] = cg_mesh_material_default();
+        size_t n = strlen(r->materials[m]);
+        if (!(r->mesh_materials[m].name = malloc(n + 1)))
+            s = out_of_memory(r);
+        else
+            memcpy(r->mesh_materials[m].name, r->materials[m], n + 1);
+    }
+    if (s == CG_OK && directory)
+        s = read_libraries(r, directory, has_kd);
     int any = 0;
-    for (size_t m = 0; m < r->material_count; m++)
-        any |= known[m];
+    for (size_t m = 0; s == CG_OK && m < r->material_count; m++)
+        any |= has_kd[m];
     if (s == CG_OK && any) {
         cg_rgbaf none = {0, 0, 0, 0};
         if (builder_add_arrays(&r->b, CG_MESH_FACE_COLORS, none) != CG_OK) {
@@ -431,13 +404,33 @@ static cg_status apply_materials(obj_reader *r, const char *directory)
         } else {
             for (size_t f = 0; f < r->b.face_count; f++) {
                 uint32_t m = r->face_material[f];
-                r->b.face_colors[f] = (m != OBJ_NONE && known[m]) ? colors[m] : none;
+                if (m != OBJ_NONE && has_kd[m]) {
+                    cg_rgbaf color = r->mesh_materials[m].base_color;
+                    color.a = 1; /* a face colour; transparency is the material's */
+                    r->b.face_colors[f] = color;
+                } else {
+                    r->b.face_colors[f] = none;
+                }
             }
         }
     }
-    free(colors);
-    free(known);
+    free(has_kd);
     return s;
+}
+
+/* Moves the material table, face materials and notes into the mesh. */
+static void attach_materials(obj_reader *r, cg_mesh *mesh)
+{
+    mesh->notes = r->notes;
+    r->notes = NULL;
+    if (!r->mesh_materials)
+        return;
+    mesh->materials = r->mesh_materials;
+    mesh->material_count = r->material_count;
+    r->mesh_materials = NULL;
+    /* OBJ_NONE and CG_MESH_NO_MATERIAL are both UINT32_MAX */
+    mesh->face_materials = r->face_material;
+    r->face_material = NULL;
 }
 
 /* ---- one index per corner ---------------------------------------------- */
@@ -635,6 +628,12 @@ cg_status obj_read(const char *bytes, size_t size, const char *name, const char 
         s = apply_materials(&r, directory);
     if (s == CG_OK && (s = builder_finish(&r.b, out)) != CG_OK)
         s = cg_error_set(err, s, "%s: out of memory", name);
+    if (s == CG_OK)
+        attach_materials(&r, *out);
+    for (size_t m = 0; r.mesh_materials && m < r.material_count; m++)
+        cg_mesh_material_clear(&r.mesh_materials[m]);
+    free(r.mesh_materials);
+    free(r.notes);
     builder_free(&r.b);
     free(r.tex);
     free(r.nor);

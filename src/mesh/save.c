@@ -1,5 +1,6 @@
 /* Mesh writers: OBJ (with an MTL library for face colours) and PLY (ASCII
- * or binary little-endian).  Each file is streamed to a temporary file
+ * or binary little-endian); OFF, STL and glTF are in save_off_stl.c and
+ * gltf_write.c.  Each file is streamed to a temporary file
  * beside its destination and renamed over it only when complete
  * (src/core/safe_file.c). */
 #include "internal.h"
@@ -343,10 +344,21 @@ cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format for
         return save_ply(mesh, path, 1, err);
     case CG_MESH_FORMAT_PLY_ASCII:
         return save_ply(mesh, path, 0, err);
+    case CG_MESH_FORMAT_OFF:
+        return off_write(mesh, path, err);
+    case CG_MESH_FORMAT_STL:
+        return stl_write(mesh, path, err);
+    case CG_MESH_FORMAT_GLTF: {
+        size_t n = strlen(path);
+        if (n >= 5 && strcmp(path + n - 5, ".gltf") == 0)
+            return cg_error_set(err, CG_EUNSUPPORTED,
+                                "%s: cg writes glTF as one binary file: name it .glb", path);
+        return gltf_write(mesh, path, err);
+    }
     default:
         return cg_error_set(err, CG_EUNSUPPORTED,
-                            "%s: cg writes OBJ and PLY meshes (name the file .obj or .ply, or "
-                            "give the format)",
+                            "%s: cg writes OBJ, PLY, OFF, STL and glTF binary (.glb) meshes "
+                            "(name the file so, or give the format)",
                             path);
     }
 }

@@ -20,6 +20,16 @@ int cli_fail(const char *format, ...)
     return CLI_FAILED;
 }
 
+void cli_print_notes(const char *notes)
+{
+    while (notes && *notes) {
+        const char *end = strchr(notes, '\n');
+        size_t n = end ? (size_t)(end - notes) : strlen(notes);
+        fprintf(stderr, "cg: note: %.*s\n", (int)n, notes);
+        notes += n + (end != NULL);
+    }
+}
+
 int cli_usage_error(const char *command, const char *format, ...)
 {
     va_list args;

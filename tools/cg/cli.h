@@ -14,6 +14,9 @@ int cli_fail(const char *format, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+/* Prints a loader's notes (cg_mesh.notes: one line each) to stderr as
+ * "cg: note: ..." lines; nothing for NULL. */
+void cli_print_notes(const char *notes);
 /* The same, returning CLI_USAGE, and pointing at `cg help COMMAND`. */
 int cli_usage_error(const char *command, const char *format, ...)
 #if defined(__GNUC__)

@@ -16,6 +16,7 @@ static int load(const char *path, cg_mesh **mesh)
     cg_error err;
     if (cg_mesh_load(path, mesh, &err) != CG_OK)
         return cli_fail("%s", err.message);
+    cli_print_notes((*mesh)->notes);
     return CLI_OK;
 }
 

@@ -120,6 +120,7 @@ int render_mesh_raster(const char *command, const render_request *r)
         return cli_fail("%s: %s: nothing to draw: the file has %zu vertices and no faces (a point "
                         "cloud, lines only, or a truncated file)", command, path, n);
     }
+    cli_print_notes(mesh->notes);
     cg_render_options o = c->render;
     cg_vec3 lo, hi;
     int bounded = cg_mesh_bounds(mesh, &lo, &hi) == CG_OK;

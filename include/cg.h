@@ -12,6 +12,7 @@
 #include "cg/fill.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
+#include "cg/polygon.h"
 #include "cg/hemesh.h"
 #include "cg/render.h"
 #include "cg/scene.h"

@@ -1,0 +1,91 @@
+/* cg/polygon.h - polygon geometry beyond the boolean operations, on the same
+ * exact integer grid (cg/clip.h): offsetting (inflating and deflating
+ * polygons, widening polylines), clipping against an axis-aligned rectangle,
+ * triangulation and simplification.
+ *
+ * Every function has an integer form (suffix 64, coordinates within
+ * +-CG_CLIP_MAX_COORD) and a double form that scales to the grid as
+ * cg_clip_boolean does (scale <= 0: the largest power of two that maps the
+ * largest |coordinate| of the input and of the result below 2^36).  Results
+ * are emptied first and their arrays reused; a polygon result has the
+ * boolean engine's guarantee (outer rings counter-clockwise, holes
+ * clockwise, simple rings meeting at most at vertices: OGC-valid). */
+#ifndef CG_POLYGON_H
+#define CG_POLYGON_H
+
+#include "cg/clip.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- offsetting ------------------------------------------------------------ */
+
+/* How the offset turns a corner on its outer side (where the two offset
+ * edges leave a gap):
+ *
+ *        miter          square          bevel           round
+ *          *          +-------+
+ *         / \        /         \        +---+           .---.
+ *     ---+   +---  -+           +-   -+     +-     -+'     '+-
+ *        |   |      |           |     |     |       |       |
+ *
+ * miter extends both offset edges until they meet (cut flat, perpendicular
+ * to the corner's bisector, at miter_limit * |delta| from the vertex when
+ * they would meet farther); square cuts flat at |delta| from the vertex;
+ * bevel joins the two offset edges' ends; round follows the circle of
+ * radius |delta| within arc_tolerance. */
+typedef enum cg_offset_join {
+    CG_OFFSET_JOIN_MITER,
+    CG_OFFSET_JOIN_ROUND,
+    CG_OFFSET_JOIN_SQUARE,
+    CG_OFFSET_JOIN_BEVEL
+} cg_offset_join;
+
+/* What the paths are: rings of polygons (filled by `fill`), or open
+ * polylines widened by |delta| on both sides with their ends cut flat at
+ * the end point (butt), extended by |delta| (square), rounded (round), or
+ * joined into a loop whose band is the result (joined). */
+typedef enum cg_offset_end {
+    CG_OFFSET_END_POLYGON,
+    CG_OFFSET_END_JOINED,
+    CG_OFFSET_END_BUTT,
+    CG_OFFSET_END_SQUARE,
+    CG_OFFSET_END_ROUND
+} cg_offset_end;
+
+typedef struct cg_offset_options {
+    cg_offset_join join;
+    cg_offset_end end;
+    double miter_limit;   /* >= 1; 0 picks 2 */
+    double arc_tolerance; /* largest gap between an arc and its chords, in the
+                             input's units; 0 picks |delta| / 500 (and at least
+                             a quarter of a grid unit) */
+    cg_clip_fill fill;    /* fill rule of closed input rings */
+} cg_offset_options;
+
+/* The default options: miter joins (limit 2), polygons, even-odd fill. */
+cg_offset_options cg_offset_options_default(void);
+
+/* Offsets the paths by delta: for polygons, delta > 0 adds every point
+ * within delta of the polygons (inflates) and delta < 0 removes every point
+ * within -delta of their boundary (deflates), with corners shaped by the
+ * join; open paths are widened by |delta|.  The region is computed as the
+ * input (made simple by a union first) united with, or less, the band
+ * swept along its boundary, through the boolean engine: holes are kept and
+ * parts that vanish are gone.  CG_EINVAL for a NaN or infinite delta or
+ * option, an unknown join or end; CG_ERANGE when a coordinate of the input
+ * or of the result leaves the grid; CG_ENOMEM. */
+cg_status cg_offset64(const cg_polygon_set64 *paths, double delta,
+                      const cg_offset_options *options, cg_polygon_set64 *result);
+cg_status cg_offset64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, double delta,
+                         const cg_offset_options *options, cg_polygon_set64 *result);
+cg_status cg_offset(const cg_polygon_set *paths, double delta, const cg_offset_options *options,
+                    double scale, cg_polygon_set *result);
+cg_status cg_offset_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, double delta,
+                       const cg_offset_options *options, double scale, cg_polygon_set *result);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -4,9 +4,9 @@
  * it is exact to the pieces and valid whatever the input:
  *
  *   - the band: for every edge a-b of the (simple) boundary, the rectangle
- *     of half-width d = |delta| around it, and at every vertex the join
- *     that fills the gap two consecutive rectangles leave on the outer side
- *     of the turn;
+ *     of width d = |delta| beside it on the side that counts, and at every
+ *     vertex whose turn leaves a gap between two consecutive rectangles on
+ *     that side, the join that fills it;
  *
  *              gap (join)
  *             +--+                           a +nr*d          b +nr*d
@@ -15,18 +15,20 @@
  *     edge 1 \    / edge 2                    +----------------+
  *                                             a -nr*d          b -nr*d
  *
- *   - inflating (delta > 0) is the polygons united with the band: every
- *     point outside within d of the polygons lies in the rectangle of its
- *     nearest edge or, when the nearest point is a vertex, in that vertex's
- *     join (the normal cone there is exactly the gap);
- *   - deflating (delta < 0) is the polygons less the band (the same
- *     argument from inside);
- *   - an open path is its band alone, with a cap at each end.
+ *   - inflating (delta > 0) is the polygons united with the band on their
+ *     outer side (the right of every ring: outer rings run counter-clockwise,
+ *     holes clockwise): every point outside within d of the polygons lies in
+ *     the rectangle of its nearest edge or, when the nearest point is a
+ *     vertex, in that vertex's join (the normal cone there is exactly the
+ *     gap);
+ *   - deflating (delta < 0) is the polygons less the band on their inner
+ *     side (the same argument from inside);
+ *   - an open path is its band on both sides alone, with a cap at each end.
  *
- * A gap lies on the outer side of one turn only, so the same band serves
- * both signs: the join inside a convex vertex of the polygon is covered by
- * the polygon when inflating, and outside it (removed anyway) when
- * deflating. */
+ * A join is only built on the side that counts: a miter reaches up to
+ * miter_limit * d from its vertex, farther than the offset, and one built
+ * on the other side (say inside a hole's sharp corner) could cross the
+ * polygon and come out beyond it. */
 #include "polygon_internal.h"
 
 #include "../core/array.h"
@@ -36,8 +38,11 @@
 typedef struct direction { double x, y; } direction;
 
 /* What one offset builds its band with. */
+enum { BAND_RIGHT = 1, BAND_LEFT = 2 };
+
 typedef struct offset_band {
     double width; /* d = |delta| on the grid */
+    int sides;    /* the sides of the paths that count: BAND_RIGHT, BAND_LEFT */
     cg_offset_join join;
     double miter_limit; /* >= 1 */
     double arc_step;    /* angle of one chord of a round join */
@@ -55,6 +60,11 @@ static direction unit(cg_point64 a, cg_point64 b)
 {
     double x = (double)(b.x - a.x), y = (double)(b.y - a.y), length = hypot(x, y);
     return (direction){x / length, y / length};
+}
+
+static double distance(cg_point64 a, cg_point64 b)
+{
+    return hypot((double)(b.x - a.x), (double)(b.y - a.y));
 }
 
 static direction right_normal(direction t) { return (direction){t.y, -t.x}; }
@@ -83,18 +93,28 @@ static cg_status piece_close(offset_band *band)
     return cg_polygon_set64_add_ring(band->rings, p, n, 1);
 }
 
-/* The rectangle of half-width d around the edge a-b (direction t). */
+/* The rectangle of width d beside the edge a-b (direction t) on each side
+ * that counts, through a and b themselves so that it shares its ends
+ * exactly with the joins:
+ *
+ *     a+n*d ----------- b+n*d      (right side, n the right normal)
+ *       |                 |
+ *       a ---- edge ----> b
+ *       |                 |
+ *     a-n*d ----------- b-n*d      (left side)
+ */
 static cg_status add_edge(offset_band *band, cg_point64 a, cg_point64 b, direction t)
 {
     direction n = right_normal(t);
     double d = band->width;
-    cg_status st = piece_push(band, moved(a, n, d));
-    if (st == CG_OK)
-        st = piece_push(band, moved(b, n, d));
-    if (st == CG_OK)
-        st = piece_push(band, moved(b, n, -d));
-    if (st == CG_OK)
-        st = piece_push(band, moved(a, n, -d));
+    cg_point64 ring[6] = {moved(a, n, d), moved(b, n, d), b, moved(b, n, -d), moved(a, n, -d), a};
+    int first = band->sides & BAND_RIGHT ? 0 : 2, last = band->sides & BAND_LEFT ? 5 : 2;
+    cg_status st = CG_OK;
+    /* the left side alone is ring[2..5]: b, b-n*d, a-n*d, a */
+    for (int i = first; i <= last && st == CG_OK; i++)
+        st = piece_push(band, ring[i]);
+    if (st == CG_OK && last == 2) /* the right side alone: a+n*d, b+n*d, b, a */
+        st = piece_push(band, a);
     return st == CG_OK ? piece_close(band) : st;
 }
 
@@ -118,18 +138,22 @@ static cg_status add_flat_cut(offset_band *band, cg_point64 p, direction m1, dir
 }
 
 /* The join at vertex p between an edge arriving along t1 and one leaving
- * along t2: the ring p, p + m1*d, (the join's own points), p + m2*d, where
- * m1 and m2 are the normals on the gap's side. */
-static cg_status add_join(offset_band *band, cg_point64 p, direction t1, direction t2)
+ * along t2 (turn: the exact sign of the turn, 0 when straight on or back):
+ * the ring p, p + m1*d, (the join's own points), p + m2*d, where m1 and m2
+ * are the normals on the gap's side, when that side counts; and when the
+ * other side counts, the triangle p, p - m1*d, p - m2*d there, which the
+ * two rectangles overlap exactly (when the edges are long enough) but which
+ * rounding their corners could leave uncovered by a sliver. */
+static cg_status add_join(offset_band *band, cg_point64 p, direction t1, direction t2, int turn,
+                          double shorter_edge)
 {
     double cross = t1.x * t2.y - t1.y * t2.x, dot = t1.x * t2.x + t1.y * t2.y;
     double d = band->width;
-    /* a gap narrower than half a grid unit is lost in the rounding anyway */
-    if (dot > 0 && fabs(cross) * d < 0.5)
-        return CG_OK;
+    if (turn == 0 && dot > 0)
+        return CG_OK; /* straight on: the two rectangles share their ends */
     /* a left turn leaves its gap on the right; a full reversal on both
      * sides, filled as one join around the front (bisector t1) */
-    int reversal = fabs(cross) < 1e-12;
+    int reversal = turn == 0 || fabs(cross) < 1e-12;
     double side = reversal || cross > 0 ? 1 : -1;
     direction n1 = right_normal(t1), n2 = right_normal(t2);
     direction m1 = {side * n1.x, side * n1.y}, m2 = {side * n2.x, side * n2.y};
@@ -140,7 +164,21 @@ static cg_status add_join(offset_band *band, cg_point64 p, direction t1, directi
     else
         b = (direction){b.x / bl, b.y / bl};
     double cos_phi = fmin(1, fmax(-1, m1.x * b.x + m1.y * b.y)), phi = acos(cos_phi);
-    cg_status st = piece_push(band, p);
+    int gap_counts = band->sides & (side > 0 ? BAND_RIGHT : BAND_LEFT);
+    int overlap_counts = band->sides & (side > 0 ? BAND_LEFT : BAND_RIGHT);
+    cg_status st = CG_OK;
+    /* the triangle lies within both rectangles when it reaches no farther
+     * along either edge than the shorter edge's length (sin of the turn * d) */
+    if (overlap_counts && !reversal && fabs(cross) * d <= shorter_edge) {
+        cg_point64 inner[3] = {p, moved(p, m1, -d), moved(p, m2, -d)};
+        for (int i = 0; i < 3 && st == CG_OK; i++)
+            st = piece_push(band, inner[i]);
+        if (st == CG_OK)
+            st = piece_close(band);
+    }
+    if (!gap_counts || st != CG_OK)
+        return st;
+    st = piece_push(band, p);
     if (st == CG_OK)
         st = piece_push(band, moved(p, m1, d));
     if (st != CG_OK)
@@ -182,7 +220,8 @@ static cg_status add_closed(offset_band *band, const cg_point64 *p, size_t n)
         direction t = unit(p[i], next);
         st = add_edge(band, p[i], next, t);
         if (st == CG_OK)
-            st = add_join(band, p[i], last, t);
+            st = add_join(band, p[i], last, t, polygon_orient(p[(i + n - 1) % n], p[i], next),
+                          fmin(distance(p[(i + n - 1) % n], p[i]), distance(p[i], next)));
         last = t;
     }
     return st;
@@ -195,7 +234,7 @@ static cg_status add_cap(offset_band *band, cg_point64 p, direction t, cg_offset
         return CG_OK;
     cg_offset_join join = band->join;
     band->join = end == CG_OFFSET_END_ROUND ? CG_OFFSET_JOIN_ROUND : CG_OFFSET_JOIN_SQUARE;
-    cg_status st = add_join(band, p, t, (direction){-t.x, -t.y});
+    cg_status st = add_join(band, p, t, (direction){-t.x, -t.y}, 0, 0);
     band->join = join;
     return st;
 }
@@ -214,7 +253,8 @@ static cg_status add_open(offset_band *band, const cg_point64 *p, size_t n, cg_o
         direction t = unit(p[i], p[i + 1]);
         st = add_edge(band, p[i], p[i + 1], t);
         if (st == CG_OK && i > 0)
-            st = add_join(band, p[i], last, t);
+            st = add_join(band, p[i], last, t, polygon_orient(p[i - 1], p[i], p[i + 1]),
+                          fmin(distance(p[i - 1], p[i]), distance(p[i], p[i + 1])));
         last = t;
     }
     if (st == CG_OK)
@@ -313,6 +353,7 @@ cg_status cg_offset64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, d
         st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, paths, options->fill, &none, options->fill,
                                   &simple);
     }
+    band.sides = !polygons ? BAND_RIGHT | BAND_LEFT : delta > 0 ? BAND_RIGHT : BAND_LEFT;
     if (st == CG_OK && (d > 0 || !polygons))
         st = build_band(&band, polygons ? &simple : paths, options->end);
     core_array_free(&band.piece);
@@ -327,6 +368,8 @@ cg_status cg_offset64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, d
             st = cg_clip_boolean64_ws(ws, CG_CLIP_DIFFERENCE, &simple, CG_CLIP_NON_ZERO, &rings,
                                       CG_CLIP_NON_ZERO, result);
     }
+    if (st == CG_OK)
+        polygon_drop_slivers(result);
     cg_polygon_set64_clear(&simple);
     cg_polygon_set64_clear(&rings);
     return st;

@@ -5,6 +5,7 @@
 #include "../core/array.h"
 
 #include <math.h>
+#include <string.h>
 
 cg_status polygon_grid_pick(double scale, double largest, polygon_grid *grid)
 {
@@ -130,4 +131,47 @@ int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c)
 {
     polygon_i128 d = (polygon_i128)(b.x - a.x) * (c.y - a.y) - (polygon_i128)(b.y - a.y) * (c.x - a.x);
     return (d > 0) - (d < 0);
+}
+
+static int is_sliver(const cg_point64 *p, size_t n)
+{
+    polygon_i128 twice_area = polygon_ring_twice_area(p, n);
+    double perimeter = 0;
+    for (size_t i = 0; i < n; i++) {
+        cg_point64 a = p[i], b = p[(i + 1) % n];
+        perimeter += hypot((double)(b.x - a.x), (double)(b.y - a.y));
+    }
+    double area = fabs((double)twice_area) / 2;
+    return area < perimeter / 2;
+}
+
+void polygon_drop_slivers(cg_polygon_set64 *set)
+{
+    size_t rings = 0, points = 0, polygons = 0;
+    for (size_t k = 0; k < set->polygon_count; k++) {
+        size_t r0 = set->polygon_start[k], r1 = set->polygon_start[k + 1];
+        size_t first_ring = rings;
+        for (size_t r = r0; r < r1; r++) {
+            size_t a = set->ring_start[r], n = set->ring_start[r + 1] - a;
+            if (is_sliver(set->points + a, n)) {
+                if (r == r0)
+                    break; /* the outer ring: the whole polygon goes */
+                continue;
+            }
+            /* the ring moved down to where the kept ones end (never up) */
+            memmove(set->points + points, set->points + a, n * sizeof *set->points);
+            set->ring_start[rings] = points;
+            points += n;
+            rings++;
+        }
+        if (rings > first_ring)
+            set->polygon_start[polygons++] = first_ring;
+    }
+    set->point_count = points;
+    set->ring_count = rings;
+    set->polygon_count = polygons;
+    if (set->ring_start)
+        set->ring_start[rings] = points;
+    if (set->polygon_start)
+        set->polygon_start[polygons] = rings;
 }

@@ -32,6 +32,11 @@ polygon_i128 polygon_ring_twice_area(const cg_point64 *p, size_t n);
 /* The largest |coordinate| of the set; CG_EINVAL when a ring lies outside
  * its point array. */
 cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest);
+/* Drops from a result (polygons with holes) every ring narrower than a
+ * grid unit on average (its area below half its perimeter), the rounding's
+ * slivers: a polygon with its holes when it is its outer ring, a hole
+ * alone (filled) otherwise.  The rings left keep their order. */
+void polygon_drop_slivers(cg_polygon_set64 *set);
 /* Sign of the cross product (b - a) x (c - a), exact. */
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c);
 

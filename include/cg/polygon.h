@@ -85,6 +85,39 @@ cg_status cg_offset(const cg_polygon_set *paths, double delta, const cg_offset_o
 cg_status cg_offset_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, double delta,
                        const cg_offset_options *options, double scale, cg_polygon_set *result);
 
+/* ---- clipping against an axis-aligned rectangle ------------------------------ */
+
+/* A rectangle on the integer grid (the boundary belongs to it). */
+typedef struct cg_rect64 { int64_t xmin, ymin, xmax, ymax; } cg_rect64;
+
+/* The part inside the rectangle of the region the rings cover under the
+ * fill rule, as polygons with holes (valid as a boolean result is).  Each
+ * ring is first clipped against the rectangle's four sides in turn
+ * (Sutherland-Hodgman, which keeps every winding number inside the
+ * rectangle; a ring wholly inside is kept and one wholly outside dropped
+ * at the cost of its bounds), and only what is left goes through the
+ * boolean engine, which makes it simple: on a large input and a small
+ * rectangle, the map-tile case, most of the work is skipped.  Intersections
+ * with the sides are rounded to the grid.  CG_EINVAL for a rectangle with
+ * xmin > xmax or ymin > ymax; CG_ERANGE for a coordinate off the grid. */
+cg_status cg_rect_clip64(const cg_polygon_set64 *paths, cg_clip_fill fill, cg_rect64 rect,
+                         cg_polygon_set64 *result);
+cg_status cg_rect_clip64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
+                            cg_clip_fill fill, cg_rect64 rect, cg_polygon_set64 *result);
+cg_status cg_rect_clip(const cg_polygon_set *paths, cg_clip_fill fill, cg_rect rect, double scale,
+                       cg_polygon_set *result);
+cg_status cg_rect_clip_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
+                          cg_rect rect, double scale, cg_polygon_set *result);
+
+/* Every ring of paths taken as an open polyline, cut to the rectangle: each
+ * piece inside it (boundary included) becomes a path of result (emptied
+ * first; a piece that only touches the rectangle at a point is a path of
+ * one point), in the order of the input.  Same errors. */
+cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
+                               cg_polygon_set64 *result);
+cg_status cg_rect_clip_lines(const cg_polygon_set *paths, cg_rect rect, double scale,
+                             cg_polygon_set *result);
+
 #ifdef __cplusplus
 }
 #endif

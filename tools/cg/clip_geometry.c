@@ -111,11 +111,12 @@ static int finish(const common_options *common, const cg_polygon_set *input, int
     return fflush(stdout) == 0 ? CLI_OK : cli_fail("clip: cannot write the result");
 }
 
+static const char *const fill_names[] = {"evenodd", "nonzero", "positive", "negative"};
+
 static int offset(int argc, char **argv)
 {
     static const char *const joins[] = {"miter", "round", "square", "bevel"};
     static const char *const ends[] = {"polygon", "joined", "butt", "square", "round"};
-    static const char *const fills[] = {"evenodd", "nonzero", "positive", "negative"};
     cg_offset_options options = cg_offset_options_default();
     common_options common = {0};
     const char *file = NULL, *delta_text = NULL;
@@ -146,7 +147,7 @@ static int offset(int argc, char **argv)
                     return cli_usage_error("clip", "offset: --end: expected butt, square, round "
                                                    "or joined, got '%s'", value);
             } else if (cli_option_is(option, "--fill")) {
-                int k = pick_name(value, fills, 4);
+                int k = pick_name(value, fill_names, 4);
                 if (k < 0)
                     return cli_usage_error("clip", "offset: --fill: expected evenodd, nonzero, "
                                                    "positive or negative, got '%s'", value);
@@ -218,14 +219,103 @@ done:
     return status;
 }
 
+/* --fill NAME into *fill: 1 taken, 0 not this option, -1 usage error. */
+static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fill *fill)
+{
+    if (!cli_option_is(argv[*i], "--fill"))
+        return 0;
+    const char *value = cli_option_value("clip", argc, argv, i);
+    if (!value)
+        return -1;
+    int k = pick_name(value, fill_names, 4);
+    if (k < 0) {
+        cli_usage_error("clip", "%s: --fill: expected evenodd, nonzero, positive or negative, "
+                                "got '%s'", name, value);
+        return -1;
+    }
+    *fill = (cg_clip_fill)k;
+    return 1;
+}
+
+/* cg clip rect XMIN YMIN XMAX YMAX IN */
+static int rect(int argc, char **argv)
+{
+    static const char *names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
+    double v[4];
+    int count = 0;
+    const char *file = NULL;
+    common_options common = {0};
+    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
+    for (int i = 1; i < argc; i++) {
+        int taken = take_common("rect", argc, argv, &i, &common);
+        if (taken == 0)
+            taken = take_fill("rect", argc, argv, &i, &fill);
+        if (taken < 0)
+            return CLI_USAGE;
+        if (taken)
+            continue;
+        if (cli_is_option(argv[i]))
+            return cli_usage_error("clip", "rect: unknown option '%s'", argv[i]);
+        if (count < 4) {
+            if (cli_parse_double("clip", names[count], argv[i], &v[count]) != 0)
+                return CLI_USAGE;
+            if (!isfinite(v[count]))
+                return cli_usage_error("clip", "%s: expected a finite number, got '%s'",
+                                       names[count], argv[i]);
+            count++;
+        } else if (!file) {
+            file = argv[i];
+        } else {
+            return cli_usage_error("clip", "rect: unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!file)
+        return cli_usage_error("clip", "rect: expected XMIN YMIN XMAX YMAX IN");
+    if (v[0] > v[2] || v[1] > v[3])
+        return cli_usage_error("clip", "rect: the rectangle needs XMIN <= XMAX and YMIN <= YMAX");
+    cg_rect window = {v[0], v[1], v[2], v[3]};
+    cg_polygon_set input = {0}, result = {0};
+    cg_error err;
+    int open = 0, status = CLI_FAILED;
+    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
+        cli_fail("clip: %s", err.message);
+        goto done;
+    }
+    long runs = common.repeat > 0 ? common.repeat : 1;
+    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
+    cg_clip_workspace *ws = runs > 1 && !open ? cg_clip_workspace_create() : NULL;
+    cg_status st = CG_OK;
+    for (long k = 0; k < runs && st == CG_OK; k++) {
+        double t0 = cli_now();
+        st = open ? cg_rect_clip_lines(&input, window, 0, &result)
+                  : cg_rect_clip_ws(ws, &input, fill, window, 0, &result);
+        if (times)
+            times[k] = cli_now() - t0;
+    }
+    cg_clip_workspace_free(ws);
+    if (st == CG_OK)
+        report_time("rect", times, runs);
+    free(times);
+    if (st != CG_OK)
+        cli_fail("clip: rect: %s", cg_status_str(st));
+    else
+        status = finish(&common, &input, open, &result, open);
+done:
+    cg_polygon_set_clear(&input);
+    cg_polygon_set_clear(&result);
+    return status;
+}
+
 int clip_geometry_handles(const char *name)
 {
-    return strcmp(name, "offset") == 0;
+    return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0;
 }
 
 int clip_geometry_run(int argc, char **argv)
 {
     if (strcmp(argv[0], "offset") == 0)
         return offset(argc, argv);
+    if (strcmp(argv[0], "rect") == 0)
+        return rect(argc, argv);
     return cli_usage_error("clip", "unknown clip command '%s'", argv[0]);
 }

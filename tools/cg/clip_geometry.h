@@ -12,7 +12,9 @@ int clip_geometry_run(int argc, char **argv);
 #define CLIP_GEOMETRY_USAGE_LINES                                                          \
     "       cg clip offset DELTA IN [--join miter|round|square|bevel] [--miter-limit M]\n" \
     "                    [--end butt|square|round|joined] [--arc-tolerance T]\n"           \
-    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n"
+    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n" \
+    "       cg clip rect XMIN YMIN XMAX YMAX IN [--fill evenodd|nonzero|positive|negative]\n" \
+    "                    [-o OUT.png] [--repeat N]\n"
 #define CLIP_GEOMETRY_USAGE_TEXT                                                            \
     "offset: inflates (DELTA > 0) or deflates (DELTA < 0) the polygons of IN (WKT\n"     \
     "POLYGON or MULTIPOLYGON), or widens its line strings (LINESTRING or\n"              \
@@ -20,5 +22,8 @@ int clip_geometry_run(int argc, char **argv);
     "shapes the corners (default miter, cut flat at --miter-limit times |DELTA|,\n"      \
     "default 2); --end the ends of line strings (default round; joined closes each\n"    \
     "into a loop and keeps its band); --arc-tolerance bounds the gap between a round\n"  \
-    "join and its chords (default |DELTA|/500).\n\n"
+    "join and its chords (default |DELTA|/500).\n\n"                                     \
+    "rect: the part of IN inside the rectangle: polygons (under --fill) as a WKT\n"      \
+    "MULTIPOLYGON, line strings as a MULTILINESTRING of their pieces in order; a fast\n"  \
+    "path for small rectangles on large inputs (tiles of a map).\n\n"
 #endif

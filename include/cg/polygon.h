@@ -118,6 +118,28 @@ cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
 cg_status cg_rect_clip_lines(const cg_polygon_set *paths, cg_rect rect, double scale,
                              cg_polygon_set *result);
 
+/* ---- triangulation ---------------------------------------------------------- */
+
+/* The constrained Delaunay triangulation of the region the rings cover
+ * under the fill rule, made simple by a union first (so self-crossing
+ * rings gain their crossings as vertices): triangles whose vertices are
+ * exactly the vertices of those simple rings (no point added), which tile
+ * the region exactly (their areas sum to its area, none overlap), every
+ * edge of the rings an edge of the triangles, and every other edge locally
+ * Delaunay (no vertex of the triangle beyond it inside the circle through
+ * the three of one side; decided exactly).  Holes, touching rings and
+ * collinear vertices are allowed.  The result holds each triangle as a
+ * polygon of one counter-clockwise ring of three points.  CG_ERANGE for a
+ * coordinate off the grid; CG_ENOMEM; CG_EUNSUPPORTED beyond 2^30 points. */
+cg_status cg_triangulate64(const cg_polygon_set64 *paths, cg_clip_fill fill,
+                           cg_polygon_set64 *triangles);
+cg_status cg_triangulate64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
+                              cg_clip_fill fill, cg_polygon_set64 *triangles);
+cg_status cg_triangulate(const cg_polygon_set *paths, cg_clip_fill fill, double scale,
+                         cg_polygon_set *triangles);
+cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
+                            double scale, cg_polygon_set *triangles);
+
 #ifdef __cplusplus
 }
 #endif

@@ -306,9 +306,68 @@ done:
     return status;
 }
 
+/* cg clip triangulate IN: the triangles as a MULTIPOLYGON. */
+static int triangulate(int argc, char **argv)
+{
+    const char *file = NULL;
+    common_options common = {0};
+    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
+    for (int i = 1; i < argc; i++) {
+        int taken = take_common("triangulate", argc, argv, &i, &common);
+        if (taken == 0)
+            taken = take_fill("triangulate", argc, argv, &i, &fill);
+        if (taken < 0)
+            return CLI_USAGE;
+        if (taken)
+            continue;
+        if (cli_is_option(argv[i]))
+            return cli_usage_error("clip", "triangulate: unknown option '%s'", argv[i]);
+        if (file)
+            return cli_usage_error("clip", "triangulate: unexpected argument '%s'", argv[i]);
+        file = argv[i];
+    }
+    if (!file)
+        return cli_usage_error("clip", "triangulate: expected IN");
+    cg_polygon_set input = {0}, result = {0};
+    cg_error err;
+    int open = 0, status = CLI_FAILED;
+    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
+        cli_fail("clip: %s", err.message);
+        goto done;
+    }
+    if (open) {
+        status = cli_usage_error("clip", "triangulate: %s holds line strings; expected polygons",
+                                 file);
+        goto done;
+    }
+    long runs = common.repeat > 0 ? common.repeat : 1;
+    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
+    cg_clip_workspace *ws = runs > 1 ? cg_clip_workspace_create() : NULL;
+    cg_status st = CG_OK;
+    for (long k = 0; k < runs && st == CG_OK; k++) {
+        double t0 = cli_now();
+        st = cg_triangulate_ws(ws, &input, fill, 0, &result);
+        if (times)
+            times[k] = cli_now() - t0;
+    }
+    cg_clip_workspace_free(ws);
+    if (st == CG_OK)
+        report_time("triangulate", times, runs);
+    free(times);
+    if (st != CG_OK)
+        cli_fail("clip: triangulate: %s", cg_status_str(st));
+    else
+        status = finish(&common, &input, 0, &result, 0);
+done:
+    cg_polygon_set_clear(&input);
+    cg_polygon_set_clear(&result);
+    return status;
+}
+
 int clip_geometry_handles(const char *name)
 {
-    return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0;
+    return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0 ||
+           strcmp(name, "triangulate") == 0;
 }
 
 int clip_geometry_run(int argc, char **argv)
@@ -317,5 +376,7 @@ int clip_geometry_run(int argc, char **argv)
         return offset(argc, argv);
     if (strcmp(argv[0], "rect") == 0)
         return rect(argc, argv);
+    if (strcmp(argv[0], "triangulate") == 0)
+        return triangulate(argc, argv);
     return cli_usage_error("clip", "unknown clip command '%s'", argv[0]);
 }

@@ -14,7 +14,9 @@ int clip_geometry_run(int argc, char **argv);
     "                    [--end butt|square|round|joined] [--arc-tolerance T]\n"           \
     "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n" \
     "       cg clip rect XMIN YMIN XMAX YMAX IN [--fill evenodd|nonzero|positive|negative]\n" \
-    "                    [-o OUT.png] [--repeat N]\n"
+    "                    [-o OUT.png] [--repeat N]\n"                                  \
+    "       cg clip triangulate IN [--fill evenodd|nonzero|positive|negative] [-o OUT.png]\n" \
+    "                    [--repeat N]\n"
 #define CLIP_GEOMETRY_USAGE_TEXT                                                            \
     "offset: inflates (DELTA > 0) or deflates (DELTA < 0) the polygons of IN (WKT\n"     \
     "POLYGON or MULTIPOLYGON), or widens its line strings (LINESTRING or\n"              \
@@ -25,5 +27,7 @@ int clip_geometry_run(int argc, char **argv);
     "join and its chords (default |DELTA|/500).\n\n"                                     \
     "rect: the part of IN inside the rectangle: polygons (under --fill) as a WKT\n"      \
     "MULTIPOLYGON, line strings as a MULTILINESTRING of their pieces in order; a fast\n"  \
-    "path for small rectangles on large inputs (tiles of a map).\n\n"
+    "path for small rectangles on large inputs (tiles of a map).\n\n"                   \
+    "triangulate: the constrained Delaunay triangulation of the polygons of IN (made\n"  \
+    "simple first), with no point added, as a MULTIPOLYGON of triangles.\n\n"
 #endif

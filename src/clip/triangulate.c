@@ -7,8 +7,8 @@
  *    a triangle that encloses the grid, each insertion split and then made
  *    Delaunay again by flipping (Lawson).
  * 3. Each ring edge missing from it is recovered by flipping the edges
- *    that cross it (Sloan): no vertex lies inside a ring edge, so the
- *    crossed region is emptied by flips alone.
+ *    that cross it (Sloan); a ring edge with vertices on it (a hole may
+ *    touch its outer ring inside an edge) is recovered piece by piece.
  * 4. Every edge that is not a ring edge is flipped until it is locally
  *    Delaunay, which makes the triangulation the constrained Delaunay one.
  * 5. The triangles to the left of the ring edges (outer rings run
@@ -237,80 +237,153 @@ static int crosses(cg_point64 p, cg_point64 q, cg_point64 a, cg_point64 b)
     return s1 * s2 < 0 && s3 * s4 < 0;
 }
 
-/* Makes a-b an edge by flipping the edges that cross it, and marks it. */
-static cg_status recover_edge(mesh *m, uint32_t a, uint32_t b)
+/* 1 when c lies strictly inside segment a-b. */
+static int inside_segment(cg_point64 a, cg_point64 b, cg_point64 c)
 {
-    int i;
-    uint32_t t = find_edge(m, a, b, &i);
+    if (polygon_orient(a, b, c) != 0)
+        return 0;
+    polygon_i128 dot = (polygon_i128)(c.x - a.x) * (b.x - a.x) + (polygon_i128)(c.y - a.y) * (b.y - a.y);
+    polygon_i128 len = (polygon_i128)(b.x - a.x) * (b.x - a.x) + (polygon_i128)(b.y - a.y) * (b.y - a.y);
+    return dot > 0 && dot < len;
+}
+
+typedef CORE_ARRAY(uint64_t) edge_queue;
+
+/* Walks from a towards b, gathering into queue (emptied first) the edges
+ * that cross segment a-b, up to b or to the first vertex lying on the
+ * segment (a touching ring's vertex may): that vertex, or b, in *reached. */
+static cg_status gather_crossings(mesh *m, uint32_t a, uint32_t b, edge_queue *queue,
+                                  uint32_t *reached)
+{
     cg_point64 pa = m->points.data[a], pb = m->points.data[b];
-    cg_status st = CG_OK;
-    /* the edges crossing a-b, as vertex pairs, gathered by walking along it */
-    CORE_ARRAY(uint64_t) queue = {0};
-    if (t == NONE) {
-        uint32_t s = m->corner_of.data[a];
-        for (size_t guard = 0;; guard++) { /* the triangle of a's fan that a-b leaves a through */
-            if (guard > m->triangles.count)
-                return CG_EINVAL; /* a vertex on a-b: not simple rings */
-            const triangle *x = &m->triangles.data[s];
-            int k = x->vertex[0] == a ? 0 : x->vertex[1] == a ? 1 : 2;
-            cg_point64 p = point_of(m, x, NEXT(k)), q = point_of(m, x, PREV(k));
-            if (polygon_orient(pa, p, pb) > 0 && polygon_orient(pa, q, pb) < 0) {
-                i = k;
-                break;
-            }
-            s = x->neighbor[NEXT(k)];
+    uint32_t s = m->corner_of.data[a];
+    int i = 0;
+    queue->count = 0;
+    for (size_t guard = 0;; guard++) { /* the triangle of a's fan that a-b leaves a through */
+        if (guard > m->triangles.count)
+            return CG_EINVAL;
+        const triangle *x = &m->triangles.data[s];
+        int k = x->vertex[0] == a ? 0 : x->vertex[1] == a ? 1 : 2;
+        cg_point64 p = point_of(m, x, NEXT(k)), q = point_of(m, x, PREV(k));
+        if (inside_segment(pa, pb, p) || inside_segment(pa, pb, q)) {
+            *reached = inside_segment(pa, pb, p) ? x->vertex[NEXT(k)] : x->vertex[PREV(k)];
+            return CG_OK; /* a-reached is already an edge */
         }
-        for (;;) { /* cross the edge opposite i of s, into the next triangle */
-            const triangle *x = &m->triangles.data[s];
-            uint32_t p = x->vertex[NEXT(i)], q = x->vertex[PREV(i)];
-            st = core_array_push(&queue, (uint64_t)p << 32 | q);
-            if (st != CG_OK)
-                break;
-            uint32_t u = x->neighbor[i];
-            const triangle *y = &m->triangles.data[u];
-            int j = back_index(m, u, s);
-            uint32_t z = y->vertex[j];
-            if (z == b)
-                break;
-            /* leave through the edge whose ends lie on both sides of a-b:
-             * the entry edge's right end with z when z is on the left */
-            i = polygon_orient(pa, pb, m->points.data[z]) > 0 ? NEXT(j) : PREV(j);
-            s = u;
+        if (polygon_orient(pa, p, pb) > 0 && polygon_orient(pa, q, pb) < 0) {
+            i = k;
+            break;
         }
+        s = x->neighbor[NEXT(k)];
     }
-    /* Sloan: flip each crossing edge whose quadrilateral is convex; one
-     * still crossing goes back into the queue, as does one not yet
-     * flippable */
-    for (size_t head = 0; st == CG_OK && head < queue.count; head++) {
-        uint32_t p = (uint32_t)(queue.data[head] >> 32), q = (uint32_t)queue.data[head];
+    for (;;) { /* cross the edge opposite i of s, into the next triangle */
+        const triangle *x = &m->triangles.data[s];
+        uint32_t p = x->vertex[NEXT(i)], q = x->vertex[PREV(i)];
+        if (core_array_push(queue, (uint64_t)p << 32 | q) != CG_OK)
+            return CG_ENOMEM;
+        uint32_t u = x->neighbor[i];
+        const triangle *y = &m->triangles.data[u];
+        int j = back_index(m, u, s);
+        uint32_t z = y->vertex[j];
+        int side = polygon_orient(pa, pb, m->points.data[z]);
+        if (z == b || side == 0) {
+            *reached = z;
+            return CG_OK;
+        }
+        /* leave through the edge whose ends lie on both sides of a-b: the
+         * entry edge's right end with z when z is on the left */
+        i = side > 0 ? NEXT(j) : PREV(j);
+        s = u;
+    }
+}
+
+/* Sloan: flips each queued edge crossing a-b whose quadrilateral is
+ * convex; one still crossing goes back into the queue, as does one not
+ * yet flippable, until none crosses. */
+static cg_status flip_crossings(mesh *m, uint32_t a, uint32_t b, edge_queue *queue)
+{
+    cg_point64 pa = m->points.data[a], pb = m->points.data[b];
+    size_t limit = 64 * queue->count + 1024;
+    for (size_t head = 0; head < queue->count; head++) {
+        if (head > limit)
+            return CG_EINVAL; /* cannot happen when no vertex lies on a-b */
+        uint32_t p = (uint32_t)(queue->data[head] >> 32), q = (uint32_t)queue->data[head];
         int k;
         uint32_t s = find_edge(m, p, q, &k);
         if (s == NONE)
-            continue; /* flipped away already */
+            continue;
         const triangle *x = &m->triangles.data[s];
         uint32_t u = x->neighbor[k];
-        uint32_t r = m->triangles.data[u].vertex[back_index(m, u, s)];
-        uint32_t w = x->vertex[k];
+        uint32_t r = m->triangles.data[u].vertex[back_index(m, u, s)], w = x->vertex[k];
         cg_point64 pw = m->points.data[w], pr = m->points.data[r];
+        cg_status st = CG_OK;
         if (!crosses(pw, pr, m->points.data[p], m->points.data[q])) {
-            st = core_array_push(&queue, queue.data[head]);
-            continue;
+            st = core_array_push(queue, queue->data[head]);
+        } else {
+            flip(m, s, k); /* the new edge is w-r */
+            if (crosses(pw, pr, pa, pb))
+                st = core_array_push(queue, (uint64_t)w << 32 | r);
         }
-        flip(m, s, k); /* the new edge is w-r */
-        if (w != a && w != b && r != a && r != b && crosses(pw, pr, pa, pb))
-            st = core_array_push(&queue, (uint64_t)w << 32 | r);
+        if (st != CG_OK)
+            return st;
     }
-    core_array_free(&queue);
-    if (st != CG_OK)
-        return st;
-    t = find_edge(m, a, b, &i);
+    return CG_OK;
+}
+
+/* Marks the edge a-b (present) as a ring edge on both sides. */
+static cg_status mark_edge(mesh *m, uint32_t a, uint32_t b)
+{
+    int i;
+    uint32_t t = find_edge(m, a, b, &i);
     if (t == NONE)
-        return CG_EINVAL; /* cannot happen on simple rings */
+        return CG_EINVAL;
     triangle *x = &m->triangles.data[t];
     x->constrained |= (uint8_t)(1 << i);
     uint32_t u = x->neighbor[i];
     m->triangles.data[u].constrained |= (uint8_t)(1 << back_index(m, u, t));
     return CG_OK;
+}
+
+/* Makes the ring edge a-b a union of triangle edges (split at the vertices
+ * lying on it) by flipping the edges that cross it, and marks them. */
+static cg_status recover_edge(mesh *m, uint32_t a, uint32_t b)
+{
+    edge_queue queue = {0};
+    cg_status st = CG_OK;
+    while (a != b && st == CG_OK) {
+        int i;
+        uint32_t reached = b;
+        if (find_edge(m, a, b, &i) == NONE)
+            st = gather_crossings(m, a, b, &queue, &reached);
+        if (st == CG_OK)
+            st = flip_crossings(m, a, reached, &queue);
+        if (st == CG_OK)
+            st = mark_edge(m, a, reached);
+        a = reached;
+    }
+    core_array_free(&queue);
+    return st;
+}
+
+/* The triangle with the first piece of ring edge a-b leaving a (to b, or
+ * to the first vertex on the way), as (triangle, vertex opposite). */
+static uint32_t first_piece(const mesh *m, uint32_t a, uint32_t b, int *opposite)
+{
+    uint32_t t = find_edge(m, a, b, opposite);
+    if (t != NONE)
+        return t;
+    cg_point64 pa = m->points.data[a], pb = m->points.data[b];
+    uint32_t start = m->corner_of.data[a];
+    t = start;
+    do {
+        const triangle *x = &m->triangles.data[t];
+        int k = x->vertex[0] == a ? 0 : x->vertex[1] == a ? 1 : 2;
+        if (inside_segment(pa, pb, point_of(m, x, NEXT(k)))) {
+            *opposite = PREV(k);
+            return t;
+        }
+        t = x->neighbor[NEXT(k)];
+    } while (t != start && t != NONE);
+    return NONE;
 }
 
 /* ---- building it ------------------------------------------------------------ */
@@ -429,7 +502,7 @@ static cg_status mark_inside(mesh *m, const cg_polygon_set64 *rings, size_t coun
             uint32_t u = vertex_of(m, count, rings->points[k]);
             uint32_t v = vertex_of(m, count, rings->points[k + 1 < b ? k + 1 : a]);
             int i;
-            uint32_t t = find_edge(m, u, v, &i);
+            uint32_t t = first_piece(m, u, v, &i);
             if (t != NONE && !m->triangles.data[t].inside) {
                 m->triangles.data[t].inside = 1;
                 if (push_edge(m, t, 0) != CG_OK)

@@ -3,7 +3,8 @@
  * 1. The rings are made simple by a union (fill rule), so that they meet
  *    at most at vertices; their distinct points are the vertices.
  * 2. The Delaunay triangulation of the vertices is built by inserting them
- *    one by one (in Morton order, found by walking from the last one) into
+ *    one by one (random rounds, each in Morton order; each found by walking
+ *    from the last one) into
  *    a triangle that encloses the grid, each insertion split and then made
  *    Delaunay again by flipping (Lawson).
  * 3. Each ring edge missing from it is recovered by flipping the edges
@@ -388,11 +389,11 @@ static uint32_t first_piece(const mesh *m, uint32_t a, uint32_t b, int *opposite
 
 /* ---- building it ------------------------------------------------------------ */
 
-/* Interleaves the bits of x and y (each below 2^32). */
+/* Interleaves the bits of x and y (each below 2^28). */
 static uint64_t morton(uint64_t x, uint64_t y)
 {
     uint64_t key = 0;
-    for (int bit = 0; bit < 32; bit++)
+    for (int bit = 0; bit < 28; bit++)
         key |= (x >> bit & 1) << (2 * bit) | (y >> bit & 1) << (2 * bit + 1);
     return key;
 }
@@ -450,7 +451,7 @@ static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, size_t *coun
     return CG_OK;
 }
 
-/* Inserts the vertices in Morton order (near one another in turn). */
+/* Inserts every vertex. */
 static cg_status insert_all(mesh *m, size_t count)
 {
     CORE_ARRAY(keyed) order = {0};
@@ -466,11 +467,31 @@ static cg_status insert_all(mesh *m, size_t count)
         hi = dx > hi ? dx : hi;
         hi = dy > hi ? dy : hi;
     }
-    double to_key = 4294967295.0 / (double)hi;
+    /* biased randomized insertion: the vertices shuffled, then in rounds
+     * of doubling size (1, 2, 4, ...), each round in Morton order, so that
+     * points along a curve are not met in order (which makes every insertion
+     * flip around the whole curve) and each walk stays short */
+    double to_key = 268435455.0 / (double)hi;
+    uint64_t random = 0x9e3779b97f4a7c15ull;
+    for (size_t i = 0; i < count; i++)
+        order.data[i].vertex = (uint32_t)i;
+    for (size_t i = count; i > 1; i--) {
+        random ^= random << 13;
+        random ^= random >> 7;
+        random ^= random << 17;
+        size_t j = (size_t)(random % i);
+        uint32_t swap = order.data[i - 1].vertex;
+        order.data[i - 1].vertex = order.data[j].vertex;
+        order.data[j].vertex = swap;
+    }
     for (size_t i = 0; i < count; i++) {
-        uint64_t x = (uint64_t)((double)(m->points.data[i].x - lo_x) * to_key);
-        uint64_t y = (uint64_t)((double)(m->points.data[i].y - lo_y) * to_key);
-        order.data[i] = (keyed){morton(x, y), (uint32_t)i};
+        cg_point64 p = m->points.data[order.data[i].vertex];
+        uint64_t x = (uint64_t)((double)(p.x - lo_x) * to_key);
+        uint64_t y = (uint64_t)((double)(p.y - lo_y) * to_key);
+        uint64_t round = 0;
+        while (((size_t)2 << round) <= i + 1)
+            round++;
+        order.data[i].key = round << 56 | morton(x, y); /* rounds below 2^8 */
     }
     qsort(order.data, count, sizeof *order.data, compare_keyed);
     cg_status st = CG_OK;

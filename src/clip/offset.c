@@ -25,7 +25,9 @@
  *     side (the same argument from inside);
  *   - an open path is its band on both sides alone, with a cap at each end.
  *
- * A join is only built on the side that counts: a miter reaches up to
+ * The rectangles and joins of a run of edges are given to the engine united
+ * already, as one polygon (see "chains" below).  A join is only built on
+ * the side that counts: a miter reaches up to
  * miter_limit * d from its vertex, farther than the offset, and one built
  * on the other side (say inside a hole's sharp corner) could cross the
  * polygon and come out beyond it. */
@@ -93,31 +95,6 @@ static cg_status piece_close(offset_band *band)
     return cg_polygon_set64_add_ring(band->rings, p, n, 1);
 }
 
-/* The rectangle of width d beside the edge a-b (direction t) on each side
- * that counts, through a and b themselves so that it shares its ends
- * exactly with the joins:
- *
- *     a+n*d ----------- b+n*d      (right side, n the right normal)
- *       |                 |
- *       a ---- edge ----> b
- *       |                 |
- *     a-n*d ----------- b-n*d      (left side)
- */
-static cg_status add_edge(offset_band *band, cg_point64 a, cg_point64 b, direction t)
-{
-    direction n = right_normal(t);
-    double d = band->width;
-    cg_point64 ring[6] = {moved(a, n, d), moved(b, n, d), b, moved(b, n, -d), moved(a, n, -d), a};
-    int first = band->sides & BAND_RIGHT ? 0 : 2, last = band->sides & BAND_LEFT ? 5 : 2;
-    cg_status st = CG_OK;
-    /* the left side alone is ring[2..5]: b, b-n*d, a-n*d, a */
-    for (int i = first; i <= last && st == CG_OK; i++)
-        st = piece_push(band, ring[i]);
-    if (st == CG_OK && last == 2) /* the right side alone: a+n*d, b+n*d, b, a */
-        st = piece_push(band, a);
-    return st == CG_OK ? piece_close(band) : st;
-}
-
 /* The corner points of a join cut flat, perpendicular to the bisector b, at
  * `reach` from the vertex p: on each offset edge (p + m*d, along the edge
  * towards b) the point whose distance along b is reach.  phi is the angle
@@ -135,6 +112,41 @@ static cg_status add_flat_cut(offset_band *band, cg_point64 p, direction m1, dir
                      (int64_t)llround((double)p.y + m2.y * d + u2.y / l2 * along)};
     cg_status st = piece_push(band, q1);
     return st == CG_OK ? piece_push(band, q2) : st;
+}
+
+/* The outline of a join on the gap's side at p: p + m1*d, the join's own
+ * points, p + m2*d (m1, m2 the normals there, b their bisector, phi the
+ * angle between m1 and b; side +1 when m1 turns counter-clockwise to m2). */
+static cg_status push_join_points(offset_band *band, cg_point64 p, direction m1, direction m2,
+                                  direction b, double phi, double side)
+{
+    double d = band->width, cos_phi = cos(phi);
+    cg_status st = piece_push(band, moved(p, m1, d));
+    if (st != CG_OK)
+        return st;
+    switch (band->join) {
+    case CG_OFFSET_JOIN_BEVEL:
+        break;
+    case CG_OFFSET_JOIN_SQUARE:
+        st = add_flat_cut(band, p, m1, m2, b, phi, d);
+        break;
+    case CG_OFFSET_JOIN_MITER:
+        if (cos_phi * band->miter_limit >= 1)
+            st = piece_push(band, moved(p, b, d / cos_phi));
+        else
+            st = add_flat_cut(band, p, m1, m2, b, phi, d * band->miter_limit);
+        break;
+    case CG_OFFSET_JOIN_ROUND: {
+        int steps = (int)ceil(2 * phi / band->arc_step);
+        for (int k = 1; k < steps && st == CG_OK; k++) {
+            double angle = side * 2 * phi * k / steps, c = cos(angle), s = sin(angle);
+            direction v = {m1.x * c - m1.y * s, m1.x * s + m1.y * c};
+            st = piece_push(band, moved(p, v, d));
+        }
+        break;
+    }
+    }
+    return st == CG_OK ? piece_push(band, moved(p, m2, d)) : st;
 }
 
 /* The join at vertex p between an edge arriving along t1 and one leaving
@@ -163,7 +175,7 @@ static cg_status add_join(offset_band *band, cg_point64 p, direction t1, directi
         b = t1;
     else
         b = (direction){b.x / bl, b.y / bl};
-    double cos_phi = fmin(1, fmax(-1, m1.x * b.x + m1.y * b.y)), phi = acos(cos_phi);
+    double phi = acos(fmin(1, fmax(-1, m1.x * b.x + m1.y * b.y)));
     int gap_counts = band->sides & (side > 0 ? BAND_RIGHT : BAND_LEFT);
     int overlap_counts = band->sides & (side > 0 ? BAND_LEFT : BAND_RIGHT);
     cg_status st = CG_OK;
@@ -180,50 +192,137 @@ static cg_status add_join(offset_band *band, cg_point64 p, direction t1, directi
         return st;
     st = piece_push(band, p);
     if (st == CG_OK)
-        st = piece_push(band, moved(p, m1, d));
-    if (st != CG_OK)
-        return st;
-    switch (band->join) {
-    case CG_OFFSET_JOIN_BEVEL:
-        break;
-    case CG_OFFSET_JOIN_SQUARE:
-        st = add_flat_cut(band, p, m1, m2, b, phi, d);
-        break;
-    case CG_OFFSET_JOIN_MITER:
-        if (cos_phi * band->miter_limit >= 1)
-            st = piece_push(band, moved(p, b, d / cos_phi));
-        else
-            st = add_flat_cut(band, p, m1, m2, b, phi, d * band->miter_limit);
-        break;
-    case CG_OFFSET_JOIN_ROUND: {
-        int steps = (int)ceil(2 * phi / band->arc_step);
-        for (int k = 1; k < steps && st == CG_OK; k++) {
-            double angle = side * 2 * phi * k / steps, c = cos(angle), s = sin(angle);
-            direction v = {m1.x * c - m1.y * s, m1.x * s + m1.y * c};
-            st = piece_push(band, moved(p, v, d));
-        }
-        break;
-    }
-    }
-    if (st == CG_OK)
-        st = piece_push(band, moved(p, m2, d));
+        st = push_join_points(band, p, m1, m2, b, phi, side);
     return st == CG_OK ? piece_close(band) : st;
 }
 
-/* The band of the ring p[0..n) (distinct consecutive points, closed). */
-static cg_status add_closed(offset_band *band, const cg_point64 *p, size_t n)
+/* ---- chains: the band of a run of edges as one polygon ---------------------- *
+ *
+ * The rectangles and joins of consecutive edges, on one side, unite into
+ * the polygon between the run of edges and its offset: where the run turns
+ * towards that side (a gap) the offset follows the join, where it turns
+ * away the two offset edges meet at their crossing (the rectangles
+ * overlap).  The engine then has one ring per run instead of two per
+ * edge, with few crossings.  A run ends where this polygon might stop
+ * being simple: after a quarter turn in all, at a reversal, or where the
+ * crossing of two offset edges would lie beyond an edge's end (a turn
+ * sharp for the edges' lengths); there it ends square, and the vertex
+ * gets its join as a piece of its own.
+ *
+ *      offset:  q0 --------- x ---------- q2        (x: the crossing)
+ *               |                          |
+ *      run:     p0 -------- p1 ----------- p2       (p1 turns away)
+ */
+
+typedef struct chain {
+    CORE_ARRAY(cg_point64) offset; /* the offset side, in the run's direction */
+    size_t first;                  /* the run's first vertex */
+    double turned;                 /* the turning so far */
+    double used;                   /* length of the current edge taken by a crossing at its start */
+} chain;
+
+/* The run from vertex c->first to `last` (indices modulo n) closed by its
+ * offset, as a ring of the band; a new run starts at `last`. */
+static cg_status chain_close(offset_band *band, chain *c, const cg_point64 *p, size_t n,
+                             size_t last, direction end_normal)
 {
-    cg_status st = CG_OK;
-    direction last = unit(p[n - 1], p[0]);
-    for (size_t i = 0; i < n && st == CG_OK; i++) {
-        cg_point64 next = p[(i + 1) % n];
-        direction t = unit(p[i], next);
-        st = add_edge(band, p[i], next, t);
-        if (st == CG_OK)
-            st = add_join(band, p[i], last, t, polygon_orient(p[(i + n - 1) % n], p[i], next),
-                          fmin(distance(p[(i + n - 1) % n], p[i]), distance(p[i], next)));
-        last = t;
+    cg_status st = core_array_push(&c->offset, moved(p[last % n], end_normal, band->width));
+    for (size_t i = 0; i < c->offset.count && st == CG_OK; i++)
+        st = piece_push(band, c->offset.data[i]);
+    for (size_t k = last + 1; k-- > c->first && st == CG_OK;)
+        st = piece_push(band, p[k % n]);
+    if (st == CG_OK)
+        st = piece_close(band);
+    c->offset.count = 0;
+    c->first = last;
+    c->turned = 0;
+    c->used = 0;
+    return st;
+}
+
+/* The right side's band of the path p[0..n) (distinct consecutive points;
+ * closed: the ring, which starts and ends its runs at vertex 0). */
+static cg_status add_right_side(offset_band *band, const cg_point64 *p, size_t n, int closed)
+{
+    size_t edges = closed ? n : n - 1;
+    chain c = {{0}, 0, 0, 0};
+    direction t = unit(p[0], p[1 % n]);
+    cg_status st = core_array_push(&c.offset, moved(p[0], right_normal(t), band->width));
+    for (size_t k = 1; k <= edges && st == CG_OK; k++) {
+        /* vertex k (p[k % n]) between edge k-1 (direction t) and edge k */
+        direction n1 = right_normal(t);
+        if (k == edges) {
+            st = chain_close(band, &c, p, n, k, n1);
+            if (st == CG_OK && closed)
+                st = add_join(band, p[0], t, unit(p[0], p[1]), polygon_orient(p[n - 1], p[0], p[1]),
+                              fmin(distance(p[n - 1], p[0]), distance(p[0], p[1])));
+            break;
+        }
+        cg_point64 a = p[k - 1], v = p[k % n], b = p[(k + 1) % n];
+        direction t2 = unit(v, b), n2 = right_normal(t2);
+        int turn = polygon_orient(a, v, b);
+        double cross = t.x * t2.y - t.y * t2.x, dot = t.x * t2.x + t.y * t2.y;
+        double angle = fabs(atan2(cross, dot)), d = band->width;
+        double before = distance(a, v) - c.used, after = distance(v, b);
+        /* the crossing of the offset edges lies d tan(angle / 2) back along each */
+        double reach = d * tan(angle / 2);
+        int keep = c.turned + angle <= M_PI / 4 && !(turn == 0 && dot < 0);
+        if (turn == 0 && dot > 0) {
+            c.used = 0; /* straight on */
+        } else if (turn > 0 && keep) {
+            /* towards the right side's gap: the join's outline */
+            direction b2 = {n1.x + n2.x, n1.y + n2.y};
+            double bl = hypot(b2.x, b2.y);
+            b2 = (direction){b2.x / bl, b2.y / bl};
+            band->piece.count = 0;
+            st = push_join_points(band, v, n1, n2, b2, angle / 2, 1);
+            for (size_t i = 0; i < band->piece.count && st == CG_OK; i++)
+                st = core_array_push(&c.offset, band->piece.data[i]);
+            band->piece.count = 0;
+            c.turned += angle;
+            c.used = 0;
+        } else if (turn < 0 && keep && reach <= before && reach <= after) {
+            double scale = d / (1 + n1.x * n2.x + n1.y * n2.y);
+            direction m = {n1.x + n2.x, n1.y + n2.y};
+            st = core_array_push(&c.offset, moved(v, m, scale));
+            c.turned += angle;
+            c.used = reach;
+        } else {
+            st = chain_close(band, &c, p, n, k, n1);
+            if (st == CG_OK)
+                st = add_join(band, v, t, t2, turn, fmin(distance(a, v), after));
+            if (st == CG_OK)
+                st = core_array_push(&c.offset, moved(v, n2, d));
+        }
+        t = t2;
     }
+    core_array_free(&c.offset);
+    return st;
+}
+
+/* The band of path p[0..n) on the sides that count: the right side as it
+ * is, the left side as the right side of the path reversed. */
+static cg_status add_sides(offset_band *band, cg_point64 *p, size_t n, int closed)
+{
+    int sides = band->sides;
+    cg_status st = CG_OK;
+    band->sides = BAND_RIGHT;
+    if (sides & BAND_RIGHT)
+        st = add_right_side(band, p, n, closed);
+    if (st == CG_OK && (sides & BAND_LEFT)) {
+        for (size_t i = 0, j = n - 1; i < j; i++, j--) {
+            cg_point64 swap = p[i];
+            p[i] = p[j];
+            p[j] = swap;
+        }
+        st = add_right_side(band, p, n, closed);
+        for (size_t i = 0, j = n - 1; i < j; i++, j--) {
+            cg_point64 swap = p[i];
+            p[i] = p[j];
+            p[j] = swap;
+        }
+    }
+    band->sides = sides;
     return st;
 }
 
@@ -240,23 +339,15 @@ static cg_status add_cap(offset_band *band, cg_point64 p, direction t, cg_offset
 }
 
 /* The band of the open path p[0..n) (distinct consecutive points). */
-static cg_status add_open(offset_band *band, const cg_point64 *p, size_t n, cg_offset_end end)
+static cg_status add_open(offset_band *band, cg_point64 *p, size_t n, cg_offset_end end)
 {
     if (n == 1) {
         /* a lone point: two caps back to back (nothing for butt ends) */
         cg_status st = add_cap(band, p[0], (direction){1, 0}, end);
         return st == CG_OK ? add_cap(band, p[0], (direction){-1, 0}, end) : st;
     }
-    cg_status st = CG_OK;
-    direction first = unit(p[0], p[1]), last = first;
-    for (size_t i = 0; i + 1 < n && st == CG_OK; i++) {
-        direction t = unit(p[i], p[i + 1]);
-        st = add_edge(band, p[i], p[i + 1], t);
-        if (st == CG_OK && i > 0)
-            st = add_join(band, p[i], last, t, polygon_orient(p[i - 1], p[i], p[i + 1]),
-                          fmin(distance(p[i - 1], p[i]), distance(p[i], p[i + 1])));
-        last = t;
-    }
+    cg_status st = add_sides(band, p, n, 0);
+    direction first = unit(p[0], p[1]), last = unit(p[n - 2], p[n - 1]);
     if (st == CG_OK)
         st = add_cap(band, p[n - 1], last, end);
     if (st == CG_OK)
@@ -285,7 +376,7 @@ static cg_status build_band(offset_band *band, const cg_polygon_set64 *paths, cg
         if (st != CG_OK || clean.count == 0)
             continue;
         if (closed && clean.count >= 2)
-            st = add_closed(band, clean.data, clean.count);
+            st = add_sides(band, clean.data, clean.count, 1);
         else if (closed) /* a joined lone point: a round or square dot */
             st = add_open(band, clean.data, 1,
                           band->join == CG_OFFSET_JOIN_ROUND ? CG_OFFSET_END_ROUND

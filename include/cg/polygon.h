@@ -140,6 +140,31 @@ cg_status cg_triangulate(const cg_polygon_set *paths, cg_clip_fill fill, double 
 cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
                             double scale, cg_polygon_set *triangles);
 
+/* ---- simplification --------------------------------------------------------- */
+
+typedef enum cg_simplify_algorithm {
+    CG_SIMPLIFY_RDP,        /* Ramer-Douglas-Peucker: tolerance is a distance */
+    CG_SIMPLIFY_VISVALINGAM /* Visvalingam-Whyatt: tolerance is a triangle's area */
+} cg_simplify_algorithm;
+
+/* Simplifies the region the rings cover (made simple by a union first),
+ * removing vertices while the shape stays within the tolerance: RDP keeps
+ * the vertex farthest from each shortcut while it is farther than the
+ * tolerance; Visvalingam-Whyatt removes, smallest first, the vertices
+ * whose triangle with their two neighbours has an area below it.  Topology
+ * is kept: a vertex goes only when no other vertex (of any ring) lies in
+ * the region between the removed stretch and its shortcut, so no edge
+ * crosses or touches another that did not before, and no ring falls below
+ * three vertices.  The result is a boolean result (valid).  open: the rings
+ * of paths are open polylines instead (their ends kept; result paths in the
+ * input's order, not united).  CG_EINVAL for a negative or NaN tolerance. */
+cg_status cg_simplify64(const cg_polygon_set64 *paths, int open, cg_clip_fill fill,
+                        cg_simplify_algorithm algorithm, double tolerance,
+                        cg_polygon_set64 *result);
+cg_status cg_simplify(const cg_polygon_set *paths, int open, cg_clip_fill fill,
+                      cg_simplify_algorithm algorithm, double tolerance, double scale,
+                      cg_polygon_set *result);
+
 #ifdef __cplusplus
 }
 #endif

@@ -364,10 +364,83 @@ done:
     return status;
 }
 
+/* cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam] */
+static int simplify(int argc, char **argv)
+{
+    const char *file = NULL, *tolerance_text = NULL;
+    common_options common = {0};
+    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
+    cg_simplify_algorithm algorithm = CG_SIMPLIFY_RDP;
+    for (int i = 1; i < argc; i++) {
+        int taken = take_common("simplify", argc, argv, &i, &common);
+        if (taken == 0)
+            taken = take_fill("simplify", argc, argv, &i, &fill);
+        if (taken < 0)
+            return CLI_USAGE;
+        if (taken)
+            continue;
+        if (cli_option_is(argv[i], "--algorithm")) {
+            const char *a = cli_option_value("clip", argc, argv, &i);
+            if (!a)
+                return CLI_USAGE;
+            if (strcmp(a, "rdp") == 0)
+                algorithm = CG_SIMPLIFY_RDP;
+            else if (strcmp(a, "visvalingam") == 0)
+                algorithm = CG_SIMPLIFY_VISVALINGAM;
+            else
+                return cli_usage_error("clip", "simplify: --algorithm: expected rdp or "
+                                               "visvalingam, got '%s'", a);
+        } else if (cli_is_option(argv[i])) {
+            return cli_usage_error("clip", "simplify: unknown option '%s'", argv[i]);
+        } else if (!tolerance_text) {
+            tolerance_text = argv[i];
+        } else if (!file) {
+            file = argv[i];
+        } else {
+            return cli_usage_error("clip", "simplify: unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!file)
+        return cli_usage_error("clip", "simplify: expected TOLERANCE IN");
+    double tolerance;
+    if (cli_parse_double("clip", "TOLERANCE", tolerance_text, &tolerance) != 0)
+        return CLI_USAGE;
+    if (!(tolerance >= 0) || isinf(tolerance))
+        return cli_usage_error("clip", "TOLERANCE: expected a finite number >= 0, got '%s'",
+                               tolerance_text);
+    cg_polygon_set input = {0}, result = {0};
+    cg_error err;
+    int open = 0, status = CLI_FAILED;
+    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
+        cli_fail("clip: %s", err.message);
+        goto done;
+    }
+    long runs = common.repeat > 0 ? common.repeat : 1;
+    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
+    cg_status st = CG_OK;
+    for (long k = 0; k < runs && st == CG_OK; k++) {
+        double t0 = cli_now();
+        st = cg_simplify(&input, open, fill, algorithm, tolerance, 0, &result);
+        if (times)
+            times[k] = cli_now() - t0;
+    }
+    if (st == CG_OK)
+        report_time("simplify", times, runs);
+    free(times);
+    if (st != CG_OK)
+        cli_fail("clip: simplify: %s", cg_status_str(st));
+    else
+        status = finish(&common, &input, open, &result, open);
+done:
+    cg_polygon_set_clear(&input);
+    cg_polygon_set_clear(&result);
+    return status;
+}
+
 int clip_geometry_handles(const char *name)
 {
     return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0 ||
-           strcmp(name, "triangulate") == 0;
+           strcmp(name, "triangulate") == 0 || strcmp(name, "simplify") == 0;
 }
 
 int clip_geometry_run(int argc, char **argv)
@@ -378,5 +451,7 @@ int clip_geometry_run(int argc, char **argv)
         return rect(argc, argv);
     if (strcmp(argv[0], "triangulate") == 0)
         return triangulate(argc, argv);
+    if (strcmp(argv[0], "simplify") == 0)
+        return simplify(argc, argv);
     return cli_usage_error("clip", "unknown clip command '%s'", argv[0]);
 }

@@ -79,4 +79,36 @@ echo "LINESTRING (0 0, 1 x)" > "$tmp/bad.wkt"
 expect 1 "offset bad wkt" "$cg" clip offset 1 "$tmp/bad.wkt"
 one_line "offset bad wkt"
 expect 2 "offset bad picture" "$cg" clip offset 1 "$tmp/sq.wkt" -o "$tmp/o.gif"
+
+# rect: polygons and line strings
+near "rect area" "$("$cg" clip rect 2 2 12 12 "$tmp/sq.wkt" | wkt_area)" "$((64 - 4))" 1e-6
+check "rect outside" "$("$cg" clip rect 20 20 30 30 "$tmp/sq.wkt")" "MULTIPOLYGON EMPTY"
+check "rect line" "$("$cg" clip rect 5 -1 20 5 "$tmp/l.wkt")" "MULTILINESTRING ((5 0, 10 0, 10 5))"
+check "rect lines empty" "$("$cg" clip rect 20 20 30 30 "$tmp/l.wkt")" "MULTILINESTRING EMPTY"
+expect 0 "rect repeat" "$cg" clip rect 0 0 5 5 "$tmp/sq.wkt" --repeat 2
+grep -q '^rect: [0-9.]* ms$' "$work/err" && pass || fail "rect --repeat: no time on stderr"
+expect 2 "rect bad window" "$cg" clip rect 5 0 0 5 "$tmp/sq.wkt"
+expect 2 "rect too few" "$cg" clip rect 0 0 5 "$tmp/sq.wkt"
+expect 2 "rect bad number" "$cg" clip rect 0 0 5 x "$tmp/sq.wkt"
+expect 0 "rect picture" "$cg" clip rect 0 0 5 5 "$tmp/l.wkt" -o "$tmp/r.png"
+
+# triangulate: n + 2h - 2 triangles tiling the area
+tris=$("$cg" clip triangulate "$tmp/sq.wkt")
+check "triangles" "$(echo "$tris" | grep -o '((' | wc -l | tr -d ' ')" 8
+near "triangles area" "$(echo "$tris" | wkt_area)" 96 1e-6
+expect 2 "triangulate lines" "$cg" clip triangulate "$tmp/l.wkt"
+expect 2 "triangulate no file" "$cg" clip triangulate
+expect 0 "triangulate picture" "$cg" clip triangulate "$tmp/sq.wkt" -o "$tmp/t.png"
+
+# simplify: the near-collinear vertex goes, the triangle stays
+echo "POLYGON ((0 0, 5 0.01, 10 0, 10 10, 0 10))" > "$tmp/n.wkt"
+check "simplify rdp" "$("$cg" clip simplify 0.1 "$tmp/n.wkt")" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
+check "simplify visvalingam" "$("$cg" clip simplify 0.1 "$tmp/n.wkt" --algorithm visvalingam)" \
+    "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)))"
+check "simplify keeps" "$("$cg" clip simplify 100 "$tmp/n.wkt" | grep -o ',' | wc -l | tr -d ' ')" 3
+check "simplify line" "$(echo 'LINESTRING (0 0, 5 0.01, 10 0)' | "$cg" clip simplify 0.1 -)" \
+    "MULTILINESTRING ((0 0, 10 0))"
+expect 2 "simplify bad algorithm" "$cg" clip simplify 1 "$tmp/n.wkt" --algorithm dp
+expect 2 "simplify negative" "$cg" clip simplify -1 "$tmp/n.wkt"
 finish

@@ -145,9 +145,17 @@ static int shortcut_is_safe(simplifier *s, size_t a, size_t b)
                 cg_point64 pq = s->points[q];
                 /* the stretch's own vertices are in it by definition */
                 if (!s->alive[q] || q == a || q == b || s->stamp[q] == s->token ||
-                    same(pq, pa) || same(pq, pb) || pq.x < x0 || pq.x > x1 || pq.y < y0 ||
-                    pq.y > y1)
+                    pq.x < x0 || pq.x > x1 || pq.y < y0 || pq.y > y1)
                     continue;
+                if (same(pq, pa) || same(pq, pb)) {
+                    /* a path touching at a or b: its edges from there end
+                     * inside (found as vertices) or at the other end, where
+                     * a-b would lie on them */
+                    cg_point64 other = same(pq, pa) ? pb : pa;
+                    if (same(s->points[s->next[q]], other) || same(s->points[s->prev[q]], other))
+                        return 0;
+                    continue;
+                }
                 if (triangle ? in_triangle(pa, s->points[s->next[a]], pb, pq)
                              : in_stretch(s, a, b, pq))
                     return 0;

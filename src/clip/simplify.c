@@ -84,6 +84,14 @@ static cg_status build_grid(simplifier *s)
 
 static int same(cg_point64 a, cg_point64 b) { return a.x == b.x && a.y == b.y; }
 
+/* 1 when the edge from `from` to w leaves along the direction of from-to. */
+static int runs_along(cg_point64 from, cg_point64 to, cg_point64 w)
+{
+    polygon_i128 dot = (polygon_i128)(w.x - from.x) * (to.x - from.x) +
+                       (polygon_i128)(w.y - from.y) * (to.y - from.y);
+    return polygon_orient(from, to, w) == 0 && dot > 0;
+}
+
 /* 1 when q lies in the closed triangle a, v, b (either orientation). */
 static int in_triangle(cg_point64 a, cg_point64 v, cg_point64 b, cg_point64 q)
 {
@@ -149,10 +157,11 @@ static int shortcut_is_safe(simplifier *s, size_t a, size_t b)
                     continue;
                 if (same(pq, pa) || same(pq, pb)) {
                     /* a path touching at a or b: its edges from there end
-                     * inside (found as vertices) or at the other end, where
-                     * a-b would lie on them */
-                    cg_point64 other = same(pq, pa) ? pb : pa;
-                    if (same(s->points[s->next[q]], other) || same(s->points[s->prev[q]], other))
+                     * inside (found as vertices), or run along a-b, which
+                     * would then lie on them */
+                    cg_point64 from = same(pq, pa) ? pa : pb, to = same(pq, pa) ? pb : pa;
+                    if (runs_along(from, to, s->points[s->next[q]]) ||
+                        runs_along(from, to, s->points[s->prev[q]]))
                         return 0;
                     continue;
                 }

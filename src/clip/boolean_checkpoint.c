@@ -6,7 +6,7 @@
 /* an active edge's run flags, as ck_edge.flags */
 static inline unsigned ck_flags(const sweep *s, uint32_t e)
 {
-    return (unsigned)s->brk_next[e] | (unsigned)s->run_open[e] << 1 |
+    return (unsigned)s->run_break_next[e] | (unsigned)s->run_open[e] << 1 |
            (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
 }
 
@@ -14,24 +14,26 @@ static inline unsigned ck_flags(const sweep *s, uint32_t e)
  * no more checkpoints are taken (budget spent or out of memory). */
 int boolean_ck_record(sweep *s, int64_t y)
 {
-    ck_log *L = s->log;
-    size_t n = s->nact;
-    if (L->ned + n > L->budget)
+    ck_log *log = s->log;
+    size_t n = s->active_count;
+    if (log->edge_count + n > log->budget)
         return 0;
-    GROW(L->pt, L->npt, L->cappt, return 0);
-    while (L->ned + n > L->caped) {
-        size_t c = L->caped ? 2 * L->caped : 256;
-        ck_edge *p = realloc(L->ed, c * sizeof *p);
+    GROW(log->checkpoints, log->checkpoint_count, log->checkpoint_capacity, return 0);
+    while (log->edge_count + n > log->edge_capacity) {
+        size_t c = log->edge_capacity ? 2 * log->edge_capacity : 256;
+        ck_edge *p = realloc(log->edges, c * sizeof *p);
         if (!p)
             return 0;
-        L->ed = p;
-        L->caped = c;
+        log->edges = p;
+        log->edge_capacity = c;
     }
-    L->pt[L->npt++] = (ck_point){y, s->g->np, L->ned, n};
+    log->checkpoints[log->checkpoint_count++] =
+        (ck_point){y, s->engine->piece_count, log->edge_count, n};
     for (size_t k = 0; k < n; k++) {
-        uint32_t e = s->act[k];
-        L->ed[L->ned++] = (ck_edge){e, ck_flags(s, e), s->wr0[e], s->wr1[e], s->xn[e],
-                                    s->run_x[e], s->run_y[e]};
+        uint32_t e = s->active[k];
+        log->edges[log->edge_count++] = (ck_edge){
+            e,           ck_flags(s, e), s->winding_subject[e], s->winding_clip[e], s->x_next[e],
+            s->run_x[e], s->run_y[e]};
     }
     return 1;
 }
@@ -41,26 +43,29 @@ int boolean_ck_record(sweep *s, int64_t y)
  * split, the rest of this pass would be the rest of that one. */
 int boolean_ck_same(const sweep *s, const ck_point *c)
 {
-    if (c->n != s->nact)
+    if (c->edge_count != s->active_count)
         return 0;
-    const ck_edge *r = s->prev->ed + c->first;
-    for (size_t k = 0; k < c->n; k++) {
-        uint32_t e = s->act[k];
-        if (r[k].e >= s->prev_ne || s->prev_map[r[k].e] != e || r[k].flags != ck_flags(s, e) ||
-            r[k].x != s->xn[e] || r[k].wr0 != s->wr0[e] || r[k].wr1 != s->wr1[e] ||
-            (s->run_open[e] && (r[k].run_x != s->run_x[e] || r[k].run_y != s->run_y[e])))
+    const ck_edge *records = s->prev_log->edges + c->first_edge;
+    for (size_t k = 0; k < c->edge_count; k++) {
+        uint32_t e = s->active[k];
+        if (records[k].edge >= s->prev_edge_count || s->prev_map[records[k].edge] != e ||
+            records[k].flags != ck_flags(s, e) || records[k].x_at_scanline != s->x_next[e] ||
+            records[k].winding_subject != s->winding_subject[e] ||
+            records[k].winding_clip != s->winding_clip[e] ||
+            (s->run_open[e] &&
+             (records[k].run_x != s->run_x[e] || records[k].run_y != s->run_y[e])))
             return 0;
     }
     return 1;
 }
 
 /* first of a[0..n) (edge numbers sorted by a field) whose field is >= y */
-static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t y, int top)
+static size_t first_edge_at(const edge *E, const uint32_t *a, size_t n, int64_t y, int top)
 {
     size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if ((top ? E[a[mid]].yt : E[a[mid]].yb) < y)
+        if ((top ? E[a[mid]].y_top : E[a[mid]].y_bottom) < y)
             lo = mid + 1;
         else
             hi = mid;
@@ -72,49 +77,52 @@ static size_t first_edge_at(const bedge *E, const uint32_t *a, size_t n, int64_t
  * pass at or below y (every edge active there kept its number;
  * s->prev_map: the last pass's numbers to ours): its index + 1, or 0 when
  * there is none. */
-size_t boolean_ck_load(sweep *s, const ck_log *L, size_t j0, int64_t y)
+size_t boolean_ck_load(sweep *s, const ck_log *log, size_t j0, int64_t y)
 {
-    size_t j = L->npt;
-    while (j > j0 && L->pt[j - 1].y > y)
+    size_t j = log->checkpoint_count;
+    while (j > j0 && log->checkpoints[j - 1].scanline_y > y)
         j--;
     if (j == j0)
         return 0;
-    const ck_point *c = &L->pt[j - 1];
-    size_t lo = 0, hi = s->nys;
+    const ck_point *c = &log->checkpoints[j - 1];
+    size_t lo = 0, hi = s->scanline_count;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if (s->ys[mid] < c->y)
+        if (s->scanlines[mid] < c->scanline_y)
             lo = mid + 1;
         else
             hi = mid;
     }
-    if (lo == s->nys || s->ys[lo] != c->y)
+    if (lo == s->scanline_count || s->scanlines[lo] != c->scanline_y)
         return 0;
     /* (L->ed is NULL when no checkpoint logged an edge) */
-    const ck_edge *r = c->n ? L->ed + c->first : NULL;
-    for (size_t k = 0; k < c->n; k++)
+    const ck_edge *records = c->edge_count ? log->edges + c->first_edge : NULL;
+    for (size_t k = 0; k < c->edge_count; k++)
         /* no active edge there was split */
-        if (!CG_INVARIANT(r[k].e < s->prev_ne && s->prev_map[r[k].e] != UINT32_MAX))
+        if (!CG_INVARIANT(records[k].edge < s->prev_edge_count &&
+                          s->prev_map[records[k].edge] != UINT32_MAX))
             return 0;
-    s->nbrkq = 0;
-    s->brkq_full = 0;
-    for (size_t k = 0; k < c->n; k++) {
-        uint32_t e = s->prev_map[r[k].e];
-        s->act[k] = e;
-        s->xn[e] = r[k].x;
-        s->brk_next[e] = (unsigned char)(r[k].flags & 1);
-        s->run_open[e] = (unsigned char)(r[k].flags >> 1 & 1);
-        s->run_up[e] = (unsigned char)(r[k].flags >> 2 & 1);
-        s->wr0[e] = r[k].wr0;
-        s->wr1[e] = r[k].wr1;
-        s->run_x[e] = r[k].run_x;
-        s->run_y[e] = r[k].run_y;
-        if (r[k].flags & 1)
-            s->brkq_next[s->nbrkq++] = e;
+    s->break_queue_count = 0;
+    s->break_queue_full = 0;
+    for (size_t k = 0; k < c->edge_count; k++) {
+        uint32_t e = s->prev_map[records[k].edge];
+        s->active[k] = e;
+        s->x_next[e] = records[k].x_at_scanline;
+        s->run_break_next[e] = (unsigned char)(records[k].flags & 1);
+        s->run_open[e] = (unsigned char)(records[k].flags >> 1 & 1);
+        s->run_up[e] = (unsigned char)(records[k].flags >> 2 & 1);
+        s->winding_subject[e] = records[k].winding_subject;
+        s->winding_clip[e] = records[k].winding_clip;
+        s->run_x[e] = records[k].run_x;
+        s->run_y[e] = records[k].run_y;
+        if (records[k].flags & 1)
+            s->break_queue_next[s->break_queue_count++] = e;
     }
-    s->nact = c->n;
-    s->start_iy = lo;
-    s->start_ip = first_edge_at(s->g->E, s->by_bottom, s->g->ne, c->y, 0);
-    s->start_it = first_edge_at(s->g->E, s->by_top, s->g->ne, c->y, 1);
+    s->active_count = c->edge_count;
+    s->start_scanline = lo;
+    s->start_bottom =
+        first_edge_at(s->engine->edges, s->by_bottom, s->engine->edge_count, c->scanline_y, 0);
+    s->start_top =
+        first_edge_at(s->engine->edges, s->by_top, s->engine->edge_count, c->scanline_y, 1);
     return j;
 }

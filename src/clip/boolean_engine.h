@@ -1,6 +1,46 @@
 /* The engine of the boolean operations (boolean_*.c): its edges, pieces
  * and sweep state, the exact helpers its files share, and the step each
- * file does.  boolean.c describes the algorithm and runs the passes. */
+ * file does.  boolean.c describes the algorithm and runs the passes.
+ *
+ * The engine's words (every name below is made of them):
+ *
+ *   edge            a non-horizontal segment of an operand's ring, kept
+ *                   from its bottom (lower y) to its top, with the winding
+ *                   its path adds and its operand (subject 0, clip 1).
+ *   horizontal      a horizontal edge: it adds no winding, only splits and
+ *                   the result's horizontal boundary pieces come of it.
+ *   input edge      the edge of the operands an edge is a part of after
+ *                   splits; crossings are rounded on its line.
+ *   split point     a grid point where an edge must get a vertex (a
+ *                   crossing rounded, a touching point off the grid).
+ *   part            one of the edges a split edge is replaced by.
+ *   scanline        a y where an edge starts or ends; the sweep visits the
+ *                   scanlines from bottom to top.
+ *   scanbeam        the band between two consecutive scanlines: no edge
+ *                   starts or ends inside it.
+ *   active list     the edges crossing the current scanbeam, in order of
+ *                   x (`below`: the last beam's, `above`: this one's).
+ *   winding         the sum over the paths around a point (+1 a turn
+ *                   counter-clockwise); each operand has its own, and the
+ *                   windings right of an edge decide if it bounds the result.
+ *   piece           a directed segment of the result's boundary (the result
+ *                   on its left); pieces join into rings.
+ *   run             the pieces of one edge over consecutive scanbeams,
+ *                   emitted as one piece when it closes; it breaks where
+ *                   something meets the edge.
+ *   meet            a grid point where a run broke (no split was needed).
+ *   dirty position  a place in the active list whose windings must be
+ *                   looked at again (a new edge, a run break, a crossing).
+ *   hot pixel       the unit square around a grid point that is a split
+ *                   point or a vertex: snap rounding routes every edge that
+ *                   meets it through its centre.
+ *   pass            one sweep over all the edges: it splits what crosses,
+ *                   or, when nothing does, classifies and emits the pieces.
+ *   checkpoint      the whole sweep state at the start of a scanline, from
+ *                   which the next pass resumes.
+ *
+ * In the code `g` is the engine and `s` the sweep of the current pass;
+ * x and y are grid coordinates. */
 #ifndef CG_CLIP_BOOLEAN_ENGINE_H
 #define CG_CLIP_BOOLEAN_ENGINE_H
 
@@ -24,19 +64,31 @@ typedef clip_i128 i128;
 #define ALWAYS_INLINE inline
 #endif
 
-typedef struct bedge {
-    int64_t xb, yb, xt, yt; /* bottom and top, yb < yt */
-    double slope;           /* dx / dy */
-    uint32_t orig;          /* the input edge it is a piece of (engine's O), or
-                             * NO_ORIG: itself */
-    int8_t w;               /* winding added when crossed from left to right */
-    uint8_t op;             /* 0 subject, 1 clip */
-} bedge;
+/* An edge of the sweep, bottom to top (y_bottom < y_top). */
+typedef struct edge {
+    int64_t x_bottom, y_bottom; /* its lower end */
+    int64_t x_top, y_top; /* its upper end */
+    double slope; /* dx / dy */
+    uint32_t input_edge; /* the input edge it is a part of (in the engine's
+                                 * input_edges), or NO_ORIG: itself */
+    int8_t winding; /* winding added when crossed from left to right */
+    uint8_t operand; /* 0 subject, 1 clip */
+} edge;
 #define NO_ORIG UINT32_MAX
 
-typedef struct hseg { int64_t y, x0, x1; } hseg;
-typedef struct splitpt { uint32_t edge; int64_t x, y; } splitpt;
-typedef struct piece { int64_t x0, y0, x1, y1; } piece;
+/* A horizontal edge at y, from x_left to x_right (x_left < x_right). */
+typedef struct horizontal_edge {
+    int64_t y, x_left, x_right;
+} horizontal_edge;
+/* A split point (x, y) of edge number `edge`. */
+typedef struct split_point {
+    uint32_t edge;
+    int64_t x, y;
+} split_point;
+/* A piece of the result's boundary, directed from start to end. */
+typedef struct piece {
+    int64_t x_start, y_start, x_end, y_end;
+} piece;
 
 /* Room for one more item in arr (n items, room for cap; `fail` runs when
  * memory runs out).  arr may still be the caller's buffer `small` (on the
@@ -54,43 +106,47 @@ typedef struct piece { int64_t x0, y0, x1, y1; } piece;
 
 #define GROW(arr, n, cap, fail) GROW_SMALL(arr, n, cap, NULL, fail)
 
+/* What one boolean operation works on: the edges of both operands (split
+ * pass after pass), and what the passes find and emit. */
 typedef struct engine {
-    bedge *E;
-    size_t ne, cape;
-    hseg *H;
-    size_t nh, caph;
-    splitpt *S;
-    size_t ns, caps;
-    piece *P;
-    size_t np, capp;
+    edge *edges; /* the edges of both operands */
+    size_t edge_count, edge_capacity;
+    horizontal_edge *horizontals; /* the horizontal edges */
+    size_t horizontal_count, horizontal_capacity;
+    split_point *splits; /* the split points this pass found */
+    size_t split_count, split_capacity;
+    piece *pieces; /* the result's boundary pieces */
+    size_t piece_count, piece_capacity;
     /* the grid points where the first pass broke runs (edges meeting
      * there need no split), kept for complete snap rounding */
-    cg_point64 *M;
-    size_t nm, capm;
-    int64_t (*O)[4]; /* input edges of pieces (x0, y0, x1, y1): O_small or heap */
-    size_t no, capo;
-    int64_t O_small[16][4];
-    /* the caller's buffers that E, S and P start in on small inputs (then
-     * never freed; NULL when none) */
-    bedge *E_small;
-    splitpt *S_small;
-    piece *P_small;
-    cg_clip_op op;
-    cg_clip_fill fill[2];
-    cg_clip_workspace *ws;  /* the blocks kept between calls, or NULL */
-    unsigned char table[4]; /* in the result, by (in subject, in clip) */
-    unsigned char near[5][5]; /* inside() for windings -2..2 */
+    cg_point64 *meets;
+    size_t meet_count, meet_capacity;
+    /* the input edges of parts (x_bottom, y_bottom, x_top, y_top):
+     * input_edges_small or on the heap */
+    int64_t (*input_edges)[4];
+    size_t input_edge_count, input_edge_capacity;
+    int64_t input_edges_small[16][4];
+    /* the caller's buffers that edges, splits and pieces start in on small
+     * inputs (then never freed; NULL when none) */
+    edge *edges_small;
+    split_point *splits_small;
+    piece *pieces_small;
+    cg_clip_op operation;
+    cg_clip_fill fill[2]; /* the subject's and the clip's fill rule */
+    cg_clip_workspace *workspace; /* the blocks kept between calls, or NULL */
+    unsigned char in_result[4]; /* in the result, by (in subject, in clip) */
+    unsigned char in_result_near[5][5]; /* inside() for windings -2..2 */
 } engine;
 
 /* The blocks a workspace keeps from call to call: the sweep's block, the
  * edges and the pieces (each NULL while the call holds it) */
 struct cg_clip_workspace {
-    void *mem;
-    size_t memcap;
-    bedge *E;
-    size_t cape;
-    piece *P;
-    size_t capp;
+    void *block; /* the sweep's block */
+    size_t block_size;
+    edge *edges; /* an edge array */
+    size_t edge_capacity;
+    piece *pieces; /* a piece array */
+    size_t piece_capacity;
 };
 
 /* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
@@ -104,10 +160,10 @@ int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, s
                          size_t size);
 
 /* Adds the edge (x0, y0)-(x1, y1) of operand op (0 subject, 1 clip) to g:
- * a horizontal one to g->H, dropped when it is a point; orig as bedge.orig.
+ * a horizontal one to g->horizontals, dropped when it is a point; orig as edge.orig.
  * 0 when out of memory. */
-int boolean_add_piece(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
-                      uint32_t orig);
+int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
+                     uint32_t orig);
 
 /* ---- exact helpers ------------------------------------------------------ */
 
@@ -136,31 +192,32 @@ static inline int64_t round_div64(int64_t n, int64_t d)
 }
 
 /* x of edge e at scanline y as num / den, den > 0 */
-static inline i128 x_num(const bedge *e, int64_t y)
+static inline i128 x_num(const edge *e, int64_t y)
 {
-    return (i128)e->xb * (e->yt - e->yb) + (i128)(y - e->yb) * (e->xt - e->xb);
+    return (i128)e->x_bottom * (e->y_top - e->y_bottom) +
+           (i128)(y - e->y_bottom) * (e->x_top - e->x_bottom);
 }
 
-static inline int64_t x_den(const bedge *e) { return e->yt - e->yb; }
+static inline int64_t x_den(const edge *e) { return e->y_top - e->y_bottom; }
 
-static inline double x_at(const bedge *e, int64_t y)
+static inline double x_at(const edge *e, int64_t y)
 {
-    if (y == e->yb)
-        return (double)e->xb;
-    if (y == e->yt)
-        return (double)e->xt;
-    return (double)e->xb + (double)(y - e->yb) * e->slope;
+    if (y == e->y_bottom)
+        return (double)e->x_bottom;
+    if (y == e->y_top)
+        return (double)e->x_top;
+    return (double)e->x_bottom + (double)(y - e->y_bottom) * e->slope;
 }
 
 /* x of edge e at scanline y, rounded, in *x: whether it is exact.  In 64
  * bits when the offset along the edge fits (short edges, coarse grids),
  * else in 128. */
-static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
+static inline int x_is_integer(const edge *e, int64_t y, int64_t *x)
 {
-    int64_t dy = y - e->yb, dx = e->xt - e->xb, d = x_den(e), lim = (int64_t)1 << 30;
+    int64_t dy = y - e->y_bottom, dx = e->x_top - e->x_bottom, d = x_den(e), lim = (int64_t)1 << 30;
     if (dy < lim && dy > -lim && dx < lim && dx > -lim) { /* (|dy dx| < 2^60) */
         int64_t q = dy * dx, f = round_div64(q, d);
-        *x = e->xb + f;
+        *x = e->x_bottom + f;
         return f * d == q;
     }
     i128 n = x_num(e, y), dd = d;
@@ -169,7 +226,7 @@ static inline int x_is_integer(const bedge *e, int64_t y, int64_t *x)
 }
 
 /* x of edge e at scanline y, rounded */
-static inline int64_t x_rounded(const bedge *e, int64_t y)
+static inline int64_t x_rounded(const edge *e, int64_t y)
 {
     int64_t x;
     x_is_integer(e, y, &x);
@@ -199,14 +256,14 @@ static inline int fill_in(cg_clip_fill f, int64_t w)
 
 static inline int inside_rule(const engine *g, int64_t wa, int64_t wb)
 {
-    return g->table[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
+    return g->in_result[(fill_in(g->fill[0], wa) << 1) | fill_in(g->fill[1], wb)];
 }
 
 /* whether a point with windings wa (subject) and wb (clip) is in the result */
 static inline int inside(const engine *g, int64_t wa, int64_t wb)
 {
     if ((uint64_t)(wa + 2) < 5 && (uint64_t)(wb + 2) < 5)
-        return g->near[wa + 2][wb + 2];
+        return g->in_result_near[wa + 2][wb + 2];
     return inside_rule(g, wa, wb);
 }
 
@@ -225,48 +282,93 @@ void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *
 /* ---- the sweep's state ---------------------------------------------------- */
 
 typedef struct sweep {
-    engine *g;
-    int64_t *ys;
-    size_t nys;
-    uint32_t *by_bottom; /* edges sorted by yb */
-    uint32_t *act, *nxt, *fresh, *dirty;
-    uint32_t *by_top;    /* edges sorted by yt */
-    uint32_t *clus, *seam; /* the light sweep's: the edges through one point; where new
-                            * neighbours meet */
-    keyval *scratch, *scratch2;      /* for sorting */
-    hseg *hsorted;
-    uint32_t *horder;
-    void *mem; /* all of the above, carved from one block */
-    size_t memcap;
-    void *mem_small; /* the caller's block mem starts as (never freed) */
-    int32_t *wr0, *wr1; /* windings right of each edge (its coincident group):
-                         * sums of at most ne <= INT32_MAX terms of +-1 */
-    size_t nact;
-    double *xc, *xn; /* x at the current scanline, at the next one */
-    /* runs */
+    engine *engine;
+    int64_t *scanlines; /* the distinct y of the edges' ends, in order */
+    size_t scanline_count;
+    uint32_t *by_bottom; /* edge numbers sorted by (y_bottom, x_bottom) */
+    uint32_t *by_top; /* edge numbers sorted by (y_top, x_top) */
+    uint32_t *active, *next_active; /* the active list below the scanline, and the
+                                     * room for the one above it */
+    uint32_t *starting; /* the edges starting at this scanline, by x */
+    uint32_t *dirty; /* dirty positions in the active list */
+    /* the light sweep's: the edges through one point; where new
+     * neighbours meet */
+    uint32_t *point_edges, *seams;
+    keyval *sort_scratch, *sort_tmp; /* for sorting */
+    horizontal_edge *horizontals_sorted;
+    uint32_t *horizontal_order;
+    void *block; /* all of the above, carved from one block */
+    size_t block_size;
+    void *block_small; /* the caller's block `block` starts as (never freed) */
+    /* the windings right of each edge (its coincident group), per operand:
+     * sums of at most edge_count <= INT32_MAX terms of +-1 */
+    int32_t *winding_subject, *winding_clip;
+    size_t active_count;
+    double *x_current, *x_next; /* x at the current scanline, at the next one */
+    /* each edge's run: open or not, going up (the result on its left) or
+     * down, its start, and whether it breaks at this scanline, the next */
     unsigned char *run_open, *run_up;
-    unsigned char *brk, *brk_next; /* a run breaks at this scanline, the next */
+    unsigned char *run_break, *run_break_next;
     int64_t *run_x, *run_y;
-    int classify, changed;
+    int classify; /* the pass classifies and emits pieces */
+    int changed; /* the pass found split points */
     size_t visits; /* active edges summed over the scanlines (full sweep) */
-    uint32_t *brkq, *brkq_next; /* the edges of brk, of brk_next (full sweep) */
-    size_t nbrkq, capbrkq;
-    int brkq_full;
+    /* the edges of run_break, of run_break_next (full sweep); when full,
+     * every position is looked at */
+    uint32_t *break_queue, *break_queue_next;
+    size_t break_queue_count, break_queue_capacity;
+    int break_queue_full;
     int use_input_lines; /* round on the input edges (early passes) */
-    int record_meets;    /* note the grid points where runs break (g->M) */
-    struct ck_log *log;   /* checkpoints of this pass, or NULL */
-    size_t ck_visits;     /* the next checkpoint once visits reach this */
-    size_t start_iy, start_ip, start_it; /* where the sweep starts (resumed) */
-    int64_t yspan;        /* from the first scanline to the last */
+    int record_meets; /* note the grid points where runs break (g->meets) */
+    struct ck_log *log; /* checkpoints of this pass, or NULL */
+    size_t checkpoint_visits; /* the next checkpoint once visits reach this */
+    /* where the sweep starts (resumed): its scanline, and the next edges
+     * of by_bottom and by_top */
+    size_t start_scanline, start_bottom, start_top;
+    int64_t y_span; /* from the first scanline to the last */
     /* the hand-over to the last pass's results (boolean_ck_same) */
-    const struct ck_log *prev; /* or NULL */
-    const uint32_t *prev_map;  /* its edge numbers to ours */
-    size_t prev_ne, prev_j;
+    const struct ck_log *prev_log; /* or NULL */
+    const uint32_t *prev_map; /* its edge numbers to ours */
+    size_t prev_edge_count; /* its edges */
+    size_t prev_checkpoint; /* its next checkpoint to compare */
     const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
-    size_t nbands, band;
-    size_t (*ranges)[2];       /* the ranges of its pieces taken */
-    size_t nranges;
+    size_t band_count, band; /* how many; the next one */
+    size_t (*taken_ranges)[2]; /* the ranges of its pieces taken */
+    size_t taken_count;
 } sweep;
+
+/* ---- a pass's arrays and orders (boolean_prepare.c) ---------------------- */
+
+/* What a pass leaves to the next: its orders of the edges and where its
+ * edges went (boolean_apply_splits). */
+typedef struct carry {
+    uint32_t *by_bottom, *by_top, *map;
+    uint32_t *block_small; /* the caller's block of 3 * 64 they start in */
+    size_t edge_count, capacity; /* edges of the last pass (room for cap) */
+    size_t kept; /* of them, not split: now g->edges[0..kept) */
+    size_t horizontals_sorted; /* g->horizontals[0..horizontals_sorted) is in order */
+    int valid;
+    /* the last pass's scanlines and the distinct y of its split points
+     * (sorted), when they were few: the next pass's scanlines are the two
+     * merged (a split edge's pieces form a path from its bottom to its top,
+     * so every scanline stays one, and each split point's y becomes one) */
+    int64_t *scanlines, *split_ys;
+    size_t scanline_count, split_y_count, scanline_capacity, split_y_capacity;
+    int scanlines_valid;
+} carry;
+
+/* Forgets the arrays of the last pass; their memory is kept for the next. */
+void boolean_sweep_reset(sweep *s);
+/* The arrays of a pass over the engine's edges (the light sweep's too when
+ * `light`), carved from the sweep's block: 0 when out of memory. */
+int boolean_sweep_alloc(sweep *s, int light);
+/* Sorts the edges by bottom and by top (from the last pass's orders in c
+ * when there are some), the scanlines and the horizontal edges: 0 when out
+ * of memory. */
+int boolean_sweep_sort(sweep *s, carry *c);
+/* Keeps the orders of this pass in c for the next one (before
+ * boolean_apply_splits): 0 when out of memory. */
+int boolean_carry_keep(carry *c, const sweep *s);
 
 /* ---- checkpoints (boolean_checkpoint.c) ------------------------------------ */
 
@@ -278,21 +380,28 @@ typedef struct sweep {
  * many pieces were emitted); the next pass starts at the last such scanline
  * at or below every split edge, with that state, and keeps the pieces
  * emitted below it. */
+/* an active edge at a checkpoint */
 typedef struct ck_edge {
-    uint32_t e;
+    uint32_t edge; /* its number in that pass */
     unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
-    int32_t wr0, wr1;
-    double x;
-    int64_t run_x, run_y;
+    int32_t winding_subject, winding_clip; /* the windings right of it */
+    double x_at_scanline; /* its x at the checkpoint's scanline */
+    int64_t run_x, run_y; /* where its open run started */
 } ck_edge;
-typedef struct ck_point { int64_t y; size_t np, first, n; } ck_point;
+/* a checkpoint: its scanline, the pieces emitted by then, and its active
+ * edges, ck_log.edges[first_edge..first_edge + edge_count) */
+typedef struct ck_point {
+    int64_t scanline_y;
+    size_t piece_count, first_edge, edge_count;
+} ck_point;
+/* the checkpoints of a pass */
 typedef struct ck_log {
-    ck_point *pt;
-    size_t npt, cappt;
-    ck_edge *ed;
-    size_t ned, caped;
+    ck_point *checkpoints;
+    size_t checkpoint_count, checkpoint_capacity;
+    ck_edge *edges; /* the active edges of all of them */
+    size_t edge_count, edge_capacity;
     size_t budget; /* most edge records kept */
-    size_t end_np; /* pieces at the end of the pass */
+    size_t end_piece_count; /* pieces at the end of the pass */
 } ck_log;
 
 /* ---- the steps -------------------------------------------------------- */
@@ -324,12 +433,15 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices);
 int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size_t cap);
 
 /* a point of an edge; t orders it along the edge */
-typedef struct split_sort { int64_t x, y; i128 t; } split_sort;
+typedef struct split_sort {
+    int64_t x, y;
+    i128 along;
+} split_sort;
 
 static inline int before_along(const split_sort *p, const split_sort *q)
 {
-    if (p->t != q->t)
-        return p->t < q->t;
+    if (p->along != q->along)
+        return p->along < q->along;
     if (p->y != q->y)
         return p->y < q->y;
     return p->x < q->x;
@@ -408,25 +520,27 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
 
 /* The hot points of complete snap rounding: the split points, the edges'
  * ends (horizontal ones too) and the grid points where the sweep broke runs
- * (g->M).  How many, repeats counted; and add(ctx, x, y) for each of them,
+ * (g->meets).  How many, repeats counted; and add(ctx, x, y) for each of them,
  * 0 when an add gave 0 (inlined with a constant add, at no cost). */
 static inline size_t boolean_hot_point_count(const engine *g)
 {
-    return g->ns + 2 * (g->ne + g->nh) + g->nm;
+    return g->split_count + 2 * (g->edge_count + g->horizontal_count) + g->meet_count;
 }
 
 static inline int boolean_each_hot_point(const engine *g, int (*add)(void *, int64_t, int64_t),
                                          void *ctx)
 {
     int ok = 1;
-    for (size_t k = 0; k < g->ns; k++)
-        ok &= add(ctx, g->S[k].x, g->S[k].y);
-    for (size_t i = 0; i < g->ne; i++)
-        ok &= add(ctx, g->E[i].xb, g->E[i].yb) & add(ctx, g->E[i].xt, g->E[i].yt);
-    for (size_t i = 0; i < g->nh; i++)
-        ok &= add(ctx, g->H[i].x0, g->H[i].y) & add(ctx, g->H[i].x1, g->H[i].y);
-    for (size_t i = 0; i < g->nm; i++)
-        ok &= add(ctx, g->M[i].x, g->M[i].y);
+    for (size_t k = 0; k < g->split_count; k++)
+        ok &= add(ctx, g->splits[k].x, g->splits[k].y);
+    for (size_t i = 0; i < g->edge_count; i++)
+        ok &= add(ctx, g->edges[i].x_bottom, g->edges[i].y_bottom) &
+              add(ctx, g->edges[i].x_top, g->edges[i].y_top);
+    for (size_t i = 0; i < g->horizontal_count; i++)
+        ok &= add(ctx, g->horizontals[i].x_left, g->horizontals[i].y) &
+              add(ctx, g->horizontals[i].x_right, g->horizontals[i].y);
+    for (size_t i = 0; i < g->meet_count; i++)
+        ok &= add(ctx, g->meets[i].x, g->meets[i].y);
     return ok;
 }
 
@@ -434,12 +548,12 @@ static inline int boolean_each_hot_point(const engine *g, int (*add)(void *, int
  * order along their edge; the hot points above in an array (NULL when out
  * of memory); the input
  * edge e's pieces take (e itself noted when it is one; NO_ORIG when out of
- * memory); the edges g->E[0..old_ne) marked dead dropped, the rest moved
+ * memory); the edges g->edges[0..old_ne) marked dead dropped, the rest moved
  * down with the pieces after them (map[old edge]: its new index or
  * UINT32_MAX; the number kept returned) */
 void boolean_sort_along(split_sort *a, size_t n);
-splitpt *boolean_complete_hot_points(const engine *g, size_t *n);
-uint32_t boolean_orig_of(engine *g, const bedge *e);
+split_point *boolean_complete_hot_points(const engine *g, size_t *n);
+uint32_t boolean_orig_of(engine *g, const edge *e);
 size_t boolean_drop_split_edges(engine *g, size_t old_ne, const unsigned char *dead, uint32_t *map);
 
 /* Complete snap rounding (boolean_snap.c), in place of the hot pixels'

@@ -22,26 +22,31 @@ static inline int orientation(int64_t ax, int64_t ay, int64_t bx, int64_t by, in
 
 /* Do a and b, whose bounding boxes overlap, cross at one point inside both
  * (neither end of either on the other)? */
-static int cross_inside(const bedge *a, const bedge *b, int narrow)
+static int cross_inside(const edge *a, const edge *b, int narrow)
 {
-    int s1 = orientation(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, narrow);
-    int s2 = orientation(a->xb, a->yb, a->xt, a->yt, b->xt, b->yt, narrow);
+    int s1 =
+        orientation(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom, b->y_bottom, narrow);
+    int s2 = orientation(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_top, b->y_top, narrow);
     if (s1 * s2 >= 0)
         return 0;
-    int s3 = orientation(b->xb, b->yb, b->xt, b->yt, a->xb, a->yb, narrow);
-    int s4 = orientation(b->xb, b->yb, b->xt, b->yt, a->xt, a->yt, narrow);
+    int s3 =
+        orientation(b->x_bottom, b->y_bottom, b->x_top, b->y_top, a->x_bottom, a->y_bottom, narrow);
+    int s4 = orientation(b->x_bottom, b->y_bottom, b->x_top, b->y_top, a->x_top, a->y_top, narrow);
     return s3 * s4 < 0;
 }
 
 static int add_split_point(engine *g, uint32_t e, int64_t x, int64_t y)
 {
-    GROW_SMALL(g->S, g->ns, g->caps, g->S_small, return 0);
-    g->S[g->ns++] = (splitpt){e, x, y};
+    GROW_SMALL(g->splits, g->split_count, g->split_capacity, g->splits_small, return 0);
+    g->splits[g->split_count++] = (split_point){e, x, y};
     return 1;
 }
 
-/* an edge's bounding box, y from yb to yt */
-typedef struct edge_box { int64_t yb, yt, xlo, xhi; uint32_t e; } edge_box;
+/* an edge's bounding box, y from y_bottom to y_top */
+typedef struct edge_box {
+    int64_t y_bottom, y_top, x_low, x_high;
+    uint32_t edge;
+} edge_box;
 
 /* The split points of every crossing of two edges inside both, rounded, and
  * of every edge passing a horizontal edge at a point off the grid: those the
@@ -52,59 +57,63 @@ typedef struct edge_box { int64_t yb, yt, xlo, xhi; uint32_t e; } edge_box;
  * pairs whose y ranges overlap come together. */
 int boolean_add_pair_splits(engine *g)
 {
-    const bedge *E = g->E;
-    edge_box B[PAIRS_MAX_EDGES];
-    size_t n = g->ne;
+    const edge *edges = g->edges;
+    edge_box boxes[PAIRS_MAX_EDGES];
+    size_t n = g->edge_count;
     int64_t xmin = INT64_MAX, xmax = INT64_MIN, ymin = INT64_MAX, ymax = INT64_MIN;
     for (size_t i = 0; i < n; i++) {
-        const bedge *e = &E[i];
-        int64_t xlo = e->xb < e->xt ? e->xb : e->xt, xhi = e->xb < e->xt ? e->xt : e->xb;
+        const edge *e = &edges[i];
+        int64_t xlo = e->x_bottom < e->x_top ? e->x_bottom : e->x_top,
+                xhi = e->x_bottom < e->x_top ? e->x_top : e->x_bottom;
         xmin = xlo < xmin ? xlo : xmin;
         xmax = xhi > xmax ? xhi : xmax;
-        ymin = e->yb < ymin ? e->yb : ymin;
-        ymax = e->yt > ymax ? e->yt : ymax;
+        ymin = e->y_bottom < ymin ? e->y_bottom : ymin;
+        ymax = e->y_top > ymax ? e->y_top : ymax;
     }
-    /* by yb, ties by number: (yb - ymin, number) packed in one key (the
+    /* by y_bottom, ties by number: (y_bottom - ymin, number) packed in one key (the
      * spread of grid coordinates is below 2^42, n below 2^7) */
     uint64_t key[PAIRS_MAX_EDGES];
     for (size_t i = 0; i < n; i++) {
-        uint64_t v = (uint64_t)(E[i].yb - ymin) << 7 | i;
+        uint64_t v = (uint64_t)(edges[i].y_bottom - ymin) << 7 | i;
         size_t k = i;
         for (; k > 0 && key[k - 1] > v; k--)
             key[k] = key[k - 1];
         key[k] = v;
     }
     for (size_t k = 0; k < n; k++) {
-        const bedge *e = &E[key[k] & 127];
-        B[k] = (edge_box){e->yb, e->yt, e->xb < e->xt ? e->xb : e->xt,
-                          e->xb < e->xt ? e->xt : e->xb, (uint32_t)(key[k] & 127)};
+        const edge *e = &edges[key[k] & 127];
+        boxes[k] =
+            (edge_box){e->y_bottom, e->y_top, e->x_bottom < e->x_top ? e->x_bottom : e->x_top,
+                       e->x_bottom < e->x_top ? e->x_top : e->x_bottom, (uint32_t)(key[k] & 127)};
     }
     int narrow = n && xmax - xmin < (INT64_C(1) << 31) && ymax - ymin < (INT64_C(1) << 31);
     for (size_t i = 0; i < n; i++) {
-        /* (B[j].yb >= B[i].yb: the y ranges overlap while B[j].yb < B[i].yt) */
-        for (size_t j = i + 1; j < n && B[j].yb < B[i].yt; j++) {
-            if (B[j].xlo > B[i].xhi || B[i].xlo > B[j].xhi)
+        /* (B[j].y_bottom >= B[i].y_bottom: the y ranges overlap while B[j].y_bottom < B[i].y_top) */
+        for (size_t j = i + 1; j < n && boxes[j].y_bottom < boxes[i].y_top; j++) {
+            if (boxes[j].x_low > boxes[i].x_high || boxes[i].x_low > boxes[j].x_high)
                 continue;
-            const bedge *a = &E[B[i].e], *b = &E[B[j].e];
+            const edge *a = &edges[boxes[i].edge], *b = &edges[boxes[j].edge];
             if (!cross_inside(a, b, narrow))
                 continue;
             int64_t px, py;
-            boolean_line_intersection(a->xb, a->yb, a->xt, a->yt, b->xb, b->yb, b->xt, b->yt, &px,
-                                      &py);
-            if (!add_split_point(g, B[i].e, px, py) || !add_split_point(g, B[j].e, px, py))
+            boolean_line_intersection(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom,
+                                      b->y_bottom, b->x_top, b->y_top, &px, &py);
+            if (!add_split_point(g, boxes[i].edge, px, py) ||
+                !add_split_point(g, boxes[j].edge, px, py))
                 return 0;
         }
     }
-    for (size_t h = 0; h < g->nh; h++) {
-        const hseg *H = &g->H[h];
-        for (size_t i = 0; i < n && B[i].yb < H->y; i++) {
-            const bedge *e = &E[B[i].e];
+    for (size_t h = 0; h < g->horizontal_count; h++) {
+        const horizontal_edge *horizontal = &g->horizontals[h];
+        for (size_t i = 0; i < n && boxes[i].y_bottom < horizontal->y; i++) {
+            const edge *e = &edges[boxes[i].edge];
             int64_t x;
-            if (H->y >= e->yt || B[i].xlo > H->x1 || B[i].xhi < H->x0 || x_is_integer(e, H->y, &x))
+            if (horizontal->y >= e->y_top || boxes[i].x_low > horizontal->x_right ||
+                boxes[i].x_high < horizontal->x_left || x_is_integer(e, horizontal->y, &x))
                 continue;
-            i128 num = x_num(e, H->y), d = x_den(e);
-            if ((i128)H->x0 * d <= num && num <= (i128)H->x1 * d &&
-                !add_split_point(g, B[i].e, x, H->y))
+            i128 num = x_num(e, horizontal->y), d = x_den(e);
+            if ((i128)horizontal->x_left * d <= num && num <= (i128)horizontal->x_right * d &&
+                !add_split_point(g, boxes[i].edge, x, horizontal->y))
                 return 0;
         }
     }

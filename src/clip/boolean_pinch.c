@@ -14,7 +14,7 @@
 
 typedef struct pinch_point {
     int64_t x, y;
-    size_t at; /* index in the ring */
+    size_t index; /* index in the ring */
 } pinch_point;
 
 static int cmp_pinch_point(const void *a, const void *b)
@@ -24,7 +24,7 @@ static int cmp_pinch_point(const void *a, const void *b)
         return p->y < q->y ? -1 : 1;
     if (p->x != q->x)
         return p->x < q->x ? -1 : 1;
-    return (p->at > q->at) - (p->at < q->at);
+    return (p->index > q->index) - (p->index < q->index);
 }
 
 #define PINCH_NONE ((size_t)-1)
@@ -81,7 +81,7 @@ int boolean_split_pinches(cg_point64 *pts, size_t n, const size_t *at, size_t br
             while (j < n && sorted[j].x == sorted[i].x && sorted[j].y == sorted[i].y)
                 j++;
             for (size_t k = i; k < j; k++)
-                group[sorted[k].at] = j - i > 1 ? groups : PINCH_NONE;
+                group[sorted[k].index] = j - i > 1 ? groups : PINCH_NONE;
             if (j - i > 1)
                 place[groups++] = PINCH_NONE;
             i = j;

@@ -2,6 +2,21 @@
  * edges and pieces by two integer keys, and qsort for a few records. */
 #include "boolean_engine.h"
 
+/* The int64_t field of record i, the field of record 0 at `base` and the
+ * records `stride` bytes apart (the sorts' keys k1 and k2). */
+static inline int64_t key_at(const int64_t *base, size_t i, size_t stride)
+{
+    return *(const int64_t *)((const char *)base + i * stride);
+}
+
+/* whether record i's keys (k1, k2) come before (p1, p2) */
+static inline int record_below(const int64_t *k1, const int64_t *k2, size_t stride, size_t i,
+                               int64_t p1, int64_t p2)
+{
+    int64_t a1 = key_at(k1, i, stride);
+    return a1 < p1 || (a1 == p1 && key_at(k2, i, stride) < p2);
+}
+
 /* the number of bits v needs (0 for 0) */
 static inline int bit_length(uint64_t v)
 {
@@ -170,7 +185,6 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
 static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                      uint32_t *idx)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     /* run r: positions at[r], at[r] + step[r], ... up to (excluding) end[r] */
     ptrdiff_t at[MAX_RUNS], end[MAX_RUNS], step[MAX_RUNS];
     int64_t h1[MAX_RUNS], h2[MAX_RUNS];
@@ -178,30 +192,30 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
     for (size_t i = 0; i < n;) {
         if (nr == MAX_RUNS)
             return 0;
-        int64_t p1 = KEY(k1, i), p2 = KEY(k2, i);
+        int64_t p1 = key_at(k1, i, stride), p2 = key_at(k2, i, stride);
         size_t j = i + 1;
-        if (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2))) {
+        if (j < n && record_below(k1, k2, stride, j, p1, p2)) {
             /* strictly descending (no ties: backwards, it is in order) */
             do {
-                p1 = KEY(k1, j);
-                p2 = KEY(k2, j);
+                p1 = key_at(k1, j, stride);
+                p2 = key_at(k2, j, stride);
                 j++;
-            } while (j < n && (KEY(k1, j) < p1 || (KEY(k1, j) == p1 && KEY(k2, j) < p2)));
+            } while (j < n && record_below(k1, k2, stride, j, p1, p2));
             at[nr] = (ptrdiff_t)j - 1;
             end[nr] = (ptrdiff_t)i - 1;
             step[nr] = -1;
         } else {
-            while (j < n && (KEY(k1, j) > p1 || (KEY(k1, j) == p1 && KEY(k2, j) >= p2))) {
-                p1 = KEY(k1, j);
-                p2 = KEY(k2, j);
+            while (j < n && !record_below(k1, k2, stride, j, p1, p2)) {
+                p1 = key_at(k1, j, stride);
+                p2 = key_at(k2, j, stride);
                 j++;
             }
             at[nr] = (ptrdiff_t)i;
             end[nr] = (ptrdiff_t)j;
             step[nr] = 1;
         }
-        h1[nr] = KEY(k1, at[nr]);
-        h2[nr] = KEY(k2, at[nr]);
+        h1[nr] = key_at(k1, at[nr], stride);
+        h2[nr] = key_at(k2, at[nr], stride);
         nr++;
         i = j;
     }
@@ -221,12 +235,11 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
             h1[b] = h1[nr];
             h2[b] = h2[nr];
         } else {
-            h1[b] = KEY(k1, at[b]);
-            h2[b] = KEY(k2, at[b]);
+            h1[b] = key_at(k1, at[b], stride);
+            h2[b] = key_at(k2, at[b], stride);
         }
     }
     return 1;
-#undef KEY
 }
 
 #define RADIX_RUN 48
@@ -235,16 +248,14 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
  * sort from the least k2 */
 static int radix_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n, keyval *tmp)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
-    int64_t lo2 = KEY(k2, a[0].val);
+    int64_t lo2 = key_at(k2, a[0].val, stride);
     for (size_t q = 1; q < n; q++) {
-        int64_t b = KEY(k2, a[q].val);
+        int64_t b = key_at(k2, a[q].val, stride);
         lo2 = b < lo2 ? b : lo2;
     }
     for (size_t q = 0; q < n; q++)
-        a[q].key = (uint64_t)(KEY(k2, a[q].val) - lo2);
+        a[q].key = (uint64_t)(key_at(k2, a[q].val, stride) - lo2);
     return radix_sort(a, n, tmp);
-#undef KEY
 }
 
 /* a[0..n) (records by index, in order but for k2) in stable order by k2,
@@ -254,13 +265,12 @@ static int radix_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n, ke
 static ALWAYS_INLINE int insert_by_k2(const int64_t *k2, size_t stride, keyval *a, size_t n,
                                       size_t budget)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     const uint64_t flip = (uint64_t)1 << 63;
     size_t moves = 0;
-    a[0].key = (uint64_t)KEY(k2, a[0].val) ^ flip;
+    a[0].key = (uint64_t)key_at(k2, a[0].val, stride) ^ flip;
     for (size_t q = 1; q < n; q++) {
         keyval v = a[q];
-        v.key = (uint64_t)KEY(k2, v.val) ^ flip;
+        v.key = (uint64_t)key_at(k2, v.val, stride) ^ flip;
         size_t m = q;
         for (; m > 0 && a[m - 1].key > v.key; m--)
             a[m] = a[m - 1];
@@ -270,7 +280,6 @@ static ALWAYS_INLINE int insert_by_k2(const int64_t *k2, size_t stride, keyval *
             return 0;
     }
     return 1;
-#undef KEY
 }
 
 /* boolean_sort_two_keys through one 63-bit key per record when n <= 64:
@@ -319,11 +328,10 @@ static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size
 static int sort_combined(const int64_t *k2, size_t stride, size_t n, keyval *a, keyval *tmp,
                          uint64_t all)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     int bits1 = bit_length(all);
-    int64_t lo2 = KEY(k2, a[0].val), hi2 = lo2;
+    int64_t lo2 = key_at(k2, a[0].val, stride), hi2 = lo2;
     for (size_t i = 1; i < n; i++) {
-        int64_t b = KEY(k2, a[i].val);
+        int64_t b = key_at(k2, a[i].val, stride);
         lo2 = b < lo2 ? b : lo2;
         hi2 = b > hi2 ? b : hi2;
     }
@@ -332,11 +340,10 @@ static int sort_combined(const int64_t *k2, size_t stride, size_t n, keyval *a, 
         return -1;
     uint64_t both = 0;
     for (size_t i = 0; i < n; i++) {
-        a[i].key = a[i].key << bits2 | (uint64_t)(KEY(k2, a[i].val) - lo2);
+        a[i].key = a[i].key << bits2 | (uint64_t)(key_at(k2, a[i].val, stride) - lo2);
         both |= a[i].key;
     }
     return radix_sort_all(a, n, tmp, both);
-#undef KEY
 }
 
 /* idx[0..n) ordered by (k1[i], k2[i]) lexicographically (the keys are
@@ -351,17 +358,17 @@ static int sort_combined(const int64_t *k2, size_t stride, size_t n, keyval *a, 
 int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
                           uint32_t *idx, keyval *scratch, keyval *tmp)
 {
-#define KEY(base, i) (*(const int64_t *)((const char *)(base) + (size_t)(i) * stride))
     if (n == 0)
         return 1;
     if (n >= PACKED_MIN && n <= 64 && sort_packed(k1, k2, stride, n, idx))
         return 1;
     if (n <= 32) { /* few: straight insertion (stable: ties by index) */
         for (size_t i = 0; i < n; i++) {
-            int64_t a1 = KEY(k1, i), a2 = KEY(k2, i);
+            int64_t a1 = key_at(k1, i, stride), a2 = key_at(k2, i, stride);
             size_t j = i;
-            for (; j > 0 && (KEY(k1, idx[j - 1]) > a1 ||
-                             (KEY(k1, idx[j - 1]) == a1 && KEY(k2, idx[j - 1]) > a2));
+            for (; j > 0 &&
+                   (key_at(k1, idx[j - 1], stride) > a1 ||
+                    (key_at(k1, idx[j - 1], stride) == a1 && key_at(k2, idx[j - 1], stride) > a2));
                  j--)
                 idx[j] = idx[j - 1];
             idx[j] = (uint32_t)i;
@@ -373,9 +380,9 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
             return 1;
     }
     /* the keys from the least (as few digits as they need) */
-    int64_t lo1 = KEY(k1, 0);
+    int64_t lo1 = key_at(k1, 0, stride);
     for (size_t i = 0; i < n; i++) {
-        int64_t a = KEY(k1, i);
+        int64_t a = key_at(k1, i, stride);
         lo1 = a < lo1 ? a : lo1;
         scratch[i] = (keyval){(uint64_t)a, (uint32_t)i};
     }
@@ -414,7 +421,6 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
     for (size_t i = 0; i < n; i++)
         idx[i] = scratch[i].val;
     return 1;
-#undef KEY
 }
 
 /* qsort, by straight insertion when n is small (the assembly's rings and

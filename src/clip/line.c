@@ -81,6 +81,16 @@ static unsigned exact_code(const line_seg *s, const line_param *t, const double 
  * loop all the same. */
 #define CS_MAX_STEPS 16
 
+/* One step of Cohen-Sutherland told to trace (when given): the two
+ * endpoints p with their region codes c, and what is done. */
+static inline void cs_trace(cg_clip_trace_fn trace, void *user, double p[2][3],
+                            const unsigned c[2], const char *what)
+{
+    if (trace)
+        trace(user, cg_vec2_make(p[0][0], p[0][1]), c[0], cg_vec2_make(p[1][0], p[1][1]), c[1],
+              what);
+}
+
 /* Cohen-Sutherland in dim 2 or 3 on a, b (in: the segment, out: its visible
  * part); trace only in 2D.  Returns whether a part is visible. */
 static int cs_clip(int dim, double *a, double *b, const double *lo, const double *hi,
@@ -95,21 +105,15 @@ static int cs_clip(int dim, double *a, double *b, const double *lo, const double
     memcpy(p[0], a, (size_t)dim * sizeof *a);
     memcpy(p[1], b, (size_t)dim * sizeof *b);
     unsigned c[2] = {exact_code(&s, &t[0], lo, hi), exact_code(&s, &t[1], lo, hi)};
-#define CS_TRACE(what)                                                                      \
-    do {                                                                                    \
-        if (trace)                                                                          \
-            trace(user, cg_vec2_make(p[0][0], p[0][1]), c[0], cg_vec2_make(p[1][0], p[1][1]), \
-                  c[1], what);                                                              \
-    } while (0)
     for (int step = 0; step < CS_MAX_STEPS; step++) {
         if (!(c[0] | c[1])) {
-            CS_TRACE("trivial accept");
+            cs_trace(trace, user, p, c, "trivial accept");
             memcpy(a, p[0], (size_t)dim * sizeof *a);
             memcpy(b, p[1], (size_t)dim * sizeof *b);
             return 1;
         }
         if (c[0] & c[1]) {
-            CS_TRACE("trivial reject");
+            cs_trace(trace, user, p, c, "trivial reject");
             return 0;
         }
         /* The outpoint: an endpoint with a non-zero rCode.  The bit tested
@@ -120,14 +124,13 @@ static int cs_clip(int dim, double *a, double *b, const double *lo, const double
             k++;
         static const char *const what[6] = {"clip top",  "clip bottom", "clip right",
                                             "clip left", "clip far",    "clip near"};
-        CS_TRACE(what[k]);
+        cs_trace(trace, user, p, c, what[k]);
         int axis = cs_axis[k];
         line_param_bound(&s, axis, cs_high[k] ? hi[axis] : lo[axis], &t[e]);
         for (int j = 0; j < dim; j++)
             p[e][j] = line_coord(&s, &t[e], j);
         c[e] = exact_code(&s, &t[e], lo, hi);
     }
-#undef CS_TRACE
     return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "cg/texture.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
+#include "cg/polygon.h"
 #include "cg/hemesh.h"
 #include "cg/render.h"
 #include "cg/scene.h"

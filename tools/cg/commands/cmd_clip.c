@@ -1,4 +1,5 @@
 /* cg clip line | polygon | boolean: the clipping algorithms of chapter 11. */
+#include "clip_geometry.h"
 #include "clip_view.h"
 #include "cli.h"
 #include "command.h"
@@ -286,6 +287,8 @@ done:
 
 static int run(int argc, char **argv)
 {
+    if (argc >= 2 && clip_geometry_handles(argv[1]))
+        return clip_geometry_run(argc - 1, argv + 1);
     static const cli_action actions[] = {{"line", line}, {"polygon", polygon}, {"boolean", boolean}};
     return cli_run_action("clip", argc, argv, actions, 3, NULL,
                           "unknown clip command '%s' (expected line, polygon or boolean)");
@@ -302,7 +305,8 @@ const cg_command cg_command_clip = {
     "       cg clip polygon WINDOW SUBJECT [--algorithm sutherland-hodgman|weiler-atherton]\n"
     "                    [-o OUT.png]\n"
     "       cg clip boolean intersection|union|difference|xor A B\n"
-    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n\n"
+    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n"
+    CLIP_GEOMETRY_USAGE_LINES "\n"
     "line: clips the segment (X0,Y0)-(X1,Y1) against the window and prints the\n"
     "visible part as 'X0 Y0 X1 Y1', or 'rejected'.  --trace prints each step of\n"
     "Cohen-Sutherland with the endpoints' 4-bit region codes (TBRL, as in the notes).\n\n"
@@ -317,7 +321,8 @@ const cg_command cg_command_clip = {
     "performs the operation N times after reading (through one workspace, which\n"
     "keeps the engine's memory from run to run) and prints the median time on\n"
     "stderr as 'boolean: 1.23 ms'.  Coordinates are rounded to a grid 2^36 times\n"
-    "finer than the largest |coordinate| (see docs/clip.md).\n",
+    "finer than the largest |coordinate| (see docs/clip.md).\n\n"
+    CLIP_GEOMETRY_USAGE_TEXT,
     run,
     clip_syntaxes,
 };

@@ -1,0 +1,289 @@
+/* Polygon geometry beyond booleans (cg/polygon.h) against Clipper2 2.0 and
+ * GEOS on the same integer inputs: offsets of 5-lobed star polygons (a
+ * random jitter of half a chord) by 1% of their radius with round and
+ * miter joins (against Clipper2's InflatePaths and GEOS's buffer),
+ * rectangle clips of a small tile and of most of the star (against cg's
+ * own boolean intersection and Clipper2's RectClip), triangulations of a
+ * star with a star hole (against Clipper2's Triangulate), and the cg
+ * command's own time for an offset and a triangulation.  Areas (triangle
+ * counts) are printed side by side in the notes. */
+#include "bench.h"
+#include "bench_polygon_peers.h"
+#include "cg/polygon.h"
+
+#include <math.h>
+#include <string.h>
+
+#define RADIUS 1e6
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
+static double rnd(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+typedef struct shape {
+    cg_polygon_set64 set;
+    int64_t *xy;
+    size_t *len;
+    polygon_peer_input peer;
+} shape;
+
+/* A 5-lobed star ring of n vertices (clockwise when reversed). */
+static void star(shape *s, size_t n, double radius, int reversed)
+{
+    cg_point64 *p = malloc(n * sizeof *p);
+    for (size_t i = 0; i < n; i++) {
+        double a = 2 * M_PI * ((double)i + 0.5 * rnd()) / (double)n;
+        double r = radius * (1 + 0.3 * sin(5 * a));
+        p[reversed ? n - 1 - i : i] = (cg_point64){llround(r * cos(a)), llround(r * sin(a))};
+    }
+    cg_polygon_set64_add_ring(&s->set, p, n, 1);
+    free(p);
+}
+
+static void finish(shape *s)
+{
+    s->xy = malloc(2 * (s->set.point_count + 1) * sizeof *s->xy);
+    s->len = malloc((s->set.ring_count + 1) * sizeof *s->len);
+    for (size_t i = 0; i < s->set.point_count; i++) {
+        s->xy[2 * i] = s->set.points[i].x;
+        s->xy[2 * i + 1] = s->set.points[i].y;
+    }
+    for (size_t r = 0; r < s->set.ring_count; r++)
+        s->len[r] = s->set.ring_start[r + 1] - s->set.ring_start[r];
+    s->peer = (polygon_peer_input){s->xy, s->len, s->set.ring_count};
+}
+
+static void shape_free(shape *s)
+{
+    cg_polygon_set64_clear(&s->set);
+    free(s->xy);
+    free(s->len);
+}
+
+typedef struct job {
+    shape *input;
+    cg_polygon_set64 result;
+    cg_clip_workspace *ws;
+    double delta, area, tolerance;
+    int join;
+    cg_rect64 rect;
+    void *peer;
+} job;
+
+static void cg_offset_job(void *v)
+{
+    job *j = v;
+    cg_offset_options o = cg_offset_options_default();
+    o.join = j->join ? CG_OFFSET_JOIN_ROUND : CG_OFFSET_JOIN_MITER;
+    o.arc_tolerance = j->tolerance;
+    cg_offset64_ws(j->ws, &j->input->set, j->delta, &o, &j->result);
+    j->area = cg_polygon_set64_area(&j->result);
+}
+static void clipper2_offset_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_offset(j->peer, j->delta, j->join, j->tolerance);
+}
+static void geos_offset_job(void *v)
+{
+    job *j = v;
+    /* the chord error d (1 - cos(pi / 4q)) matched to the arc tolerance */
+    int q = (int)ceil(M_PI / 4 / acos(1 - j->tolerance / j->delta));
+    j->area = peer_geos_buffer(j->peer, j->delta, j->join, q);
+}
+static void cg_rect_job(void *v)
+{
+    job *j = v;
+    cg_rect_clip64_ws(j->ws, &j->input->set, CG_CLIP_NON_ZERO, j->rect, &j->result);
+    j->area = cg_polygon_set64_area(&j->result);
+}
+static void cg_boolean_rect_job(void *v)
+{
+    job *j = v;
+    cg_polygon_set64 window = {0};
+    cg_point64 w[4] = {{j->rect.xmin, j->rect.ymin}, {j->rect.xmax, j->rect.ymin},
+                       {j->rect.xmax, j->rect.ymax}, {j->rect.xmin, j->rect.ymax}};
+    cg_polygon_set64_add_ring(&window, w, 4, 1);
+    cg_clip_boolean64_ws(j->ws, CG_CLIP_INTERSECTION, &j->input->set, CG_CLIP_NON_ZERO, &window,
+                         CG_CLIP_NON_ZERO, &j->result);
+    j->area = cg_polygon_set64_area(&j->result);
+    cg_polygon_set64_clear(&window);
+}
+static void clipper2_rect_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_rect(j->peer, j->rect.xmin, j->rect.ymin, j->rect.xmax, j->rect.ymax);
+}
+static void cg_triangulate_job(void *v)
+{
+    job *j = v;
+    cg_triangulate64_ws(j->ws, &j->input->set, CG_CLIP_NON_ZERO, &j->result);
+    j->area = (double)j->result.ring_count;
+}
+static void clipper2_triangulate_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_triangulate(j->peer);
+}
+
+static int runs_for(size_t n) { return n >= 100000 ? 3 : n >= 10000 ? 5 : 15; }
+
+static void offsets(void)
+{
+    static const size_t sizes[] = {1000, 10000, 100000};
+    for (int k = 0; k < 3; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        finish(&s);
+        for (int join = 1; join >= 0; join--) {
+            job j = {&s, {0}, cg_clip_workspace_create(), RADIUS / 100, 0, RADIUS / 100 / 500, join,
+                     {0, 0, 0, 0}, NULL};
+            int runs = runs_for(sizes[k]);
+            double t_cg = bench_median(cg_offset_job, &j, runs), a_cg = j.area;
+            char name[64], note[160];
+            snprintf(name, sizeof name, "offset %s star %zu", join ? "round" : "miter", sizes[k]);
+            if (peer_clipper2_available()) {
+                j.peer = peer_clipper2_prepare(&s.peer);
+                double t = bench_median(clipper2_offset_job, &j, runs);
+                snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", a_cg, j.area);
+                bench_row(name, t_cg, "Clipper2", t, note);
+                peer_clipper2_free(j.peer);
+            } else {
+                bench_row(name, t_cg, "-", 0, "Clipper2 not found (../shared/peers/clipper2)");
+            }
+            if (peer_geos_available()) {
+                j.peer = peer_geos_prepare(&s.peer);
+                double t = bench_median(geos_offset_job, &j, runs < 5 ? runs : 5);
+                snprintf(note, sizeof note, "areas cg %.6g, GEOS %.6g", a_cg, j.area);
+                bench_row(name, t_cg, "GEOS", t, note);
+                peer_geos_free(j.peer);
+            }
+            cg_polygon_set64_clear(&j.result);
+            cg_clip_workspace_free(j.ws);
+        }
+        shape_free(&s);
+    }
+}
+
+static void rectangles(void)
+{
+    static const size_t sizes[] = {10000, 100000, 1000000};
+    for (int k = 0; k < 3; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        finish(&s);
+        for (int large = 0; large < 2; large++) {
+            /* a tile across the boundary, or most of the star */
+            int64_t h = large ? (int64_t)(0.8 * RADIUS) : (int64_t)(0.05 * RADIUS);
+            int64_t cx = large ? 0 : (int64_t)RADIUS; /* the star crosses x = RADIUS on the axis */
+            job j = {&s, {0}, cg_clip_workspace_create(), 0, 0, 0, 0, {cx - h, -h, cx + h, h}, NULL};
+            int runs = runs_for(sizes[k]);
+            double t_cg = bench_median(cg_rect_job, &j, runs), a_cg = j.area;
+            char name[64], note[160];
+            snprintf(name, sizeof name, "rect %s star %zu", large ? "large" : "tile", sizes[k]);
+            double t_bool = bench_median(cg_boolean_rect_job, &j, runs);
+            snprintf(note, sizeof note, "areas rect %.6g, boolean %.6g", a_cg, j.area);
+            bench_row(name, t_cg, "cg boolean", t_bool, note);
+            if (peer_clipper2_available()) {
+                j.peer = peer_clipper2_prepare(&s.peer);
+                double t = bench_median(clipper2_rect_job, &j, runs);
+                snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", a_cg, j.area);
+                bench_row(name, t_cg, "Clipper2", t, note);
+                peer_clipper2_free(j.peer);
+            }
+            cg_polygon_set64_clear(&j.result);
+            cg_clip_workspace_free(j.ws);
+        }
+        shape_free(&s);
+    }
+}
+
+static void triangulations(void)
+{
+    static const size_t sizes[] = {1000, 10000, 100000};
+    for (int k = 0; k < 3; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        star(&s, sizes[k] / 10, RADIUS / 3, 1);
+        finish(&s);
+        job j = {&s, {0}, cg_clip_workspace_create(), 0, 0, 0, 0, {0, 0, 0, 0}, NULL};
+        int runs = runs_for(sizes[k]);
+        double t_cg = bench_median(cg_triangulate_job, &j, runs), n_cg = j.area;
+        char name[64], note[160];
+        snprintf(name, sizeof name, "triangulate star+hole %zu", sizes[k] + sizes[k] / 10);
+        if (peer_clipper2_available()) {
+            j.peer = peer_clipper2_prepare(&s.peer);
+            double t = bench_median(clipper2_triangulate_job, &j, runs);
+            snprintf(note, sizeof note, "triangles cg %.0f, Clipper2 %.0f", n_cg, j.area);
+            bench_row(name, t_cg, "Clipper2", t, note);
+            peer_clipper2_free(j.peer);
+        } else {
+            bench_row(name, t_cg, "-", 0, "Clipper2 not found (../shared/peers/clipper2)");
+        }
+        cg_polygon_set64_clear(&j.result);
+        cg_clip_workspace_free(j.ws);
+        shape_free(&s);
+    }
+}
+
+/* The cg command on a WKT file of the star: its own median time (what it
+ * prints for --repeat) against the library's. */
+static void command_rows(void)
+{
+    shape s = {0};
+    star(&s, 10000, 1000, 0);
+    char path[] = "/tmp/cg_bench_polygon_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        bench_row("cg clip offset (command)", 0, "-", 0, "no temporary file");
+        return;
+    }
+    fputs("POLYGON ((", f);
+    for (size_t i = 0; i < s.set.point_count; i++)
+        fprintf(f, "%s%lld %lld", i ? ", " : "", (long long)s.set.points[i].x,
+                (long long)s.set.points[i].y);
+    fputs("))\n", f);
+    fclose(f);
+    static const char *commands[2] = {"offset 10 %s --join round --repeat 5",
+                                      "triangulate %s --repeat 5"};
+    static const char *names[2] = {"cg clip offset round star 10000 (command)",
+                                   "cg clip triangulate star 10000 (command)"};
+    for (int c = 0; c < 2; c++) {
+        char args[256], line[4096];
+        snprintf(args, sizeof args, commands[c], path);
+        snprintf(line, sizeof line, "'%s' clip %s 2>&1 >/dev/null", CG_TOOL, args);
+        FILE *p = popen(line, "r");
+        double ms = -1;
+        char text[256];
+        while (p && fgets(text, sizeof text, p)) {
+            char *colon = strchr(text, ':');
+            if (colon && strstr(text, " ms"))
+                ms = atof(colon + 1);
+        }
+        if (p)
+            pclose(p);
+        bench_row(names[c], ms / 1e3, "-", 0, "the median the command prints for --repeat 5");
+    }
+    remove(path);
+    shape_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+    const char *only = argc > 1 ? argv[1] : NULL;
+    if (!only || strcmp(only, "offset") == 0)
+        offsets();
+    if (!only || strcmp(only, "rect") == 0)
+        rectangles();
+    if (!only || strcmp(only, "triangulate") == 0)
+        triangulations();
+    if (!only || strcmp(only, "command") == 0)
+        command_rows();
+    return 0;
+}

@@ -1,0 +1,190 @@
+/* libFuzzer target: the polygon geometry beyond booleans (cg/polygon.h) on
+ * the integer and double APIs.  See README-polygon.md for the input layout.
+ * Per input, on a few rings mostly on a 0..63 grid (self-crossing,
+ * touching, degenerate):
+ *   - every call returns CG_OK, or CG_ERANGE exactly when a coordinate lies
+ *     beyond CG_CLIP_MAX_COORD (never an abort, never another status);
+ *   - offsets: a result well formed (outer rings counter-clockwise, holes
+ *     clockwise, rings of 3 points or more); inflating never loses area of
+ *     the union, deflating never gains any;
+ *   - rectangle clips: every vertex inside the rectangle, the area at most
+ *     the union's (and that of the rectangle) plus the rounding;
+ *   - triangulations: every triangle counter-clockwise with positive area,
+ *     twice their areas summing exactly to twice the union's;
+ *   - simplification: as many rings as the union, each of 3 points or more;
+ *   - the double API with scale 1 gives the integer API's areas. */
+#include "cg/polygon.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+__extension__ typedef __int128 i128;
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size);
+
+#define FAIL() fail(__LINE__)
+static void fail(int line)
+{
+    fprintf(stderr, "fuzz_polygon.c:%d: invariant broken\n", line);
+    abort();
+}
+
+typedef struct reader { const unsigned char *p; size_t n; } reader;
+
+static unsigned get(reader *r)
+{
+    if (!r->n)
+        return 0;
+    r->n--;
+    return *r->p++;
+}
+
+static i128 twice_area(const cg_point64 *p, size_t n)
+{
+    i128 s = 0;
+    for (size_t i = 1; i + 1 < n; i++)
+        s += (i128)(p[i].x - p[0].x) * (p[i + 1].y - p[0].y) -
+             (i128)(p[i + 1].x - p[0].x) * (p[i].y - p[0].y);
+    return s;
+}
+
+static i128 set_twice_area(const cg_polygon_set64 *s)
+{
+    i128 total = 0;
+    for (size_t r = 0; r < s->ring_count; r++)
+        total += twice_area(s->points + s->ring_start[r], s->ring_start[r + 1] - s->ring_start[r]);
+    return total;
+}
+
+/* A boolean-style result: polygons whose first ring is counter-clockwise,
+ * the others clockwise, every ring of 3 points or more. */
+static void check_well_formed(const cg_polygon_set64 *s)
+{
+    for (size_t p = 0; p < s->polygon_count; p++)
+        for (size_t r = s->polygon_start[p]; r < s->polygon_start[p + 1]; r++) {
+            size_t n = s->ring_start[r + 1] - s->ring_start[r];
+            if (n < 3)
+                FAIL();
+            i128 a = twice_area(s->points + s->ring_start[r], n);
+            if ((r == s->polygon_start[p]) != (a > 0))
+                FAIL();
+        }
+}
+
+static void check_status(cg_status st, int in_range)
+{
+    if (st != CG_OK && !(st == CG_ERANGE && !in_range))
+        FAIL();
+}
+
+int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
+{
+    reader r = {data, size};
+    unsigned head = get(&r), rings = 1 + (get(&r) & 3), shift = get(&r) % 40;
+    cg_polygon_set64 in = {0}, simple = {0}, none = {0}, out = {0};
+    int in_range = 1;
+    for (unsigned k = 0; k < rings; k++) {
+        cg_point64 p[32];
+        unsigned n = get(&r) % 32;
+        for (unsigned i = 0; i < n; i++) {
+            int64_t x = (int64_t)(get(&r) & 63), y = (int64_t)(get(&r) & 63);
+            p[i] = (cg_point64){x * ((int64_t)1 << shift), y * ((int64_t)1 << shift)};
+            in_range &= p[i].x <= CG_CLIP_MAX_COORD && p[i].y <= CG_CLIP_MAX_COORD;
+        }
+        cg_polygon_set64_add_ring(&in, p, n, 1);
+    }
+    cg_clip_fill fill = (cg_clip_fill)(head >> 2 & 3);
+    cg_status st = cg_clip_boolean64(CG_CLIP_UNION, &in, fill, &none, fill, &simple);
+    check_status(st, in_range);
+    if (st != CG_OK)
+        goto done;
+    i128 area = set_twice_area(&simple);
+    double scale = (double)((int64_t)1 << shift);
+    switch (head & 3) {
+    case 0: { /* offset */
+        cg_offset_options o = cg_offset_options_default();
+        o.join = (cg_offset_join)(head >> 4 & 3);
+        o.fill = fill;
+        o.end = head & 64 ? CG_OFFSET_END_ROUND : CG_OFFSET_END_POLYGON;
+        double delta = ((double)(get(&r) % 16) - 8) * scale * 0.75;
+        st = cg_offset64(&in, delta, &o, &out);
+        if (st == CG_ERANGE)
+            break; /* the offset itself may leave the grid */
+        check_status(st, 1);
+        check_well_formed(&out);
+        if (o.end == CG_OFFSET_END_POLYGON && delta > 0 && set_twice_area(&out) < area)
+            FAIL();
+        if (o.end == CG_OFFSET_END_POLYGON && delta < 0 && set_twice_area(&out) > area)
+            FAIL();
+        break;
+    }
+    case 1: { /* rectangle */
+        int64_t v[4];
+        for (int k = 0; k < 4; k++)
+            v[k] = (int64_t)(get(&r) & 63) * ((int64_t)1 << shift);
+        cg_rect64 rect = {v[0] < v[2] ? v[0] : v[2], v[1] < v[3] ? v[1] : v[3],
+                          v[0] < v[2] ? v[2] : v[0], v[1] < v[3] ? v[3] : v[1]};
+        st = head & 64 ? cg_rect_clip_lines64(&in, rect, &out)
+                       : cg_rect_clip64(&in, fill, rect, &out);
+        check_status(st, in_range);
+        for (size_t i = 0; i < out.point_count; i++)
+            if (out.points[i].x < rect.xmin || out.points[i].x > rect.xmax ||
+                out.points[i].y < rect.ymin || out.points[i].y > rect.ymax)
+                FAIL();
+        if (!(head & 64)) {
+            check_well_formed(&out);
+            /* each crossing rounded moves an edge by half a unit */
+            double slack = (double)(in.point_count + 4) * 2 *
+                           ((double)(rect.xmax - rect.xmin) + (double)(rect.ymax - rect.ymin) + 2);
+            if ((double)set_twice_area(&out) > (double)area + slack)
+                FAIL();
+        }
+        break;
+    }
+    case 2: /* triangulation */
+        st = cg_triangulate64(&in, fill, &out);
+        check_status(st, in_range);
+        for (size_t t = 0; t < out.ring_count; t++)
+            if (out.ring_start[t + 1] - out.ring_start[t] != 3 ||
+                twice_area(out.points + out.ring_start[t], 3) <= 0)
+                FAIL();
+        if (set_twice_area(&out) != area)
+            FAIL();
+        break;
+    default: { /* simplification */
+        cg_simplify_algorithm a = head & 16 ? CG_SIMPLIFY_VISVALINGAM : CG_SIMPLIFY_RDP;
+        double tolerance = (double)(get(&r) % 8) * scale * (a == CG_SIMPLIFY_VISVALINGAM ? scale : 1);
+        st = cg_simplify64(&in, 0, fill, a, tolerance, &out);
+        check_status(st, in_range);
+        check_well_formed(&out);
+        if (out.ring_count != simple.ring_count)
+            FAIL();
+        break;
+    }
+    }
+    if ((head & 128) && shift == 0 && (head & 3) == 2) {
+        /* the double API on the same grid */
+        cg_polygon_set d = {0}, dout = {0};
+        for (size_t k = 0; k < in.ring_count; k++) {
+            cg_vec2 q[32];
+            size_t n = in.ring_start[k + 1] - in.ring_start[k];
+            for (size_t i = 0; i < n; i++)
+                q[i] = cg_vec2_make((double)in.points[in.ring_start[k] + i].x,
+                                    (double)in.points[in.ring_start[k] + i].y);
+            cg_polygon_set_add_ring(&d, q, n, 1);
+        }
+        if (cg_triangulate(&d, fill, 1, &dout) != CG_OK)
+            FAIL();
+        if (fabs(cg_polygon_set_area(&dout) - (double)area / 2) > 1e-6)
+            FAIL();
+        cg_polygon_set_clear(&d);
+        cg_polygon_set_clear(&dout);
+    }
+done:
+    cg_polygon_set64_clear(&in);
+    cg_polygon_set64_clear(&simple);
+    cg_polygon_set64_clear(&out);
+    return 0;
+}

@@ -36,11 +36,13 @@
  * This file loads the operands and runs the passes; the steps are in
  * boolean_pairs.c (the crossings of small inputs, pair by pair),
  * boolean_prepare.c (a pass's arrays and orders), boolean_sweep.c (the
- * sweeps), boolean_checkpoint.c (where a pass after
- * splits resumes), boolean_split.c (snap rounding and splitting),
- * boolean_assemble.c (rings and holes), boolean_sort.c, and
- * boolean_double.c (the double API); boolean_engine.h holds what they
- * share. */
+ * full sweep), boolean_light.c (the light sweep), boolean_scanline.c (their
+ * out-of-line steps on a scanline; boolean_scan.h holds what the two
+ * share), boolean_checkpoint.c (where a pass after splits resumes),
+ * boolean_split.c and boolean_snap.c (snap rounding and splitting),
+ * boolean_assemble.c and boolean_pinch.c (rings and holes),
+ * boolean_sort.c, and boolean_double.c (the double API);
+ * boolean_engine.h holds what they share. */
 #include "boolean_engine.h"
 
 int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,

@@ -234,7 +234,7 @@ static inline int64_t x_rounded(const edge *e, int64_t y)
 }
 
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
- * parallel (boolean_sweep.c). */
+ * parallel (boolean_scanline.c). */
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
                               int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py);
 
@@ -414,7 +414,7 @@ int boolean_run_sweep(sweep *s);
 
 #define LIGHT_BAIL 2
 /* The light sweep of a pass expected to find nothing to split
- * (boolean_sweep.c): 1 when final, LIGHT_BAIL when something needs a split,
+ * (boolean_light.c): 1 when final, LIGHT_BAIL when something needs a split,
  * 0 when out of memory. */
 int boolean_light_sweep(sweep *s);
 

@@ -44,8 +44,8 @@
 #ifndef CG_CLIP_BOOLEAN_ENGINE_H
 #define CG_CLIP_BOOLEAN_ENGINE_H
 
-#include "internal.h"
-#include "../core/invariant.h"
+#include "../internal.h"
+#include "../../core/invariant.h"
 
 #include <math.h>
 #include <stdlib.h>

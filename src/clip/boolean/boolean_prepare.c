@@ -3,7 +3,7 @@
  * from the last pass's orders when there is one), the scanlines and the
  * horizontal edges in order, and what a pass keeps for the next. */
 #include "boolean_engine.h"
-#include "../core/arena.h"
+#include "../../core/arena.h"
 
 /* Forgets the arrays of the last pass; their memory is kept for the next. */
 void boolean_sweep_reset(sweep *s)

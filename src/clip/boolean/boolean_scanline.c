@@ -44,7 +44,8 @@ int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1
 int boolean_add_split(sweep *s, uint32_t e, int64_t x, int64_t y)
 {
     engine *g = s->engine;
-    GROW_SMALL(g->splits, g->split_count, g->split_capacity, g->splits_small, return 0);
+    if (!room_for_split(g))
+        return 0;
     g->splits[g->split_count++] = (split_point){e, x, y};
     s->changed = 1;
     /* this pass will be repeated; it goes on classifying so that the next
@@ -77,7 +78,8 @@ static void break_run(sweep *s, uint32_t e, int next)
 NOINLINE static int record_meet(sweep *s, int64_t x, int64_t y)
 {
     engine *g = s->engine;
-    GROW(g->meets, g->meet_count, g->meet_capacity, return 0);
+    if (!room_for_meet(g))
+        return 0;
     g->meets[g->meet_count++] = (cg_point64){x, y};
     return 1;
 }
@@ -107,19 +109,15 @@ int boolean_meet(sweep *s, uint32_t e, int64_t y, int next)
 }
 
 /* Room for more pieces: the first growth goes to one per edge at once (a
- * result has about as many), the ones after double as GROW_SMALL's.  0 when
+ * result has about as many), the ones after by the growth policy.  0 when
  * out of memory. */
 NOINLINE static int grow_pieces(engine *g)
 {
-    size_t cap = g->piece_capacity < g->edge_count / 2 ? g->edge_count / 2
-                                                       : g->piece_capacity; /* (doubled) */
-    void *p =
-        boolean_grow_from(g->pieces, g->pieces_small, g->piece_count, &cap, sizeof *g->pieces);
-    if (!p)
-        return 0;
-    g->pieces = p;
-    g->piece_capacity = cap;
-    return 1;
+    size_t needed = g->piece_count + 1;
+    if (needed < g->edge_count)
+        needed = g->edge_count;
+    return core_array_reserve_from((void **)&g->pieces, &g->piece_capacity, g->piece_count, needed,
+                                   sizeof *g->pieces, g->pieces_small) == CG_OK;
 }
 
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)

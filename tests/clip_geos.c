@@ -4,33 +4,10 @@
 #include "cg/clip.h"
 #include "check.h"
 
-#include <geos_c.h>
+#include "clip_geos_shapes.h"
+
 #include <stdarg.h>
 #include <string.h>
-
-static void geos_message(const char *fmt, ...) { (void)fmt; }
-
-static GEOSGeometry *ring_geom(GEOSContextHandle_t h, const cg_vec2 *p, size_t n, int linear)
-{
-    GEOSCoordSequence *s = GEOSCoordSeq_create_r(h, (unsigned)n + 1, 2);
-    for (size_t i = 0; i <= n; i++) {
-        GEOSCoordSeq_setX_r(h, s, (unsigned)i, p[i % n].x);
-        GEOSCoordSeq_setY_r(h, s, (unsigned)i, p[i % n].y);
-    }
-    (void)linear;
-    return GEOSGeom_createLinearRing_r(h, s);
-}
-
-/* A polygon with holes from a cg set whose rings are outer then holes. */
-static GEOSGeometry *set_geom(GEOSContextHandle_t h, const cg_polygon_set *s)
-{
-    GEOSGeometry *outer = ring_geom(h, s->points, s->ring_start[1], 0);
-    size_t nh = s->ring_count - 1;
-    GEOSGeometry *holes[8];
-    for (size_t k = 0; k < nh && k < 8; k++)
-        holes[k] = ring_geom(h, s->points + s->ring_start[k + 1], s->ring_start[k + 2] - s->ring_start[k + 1], 0);
-    return GEOSGeom_createPolygon_r(h, outer, holes, (unsigned)nh);
-}
 
 static void star(check_rng *rng, cg_vec2 *p, int n, double cx, double cy, double r0, double r1, int cw)
 {
@@ -57,9 +34,7 @@ static int inside_result(const cg_polygon_set *r, double x, double y)
 
 int main(void)
 {
-    GEOSContextHandle_t h = GEOS_init_r();
-    GEOSContext_setNoticeHandler_r(h, geos_message);
-    GEOSContext_setErrorHandler_r(h, geos_message);
+    GEOSContextHandle_t h = clip_geos_start();
     check_rng rng = {0xfeed};
     long points = 0;
     for (int it = 0; it < 400; it++) {
@@ -87,7 +62,7 @@ int main(void)
                 cg_polygon_set_add_ring(&b, p, 12, 0);
             }
         }
-        GEOSGeometry *ga = set_geom(h, &a), *gb = set_geom(h, &b);
+        GEOSGeometry *ga = clip_geos_polygons(h, &a), *gb = clip_geos_polygons(h, &b);
         for (int op = 0; op < 4; op++) {
             cg_polygon_set r = {0};
             CHECK(cg_clip_boolean((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);

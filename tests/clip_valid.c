@@ -9,42 +9,10 @@
 #include "cg/clip.h"
 #include "check.h"
 
-#include <geos_c.h>
+#include "clip_geos_shapes.h"
+
 #include <stdarg.h>
 #include <string.h>
-
-static void geos_message(const char *fmt, ...) { (void)fmt; }
-
-static GEOSGeometry *ring_geom(GEOSContextHandle_t h, const cg_vec2 *p, size_t n)
-{
-    GEOSCoordSequence *s = GEOSCoordSeq_create_r(h, (unsigned)n + 1, 2);
-    for (size_t i = 0; i <= n; i++) {
-        GEOSCoordSeq_setX_r(h, s, (unsigned)i, p[i % n].x);
-        GEOSCoordSeq_setY_r(h, s, (unsigned)i, p[i % n].y);
-    }
-    return GEOSGeom_createLinearRing_r(h, s);
-}
-
-/* The result as a GEOS MultiPolygon: each polygon its outer ring then its holes. */
-static GEOSGeometry *result_geom(GEOSContextHandle_t h, const cg_polygon_set *s)
-{
-    size_t np = s->polygon_count;
-    GEOSGeometry **polys = malloc((np ? np : 1) * sizeof *polys);
-    for (size_t k = 0; k < np; k++) {
-        size_t r0 = s->polygon_start[k], r1 = s->polygon_start[k + 1];
-        GEOSGeometry *outer = ring_geom(h, s->points + s->ring_start[r0],
-                                        s->ring_start[r0 + 1] - s->ring_start[r0]);
-        GEOSGeometry **holes = malloc((r1 - r0) * sizeof *holes);
-        for (size_t r = r0 + 1; r < r1; r++)
-            holes[r - r0 - 1] = ring_geom(h, s->points + s->ring_start[r],
-                                          s->ring_start[r + 1] - s->ring_start[r]);
-        polys[k] = GEOSGeom_createPolygon_r(h, outer, holes, (unsigned)(r1 - r0 - 1));
-        free(holes);
-    }
-    GEOSGeometry *g = GEOSGeom_createCollection_r(h, GEOS_MULTIPOLYGON, polys, (unsigned)np);
-    free(polys);
-    return g;
-}
 
 /* the winding number of (x, y) for the rings of s (counter-clockwise +1) */
 static int winding(const cg_polygon_set *s, double x, double y)
@@ -137,7 +105,7 @@ static long invalid_reported;
 
 static void check_valid(GEOSContextHandle_t h, const cg_polygon_set *r, int round, int op)
 {
-    GEOSGeometry *g = result_geom(h, r);
+    GEOSGeometry *g = clip_geos_polygons(h, r);
     char valid = g ? GEOSisValid_r(h, g) : 0;
     if (valid != 1 && invalid_reported++ < 10) {
         char *why = g ? GEOSisValidReason_r(h, g) : NULL;
@@ -153,9 +121,7 @@ static void check_valid(GEOSContextHandle_t h, const cg_polygon_set *r, int roun
 
 int main(void)
 {
-    GEOSContextHandle_t h = GEOS_init_r();
-    GEOSContext_setNoticeHandler_r(h, geos_message);
-    GEOSContext_setErrorHandler_r(h, geos_message);
+    GEOSContextHandle_t h = clip_geos_start();
     check_rng rng = {0x5eed0f0e};
     static const int grids[] = {2, 3, 4, 5, 8, 16};
     long results = 0, cleaned = 0, points = 0;

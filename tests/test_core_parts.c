@@ -362,6 +362,41 @@ static void arena_blocks(void)
     free(block);
 }
 
+/* An array that starts in the caller's buffer: it stays there while the
+ * room suffices, moves to the heap with its elements when it does not
+ * (the buffer itself untouched and never freed), and grows there as any. */
+static void array_from_initial_buffer(void)
+{
+    int initial[8] = {0};
+    int *data = initial;
+    size_t capacity = 8;
+    for (int i = 0; i < 8; i++)
+        data[i] = 10 * i;
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 8, 8, sizeof *data, initial) == CG_OK);
+    CHECK(data == initial && capacity == 8);
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 8, 9, sizeof *data, initial) == CG_OK);
+    CHECK(data != initial && capacity >= 9);
+    int same = 1;
+    for (int i = 0; i < 8; i++)
+        same &= data[i] == 10 * i && initial[i] == 10 * i;
+    CHECK(same);
+    data[8] = 80;
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, 1000, sizeof *data, initial) ==
+          CG_OK);
+    CHECK(capacity >= 1000 && data[8] == 80 && data[0] == 0);
+    size_t before = capacity;
+    int *kept = data;
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, SIZE_MAX / 2, sizeof *data,
+                                  initial) == CG_ENOMEM);
+    CHECK(data == kept && capacity == before); /* refused: unchanged */
+    free(data);
+    /* refused while still in the buffer: still there */
+    data = initial;
+    capacity = 8;
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 8, SIZE_MAX, 2, initial) == CG_ENOMEM);
+    CHECK(data == initial && capacity == 8);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -371,6 +406,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(worker_pool_claims);
     CHECK_GROUP(worker_pool_failed_threads);
     CHECK_GROUP(worker_pool_late_threads);
+    CHECK_GROUP(array_from_initial_buffer);
     CHECK_GROUP(arena_measure_then_carve);
     CHECK_GROUP(arena_refusals);
     CHECK_GROUP(arena_blocks);

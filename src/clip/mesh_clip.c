@@ -7,6 +7,7 @@
  * triangles sharing an edge create bit-identical vertices, which are then
  * welded: the cut stays closed. */
 #include "cg/clip.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -105,9 +106,9 @@ static uint64_t hash_pos(cg_vec3 p)
 
 typedef struct builder {
     cvert *verts;
-    size_t nverts, capverts;
+    size_t vertex_count, vertex_capacity;
     uint32_t *tris; /* 3 per triangle */
-    size_t ntris, captris;
+    size_t triangle_count, triangle_capacity;
     size_t *tri_face;
     int64_t *orig_map; /* original index -> output index + 1 */
     weld w;
@@ -133,24 +134,19 @@ static int add_vertex(builder *b, const cvert *v, uint32_t *index)
             slot = (slot + 1) & (b->w.cap - 1);
         }
     }
-    if (b->nverts >= CG_MESH_MAX_VERTICES)
+    if (b->vertex_count >= CG_MESH_MAX_VERTICES)
         return 0;
-    if (b->nverts == b->capverts) {
-        size_t cap = b->capverts ? b->capverts * 2 : 256;
-        cvert *q = realloc(b->verts, cap * sizeof *q);
-        if (!q)
-            return 0;
-        b->verts = q;
-        b->capverts = cap;
-    }
-    b->verts[b->nverts] = *v;
-    *index = (uint32_t)b->nverts;
-    b->nverts++;
+    if (core_array_reserve((void **)&b->verts, &b->vertex_capacity, b->vertex_count + 1,
+                           sizeof *b->verts) != CG_OK)
+        return 0;
+    b->verts[b->vertex_count] = *v;
+    *index = (uint32_t)b->vertex_count;
+    b->vertex_count++;
     if (v->source >= 0) {
-        b->orig_map[v->source] = (int64_t)b->nverts;
+        b->orig_map[v->source] = (int64_t)b->vertex_count;
     } else {
-        b->w.slot[slot] = (int64_t)b->nverts;
-        if (b->nverts * 2 > b->w.cap) { /* grow and rehash the new vertices */
+        b->w.slot[slot] = (int64_t)b->vertex_count;
+        if (b->vertex_count * 2 > b->w.cap) { /* grow and rehash the new vertices */
             size_t cap = b->w.cap * 2;
             int64_t *ns = calloc(cap, sizeof *ns);
             if (!ns)
@@ -173,23 +169,21 @@ static int add_vertex(builder *b, const cvert *v, uint32_t *index)
 
 static int add_triangle(builder *b, uint32_t i0, uint32_t i1, uint32_t i2, size_t face)
 {
-    if (b->ntris == b->captris) {
-        size_t cap = b->captris ? b->captris * 2 : 256;
-        uint32_t *q = realloc(b->tris, cap * 3 * sizeof *q);
-        if (!q)
+    if (b->triangle_count == b->triangle_capacity) {
+        /* (the corners, three a triangle, and the faces grow together) */
+        size_t corners_capacity = b->triangle_capacity, faces_capacity = b->triangle_capacity;
+        if (core_array_reserve((void **)&b->tris, &corners_capacity, b->triangle_count + 1,
+                               3 * sizeof *b->tris) != CG_OK ||
+            core_array_reserve((void **)&b->tri_face, &faces_capacity, b->triangle_count + 1,
+                               sizeof *b->tri_face) != CG_OK)
             return 0;
-        b->tris = q;
-        size_t *f = realloc(b->tri_face, cap * sizeof *f);
-        if (!f)
-            return 0;
-        b->tri_face = f;
-        b->captris = cap;
+        b->triangle_capacity = corners_capacity;
     }
-    b->tris[3 * b->ntris] = i0;
-    b->tris[3 * b->ntris + 1] = i1;
-    b->tris[3 * b->ntris + 2] = i2;
-    b->tri_face[b->ntris] = face;
-    b->ntris++;
+    b->tris[3 * b->triangle_count] = i0;
+    b->tris[3 * b->triangle_count + 1] = i1;
+    b->tris[3 * b->triangle_count + 2] = i2;
+    b->tri_face[b->triangle_count] = face;
+    b->triangle_count++;
     return 1;
 }
 
@@ -262,10 +256,10 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
                          (mesh->colors ? CG_MESH_COLORS : 0) |
                          (mesh->face_colors ? CG_MESH_FACE_COLORS : 0);
         cg_mesh *m = NULL;
-        st = cg_mesh_create(&m, b.nverts, b.ntris, b.ntris * 3, flags);
+        st = cg_mesh_create(&m, b.vertex_count, b.triangle_count, b.triangle_count * 3, flags);
         if (st != CG_OK)
             goto done;
-        for (size_t i = 0; i < b.nverts; i++) {
+        for (size_t i = 0; i < b.vertex_count; i++) {
             m->positions[i] = b.verts[i].p;
             if (m->normals)
                 m->normals[i] = b.verts[i].n;
@@ -274,7 +268,7 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
             if (m->colors)
                 m->colors[i] = b.verts[i].c;
         }
-        for (size_t t = 0; t < b.ntris; t++) {
+        for (size_t t = 0; t < b.triangle_count; t++) {
             m->face_offsets[t + 1] = (uint32_t)(3 * (t + 1));
             memcpy(&m->face_indices[3 * t], &b.tris[3 * t], 3 * sizeof(uint32_t));
             if (m->face_colors)

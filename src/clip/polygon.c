@@ -1,23 +1,22 @@
 /* Sutherland-Hodgman polygon clipping (11.2.1, Fig. 11.5) in 2D against a
  * convex window and in 3D against planes; frustum planes and culling. */
 #include "cg/clip.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct vec2_list { cg_vec2 *p; size_t n, cap; } vec2_list;
+typedef struct vec2_list {
+    cg_vec2 *points;
+    size_t count, capacity;
+} vec2_list;
 
 static int list_push(vec2_list *l, cg_vec2 p)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? l->cap * 2 : 16;
-        cg_vec2 *q = realloc(l->p, cap * sizeof *q);
-        if (!q)
-            return 0;
-        l->p = q;
-        l->cap = cap;
-    }
-    l->p[l->n++] = p;
+    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points) !=
+        CG_OK)
+        return 0;
+    l->points[l->count++] = p;
     return 1;
 }
 
@@ -70,7 +69,7 @@ cg_status cg_clip_sutherland_hodgman(const cg_vec2 *subject, size_t n, const cg_
     for (size_t i = 0; i < n; i++)
         if (!list_push(&res, subject[i]))
             goto nomem;
-    for (size_t k = 0; k < m && res.n; k++) {
+    for (size_t k = 0; k < m && res.count; k++) {
         cg_vec2 a = window[k], b = window[(k + 1) % m];
         cg_vec2 edge = cg_vec2_sub(b, a);
         if (edge.x == 0 && edge.y == 0)
@@ -78,11 +77,11 @@ cg_status cg_clip_sutherland_hodgman(const cg_vec2 *subject, size_t n, const cg_
         vec2_list t = in;
         in = res;
         res = t;
-        res.n = 0;
-        cg_vec2 s = in.p[in.n - 1];
+        res.count = 0;
+        cg_vec2 s = in.points[in.count - 1];
         double ds = orient * cg_vec2_cross(edge, cg_vec2_sub(s, a));
-        for (size_t i = 0; i < in.n; i++) {
-            cg_vec2 e = in.p[i];
+        for (size_t i = 0; i < in.count; i++) {
+            cg_vec2 e = in.points[i];
             double de = orient * cg_vec2_cross(edge, cg_vec2_sub(e, a));
             if (de >= 0) {
                 if (ds < 0 && de > 0 && !list_push(&res, line_cross(e, de, s, ds)))
@@ -97,33 +96,31 @@ cg_status cg_clip_sutherland_hodgman(const cg_vec2 *subject, size_t n, const cg_
             ds = de;
         }
     }
-    free(in.p);
-    if (res.n == 0) {
-        free(res.p);
+    free(in.points);
+    if (res.count == 0) {
+        free(res.points);
         return CG_OK;
     }
-    *out = res.p;
-    *out_count = res.n;
+    *out = res.points;
+    *out_count = res.count;
     return CG_OK;
 nomem:
-    free(in.p);
-    free(res.p);
+    free(in.points);
+    free(res.points);
     return CG_ENOMEM;
 }
 
-typedef struct vec3_list { cg_vec3 *p; size_t n, cap; } vec3_list;
+typedef struct vec3_list {
+    cg_vec3 *points;
+    size_t count, capacity;
+} vec3_list;
 
 static int list3_push(vec3_list *l, cg_vec3 p)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? l->cap * 2 : 16;
-        cg_vec3 *q = realloc(l->p, cap * sizeof *q);
-        if (!q)
-            return 0;
-        l->p = q;
-        l->cap = cap;
-    }
-    l->p[l->n++] = p;
+    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points) !=
+        CG_OK)
+        return 0;
+    l->points[l->count++] = p;
     return 1;
 }
 
@@ -155,17 +152,17 @@ cg_status cg_clip_polygon_planes(const cg_vec3 *polygon, size_t n, const cg_plan
     for (size_t i = 0; i < n; i++)
         if (!list3_push(&res, polygon[i]))
             goto nomem;
-    for (size_t k = 0; k < plane_count && res.n; k++) {
+    for (size_t k = 0; k < plane_count && res.count; k++) {
         vec3_list t = in;
         in = res;
         res = t;
-        res.n = 0;
+        res.count = 0;
         cg_vec3 nrm = planes[k].normal;
         double off = planes[k].offset;
-        cg_vec3 s = in.p[in.n - 1];
+        cg_vec3 s = in.points[in.count - 1];
         double ds = cg_vec3_dot(nrm, s) + off;
-        for (size_t i = 0; i < in.n; i++) {
-            cg_vec3 e = in.p[i];
+        for (size_t i = 0; i < in.count; i++) {
+            cg_vec3 e = in.points[i];
             double de = cg_vec3_dot(nrm, e) + off;
             if (de >= 0) {
                 if (ds < 0 && de > 0 && !list3_push(&res, plane_cross(e, de, s, ds)))
@@ -180,17 +177,17 @@ cg_status cg_clip_polygon_planes(const cg_vec3 *polygon, size_t n, const cg_plan
             ds = de;
         }
     }
-    free(in.p);
-    if (res.n == 0) {
-        free(res.p);
+    free(in.points);
+    if (res.count == 0) {
+        free(res.points);
         return CG_OK;
     }
-    *out = res.p;
-    *out_count = res.n;
+    *out = res.points;
+    *out_count = res.count;
     return CG_OK;
 nomem:
-    free(in.p);
-    free(res.p);
+    free(in.points);
+    free(res.points);
     return CG_ENOMEM;
 }
 

@@ -1,82 +1,60 @@
 /* Polygon sets: the input and output type of the boolean operations. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-/* arr with room for `need` items of `size` bytes (the capacity *cap doubled
- * from `first` until it holds them): arr itself when it has the room (NULL
- * while nothing was needed); else NULL when out of memory (arr and *cap
- * unchanged). */
-static void *grow(void *arr, size_t *cap, size_t need, size_t size, size_t first)
-{
-    if (need <= *cap)
-        return arr;
-    size_t c = *cap ? *cap : first;
-    while (c < need)
-        c *= 2;
-    void *p = realloc(arr, c * size);
-    if (p)
-        *cap = c;
-    return p;
-}
-
-#define DEFINE_SET(SET, POINT, PREFIX, RESERVE)                                               \
-    void PREFIX##_clear(SET *set)                                                             \
-    {                                                                                         \
-        if (!set)                                                                             \
-            return;                                                                           \
-        free(set->points);                                                                    \
-        free(set->ring_start);                                                                \
-        free(set->polygon_start);                                                             \
-        memset(set, 0, sizeof *set);                                                          \
-    }                                                                                         \
-    cg_status RESERVE(SET *set, size_t points, size_t rings, size_t polygons)                 \
-    {                                                                                         \
-        if (points > ((size_t)-1) / 4 / sizeof(POINT) ||                                      \
-            rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                      \
-            polygons > ((size_t)-1) / 4 / sizeof(size_t))                                     \
-            return CG_ENOMEM;                                                                 \
-        void *p = grow(set->points, &set->point_capacity, points, sizeof(POINT), 64);         \
-        if (!p && points)                                                                     \
-            return CG_ENOMEM;                                                                 \
-        set->points = p;                                                                      \
-        p = grow(set->ring_start, &set->ring_capacity, rings + 1, sizeof(size_t), 16);        \
-        if (!p)                                                                               \
-            return CG_ENOMEM;                                                                 \
-        set->ring_start = p;                                                                  \
-        p = grow(set->polygon_start, &set->polygon_capacity, polygons + 1, sizeof(size_t),    \
-                 16);                                                                         \
-        if (!p)                                                                               \
-            return CG_ENOMEM;                                                                 \
-        set->polygon_start = p;                                                               \
-        return CG_OK;                                                                         \
-    }                                                                                         \
-    cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)     \
-    {                                                                                         \
-        if (!set || (!points && n))                                                           \
-            return CG_EINVAL;                                                                 \
-        if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                          \
-            return CG_ENOMEM;                                                                 \
-        int new_p = new_polygon || set->polygon_count == 0;                                   \
-        cg_status st = RESERVE(set, set->point_count + n, set->ring_count + 1,                \
-                                 set->polygon_count + new_p);                                 \
-        if (st != CG_OK)                                                                      \
-            return st;                                                                        \
-        if (new_p) {                                                                          \
-            if (set->polygon_count == 0)                                                      \
-                set->polygon_start[0] = 0;                                                    \
-            set->polygon_count++;                                                             \
-        }                                                                                     \
-        if (set->ring_count == 0)                                                             \
-            set->ring_start[0] = 0;                                                           \
-        if (n)                                                                                \
-            memcpy(set->points + set->point_count, points, n * sizeof *points);               \
-        set->point_count += n;                                                                \
-        set->ring_count++;                                                                    \
-        set->ring_start[set->ring_count] = set->point_count;                                  \
-        set->polygon_start[set->polygon_count] = set->ring_count;                             \
-        return CG_OK;                                                                         \
+#define DEFINE_SET(SET, POINT, PREFIX, RESERVE)                                                    \
+    void PREFIX##_clear(SET *set)                                                                  \
+    {                                                                                              \
+        if (!set)                                                                                  \
+            return;                                                                                \
+        free(set->points);                                                                         \
+        free(set->ring_start);                                                                     \
+        free(set->polygon_start);                                                                  \
+        memset(set, 0, sizeof *set);                                                               \
+    }                                                                                              \
+    cg_status RESERVE(SET *set, size_t points, size_t rings, size_t polygons)                      \
+    {                                                                                              \
+        if (points > ((size_t)-1) / 4 / sizeof(POINT) ||                                           \
+            rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                           \
+            polygons > ((size_t)-1) / 4 / sizeof(size_t))                                          \
+            return CG_ENOMEM;                                                                      \
+        if (core_array_reserve((void **)&set->points, &set->point_capacity, points,                \
+                               sizeof(POINT)) != CG_OK ||                                          \
+            core_array_reserve((void **)&set->ring_start, &set->ring_capacity, rings + 1,          \
+                               sizeof(size_t)) != CG_OK ||                                         \
+            core_array_reserve((void **)&set->polygon_start, &set->polygon_capacity, polygons + 1, \
+                               sizeof(size_t)) != CG_OK)                                           \
+            return CG_ENOMEM;                                                                      \
+        return CG_OK;                                                                              \
+    }                                                                                              \
+    cg_status PREFIX##_add_ring(SET *set, const POINT *points, size_t n, int new_polygon)          \
+    {                                                                                              \
+        if (!set || (!points && n))                                                                \
+            return CG_EINVAL;                                                                      \
+        if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                               \
+            return CG_ENOMEM;                                                                      \
+        int new_p = new_polygon || set->polygon_count == 0;                                        \
+        cg_status st =                                                                             \
+            RESERVE(set, set->point_count + n, set->ring_count + 1, set->polygon_count + new_p);   \
+        if (st != CG_OK)                                                                           \
+            return st;                                                                             \
+        if (new_p) {                                                                               \
+            if (set->polygon_count == 0)                                                           \
+                set->polygon_start[0] = 0;                                                         \
+            set->polygon_count++;                                                                  \
+        }                                                                                          \
+        if (set->ring_count == 0)                                                                  \
+            set->ring_start[0] = 0;                                                                \
+        if (n)                                                                                     \
+            memcpy(set->points + set->point_count, points, n * sizeof *points);                    \
+        set->point_count += n;                                                                     \
+        set->ring_count++;                                                                         \
+        set->ring_start[set->ring_count] = set->point_count;                                       \
+        set->polygon_start[set->polygon_count] = set->ring_count;                                  \
+        return CG_OK;                                                                              \
     }
 
 DEFINE_SET(cg_polygon_set, cg_vec2, cg_polygon_set, clip_polygon_set_reserve)

@@ -3,6 +3,7 @@
  * traced by following the subject from each entering intersection and the
  * window from each exiting one. */
 #include "cg/clip.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -119,13 +120,8 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
             double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
             if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
                 continue;
-            if (nx == capx) {
-                capx = capx ? capx * 2 : 64;
-                xing *q = realloc(X, capx * sizeof *q);
-                if (!q)
-                    goto done;
-                X = q;
-            }
+            if (core_array_reserve((void **)&X, &capx, nx + 1, sizeof *X) != CG_OK)
+                goto done;
             X[nx++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
         }
     }

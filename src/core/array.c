@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 cg_status core_array_grow(void **data, size_t *capacity, size_t needed, size_t element_size)
 {
@@ -20,5 +21,23 @@ cg_status core_array_grow(void **data, size_t *capacity, size_t needed, size_t e
         return CG_ENOMEM;
     *data = larger;
     *capacity = grown;
+    return CG_OK;
+}
+
+cg_status core_array_reserve_from(void **data, size_t *capacity, size_t count, size_t needed,
+                                  size_t element_size, const void *initial)
+{
+    if (needed <= *capacity)
+        return CG_OK;
+    if (!initial || *data != initial)
+        return core_array_grow(data, capacity, needed, element_size);
+    void *heap = NULL;
+    size_t heap_capacity = 0;
+    if (core_array_grow(&heap, &heap_capacity, needed, element_size) != CG_OK)
+        return CG_ENOMEM;
+    if (count)
+        memcpy(heap, *data, count * element_size);
+    *data = heap;
+    *capacity = heap_capacity;
     return CG_OK;
 }

@@ -42,6 +42,14 @@ static inline cg_status core_array_reserve(void **data, size_t *capacity, size_t
     return needed <= *capacity ? CG_OK : core_array_grow(data, capacity, needed, element_size);
 }
 
+/* core_array_reserve for an array that may still be in the caller's buffer
+ * `initial` (on the stack, say, for small inputs: realloc cannot take it):
+ * when *data is `initial` and more room is needed, its first `count`
+ * elements move to a new block on the heap, grown by the same policy;
+ * `initial` itself is never freed.  CG_ENOMEM with the array unchanged. */
+cg_status core_array_reserve_from(void **data, size_t *capacity, size_t count, size_t needed,
+                                  size_t element_size, const void *initial);
+
 /* A typed array: `data` holds `count` elements in room for `capacity`. */
 #define CORE_ARRAY(type)    \
     struct {                \

@@ -18,15 +18,11 @@ int boolean_ck_record(sweep *s, int64_t y)
     size_t n = s->active_count;
     if (log->edge_count + n > log->budget)
         return 0;
-    GROW(log->checkpoints, log->checkpoint_count, log->checkpoint_capacity, return 0);
-    while (log->edge_count + n > log->edge_capacity) {
-        size_t c = log->edge_capacity ? 2 * log->edge_capacity : 256;
-        ck_edge *p = realloc(log->edges, c * sizeof *p);
-        if (!p)
-            return 0;
-        log->edges = p;
-        log->edge_capacity = c;
-    }
+    if (!boolean_room((void **)&log->checkpoints, &log->checkpoint_capacity, log->checkpoint_count,
+                      1, sizeof *log->checkpoints, NULL) ||
+        !boolean_room((void **)&log->edges, &log->edge_capacity, log->edge_count, n,
+                      sizeof *log->edges, NULL))
+        return 0;
     log->checkpoints[log->checkpoint_count++] =
         (ck_point){y, s->engine->piece_count, log->edge_count, n};
     for (size_t k = 0; k < n; k++) {

@@ -36,33 +36,14 @@
  * This file loads the operands and runs the passes; the steps are in
  * boolean_pairs.c (the crossings of small inputs, pair by pair),
  * boolean_prepare.c (a pass's arrays and orders), boolean_sweep.c (the
- * sweeps), boolean_checkpoint.c (where a pass after
- * splits resumes), boolean_split.c (snap rounding and splitting),
- * boolean_assemble.c (rings and holes), boolean_sort.c, and
- * boolean_double.c (the double API); boolean_engine.h holds what they
- * share. */
+ * full sweep), boolean_light.c (the light sweep), boolean_scanline.c (their
+ * out-of-line steps on a scanline; boolean_scan.h holds what the two
+ * share), boolean_checkpoint.c (where a pass after splits resumes),
+ * boolean_split.c and boolean_snap.c (snap rounding and splitting),
+ * boolean_assemble.c and boolean_pinch.c (rings and holes),
+ * boolean_sort.c, and boolean_double.c (the double API);
+ * boolean_engine.h holds what they share. */
 #include "boolean_engine.h"
-
-int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
-                         size_t size)
-{
-    if (need <= *cap)
-        return 1;
-    void *p = *arr == small ? malloc(need * size) : realloc(*arr, need * size);
-    if (!p)
-        return 0;
-    if (*arr == small && n)
-        memcpy(p, *arr, n * size);
-    *arr = p;
-    *cap = need;
-    return 1;
-}
-
-void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size)
-{
-    void *p = arr;
-    return boolean_reserve_from(&p, small, n, cap, *cap ? *cap * 2 : 32, size) ? p : NULL;
-}
 
 int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
                      uint32_t orig)
@@ -70,12 +51,14 @@ int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
     if (y0 == y1) {
         if (x0 == x1)
             return 1;
-        GROW(g->horizontals, g->horizontal_count, g->horizontal_capacity, return 0);
+        if (!room_for_horizontal(g))
+            return 0;
         g->horizontals[g->horizontal_count++] =
             (horizontal_edge){y0, x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0};
         return 1;
     }
-    GROW_SMALL(g->edges, g->edge_count, g->edge_capacity, g->edges_small, return 0);
+    if (!room_for_edges(g, 1))
+        return 0;
     edge *e = &g->edges[g->edge_count++];
     if (y0 < y1) {
         *e = (edge){x0, y0, x1, y1, 0, orig, -1, (uint8_t)op};
@@ -275,13 +258,10 @@ static int take_saved_pieces(passes *p)
                 (p->ranges[k][1] - p->ranges[k][0]) * sizeof *saved);
         w += p->ranges[k][1] - p->ranges[k][0];
     }
-    if (w + g->piece_count > p->saved_capacity) {
-        piece *q = realloc(saved, (w + g->piece_count) * sizeof *q);
-        if (!q)
-            return 0;
-        p->saved = saved = q;
-        p->saved_capacity = w + g->piece_count;
-    }
+    if (!boolean_room((void **)&p->saved, &p->saved_capacity, w, g->piece_count, sizeof *p->saved,
+                      NULL))
+        return 0;
+    saved = p->saved;
     if (g->piece_count)
         memcpy(saved + w, g->pieces, g->piece_count * sizeof *saved);
     if (g->pieces != g->pieces_small)
@@ -492,17 +472,8 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
             continue;
         /* room for the ring's edges at once, then each written in place
          * (horizontal ones go to g->horizontals) */
-        if (g->edge_capacity - g->edge_count < b - a) {
-            size_t c = g->edge_count + (b - a) + g->edge_capacity / 2 + 64;
-            edge *e = g->edges == g->edges_small ? malloc(c * sizeof *e)
-                                                 : realloc(g->edges, c * sizeof *e);
-            if (!e)
-                return CG_ENOMEM;
-            if (g->edges == g->edges_small && g->edge_count)
-                memcpy(e, g->edges, g->edge_count * sizeof *e);
-            g->edges = e;
-            g->edge_capacity = c;
-        }
+        if (!room_for_edges(g, b - a))
+            return CG_ENOMEM;
         /* (held here: the byte stores below would make them be read
          * again) */
         const cg_point64 *pts = set->points;

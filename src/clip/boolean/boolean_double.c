@@ -1,6 +1,6 @@
 /* The double API of the boolean operations: coordinates scaled to the
  * integer grid and back. */
-#include "internal.h"
+#include "../internal.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -193,10 +193,7 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                         !boolean_meets_pixel(e.x_bottom, e.y_bottom, e.x_top, e.y_top, px, py,
                                              vertices))
                         continue;
-                    GROW_SMALL(g->splits, g->split_count, g->split_capacity, g->splits_small, {
-                        ok = 0;
-                        break; /* (leaves the macro only, before it sets S) */
-                    });
+                    ok = room_for_split(g);
                     if (!ok)
                         break; /* out of memory: no room for the point */
                     g->splits[g->split_count++] = (split_point){(uint32_t)i, px, py};
@@ -217,8 +214,9 @@ static uint32_t add_orig(engine *g, const edge *e)
         g->input_edges = g->input_edges_small;
         g->input_edge_capacity = sizeof g->input_edges_small / sizeof g->input_edges_small[0];
     }
-    GROW_SMALL(g->input_edges, g->input_edge_count, g->input_edge_capacity, g->input_edges_small,
-               return NO_ORIG);
+    if (!boolean_room((void **)&g->input_edges, &g->input_edge_capacity, g->input_edge_count, 1,
+                      sizeof g->input_edges[0], g->input_edges_small))
+        return NO_ORIG;
     int64_t *o = g->input_edges[g->input_edge_count];
     o[0] = e->x_bottom;
     o[1] = e->y_bottom;
@@ -304,15 +302,11 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
     uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_edge_count + 1;
     /* room for the pieces at once: at most one per split point and split
      * edge */
-    void *edges = g->edges;
-    if (!boolean_reserve_from(&edges, g->edges_small, g->edge_count, &g->edge_capacity,
-                              old_edge_count + split_count +
-                                  (split_count < old_edge_count ? split_count : old_edge_count),
-                              sizeof *g->edges)) {
+    if (!room_for_edges(g, split_count +
+                               (split_count < old_edge_count ? split_count : old_edge_count))) {
         free(own);
         return 0;
     }
-    g->edges = edges;
     for (size_t k = 0; k < split_count; k++)
         first[g->splits[k].edge + 1]++;
     for (size_t i = 1; i <= old_edge_count; i++)
@@ -325,14 +319,8 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
         while (j < split_count && g->splits[order[j]].edge == edge_index)
             j++;
         size_t n = j - i;
-        if (n + 2 > capbuf) {
-            capbuf = (n + 2) * 2;
-            split_sort *nb = buf == small ? malloc(capbuf * sizeof *nb)
-                                          : realloc(buf, capbuf * sizeof *nb);
-            if (!nb)
-                goto fail;
-            buf = nb;
-        }
+        if (!boolean_room((void **)&buf, &capbuf, 0, n + 2, sizeof *buf, small))
+            goto fail;
         edge e = g->edges[edge_index];
         i128 dx = e.x_top - e.x_bottom, dy = e.y_top - e.y_bottom;
         size_t m = 0;

@@ -37,7 +37,8 @@ static int cross_inside(const edge *a, const edge *b, int narrow)
 
 static int add_split_point(engine *g, uint32_t e, int64_t x, int64_t y)
 {
-    GROW_SMALL(g->splits, g->split_count, g->split_capacity, g->splits_small, return 0);
+    if (!room_for_split(g))
+        return 0;
     g->splits[g->split_count++] = (split_point){e, x, y};
     return 1;
 }

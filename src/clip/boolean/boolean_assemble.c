@@ -1,7 +1,7 @@
 /* Assembly of the boolean operations' result: boundary pieces linked into
  * rings, holes placed in the smallest outer ring around them. */
 #include "boolean_engine.h"
-#include "../core/arena.h"
+#include "../../core/arena.h"
 
 /* Where direction o lies turning clockwise from direction r, as an order
  * key: 0 within a half turn, 1 at the half turn, 2 beyond it, 3 along r (a

@@ -3,7 +3,7 @@
  * from the last pass's orders when there is one), the scanlines and the
  * horizontal edges in order, and what a pass keeps for the next. */
 #include "boolean_engine.h"
-#include "../core/arena.h"
+#include "../../core/arena.h"
 
 /* Forgets the arrays of the last pass; their memory is kept for the next. */
 void boolean_sweep_reset(sweep *s)
@@ -240,16 +240,16 @@ int boolean_carry_keep(carry *c, const sweep *s)
 {
     size_t edge_count = s->engine->edge_count;
     if (edge_count > c->capacity) {
-        size_t block_size = edge_count + edge_count / 2;
+        size_t room = edge_count + edge_count / 2;
         if (c->by_bottom != c->block_small)
             free(c->by_bottom); /* (the three arrays in one block) */
         c->capacity = 0;
-        c->by_bottom = malloc(3 * block_size * sizeof *c->by_bottom);
+        c->by_bottom = malloc(3 * room * sizeof *c->by_bottom);
         if (!c->by_bottom)
             return 0;
-        c->by_top = c->by_bottom + block_size;
-        c->map = c->by_top + block_size;
-        c->capacity = block_size;
+        c->by_top = c->by_bottom + room;
+        c->map = c->by_top + room;
+        c->capacity = room;
     }
     memcpy(c->by_bottom, s->by_bottom, edge_count * sizeof *c->by_bottom);
     memcpy(c->by_top, s->by_top, edge_count * sizeof *c->by_top);

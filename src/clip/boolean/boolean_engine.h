@@ -44,8 +44,9 @@
 #ifndef CG_CLIP_BOOLEAN_ENGINE_H
 #define CG_CLIP_BOOLEAN_ENGINE_H
 
-#include "internal.h"
-#include "../core/invariant.h"
+#include "../internal.h"
+#include "../../core/array.h"
+#include "../../core/invariant.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -90,22 +91,6 @@ typedef struct piece {
     int64_t x_start, y_start, x_end, y_end;
 } piece;
 
-/* Room for one more item in arr (n items, room for cap; `fail` runs when
- * memory runs out).  arr may still be the caller's buffer `small` (on the
- * stack, for small inputs): it moves to the heap when it grows.  GROW is the
- * same for arrays that are on the heap from the start. */
-#define GROW_SMALL(arr, n, cap, small, fail)                                   \
-    do {                                                                       \
-        if ((n) == (cap)) {                                                    \
-            void *p_ = boolean_grow_from(arr, small, n, &(cap), sizeof *(arr)); \
-            if (!p_)                                                           \
-                fail;                                                          \
-            (arr) = p_;                                                        \
-        }                                                                      \
-    } while (0)
-
-#define GROW(arr, n, cap, fail) GROW_SMALL(arr, n, cap, NULL, fail)
-
 /* What one boolean operation works on: the edges of both operands (split
  * pass after pass), and what the passes find and emit. */
 typedef struct engine {
@@ -149,15 +134,38 @@ struct cg_clip_workspace {
     size_t piece_capacity;
 };
 
-/* GROW_SMALL's growth (out of line: the callers are hot): NULL when out of
- * memory, arr unchanged */
-void *boolean_grow_from(void *arr, const void *small, size_t n, size_t *cap, size_t size);
+/* Room for `more` elements after the `count` of an engine array that may
+ * still be in the caller's buffer `initial` (NULL when none): grown by the
+ * one growth policy (core_array_reserve_from), checked inline first (the
+ * callers are hot).  0 when out of memory, the array unchanged. */
+static inline int boolean_room(void **data, size_t *capacity, size_t count, size_t more,
+                               size_t element_size, const void *initial)
+{
+    return count + more <= *capacity || core_array_reserve_from(data, capacity, count, count + more,
+                                                                element_size, initial) == CG_OK;
+}
 
-/* Room for `need` items in *arr (n of them used, room for *cap; it may still
- * be the caller's buffer `small`), at once: 0 when out of memory (*arr
- * unchanged) */
-int boolean_reserve_from(void **arr, const void *small, size_t n, size_t *cap, size_t need,
-                         size_t size);
+/* Room for more edges, horizontal edges, split points, meets. */
+static inline int room_for_edges(engine *g, size_t more)
+{
+    return boolean_room((void **)&g->edges, &g->edge_capacity, g->edge_count, more,
+                        sizeof *g->edges, g->edges_small);
+}
+static inline int room_for_horizontal(engine *g)
+{
+    return boolean_room((void **)&g->horizontals, &g->horizontal_capacity, g->horizontal_count, 1,
+                        sizeof *g->horizontals, NULL);
+}
+static inline int room_for_split(engine *g)
+{
+    return boolean_room((void **)&g->splits, &g->split_capacity, g->split_count, 1,
+                        sizeof *g->splits, g->splits_small);
+}
+static inline int room_for_meet(engine *g)
+{
+    return boolean_room((void **)&g->meets, &g->meet_capacity, g->meet_count, 1, sizeof *g->meets,
+                        NULL);
+}
 
 /* Adds the edge (x0, y0)-(x1, y1) of operand op (0 subject, 1 clip) to g:
  * a horizontal one to g->horizontals, dropped when it is a point; orig as edge.orig.
@@ -234,7 +242,7 @@ static inline int64_t x_rounded(const edge *e, int64_t y)
 }
 
 /* Intersection of the lines a0-a1 and b0-b1 rounded to the grid; 0 when
- * parallel (boolean_sweep.c). */
+ * parallel (boolean_scanline.c). */
 int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1, int64_t bx0,
                               int64_t by0, int64_t bx1, int64_t by1, int64_t *px, int64_t *py);
 
@@ -414,7 +422,7 @@ int boolean_run_sweep(sweep *s);
 
 #define LIGHT_BAIL 2
 /* The light sweep of a pass expected to find nothing to split
- * (boolean_sweep.c): 1 when final, LIGHT_BAIL when something needs a split,
+ * (boolean_light.c): 1 when final, LIGHT_BAIL when something needs a split,
  * 0 when out of memory. */
 int boolean_light_sweep(sweep *s);
 

@@ -211,7 +211,8 @@ static int add_horizontal_once(engine *g, made_index *x, int64_t y, int64_t x0, 
         if (o->y == y && o->x_left == x0 && o->x_right == x1)
             return 1;
     }
-    GROW(g->horizontals, g->horizontal_count, g->horizontal_capacity, return 0);
+    if (!room_for_horizontal(g))
+        return 0;
     g->horizontals[g->horizontal_count++] = (horizontal_edge){y, x0, x1};
     x->slots[h] = (uint32_t)g->horizontal_count;
     x->count++;
@@ -263,7 +264,8 @@ static int add_merged_pieces(engine *g, const edge *e, const split_sort *pts, si
             }
             /* (a winding beyond int8: kept apart) */
         }
-        GROW_SMALL(g->edges, g->edge_count, g->edge_capacity, g->edges_small, return 0);
+        if (!room_for_edges(g, 1))
+            return 0;
         g->edges[g->edge_count] =
             (edge){lo.x, lo.y, hi.x,      hi.y, (double)(hi.x - lo.x) / (double)(hi.y - lo.y),
                    orig, w,    e->operand};
@@ -364,12 +366,8 @@ static size_t walk_pixels(const edge *e, const hot_set *h, split_sort **buf, siz
                     !boolean_meets_pixel(e->x_bottom, e->y_bottom, e->x_top, e->y_top, px, py, 1))
                     continue;
             }
-            if (m + 2 > *cap) { /* (and room for the top) */
-                split_sort *nb = boolean_grow_from(*buf, small, m, cap, sizeof *nb);
-                if (!nb)
-                    return 0;
-                *buf = nb;
-            }
+            if (!boolean_room((void **)buf, cap, m, 2, sizeof **buf, small))
+                return 0; /* (room for the top too) */
             i128 t = (i128)(px - e->x_bottom) * dx + (i128)(py - e->y_bottom) * dy;
             (*buf)[m++] = (split_sort){px, py, t};
         }

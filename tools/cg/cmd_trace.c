@@ -20,14 +20,22 @@ static int line_step(void *user, const cg_line_step *s)
     return 0;
 }
 
+static const cli_syntax line_syntax = {
+    .command = "trace", .max_positionals = 4, .too_many = "expected 'line X1 Y1 X2 Y2'",
+};
+
 static int trace_line(int argc, char **argv)
 {
-    if (argc != 6)
+    const char *texts[4];
+    int count = 0;
+    if (cli_parse(&line_syntax, argc, argv, NULL, texts, &count) != CLI_OK)
+        return CLI_USAGE;
+    if (count != 4)
         return cli_usage_error("trace", "expected 'line X1 Y1 X2 Y2'");
     long v[4];
     const char *names[4] = {"X1", "Y1", "X2", "Y2"};
     for (int i = 0; i < 4; i++)
-        if (cli_parse_long("trace", names[i], argv[i + 2], INT_MIN, INT_MAX, &v[i]))
+        if (cli_parse_long("trace", names[i], texts[i], INT_MIN, INT_MAX, &v[i]))
             return CLI_USAGE;
     long long dx = (long long)v[2] - v[0], dy = (long long)v[3] - v[1];
     long long adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
@@ -82,12 +90,19 @@ static int circle_step(void *user, const cg_circle_step *s)
     return 0;
 }
 
+static const cli_syntax circle_syntax = {
+    .command = "trace", .max_positionals = 1, .too_many = "expected 'circle R'",
+};
+
 static int trace_circle(int argc, char **argv)
 {
+    const char *radius = NULL;
     long r;
-    if (argc != 3)
+    if (cli_parse(&circle_syntax, argc, argv, NULL, &radius, NULL) != CLI_OK)
+        return CLI_USAGE;
+    if (!radius)
         return cli_usage_error("trace", "expected 'circle R'");
-    if (cli_parse_long("trace", "R", argv[2], 0, MAX_STEPS, &r))
+    if (cli_parse_long("trace", "R", radius, 0, MAX_STEPS, &r))
         return CLI_USAGE;
     printf("Bresenham's circle (Algorithm 2), radius %ld: first octant 0 <= x <= y from (0, %ld)\n",
            r, r);
@@ -108,9 +123,9 @@ static int run(int argc, char **argv)
     if (argc < 2)
         return cli_usage_error("trace", "expected 'line X1 Y1 X2 Y2' or 'circle R'");
     if (strcmp(argv[1], "line") == 0)
-        return trace_line(argc, argv);
+        return trace_line(argc - 1, argv + 1);
     if (strcmp(argv[1], "circle") == 0)
-        return trace_circle(argc, argv);
+        return trace_circle(argc - 1, argv + 1);
     return cli_usage_error("trace", "unknown figure '%s' (expected line or circle)", argv[1]);
 }
 
@@ -126,4 +141,5 @@ const cg_command cg_command_trace = {
     "(0 <= dy <= dx) as the drawing code does; its pixels are shown in the real\n"
     "image.  The circle is centred on (0, 0); its first octant is traced.\n",
     run,
+    NULL,
 };

@@ -277,11 +277,19 @@ int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h)
         return 0;
     /* link condition: common neighbours are exactly the apexes */
     uint32_t c = apex(m, h), d = apex(m, t);
+    /* One apex for both triangles (joined to it by two different edges):
+     * they share two sides, and the collapse would leave an edge with no
+     * face. */
+    if (c != CG_HEMESH_NONE && c == d)
+        return 0;
     size_t nu, nv;
     uint32_t *lu = neighbors(m, u, &nu), *lv = neighbors(m, v, &nv);
-    int ok = lu && lv;
+    int ok = lu && lv, edges_to_v = 0;
     for (size_t i = 0; ok && i < nu; i++) {
         uint32_t w = lu[i];
+        /* a second edge between u and v would become a loop at v */
+        if (w == v && ++edges_to_v > 1)
+            ok = 0;
         if (w == v || w == c || w == d)
             continue;
         for (size_t j = 0; j < nv; j++)

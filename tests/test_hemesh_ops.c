@@ -260,13 +260,15 @@ static void test_random_operations(void)
     }
 }
 
-/* Small random triangle meshes (faces of random vertices, the bad ones
- * dropped) under random splits, flips and collapses: every operation that
+/* Small random meshes (triangles and some quads of random vertices, the
+ * bad faces dropped) under random splits, flips and collapses: every operation that
  * succeeds leaves a valid structure.  Among them are closed surfaces where
  * the two triangles of an edge also share their third vertex through two
  * different edges (a doubled edge, which splits and flips can make): the
  * collapse of such an edge must be refused, as the triangles share two
- * sides and would leave an edge without faces. */
+ * sides and would leave an edge without faces; so must the collapse of an
+ * edge whose ends are joined by a second edge (it would become a loop) or
+ * are both corners of a third face (it would visit a vertex twice). */
 static void test_random_small_edits(void)
 {
     check_rng rng = {20261202};
@@ -274,17 +276,18 @@ static void test_random_small_edits(void)
     for (int round = 0; round < 6000; round++) {
         size_t V = (size_t)check_rng_int(&rng, 4, 13), F = (size_t)check_rng_int(&rng, 2, 13);
         cg_mesh *mesh;
-        if (cg_mesh_create(&mesh, V, F, 3 * F, 0) != CG_OK)
+        if (cg_mesh_create(&mesh, V, F, 4 * F, 0) != CG_OK)
             break;
         for (size_t i = 0; i < V; i++)
             mesh->positions[i] = cg_vec3_make(check_rng_int(&rng, 0, 99), check_rng_int(&rng, 0, 99),
                                               check_rng_int(&rng, 0, 99));
+        uint32_t corners = 0; /* triangles, and a quad now and then */
         for (size_t f = 0; f < F; f++) {
-            mesh->face_offsets[f] = (uint32_t)(3 * f);
-            for (int k = 0; k < 3; k++)
-                mesh->face_indices[3 * f + k] = (uint32_t)check_rng_int(&rng, 0, (long long)V - 1);
+            mesh->face_offsets[f] = corners;
+            for (long long k = check_rng_int(&rng, 0, 4) == 0 ? 4 : 3; k > 0; k--)
+                mesh->face_indices[corners++] = (uint32_t)check_rng_int(&rng, 0, (long long)V - 1);
         }
-        mesh->face_offsets[F] = (uint32_t)(3 * F);
+        mesh->face_offsets[F] = corners;
         cg_hemesh *h = NULL;
         cg_status built = cg_hemesh_build(mesh, CG_HEMESH_DROP_BAD_FACES, &h, NULL, NULL);
         cg_mesh_free(mesh);

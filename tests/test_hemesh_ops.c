@@ -260,6 +260,64 @@ static void test_random_operations(void)
     }
 }
 
+/* Small random meshes (triangles and some quads of random vertices, the
+ * bad faces dropped) under random splits, flips and collapses: every operation that
+ * succeeds leaves a valid structure.  Among them are closed surfaces where
+ * the two triangles of an edge also share their third vertex through two
+ * different edges (a doubled edge, which splits and flips can make): the
+ * collapse of such an edge must be refused, as the triangles share two
+ * sides and would leave an edge without faces; so must the collapse of an
+ * edge whose ends are joined by a second edge (it would become a loop) or
+ * are both corners of a third face (it would visit a vertex twice). */
+static void test_random_small_edits(void)
+{
+    check_rng rng = {20261202};
+    int collapses = 0, refused = 0;
+    for (int round = 0; round < 6000; round++) {
+        size_t V = (size_t)check_rng_int(&rng, 4, 13), F = (size_t)check_rng_int(&rng, 2, 13);
+        cg_mesh *mesh;
+        if (cg_mesh_create(&mesh, V, F, 4 * F, 0) != CG_OK)
+            break;
+        for (size_t i = 0; i < V; i++)
+            mesh->positions[i] = cg_vec3_make(check_rng_int(&rng, 0, 99), check_rng_int(&rng, 0, 99),
+                                              check_rng_int(&rng, 0, 99));
+        uint32_t corners = 0; /* triangles, and a quad now and then */
+        for (size_t f = 0; f < F; f++) {
+            mesh->face_offsets[f] = corners;
+            for (long long k = check_rng_int(&rng, 0, 4) == 0 ? 4 : 3; k > 0; k--)
+                mesh->face_indices[corners++] = (uint32_t)check_rng_int(&rng, 0, (long long)V - 1);
+        }
+        mesh->face_offsets[F] = corners;
+        cg_hemesh *h = NULL;
+        cg_status built = cg_hemesh_build(mesh, CG_HEMESH_DROP_BAD_FACES, &h, NULL, NULL);
+        cg_mesh_free(mesh);
+        if (built != CG_OK)
+            continue;
+        for (int step = 0; step < 6; step++) {
+            uint32_t e = random_live_edge(h, &rng);
+            if (e == CG_HEMESH_NONE)
+                break;
+            long long op = check_rng_int(&rng, 0, 2);
+            cg_status s;
+            const char *what = op == 0 ? "split" : op == 1 ? "flip" : "collapse";
+            if (op == 0) {
+                s = cg_hemesh_split_edge(h, e, cg_vec3_make(0.5, 0.5, 0.5), NULL);
+            } else if (op == 1) {
+                s = cg_hemesh_flip_edge(h, e);
+            } else {
+                s = cg_hemesh_collapse_edge(h, 2 * e);
+                collapses += s == CG_OK;
+                refused += s == CG_EINVAL;
+            }
+            if (s == CG_OK && !valid(h, what))
+                break;
+        }
+        cg_hemesh_free(h);
+    }
+    CHECK(collapses > 300 && refused > 300);
+    fprintf(stderr, "random small edits: %d collapses done, %d refused\n", collapses, refused);
+}
+
 /* Flip and collapse on the tetrahedron: every flip would join two joined
  * vertices and every collapse would leave valence-2 vertices: all refused. */
 static void test_tetrahedron_refusals(void)
@@ -550,6 +608,7 @@ int main(int argc, char **argv)
 {
     check_start(argc, argv);
     CHECK_GROUP(test_random_operations);
+    CHECK_GROUP(test_random_small_edits);
     CHECK_GROUP(test_tetrahedron_refusals);
     CHECK_GROUP(test_removal_boundary);
     CHECK_GROUP(test_diagonals);

@@ -7,6 +7,8 @@
 
 #include <math.h>
 
+/* Generated rows of numbers: kept as they are written (.clang-format). */
+/* clang-format off */
 const float color_srgb_decode_table[256] = {
     0.000000000e+00f, 3.035269835e-04f, 6.070539671e-04f, 9.105809506e-04f,
     1.214107934e-03f, 1.517634918e-03f, 1.821161901e-03f, 2.124688885e-03f,
@@ -403,3 +405,4 @@ const uint8_t color_srgb_encode_start[4097] = {
     255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255,
     255,
 };
+/* clang-format on */

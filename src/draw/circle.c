@@ -91,6 +91,22 @@ static int rows_to_columns(const circle_walk *w, long long ylo, long long yhi, l
     return *lo <= *hi;
 }
 
+/* One step of Algorithm 2's midpoint decision from column x to x + 1: east
+ * (f < 0) or south-east.  Returns 1 when south-east (y goes down by one). */
+static inline int midpoint_step(long long *f, long long *de, long long *dse)
+{
+    if (*f < 0) {
+        *f += *de;
+        *de += 2;
+        *dse += 2;
+        return 0;
+    }
+    *f += *dse;
+    *de += 2;
+    *dse += 4;
+    return 1;
+}
+
 /* Runs Algorithm 2 over the columns of one mirror that land in the image,
  * calling plot for each pixel it owns. */
 static void walk_mirror(const circle_walk *w, mirror m, pixel_fn plot, void *context)
@@ -129,16 +145,10 @@ static void walk_mirror(const circle_walk *w, mirror m, pixel_fn plot, void *con
             if (!(m.swap && x == y))
                 memcpy(p, &packed, 4);
             p += step_x;
-            if (f < 0) {
-                f += de;
-                dse += 2;
-            } else {
-                f += dse;
-                dse += 4;
+            if (midpoint_step(&f, &de, &dse)) {
                 y--;
                 p += step_y;
             }
-            de += 2;
         }
         return;
     }
@@ -149,16 +159,7 @@ static void walk_mirror(const circle_walk *w, mirror m, pixel_fn plot, void *con
             else
                 plot(context, w->cx + m.sa * x, w->cy - m.sb * y);
         }
-        if (f < 0) {
-            f += de;
-            de += 2;
-            dse += 2;
-        } else {
-            f += dse;
-            de += 2;
-            dse += 4;
-            y--;
-        }
+        y -= midpoint_step(&f, &de, &dse);
     }
 }
 
@@ -203,16 +204,7 @@ cg_status cg_draw_circle(cg_image *image, int cx, int cy, int r, cg_rgba8 color)
     int x = 0, y = r;
     long long f = 1 - (long long)r, de = 3, dse = 5 - 2 * (long long)r;
     for (;;) {
-        if (f < 0) {
-            f += de;
-            de += 2;
-            dse += 2;
-        } else {
-            f += dse;
-            de += 2;
-            dse += 4;
-            y--;
-        }
+        y -= midpoint_step(&f, &de, &dse);
         x++;
         if (x >= y)
             break;

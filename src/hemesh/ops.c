@@ -263,6 +263,28 @@ static int apex_ok(const cg_hemesh *m, uint32_t h)
     return 1;
 }
 
+/* Whether a face around u other than the two sides of h (u -> v) has v as
+ * a corner: after the collapse it would visit v twice. */
+static int other_face_joins(const cg_hemesh *m, uint32_t h)
+{
+    uint32_t u = m->halfedges[h].origin, v = m->halfedges[h ^ 1u].origin;
+    uint32_t own[2] = {m->halfedges[h].face, m->halfedges[h ^ 1u].face};
+    uint32_t x0 = m->vertex_halfedge[u], x = x0;
+    do {
+        uint32_t f = m->halfedges[x].face;
+        if (f != CG_HEMESH_NONE && f != own[0] && f != own[1]) {
+            uint32_t y = x;
+            do {
+                if (m->halfedges[y].origin == v)
+                    return 1;
+                y = m->halfedges[y].next;
+            } while (y != x);
+        }
+        x = cg_hemesh_ccw(m, x);
+    } while (x != x0);
+    return 0;
+}
+
 int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h)
 {
     if (!halfedge_live(m, h))
@@ -273,15 +295,23 @@ int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h)
     int edge_boundary = m->halfedges[h].face == CG_HEMESH_NONE || m->halfedges[t].face == CG_HEMESH_NONE;
     if (!edge_boundary && cg_hemesh_vertex_is_boundary(m, u) && cg_hemesh_vertex_is_boundary(m, v))
         return 0;
-    if (!apex_ok(m, h) || !apex_ok(m, t))
+    if (!apex_ok(m, h) || !apex_ok(m, t) || other_face_joins(m, h))
         return 0;
     /* link condition: common neighbours are exactly the apexes */
     uint32_t c = apex(m, h), d = apex(m, t);
+    /* One apex for both triangles (joined to it by two different edges):
+     * they share two sides, and the collapse would leave an edge with no
+     * face. */
+    if (c != CG_HEMESH_NONE && c == d)
+        return 0;
     size_t nu, nv;
     uint32_t *lu = neighbors(m, u, &nu), *lv = neighbors(m, v, &nv);
-    int ok = lu && lv;
+    int ok = lu && lv, edges_to_v = 0;
     for (size_t i = 0; ok && i < nu; i++) {
         uint32_t w = lu[i];
+        /* a second edge between u and v would become a loop at v */
+        if (w == v && ++edges_to_v > 1)
+            ok = 0;
         if (w == v || w == c || w == d)
             continue;
         for (size_t j = 0; j < nv; j++)

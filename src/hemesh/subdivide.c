@@ -108,6 +108,24 @@ static cg_vec3 boundary_vertex(const cg_hemesh *m, uint32_t h)
     return cg_vec3_add(cg_vec3_scale(p, 0.75), cg_vec3_scale(cg_vec3_add(a, b), 0.125));
 }
 
+/* Both schemes leave an isolated vertex where it is and move a boundary
+ * vertex along the boundary curve.  Returns 1 when v is one of those (its
+ * new position set), 0 for an interior vertex, which each scheme moves by
+ * its own rule. */
+static int place_outside_interior(const cg_hemesh *m, cg_hemesh *r, size_t v)
+{
+    uint32_t h0 = m->vertex_halfedge[v];
+    if (h0 == CG_HEMESH_NONE) {
+        r->positions[v] = m->positions[v];
+        return 1;
+    }
+    if (m->halfedges[h0].face == CG_HEMESH_NONE) {
+        r->positions[v] = boundary_vertex(m, h0);
+        return 1;
+    }
+    return 0;
+}
+
 static double loop_beta(size_t n)
 {
     double c = 0.375 + 0.25 * cos(2.0 * CG_PI / (double)n);
@@ -188,14 +206,8 @@ cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
     for (size_t v = 0; v < V; v++) {
         uint32_t h0 = m->vertex_halfedge[v];
         cg_vec3 p = m->positions[v];
-        if (h0 == CG_HEMESH_NONE) {
-            r->positions[v] = p;
+        if (place_outside_interior(m, r, v))
             continue;
-        }
-        if (he[h0].face == CG_HEMESH_NONE) {
-            r->positions[v] = boundary_vertex(m, h0);
-            continue;
-        }
         cg_vec3 sum = {0, 0, 0};
         size_t n = 0;
         uint32_t h = h0;
@@ -329,14 +341,8 @@ static void catmull_clark_vertex_points(const cg_hemesh *m, cg_hemesh *r)
     for (size_t v = 0; v < V; v++) {
         uint32_t h0 = m->vertex_halfedge[v];
         cg_vec3 p = m->positions[v];
-        if (h0 == CG_HEMESH_NONE) {
-            r->positions[v] = p;
+        if (place_outside_interior(m, r, v))
             continue;
-        }
-        if (he[h0].face == CG_HEMESH_NONE) {
-            r->positions[v] = boundary_vertex(m, h0);
-            continue;
-        }
         cg_vec3 fsum = {0, 0, 0}, rsum = {0, 0, 0};
         size_t n = 0;
         uint32_t h = h0;

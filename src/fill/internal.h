@@ -4,6 +4,7 @@
 
 #include "cg/fill.h"
 #include "../color/srgb_tables.h"
+#include "../core/array.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -131,8 +132,30 @@ typedef struct fill_painter {
     /* gradients */
     double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
+    int spread;                /* cg_gradient_spread */
+    int focal;                 /* radial from a focal point (fx, fy) */
+    double fx, fy, radius;
+    int transformed;           /* pixels reach gradient space through inverse */
+    cg_mat3 inverse;
     cg_rgbaf ramp[256];
+    /* compositing: general is set unless the drawing is linear-light
+     * source-over (the fast paths); then the span goes through
+     * fill_general_span, and space_color is a solid paint's straight colour
+     * in the space (and the ramp's colours are in the space too) */
+    int general;
+    int space, op, mode;
+    cg_rgbaf space_color;
 } fill_painter;
+
+/* The ramp colour of a gradient paint at pixel point (x, y). */
+const cg_rgbaf *fill_gradient_at(const fill_painter *p, double x, double y);
+/* Any paint through any operator in any space (composite.c). */
+void fill_general_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover);
+/* Composites premultiplied source (of the space) onto one pixel at coverage k. */
+void fill_composite_pixel8(cg_rgba8 *d, cg_rgbaf source, cg_compositing_space space,
+                           cg_composite_operator op, cg_blend_mode mode, float k);
+void fill_composite_pixelf(cg_rgbaf *d, cg_rgbaf source, cg_compositing_space space,
+                           cg_composite_operator op, cg_blend_mode mode, float k);
 
 /* CG_EINVAL for a malformed paint. */
 cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *image,
@@ -163,6 +186,7 @@ typedef struct fill_crossing {
 
 struct cg_rasterizer {
     double tolerance;
+    int space, op, mode; /* compositing (cg_rasterizer_set_compositing), 0: the defaults */
     /* anti-aliased: lines clipped to the image, and their bounds */
     fill_line *lines;
     size_t line_count, line_capacity;
@@ -434,14 +458,6 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
 /* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /
  * 255 (cover NULL: constant / 255), as fill_solid_cached does. */
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant);
-
-/* Grows *array (of element size) to hold at least need elements; 0 when
- * memory runs out (the array is then unchanged). */
-int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size);
-static inline int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
-{
-    return need <= *capacity || fill_reserve_grow(array, capacity, need, size);
-}
 
 /* Checks every point of a polygon (finite, within CG_FILL_MAX_COORD) and the
  * contour sizes; *total receives the number of points. */

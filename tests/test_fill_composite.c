@@ -8,6 +8,7 @@
 #include "check.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 static check_rng rng = {0x5eed1234abcdULL};
@@ -465,6 +466,143 @@ static void gradients(void)
     CHECK_EQ_INT(a[0], 255);
 }
 
+static cg_path *rect_path(double x0, double y0, double x1, double y1)
+{
+    cg_path *path;
+    if (cg_path_create(&path) != CG_OK)
+        return NULL;
+    cg_path_move_to(path, x0, y0);
+    cg_path_line_to(path, x1, y0);
+    cg_path_line_to(path, x1, y1);
+    cg_path_line_to(path, x0, y1);
+    cg_path_close(path);
+    return path;
+}
+
+static void layers(void)
+{
+    cg_rasterizer *r;
+    CHECK(cg_rasterizer_create(&r) == CG_OK);
+    CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_OVER, CG_BLEND_NORMAL)
+          == CG_OK);
+    cg_rgba8 white = {255, 255, 255, 255}, red = {255, 0, 0, 255}, none = {0, 0, 0, 0};
+    cg_image *image = filled_image(32, 32, white), *layer = filled_image(32, 32, none);
+    /* two overlapping opaque squares in a layer at opacity 0.5: one flat
+     * colour, overlap or not (drawn directly they would differ) */
+    cg_path *a = rect_path(2, 2, 20, 20), *b = rect_path(10, 10, 30, 30);
+    cg_paint paint = cg_paint_solid(red);
+    CHECK(cg_rasterizer_fill_path(r, layer, a, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK(cg_rasterizer_fill_path(r, layer, b, CG_FILL_NONZERO, &paint) == CG_OK);
+    cg_layer_style style = cg_layer_style_default();
+    style.opacity = 0.5;
+    CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_OK);
+    cg_rgba8 p1 = cg_image_row_rgba8(image, 5)[5], p2 = cg_image_row_rgba8(image, 15)[15];
+    cg_rgba8 p3 = cg_image_row_rgba8(image, 0)[0];
+    CHECK(p1.r == 255 && abs(p1.g - 128) <= 1 && p1.g == p2.g && p1.b == p2.b);
+    CHECK(p3.r == 255 && p3.g == 255 && p3.b == 255);
+
+    /* a clip: an even-odd ring whose edges cut pixels; each pixel is the
+     * mix of before and after by the ring's own coverage */
+    cg_image *before = filled_image(32, 32, white), *coverage = filled_image(32, 32, none);
+    cg_image *after = filled_image(32, 32, white);
+    cg_path *ring;
+    CHECK(cg_path_create(&ring) == CG_OK);
+    CHECK(cg_path_append_svg(ring, "M 3.3 3.7 L 28.6 4.2 L 27.1 29.4 Z M 9 9 L 20 10 L 18 19 Z",
+                             NULL) == CG_OK);
+    cg_rasterizer *plain;
+    CHECK(cg_rasterizer_create(&plain) == CG_OK);
+    cg_paint ink = cg_paint_solid(white);
+    CHECK(cg_rasterizer_fill_path(plain, coverage, ring, CG_FILL_EVEN_ODD, &ink) == CG_OK);
+    style = cg_layer_style_default();
+    CHECK(cg_rasterizer_composite_layer(r, after, layer, &style) == CG_OK);
+    style.clip = ring;
+    style.clip_rule = CG_FILL_EVEN_ODD;
+    cg_image *clipped = filled_image(32, 32, white);
+    CHECK(cg_rasterizer_composite_layer(r, clipped, layer, &style) == CG_OK);
+    int bad = 0, partial = 0;
+    for (int y = 0; y < 32; y++)
+        for (int x = 0; x < 32; x++) {
+            double k = cg_image_row_rgba8(coverage, y)[x].a / 255.0;
+            cg_rgba8 b0 = cg_image_row_rgba8(before, y)[x], b1 = cg_image_row_rgba8(after, y)[x];
+            cg_rgba8 got = cg_image_row_rgba8(clipped, y)[x];
+            double want = b0.g + (b1.g - b0.g) * k;
+            bad += fabs(got.g - want) > 0.51 || got.r != 255;
+            partial += k > 0 && k < 1 && b1.g != b0.g;
+        }
+    CHECK_MSG(bad == 0, "%d clipped pixels off", bad);
+    CHECK(partial > 10);
+
+    /* a luminance mask of grey g scales alpha by g (the weights sum to 1) */
+    cg_image *mask = filled_image(32, 32, white);
+    for (int x = 0; x < 32; x++) {
+        uint8_t g = (uint8_t)(x * 8);
+        cg_rgba8 grey = {g, g, g, 255};
+        for (int y = 0; y < 32; y++)
+            cg_image_row_rgba8(mask, y)[x] = grey;
+    }
+    cg_image *masked = filled_image(32, 32, white);
+    style = cg_layer_style_default();
+    style.mask = mask;
+    style.mask_type = CG_MASK_LUMINANCE;
+    CHECK(cg_rasterizer_composite_layer(r, masked, layer, &style) == CG_OK);
+    bad = 0;
+    for (int x = 2; x < 30; x++) { /* the layer's squares cover these on row 15 */
+        cg_rgba8 got = cg_image_row_rgba8(masked, 15)[x];
+        double k = x * 8 / 255.0;
+        bad += fabs(got.g - 255 * (1 - k)) > 0.51;
+    }
+    CHECK_MSG(bad == 0, "%d masked pixels off", bad);
+    style.mask_type = CG_MASK_ALPHA; /* opaque mask: unchanged */
+    cg_image *alpha_masked = filled_image(32, 32, white);
+    CHECK(cg_rasterizer_composite_layer(r, alpha_masked, layer, &style) == CG_OK);
+    CHECK(memcmp(alpha_masked->data, after->data, (size_t)after->stride * 32) == 0);
+
+    /* a blend mode: multiply over a background of random colours */
+    cg_image *backdrop = filled_image(32, 32, white), *expected = NULL;
+    for (int y = 0; y < 32; y++)
+        for (int x = 0; x < 32; x++)
+            cg_image_row_rgba8(backdrop, y)[x] = random_rgba8();
+    CHECK(cg_image_copy(backdrop, &expected) == CG_OK);
+    style = cg_layer_style_default();
+    style.mode = CG_BLEND_MULTIPLY;
+    CHECK(cg_rasterizer_composite_layer(r, backdrop, layer, &style) == CG_OK);
+    bad = 0;
+    for (int y = 0; y < 32; y++)
+        for (int x = 0; x < 32; x++) {
+            cg_rgba8 s = cg_image_row_rgba8(layer, y)[x], d = cg_image_row_rgba8(expected, y)[x];
+            cg_rgba8 got = cg_image_row_rgba8(backdrop, y)[x];
+            double want[4];
+            expected_srgb(s, d, 1, CG_OPERATOR_OVER, CG_BLEND_MULTIPLY, want);
+            bad += fabs(got.a - want[3] * 255) > 0.51
+                   || fabs(got.g * got.a / 255.0 - want[1] * 255) > 1.01;
+        }
+    CHECK_MSG(bad == 0, "%d multiplied pixels off", bad);
+
+    /* bad input */
+    cg_image *small = filled_image(8, 8, none);
+    style = cg_layer_style_default();
+    CHECK(cg_rasterizer_composite_layer(r, image, small, &style) == CG_EINVAL);
+    style.opacity = 1.5;
+    CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_EINVAL);
+    style.opacity = NAN;
+    CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_EINVAL);
+    style = cg_layer_style_default();
+    style.mask = small;
+    CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_EINVAL);
+    style = cg_layer_style_default();
+    style.mode = CG_BLEND_COUNT;
+    CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_EINVAL);
+    cg_image *list[] = {image, layer, before, coverage, after, clipped, mask, masked,
+                        alpha_masked, backdrop, expected, small};
+    for (size_t i = 0; i < sizeof list / sizeof *list; i++)
+        cg_image_free(list[i]);
+    cg_path_free(a);
+    cg_path_free(b);
+    cg_path_free(ring);
+    cg_rasterizer_free(plain);
+    cg_rasterizer_free(r);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -474,5 +612,6 @@ int main(int argc, char **argv)
     CHECK_GROUP(rasterizer_srgb);
     CHECK_GROUP(srgb_shapes);
     CHECK_GROUP(gradients);
+    CHECK_GROUP(layers);
     return check_finish();
 }

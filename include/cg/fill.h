@@ -318,6 +318,45 @@ cg_status cg_rasterizer_stroke_path(cg_rasterizer *rasterizer, cg_image *image,
                                     const cg_path *path, const cg_stroke_style *style,
                                     const cg_paint *paint);
 
+/* ---- layers ------------------------------------------------------------------ */
+
+/* A layer is a transparent image of the drawing's size (cg_image_create
+ * makes one): draw into it with any calls, then composite it onto the
+ * drawing as one piece, as SVG does for a group with opacity, a blend mode,
+ * a clip path or a mask. */
+
+typedef enum cg_mask_type {
+    CG_MASK_ALPHA = 0,    /* the mask image's alpha */
+    CG_MASK_LUMINANCE = 1 /* its luminance times its alpha (SVG's mask) */
+} cg_mask_type;
+
+typedef struct cg_layer_style {
+    double opacity;             /* 0..1: scales the layer's alpha */
+    cg_composite_operator op;   /* how the layer meets the drawing */
+    cg_blend_mode mode;
+    /* NULL, or a path in pixel coordinates: the layer shows only inside it
+     * (anti-aliased: a pixel half inside gets half the layer's effect),
+     * under clip_rule */
+    const cg_path *clip;
+    cg_fill_rule clip_rule;
+    /* NULL, or an image of the layer's size whose value (below) scales the
+     * layer's alpha pixel by pixel */
+    const cg_image *mask;
+    cg_mask_type mask_type;
+} cg_layer_style;
+
+/* Opacity 1, over, normal, no clip (non-zero rule), no mask. */
+cg_layer_style cg_layer_style_default(void);
+
+/* Composites layer onto image (both the same size, RGBA8 or RGBAF) in the
+ * rasterizer's compositing space: each pixel of the layer, its alpha scaled
+ * by opacity and the mask, goes through the blend mode and operator, within
+ * the clip as a drawing within its shape.  CG_EINVAL for a size mismatch, an
+ * opacity outside [0, 1] or a bad enum; the rasterizer's own operator and
+ * blend mode are not used. */
+cg_status cg_rasterizer_composite_layer(cg_rasterizer *rasterizer, cg_image *image,
+                                        const cg_image *layer, const cg_layer_style *style);
+
 #ifdef __cplusplus
 }
 #endif

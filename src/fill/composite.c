@@ -265,86 +265,9 @@ cg_status cg_rasterizer_set_compositing(cg_rasterizer *r, cg_compositing_space s
 
 /* ---- pixels in a compositing space ------------------------------------------------ */
 
-/* A stored pixel as a premultiplied colour of the space. */
-static inline cg_rgbaf load_pixel8(cg_rgba8 px, cg_compositing_space space)
-{
-    float a = px.a * (1.0f / 255.0f);
-    cg_rgbaf c;
-    if (space == CG_COMPOSITE_SRGB) {
-        float k = a * (1.0f / 255.0f);
-        c.r = px.r * k;
-        c.g = px.g * k;
-        c.b = px.b * k;
-    } else {
-        c.r = color_srgb_decode_table[px.r] * a;
-        c.g = color_srgb_decode_table[px.g] * a;
-        c.b = color_srgb_decode_table[px.b] * a;
-    }
-    c.a = a;
-    return c;
-}
-
-static inline uint8_t unit_to_byte(float v)
-{
-    v = v > 0 ? v : 0; /* also NaN */
-    v = v < 1 ? v : 1;
-    return (uint8_t)(v * 255.0f + 0.5f);
-}
-
-static inline cg_rgba8 store_pixel8(cg_rgbaf c, cg_compositing_space space)
-{
-    cg_rgba8 px = {0, 0, 0, 0};
-    px.a = unit_to_byte(c.a);
-    if (px.a == 0)
-        return px;
-    float inv = 1 / c.a;
-    if (space == CG_COMPOSITE_SRGB) {
-        px.r = unit_to_byte(c.r * inv);
-        px.g = unit_to_byte(c.g * inv);
-        px.b = unit_to_byte(c.b * inv);
-    } else {
-        px.r = cg_srgb_encode_unit(c.r * inv);
-        px.g = cg_srgb_encode_unit(c.g * inv);
-        px.b = cg_srgb_encode_unit(c.b * inv);
-    }
-    return px;
-}
-
-/* RGBAF pixels are straight linear light. */
-static inline cg_rgbaf load_pixelf(cg_rgbaf px, cg_compositing_space space)
-{
-    if (space == CG_COMPOSITE_SRGB) {
-        px.r = (float)cg_linear_to_srgb(px.r);
-        px.g = (float)cg_linear_to_srgb(px.g);
-        px.b = (float)cg_linear_to_srgb(px.b);
-    }
-    px.r *= px.a;
-    px.g *= px.a;
-    px.b *= px.a;
-    return px;
-}
-
-static inline cg_rgbaf store_pixelf(cg_rgbaf c, cg_compositing_space space)
-{
-    if (!(c.a > 0)) {
-        cg_rgbaf none = {0, 0, 0, 0};
-        return none;
-    }
-    float inv = 1 / c.a;
-    c.r *= inv;
-    c.g *= inv;
-    c.b *= inv;
-    if (space == CG_COMPOSITE_SRGB) {
-        c.r = (float)cg_srgb_to_linear(c.r);
-        c.g = (float)cg_srgb_to_linear(c.g);
-        c.b = (float)cg_srgb_to_linear(c.b);
-    }
-    return c;
-}
-
 /* k * composite(source, backdrop) + (1 - k) * backdrop: the operator within
  * the shape's coverage k. */
-static inline cg_rgbaf composite_covered(cg_rgbaf source, cg_rgbaf backdrop,
+cg_rgbaf fill_composite_covered(cg_rgbaf source, cg_rgbaf backdrop,
                                          cg_composite_operator op, cg_blend_mode mode, float k)
 {
     if (op == CG_OPERATOR_OVER && mode == CG_BLEND_NORMAL) {
@@ -365,15 +288,15 @@ static inline cg_rgbaf composite_covered(cg_rgbaf source, cg_rgbaf backdrop,
 void fill_composite_pixel8(cg_rgba8 *d, cg_rgbaf source, cg_compositing_space space,
                            cg_composite_operator op, cg_blend_mode mode, float k)
 {
-    cg_rgbaf b = load_pixel8(*d, space);
-    *d = store_pixel8(composite_covered(source, b, op, mode, k), space);
+    cg_rgbaf b = fill_load_pixel8(*d, space);
+    *d = fill_store_pixel8(fill_composite_covered(source, b, op, mode, k), space);
 }
 
 void fill_composite_pixelf(cg_rgbaf *d, cg_rgbaf source, cg_compositing_space space,
                            cg_composite_operator op, cg_blend_mode mode, float k)
 {
-    cg_rgbaf b = load_pixelf(*d, space);
-    *d = store_pixelf(composite_covered(source, b, op, mode, k), space);
+    cg_rgbaf b = fill_load_pixelf(*d, space);
+    *d = fill_store_pixelf(fill_composite_covered(source, b, op, mode, k), space);
 }
 
 void fill_general_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)

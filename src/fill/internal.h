@@ -5,6 +5,7 @@
 #include "cg/fill.h"
 #include "../color/srgb_tables.h"
 #include "../core/array.h"
+#include "cg/color.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -156,6 +157,89 @@ void fill_composite_pixel8(cg_rgba8 *d, cg_rgbaf source, cg_compositing_space sp
                            cg_composite_operator op, cg_blend_mode mode, float k);
 void fill_composite_pixelf(cg_rgbaf *d, cg_rgbaf source, cg_compositing_space space,
                            cg_composite_operator op, cg_blend_mode mode, float k);
+
+/* ---- pixels in a compositing space (composite.c, layer.c) ---- */
+
+/* A stored pixel as a premultiplied colour of the space. */
+static inline cg_rgbaf fill_load_pixel8(cg_rgba8 px, cg_compositing_space space)
+{
+    float a = px.a * (1.0f / 255.0f);
+    cg_rgbaf c;
+    if (space == CG_COMPOSITE_SRGB) {
+        float k = a * (1.0f / 255.0f);
+        c.r = px.r * k;
+        c.g = px.g * k;
+        c.b = px.b * k;
+    } else {
+        c.r = color_srgb_decode_table[px.r] * a;
+        c.g = color_srgb_decode_table[px.g] * a;
+        c.b = color_srgb_decode_table[px.b] * a;
+    }
+    c.a = a;
+    return c;
+}
+
+static inline uint8_t fill_unit_to_byte(float v)
+{
+    v = v > 0 ? v : 0; /* also NaN */
+    v = v < 1 ? v : 1;
+    return (uint8_t)(v * 255.0f + 0.5f);
+}
+
+static inline cg_rgba8 fill_store_pixel8(cg_rgbaf c, cg_compositing_space space)
+{
+    cg_rgba8 px = {0, 0, 0, 0};
+    px.a = fill_unit_to_byte(c.a);
+    if (px.a == 0)
+        return px;
+    float inv = 1 / c.a;
+    if (space == CG_COMPOSITE_SRGB) {
+        px.r = fill_unit_to_byte(c.r * inv);
+        px.g = fill_unit_to_byte(c.g * inv);
+        px.b = fill_unit_to_byte(c.b * inv);
+    } else {
+        px.r = cg_srgb_encode_unit(c.r * inv);
+        px.g = cg_srgb_encode_unit(c.g * inv);
+        px.b = cg_srgb_encode_unit(c.b * inv);
+    }
+    return px;
+}
+
+/* RGBAF pixels are straight linear light. */
+static inline cg_rgbaf fill_load_pixelf(cg_rgbaf px, cg_compositing_space space)
+{
+    if (space == CG_COMPOSITE_SRGB) {
+        px.r = (float)cg_linear_to_srgb(px.r);
+        px.g = (float)cg_linear_to_srgb(px.g);
+        px.b = (float)cg_linear_to_srgb(px.b);
+    }
+    px.r *= px.a;
+    px.g *= px.a;
+    px.b *= px.a;
+    return px;
+}
+
+static inline cg_rgbaf fill_store_pixelf(cg_rgbaf c, cg_compositing_space space)
+{
+    if (!(c.a > 0)) {
+        cg_rgbaf none = {0, 0, 0, 0};
+        return none;
+    }
+    float inv = 1 / c.a;
+    c.r *= inv;
+    c.g *= inv;
+    c.b *= inv;
+    if (space == CG_COMPOSITE_SRGB) {
+        c.r = (float)cg_srgb_to_linear(c.r);
+        c.g = (float)cg_srgb_to_linear(c.g);
+        c.b = (float)cg_srgb_to_linear(c.b);
+    }
+    return c;
+}
+
+/* k * composite(source, backdrop) + (1 - k) * backdrop (premultiplied). */
+cg_rgbaf fill_composite_covered(cg_rgbaf source, cg_rgbaf backdrop, cg_composite_operator op,
+                                cg_blend_mode mode, float k);
 
 /* CG_EINVAL for a malformed paint. */
 cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *image,

@@ -10,6 +10,7 @@
 #include "cg/draw.h"
 #include "cg/curve.h"
 #include "cg/fill.h"
+#include "cg/svg.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
 #include "cg/hemesh.h"

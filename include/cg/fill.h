@@ -256,6 +256,17 @@ cg_status cg_path_close(cg_path *path);
  * left as it was before the call. */
 cg_status cg_path_append_svg(cg_path *path, const char *data, cg_error *err);
 
+/* Appends path to out with every point mapped by the affine matrix (its
+ * last row must be 0 0 1; CG_EINVAL otherwise or for a non-finite or
+ * out-of-range result).  Lines and Beziers map exactly; arcs become cubic
+ * Beziers of at most 45 degrees each (within 4e-6 of the radius).  out may
+ * not be path. */
+cg_status cg_path_transform(const cg_path *path, cg_mat3 matrix, cg_path *out);
+
+/* The smallest box holding the path's curves (flattened within tolerance,
+ * at least 0.001): CG_EINVAL for an empty path. */
+cg_status cg_path_bounds(const cg_path *path, double tolerance, cg_vec2 *min, cg_vec2 *max);
+
 /* ---- strokes ---------------------------------------------------------------- */
 
 typedef enum cg_line_join { CG_JOIN_MITER = 0, CG_JOIN_ROUND = 1, CG_JOIN_BEVEL = 2 } cg_line_join;

@@ -27,7 +27,7 @@ mkdir -p "$work/cg" "$work/rsvg" "$work/resvg"
 find -L "$papirus" -name '*.svg' -type f -print0 | xargs -0 realpath | LC_ALL=C sort -u >"$work/all"
 total=$(wc -l <"$work/all")
 step=$(( total / count )); [ "$step" -ge 1 ] || step=1
-awk -v step="$step" -v count="$count" 'NR % step == 1 && n < count { print; n++ }' "$work/all" >"$work/list"
+awk -v step="$step" -v count="$count" '(NR - 1) % step == 0 && n < count { print; n++ }' "$work/all" >"$work/list"
 echo "test_svg_peers: $(wc -l <"$work/list") of $total Papirus icons, every ${step}th, at $size px"
 
 i=0

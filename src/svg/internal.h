@@ -161,6 +161,8 @@ typedef struct svg_style {
 } svg_style;
 
 #define SVG_MAX_USE_DEPTH 64
+/* Flattening tolerance of curves in pixels. */
+#define SVG_TOLERANCE 0.02
 
 typedef struct svg_render {
     const cg_svg *svg;

@@ -94,7 +94,7 @@ static void stroke_shape(svg_render *r, const cg_path *user, const cg_path *devi
         check(r, cg_rasterizer_stroke_path(r->raster, target, device, &style, paint));
         return;
     }
-    double tolerance = 0.1 / largest_scale(ctm);
+    double tolerance = SVG_TOLERANCE / largest_scale(ctm);
     tolerance = tolerance < 0.001 ? 0.001 : (tolerance > 100 ? 100 : tolerance);
     cg_path *outline = NULL, *mapped = NULL;
     if (cg_path_create(&outline) != CG_OK || cg_path_create(&mapped) != CG_OK) {
@@ -348,6 +348,9 @@ cg_status cg_svg_render(const cg_svg *svg, cg_image *image, cg_mat3 transform, c
         return cg_error_set(err, CG_ENOMEM, "out of memory");
     }
     cg_rasterizer_set_compositing(r.raster, CG_COMPOSITE_SRGB, CG_OPERATOR_OVER, CG_BLEND_NORMAL);
+    /* curves within 0.02 px: areas within 0.1% of a 10 px circle's */
+    cg_rasterizer_set_tolerance(r.raster, SVG_TOLERANCE);
+    cg_rasterizer_set_tolerance(r.coverage, SVG_TOLERANCE);
     /* the root's viewBox into the document's size */
     cg_mat3 ctm = transform;
     svg_viewport vp = {svg->width, svg->height};

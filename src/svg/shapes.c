@@ -36,15 +36,20 @@ static int path_data(const svg_node *node, cg_path *out)
         offset = strtol(at + 7, NULL, 10);
     if (offset <= 0 || (size_t)offset > strlen(d))
         return !cg_path_is_empty(out);
-    long cut = offset;
-    while (cut > 0 && !(isalpha((unsigned char)d[cut]) && d[cut] != 'e' && d[cut] != 'E'))
-        cut--;
-    char *prefix = malloc((size_t)cut + 1);
+    char *prefix = malloc((size_t)offset + 1);
     if (!prefix)
         return 0;
-    memcpy(prefix, d, (size_t)cut);
-    prefix[cut] = 0;
-    cg_path_append_svg(out, prefix, NULL);
+    /* the data before the error (an unknown command there), else before
+     * the last command letter (a command short of its numbers) */
+    memcpy(prefix, d, (size_t)offset);
+    prefix[offset] = 0;
+    if (cg_path_append_svg(out, prefix, NULL) != CG_OK) {
+        long cut = offset - 1;
+        while (cut > 0 && !(isalpha((unsigned char)d[cut]) && d[cut] != 'e' && d[cut] != 'E'))
+            cut--;
+        prefix[cut > 0 ? cut : 0] = 0;
+        cg_path_append_svg(out, prefix, NULL);
+    }
     free(prefix);
     return !cg_path_is_empty(out);
 }

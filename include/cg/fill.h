@@ -354,9 +354,14 @@ typedef struct cg_layer_style {
      * layer's alpha pixel by pixel */
     const cg_image *mask;
     cg_mask_type mask_type;
+    /* has_box: only pixels x0 <= x < x1, y0 <= y < y1 are composited (a
+     * clip rectangle; a caller that knows where the layer has content
+     * saves the work of the rest) */
+    int has_box;
+    int box_x0, box_y0, box_x1, box_y1;
 } cg_layer_style;
 
-/* Opacity 1, over, normal, no clip (non-zero rule), no mask. */
+/* Opacity 1, over, normal, no clip (non-zero rule), no mask, no box. */
 cg_layer_style cg_layer_style_default(void);
 
 /* Composites layer onto image (both the same size, RGBA8 or RGBAF) in the

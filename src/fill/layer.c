@@ -90,9 +90,16 @@ cg_status cg_rasterizer_composite_layer(cg_rasterizer *r, cg_image *image, const
             return status;
     }
     float opacity = (float)style->opacity;
-    for (int y = 0; y < image->height; y++) {
+    int x0 = 0, y0 = 0, x1 = image->width, y1 = image->height;
+    if (style->has_box) {
+        x0 = style->box_x0 > 0 ? style->box_x0 : 0;
+        y0 = style->box_y0 > 0 ? style->box_y0 : 0;
+        x1 = style->box_x1 < x1 ? style->box_x1 : x1;
+        y1 = style->box_y1 < y1 ? style->box_y1 : y1;
+    }
+    for (int y = y0; y < y1; y++) {
         const cg_rgba8 *clip_row = clip ? cg_image_row_rgba8(clip, y) : NULL;
-        for (int x = 0; x < image->width; x++) {
+        for (int x = x0; x < x1; x++) {
             float k = clip_row ? clip_row[x].a * (1.0f / 255.0f) : 1.0f;
             if (k == 0)
                 continue;

@@ -144,23 +144,24 @@ static void clip_child(svg_render *r, const svg_node *c, cg_mat3 m, const svg_vi
     cg_path_free(user);
 }
 
-/* Multiplies the alpha of a by that of b. */
-static void multiply_alpha(cg_image *a, const cg_image *b)
+/* Multiplies the alpha of a by that of b within box. */
+static void multiply_alpha(cg_image *a, const cg_image *b, svg_box box)
 {
-    for (int y = 0; y < a->height; y++) {
+    for (int y = (int)box.y0; y < (int)box.y1; y++) {
         cg_rgba8 *pa = cg_image_row_rgba8(a, y);
         const cg_rgba8 *pb = cg_image_row_rgba8((cg_image *)b, y);
-        for (int x = 0; x < a->width; x++)
+        for (int x = (int)box.x0; x < (int)box.x1; x++)
             pa[x].a = (uint8_t)((pa[x].a * pb[x].a + 127) / 255);
     }
 }
 
 static cg_image *clip_image(svg_render *r, const svg_node *clip, const svg_node *node, cg_mat3 ctm,
-                            const svg_viewport *vp);
+                            const svg_viewport *vp, svg_box box);
 
 /* The clip-path or mask property's own clip on the effect element. */
 static int apply_nested_clip(svg_render *r, const svg_node *effect, cg_mat3 ctm,
-                             const svg_viewport *vp, const svg_node *node, cg_image *image)
+                             const svg_viewport *vp, const svg_node *node, cg_image *image,
+                             svg_box box)
 {
     const char *v = effect->declared[SVG_CLIP_PATH].value;
     if (!v || strcmp(v, "none") == 0)
@@ -168,10 +169,10 @@ static int apply_nested_clip(svg_render *r, const svg_node *effect, cg_mat3 ctm,
     const svg_node *nested = svg_find_reference(r->svg, v);
     if (!nested || strcmp(nested->name, "clipPath") != 0)
         return 0;
-    cg_image *inner = clip_image(r, nested, node, ctm, vp);
+    cg_image *inner = clip_image(r, nested, node, ctm, vp, box);
     if (!inner)
         return 0;
-    multiply_alpha(image, inner);
+    multiply_alpha(image, inner, box);
     cg_image_free(inner);
     return 1;
 }
@@ -190,7 +191,7 @@ static int bbox_matrix(svg_render *r, const svg_node *node, const svg_viewport *
 }
 
 static cg_image *clip_image(svg_render *r, const svg_node *clip, const svg_node *node, cg_mat3 ctm,
-                            const svg_viewport *vp)
+                            const svg_viewport *vp, svg_box box)
 {
     if (r->effect_depth >= MAX_EFFECT_DEPTH) {
         svg_fail(r, CG_EFORMAT, "line %d: clip paths and masks nested deeper than %d (a cycle?)",
@@ -216,7 +217,7 @@ static cg_image *clip_image(svg_render *r, const svg_node *clip, const svg_node 
     svg_compute_style(r, clip, vp, &initial, &s);
     for (const svg_node *c = clip->first_child; c; c = c->next)
         clip_child(r, c, m, vp, &s, coverage);
-    if (!apply_nested_clip(r, clip, ctm, vp, node, coverage)) {
+    if (!apply_nested_clip(r, clip, ctm, vp, node, coverage, box)) {
         cg_image_free(coverage);
         coverage = r->failure == CG_OK ? blank(r) : NULL;
     }
@@ -239,7 +240,7 @@ static double mask_length(const svg_node *mask, const char *name, int bbox_units
 }
 
 static cg_image *mask_image(svg_render *r, const svg_node *mask, const svg_node *node, cg_mat3 ctm,
-                            const svg_viewport *vp)
+                            const svg_viewport *vp, svg_box box)
 {
     if (r->effect_depth >= MAX_EFFECT_DEPTH) {
         svg_fail(r, CG_EFORMAT, "line %d: masks nested deeper than %d (a cycle?)", mask->line,
@@ -250,9 +251,9 @@ static cg_image *mask_image(svg_render *r, const svg_node *mask, const svg_node 
     const char *content_units = svg_attribute_value(mask, "maskContentUnits");
     int bbox_units = !(units && strcmp(units, "userSpaceOnUse") == 0);
     int content_bbox = content_units && strcmp(content_units, "objectBoundingBox") == 0;
-    cg_vec2 box[2];
+    cg_vec2 bounds[2];
     cg_mat3 b = cg_mat3_identity();
-    int has_box = bbox_matrix(r, node, vp, box, &b);
+    int has_box = bbox_matrix(r, node, vp, bounds, &b);
     if ((bbox_units || content_bbox) && !has_box)
         return blank(r);
     double x = mask_length(mask, "x", bbox_units, SVG_AXIS_X, vp, bbox_units ? -0.1 : -0.1 * vp->width);
@@ -281,21 +282,24 @@ static cg_image *mask_image(svg_render *r, const svg_node *mask, const svg_node 
     svg_initial_style(&initial);
     svg_compute_style(r, mask, vp, &initial, &s);
     cg_mat3 content_m = content_bbox ? cg_mat3_mul(ctm, b) : ctm;
+    svg_box outer = r->dirty; /* the mask's drawing is not the element's */
     for (const svg_node *c = mask->first_child; c && r->failure == CG_OK; c = c->next)
         svg_render_node(r, c, content_m, vp, &s, content);
+    r->dirty = outer;
     r->effect_depth--;
-    /* luminance times alpha, within the rectangle, into rect's alpha */
-    for (int py = 0; py < r->height; py++) {
+    /* luminance times alpha, within the rectangle, into rect's alpha (in
+     * the element's box: the layer is transparent elsewhere) */
+    for (int py = (int)box.y0; py < (int)box.y1; py++) {
         const cg_rgba8 *pc = cg_image_row_rgba8(content, py);
         cg_rgba8 *pr = cg_image_row_rgba8(rect, py);
-        for (int px = 0; px < r->width; px++) {
+        for (int px = (int)box.x0; px < (int)box.x1; px++) {
             double lum = (0.2125 * pc[px].r + 0.7154 * pc[px].g + 0.0721 * pc[px].b) / 255;
             double v = lum * pc[px].a / 255 * pr[px].a / 255;
             pr[px].a = (uint8_t)(v * 255 + 0.5);
         }
     }
     cg_image_free(content);
-    if (!apply_nested_clip(r, mask, ctm, vp, node, rect)) {
+    if (!apply_nested_clip(r, mask, ctm, vp, node, rect, box)) {
         cg_image_free(rect);
         return r->failure == CG_OK ? blank(r) : NULL;
     }
@@ -303,7 +307,7 @@ static cg_image *mask_image(svg_render *r, const svg_node *mask, const svg_node 
 }
 
 cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
-                            const svg_viewport *vp, int *none)
+                            const svg_viewport *vp, svg_box box, int *none)
 {
     *none = 0;
     cg_image *result = NULL;
@@ -315,7 +319,7 @@ cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
             *none = 1; /* a link to nothing: the element is not drawn (as resvg does) */
             return NULL;
         }
-        result = clip_image(r, c, node, ctm, vp);
+        result = clip_image(r, c, node, ctm, vp, box);
         if (!result) {
             *none = 1;
             return NULL;
@@ -328,14 +332,14 @@ cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
             *none = 1;
             return NULL;
         }
-        cg_image *values = mask_image(r, m, node, ctm, vp);
+        cg_image *values = mask_image(r, m, node, ctm, vp, box);
         if (!values) {
             cg_image_free(result);
             *none = 1;
             return NULL;
         }
         if (result) {
-            multiply_alpha(result, values);
+            multiply_alpha(result, values, box);
             cg_image_free(values);
         } else {
             result = values;
@@ -473,6 +477,9 @@ void svg_draw_image(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_
         goto done;
     int x0 = (int)fmax(0, floor(lo.x)), x1 = (int)fmin(target->width, ceil(hi.x));
     int y0 = (int)fmax(0, floor(lo.y)), y1 = (int)fmin(target->height, ceil(hi.y));
+    if (x0 >= x1 || y0 >= y1 || !svg_spend(r, (double)(x1 - x0) * (y1 - y0)))
+        goto done;
+    svg_touch(r, (svg_box){x0, y0, x1, y1});
     for (int py = y0; py < y1; py++)
         for (int px = x0; px < x1; px++) {
             cg_vec2 p = cg_mat3_transform_point(inverse, cg_vec2_make(px + 0.5, py + 0.5));
@@ -481,6 +488,11 @@ void svg_draw_image(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_
         }
     cg_layer_style ls = cg_layer_style_default();
     ls.clip = device;
+    ls.has_box = 1;
+    ls.box_x0 = x0;
+    ls.box_y0 = y0;
+    ls.box_x1 = x1;
+    ls.box_y1 = y1;
     cg_rasterizer_composite_layer(r->raster, target, layer, &ls);
 done:
     cg_image_free(picture);

@@ -160,7 +160,15 @@ typedef struct svg_style {
     int stroke_first; /* paint-order: stroke before fill */
 } svg_style;
 
+/* A box of pixels x0 <= x < x1, y0 <= y < y1 (empty when x0 >= x1). */
+typedef struct svg_box {
+    double x0, y0, x1, y1;
+} svg_box;
+
 #define SVG_MAX_USE_DEPTH 64
+/* Pixels composited through layers, clips and masks in one drawing: a
+ * bound on the time of a hostile file (2^31: seconds). */
+#define SVG_MAX_WORK 2147483648.0
 /* Flattening tolerance of curves in pixels. */
 #define SVG_TOLERANCE 0.02
 
@@ -175,7 +183,14 @@ typedef struct svg_render {
     int effect_depth;        /* clip paths and masks being built */
     cg_status failure;
     int width, height;       /* of the target image */
+    svg_box dirty;           /* where drawing calls drew since it was reset */
+    double work;             /* pixels composited so far */
 } svg_render;
+
+/* Grows r->dirty by box (clamped to the image). */
+void svg_touch(svg_render *r, svg_box box);
+/* Adds pixels to the work; 0 (after failing) beyond SVG_MAX_WORK. */
+int svg_spend(svg_render *r, double pixels);
 
 /* Computes node's inherited properties from its parent's. */
 void svg_compute_style(const svg_render *r, const svg_node *node, const svg_viewport *vp,
@@ -201,7 +216,7 @@ int svg_node_bounds(svg_render *r, const svg_node *node, cg_mat3 m, const svg_vi
  * mask; NULL with *none set when the element shows nowhere, NULL alone
  * when it has neither or they failed. */
 cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
-                            const svg_viewport *vp, int *none);
+                            const svg_viewport *vp, svg_box box, int *none);
 /* Draws an <image> with an embedded PNG. */
 void svg_draw_image(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,
                     const svg_style *style, cg_image *target);

@@ -26,6 +26,53 @@ void svg_fail(svg_render *r, cg_status status, const char *format, ...)
     }
 }
 
+void svg_touch(svg_render *r, svg_box b)
+{
+    b.x0 = fmax(0, floor(b.x0));
+    b.y0 = fmax(0, floor(b.y0));
+    b.x1 = fmin(r->width, ceil(b.x1));
+    b.y1 = fmin(r->height, ceil(b.y1));
+    if (!(b.x0 < b.x1 && b.y0 < b.y1))
+        return;
+    if (!(r->dirty.x0 < r->dirty.x1)) {
+        r->dirty = b;
+        return;
+    }
+    r->dirty.x0 = fmin(r->dirty.x0, b.x0);
+    r->dirty.y0 = fmin(r->dirty.y0, b.y0);
+    r->dirty.x1 = fmax(r->dirty.x1, b.x1);
+    r->dirty.y1 = fmax(r->dirty.y1, b.y1);
+}
+
+int svg_spend(svg_render *r, double pixels)
+{
+    r->work += pixels;
+    if (r->work <= SVG_MAX_WORK)
+        return 1;
+    svg_fail(r, CG_EFORMAT, "more than %.0f pixels to composite through groups, clips and masks",
+             SVG_MAX_WORK);
+    return 0;
+}
+
+/* The pixels a shape can touch: its user-space bounds through ctm, grown
+ * by how far its stroke reaches and a pixel of anti-aliasing. */
+static svg_box device_box(const cg_vec2 *bbox, cg_mat3 ctm, double reach)
+{
+    svg_box b = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (int i = 0; i < 4; i++) {
+        cg_vec2 p = cg_mat3_transform_point(ctm, cg_vec2_make(bbox[i & 1].x, bbox[i >> 1].y));
+        b.x0 = fmin(b.x0, p.x);
+        b.y0 = fmin(b.y0, p.y);
+        b.x1 = fmax(b.x1, p.x);
+        b.y1 = fmax(b.y1, p.y);
+    }
+    b.x0 -= reach + 1;
+    b.y0 -= reach + 1;
+    b.x1 += reach + 1;
+    b.y1 += reach + 1;
+    return b;
+}
+
 /* The scale of a similarity (rotation, uniform scale, reflection) or 0. */
 static double similarity_scale(cg_mat3 m)
 {
@@ -123,6 +170,13 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
         goto done;
     cg_vec2 bbox[2];
     int has_bbox = cg_path_bounds(user, 0.001, &bbox[0], &bbox[1]) == CG_OK;
+    if (!has_bbox)
+        goto done;
+    int stroked = s->stroke.kind != SVG_PAINT_NONE && s->stroke_width > 0;
+    double reach = stroked ? s->stroke_width / 2 * largest_scale(ctm)
+                                 * fmax(s->join == CG_JOIN_MITER ? s->miter_limit : 1, 1.5)
+                           : 0;
+    svg_touch(r, device_box(bbox, ctm, reach));
     cg_gradient_stop stops[256];
     for (int pass = 0; pass < 2; pass++) {
         int stroke = pass == (s->stroke_first ? 0 : 1);
@@ -303,25 +357,37 @@ void svg_render_node(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg
         render_content(r, node, ctm, vp, &s, opacity, target);
         return;
     }
-    int none = 0;
-    cg_image *mask = has_effects ? svg_clip_and_mask(r, node, ctm, vp, &none) : NULL;
-    cg_image *layer = NULL;
-    if (none || r->failure != CG_OK) {
-        cg_image_free(mask);
-        return;
-    }
+    /* the content into a layer, noting where it drew; then the clip and
+     * mask over that box only, and the layer composited there */
+    cg_image *layer = NULL, *mask = NULL;
     if (cg_image_create(&layer, target->width, target->height, CG_PIXEL_RGBA8) != CG_OK) {
-        cg_image_free(mask);
         svg_fail(r, CG_ENOMEM, "out of memory for a layer");
         return;
     }
+    svg_box outer = r->dirty, empty = {0, 0, 0, 0};
+    r->dirty = empty;
     render_content(r, node, ctm, vp, &s, 1, layer);
-    cg_layer_style style = cg_layer_style_default();
-    style.opacity = opacity;
-    style.mode = mode;
-    style.mask = mask;
-    style.mask_type = CG_MASK_ALPHA;
-    check(r, cg_rasterizer_composite_layer(r->raster, target, layer, &style));
+    svg_box box = r->dirty;
+    int none = !(box.x0 < box.x1) || r->failure != CG_OK
+               || !svg_spend(r, (box.x1 - box.x0) * (box.y1 - box.y0));
+    if (!none && has_effects)
+        mask = svg_clip_and_mask(r, node, ctm, vp, box, &none);
+    if (!none && r->failure == CG_OK) {
+        cg_layer_style style = cg_layer_style_default();
+        style.opacity = opacity;
+        style.mode = mode;
+        style.mask = mask;
+        style.mask_type = CG_MASK_ALPHA;
+        style.has_box = 1;
+        style.box_x0 = (int)box.x0;
+        style.box_y0 = (int)box.y0;
+        style.box_x1 = (int)box.x1;
+        style.box_y1 = (int)box.y1;
+        check(r, cg_rasterizer_composite_layer(r->raster, target, layer, &style));
+    }
+    r->dirty = outer;
+    if (!none)
+        svg_touch(r, box);
     cg_image_free(layer);
     cg_image_free(mask);
 }

@@ -8,7 +8,7 @@
 # usage: test_svg_peers.sh CG SOURCE_DIR BUILD_DIR [SIZE [COUNT]]
 set -u
 cg="$1" source_dir=$(cd "$2" && pwd) build_dir="$3" size="${4:-64}" count="${5:-200}"
-papirus=/usr/share/icons/Papirus/64x64
+papirus=${CG_SVG_SAMPLE_DIR:-/usr/share/icons/Papirus/64x64}
 [ -d "$papirus" ] || { echo "test_svg_peers: Papirus icons not found: skipped (apt-get install papirus-icon-theme)"; exit 77; }
 command -v rsvg-convert >/dev/null || { echo "test_svg_peers: rsvg-convert not found: skipped (apt-get install librsvg2-bin)"; exit 77; }
 command -v node >/dev/null || { echo "test_svg_peers: node not found: skipped (apt-get install nodejs npm)"; exit 77; }

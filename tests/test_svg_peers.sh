@@ -8,6 +8,7 @@
 # usage: test_svg_peers.sh CG SOURCE_DIR BUILD_DIR [SIZE [COUNT]]
 set -u
 cg="$1" source_dir=$(cd "$2" && pwd) build_dir="$3" size="${4:-64}" count="${5:-200}"
+# CG_SVG_SAMPLE_DIR: another folder of SVG files (Adwaita's scalable/, say); CG_KEEP=1 keeps the renders
 papirus=${CG_SVG_SAMPLE_DIR:-/usr/share/icons/Papirus/64x64}
 [ -d "$papirus" ] || { echo "test_svg_peers: Papirus icons not found: skipped (apt-get install papirus-icon-theme)"; exit 77; }
 command -v rsvg-convert >/dev/null || { echo "test_svg_peers: rsvg-convert not found: skipped (apt-get install librsvg2-bin)"; exit 77; }
@@ -37,7 +38,15 @@ while read -r file; do
   rsvg-convert -a -w "$size" "$file" -o "$work/rsvg/$i.png" 2>/dev/null || true
   i=$((i + 1))
 done <"$work/list"
-xargs -d '\n' env CG_RESVG_MODULE="$module" node "$source_dir/tests/svg/resvg_render.js" "$size" "$work/resvg" <"$work/list" 2>"$work/resvg.log" || true
+# resvg in one process; when it dies on a file (a panic aborts it), on after that file
+first=0 listed=$(wc -l <"$work/list")
+while [ "$first" -lt "$listed" ]; do
+  CG_RESVG_MODULE="$module" node "$source_dir/tests/svg/resvg_render.js" "$size" "$work/resvg" \
+    "$work/list" "$first" >>"$work/resvg.log" 2>&1 && break
+  while [ "$first" -lt "$listed" ] && [ -f "$work/resvg/$first.png" ]; do first=$((first + 1)); done
+  echo "test_svg_peers: resvg failed on $(sed -n "$((first + 1))p" "$work/list")"
+  first=$((first + 1))
+done
 [ -f "$work/failures" ] && cat "$work/failures"
 sort "$work/cg.log" | uniq -c | sort -rn | head -10 | sed 's/^/test_svg_peers: warnings: /'
 "$compare" "$work/list" "$work/cg" "$work/rsvg" "$work/resvg" >"$work/result"

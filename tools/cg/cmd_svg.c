@@ -9,21 +9,19 @@
 #include <string.h>
 
 /* The output size: the document's, scaled by --zoom, or fitted to --width
- * or --height keeping the aspect; at least one pixel. */
+ * or --height keeping the aspect, rounded to whole pixels (as resvg and
+ * rsvg-convert round: 16 x 16.007 at 64 px wide is 64 x 64); at least one
+ * pixel. */
 static int output_size(double doc_w, double doc_h, double width, double height, double zoom,
-                       int *w, int *h)
+                       int *w, int *h, double *scale_out)
 {
     double scale = zoom;
     if (width > 0)
         scale = width / doc_w;
     else if (height > 0)
         scale = height / doc_h;
-    double fw = width > 0 ? width : ceil(doc_w * scale - 1e-9);
-    double fh = height > 0 ? height : ceil(doc_h * scale - 1e-9);
-    if (width > 0)
-        fh = ceil(doc_h * scale - 1e-9);
-    if (height > 0)
-        fw = ceil(doc_w * scale - 1e-9);
+    double fw = width > 0 ? width : floor(doc_w * scale + 0.5);
+    double fh = height > 0 ? height : floor(doc_h * scale + 0.5);
     if (!(fw >= 1))
         fw = 1;
     if (!(fh >= 1))
@@ -32,6 +30,7 @@ static int output_size(double doc_w, double doc_h, double width, double height, 
         return -1;
     *w = (int)fw;
     *h = (int)fh;
+    *scale_out = scale;
     return 0;
 }
 
@@ -95,7 +94,8 @@ static int run(int argc, char **argv)
     double doc_w, doc_h;
     cg_svg_size(svg, &doc_w, &doc_h);
     int w, h;
-    if (output_size(doc_w, doc_h, width, height, zoom > 0 ? zoom : 1, &w, &h) != 0) {
+    double scale;
+    if (output_size(doc_w, doc_h, width, height, zoom > 0 ? zoom : 1, &w, &h, &scale) != 0) {
         cg_svg_free(svg);
         return cli_fail("%s: the picture would be %.0f x %.0f px, over the limit of %d px a side "
                         "and %lld pixels", in, doc_w * (zoom > 0 ? zoom : 1),
@@ -113,8 +113,8 @@ static int run(int argc, char **argv)
             for (int x = 0; x < w; x++)
                 cg_image_row_rgba8(image, y)[x] = background;
     cg_mat3 m = cg_mat3_identity();
-    m.m[0][0] = w / doc_w;
-    m.m[1][1] = h / doc_h;
+    m.m[0][0] = scale; /* one scale: the rounded side is cut or padded, not stretched */
+    m.m[1][1] = scale;
     status = cg_svg_render(svg, image, m, &err);
     cg_svg_free(svg);
     int result = status == CG_OK ? cli_write_image(image, out) : cli_fail("%s", err.message);

@@ -169,7 +169,9 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
     if (!svg_shape_path(node, vp, user) || cg_path_transform(user, ctm, device) != CG_OK)
         goto done;
     cg_vec2 bbox[2];
-    int has_bbox = cg_path_bounds(user, 0.001, &bbox[0], &bbox[1]) == CG_OK;
+    /* within 0.01 px of the true bounds (a gradient's box, the drawn box) */
+    double bounds_tolerance = fmax(0.001, 0.01 / largest_scale(ctm));
+    int has_bbox = cg_path_bounds(user, bounds_tolerance, &bbox[0], &bbox[1]) == CG_OK;
     if (!has_bbox)
         goto done;
     int stroked = s->stroke.kind != SVG_PAINT_NONE && s->stroke_width > 0;

@@ -1,9 +1,13 @@
 /* The shared parts of src/core: the growable array's growth policy, its
- * refusal of sizes that overflow, and the typed array's macros. */
+ * refusal of sizes that overflow, and the typed array's macros; the worker
+ * pool's blocks, each claimed exactly once, on any number of workers, with
+ * threads that fail to start or wake late. */
 #include "../src/core/array.h"
+#include "../src/core/worker_pool.h"
 #include "check.h"
 
 #include <stdint.h>
+#include <time.h>
 
 static void growth_policy(void)
 {
@@ -58,11 +62,215 @@ static void typed_array(void)
     CHECK(values.data == NULL && values.count == 0 && values.capacity == 0);
 }
 
+/* ---- the worker pool ------------------------------------------------------ */
+
+#define POOL_BLOCKS_MAX 2000
+
+/* Two phases of blocks: each block of the first counts its claims and notes
+ * its worker; each block of the second checks that the first is complete. */
+typedef struct pool_job {
+    core_worker_pool *pool;
+    core_worker_phase first, second;
+    atomic_int claims[POOL_BLOCKS_MAX];
+    int worker_of[POOL_BLOCKS_MAX];
+    atomic_int second_claims[POOL_BLOCKS_MAX];
+    atomic_int early;        /* second-phase blocks that saw the first unfinished */
+    atomic_int bad_worker;   /* worker indices out of range */
+    atomic_int calls;        /* task calls */
+} pool_job;
+
+static void pool_task(void *context, int worker)
+{
+    pool_job *j = context;
+    atomic_fetch_add(&j->calls, 1);
+    if (worker < 0 || worker >= core_worker_pool_workers(j->pool))
+        atomic_fetch_add(&j->bad_worker, 1);
+    size_t block;
+    while (core_worker_pool_claim(&j->first, &block)) {
+        atomic_fetch_add(&j->claims[block], 1);
+        j->worker_of[block] = worker;
+        core_worker_pool_finish(j->pool, &j->first);
+    }
+    core_worker_pool_wait(j->pool, &j->first);
+    while (core_worker_pool_claim(&j->second, &block)) {
+        int complete = 1;
+        for (size_t i = 0; i < j->first.blocks; i++)
+            complete &= atomic_load(&j->claims[i]) == 1;
+        if (!complete)
+            atomic_fetch_add(&j->early, 1);
+        atomic_fetch_add(&j->second_claims[block], 1);
+        core_worker_pool_finish(j->pool, &j->second);
+    }
+}
+
+/* Runs pool_task over `blocks` and `second` blocks; 1 when every block of
+ * both phases was claimed exactly once, the second phase never started
+ * early and no worker index was out of range.  Notes which workers took
+ * part into *took_part (bit per worker). */
+static int pool_round(core_worker_pool *pool, size_t blocks, size_t second,
+                      unsigned long *took_part)
+{
+    static pool_job j;
+    memset(&j, 0, sizeof j);
+    j.pool = pool;
+    core_worker_pool_phase_init(&j.first, blocks);
+    core_worker_pool_phase_init(&j.second, second);
+    for (size_t i = 0; i < POOL_BLOCKS_MAX; i++) {
+        atomic_init(&j.claims[i], 0);
+        atomic_init(&j.second_claims[i], 0);
+    }
+    atomic_init(&j.early, 0);
+    atomic_init(&j.bad_worker, 0);
+    atomic_init(&j.calls, 0);
+    core_worker_pool_run(pool, pool_task, &j);
+    int ok = atomic_load(&j.early) == 0 && atomic_load(&j.bad_worker) == 0
+             && atomic_load(&j.calls) >= 1 && atomic_load(&j.calls) <= core_worker_pool_workers(pool)
+             && atomic_load(&j.first.done) == blocks && atomic_load(&j.second.done) == second;
+    for (size_t i = 0; i < blocks; i++) {
+        ok &= atomic_load(&j.claims[i]) == 1;
+        if (j.worker_of[i] >= 0 && j.worker_of[i] < 64)
+            *took_part |= 1ul << j.worker_of[i];
+    }
+    for (size_t i = 0; i < second; i++)
+        ok &= atomic_load(&j.second_claims[i]) == 1;
+    for (size_t i = blocks; i < POOL_BLOCKS_MAX; i++)
+        ok &= atomic_load(&j.claims[i]) == 0;
+    return ok;
+}
+
+static void worker_pool_claims(void)
+{
+    static const size_t sizes[] = {0, 1, 2, 3, 7, 64, 333, POOL_BLOCKS_MAX};
+    for (int workers = 1; workers <= 6; workers++) {
+        core_worker_pool *pool;
+        CHECK(core_worker_pool_create(workers, &pool) == CG_OK);
+        if (!pool)
+            continue;
+        CHECK_EQ_INT(core_worker_pool_workers(pool), workers);
+        int rounds_ok = 0, rounds = 0;
+        unsigned long took_part = 0;
+        uint64_t seed = 12345u + (unsigned)workers;
+        for (int round = 0; round < 300; round++) {
+            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+            size_t blocks = round < 8 ? sizes[round] : (size_t)(seed >> 33) % POOL_BLOCKS_MAX;
+            size_t second = (size_t)(seed >> 13) % 50;
+            rounds_ok += pool_round(pool, blocks, second, &took_part);
+            rounds++;
+        }
+        CHECK_MSG(rounds_ok == rounds, "%d workers: %d of %d rounds claimed every block once",
+                  workers, rounds_ok, rounds);
+        CHECK(took_part & 1); /* the caller always takes part */
+        CHECK_MSG(took_part < (1ul << workers), "%d workers: worker bits %#lx", workers,
+                  took_part);
+        core_worker_pool_free(pool);
+    }
+    /* No pool: the caller alone. */
+    unsigned long took_part = 0;
+    CHECK(pool_round(NULL, 100, 10, &took_part));
+    CHECK_EQ_INT(took_part, 1);
+    CHECK_EQ_INT(core_worker_pool_workers(NULL), 1);
+}
+
+/* A thread starter that starts only the first `start_budget` threads. */
+static atomic_int start_budget;
+static int start_some(pthread_t *thread, void *(*main)(void *), void *argument)
+{
+    if (atomic_fetch_sub(&start_budget, 1) <= 0)
+        return 11; /* EAGAIN: as pthread_create when out of threads */
+    return pthread_create(thread, NULL, main, argument);
+}
+
+static void worker_pool_failed_threads(void)
+{
+    for (int budget = 0; budget <= 3; budget++) {
+        atomic_store(&start_budget, budget);
+        core_worker_pool *pool;
+        CHECK(core_worker_pool_create_with(5, start_some, &pool) == CG_OK);
+        if (!pool)
+            continue;
+        CHECK_EQ_INT(core_worker_pool_workers(pool), 1 + budget);
+        int rounds_ok = 0;
+        unsigned long took_part = 0;
+        for (int round = 0; round < 100; round++)
+            rounds_ok += pool_round(pool, (size_t)(round * 37 % POOL_BLOCKS_MAX), 9, &took_part);
+        CHECK_MSG(rounds_ok == 100, "%d threads started: %d of 100 rounds", budget, rounds_ok);
+        CHECK_MSG(took_part < (1ul << (1 + budget)), "workers %#lx beyond the %d started",
+                  took_part, budget);
+        core_worker_pool_free(pool);
+    }
+    core_worker_pool *pool = (core_worker_pool *)&pool; /* any value: set to NULL */
+    CHECK(core_worker_pool_create(0, &pool) == CG_EINVAL && pool == NULL);
+    CHECK(core_worker_pool_create(-3, &pool) == CG_EINVAL);
+    CHECK(core_worker_pool_create(CORE_WORKER_POOL_MAX + 1, &pool) == CG_EINVAL);
+    CHECK(core_worker_pool_create(2, NULL) == CG_EINVAL);
+    core_worker_pool_free(NULL);
+}
+
+/* Threads held at a gate before they first look at the pool: as threads
+ * the scheduler has not run yet on a busy machine. */
+static atomic_int gate_open;
+typedef struct gated_start {
+    void *(*main)(void *);
+    void *argument;
+} gated_start;
+static gated_start gated[8];
+static atomic_int gated_count;
+
+static void *gated_main(void *argument)
+{
+    gated_start *g = argument;
+    while (!atomic_load(&gate_open)) {
+        struct timespec pause = {0, 1000000};
+        nanosleep(&pause, NULL);
+    }
+    return g->main(g->argument);
+}
+
+static int start_gated(pthread_t *thread, void *(*main)(void *), void *argument)
+{
+    int i = atomic_fetch_add(&gated_count, 1);
+    if (i >= 8)
+        return 11;
+    gated[i].main = main;
+    gated[i].argument = argument;
+    return pthread_create(thread, NULL, gated_main, &gated[i]);
+}
+
+static void worker_pool_late_threads(void)
+{
+    atomic_store(&gate_open, 0);
+    atomic_store(&gated_count, 0);
+    core_worker_pool *pool;
+    CHECK(core_worker_pool_create_with(4, start_gated, &pool) == CG_OK);
+    if (!pool)
+        return;
+    CHECK_EQ_INT(core_worker_pool_workers(pool), 4);
+    /* Every thread asleep: each run is done by the caller alone, and
+     * returns without waiting for anybody. */
+    int rounds_ok = 0;
+    unsigned long took_part = 0;
+    for (int round = 0; round < 50; round++)
+        rounds_ok += pool_round(pool, (size_t)(round * 41 % 500), 5, &took_part);
+    CHECK_EQ_INT(rounds_ok, 50);
+    CHECK_EQ_INT(took_part, 1);
+    /* Awake: the threads skip the runs already closed and join the next
+     * ones; every block is still claimed exactly once. */
+    atomic_store(&gate_open, 1);
+    rounds_ok = 0;
+    for (int round = 0; round < 200; round++)
+        rounds_ok += pool_round(pool, (size_t)(round * 53 % POOL_BLOCKS_MAX), 17, &took_part);
+    CHECK_EQ_INT(rounds_ok, 200);
+    core_worker_pool_free(pool);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
     CHECK_GROUP(growth_policy);
     CHECK_GROUP(overflow_refused);
     CHECK_GROUP(typed_array);
+    CHECK_GROUP(worker_pool_claims);
+    CHECK_GROUP(worker_pool_failed_threads);
+    CHECK_GROUP(worker_pool_late_threads);
     return check_finish();
 }

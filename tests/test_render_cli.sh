@@ -65,6 +65,6 @@ one_line "mesh without faces"
 grep -q "empty.obj: nothing to draw" "$work/err" && pass || fail "no faces: the message names the file and why"
 [ ! -e "$work/empty.png" ] && pass || fail "no faces: nothing written"
 expect 0 "camera inside the mesh" "$cg" render "$bunny" -o "$work/in.png" --size 64x48 --eye -0.02,0.1,0 --target 1,0.1,0 --cull none
-grep -q raytrace "$src/tools/cg/render_raytrace.c" && pass || fail "raytrace dispatch file present"
+grep -q raytrace "$src/tools/cg/commands/raytracer.c" && pass || fail "raytrace dispatch file present"
 
 finish

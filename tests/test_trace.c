@@ -286,6 +286,16 @@ static void test_optics(void)
     CHECK_NEAR(cg_fresnel_schlick(0.5, 1, 0), 1, 0);
 }
 
+/* Whether two RGBA8 images of one size hold the same bytes. */
+static int same_pixels(cg_image *a, cg_image *b)
+{
+    int same = 1;
+    for (int y = 0; same && y < a->height; y++)
+        same = memcmp(cg_image_row_rgba8(a, y), cg_image_row_rgba8(b, y), 4 * (size_t)a->width)
+               == 0;
+    return same;
+}
+
 static int render_equal(cg_trace_scene *scene, const cg_camera *cam, cg_trace_options opt, int w,
                         int h)
 {
@@ -295,23 +305,81 @@ static int render_equal(cg_trace_scene *scene, const cg_camera *cam, cg_trace_op
     opt.threads = 1;
     int ok = cg_trace_render(scene, cam, &opt, a, NULL) == CG_OK;
     opt.threads = 3;
-    ok = ok && cg_trace_render(scene, cam, &opt, b, NULL) == CG_OK;
-    for (int y = 0; ok && y < h; y++)
-        ok = memcmp(cg_image_row_rgba8(a, y), cg_image_row_rgba8(b, y), 4 * (size_t)w) == 0;
+    ok = ok && cg_trace_render(scene, cam, &opt, b, NULL) == CG_OK && same_pixels(a, b);
     cg_image_free(a);
     cg_image_free(b);
     return ok;
 }
 
+/* The classic scene, a camera at eye looking at its centre, and options
+ * with `samples` samples per pixel. */
+static cg_trace_scene *classic_view(cg_vec3 eye, int samples, cg_camera *cam,
+                                    cg_trace_options *opt)
+{
+    cg_trace_scene *scene = NULL;
+    CHECK(cg_trace_scene_classic(&scene) == CG_OK);
+    *cam = cg_camera_default();
+    cam->eye = eye;
+    cam->target = cg_vec3_make(0, 0.8, 0);
+    *opt = cg_trace_options_default();
+    opt->samples = samples;
+    return scene;
+}
+
+/* Progress calls of one render: their count and whether done rose by one
+ * at each call up to the total. */
+typedef struct progress_log {
+    int calls, in_order, total;
+} progress_log;
+
+static void log_progress(void *user, int done, int total)
+{
+    progress_log *log = user;
+    log->calls++;
+    log->in_order &= done == log->calls && total == log->total;
+}
+
+/* One scene rendered again and again on changing thread counts (its worker
+ * pool kept, remade when the count changes): the same bytes and the same
+ * ray count every time, and the progress called once per tile, in order. */
+static void test_scene_threads(void)
+{
+    cg_camera cam;
+    cg_trace_options opt;
+    cg_trace_scene *scene = classic_view(cg_vec3_make(1, 2, 6), 2, &cam, &opt);
+    if (!scene)
+        return;
+    const int w = 70, h = 37, tiles = 5 * 3; /* tiles of 16 pixels */
+    cg_image *first, *again;
+    CHECK(cg_image_create(&first, w, h, CG_PIXEL_RGBA8) == CG_OK);
+    CHECK(cg_image_create(&again, w, h, CG_PIXEL_RGBA8) == CG_OK);
+    cg_trace_stats reference, stats;
+    CHECK(cg_trace_render(scene, &cam, &opt, first, &reference) == CG_OK);
+    static const int counts[] = {4, 2, 2, 7, 1, 3, 16, 2};
+    for (size_t i = 0; i < sizeof counts / sizeof *counts; i++) {
+        opt.threads = counts[i];
+        progress_log log = {0, 1, tiles};
+        opt.progress = log_progress;
+        opt.progress_user = &log;
+        CHECK(cg_trace_render(scene, &cam, &opt, again, &stats) == CG_OK);
+        CHECK_MSG(same_pixels(first, again), "%d threads: the picture differs from one thread's",
+                  counts[i]);
+        CHECK_EQ_INT(stats.rays, reference.rays);
+        CHECK_MSG(log.calls == tiles && log.in_order, "%d threads: %d progress calls (in order: %d)",
+                  counts[i], log.calls, log.in_order);
+    }
+    cg_image_free(first);
+    cg_image_free(again);
+    cg_trace_scene_free(scene);
+}
+
 static void test_scene(void)
 {
-    cg_trace_scene *scene;
-    CHECK(cg_trace_scene_classic(&scene) == CG_OK);
-    cg_camera cam = cg_camera_default();
-    cam.eye = cg_vec3_make(0, 2.5, 7);
-    cam.target = cg_vec3_make(0, 0.8, 0);
-    cg_trace_options opt = cg_trace_options_default();
-    opt.samples = 3;
+    cg_camera cam;
+    cg_trace_options opt;
+    cg_trace_scene *scene = classic_view(cg_vec3_make(0, 2.5, 7), 3, &cam, &opt);
+    if (!scene)
+        return;
     CHECK_MSG(render_equal(scene, &cam, opt, 45, 31), "classic scene differs between 1 and 3 threads");
     cg_trace_stats stats;
     cg_image *img;
@@ -532,6 +600,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(test_optics);
     CHECK_GROUP(test_bvh);
     CHECK_GROUP(test_scene);
+    CHECK_GROUP(test_scene_threads);
     CHECK_GROUP(test_mesh_input);
     CHECK_GROUP(test_index_one);
     CHECK_GROUP(test_shadow);

@@ -194,7 +194,7 @@ typedef struct prepared_vertex {
 } prepared_vertex;
 
 struct render_chunk;
-struct render_pool;
+struct core_worker_pool;
 
 struct cg_renderer {
     cg_render_options options;
@@ -214,7 +214,7 @@ struct cg_renderer {
     /* frame state */
     cg_camera camera;
     float *depth;
-    size_t depth_size;
+    size_t depth_capacity;    /* floats */
     int depth_valid;
     int depth_width, depth_height;
     cg_render_stats stats;
@@ -225,12 +225,13 @@ struct cg_renderer {
     atomic_uchar *frame_states;
     size_t frame_vertex_capacity, frame_attribute_capacity, frame_state_capacity;
     struct render_chunk *chunks;
-    int chunk_count;
+    int chunk_count;          /* chunks initialized */
+    size_t chunk_capacity;
     unsigned char *clean_tiles; /* per tile of the last frame's size: its depth
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
-    struct render_pool *pool;   /* worker threads kept between frames */
+    struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;           /* the thread count it was started for */
 };
 
@@ -263,7 +264,7 @@ typedef struct render_chunk {
     size_t setup_stride;        /* the frame->stride the capacity counts */
     uint32_t *bin_start;        /* tile_count + 1 */
     uint32_t *bin_fill;         /* tile_count */
-    size_t bin_start_capacity;  /* in tiles */
+    size_t bin_start_capacity, bin_fill_capacity;
     uint32_t *bin_list;         /* setup indices by tile */
     size_t bin_capacity;
     painter_polygon *polygons;  /* painter's only */
@@ -289,7 +290,7 @@ typedef struct render_frame {
     frame_vertex *vertices;
     float *attributes;          /* attribute_count per vertex, valid where */
     atomic_uchar *states;       /* ... the vertex's state is 2 (see
-                                   vertex_attributes in pipeline.c) */
+                                   vertex_attributes in pipeline.h) */
     int thread_count;
     render_chunk *chunks;       /* chunk_count triangle ranges, in mesh order */
     int chunk_count;

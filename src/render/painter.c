@@ -11,6 +11,7 @@
  * broken by splitting P (or Q) along the other's plane.  The tests run in
  * screen space (pixels, window depth), where the projection is parallel. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -26,7 +27,7 @@ typedef struct painter {
     const render_frame *f;
     painter_polygon *polygons;
     node *nodes;
-    size_t count, capacity, limit;
+    size_t count, polygon_capacity, node_capacity, limit;
     double depth_scale;
 } painter;
 
@@ -132,18 +133,11 @@ static int may_precede(const painter *pt, int p, int q)
 
 static int add_polygon(painter *pt, const painter_polygon *p)
 {
-    if (pt->count == pt->capacity) {
-        size_t capacity = pt->capacity * 2 + 16;
-        painter_polygon *polygons = realloc(pt->polygons, capacity * sizeof *polygons);
-        if (!polygons)
-            return -1;
-        pt->polygons = polygons;
-        node *nodes = realloc(pt->nodes, capacity * sizeof *nodes);
-        if (!nodes)
-            return -1;
-        pt->nodes = nodes;
-        pt->capacity = capacity;
-    }
+    if (core_array_reserve((void **)&pt->polygons, &pt->polygon_capacity, pt->count + 1,
+                           sizeof *pt->polygons) != CG_OK
+        || core_array_reserve((void **)&pt->nodes, &pt->node_capacity, pt->count + 1,
+                              sizeof *pt->nodes) != CG_OK)
+        return -1;
     pt->polygons[pt->count] = *p;
     memset(&pt->nodes[pt->count], 0, sizeof(node));
     describe(pt, (int)pt->count);
@@ -260,9 +254,9 @@ static void paint(painter *pt, int i)
     }
 }
 
-cg_status render_painter(render_frame *f)
+/* The image cleared to the background, the depth to +infinity. */
+static void clear_frame(render_frame *f)
 {
-    /* Clear, then gather the polygons of every chunk in mesh order. */
     for (int y = 0; y < f->height; y++) {
         float *z = f->depth + (size_t)y * f->width;
         unsigned char *row = f->image->data + (size_t)y * f->image->stride;
@@ -275,108 +269,124 @@ cg_status render_painter(render_frame *f)
                                                   f->background[2], f->background[3]};
         }
     }
-    painter pt;
-    memset(&pt, 0, sizeof pt);
-    pt.f = f;
-    pt.depth_scale = f->width > f->height ? f->width : f->height;
+}
+
+/* The polygons of every chunk, in mesh order, into pt, and the list of
+ * them sorted by farthest depth into *list (farthest first). */
+static cg_status gather_sorted(painter *pt, int *list)
+{
+    const render_frame *f = pt->f;
     size_t total = 0;
     for (int c = 0; c < f->chunk_count; c++)
         total += f->chunks[c].polygon_count;
     /* Splitting is bounded: past four times the input (plus a margin) the
      * remaining conflicts are painted in sorted order. */
-    pt.limit = total * 4 + 1024;
+    pt->limit = total * 4 + 1024;
     if (total > (size_t)1 << 28)
         return CG_ENOMEM;
-    cg_status status = CG_OK;
-    for (int c = 0; c < f->chunk_count && status == CG_OK; c++)
+    for (int c = 0; c < f->chunk_count; c++)
         for (size_t i = 0; i < f->chunks[c].polygon_count; i++)
-            if (add_polygon(&pt, &f->chunks[c].polygons[i]) < 0) {
-                status = CG_ENOMEM;
-                break;
-            }
-    sort_key *keys = malloc((pt.count ? pt.count : 1) * sizeof *keys);
+            if (add_polygon(pt, &f->chunks[c].polygons[i]) < 0)
+                return CG_ENOMEM;
+    sort_key *keys = malloc((pt->count ? pt->count : 1) * sizeof *keys);
     if (!keys)
-        status = CG_ENOMEM;
-    if (status != CG_OK) {
-        free(keys);
-        free(pt.polygons);
-        free(pt.nodes);
-        return status;
-    }
-    for (size_t i = 0; i < pt.count; i++) {
-        keys[i].zmax = pt.nodes[i].zmax;
+        return CG_ENOMEM;
+    for (size_t i = 0; i < pt->count; i++) {
+        keys[i].zmax = pt->nodes[i].zmax;
         keys[i].index = (int)i;
     }
-    qsort(keys, pt.count, sizeof *keys, by_far_depth);
-    int list = -1;
-    for (size_t i = pt.count; i-- > 0;)
-        push_front(&pt, &list, keys[i].index);
+    qsort(keys, pt->count, sizeof *keys, by_far_depth);
+    *list = -1;
+    for (size_t i = pt->count; i-- > 0;)
+        push_front(pt, list, keys[i].index);
     free(keys);
+    return CG_OK;
+}
+
+/* The pieces a (far) and b (near) of polygon `which` take its place in
+ * the list. */
+static void replace_by_pieces(painter *pt, int *list, int which, int a, int b)
+{
+    int before = pt->nodes[which].prev;
+    unlink_node(pt, list, which);
+    if (before < 0) {
+        push_front(pt, list, b);
+        push_front(pt, list, a);
+    } else {
+        int after = pt->nodes[before].next;
+        pt->nodes[a].prev = before;
+        pt->nodes[a].next = b;
+        pt->nodes[b].prev = a;
+        pt->nodes[b].next = after;
+        pt->nodes[before].next = a;
+        if (after >= 0)
+            pt->nodes[after].prev = b;
+    }
+    pt->nodes[a].floating = pt->nodes[b].floating = 1;
+}
+
+/* Newell's tests of the list's head P against every Q that overlaps it in
+ * depth: 0 when P may be painted now, 1 when the list changed (a Q moved in
+ * front of P, or a polygon was split: start again from the head), -1 when
+ * memory runs out. */
+static int settle_head(painter *pt, int *list, size_t *splits)
+{
+    int p = *list;
+    for (int q = pt->nodes[p].next; q >= 0; q = pt->nodes[q].next) {
+        if (pt->nodes[q].zmax <= pt->nodes[p].zmin) {
+            if (!pt->nodes[q].floating)
+                break; /* the sorted rest cannot overlap P in depth */
+            continue;
+        }
+        if (may_precede(pt, p, q))
+            continue;
+        /* P may hide part of Q: can Q go first instead? */
+        if (!pt->nodes[q].moved && (all_on_side(pt, q, p, -1) || all_on_side(pt, p, q, +1))) {
+            unlink_node(pt, list, q);
+            push_front(pt, list, q);
+            pt->nodes[q].moved = pt->nodes[q].floating = 1;
+            return 1;
+        }
+        /* A cycle or interpenetration: split one by the other's plane. */
+        int a, b, which = p, result = split(pt, p, q, &a, &b);
+        if (result == 0) {
+            which = q;
+            result = split(pt, q, p, &a, &b);
+        }
+        if (result < 0)
+            return -1;
+        if (result == 0)
+            continue; /* cannot be resolved: keep the sorted order */
+        ++*splits;
+        replace_by_pieces(pt, list, which, a, b);
+        return 1;
+    }
+    return 0;
+}
+
+cg_status render_painter(render_frame *f)
+{
+    clear_frame(f);
+    painter pt;
+    memset(&pt, 0, sizeof pt);
+    pt.f = f;
+    pt.depth_scale = f->width > f->height ? f->width : f->height;
+    int list = -1;
+    cg_status status = gather_sorted(&pt, &list);
     size_t splits = 0, painted = 0;
     int naive = f->o->algorithm == CG_RENDER_DEPTH_SORT;
-    while (list >= 0 && status == CG_OK) {
-        if (naive) {
-            int p = list;
-            unlink_node(&pt, &list, p);
-            paint(&pt, p);
-            continue;
-        }
-        int p = list, restart = 0;
-        for (int q = pt.nodes[p].next; q >= 0; q = pt.nodes[q].next) {
-            if (pt.nodes[q].zmax <= pt.nodes[p].zmin) {
-                if (!pt.nodes[q].floating)
-                    break; /* the sorted rest cannot overlap P in depth */
-                continue;
-            }
-            if (may_precede(&pt, p, q))
-                continue;
-            /* P may hide part of Q: can Q go first instead? */
-            if (!pt.nodes[q].moved && (all_on_side(&pt, q, p, -1) || all_on_side(&pt, p, q, +1))) {
-                unlink_node(&pt, &list, q);
-                push_front(&pt, &list, q);
-                pt.nodes[q].moved = pt.nodes[q].floating = 1;
-                restart = 1;
-                break;
-            }
-            /* A cycle or interpenetration: split one by the other's plane. */
-            int a, b, which = p, result = split(&pt, p, q, &a, &b);
-            if (result == 0) {
-                which = q;
-                result = split(&pt, q, p, &a, &b);
-            }
-            if (result < 0) {
+    while (status == CG_OK && list >= 0) {
+        int p = list;
+        if (!naive) {
+            int settled = settle_head(&pt, &list, &splits);
+            if (settled < 0)
                 status = CG_ENOMEM;
-                break;
-            }
-            if (result == 0)
-                continue; /* cannot be resolved: keep the sorted order */
-            splits++;
-            int before = pt.nodes[which].prev;
-            unlink_node(&pt, &list, which);
-            /* The pieces take the place of the polygon they came from, far
-             * piece first. */
-            if (before < 0) {
-                push_front(&pt, &list, b);
-                push_front(&pt, &list, a);
-            } else {
-                int after = pt.nodes[before].next;
-                pt.nodes[a].prev = before;
-                pt.nodes[a].next = b;
-                pt.nodes[b].prev = a;
-                pt.nodes[b].next = after;
-                pt.nodes[before].next = a;
-                if (after >= 0)
-                    pt.nodes[after].prev = b;
-            }
-            pt.nodes[a].floating = pt.nodes[b].floating = 1;
-            restart = 1;
-            break;
+            if (settled != 0)
+                continue;
         }
-        if (restart || status != CG_OK)
-            continue;
         unlink_node(&pt, &list, p);
         paint(&pt, p);
-        if (++painted % 4096 == 0 && f->o->progress)
+        if (!naive && ++painted % 4096 == 0 && f->o->progress)
             f->o->progress(f->o->progress_user, (double)painted / (double)pt.count);
     }
     f->splits = splits;

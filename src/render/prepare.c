@@ -247,6 +247,74 @@ void cg_renderer_free(cg_renderer *r)
     free(r);
 }
 
+/* Split vertices: corners of one vertex share a prepared vertex when their
+ * normal and colour agree exactly.  The prepared vertex of each corner goes
+ * to corner_vertex. */
+static void split_vertices(const cg_mesh *mesh, const cg_render_options *options,
+                           const incidence *in, const cg_vec3 *normals, cg_renderer *r,
+                           uint32_t *corner_vertex)
+{
+    size_t count = 0;
+    float first_color[3] = {0, 0, 0};
+    for (size_t v = 0; v < mesh->vertex_count; v++) {
+        size_t first = count;
+        float position[3];
+        to_float3(mesh->positions[v], position);
+        for (uint32_t i = in->vertex_start[v]; i < in->vertex_start[v + 1]; i++) {
+            uint32_t k = in->vertex_corner[i];
+            float normal[3], color[3];
+            to_float3(normals[k], normal);
+            corner_color(mesh, options, in->corner_face[k], k, color);
+            if (count == 0)
+                memcpy(first_color, color, sizeof color);
+            else if (memcmp(first_color, color, sizeof color) != 0)
+                r->varying_color = 1;
+            size_t found = count;
+            for (size_t j = first; j < count; j++)
+                if (same_vertex(&r->vertices[j], normal, color)) {
+                    found = j;
+                    break;
+                }
+            if (found == count) {
+                memcpy(r->vertices[count].position, position, sizeof position);
+                memcpy(r->vertices[count].normal, normal, sizeof normal);
+                memcpy(r->vertices[count].color, color, sizeof color);
+                count++;
+            }
+            corner_vertex[k] = (uint32_t)found;
+        }
+    }
+    r->vertex_count = count;
+}
+
+/* The triangles (of corner numbers until now) and the edges of each face
+ * in prepared vertices, the face of each triangle, and each face's
+ * triangle of largest area. */
+static void index_faces(const cg_mesh *mesh, const uint32_t *corner_vertex, cg_renderer *r)
+{
+    size_t t = 0, e = 0;
+    for (size_t f = 0; f < mesh->face_count; f++) {
+        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
+        double largest = -1;
+        for (uint32_t k = begin + 2; k < end; k++, t++) {
+            double area = corner_triangle_area(mesh, r->triangles[t]);
+            if (area > largest) {
+                largest = area;
+                r->face_triangle[f] = (uint32_t)t;
+            }
+            for (int j = 0; j < 3; j++)
+                r->triangles[t][j] = corner_vertex[r->triangles[t][j]];
+            r->triangle_face[t] = (uint32_t)f;
+        }
+        for (uint32_t k = begin; k < end; k++) {
+            r->edges[e][0] = corner_vertex[k];
+            r->edges[e][1] = corner_vertex[k + 1 < end ? k + 1 : begin];
+            r->edges[e++][2] = (uint32_t)f;
+        }
+    }
+    r->edge_count = e;
+}
+
 cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *options,
                              cg_renderer **out, cg_error *err)
 {
@@ -304,60 +372,8 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
         cg_renderer_free(r);
         return cg_error_set(err, status, "render: out of memory computing normals");
     }
-    /* Split vertices: corners of one vertex share a prepared vertex when
-     * their normal and colour agree exactly. */
-    size_t count = 0;
-    float first_color[3] = {0, 0, 0};
-    for (size_t v = 0; v < mesh->vertex_count; v++) {
-        size_t first = count;
-        float position[3];
-        to_float3(mesh->positions[v], position);
-        for (uint32_t i = in.vertex_start[v]; i < in.vertex_start[v + 1]; i++) {
-            uint32_t k = in.vertex_corner[i];
-            float normal[3], color[3];
-            to_float3(normals[k], normal);
-            corner_color(mesh, options, in.corner_face[k], k, color);
-            if (count == 0)
-                memcpy(first_color, color, sizeof color);
-            else if (memcmp(first_color, color, sizeof color) != 0)
-                r->varying_color = 1;
-            size_t found = count;
-            for (size_t j = first; j < count; j++)
-                if (same_vertex(&r->vertices[j], normal, color)) {
-                    found = j;
-                    break;
-                }
-            if (found == count) {
-                memcpy(r->vertices[count].position, position, sizeof position);
-                memcpy(r->vertices[count].normal, normal, sizeof normal);
-                memcpy(r->vertices[count].color, color, sizeof color);
-                count++;
-            }
-            corner_vertex[k] = (uint32_t)found;
-        }
-    }
-    r->vertex_count = count;
-    size_t t = 0, e = 0;
-    for (size_t f = 0; f < mesh->face_count; f++) {
-        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        double largest = -1;
-        for (uint32_t k = begin + 2; k < end; k++, t++) {
-            double area = corner_triangle_area(mesh, r->triangles[t]);
-            if (area > largest) {
-                largest = area;
-                r->face_triangle[f] = (uint32_t)t;
-            }
-            for (int j = 0; j < 3; j++)
-                r->triangles[t][j] = corner_vertex[r->triangles[t][j]];
-            r->triangle_face[t] = (uint32_t)f;
-        }
-        for (uint32_t k = begin; k < end; k++) {
-            r->edges[e][0] = corner_vertex[k];
-            r->edges[e][1] = corner_vertex[k + 1 < end ? k + 1 : begin];
-            r->edges[e++][2] = (uint32_t)f;
-        }
-    }
-    r->edge_count = e;
+    split_vertices(mesh, options, &in, normals, r, corner_vertex);
+    index_faces(mesh, corner_vertex, r);
     free(normals);
     free(corner_vertex);
     incidence_free(&in);

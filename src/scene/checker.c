@@ -13,6 +13,8 @@
  * sides of the edge get the same point, and the pieces' corners are merged by
  * position so that the renderer's smooth normals still join across them. */
 #include "checker.h"
+#include "../core/array.h"
+#include "../core/vector_order.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -29,25 +31,10 @@ typedef struct polygon_list {
 
 static int list_reserve(polygon_list *l, size_t points)
 {
-    if (l->point_count + points > l->point_capacity) {
-        size_t capacity = l->point_capacity ? 2 * l->point_capacity : 64;
-        while (capacity < l->point_count + points)
-            capacity *= 2;
-        cg_vec3 *p = realloc(l->points, capacity * sizeof *p);
-        if (!p)
-            return 0;
-        l->points = p;
-        l->point_capacity = capacity;
-    }
-    if (l->count + 2 > l->start_capacity) {
-        size_t capacity = l->start_capacity ? 2 * l->start_capacity : 16;
-        size_t *s = realloc(l->starts, capacity * sizeof *s);
-        if (!s)
-            return 0;
-        l->starts = s;
-        l->start_capacity = capacity;
-    }
-    return 1;
+    return core_array_reserve((void **)&l->points, &l->point_capacity, l->point_count + points,
+                              sizeof *l->points) == CG_OK
+           && core_array_reserve((void **)&l->starts, &l->start_capacity, l->count + 2,
+                                 sizeof *l->starts) == CG_OK;
 }
 
 /* Appends the polygon p[0..n) when it has at least three corners. */
@@ -82,21 +69,12 @@ static double coordinate(const checker_frame *frame, int axis, cg_vec3 p)
     return cg_vec3_dot(cg_vec3_sub(p, frame->origin), frame->axis[axis]) / frame->size;
 }
 
-/* Lexicographic order of points, so that an edge is cut the same way from
+/* The point of segment [a, b] at coordinate level (between theirs), from
+ * the ends in lexicographic order, so that an edge is cut the same way from
  * either face. */
-static int point_less(cg_vec3 a, cg_vec3 b)
-{
-    if (a.x != b.x)
-        return a.x < b.x;
-    if (a.y != b.y)
-        return a.y < b.y;
-    return a.z < b.z;
-}
-
-/* The point of segment [a, b] at coordinate level (between theirs). */
 static cg_vec3 cut(const checker_frame *frame, int axis, cg_vec3 a, cg_vec3 b, double level)
 {
-    if (point_less(b, a)) {
+    if (core_vec3_less(b, a)) {
         cg_vec3 t = a;
         a = b;
         b = t;
@@ -149,13 +127,8 @@ static cg_status split_axis(const checker_frame *frame, int axis, const polygon_
         }
         /* A slab at a time.  Each half-plane clip adds at most one corner per
          * crossing edge: 2n after the first, 4n after the second. */
-        if (6 * n > *room) {
-            cg_vec3 *grown = realloc(*scratch, 6 * n * sizeof *grown);
-            if (!grown)
-                return CG_ENOMEM;
-            *scratch = grown;
-            *room = 6 * n;
-        }
+        if (core_array_reserve((void **)scratch, room, 6 * n, sizeof **scratch) != CG_OK)
+            return CG_ENOMEM;
         cg_vec3 *low = *scratch, *slab = *scratch + 2 * n;
         for (double k = first; k <= last && k < hi; k++) {
             size_t a = clip_half(frame, axis, p, n, k, 1, low);
@@ -188,9 +161,9 @@ typedef struct keyed_point {
 static int compare_points(const void *a, const void *b)
 {
     const keyed_point *x = a, *y = b;
-    if (point_less(x->p, y->p))
+    if (core_vec3_less(x->p, y->p))
         return -1;
-    if (point_less(y->p, x->p))
+    if (core_vec3_less(y->p, x->p))
         return 1;
     return x->index < y->index ? -1 : x->index > y->index;
 }
@@ -212,7 +185,7 @@ static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pie
             keys[i] = (keyed_point){pieces->points[i], i};
         qsort(keys, n, sizeof *keys, compare_points);
         for (size_t i = 0; i < n; i++) {
-            if (i > 0 && (point_less(keys[i - 1].p, keys[i].p)))
+            if (i > 0 && (core_vec3_less(keys[i - 1].p, keys[i].p)))
                 unique++;
             id[keys[i].index] = (uint32_t)unique;
         }

@@ -93,7 +93,24 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     if (!out)
         return CG_EINVAL;
     *out = NULL;
-    if ((!positions && vertex_count) || (triangle_count && !positions) || threads < 1)
+    if (threads < 1)
+        return CG_EINVAL;
+    /* Two workers at most take part (the root's two subtrees); without the
+     * second (out of memory, no thread) the caller builds alone. */
+    core_worker_pool *pool = NULL;
+    if (threads > 1 && triangle_count >= PARALLEL_MIN
+        && core_worker_pool_create(2, &pool) != CG_OK)
+        pool = NULL;
+    cg_status status = trace_bvh_build(positions, vertex_count, indices, triangle_count, pool, out);
+    core_worker_pool_free(pool);
+    return status;
+}
+
+cg_status trace_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
+                          size_t triangle_count, core_worker_pool *pool, cg_bvh **out)
+{
+    *out = NULL;
+    if ((!positions && vertex_count) || (triangle_count && !positions))
         return CG_EINVAL;
     if (triangle_count > 0x7fffffffu)
         return CG_ERANGE;
@@ -131,7 +148,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
                  alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0};
     bvh_collapser c = {b.nodes, b.ids, positions, indices, NULL, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
-    if (!b.buf[1] || !b.ids || !b.nodes || !bvh_build_tree(&b, n, threads))
+    if (!b.buf[1] || !b.ids || !b.nodes || !bvh_build_tree(&b, n, pool))
         goto fail;
     size_t blocks = 0;
     for (size_t i = 0; i < b.node_count; i++)

@@ -3,11 +3,10 @@
  * plane of least A_left blocks(N_left) + A_right blocks(N_right) is found in
  * one sweep over the bins, and the references are partitioned into a second
  * buffer without branches on the side.  The root's two subtrees can be built
- * on two threads; the tree is the same either way. */
+ * on two workers of a worker pool; the tree is the same either way. */
 #include "bvh_internal.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 
 /* The triangle index a reference carries. */
@@ -380,73 +379,86 @@ static void build_node(bvh_builder *b, uint32_t index, size_t begin, size_t end,
     }
 }
 
-/* The right subtree of the root, built on a second thread into its own node
- * array and appended afterwards. */
-typedef struct subtree_job {
+/* The root's two subtrees as the two blocks of one phase: the left one
+ * into the builder's node array right after the root, the right one into
+ * its own array, appended afterwards.  Whichever worker claims a block
+ * builds it; the caller builds both when no other worker comes. */
+typedef struct subtree {
     bvh_builder b;
+    uint32_t root;
     size_t begin, end;
     bbox bounds, centroids;
+} subtree;
+
+typedef struct subtree_job {
+    core_worker_pool *pool;
+    core_worker_phase sides;
+    subtree side[2];
 } subtree_job;
 
-static void *build_subtree(void *arg)
+static void build_subtrees(void *context, int worker)
 {
-    subtree_job *j = arg;
-    uint32_t root = make_node(&j->b, &j->bounds);
-    build_node(&j->b, root, j->begin, j->end, j->bounds, j->centroids, 2, 1);
-    return NULL;
+    (void)worker;
+    subtree_job *j = context;
+    size_t k;
+    while (core_worker_pool_claim(&j->sides, &k)) {
+        subtree *s = &j->side[k];
+        build_node(&s->b, s->root, s->begin, s->end, s->bounds, s->centroids, 2, 1);
+        core_worker_pool_finish(j->pool, &j->sides);
+    }
 }
 
-/* The binary tree of the references in b->buf[0][0, n) into b->nodes (room
- * for 2 n - 1), the triangle of each leaf position into b->ids; with
- * threads > 1 the root's two subtrees are built at the same time.  The tree
- * is the same either way. */
-int bvh_build_tree(bvh_builder *out, size_t n, int threads)
+/* The right subtree's nodes after the left one's, its child links shifted. */
+static void append_subtree(bvh_builder *b, uint32_t root, const bvh_builder *right)
+{
+    uint32_t shift = (uint32_t)b->node_count;
+    b->nodes[root].offset = shift;
+    for (size_t i = 0; i < right->node_count; i++) {
+        bvh_node node = right->nodes[i];
+        if (!node.count)
+            node.offset += shift;
+        b->nodes[shift + i] = node;
+    }
+    b->node_count += right->node_count;
+}
+
+int bvh_build_tree(bvh_builder *out, size_t n, core_worker_pool *pool)
 {
     bbox bounds, centroids;
     range_bounds(out->buf[0], 0, n, &bounds, &centroids);
     bvh_builder b = *out;
     uint32_t root = make_node(&b, &bounds);
     split sp;
-    if (threads < 2 || n < PARALLEL_MIN
+    if (core_worker_pool_workers(pool) < 2 || n < PARALLEL_MIN
         || !choose_split(b.buf[0], b.buf[1], 0, n, &bounds, &centroids, 1, &sp)) {
         build_node(&b, root, 0, n, bounds, centroids, 1, 0);
         *out = b;
         return 1;
     }
-    size_t right_count = n - sp.mid;
     subtree_job job;
-    job.b = b;
-    job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
-    job.b.node_count = 0;
-    job.begin = sp.mid;
-    job.end = n;
-    job.bounds = sp.right;
-    job.centroids = sp.right_centroids;
-    pthread_t id;
-    int parallel = job.b.nodes && pthread_create(&id, NULL, build_subtree, &job) == 0;
-    uint32_t left = make_node(&b, &sp.left);
-    build_node(&b, left, 0, sp.mid, sp.left, sp.left_centroids, 2, 1);
-    if (parallel) {
-        pthread_join(id, NULL);
-    } else {
-        /* No second thread: the same subtree on this one. */
-        if (!job.b.nodes)
-            job.b.nodes = malloc((2 * right_count) * sizeof *job.b.nodes);
-        if (!job.b.nodes)
-            return 0;
-        build_subtree(&job);
-    }
-    /* Append the right subtree, shifting its child links. */
-    uint32_t shift = (uint32_t)b.node_count;
-    b.nodes[root].offset = shift;
-    for (size_t i = 0; i < job.b.node_count; i++) {
-        bvh_node node = job.b.nodes[i];
-        if (!node.count)
-            node.offset += shift;
-        b.nodes[shift + i] = node;
-    }
-    b.node_count += job.b.node_count;
-    free(job.b.nodes);
+    job.pool = pool;
+    core_worker_pool_phase_init(&job.sides, 2);
+    subtree *left = &job.side[0], *right = &job.side[1];
+    left->b = b;
+    left->root = make_node(&left->b, &sp.left);
+    left->begin = 0;
+    left->end = sp.mid;
+    left->bounds = sp.left;
+    left->centroids = sp.left_centroids;
+    right->b = b;
+    right->b.nodes = malloc((2 * (n - sp.mid)) * sizeof *right->b.nodes);
+    right->b.node_count = 0;
+    if (!right->b.nodes)
+        return 0;
+    right->root = make_node(&right->b, &sp.right);
+    right->begin = sp.mid;
+    right->end = n;
+    right->bounds = sp.right;
+    right->centroids = sp.right_centroids;
+    core_worker_pool_run(pool, build_subtrees, &job);
+    b = left->b;
+    append_subtree(&b, root, &right->b);
+    free(right->b.nodes);
     *out = b;
     return 1;
 }

@@ -7,6 +7,7 @@
 
 #include "internal.h"
 #include "simd4.h"
+#include "../core/worker_pool.h"
 
 #include <float.h>
 #include <stddef.h>
@@ -92,10 +93,10 @@ typedef struct bvh_builder {
 } bvh_builder;
 
 /* The binary tree of the references in b->buf[0][0, n) into b->nodes (room
- * for 2 n - 1), the triangle of each leaf position into b->ids; with
- * threads > 1 the root's two subtrees are built at the same time.  The tree
- * is the same either way.  0 when out of memory. */
-int bvh_build_tree(bvh_builder *out, size_t n, int threads);
+ * for 2 n - 1), the triangle of each leaf position into b->ids; on a pool
+ * of two workers or more the root's two subtrees are built at the same
+ * time.  The tree is the same either way.  0 when out of memory. */
+int bvh_build_tree(bvh_builder *out, size_t n, core_worker_pool *pool);
 
 /* ---- the 4-wide tree ------------------------------------------------------ */
 

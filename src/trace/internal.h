@@ -3,6 +3,7 @@
 #define CG_TRACE_INTERNAL_H
 
 #include "cg/trace.h"
+#include "../core/worker_pool.h"
 
 /* A node of the binary tree the build makes (32 bytes): bounds, and either
  * two children (count == 0: the left child follows this node, the right one
@@ -104,7 +105,20 @@ struct cg_trace_scene {
     size_t triangle_count, index_capacity, triangle_object_capacity;
     cg_bvh *bvh;
     int built;
+    /* The worker pool of the BVH build and of the renders (trace_scene_pool),
+     * kept until the thread count changes or the scene is freed. */
+    core_worker_pool *pool;
+    int pool_threads; /* the thread count it was made for */
 };
+
+/* The scene's worker pool for `threads` threads (the caller included),
+ * made or remade when the count changes; NULL (the caller alone) for one
+ * thread or when no pool can be made. */
+core_worker_pool *trace_scene_pool(cg_trace_scene *scene, int threads);
+
+/* cg_bvh_build_threads on a worker pool (NULL: the caller alone). */
+cg_status trace_bvh_build(const cg_vec3 *positions, size_t vertex_count, const uint32_t *indices,
+                          size_t triangle_count, core_worker_pool *pool, cg_bvh **out);
 
 typedef struct trace_hit {
     double t;

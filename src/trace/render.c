@@ -1,5 +1,6 @@
 /* Whitted-style ray tracing: local illumination with shadow rays, mirror
- * reflection and refraction, stratified supersampling, tiles on threads. */
+ * reflection and refraction, stratified supersampling, tiles claimed by the
+ * workers of the scene's worker pool (trace_scene_pool). */
 #include "internal.h"
 
 #include <pthread.h>
@@ -211,11 +212,13 @@ typedef struct job {
      * one unit of depth per unit, so t = depth * its length. */
     double depth_from, depth_to;
     int tiles_x, tiles_total;
-    int next_tile, done_tiles;
-    pthread_mutex_t lock;
-    uint64_t rays;
-    double *visibility; /* light_count per thread */
-    int next_slot;
+    core_worker_pool *pool;
+    core_worker_phase tiles;
+    uint64_t *rays;     /* per worker */
+    double *visibility; /* light_count per worker */
+    /* Progress: the tiles done, counted and reported one call at a time. */
+    pthread_mutex_t progress_lock;
+    int done_tiles;
 } job;
 
 static void render_pixel(const job *j, context *ctx, int x, int y)
@@ -258,35 +261,30 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
     cg_image_set(j->image, x, y, out);
 }
 
-static void *worker(void *arg)
+/* The tiles a worker claims, pixel by pixel; the rays it traced. */
+static void render_tiles(void *job_context, int worker)
 {
-    job *j = arg;
-    pthread_mutex_lock(&j->lock);
-    size_t slot = (size_t)j->next_slot++;
-    pthread_mutex_unlock(&j->lock);
-    context ctx = {j->scene, j->options, 0, j->visibility + slot * j->scene->light_count};
-    for (;;) {
-        pthread_mutex_lock(&j->lock);
-        int tile = j->next_tile++;
-        pthread_mutex_unlock(&j->lock);
-        if (tile >= j->tiles_total)
-            break;
+    job *j = job_context;
+    context ctx = {j->scene, j->options, 0,
+                   j->visibility + (size_t)worker * j->scene->light_count};
+    size_t claimed;
+    while (core_worker_pool_claim(&j->tiles, &claimed)) {
+        int tile = (int)claimed;
         int x0 = tile % j->tiles_x * TILE, y0 = tile / j->tiles_x * TILE;
         int x1 = x0 + TILE < j->image->width ? x0 + TILE : j->image->width;
         int y1 = y0 + TILE < j->image->height ? y0 + TILE : j->image->height;
         for (int y = y0; y < y1; y++)
             for (int x = x0; x < x1; x++)
                 render_pixel(j, &ctx, x, y);
-        pthread_mutex_lock(&j->lock);
-        j->done_tiles++;
-        if (j->options->progress)
+        core_worker_pool_finish(j->pool, &j->tiles);
+        if (j->options->progress) {
+            pthread_mutex_lock(&j->progress_lock);
+            j->done_tiles++;
             j->options->progress(j->options->progress_user, j->done_tiles, j->tiles_total);
-        pthread_mutex_unlock(&j->lock);
+            pthread_mutex_unlock(&j->progress_lock);
+        }
     }
-    pthread_mutex_lock(&j->lock);
-    j->rays += ctx.rays;
-    pthread_mutex_unlock(&j->lock);
-    return NULL;
+    j->rays[worker] = ctx.rays;
 }
 
 /* Primary rays from the shared camera at three image points; both the
@@ -366,30 +364,27 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
     if ((double)j.tiles_x * tiles_y > 0x7fffffff)
         return CG_ERANGE;
     j.tiles_total = j.tiles_x * tiles_y;
-    int threads = opt.threads < j.tiles_total ? opt.threads : j.tiles_total;
-    j.visibility = malloc(((size_t)threads * scene->light_count + 1) * sizeof *j.visibility);
-    if (!j.visibility)
-        return CG_ENOMEM;
-    if (pthread_mutex_init(&j.lock, NULL) != 0) {
+    j.pool = trace_scene_pool(scene, opt.threads);
+    int workers = core_worker_pool_workers(j.pool);
+    core_worker_pool_phase_init(&j.tiles, (size_t)j.tiles_total);
+    j.rays = calloc((size_t)workers, sizeof *j.rays);
+    j.visibility = malloc(((size_t)workers * scene->light_count + 1) * sizeof *j.visibility);
+    if (!j.rays || !j.visibility || pthread_mutex_init(&j.progress_lock, NULL) != 0) {
+        free(j.rays);
         free(j.visibility);
         return CG_ENOMEM;
     }
-    pthread_t ids[MAX_THREADS];
-    int started = 0;
-    for (int i = 1; i < threads; i++) {
-        if (pthread_create(&ids[started], NULL, worker, &j) != 0)
-            break; /* fewer threads: same picture, only slower */
-        started++;
-    }
-    worker(&j);
-    for (int i = 0; i < started; i++)
-        pthread_join(ids[i], NULL);
-    pthread_mutex_destroy(&j.lock);
+    core_worker_pool_run(j.pool, render_tiles, &j);
+    pthread_mutex_destroy(&j.progress_lock);
+    uint64_t rays = 0;
+    for (int i = 0; i < workers; i++)
+        rays += j.rays[i];
+    free(j.rays);
     free(j.visibility);
     if (stats) {
         stats->build_seconds = build;
         stats->render_seconds = seconds_since(&start);
-        stats->rays = j.rays;
+        stats->rays = rays;
     }
     return CG_OK;
 }

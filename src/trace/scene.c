@@ -3,6 +3,7 @@
  * Triangles of every mesh share one BVH (in world space); spheres and planes
  * are few and tested one by one. */
 #include "internal.h"
+#include "../core/array.h"
 #include "cg/render.h"
 
 #include <stdlib.h>
@@ -53,32 +54,39 @@ void cg_trace_scene_free(cg_trace_scene *scene)
     free(scene->indices);
     free(scene->triangle_object);
     cg_bvh_free(scene->bvh);
+    core_worker_pool_free(scene->pool);
     free(scene);
 }
 
-/* Grows *array of *capacity elements of size to hold need elements. */
-static int reserve(void **array, size_t *capacity, size_t need, size_t size)
+core_worker_pool *trace_scene_pool(cg_trace_scene *scene, int threads)
 {
-    if (need <= *capacity)
-        return 1;
-    size_t cap = *capacity ? *capacity : 8;
-    while (cap < need) {
-        if (cap > SIZE_MAX / 2 / size)
-            return 0;
-        cap *= 2;
+    if (threads < 2)
+        return NULL;
+    if (scene->pool_threads != threads) {
+        core_worker_pool_free(scene->pool);
+        if (core_worker_pool_create(threads, &scene->pool) != CG_OK)
+            scene->pool = NULL;
+        scene->pool_threads = threads;
     }
-    void *p = realloc(*array, cap * size);
-    if (!p)
-        return 0;
-    *array = p;
-    *capacity = cap;
-    return 1;
+    return scene->pool;
+}
+
+/* An object of the kind with its material and centre (a plane's point),
+ * everything else zero. */
+static trace_object object_of(trace_kind kind, const cg_trace_material *material, cg_vec3 center)
+{
+    trace_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = kind;
+    o.material = *material;
+    o.center = center;
+    return o;
 }
 
 static cg_status add_object(cg_trace_scene *scene, const trace_object *object)
 {
-    if (!reserve((void **)&scene->objects, &scene->object_capacity, scene->object_count + 1,
-                 sizeof *scene->objects))
+    if (core_array_reserve((void **)&scene->objects, &scene->object_capacity,
+                           scene->object_count + 1, sizeof *scene->objects) != CG_OK)
         return CG_ENOMEM;
     scene->objects[scene->object_count++] = *object;
     cg_bvh_free(scene->bvh);
@@ -125,19 +133,16 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
     size_t v0 = scene->vertex_count, t0 = scene->triangle_count;
     if (mesh->vertex_count > UINT32_MAX - v0 || triangles > 0x7fffffff - t0)
         return CG_ERANGE;
-    size_t normal_capacity = scene->normal_capacity;
-    size_t object_capacity = scene->triangle_object_capacity;
-    if (!reserve((void **)&scene->positions, &scene->vertex_capacity, v0 + mesh->vertex_count,
-                 sizeof *scene->positions)
-        || !reserve((void **)&scene->normals, &normal_capacity, 3 * (t0 + triangles),
-                    sizeof *scene->normals)
-        || !reserve((void **)&scene->indices, &scene->index_capacity, 3 * (t0 + triangles),
-                    sizeof *scene->indices)
-        || !reserve((void **)&scene->triangle_object, &object_capacity, t0 + triangles,
-                    sizeof *scene->triangle_object))
+    if (core_array_reserve((void **)&scene->positions, &scene->vertex_capacity,
+                           v0 + mesh->vertex_count, sizeof *scene->positions) != CG_OK
+        || core_array_reserve((void **)&scene->normals, &scene->normal_capacity,
+                              3 * (t0 + triangles), sizeof *scene->normals) != CG_OK
+        || core_array_reserve((void **)&scene->indices, &scene->index_capacity,
+                              3 * (t0 + triangles), sizeof *scene->indices) != CG_OK
+        || core_array_reserve((void **)&scene->triangle_object,
+                              &scene->triangle_object_capacity, t0 + triangles,
+                              sizeof *scene->triangle_object) != CG_OK)
         return CG_ENOMEM;
-    scene->normal_capacity = normal_capacity;
-    scene->triangle_object_capacity = object_capacity;
     /* Normals at face corners: the file's vertex normals, or the
      * renderer's crease-angle normals (cg/render.h) when it has none. */
     cg_vec3 *corner = NULL;
@@ -158,10 +163,7 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         return CG_ENOMEM;
     }
 
-    trace_object object;
-    memset(&object, 0, sizeof object);
-    object.kind = TRACE_MESH;
-    object.material = *material;
+    trace_object object = object_of(TRACE_MESH, material, cg_vec3_make(0, 0, 0));
     uint32_t object_index = (uint32_t)scene->object_count;
     for (size_t i = 0; i < mesh->vertex_count; i++)
         scene->positions[v0 + i] = cg_mat4_transform_point(model, mesh->positions[i]);
@@ -194,11 +196,7 @@ cg_status cg_trace_scene_add_sphere(cg_trace_scene *scene, cg_vec3 center, doubl
     if (!scene || !material || !material_valid(material) || !finite3(center) || !isfinite(radius)
         || radius < 0)
         return CG_EINVAL;
-    trace_object o;
-    memset(&o, 0, sizeof o);
-    o.kind = TRACE_SPHERE;
-    o.material = *material;
-    o.center = center;
+    trace_object o = object_of(TRACE_SPHERE, material, center);
     o.radius = radius;
     o.to_world = transform ? *transform : cg_mat4_identity();
     if (!affine(&o.to_world) || cg_mat4_inverse(o.to_world, &o.to_object) != CG_OK)
@@ -214,11 +212,7 @@ cg_status cg_trace_scene_add_plane(cg_trace_scene *scene, cg_vec3 point, cg_vec3
     if (!scene || !material || !material_valid(material) || !finite3(point) || !finite3(normal)
         || !(cg_vec3_length(normal) > 0))
         return CG_EINVAL;
-    trace_object o;
-    memset(&o, 0, sizeof o);
-    o.kind = TRACE_PLANE;
-    o.material = *material;
-    o.center = point;
+    trace_object o = object_of(TRACE_PLANE, material, point);
     o.plane_normal = cg_vec3_normalize(normal);
     /* Two axes in the plane for its checker pattern. */
     cg_vec3 helper = fabs(o.plane_normal.x) < 0.9 ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);
@@ -231,8 +225,8 @@ cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light)
 {
     if (!scene || !light || cg_light_check(light, NULL) != CG_OK)
         return CG_EINVAL;
-    if (!reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count + 1,
-                 sizeof *scene->lights))
+    if (core_array_reserve((void **)&scene->lights, &scene->light_capacity,
+                           scene->light_count + 1, sizeof *scene->lights) != CG_OK)
         return CG_ENOMEM;
     scene->lights[scene->light_count++] = *light;
     return CG_OK;
@@ -244,8 +238,8 @@ cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_ar
         || !finite3(light->edge_v) || !finite3(light->color) || light->color.x < 0
         || light->color.y < 0 || light->color.z < 0 || light->samples < 1 || light->samples > 64)
         return CG_EINVAL;
-    if (!reserve((void **)&scene->area_lights, &scene->area_light_capacity,
-                 scene->area_light_count + 1, sizeof *scene->area_lights))
+    if (core_array_reserve((void **)&scene->area_lights, &scene->area_light_capacity,
+                           scene->area_light_count + 1, sizeof *scene->area_lights) != CG_OK)
         return CG_ENOMEM;
     scene->area_lights[scene->area_light_count++] = *light;
     return CG_OK;
@@ -260,9 +254,9 @@ cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *secon
     if (!scene->built) {
         cg_bvh_free(scene->bvh);
         scene->bvh = NULL;
-        cg_status status = cg_bvh_build_threads(scene->positions, scene->vertex_count,
-                                                scene->indices, scene->triangle_count,
-                                                threads, &scene->bvh);
+        cg_status status = trace_bvh_build(scene->positions, scene->vertex_count,
+                                           scene->indices, scene->triangle_count,
+                                           trace_scene_pool(scene, threads), &scene->bvh);
         if (status != CG_OK)
             return status;
         scene->built = 1;
@@ -273,26 +267,32 @@ cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *secon
     return CG_OK;
 }
 
+/* A box growing to hold points; empty until the first finite point. */
+typedef struct bounds_box {
+    int any;
+    cg_vec3 lo, hi;
+} bounds_box;
+
+/* Grows box to hold p; points that are not finite are left out. */
+static inline void bounds_add(bounds_box *box, cg_vec3 p)
+{
+    if (!finite3(p))
+        return;
+    if (!box->any) {
+        box->lo = box->hi = p;
+        box->any = 1;
+    }
+    box->lo = cg_vec3_make(fmin(box->lo.x, p.x), fmin(box->lo.y, p.y), fmin(box->lo.z, p.z));
+    box->hi = cg_vec3_make(fmax(box->hi.x, p.x), fmax(box->hi.y, p.y), fmax(box->hi.z, p.z));
+}
+
 cg_status cg_trace_scene_bounds(const cg_trace_scene *scene, cg_vec3 *lo, cg_vec3 *hi)
 {
     if (!scene || !lo || !hi)
         return CG_EINVAL;
-    int any = 0;
-    cg_vec3 a = {0, 0, 0}, b = {0, 0, 0};
-#define GROW(p)                                                                          \
-    do {                                                                                 \
-        cg_vec3 q_ = (p);                                                                \
-        if (finite3(q_)) {                                                               \
-            if (!any) {                                                                  \
-                a = b = q_;                                                              \
-                any = 1;                                                                 \
-            }                                                                            \
-            a = cg_vec3_make(fmin(a.x, q_.x), fmin(a.y, q_.y), fmin(a.z, q_.z));         \
-            b = cg_vec3_make(fmax(b.x, q_.x), fmax(b.y, q_.y), fmax(b.z, q_.z));         \
-        }                                                                                \
-    } while (0)
+    bounds_box box = {0, {0, 0, 0}, {0, 0, 0}};
     for (size_t i = 0; i < 3 * scene->triangle_count; i++)
-        GROW(scene->positions[scene->indices[i]]);
+        bounds_add(&box, scene->positions[scene->indices[i]]);
     for (size_t i = 0; i < scene->object_count; i++) {
         const trace_object *o = &scene->objects[i];
         if (o->kind != TRACE_SPHERE || o->radius == 0)
@@ -301,14 +301,13 @@ cg_status cg_trace_scene_bounds(const cg_trace_scene *scene, cg_vec3 *lo, cg_vec
             cg_vec3 c = cg_vec3_make(corner & 1 ? o->radius : -o->radius,
                                      corner & 2 ? o->radius : -o->radius,
                                      corner & 4 ? o->radius : -o->radius);
-            GROW(cg_mat4_transform_point(o->to_world, cg_vec3_add(o->center, c)));
+            bounds_add(&box, cg_mat4_transform_point(o->to_world, cg_vec3_add(o->center, c)));
         }
     }
-#undef GROW
-    if (!any)
+    if (!box.any)
         return CG_EEMPTY;
-    *lo = a;
-    *hi = b;
+    *lo = box.lo;
+    *hi = box.hi;
     return CG_OK;
 }
 

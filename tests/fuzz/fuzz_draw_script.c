@@ -1,5 +1,5 @@
-/* libFuzzer target: the `cg draw` script language (tools/cg/draw_script.c
- * and every command group, tools/cg/drawcmds_*.c): the text is tokenised
+/* libFuzzer target: the `cg draw` script language (tools/cg/draw/draw_script.c
+ * and every command group, tools/cg/draw/drawcmds_*.c): the text is tokenised
  * and run as `cg draw` runs it.  A script either draws a canvas or stops at
  * an error message; AddressSanitizer and UBSan check everything between
  * (number conversions, canvas bounds, the fill and stroke state).

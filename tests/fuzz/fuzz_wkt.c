@@ -1,4 +1,4 @@
-/* libFuzzer target: the WKT reader of `cg clip` (tools/cg/clip_view.c),
+/* libFuzzer target: the WKT reader of `cg clip` (tools/cg/commands/clip_view.c),
  * then the boolean union the command runs on what it read, as `cg clip
  * boolean A B` does with an empty B.  A text that fails must say so with a
  * message naming it; one that parses must give a union that succeeds (or is

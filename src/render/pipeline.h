@@ -1,0 +1,111 @@
+/* What the stages of the z-buffer pipeline share.  One frame runs them in
+ * this order, each stage in its own file:
+ *
+ *   vertex_stage.c    transform every vertex, classify it against the view
+ *                     volume, project and snap the ones inside
+ *   triangle_stage.c  per triangle: reject, cull, clip (clip.c), set up
+ *                     (setup.c) and append to its chunk's list
+ *   binning.c         per chunk: the list of its triangles on each tile
+ *   rasterizer.c      per tile: every triangle binned there, in mesh order,
+ *                     through the edge functions and the depth test
+ *   team.c            the phases above as blocks taken by a team of threads
+ *   frame.c           one frame: camera, lights, buffers, then the team
+ *
+ * The types of a frame (render_frame, render_chunk) are in internal.h, which
+ * the painter's algorithm and the edge drawing share too. */
+#ifndef CG_RENDER_PIPELINE_H
+#define CG_RENDER_PIPELINE_H
+
+#include "internal.h"
+#include "../core/array.h"
+
+#include <stdatomic.h>
+
+/* Shading modes (the values of cg_shading). */
+enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
+
+#define VERTEX_BLOCK 4096   /* vertices taken at a time */
+#define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */
+#define MAX_CHUNKS 64
+
+/* ---- vertex stage (vertex_stage.c) ---------------------------------------- */
+
+/* Clip coordinates of a prepared position (double, so that clipping and
+ * snapping see the exact product). */
+static inline void clip_of(const render_frame *f, const float p[3], double c[4])
+{
+    double x = p[0], y = p[1], z = p[2];
+    for (int k = 0; k < 4; k++)
+        c[k] = f->mvp.m[k][0] * x + f->mvp.m[k][1] * y + f->mvp.m[k][2] * z + f->mvp.m[k][3];
+}
+
+static inline void world_of(const render_frame *f, const float p[3], float out[3])
+{
+    double x = p[0], y = p[1], z = p[2];
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)(f->model.m[k][0] * x + f->model.m[k][1] * y + f->model.m[k][2] * z
+                         + f->model.m[k][3]);
+}
+
+/* Classifies, projects and snaps vertices [begin, end) and marks their
+ * attributes not yet computed. */
+void render_vertex_stage(render_frame *f, size_t begin, size_t end);
+
+/* The attributes of vertex i (its lit colour for Gouraud; normal, world
+ * position and colour for Phong) into out. */
+void render_compute_attributes(const render_frame *f, size_t i, float *out);
+
+/* The attributes of vertex i, computed the first time a triangle that is
+ * drawn needs them: most vertices of a large mesh belong only to back faces
+ * or to triangles that cover no pixel centre, and are never lit.  The
+ * thread that moves the vertex's state from 0 to 1 computes them into the
+ * frame's array and publishes them (state 2); a thread that finds them in
+ * the making computes its own copy into local (the same bits: the same
+ * function of the same inputs), so nobody waits for anybody.  Inline: the
+ * triangle stage asks for three per triangle, and most are ready. */
+static inline const float *vertex_attributes(const render_frame *f, uint32_t i, float *local)
+{
+    float *a = f->attributes + (size_t)i * (size_t)f->attribute_count;
+    unsigned char state = atomic_load_explicit(&f->states[i], memory_order_acquire);
+    if (state == 2)
+        return a;
+    if (state == 0 && atomic_compare_exchange_strong_explicit(&f->states[i], &state, 1,
+                                                              memory_order_acquire,
+                                                              memory_order_acquire)) {
+        render_compute_attributes(f, i, a);
+        atomic_store_explicit(&f->states[i], 2, memory_order_release);
+        return a;
+    }
+    if (state == 2)
+        return a;
+    render_compute_attributes(f, i, local);
+    return local;
+}
+
+/* ---- triangle stage and binning (triangle_stage.c, binning.c) ------------- */
+
+/* Rejects, culls, clips and sets up the triangles of chunk c, appending
+ * them to its list (or, for the painter's algorithm, its polygons). */
+void render_triangle_stage(render_frame *f, render_chunk *c, int painter);
+
+/* Tile lists of one chunk (counting sort by tile, mesh order kept), in
+ * buffers kept from frame to frame. */
+void render_bin_chunk(render_frame *f, render_chunk *c);
+
+/* ---- the tiles (clear.c) and the team of threads (team.c) ------------------- */
+
+/* Clears a rectangle to the background colour and (with depth) infinite
+ * depth; tiles no triangle touches are streamed past the caches (stream),
+ * which saves reading their lines first and keeps the caches for the tiles
+ * drawn. */
+void render_clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stream, int depth);
+
+/* One frame's vertex, triangle and tile phases on the renderer's threads
+ * (its pool, started or restarted for frame->thread_count); the fragment
+ * count of the tiles goes to *fragments. */
+void render_run_phases(render_frame *f, int painter, size_t *fragments);
+
+/* Stops the renderer's threads (none: nothing to do). */
+void render_team_stop(cg_renderer *r);
+
+#endif

@@ -1,6 +1,8 @@
 /* cg svg IN.svg -o OUT.png [--width W | --height H | --zoom Z] [--background COLOR] */
 #include "cli.h"
 #include "command.h"
+
+#include <stddef.h>
 #include "cg/fill.h"
 #include "cg/svg.h"
 
@@ -34,50 +36,53 @@ static int output_size(double doc_w, double doc_h, double width, double height, 
     return 0;
 }
 
+typedef struct svg_arguments {
+    const char *output;
+    double width, height, zoom;
+    cg_rgba8 background;
+    int width_given, height_given, zoom_given, background_given;
+} svg_arguments;
+
+static const cli_option svg_options[] = {
+    CLI_OPTION_OUTPUT(svg_arguments, output, "OUT", "the image to write (required): .png, .ppm or .pgm"),
+    {.name = "--width", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, width),
+     .value_name = "W", .given = CLI_GIVEN(svg_arguments, width_given), .low = 0,
+     .high = CG_IMAGE_MAX_SIDE, .open = CLI_OPEN_LOW,
+     .range_text = "a number > 0 and at most 16777216",
+     .help = "W pixels wide, the height keeping the aspect"},
+    {.name = "--height", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, height),
+     .value_name = "H", .given = CLI_GIVEN(svg_arguments, height_given), .low = 0,
+     .high = CG_IMAGE_MAX_SIDE, .open = CLI_OPEN_LOW,
+     .range_text = "a number > 0 and at most 16777216",
+     .help = "H pixels high, the width keeping the aspect"},
+    {.name = "--zoom", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, zoom),
+     .value_name = "Z", .given = CLI_GIVEN(svg_arguments, zoom_given), .low = 0, .high = 1e6,
+     .open = CLI_OPEN_LOW, .range_text = "a number > 0",
+     .help = "Z times the document's size (default 1)"},
+    {.name = "--background", .kind = CLI_COLOR, .offset = offsetof(svg_arguments, background),
+     .value_name = "COLOR", .given = CLI_GIVEN(svg_arguments, background_given),
+     .help = "the colour under the picture (default transparent)"},
+};
+static const cli_option_group svg_groups[] = {CLI_GROUP(NULL, svg_options), {0}};
+static const cli_syntax svg_syntax = {
+    .command = "svg", .groups = svg_groups, .max_positionals = 1,
+    .too_many = "expected one input file, got '%s' as a second",
+};
+static const cli_syntax *const svg_syntaxes[] = {&svg_syntax, NULL};
+
 static int run(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    double width = 0, height = 0, zoom = 0;
-    int sized = 0, have_background = 0;
-    cg_rgba8 background = {0, 0, 0, 0};
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (cli_option_is(a, "-o") || cli_option_is(a, "--output")) {
-            if (!(out = cli_option_value("svg", argc, argv, &i)))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--width") || cli_option_is(a, "--height")
-                   || cli_option_is(a, "--zoom")) {
-            const char *name = cli_option_is(a, "--width") ? "--width"
-                               : cli_option_is(a, "--height") ? "--height" : "--zoom";
-            if (sized++)
-                return cli_usage_error("svg", "give one of --width, --height and --zoom");
-            const char *v = cli_option_value("svg", argc, argv, &i);
-            double d;
-            if (!v || cli_parse_double("svg", name, v, &d))
-                return CLI_USAGE;
-            if (!(d > 0) || d > (strcmp(name, "--zoom") == 0 ? 1e6 : CG_IMAGE_MAX_SIDE))
-                return cli_usage_error("svg", "%s: expected a number > 0%s, got '%s'", name,
-                                       strcmp(name, "--zoom") == 0 ? "" : " and at most 16777216",
-                                       v);
-            if (strcmp(name, "--width") == 0)
-                width = d;
-            else if (strcmp(name, "--height") == 0)
-                height = d;
-            else
-                zoom = d;
-        } else if (cli_option_is(a, "--background")) {
-            const char *v = cli_option_value("svg", argc, argv, &i);
-            if (!v || cli_parse_color("svg", "--background", v, &background))
-                return CLI_USAGE;
-            have_background = 1;
-        } else if (cli_is_option(a)) {
-            return cli_usage_error("svg", "unknown option '%s'", a);
-        } else if (in) {
-            return cli_usage_error("svg", "expected one input file, got '%s' as a second", a);
-        } else {
-            in = a;
-        }
-    }
+    svg_arguments a = {NULL, 0, 0, 0, {0, 0, 0, 0}, 0, 0, 0, 0};
+    const char *in = NULL;
+    if (cli_parse(&svg_syntax, argc, argv, &a, &in, NULL) != CLI_OK)
+        return CLI_USAGE;
+    const char *out = a.output;
+    if (a.width_given + a.height_given + a.zoom_given > 1)
+        return cli_usage_error("svg", "give one of --width, --height and --zoom");
+    double width = a.width_given ? a.width : 0, height = a.height_given ? a.height : 0;
+    double zoom = a.zoom_given ? a.zoom : 0;
+    int have_background = a.background_given > 0;
+    cg_rgba8 background = a.background;
     if (!in)
         return cli_usage_error("svg", "expected an input file IN.svg");
     if (!out)
@@ -134,6 +139,7 @@ const cg_command cg_command_svg = {
     "the factor Z.  It is transparent unless --background gives a colour\n"
     "(#rrggbb, #rrggbbaa or a name).  Unsupported content (filters, text,\n"
     "patterns, markers, animation, scripts, other files) is skipped with one\n"
-    "warning for each kind on stderr; nothing is ever fetched.\n",
+    "warning for each kind on stderr; nothing is ever fetched.  See docs/svg.md.\n",
     run,
+    svg_syntaxes,
 };

@@ -497,6 +497,23 @@ static void hostile(void)
     }
     strcat(tree, "</defs><use href='#l12'/></svg>");
     CHECK(load_status(tree, &err) == CG_EFORMAT && strstr(err.message, "more than 2000000"));
+    /* style sheets whose matching would take minutes: 2000 rules that
+     * each search 200 ancestors for every one of 1000 elements */
+    size_t room = 2000 * 40 + 1000 * 48 + 200 * 8 + 256;
+    char *sheet = malloc(room), *at = sheet;
+    at += sprintf(at, "%s", HEAD "><style>");
+    for (int i = 0; i < 2000; i++)
+        at += sprintf(at, "x g g g g g rect { fill: red }\n");
+    at += sprintf(at, "</style>");
+    for (int i = 0; i < 200; i++)
+        at += sprintf(at, "<g>");
+    for (int i = 0; i < 1000; i++)
+        at += sprintf(at, "<rect width='1' height='1'/>");
+    for (int i = 0; i < 200; i++)
+        at += sprintf(at, "</g>");
+    sprintf(at, "</svg>");
+    CHECK(load_status(sheet, &err) == CG_ERANGE && strstr(err.message, "selector steps"));
+    free(sheet);
     /* malformed XML, another root, nothing at all */
     CHECK(load_status("<svg><g></svg>", &err) == CG_EFORMAT
           && strstr(err.message, "bad.svg:1: malformed XML: mismatched tag"));

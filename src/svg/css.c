@@ -68,9 +68,19 @@ static char *trim(char *s, char *end)
     return s;
 }
 
-/* Parses "name: value; ..." in place (text is owned and writable). */
-static void declare_in_place(char *text, svg_node *node, unsigned long long rank,
-                             unsigned long long important_rank)
+/* One declaration of a rule, parsed once. */
+typedef struct css_declaration {
+    svg_property property;
+    const char *value;
+    int important;
+} css_declaration;
+
+typedef CORE_ARRAY(css_declaration) css_declarations;
+
+/* Parses "name: value; ..." in place (text is owned and writable): onto
+ * node when it is set, else into list. */
+static cg_status declare_in_place(char *text, svg_node *node, unsigned long long rank,
+                                  unsigned long long important_rank, css_declarations *list)
 {
     char *s = text;
     while (*s) {
@@ -89,12 +99,20 @@ static void declare_in_place(char *text, svg_node *node, unsigned long long rank
                 value = trim(value, bang);
                 r = important_rank;
             }
-            declare(node, svg_property_of(name, strlen(name)), value, r);
+            svg_property p = svg_property_of(name, strlen(name));
+            if (node) {
+                declare(node, p, value, r);
+            } else if (p < SVG_PROPERTY_COUNT) {
+                css_declaration d = {p, value, r == important_rank && bang != NULL};
+                if (core_array_push(list, d) != CG_OK)
+                    return CG_ENOMEM;
+            }
         }
         if (last)
             break;
         s = end + 1;
     }
+    return CG_OK;
 }
 
 cg_status svg_declare_list(cg_svg *svg, svg_node *node, const char *text, size_t length,
@@ -103,8 +121,7 @@ cg_status svg_declare_list(cg_svg *svg, svg_node *node, const char *text, size_t
     char *copy = owned_copy(svg, text, length);
     if (!copy)
         return CG_ENOMEM;
-    declare_in_place(copy, node, rank, important_rank);
-    return CG_OK;
+    return declare_in_place(copy, node, rank, important_rank, NULL);
 }
 
 /* ---- sheets ---------------------------------------------------------------------- */
@@ -128,11 +145,22 @@ typedef struct css_selector {
 
 typedef struct css_rule {
     css_selector selector;
-    char *declarations; /* owned text, parsed for each element it matches */
+    size_t first, count; /* its declarations in the sheet's list */
     unsigned order;
 } css_rule;
 
-typedef CORE_ARRAY(css_rule) css_rules;
+/* The style sheets' rules and their declarations; steps bounds the work
+ * of matching selectors (elements times rules times ancestors). */
+typedef struct css_sheet {
+    CORE_ARRAY(css_rule) rules;
+    css_declarations declarations;
+    double steps;
+} css_sheet;
+
+/* At most this many rules in all sheets, and this many selector steps:
+ * a hostile sheet on a large file cannot take minutes. */
+#define CSS_MAX_RULES 100000
+#define CSS_MAX_STEPS 2e8
 
 static int name_char(char c)
 {
@@ -232,9 +260,10 @@ static int compound_matches(const css_compound *c, const svg_node *node)
 
 /* Right to left: the last compound on the node, each one before on its
  * parent (child) or the nearest matching ancestor (descendant). */
-static int selector_matches(const css_selector *s, const svg_node *node)
+static int selector_matches(const css_selector *s, const svg_node *node, double *steps)
 {
     int i = s->count - 1;
+    *steps += 1;
     if (!compound_matches(&s->parts[i], node))
         return 0;
     const svg_node *at = node;
@@ -245,9 +274,10 @@ static int selector_matches(const css_selector *s, const svg_node *node)
             if (!at || !compound_matches(before, at))
                 return 0;
         } else {
-            do
+            do {
                 at = at->parent;
-            while (at && !compound_matches(before, at));
+                *steps += 1;
+            } while (at && !compound_matches(before, at));
             if (!at)
                 return 0;
         }
@@ -282,7 +312,7 @@ static void strip_comments(char *s)
     *w = 0;
 }
 
-static cg_status parse_sheet(cg_svg *svg, svg_node *style, css_rules *rules)
+static cg_status parse_sheet(cg_svg *svg, svg_node *style, css_sheet *sheet)
 {
     const char *type = svg_attribute_value(style, "type");
     if (type && *type && strcmp(type, "text/css") != 0)
@@ -316,7 +346,9 @@ static cg_status parse_sheet(cg_svg *svg, svg_node *style, css_rules *rules)
         char *after = *close ? close + 1 : close;
         *open = 0;
         *close = 0;
-        char *declarations = open + 1;
+        size_t first = sheet->declarations.count;
+        if (declare_in_place(open + 1, NULL, 0, 1, &sheet->declarations) != CG_OK)
+            return CG_ENOMEM;
         /* each selector of the list is a rule of its own */
         char *selector = s;
         while (selector) {
@@ -324,10 +356,13 @@ static cg_status parse_sheet(cg_svg *svg, svg_node *style, css_rules *rules)
             if (comma)
                 *comma = 0;
             css_rule rule;
-            rule.declarations = declarations;
-            rule.order = (unsigned)rules->count;
-            if (parse_selector(selector, &rule.selector)
-                && core_array_push(rules, rule) != CG_OK)
+            rule.first = first;
+            rule.count = sheet->declarations.count - first;
+            rule.order = (unsigned)sheet->rules.count;
+            if (sheet->rules.count >= CSS_MAX_RULES)
+                return CG_ERANGE;
+            if (rule.count && parse_selector(selector, &rule.selector)
+                && core_array_push(&sheet->rules, rule) != CG_OK)
                 return CG_ENOMEM;
             selector = comma ? comma + 1 : NULL;
         }
@@ -336,19 +371,19 @@ static cg_status parse_sheet(cg_svg *svg, svg_node *style, css_rules *rules)
     return CG_OK;
 }
 
-static cg_status gather_sheets(cg_svg *svg, svg_node *node, css_rules *rules)
+static cg_status gather_sheets(cg_svg *svg, svg_node *node, css_sheet *sheet)
 {
     for (; node; node = node->next) {
         cg_status status = strcmp(node->name, "style") == 0
-                               ? parse_sheet(svg, node, rules)
-                               : gather_sheets(svg, node->first_child, rules);
+                               ? parse_sheet(svg, node, sheet)
+                               : gather_sheets(svg, node->first_child, sheet);
         if (status != CG_OK)
             return status;
     }
     return CG_OK;
 }
 
-static cg_status cascade(cg_svg *svg, svg_node *node, const css_rules *rules)
+static cg_status cascade(cg_svg *svg, svg_node *node, css_sheet *sheet)
 {
     for (; node; node = node->next) {
         for (int i = 0; i < node->attribute_count; i++) {
@@ -357,18 +392,20 @@ static cg_status cascade(cg_svg *svg, svg_node *node, const css_rules *rules)
             if (p < SVG_PROPERTY_COUNT)
                 declare(node, p, a->value, RANK_ATTRIBUTE);
         }
-        for (size_t i = 0; i < rules->count; i++) {
-            const css_rule *rule = &rules->data[i];
-            if (!selector_matches(&rule->selector, node))
+        for (size_t i = 0; i < sheet->rules.count; i++) {
+            const css_rule *rule = &sheet->rules.data[i];
+            if (!selector_matches(&rule->selector, node, &sheet->steps))
                 continue;
             unsigned long long rank = (unsigned long long)rule->selector.specificity << 24
                                       | rule->order;
-            cg_status status = svg_declare_list(svg, node, rule->declarations,
-                                                strlen(rule->declarations), RANK_SHEET + rank,
-                                                RANK_IMPORTANT + rank);
-            if (status != CG_OK)
-                return status;
+            for (size_t k = 0; k < rule->count; k++) {
+                const css_declaration *d = &sheet->declarations.data[rule->first + k];
+                declare(node, d->property, d->value,
+                        (d->important ? RANK_IMPORTANT : RANK_SHEET) + rank);
+            }
         }
+        if (sheet->steps > CSS_MAX_STEPS)
+            return CG_ERANGE;
         const char *style = svg_attribute_value(node, "style");
         if (style) {
             cg_status status = svg_declare_list(svg, node, style, strlen(style), RANK_STYLE,
@@ -376,19 +413,24 @@ static cg_status cascade(cg_svg *svg, svg_node *node, const css_rules *rules)
             if (status != CG_OK)
                 return status;
         }
-        cg_status status = cascade(svg, node->first_child, rules);
+        cg_status status = cascade(svg, node->first_child, sheet);
         if (status != CG_OK)
             return status;
     }
     return CG_OK;
 }
 
-cg_status svg_apply_styles(cg_svg *svg)
+cg_status svg_apply_styles(cg_svg *svg, cg_error *err)
 {
-    css_rules rules = {0};
-    cg_status status = gather_sheets(svg, svg->root, &rules);
-    if (status == CG_OK)
-        status = cascade(svg, svg->root, &rules);
-    free(rules.data);
+    css_sheet sheet;
+    memset(&sheet, 0, sizeof sheet);
+    cg_status status = gather_sheets(svg, svg->root, &sheet);
+    if (status == CG_ERANGE)
+        cg_error_set(err, status, "%s: more than %d style sheet rules", svg->name, CSS_MAX_RULES);
+    else if (status == CG_OK && (status = cascade(svg, svg->root, &sheet)) == CG_ERANGE)
+        cg_error_set(err, status, "%s: the style sheets take more than %.0f selector steps on "
+                     "this document", svg->name, CSS_MAX_STEPS);
+    free(sheet.rules.data);
+    free(sheet.declarations.data);
     return status;
 }

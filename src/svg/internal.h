@@ -80,7 +80,7 @@ void svg_node_free(svg_node *node);
 
 /* Applies the <style> sheets and style attributes to every element's
  * declared properties (css.c). */
-cg_status svg_apply_styles(cg_svg *svg);
+cg_status svg_apply_styles(cg_svg *svg, cg_error *err);
 /* The property of a name ("stroke-width"), or SVG_PROPERTY_COUNT. */
 svg_property svg_property_of(const char *name, size_t length);
 /* Parses "a: b; c: d" declarations onto node at rank. */

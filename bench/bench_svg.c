@@ -130,7 +130,7 @@ static void run_cg(void *context)
         cg_mat3 m = cg_mat3_identity();
         m.m[0][0] = m.m[1][1] = s->side / w;
         cg_svg_render(svg, image, m, NULL);
-        bench_sink += image->data[(size_t)image->stride * (size_t)(s->side / 2) + 4 * (size_t)(s->side / 2) + 3];
+        bench_sink += cg_image_row_rgba8(image, s->side / 2)[s->side / 2].a;
         cg_svg_free(svg);
     }
     cg_image_free(image);
@@ -174,9 +174,11 @@ static double resvg_seconds(const sample *s)
         fprintf(f, "%s\n", s->icons[i].path);
     fclose(f);
     char command[8192];
+    /* the package from tests/svg (npm install there) or a global install */
     snprintf(command, sizeof command,
-             "cd '%s/tests/svg' 2>/dev/null && node '%s/bench/bench_svg_resvg.js' '%s' %d 3 "
-             "2>/dev/null",
+             "m='%s/tests/svg/node_modules/@resvg/resvg-js'; [ -d \"$m\" ] || "
+             "m=\"$(npm root -g 2>/dev/null)/@resvg/resvg-js\"; CG_RESVG_MODULE=\"$m\" "
+             "node '%s/bench/bench_svg_resvg.js' '%s' %d 3 2>/dev/null",
              CG_SOURCE_DIR, CG_SOURCE_DIR, list, s->side);
     FILE *p = popen(command, "r");
     double seconds = 0;

@@ -33,7 +33,8 @@ static cg_status push_line(struct cg_rasterizer *r, double x0, double y0, double
 {
     if (y0 == y1)
         return CG_OK;
-    if (core_array_reserve((void **)&r->lines, &r->line_capacity, r->line_count + 1, sizeof *r->lines) != CG_OK)
+    if (core_array_reserve((void **)&r->lines, &r->line_capacity, r->line_count + 1,
+                           sizeof *r->lines) != CG_OK)
         return CG_ENOMEM;
     fill_line l = {x0, y0, x1, y1};
     r->lines[r->line_count++] = l;
@@ -528,14 +529,14 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
      * rendering clears what it reads.  Only new memory needs clearing. */
     size_t cells_before = r->accumulation_capacity, flags_before = r->touched_capacity;
     if (core_array_reserve((void **)&r->accumulation, &r->accumulation_capacity,
-                      2 * stride * (size_t)band, sizeof *r->accumulation) != CG_OK
+                           2 * stride * (size_t)band, sizeof *r->accumulation) != CG_OK
         || core_array_reserve((void **)&r->touched, &r->touched_capacity, blocks * (size_t)band,
-                         sizeof *r->touched) != CG_OK
+                              sizeof *r->touched) != CG_OK
         || core_array_reserve((void **)&r->cover, &r->cover_capacity, stride, 1) != CG_OK
         || core_array_reserve((void **)&r->order, &r->order_capacity,
-                         r->line_count + (size_t)band_count + 1, sizeof *r->order) != CG_OK
+                              r->line_count + (size_t)band_count + 1, sizeof *r->order) != CG_OK
         || core_array_reserve((void **)&r->active, &r->active_capacity, r->line_count,
-                         sizeof *r->active) != CG_OK)
+                              sizeof *r->active) != CG_OK)
         return CG_ENOMEM;
     if (r->accumulation_capacity != cells_before)
         memset(r->accumulation, 0, r->accumulation_capacity * sizeof *r->accumulation);

@@ -43,7 +43,7 @@ void fill_polylines_free(fill_polylines *set)
 cg_status fill_polylines_begin(fill_polylines *set)
 {
     if (core_array_reserve((void **)&set->lines, &set->line_capacity, set->line_count + 1,
-                      sizeof *set->lines) != CG_OK)
+                           sizeof *set->lines) != CG_OK)
         return CG_ENOMEM;
     fill_polyline l = {set->point_count, 0, 0};
     set->lines[set->line_count++] = l;
@@ -53,7 +53,7 @@ cg_status fill_polylines_begin(fill_polylines *set)
 cg_status fill_polylines_add(fill_polylines *set, cg_vec2 p)
 {
     if (core_array_reserve((void **)&set->points, &set->point_capacity, set->point_count + 1,
-                      sizeof *set->points) != CG_OK)
+                           sizeof *set->points) != CG_OK)
         return CG_ENOMEM;
     set->points[set->point_count++] = p;
     set->lines[set->line_count - 1].count++;
@@ -108,9 +108,10 @@ static int valid_coord(double v)
 static cg_status append(cg_path *path, int verb, const double *coords)
 {
     int n = verb_coords[verb];
-    if (core_array_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1) != CG_OK
+    if (core_array_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1)
+            != CG_OK
         || core_array_reserve((void **)&path->coords, &path->coord_capacity,
-                         path->coord_count + (size_t)n, sizeof *path->coords) != CG_OK)
+                              path->coord_count + (size_t)n, sizeof *path->coords) != CG_OK)
         return CG_ENOMEM;
     path->verbs[path->verb_count++] = (unsigned char)verb;
     if (n)

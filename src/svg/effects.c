@@ -31,6 +31,14 @@ static cg_mat3 own_transform(const svg_node *node, cg_mat3 m)
     return m;
 }
 
+/* m moved by a <use>'s x and y. */
+static cg_mat3 use_offset(const svg_node *use, cg_mat3 m, const svg_viewport *vp)
+{
+    double x = svg_length_attribute(use, "x", SVG_AXIS_X, vp, 0);
+    double y = svg_length_attribute(use, "y", SVG_AXIS_Y, vp, 0);
+    return cg_mat3_mul(m, svg_mat3_affine(1, 0, 0, 1, x, y));
+}
+
 static void grow_box(cg_vec2 *box, int *any, cg_vec2 lo, cg_vec2 hi)
 {
     if (!*any) {
@@ -68,9 +76,7 @@ static int content_bounds(svg_render *r, const svg_node *node, cg_mat3 m, const 
         const svg_node *t = svg_find_reference(r->svg, svg_href(node));
         if (!t || !displayed(t))
             return 0;
-        cg_mat3 moved = cg_mat3_mul(m, svg_mat3_affine(1, 0, 0, 1,
-                                                       svg_length_attribute(node, "x", SVG_AXIS_X, vp, 0),
-                                                       svg_length_attribute(node, "y", SVG_AXIS_Y, vp, 0)));
+        cg_mat3 moved = use_offset(node, m, vp);
         if (strcmp(t->name, "symbol") == 0)
             return content_bounds(r, t, moved, vp, box, depth + 1);
         return content_bounds(r, t, own_transform(t, moved), vp, box, depth + 1);
@@ -128,10 +134,7 @@ static void clip_child(svg_render *r, const svg_node *c, cg_mat3 m, const svg_vi
     if (strcmp(c->name, "use") == 0) {
         const svg_node *t = svg_find_reference(r->svg, svg_href(c));
         if (t && svg_is_shape(t->name))
-            clip_child(r, t, cg_mat3_mul(m, svg_mat3_affine(1, 0, 0, 1,
-                                                            svg_length_attribute(c, "x", SVG_AXIS_X, vp, 0),
-                                                            svg_length_attribute(c, "y", SVG_AXIS_Y, vp, 0))),
-                       vp, &s, coverage);
+            clip_child(r, t, use_offset(c, m, vp), vp, &s, coverage);
         return;
     }
     if (!svg_is_shape(c->name) || !s.visible)
@@ -256,10 +259,12 @@ static cg_image *mask_image(svg_render *r, const svg_node *mask, const svg_node 
     int has_box = bbox_matrix(r, node, vp, bounds, &b);
     if ((bbox_units || content_bbox) && !has_box)
         return blank(r);
-    double x = mask_length(mask, "x", bbox_units, SVG_AXIS_X, vp, bbox_units ? -0.1 : -0.1 * vp->width);
-    double y = mask_length(mask, "y", bbox_units, SVG_AXIS_Y, vp, bbox_units ? -0.1 : -0.1 * vp->height);
-    double w = mask_length(mask, "width", bbox_units, SVG_AXIS_X, vp, bbox_units ? 1.2 : 1.2 * vp->width);
-    double h = mask_length(mask, "height", bbox_units, SVG_AXIS_Y, vp, bbox_units ? 1.2 : 1.2 * vp->height);
+    /* the default rectangle: the box (or the viewport) grown by 10% */
+    double unit_w = bbox_units ? 1 : vp->width, unit_h = bbox_units ? 1 : vp->height;
+    double x = mask_length(mask, "x", bbox_units, SVG_AXIS_X, vp, -0.1 * unit_w);
+    double y = mask_length(mask, "y", bbox_units, SVG_AXIS_Y, vp, -0.1 * unit_h);
+    double w = mask_length(mask, "width", bbox_units, SVG_AXIS_X, vp, 1.2 * unit_w);
+    double h = mask_length(mask, "height", bbox_units, SVG_AXIS_Y, vp, 1.2 * unit_h);
     if (!(w > 0 && h > 0))
         return blank(r);
     cg_mat3 rect_m = bbox_units ? cg_mat3_mul(ctm, b) : ctm;

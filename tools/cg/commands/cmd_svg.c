@@ -44,7 +44,8 @@ typedef struct svg_arguments {
 } svg_arguments;
 
 static const cli_option svg_options[] = {
-    CLI_OPTION_OUTPUT(svg_arguments, output, "OUT", "the image to write (required): .png, .ppm or .pgm"),
+    CLI_OPTION_OUTPUT(svg_arguments, output, "OUT",
+                      "the image to write (required): .png, .ppm or .pgm"),
     {.name = "--width", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, width),
      .value_name = "W", .given = CLI_GIVEN(svg_arguments, width_given), .low = 0,
      .high = CG_IMAGE_MAX_SIDE, .open = CLI_OPEN_LOW,

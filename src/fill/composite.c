@@ -299,9 +299,45 @@ void fill_composite_pixelf(cg_rgbaf *d, cg_rgbaf source, cg_compositing_space sp
     *d = fill_store_pixelf(fill_composite_covered(source, b, op, mode, k), space);
 }
 
+/* The general span's common case: source-over, normal, in the sRGB space,
+ * onto RGBA8 (fill_srgb_over); an opaque solid paint fills full coverage
+ * by stores. */
+static void srgb_over_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)
+{
+    cg_rgba8 *row = cg_image_row_rgba8(p->image, y) + x0;
+    if (p->type == CG_PAINT_SOLID) {
+        float sr = p->space_color.r * 255, sg = p->space_color.g * 255;
+        float sb = p->space_color.b * 255, alpha = p->space_color.a;
+        if (!cover && p->opaque) {
+            fill_store32((uint32_t *)row, n, p->encoded);
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            int c = cover ? cover[i] : 255;
+            if (c == 255 && p->opaque)
+                memcpy(&row[i], &p->encoded, sizeof row[i]);
+            else if (c)
+                fill_srgb_over(&row[i], sr, sg, sb, alpha * (c * (1.0f / 255.0f)));
+        }
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        int c = cover ? cover[i] : 255;
+        if (c == 0)
+            continue;
+        const cg_rgbaf *s = fill_gradient_at(p, x0 + i + 0.5, y + 0.5);
+        fill_srgb_over(&row[i], s->r * 255, s->g * 255, s->b * 255, s->a * (c * (1.0f / 255.0f)));
+    }
+}
+
 void fill_general_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)
 {
     cg_image *image = p->image;
+    if (p->space == CG_COMPOSITE_SRGB && p->op == CG_OPERATOR_OVER && p->mode == CG_BLEND_NORMAL
+        && image->format == CG_PIXEL_RGBA8) {
+        srgb_over_span(p, y, x0, n, cover);
+        return;
+    }
     cg_compositing_space space = (cg_compositing_space)p->space;
     cg_composite_operator op = (cg_composite_operator)p->op;
     cg_blend_mode mode = (cg_blend_mode)p->mode;

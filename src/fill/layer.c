@@ -90,6 +90,11 @@ cg_status cg_rasterizer_composite_layer(cg_rasterizer *r, cg_image *image, const
             return status;
     }
     float opacity = (float)style->opacity;
+    /* the common case of SVG groups: over, normal, sRGB, RGBA8 onto RGBA8 */
+    int fast = space == CG_COMPOSITE_SRGB && style->op == CG_OPERATOR_OVER
+               && style->mode == CG_BLEND_NORMAL && image->format == CG_PIXEL_RGBA8
+               && layer->format == CG_PIXEL_RGBA8
+               && (!style->mask || style->mask_type == CG_MASK_ALPHA);
     int x0 = 0, y0 = 0, x1 = image->width, y1 = image->height;
     if (style->has_box) {
         x0 = style->box_x0 > 0 ? style->box_x0 : 0;
@@ -103,6 +108,16 @@ cg_status cg_rasterizer_composite_layer(cg_rasterizer *r, cg_image *image, const
             float k = clip_row ? clip_row[x].a * (1.0f / 255.0f) : 1.0f;
             if (k == 0)
                 continue;
+            if (fast) {
+                cg_rgba8 s = cg_image_row_rgba8((cg_image *)layer, y)[x];
+                if (s.a == 0)
+                    continue;
+                float a = s.a * (1.0f / 255.0f) * opacity * k;
+                if (style->mask)
+                    a *= cg_image_row_rgba8((cg_image *)style->mask, y)[x].a * (1.0f / 255.0f);
+                fill_srgb_over(cg_image_row_rgba8(image, y) + x, s.r, s.g, s.b, a);
+                continue;
+            }
             cg_rgbaf source = image_pixel(layer, x, y, space);
             float scale = opacity;
             if (style->mask)

@@ -3,6 +3,7 @@
  * and hostile files refused with a message. */
 #include "cg/svg.h"
 #include "cg/fill.h"
+#include "cg/color.h"
 #include "check.h"
 
 #include <math.h>
@@ -443,6 +444,37 @@ static void images(void)
     cg_image_free(picture);
 }
 
+/* The same document onto an RGBAF image (linear light, straight alpha):
+ * the RGBA8 drawing decoded, within a code. */
+static void float_images(void)
+{
+    const char *t = HEAD "width='24' height='12'><defs><linearGradient id='g'><stop offset='0' "
+                    "stop-color='#204080'/><stop offset='1' stop-color='#f0c020' stop-opacity='.5'/>"
+                    "</linearGradient></defs><rect width='24' height='12' fill='#336699'/>"
+                    "<circle cx='8' cy='6' r='5' fill='url(#g)'/><g opacity='0.5'>"
+                    "<rect x='12' y='2' width='10' height='8' fill='white' stroke='red'/></g></svg>";
+    cg_svg *svg;
+    CHECK(cg_svg_load_memory(t, strlen(t), "t", &svg, NULL) == CG_OK);
+    cg_image *a, *f;
+    CHECK(cg_image_create(&a, 24, 12, CG_PIXEL_RGBA8) == CG_OK);
+    CHECK(cg_image_create(&f, 24, 12, CG_PIXEL_RGBAF) == CG_OK);
+    CHECK(cg_svg_render(svg, a, cg_mat3_identity(), NULL) == CG_OK);
+    CHECK(cg_svg_render(svg, f, cg_mat3_identity(), NULL) == CG_OK);
+    int bad = 0;
+    for (int y = 0; y < 12; y++)
+        for (int x = 0; x < 24; x++) {
+            cg_rgba8 p = at(a, x, y);
+            cg_rgbaf q = cg_image_row_rgbaf(f, y)[x];
+            cg_rgba8 e = cg_linear_to_rgba8(q);
+            bad += abs(p.r - e.r) > 1 || abs(p.g - e.g) > 1 || abs(p.b - e.b) > 1
+                   || abs(p.a - e.a) > 1;
+        }
+    CHECK_MSG(bad == 0, "%d float pixels differ from the RGBA8 drawing", bad);
+    cg_image_free(a);
+    cg_image_free(f);
+    cg_svg_free(svg);
+}
+
 static cg_status load_status(const char *text, cg_error *err)
 {
     cg_svg *svg = NULL;
@@ -562,6 +594,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(groups);
     CHECK_GROUP(references);
     CHECK_GROUP(images);
+    CHECK_GROUP(float_images);
     CHECK_GROUP(hostile);
     return check_finish();
 }

@@ -11,6 +11,7 @@
 #include "cg/curve.h"
 #include "cg/fill.h"
 #include "cg/texture.h"
+#include "cg/svg.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
 #include "cg/polygon.h"

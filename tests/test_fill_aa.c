@@ -943,6 +943,42 @@ static void tiny_segments(void)
     }
 }
 
+/* Edges a few units in the last place off vertical, crossing an integer x
+ * (a contour of an Adwaita icon closed from x = 56 - 1 ulp to x = 56 over
+ * 25 rows): each row's span was deposited as the line's slope times its
+ * width, which rounding made 25 times the row's height, and a row of the
+ * image filled to the right edge.  Every pixel must hold the exact area. */
+static void near_vertical(void)
+{
+    check_rng rng = {4242};
+    int bad = 0, cases = 0;
+    for (int n = 0; n < 60; n++) {
+        double x = (double)check_rng_int(&rng, 38, 70), top = check_rng_range(&rng, 1, 20);
+        double bottom = top + check_rng_range(&rng, 20, 30);
+        int ulps = (int)check_rng_int(&rng, 1, 3);
+        double off = x;
+        for (int i = 0; i < ulps; i++)
+            off = nextafter(off, n % 2 ? 0 : 200);
+        /* the shape lies right of the edge from (off, bottom) up to (x, top) */
+        cg_vec2 p[6] = {{x, top}, {x + 16.125, top}, {x + 16.125, bottom}, {102, 98},
+                        {34, 112}, {off, bottom}};
+        cg_image *im;
+        cg_image_create(&im, 128, 128, CG_PIXEL_RGBA8);
+        int six = 6;
+        cg_paint paint = cg_paint_solid(white);
+        CHECK(cg_fill_polygon_aa(im, p, &six, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+        int y0 = (int)top - 1, y1 = (int)bottom + 2;
+        for (int py = y0; py < y1; py++)
+            for (int px = 0; px < 128; px++) {
+                double want = fabs(pixel_area(p, 6, px, py));
+                bad += fabs(cg_image_get_rgba8(im, px, py).a / 255.0 - want) > 1.0 / 255;
+            }
+        cases++;
+        cg_image_free(im);
+    }
+    CHECK_MSG(bad == 0, "%d pixels beside near-vertical edges off in %d shapes", bad, cases);
+}
+
 /* A path ending with a quadratic piece: flattening read two coordinates
  * beyond it (a cubic's), past the end of the coordinate array when that was
  * full (AddressSanitizer).  Every count of lines before the quad meets a
@@ -987,6 +1023,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(strokes);
     CHECK_GROUP(bad_strokes);
     CHECK_GROUP(tiny_segments);
+    CHECK_GROUP(near_vertical);
     CHECK_GROUP(svg_paths);
     CHECK_GROUP(curves);
     CHECK_GROUP(final_quads);

@@ -77,14 +77,26 @@ typedef enum cg_paint_type {
     CG_PAINT_RADIAL = 2  /* colour varies with distance from p0, reaching the end at radius */
 } cg_paint_type;
 
+/* What a gradient does beyond its ends (t outside [0, 1]), as SVG's
+ * spreadMethod: pad holds the end colours, reflect mirrors the ramp back
+ * and forth, repeat starts it again. */
+typedef enum cg_gradient_spread {
+    CG_SPREAD_PAD = 0,
+    CG_SPREAD_REFLECT = 1,
+    CG_SPREAD_REPEAT = 2
+} cg_gradient_spread;
+
 typedef struct cg_gradient_stop {
     double offset; /* 0..1, non-decreasing along the array */
     cg_rgba8 color;
 } cg_gradient_stop;
 
-/* How a shape is coloured.  Gradients interpolate their stops in linear
- * light (premultiplied by alpha) and pad beyond the ends.  The stops array
- * is read during the drawing call only. */
+/* How a shape is coloured.  Gradients interpolate their stops in the
+ * rasterizer's compositing space: in linear light premultiplied by alpha
+ * (the default), or, in the sRGB space, on the encoded values with straight
+ * alpha (as SVG renderers do).  The stops array is read during the drawing
+ * call only.  Fields added after the first ones are zero in a paint made by
+ * the constructors below, and zero means "not used". */
 typedef struct cg_paint {
     cg_paint_type type;
     cg_rgba8 color;              /* CG_PAINT_SOLID */
@@ -92,12 +104,100 @@ typedef struct cg_paint {
     double radius;               /* radial: t = 1 at this distance from p0 */
     const cg_gradient_stop *stops;
     int stop_count;              /* at least 1 for gradients */
+    cg_gradient_spread spread;   /* beyond the ends; default pad */
+    /* radial with has_focal: t = 0 at focal (SVG's fx, fy) and 1 on the
+     * circle, along each ray from focal; a focal point outside the circle
+     * is moved just inside it, as SVG 1.1 says */
+    int has_focal;
+    cg_vec2 focal;
+    /* has_transform: p0, p1, radius and focal are in a space mapped to
+     * pixels by transform (SVG's gradientTransform and objectBoundingBox
+     * units); it must be invertible */
+    int has_transform;
+    cg_mat3 transform;
 } cg_paint;
 
 cg_paint cg_paint_solid(cg_rgba8 color);
 cg_paint cg_paint_linear(cg_vec2 p0, cg_vec2 p1, const cg_gradient_stop *stops, int stop_count);
 cg_paint cg_paint_radial(cg_vec2 center, double radius, const cg_gradient_stop *stops,
                          int stop_count);
+
+/* ---- compositing ------------------------------------------------------------- */
+
+/* The space in which a drawing mixes colours: linear light (physical mixing,
+ * cg's default, SVG's color-interpolation: linearRGB) or the sRGB-encoded
+ * values themselves (what SVG, CSS and browsers do by default).  Images keep
+ * their own format: RGBA8 is always sRGB-encoded and RGBAF linear. */
+typedef enum cg_compositing_space {
+    CG_COMPOSITE_LINEAR = 0,
+    CG_COMPOSITE_SRGB = 1
+} cg_compositing_space;
+
+/* Porter-Duff operators.  With source colour cs and alpha as, backdrop cb
+ * and ab (premultiplied), the result is co = cs * Fa + cb * Fb and
+ * ao = as * Fa + ab * Fb with the factors
+ *     clear 0, 0          source 1, 0           destination 0, 1
+ *     over 1, 1-as        destination_over 1-ab, 1
+ *     in ab, 0            destination_in 0, as
+ *     out 1-ab, 0         destination_out 0, 1-as
+ *     atop ab, 1-as       destination_atop 1-ab, as
+ *     xor 1-ab, 1-as      plus 1, 1 (clamped to 1)
+ * A drawing applies its operator within the shape only: a pixel of coverage
+ * k gets k * operator(source, backdrop) + (1 - k) * backdrop, and pixels
+ * outside the shape keep their colour. */
+typedef enum cg_composite_operator {
+    CG_OPERATOR_OVER = 0,
+    CG_OPERATOR_CLEAR,
+    CG_OPERATOR_SOURCE,
+    CG_OPERATOR_DESTINATION,
+    CG_OPERATOR_DESTINATION_OVER,
+    CG_OPERATOR_IN,
+    CG_OPERATOR_DESTINATION_IN,
+    CG_OPERATOR_OUT,
+    CG_OPERATOR_DESTINATION_OUT,
+    CG_OPERATOR_ATOP,
+    CG_OPERATOR_DESTINATION_ATOP,
+    CG_OPERATOR_XOR,
+    CG_OPERATOR_PLUS,
+    CG_OPERATOR_COUNT
+} cg_composite_operator;
+
+/* The blend modes of the W3C Compositing and Blending spec: B(cb, cs) on
+ * straight colours replaces the source colour by
+ * (1 - ab) * cs + ab * B(cb, cs) before the operator is applied. */
+typedef enum cg_blend_mode {
+    CG_BLEND_NORMAL = 0,
+    CG_BLEND_MULTIPLY,
+    CG_BLEND_SCREEN,
+    CG_BLEND_OVERLAY,
+    CG_BLEND_DARKEN,
+    CG_BLEND_LIGHTEN,
+    CG_BLEND_COLOR_DODGE,
+    CG_BLEND_COLOR_BURN,
+    CG_BLEND_HARD_LIGHT,
+    CG_BLEND_SOFT_LIGHT,
+    CG_BLEND_DIFFERENCE,
+    CG_BLEND_EXCLUSION,
+    CG_BLEND_HUE,
+    CG_BLEND_SATURATION,
+    CG_BLEND_COLOR,
+    CG_BLEND_LUMINOSITY,
+    CG_BLEND_COUNT
+} cg_blend_mode;
+
+/* One pixel: source over backdrop, both premultiplied with components in
+ * [0, 1] (any space), through blend mode then operator; premultiplied. */
+cg_rgbaf cg_composite(cg_rgbaf source, cg_rgbaf backdrop, cg_composite_operator op,
+                      cg_blend_mode mode);
+
+/* Names as CSS and SVG spell them ("source-over" is "over", "copy" is
+ * "source", "destination-in", "lighter" is "plus"; "multiply",
+ * "color-dodge", ...): NULL for a value out of range; the parsers accept
+ * the name and CSS's alternative spellings and return CG_EINVAL otherwise. */
+const char *cg_composite_operator_name(cg_composite_operator op);
+const char *cg_blend_mode_name(cg_blend_mode mode);
+cg_status cg_composite_operator_parse(const char *name, cg_composite_operator *out);
+cg_status cg_blend_mode_parse(const char *name, cg_blend_mode *out);
 
 /* ---- polygons (10.2) ------------------------------------------------------- */
 
@@ -156,6 +256,17 @@ cg_status cg_path_close(cg_path *path);
  * left as it was before the call. */
 cg_status cg_path_append_svg(cg_path *path, const char *data, cg_error *err);
 
+/* Appends path to out with every point mapped by the affine matrix (its
+ * last row must be 0 0 1; CG_EINVAL otherwise or for a non-finite or
+ * out-of-range result).  Lines and Beziers map exactly; arcs become cubic
+ * Beziers of at most 45 degrees each (within 4e-6 of the radius).  out may
+ * not be path. */
+cg_status cg_path_transform(const cg_path *path, cg_mat3 matrix, cg_path *out);
+
+/* The smallest box holding the path's curves (flattened within tolerance,
+ * at least 0.001): CG_EINVAL for an empty path. */
+cg_status cg_path_bounds(const cg_path *path, double tolerance, cg_vec2 *min, cg_vec2 *max);
+
 /* ---- strokes ---------------------------------------------------------------- */
 
 typedef enum cg_line_join { CG_JOIN_MITER = 0, CG_JOIN_ROUND = 1, CG_JOIN_BEVEL = 2 } cg_line_join;
@@ -199,6 +310,11 @@ void cg_rasterizer_free(cg_rasterizer *rasterizer);
 /* Flattening tolerance in pixels for curves, arcs and round joins
  * (default 0.1; CG_EINVAL unless in [0.001, 100]). */
 cg_status cg_rasterizer_set_tolerance(cg_rasterizer *rasterizer, double tolerance);
+/* How the drawing calls below mix colours: the compositing space (default
+ * linear), the operator (default over) and the blend mode (default normal);
+ * CG_EINVAL for a value out of range. */
+cg_status cg_rasterizer_set_compositing(cg_rasterizer *rasterizer, cg_compositing_space space,
+                                        cg_composite_operator op, cg_blend_mode mode);
 
 cg_status cg_rasterizer_fill_polygon(cg_rasterizer *rasterizer, cg_image *image,
                                      const cg_vec2 *points, const int *contour_sizes,
@@ -212,6 +328,50 @@ cg_status cg_rasterizer_fill_path(cg_rasterizer *rasterizer, cg_image *image, co
 cg_status cg_rasterizer_stroke_path(cg_rasterizer *rasterizer, cg_image *image,
                                     const cg_path *path, const cg_stroke_style *style,
                                     const cg_paint *paint);
+
+/* ---- layers ------------------------------------------------------------------ */
+
+/* A layer is a transparent image of the drawing's size (cg_image_create
+ * makes one): draw into it with any calls, then composite it onto the
+ * drawing as one piece, as SVG does for a group with opacity, a blend mode,
+ * a clip path or a mask. */
+
+typedef enum cg_mask_type {
+    CG_MASK_ALPHA = 0,    /* the mask image's alpha */
+    CG_MASK_LUMINANCE = 1 /* its luminance times its alpha (SVG's mask) */
+} cg_mask_type;
+
+typedef struct cg_layer_style {
+    double opacity;             /* 0..1: scales the layer's alpha */
+    cg_composite_operator op;   /* how the layer meets the drawing */
+    cg_blend_mode mode;
+    /* NULL, or a path in pixel coordinates: the layer shows only inside it
+     * (anti-aliased: a pixel half inside gets half the layer's effect),
+     * under clip_rule */
+    const cg_path *clip;
+    cg_fill_rule clip_rule;
+    /* NULL, or an image of the layer's size whose value (below) scales the
+     * layer's alpha pixel by pixel */
+    const cg_image *mask;
+    cg_mask_type mask_type;
+    /* has_box: only pixels x0 <= x < x1, y0 <= y < y1 are composited (a
+     * clip rectangle; a caller that knows where the layer has content
+     * saves the work of the rest) */
+    int has_box;
+    int box_x0, box_y0, box_x1, box_y1;
+} cg_layer_style;
+
+/* Opacity 1, over, normal, no clip (non-zero rule), no mask, no box. */
+cg_layer_style cg_layer_style_default(void);
+
+/* Composites layer onto image (both the same size, RGBA8 or RGBAF) in the
+ * rasterizer's compositing space: each pixel of the layer, its alpha scaled
+ * by opacity and the mask, goes through the blend mode and operator, within
+ * the clip as a drawing within its shape.  CG_EINVAL for a size mismatch, an
+ * opacity outside [0, 1] or a bad enum; the rasterizer's own operator and
+ * blend mode are not used. */
+cg_status cg_rasterizer_composite_layer(cg_rasterizer *rasterizer, cg_image *image,
+                                        const cg_image *layer, const cg_layer_style *style);
 
 #ifdef __cplusplus
 }

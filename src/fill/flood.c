@@ -8,6 +8,7 @@
  * parent, the parts of the row behind it that the parent did not cover.
  * Every pixel is painted once; the stack lives on the heap and grows. */
 #include "cg/fill.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -94,14 +95,9 @@ static int push(flood *f, int left, int right, int y, int dir, int parent_left, 
         right = f->width - 1;
     if (left > right)
         return 1;
-    if (f->count == f->capacity) {
-        size_t capacity = f->capacity ? f->capacity * 2 : 256;
-        span_entry *grown = realloc(f->stack, capacity * sizeof *grown);
-        if (!grown)
-            return 0;
-        f->stack = grown;
-        f->capacity = capacity;
-    }
+    if (core_array_reserve((void **)&f->stack, &f->capacity, f->count + 1, sizeof *f->stack)
+        != CG_OK)
+        return 0;
     span_entry e = {left, right, y, dir, parent_left, parent_right};
     f->stack[f->count++] = e;
     return 1;

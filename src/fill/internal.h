@@ -4,6 +4,8 @@
 
 #include "cg/fill.h"
 #include "../color/srgb_tables.h"
+#include "../core/array.h"
+#include "cg/color.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -131,8 +133,147 @@ typedef struct fill_painter {
     /* gradients */
     double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
     double cx, cy, inv_radius;   /* radial */
+    int spread;                /* cg_gradient_spread */
+    int focal;                 /* radial from a focal point (fx, fy) */
+    double fx, fy, radius;
+    int transformed;           /* pixels reach gradient space through inverse */
+    cg_mat3 inverse;
     cg_rgbaf ramp[256];
+    /* compositing: general is set unless the drawing is linear-light
+     * source-over (the fast paths); then the span goes through
+     * fill_general_span, and space_color is a solid paint's straight colour
+     * in the space (and the ramp's colours are in the space too) */
+    int general;
+    int space, op, mode;
+    cg_rgbaf space_color;
 } fill_painter;
+
+/* The ramp colour of a gradient paint at pixel point (x, y). */
+const cg_rgbaf *fill_gradient_at(const fill_painter *p, double x, double y);
+/* Any paint through any operator in any space (composite.c). */
+void fill_general_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover);
+/* Composites premultiplied source (of the space) onto one pixel at coverage k. */
+void fill_composite_pixel8(cg_rgba8 *d, cg_rgbaf source, cg_compositing_space space,
+                           cg_composite_operator op, cg_blend_mode mode, float k);
+void fill_composite_pixelf(cg_rgbaf *d, cg_rgbaf source, cg_compositing_space space,
+                           cg_composite_operator op, cg_blend_mode mode, float k);
+
+/* ---- pixels in a compositing space (composite.c, layer.c) ---- */
+
+/* A stored pixel as a premultiplied colour of the space. */
+static inline cg_rgbaf fill_load_pixel8(cg_rgba8 px, cg_compositing_space space)
+{
+    float a = px.a * (1.0f / 255.0f);
+    cg_rgbaf c;
+    if (space == CG_COMPOSITE_SRGB) {
+        float k = a * (1.0f / 255.0f);
+        c.r = px.r * k;
+        c.g = px.g * k;
+        c.b = px.b * k;
+    } else {
+        c.r = color_srgb_decode_table[px.r] * a;
+        c.g = color_srgb_decode_table[px.g] * a;
+        c.b = color_srgb_decode_table[px.b] * a;
+    }
+    c.a = a;
+    return c;
+}
+
+static inline uint8_t fill_unit_to_byte(float v)
+{
+    v = v > 0 ? v : 0; /* also NaN */
+    v = v < 1 ? v : 1;
+    return (uint8_t)(v * 255.0f + 0.5f);
+}
+
+static inline cg_rgba8 fill_store_pixel8(cg_rgbaf c, cg_compositing_space space)
+{
+    cg_rgba8 px = {0, 0, 0, 0};
+    px.a = fill_unit_to_byte(c.a);
+    if (px.a == 0)
+        return px;
+    float inv = 1 / c.a;
+    if (space == CG_COMPOSITE_SRGB) {
+        px.r = fill_unit_to_byte(c.r * inv);
+        px.g = fill_unit_to_byte(c.g * inv);
+        px.b = fill_unit_to_byte(c.b * inv);
+    } else {
+        px.r = cg_srgb_encode_unit(c.r * inv);
+        px.g = cg_srgb_encode_unit(c.g * inv);
+        px.b = cg_srgb_encode_unit(c.b * inv);
+    }
+    return px;
+}
+
+/* RGBAF pixels are straight linear light. */
+static inline cg_rgbaf fill_load_pixelf(cg_rgbaf px, cg_compositing_space space)
+{
+    if (space == CG_COMPOSITE_SRGB) {
+        px.r = (float)cg_linear_to_srgb(px.r);
+        px.g = (float)cg_linear_to_srgb(px.g);
+        px.b = (float)cg_linear_to_srgb(px.b);
+    }
+    px.r *= px.a;
+    px.g *= px.a;
+    px.b *= px.a;
+    return px;
+}
+
+static inline cg_rgbaf fill_store_pixelf(cg_rgbaf c, cg_compositing_space space)
+{
+    if (!(c.a > 0)) {
+        cg_rgbaf none = {0, 0, 0, 0};
+        return none;
+    }
+    float inv = 1 / c.a;
+    c.r *= inv;
+    c.g *= inv;
+    c.b *= inv;
+    if (space == CG_COMPOSITE_SRGB) {
+        c.r = (float)cg_srgb_to_linear(c.r);
+        c.g = (float)cg_srgb_to_linear(c.g);
+        c.b = (float)cg_srgb_to_linear(c.b);
+    }
+    return c;
+}
+
+/* Source-over in the sRGB space onto an RGBA8 pixel, the common case of
+ * SVG drawing, without the general path's conversions: straight source
+ * values sr, sg, sb in 0..255 at alpha a (coverage included, 0..1).  The
+ * same mix as fill_composite_pixel8 (within float rounding): over an opaque
+ * pixel d + (s - d) a, over nothing the source itself, else the weighted
+ * mean of the two by a and d's alpha times 1 - a. */
+static inline void fill_srgb_over(cg_rgba8 *d, float sr, float sg, float sb, float a)
+{
+    if (!(a > 0))
+        return;
+    if (a >= 1) {
+        d->r = (uint8_t)(sr + 0.5f);
+        d->g = (uint8_t)(sg + 0.5f);
+        d->b = (uint8_t)(sb + 0.5f);
+        d->a = 255;
+        return;
+    }
+    if (d->a == 255) {
+        d->r = (uint8_t)(d->r + (sr - d->r) * a + 0.5f);
+        d->g = (uint8_t)(d->g + (sg - d->g) * a + 0.5f);
+        d->b = (uint8_t)(d->b + (sb - d->b) * a + 0.5f);
+        return;
+    }
+    float f = d->a * (1.0f / 255.0f) * (1 - a), out = a + f;
+    uint8_t alpha = (uint8_t)(out * 255.0f + 0.5f);
+    if (alpha == 0)
+        return; /* the general path leaves nothing there either */
+    float inv = 1 / out;
+    d->r = (uint8_t)fminf(255, (sr * a + d->r * f) * inv + 0.5f);
+    d->g = (uint8_t)fminf(255, (sg * a + d->g * f) * inv + 0.5f);
+    d->b = (uint8_t)fminf(255, (sb * a + d->b * f) * inv + 0.5f);
+    d->a = alpha;
+}
+
+/* k * composite(source, backdrop) + (1 - k) * backdrop (premultiplied). */
+cg_rgbaf fill_composite_covered(cg_rgbaf source, cg_rgbaf backdrop, cg_composite_operator op,
+                                cg_blend_mode mode, float k);
 
 /* CG_EINVAL for a malformed paint. */
 cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *image,
@@ -163,6 +304,7 @@ typedef struct fill_crossing {
 
 struct cg_rasterizer {
     double tolerance;
+    int space, op, mode; /* compositing (cg_rasterizer_set_compositing), 0: the defaults */
     /* anti-aliased: lines clipped to the image, and their bounds */
     fill_line *lines;
     size_t line_count, line_capacity;
@@ -434,14 +576,6 @@ static FILL_INLINE void fill_solid_cached(const fill_blend_state *s, uint32_t *d
 /* Paints n RGBA8 pixels d[0..n-1] with a solid paint at coverage cover[i] /
  * 255 (cover NULL: constant / 255), as fill_solid_cached does. */
 void fill_solid_run(const fill_painter *p, uint32_t *d, int n, const uint8_t *cover, int constant);
-
-/* Grows *array (of element size) to hold at least need elements; 0 when
- * memory runs out (the array is then unchanged). */
-int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size);
-static inline int fill_reserve(void **array, size_t *capacity, size_t need, size_t size)
-{
-    return need <= *capacity || fill_reserve_grow(array, capacity, need, size);
-}
 
 /* Checks every point of a polygon (finite, within CG_FILL_MAX_COORD) and the
  * contour sizes; *total receives the number of points. */

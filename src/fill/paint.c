@@ -1,28 +1,12 @@
-/* Paints and compositing: solid colours and gradients, blended source-over
- * in linear light onto RGBA8 (sRGB-encoded) or RGBAF images. */
+/* Paints: solid colours and gradients (linear, radial with a focal point,
+ * spread methods, a transform), and their fast source-over in linear light
+ * onto RGBA8 (sRGB-encoded) or RGBAF images; other compositing goes
+ * through composite.c. */
 #include "internal.h"
 #include "cg/color.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-int fill_reserve_grow(void **array, size_t *capacity, size_t need, size_t size)
-{
-    if (need <= *capacity)
-        return 1;
-    size_t grown = *capacity ? *capacity : 64;
-    while (grown < need) {
-        if (grown > ((size_t)-1 / 2) / size)
-            return 0;
-        grown *= 2;
-    }
-    void *p = realloc(*array, grown * size);
-    if (!p)
-        return 0;
-    *array = p;
-    *capacity = grown;
-    return 1;
-}
 
 cg_paint cg_paint_solid(cg_rgba8 color)
 {
@@ -66,6 +50,25 @@ static int finite_vec(cg_vec2 v)
 
 /* The 256-entry colour ramp of a gradient: stops interpolated in linear
  * light with premultiplied alpha, stored straight. */
+/* A stop's colour as the ramp holds it: linear light, or the encoded
+ * values in [0, 1] for the sRGB space. */
+static cg_rgbaf stop_color(const fill_painter *p, cg_rgba8 color)
+{
+    if (p->space != CG_COMPOSITE_SRGB)
+        return cg_rgba8_to_linear(color);
+    cg_rgbaf c = {color.r / 255.0f, color.g / 255.0f, color.b / 255.0f, color.a / 255.0f};
+    return c;
+}
+
+/* In the sRGB space the stops mix with straight alpha, as SVG renderers
+ * mix them. */
+static cg_rgbaf mix_straight(cg_rgbaf a, cg_rgbaf b, float u)
+{
+    cg_rgbaf c = {a.r + (b.r - a.r) * u, a.g + (b.g - a.g) * u, a.b + (b.b - a.b) * u,
+                  a.a + (b.a - a.a) * u};
+    return c;
+}
+
 static cg_status build_ramp(fill_painter *p, const cg_paint *paint)
 {
     if (!paint->stops || paint->stop_count < 1)
@@ -83,14 +86,18 @@ static cg_status build_ramp(fill_painter *p, const cg_paint *paint)
         /* stops[s-1].offset <= t < stops[s].offset */
         cg_rgbaf c;
         if (s == 0) {
-            c = cg_rgba8_to_linear(paint->stops[0].color);
+            c = stop_color(p, paint->stops[0].color);
         } else if (s == n) {
-            c = cg_rgba8_to_linear(paint->stops[n - 1].color);
+            c = stop_color(p, paint->stops[n - 1].color);
         } else {
-            cg_rgbaf a = cg_rgba8_to_linear(paint->stops[s - 1].color);
-            cg_rgbaf b = cg_rgba8_to_linear(paint->stops[s].color);
+            cg_rgbaf a = stop_color(p, paint->stops[s - 1].color);
+            cg_rgbaf b = stop_color(p, paint->stops[s].color);
             double span = paint->stops[s].offset - paint->stops[s - 1].offset;
             float u = span > 0 ? (float)((t - paint->stops[s - 1].offset) / span) : 1.0f;
+            if (p->space == CG_COMPOSITE_SRGB) {
+                p->ramp[i] = mix_straight(a, b, u);
+                continue;
+            }
             float alpha = a.a + (b.a - a.a) * u;
             c.a = alpha;
             if (alpha > 0) {
@@ -121,8 +128,17 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     p->image = image;
     p->cache = r;
     p->type = paint->type;
+    p->space = r->space;
+    p->op = r->op;
+    p->mode = r->mode;
+    p->general = r->space != CG_COMPOSITE_LINEAR || r->op != CG_OPERATOR_OVER
+                 || r->mode != CG_BLEND_NORMAL;
+    p->spread = CG_SPREAD_PAD;
+    p->focal = 0;
+    p->transformed = 0;
     if (paint->type == CG_PAINT_SOLID) {
         cg_rgbaf c = cg_rgba8_to_linear(paint->color);
+        p->space_color = stop_color(p, paint->color);
         p->r = c.r;
         p->g = c.g;
         p->b = c.b;
@@ -138,6 +154,20 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
             fill_next_generation(r);
         }
         return CG_OK;
+    }
+    if (paint->type != CG_PAINT_LINEAR && paint->type != CG_PAINT_RADIAL)
+        return CG_EINVAL;
+    if ((unsigned)paint->spread > CG_SPREAD_REPEAT)
+        return CG_EINVAL;
+    p->spread = paint->spread;
+    if (paint->has_transform) {
+        for (int i = 0; i < 3; i++)
+            for (int k = 0; k < 3; k++)
+                if (!isfinite(paint->transform.m[i][k]))
+                    return CG_EINVAL;
+        if (cg_mat3_inverse(paint->transform, &p->inverse) != CG_OK)
+            return CG_EINVAL;
+        p->transformed = 1;
     }
     if (paint->type == CG_PAINT_LINEAR) {
         if (!finite_vec(paint->p0) || !finite_vec(paint->p1))
@@ -157,6 +187,21 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
         p->cx = paint->p0.x;
         p->cy = paint->p0.y;
         p->inv_radius = 1.0 / paint->radius;
+        p->radius = paint->radius;
+        if (paint->has_focal) {
+            if (!finite_vec(paint->focal))
+                return CG_EINVAL;
+            /* a focal point on or beyond the circle moves just inside it */
+            double fx = paint->focal.x - p->cx, fy = paint->focal.y - p->cy;
+            double d = sqrt(fx * fx + fy * fy), limit = paint->radius * 0.999;
+            if (d > limit) {
+                fx *= limit / d;
+                fy *= limit / d;
+            }
+            p->focal = d > 0;
+            p->fx = p->cx + fx;
+            p->fy = p->cy + fy;
+        }
         return build_ramp(p, paint);
     }
     return CG_EINVAL;
@@ -211,6 +256,60 @@ static inline const cg_rgbaf *ramp_at(const fill_painter *p, double t)
     return &p->ramp[i];
 }
 
+/* The spread method applied to t. */
+static double spread_t(int spread, double t)
+{
+    if (spread == CG_SPREAD_REPEAT)
+        return t - floor(t);
+    if (spread == CG_SPREAD_REFLECT) {
+        double m = t - 2 * floor(t * 0.5); /* in [0, 2) */
+        return m > 1 ? 2 - m : m;
+    }
+    return t;
+}
+
+/* Radial from a focal point f inside the circle (c, r): the ray from f
+ * through the point q meets the circle at f + s (q - f), s > 0 the root of
+ * |s d - e|^2 = r^2 with d = q - f and e = c - f; t = 1 / s.
+ *
+ *            . - - - .            circle (c, r)
+ *          /     c     \
+ *         |   f ---q----x         x = f + s (q - f)
+ *          \           /
+ *            ` - - - '            t = |q - f| / |x - f| */
+static double focal_t(const fill_painter *p, double x, double y)
+{
+    double dx = x - p->fx, dy = y - p->fy, ex = p->cx - p->fx, ey = p->cy - p->fy;
+    double dd = dx * dx + dy * dy, de = dx * ex + dy * ey;
+    if (dd == 0)
+        return 0;
+    double disc = de * de - dd * (ex * ex + ey * ey - p->radius * p->radius);
+    double denominator = de + sqrt(disc > 0 ? disc : 0);
+    return denominator > 0 ? dd / denominator : 1;
+}
+
+const cg_rgbaf *fill_gradient_at(const fill_painter *p, double px, double py)
+{
+    if (p->transformed) {
+        const double(*m)[3] = p->inverse.m;
+        double x = m[0][0] * px + m[0][1] * py + m[0][2];
+        py = m[1][0] * px + m[1][1] * py + m[1][2];
+        px = x;
+    }
+    double u;
+    if (p->type == CG_PAINT_LINEAR) {
+        u = p->gx * px + p->gy * py + p->gc;
+    } else if (p->focal) {
+        u = focal_t(p, px, py);
+    } else {
+        double dx = px - p->cx, dy = py - p->cy;
+        u = sqrt(dx * dx + dy * dy) * p->inv_radius;
+    }
+    if (p->spread != CG_SPREAD_PAD && isfinite(u))
+        u = spread_t(p->spread, u);
+    return ramp_at(p, u);
+}
+
 static void solid_span(const fill_painter *p, int y, int x0, int n, const uint8_t *cover)
 {
     cg_image *image = p->image;
@@ -246,14 +345,7 @@ static void gradient_span(const fill_painter *p, int y, int x0, int n, const uin
         int c = cover ? cover[i] : 255;
         if (c == 0)
             continue;
-        double px = x0 + i + 0.5, u;
-        if (p->type == CG_PAINT_LINEAR) {
-            u = p->gx * px + p->gy * py + p->gc;
-        } else {
-            double dx = px - p->cx, dy = py - p->cy;
-            u = sqrt(dx * dx + dy * dy) * p->inv_radius;
-        }
-        const cg_rgbaf *s = ramp_at(p, u);
+        const cg_rgbaf *s = fill_gradient_at(p, x0 + i + 0.5, py);
         float as = s->a * (c * (1.0f / 255.0f));
         if (image->format == CG_PIXEL_RGBA8) {
             cg_rgba8 *d = cg_image_row_rgba8(image, y) + x0 + i;
@@ -281,7 +373,9 @@ void fill_painter_span(const fill_painter *p, int y, int x0, int n, const uint8_
 {
     if (n <= 0)
         return;
-    if (p->type == CG_PAINT_SOLID)
+    if (p->general)
+        fill_general_span(p, y, x0, n, cover);
+    else if (p->type == CG_PAINT_SOLID)
         solid_span(p, y, x0, n, cover);
     else
         gradient_span(p, y, x0, n, cover);

@@ -42,8 +42,8 @@ void fill_polylines_free(fill_polylines *set)
 
 cg_status fill_polylines_begin(fill_polylines *set)
 {
-    if (!fill_reserve((void **)&set->lines, &set->line_capacity, set->line_count + 1,
-                      sizeof *set->lines))
+    if (core_array_reserve((void **)&set->lines, &set->line_capacity, set->line_count + 1,
+                           sizeof *set->lines) != CG_OK)
         return CG_ENOMEM;
     fill_polyline l = {set->point_count, 0, 0};
     set->lines[set->line_count++] = l;
@@ -52,8 +52,8 @@ cg_status fill_polylines_begin(fill_polylines *set)
 
 cg_status fill_polylines_add(fill_polylines *set, cg_vec2 p)
 {
-    if (!fill_reserve((void **)&set->points, &set->point_capacity, set->point_count + 1,
-                      sizeof *set->points))
+    if (core_array_reserve((void **)&set->points, &set->point_capacity, set->point_count + 1,
+                           sizeof *set->points) != CG_OK)
         return CG_ENOMEM;
     set->points[set->point_count++] = p;
     set->lines[set->line_count - 1].count++;
@@ -108,9 +108,10 @@ static int valid_coord(double v)
 static cg_status append(cg_path *path, int verb, const double *coords)
 {
     int n = verb_coords[verb];
-    if (!fill_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1)
-        || !fill_reserve((void **)&path->coords, &path->coord_capacity,
-                         path->coord_count + (size_t)n, sizeof *path->coords))
+    if (core_array_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1)
+            != CG_OK
+        || core_array_reserve((void **)&path->coords, &path->coord_capacity,
+                              path->coord_count + (size_t)n, sizeof *path->coords) != CG_OK)
         return CG_ENOMEM;
     path->verbs[path->verb_count++] = (unsigned char)verb;
     if (n)
@@ -587,6 +588,99 @@ cg_status cg_stroke_to_path(const cg_path *path, const cg_stroke_style *style, d
     }
     fill_polylines_free(&flat);
     fill_polylines_free(&outline);
+    return status;
+}
+
+/* ---- transforming and measuring -------------------------------------------------- */
+
+static cg_vec2 affine_point(const cg_mat3 *m, double x, double y)
+{
+    return cg_vec2_make(m->m[0][0] * x + m->m[0][1] * y + m->m[0][2],
+                        m->m[1][0] * x + m->m[1][1] * y + m->m[1][2]);
+}
+
+/* The arc a (centre, radii, rotation, start, sweep, end) as cubic pieces of
+ * at most 45 degrees: each piece from E(t0) to E(t1) with control points
+ * along the tangents at k = 4/3 tan((t1 - t0) / 4) of the derivative. */
+static cg_status arc_as_cubics(const double *a, const cg_mat3 *m, cg_path *out)
+{
+    double sweep = a[6];
+    int pieces = (int)ceil(fabs(sweep) / (CG_PI / 4));
+    if (pieces < 1)
+        pieces = 1;
+    double step = sweep / pieces, k = 4.0 / 3.0 * tan(step / 4);
+    double cp = cos(a[4]), sp = sin(a[4]);
+    for (int i = 0; i < pieces; i++) {
+        double t0 = a[5] + step * i, t1 = t0 + step;
+        double e0x = a[2] * cos(t0), e0y = a[3] * sin(t0), e1x = a[2] * cos(t1), e1y = a[3] * sin(t1);
+        double d0x = -a[2] * sin(t0), d0y = a[3] * cos(t0), d1x = -a[2] * sin(t1), d1y = a[3] * cos(t1);
+        double p1x = e0x + k * d0x, p1y = e0y + k * d0y, p2x = e1x - k * d1x, p2y = e1y - k * d1y;
+        cg_vec2 c1 = affine_point(m, a[0] + cp * p1x - sp * p1y, a[1] + sp * p1x + cp * p1y);
+        cg_vec2 c2 = affine_point(m, a[0] + cp * p2x - sp * p2y, a[1] + sp * p2x + cp * p2y);
+        cg_vec2 end = i == pieces - 1 ? affine_point(m, a[7], a[8])
+                                      : affine_point(m, a[0] + cp * e1x - sp * e1y,
+                                                     a[1] + sp * e1x + cp * e1y);
+        cg_status status = cg_path_cubic_to(out, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
+        if (status != CG_OK)
+            return status;
+    }
+    return CG_OK;
+}
+
+cg_status cg_path_transform(const cg_path *path, cg_mat3 matrix, cg_path *out)
+{
+    if (!path || !out || path == out || matrix.m[2][0] != 0 || matrix.m[2][1] != 0
+        || matrix.m[2][2] != 1)
+        return CG_EINVAL;
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(matrix.m[i][k]))
+                return CG_EINVAL;
+    fill_path_mark mark;
+    fill_path_save(out, &mark);
+    const double *c = path->coords;
+    cg_status status = CG_OK;
+    for (size_t i = 0; i < path->verb_count && status == CG_OK; i++) {
+        int verb = path->verbs[i];
+        cg_vec2 p[3];
+        for (int k = 0; k < 3 && verb != VERB_ARC && 2 * k < verb_coords[verb]; k++)
+            p[k] = affine_point(&matrix, c[2 * k], c[2 * k + 1]);
+        switch (verb) {
+        case VERB_MOVE: status = cg_path_move_to(out, p[0].x, p[0].y); break;
+        case VERB_LINE: status = cg_path_line_to(out, p[0].x, p[0].y); break;
+        case VERB_QUAD: status = cg_path_quad_to(out, p[0].x, p[0].y, p[1].x, p[1].y); break;
+        case VERB_CUBIC:
+            status = cg_path_cubic_to(out, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
+            break;
+        case VERB_ARC: status = arc_as_cubics(c, &matrix, out); break;
+        default: status = cg_path_close(out); break;
+        }
+        c += verb_coords[verb];
+    }
+    if (status != CG_OK)
+        fill_path_restore(out, &mark);
+    return status;
+}
+
+cg_status cg_path_bounds(const cg_path *path, double tolerance, cg_vec2 *min, cg_vec2 *max)
+{
+    if (!path || !min || !max || !(tolerance >= 0.001) || path->verb_count == 0)
+        return CG_EINVAL;
+    fill_polylines flat = {0};
+    cg_status status = fill_path_flatten(path, tolerance, NULL, &flat);
+    if (status == CG_OK && flat.point_count == 0)
+        status = CG_EINVAL;
+    if (status == CG_OK) {
+        *min = *max = flat.points[0];
+        for (size_t i = 1; i < flat.point_count; i++) {
+            cg_vec2 p = flat.points[i];
+            min->x = fmin(min->x, p.x);
+            min->y = fmin(min->y, p.y);
+            max->x = fmax(max->x, p.x);
+            max->y = fmax(max->y, p.y);
+        }
+    }
+    fill_polylines_free(&flat);
     return status;
 }
 

@@ -90,7 +90,8 @@ static cg_status add_edge(cg_rasterizer *r, cg_vec2 a, cg_vec2 b, int height)
         last = height - 1;
     if (first > last)
         return CG_OK;
-    if (!fill_reserve((void **)&r->edges, &r->edge_capacity, r->edge_count + 1, sizeof *r->edges))
+    if (core_array_reserve((void **)&r->edges, &r->edge_capacity, r->edge_count + 1,
+                           sizeof *r->edges) != CG_OK)
         return CG_ENOMEM;
     fill_edge *e = &r->edges[r->edge_count++];
     e->x0 = top.x;
@@ -167,10 +168,10 @@ cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg
     sort_edges(r->edges, r->edge_count);
     /* The active list reuses the crossing buffer's memory as active_edge
      * records. */
-    if (!fill_reserve((void **)&r->crossings, &r->crossing_capacity,
-                      (r->edge_count * sizeof(active_edge) + sizeof(fill_crossing) - 1)
-                          / sizeof(fill_crossing),
-                      sizeof *r->crossings))
+    if (core_array_reserve((void **)&r->crossings, &r->crossing_capacity,
+                           (r->edge_count * sizeof(active_edge) + sizeof(fill_crossing) - 1)
+                           / sizeof(fill_crossing),
+                           sizeof *r->crossings) != CG_OK)
         return CG_ENOMEM;
     cg_paint paint = cg_paint_solid(color);
     fill_painter painter;

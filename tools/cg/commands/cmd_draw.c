@@ -93,6 +93,7 @@ const cg_command cg_command_draw = {
     "  fillrule evenodd|nonzero           path SVG_PATH_DATA (M L H V C S Q T A Z)\n"
     "  fill                stroke         width W             dash ON OFF ...\n"
     "  join miter|round|bevel             cap butt|round|square\n"
+    "  compositing linear|srgb [OPERATOR [BLEND_MODE]]   (how later fills mix colours)\n"
     "  flood X Y           flood8 X Y     boundaryfill X Y BOUNDARY_COLOR\n"
     "Integer coordinates (pixel indices) for line, polyline, circle, disc, ellipse,\n"
     "arcs and the flood seeds; decimals for the others.  A bad line is reported as\n"

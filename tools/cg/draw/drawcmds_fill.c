@@ -90,6 +90,34 @@ static int run_cap(draw_state *s, int argc, char **argv)
     return keyword(s, argc, argv, "cap butt|round|square", words, 3, &s->line_cap);
 }
 
+/* compositing SPACE [OPERATOR [BLEND_MODE]]: how later fills mix colours. */
+static int run_compositing(draw_state *s, int argc, char **argv)
+{
+    static const char *const usage = "compositing linear|srgb [OPERATOR [BLEND_MODE]]";
+    if (argc < 2 || argc > 4)
+        return draw_error(s, "expected %s", usage);
+    static const char *const spaces[] = {"linear", "srgb"}; /* = cg_compositing_space */
+    int space = -1;
+    for (int i = 0; i < 2; i++)
+        if (strcmp(argv[1], spaces[i]) == 0)
+            space = i;
+    if (space < 0)
+        return draw_error(s, "expected linear or srgb after 'compositing', got '%s'", argv[1]);
+    cg_composite_operator op = CG_OPERATOR_OVER;
+    cg_blend_mode mode = CG_BLEND_NORMAL;
+    if (argc > 2 && cg_composite_operator_parse(argv[2], &op) != CG_OK)
+        return draw_error(s, "expected an operator (over, source, in, out, atop, xor, plus, "
+                          "clear, destination-over, ...) after '%s', got '%s'", argv[1], argv[2]);
+    if (argc > 3 && cg_blend_mode_parse(argv[3], &mode) != CG_OK)
+        return draw_error(s, "expected a blend mode (normal, multiply, screen, overlay, ..., "
+                          "luminosity) after '%s', got '%s'", argv[2], argv[3]);
+    draw_fill *f = fill_of(s);
+    if (!f)
+        return out_of_memory(s);
+    return draw_check(s, cg_rasterizer_set_compositing(f->rasterizer, (cg_compositing_space)space,
+                                                       op, mode));
+}
+
 static int run_width(draw_state *s, int argc, char **argv)
 {
     double w;
@@ -349,6 +377,7 @@ static const draw_command commands[] = {
     {"fill", "fill", run_fill},
     {"stroke", "stroke", run_stroke},
     {"width", "width W", run_width},
+    {"compositing", "compositing linear|srgb [OPERATOR [BLEND_MODE]]", run_compositing},
     {"join", "join miter|round|bevel", run_join},
     {"cap", "cap butt|round|square", run_cap},
     {"dash", "dash ON OFF ...", run_dash},

@@ -1,0 +1,20 @@
+// Renders SVG files with resvg (tests/test_svg_peers.sh): node resvg_render.js WIDTH OUT_DIR LIST [FIRST]
+// LIST names the files, one a line; the N-th (from 0) becomes OUT_DIR/N.png, from N = FIRST on;
+// a failure is printed (a panic in resvg ends the process: the caller goes on after that file).
+const { Resvg } = require(process.env.CG_RESVG_MODULE || '@resvg/resvg-js');
+const fs = require('fs');
+const path = require('path');
+const width = parseInt(process.argv[2]);
+const outDir = process.argv[3];
+const files = fs.readFileSync(process.argv[4], 'utf8').split('\n').filter((f) => f.length > 0);
+const first = parseInt(process.argv[5] || '0');
+files.forEach((file, index) => {
+  if (index < first) return;
+  try {
+    const svg = fs.readFileSync(file);
+    const r = new Resvg(svg, { fitTo: { mode: 'width', value: width }, font: { loadSystemFonts: false } });
+    fs.writeFileSync(path.join(outDir, index + '.png'), r.render().asPng());
+  } catch (e) {
+    console.error(file + ': ' + e.message);
+  }
+});

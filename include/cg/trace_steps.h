@@ -1,0 +1,144 @@
+/* cg/trace_steps.h - the course's algorithms step by step (`cg trace`).
+ *
+ * A trace calls a cg_step_fn once per step of an algorithm with a cg_step:
+ * the algorithm's state at that step as named fields in the notes'
+ * vocabulary (f, dE, dNE, p, q, t, ...), the pixels the step sets (they stay
+ * in the picture) and the geometry it works on (a polyline shown with that
+ * step only).  Every trace ends in the same result as the library call it
+ * explains: the pixels a line trace lists are the pixels cg_draw_line sets,
+ * the points a flattening trace emits are those of cg_bezier_flatten, the
+ * list Sutherland-Hodgman's trace ends with is cg_clip_sutherland_hodgman's.
+ * docs/teaching.md lists each trace's fields.
+ *
+ * A callback that returns non-zero stops the trace, which then returns
+ * CG_OK.  Pointers in a cg_step are valid during the callback only;
+ * cg_step_log keeps copies. */
+#ifndef CG_TRACE_STEPS_H
+#define CG_TRACE_STEPS_H
+
+#include "cg/core.h"
+#include "cg/curve.h"
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum cg_step_kind {
+    CG_STEP_NONE = 0,    /* no value at this step (shown as "-", JSON null) */
+    CG_STEP_INTEGER = 1, /* integer */
+    CG_STEP_REAL = 2,    /* real */
+    CG_STEP_TEXT = 3,    /* text: a move, a decision, a reason */
+    CG_STEP_PIXEL = 4,   /* pixel (x, y) in integer */
+    CG_STEP_POINT = 5,   /* point in point */
+    CG_STEP_POINTS = 6   /* list of point_count points in points */
+} cg_step_kind;
+
+typedef struct cg_step_field {
+    const char *name; /* a short identifier: "f", "dE", "t_enter", ... */
+    cg_step_kind kind;
+    long long integer;
+    double real;
+    int pixel_x, pixel_y;
+    cg_vec2 point;
+    const char *text;
+    const cg_vec2 *points;
+    size_t point_count;
+} cg_step_field;
+
+typedef struct cg_step {
+    const char *phase;          /* "region 1", "clip edge 2", ... or NULL */
+    const cg_step_field *fields;
+    int field_count;
+    /* The pixels this step sets, x y pairs, and their intensities in [0, 1]
+     * (NULL: all 1). */
+    const int *pixels;
+    const double *intensity;
+    int pixel_count;
+    /* The geometry this step looks at: a polyline (closed when closed). */
+    const cg_vec2 *geometry;
+    int geometry_count;
+    int closed;
+    /* Geometry the step adds to the result for good (a polyline), as a
+     * flattening step's chord. */
+    const cg_vec2 *kept;
+    int kept_count;
+} cg_step;
+
+typedef int (*cg_step_fn)(void *user, const cg_step *step);
+
+/* The field called name in step, or NULL. */
+const cg_step_field *cg_step_find(const cg_step *step, const char *name);
+
+/* ---- a log: every step copied, for printing and pictures afterwards ---- */
+
+typedef struct cg_step_log cg_step_log;
+
+cg_status cg_step_log_create(cg_step_log **out);
+void cg_step_log_free(cg_step_log *log);
+/* A cg_step_fn (user: the log) that appends a copy of the step; it returns
+ * non-zero (stopping the trace) when memory runs out, and
+ * cg_step_log_status then gives CG_ENOMEM. */
+int cg_step_log_record(void *log, const cg_step *step);
+cg_status cg_step_log_status(const cg_step_log *log);
+size_t cg_step_log_count(const cg_step_log *log);
+/* Step i (i < count), owned by the log. */
+const cg_step *cg_step_log_get(const cg_step_log *log, size_t i);
+
+/* ---- chapter 2: lines, circles, ellipses ------------------------------ */
+
+/* Bresenham's line (Algorithm 1) as cg_draw_line walks it: fields f, move
+ * ("start", "E", "NE"), f_next and pixel, after a first step (phase
+ * "octant") naming the octant and its mapping to the first one (fields
+ * octant, swap, mirror, dx, dy, f0, dE, dNE).  Lines up to 10^6 steps
+ * (CG_ERANGE beyond). */
+cg_status cg_line_steps(int x0, int y0, int x1, int y1, cg_step_fn step, void *user);
+
+/* The DDA line: the major coordinate steps by 1 and the minor one by the
+ * slope m, rounded to the nearest pixel (halves round up).  Fields k, x, y
+ * (real), pixel.  Its pixels lie within 1/2 of the line along the minor
+ * axis; they differ from Bresenham's only where the line passes through a
+ * midpoint, or by the rounding of the accumulated slope. */
+cg_status cg_line_dda_steps(int x0, int y0, int x1, int y1, cg_step_fn step, void *user);
+
+/* Algorithm 2 (cg_circle_trace) with its 8 mirrors: fields f, dE, dSE, move,
+ * f_next, dE_next, dSE_next, pixel (first octant); the step's pixels are
+ * those cg_draw_circle sets for it, centred on (cx, cy).  r up to 10^6. */
+cg_status cg_circle_steps(int cx, int cy, int r, cg_step_fn step, void *user);
+
+/* The midpoint ellipse as cg_draw_ellipse draws it (rx != ry; equal radii
+ * are the circle): region 1 column by column from (0, ry) (E or SE, the
+ * decision d1 = 4 F(x, y - 1/2) at the midpoint below), the switch where the
+ * slope reaches -1, region 2 row by row down to y = 0 (S or SE, d2 =
+ * 4 F(x + 1/2, y)), and the bridge pixel when the regions leave a gap.
+ * Fields x, y, d (the decision value), move, pixel; the step's pixels are the
+ * four mirrors.  Radii up to 10^5. */
+cg_status cg_ellipse_steps(int cx, int cy, int rx, int ry, cg_step_fn step, void *user);
+
+/* ---- chapter 2: curves ------------------------------------------------- */
+
+/* de Casteljau's algorithm at t for count control points (2 to 64): one
+ * step per level r = 1 .. count-1 with the level's points P_i^r =
+ * (1 - t) P_i^(r-1) + t P_(i+1)^(r-1) (field points); the last level is the
+ * curve point (cg_bezier_point), and the two subdivisions' control points
+ * (cg_bezier_split) end the trace. */
+cg_status cg_casteljau_steps(const cg_vec2 *control, int count, double t, cg_step_fn step,
+                             void *user);
+
+/* Q(t) = T M G of a cubic segment at t = 0, 1/n, ..., 1 (n from 1 to 1000):
+ * fields t, T (t^3 t^2 t 1), the blending weights T M (one per entry of G)
+ * as b1..b4 and the point Q (cg_cubic2_point). */
+cg_status cg_cubic_steps(const cg_cubic2 *curve, int n, cg_step_fn step, void *user);
+
+/* Adaptive flattening of a Bézier curve as cg_bezier_flatten does it: each
+ * piece tested (its parameter range, its flatness measure and the
+ * tolerance), split or emitted, and why.  The points emitted, in order, are
+ * exactly those cg_bezier_flatten gives the sink.  At most 100000 steps. */
+cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tolerance,
+                                  cg_step_fn step, void *user);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,415 @@
+/* The traces of cg/trace_steps.h against the library calls they explain:
+ * the pixels a trace lists are the pixels cg_draw_* sets, the points and
+ * lists it ends with are those of the curve and clipping functions, over
+ * many random inputs in every octant and the edge cases. */
+#include "check.h"
+#include "cg/clip.h"
+#include "cg/curve.h"
+#include "cg/draw.h"
+#include "cg/trace_steps.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { SIDE = 80 };
+
+/* The pixels of a trace, marked on a SIDE x SIDE grid (those inside it),
+ * with how often each was listed. */
+typedef struct marks {
+    int count[SIDE][SIDE];
+    long outside, listed;
+    const char *only_phase; /* NULL: every phase */
+} marks;
+
+static int mark_step(void *user, const cg_step *s)
+{
+    marks *m = user;
+    if (m->only_phase && (!s->phase || strcmp(s->phase, m->only_phase) != 0))
+        return 0;
+    for (int i = 0; i < s->pixel_count; i++) {
+        int x = s->pixels[2 * i], y = s->pixels[2 * i + 1];
+        m->listed++;
+        if (x >= 0 && y >= 0 && x < SIDE && y < SIDE)
+            m->count[y][x]++;
+        else
+            m->outside++;
+    }
+    return 0;
+}
+
+/* Compares the marks with the set pixels of image; the number of
+ * differences (and of pixels listed twice when once is asked). */
+static long compare(const marks *m, const cg_image *image, int each_once)
+{
+    long differences = 0;
+    for (int y = 0; y < SIDE; y++)
+        for (int x = 0; x < SIDE; x++) {
+            int set = cg_image_get_rgba8(image, x, y).r == 255;
+            if ((m->count[y][x] > 0) != set || (each_once && m->count[y][x] > 1))
+                differences++;
+        }
+    return differences;
+}
+
+static const cg_rgba8 white = {255, 255, 255, 255}, black = {0, 0, 0, 255};
+
+static cg_image *blank(void)
+{
+    cg_image *image = NULL;
+    if (cg_image_create(&image, SIDE, SIDE, CG_PIXEL_RGBA8) != CG_OK)
+        abort();
+    cg_image_clear_rgba8(image, black);
+    return image;
+}
+
+static marks *new_marks(const char *phase)
+{
+    marks *m = calloc(1, sizeof *m);
+    if (!m)
+        abort();
+    m->only_phase = phase;
+    return m;
+}
+
+/* ---- lines ----------------------------------------------------------------- */
+
+static void line_agrees(void)
+{
+    check_rng rng = {0x1e5f00d};
+    int octants[9] = {0};
+    for (int trial = 0; trial < 3000; trial++) {
+        /* Endpoints up to 20 pixels outside the image on each side. */
+        int x0 = (int)check_rng_int(&rng, -20, SIDE + 20), y0 = (int)check_rng_int(&rng, -20, SIDE + 20);
+        int x1 = (int)check_rng_int(&rng, -20, SIDE + 20), y1 = (int)check_rng_int(&rng, -20, SIDE + 20);
+        if (trial % 10 == 0) /* diagonals, axes and points, where ties live */
+            switch (trial / 10 % 4) {
+            case 0: y1 = y0 + (x1 - x0); break;
+            case 1: y1 = y0 - (x1 - x0); break;
+            case 2: y1 = y0; break;
+            default: x1 = x0; break;
+            }
+        marks *m = new_marks("walk");
+        cg_image *image = blank();
+        CHECK(cg_line_steps(x0, y0, x1, y1, mark_step, m) == CG_OK);
+        CHECK(cg_draw_line(image, x0, y0, x1, y1, white) == CG_OK);
+        long dx = labs((long)x1 - x0), dy = labs((long)y1 - y0);
+        CHECK_MSG(compare(m, image, 1) == 0, "line (%d, %d)-(%d, %d): trace and cg_draw_line differ",
+                  x0, y0, x1, y1);
+        CHECK_EQ_INT(m->listed, (dx > dy ? dx : dy) + 1);
+        cg_image_free(image);
+        free(m);
+        /* The octant step names the octant of the direction. */
+        cg_step_log *log;
+        CHECK(cg_step_log_create(&log) == CG_OK);
+        CHECK(cg_line_steps(x0, y0, x1, y1, cg_step_log_record, log) == CG_OK);
+        const cg_step *first = cg_step_log_get(log, 0);
+        const cg_step_field *octant = cg_step_find(first, "octant");
+        CHECK(octant && octant->kind == CG_STEP_INTEGER);
+        if (octant) {
+            int k = (int)octant->integer;
+            octants[k]++;
+            if (k == 0) {
+                CHECK(x0 == x1 && y0 == y1);
+            } else {
+                double angle = atan2((double)y1 - y0, (double)x1 - x0) * 180 / 3.14159265358979323846;
+                if (angle < 0)
+                    angle += 360;
+                /* exact diagonals belong to the octant they open */
+                CHECK_MSG(angle >= 45.0 * (k - 1) - 1e-9 && angle < 45.0 * k - 1e-9 + (k == 8 ? 1e-6 : 0),
+                          "direction (%d, %d) at %g degrees is not in octant %d", x1 - x0, y1 - y0, angle, k);
+            }
+        }
+        /* f and the move agree: f <= 0 selects E. */
+        for (size_t i = 2; i < cg_step_log_count(log); i++) {
+            const cg_step *s = cg_step_log_get(log, i);
+            const cg_step_field *f = cg_step_find(s, "f"), *move = cg_step_find(s, "move");
+            CHECK(f && move && strcmp(move->text, f->integer <= 0 ? "E" : "NE") == 0);
+        }
+        cg_step_log_free(log);
+    }
+    for (int k = 1; k <= 8; k++)
+        CHECK_MSG(octants[k] > 100, "octant %d tried %d times", k, octants[k]);
+}
+
+/* The DDA's pixels against its definition: one per major coordinate, each
+ * within 1/2 of the real line along the minor axis, ends exact. */
+static int dda_check(void *user, const cg_step *s)
+{
+    const int *line = user; /* x0 y0 x1 y1 */
+    long dx = line[2] - line[0], dy = line[3] - line[1];
+    int x = s->pixels[0], y = s->pixels[1];
+    int k = (int)cg_step_find(s, "k")->integer;
+    if (labs(dx) >= labs(dy) && dx != 0) {
+        int step = dx > 0 ? 1 : -1;
+        CHECK(x == line[0] + step * k);
+        double real_y = line[1] + (double)dy * (x - line[0]) / (double)dx;
+        CHECK_MSG(fabs(y - real_y) <= 0.5 + 1e-9, "DDA pixel (%d, %d) is %g from the line", x, y,
+                  fabs(y - real_y));
+    } else if (dy != 0) {
+        int step = dy > 0 ? 1 : -1;
+        CHECK(y == line[1] + step * k);
+        double real_x = line[0] + (double)dx * (y - line[1]) / (double)dy;
+        CHECK(fabs(x - real_x) <= 0.5 + 1e-9);
+    }
+    return 0;
+}
+
+static void dda_definition(void)
+{
+    check_rng rng = {0xdda};
+    for (int trial = 0; trial < 2000; trial++) {
+        int line[4];
+        for (int i = 0; i < 4; i++)
+            line[i] = (int)check_rng_int(&rng, -300, 300);
+        CHECK(cg_line_dda_steps(line[0], line[1], line[2], line[3], dda_check, line) == CG_OK);
+        /* and the last pixel is the second endpoint */
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        cg_line_dda_steps(line[0], line[1], line[2], line[3], cg_step_log_record, log);
+        const cg_step *last = cg_step_log_get(log, cg_step_log_count(log) - 1);
+        CHECK(last->pixels[0] == line[2] && last->pixels[1] == line[3]);
+        cg_step_log_free(log);
+    }
+}
+
+/* ---- circles and ellipses ------------------------------------------------- */
+
+static void circle_agrees(void)
+{
+    check_rng rng = {0xc1c1e};
+    for (int trial = 0; trial < 400; trial++) {
+        int r = trial < 60 ? trial : (int)check_rng_int(&rng, 0, 70);
+        int cx = (int)check_rng_int(&rng, -10, SIDE + 10), cy = (int)check_rng_int(&rng, -10, SIDE + 10);
+        if (trial < 60)
+            cx = cy = SIDE / 2;
+        marks *m = new_marks(NULL);
+        cg_image *image = blank();
+        CHECK(cg_circle_steps(cx, cy, r, mark_step, m) == CG_OK);
+        CHECK(cg_draw_circle(image, cx, cy, r, white) == CG_OK);
+        CHECK_MSG(compare(m, image, 1) == 0, "circle r %d at (%d, %d): trace and cg_draw_circle differ",
+                  r, cx, cy);
+        cg_image_free(image);
+        free(m);
+    }
+}
+
+/* Region steps' decisions agree with their moves. */
+static int ellipse_moves(void *user, const cg_step *s)
+{
+    (void)user;
+    const cg_step_field *d = cg_step_find(s, "d"), *move = cg_step_find(s, "move");
+    if (!s->phase || !d || d->kind != CG_STEP_INTEGER)
+        return 0;
+    if (strcmp(s->phase, "region 1") == 0)
+        CHECK_MSG((d->integer < 0) == (strcmp(move->text, "E") == 0), "region 1: d %lld, move %s",
+                  d->integer, move->text);
+    if (strcmp(s->phase, "region 2") == 0 && strncmp(move->text, "switch", 6) != 0)
+        CHECK_MSG((d->integer >= 0) == (strcmp(move->text, "S") == 0), "region 2: d %lld, move %s",
+                  d->integer, move->text);
+    return 0;
+}
+
+static void ellipse_agrees(void)
+{
+    check_rng rng = {0xe111};
+    for (int trial = 0; trial < 1500; trial++) {
+        int rx = (int)check_rng_int(&rng, 0, 60), ry = (int)check_rng_int(&rng, 0, 60);
+        if (trial % 7 == 0) /* thin ellipses */
+            ry = (int)check_rng_int(&rng, 0, 3);
+        if (rx == ry)
+            continue;
+        int cx = (int)check_rng_int(&rng, -10, SIDE + 10), cy = (int)check_rng_int(&rng, -10, SIDE + 10);
+        if (trial < 200)
+            cx = cy = SIDE / 2;
+        marks *m = new_marks(NULL);
+        cg_image *image = blank();
+        CHECK(cg_ellipse_steps(cx, cy, rx, ry, mark_step, m) == CG_OK);
+        CHECK(cg_draw_ellipse(image, cx, cy, rx, ry, white) == CG_OK);
+        CHECK_MSG(compare(m, image, 0) == 0, "ellipse %d x %d at (%d, %d): trace and "
+                  "cg_draw_ellipse differ", rx, ry, cx, cy);
+        CHECK(cg_ellipse_steps(cx, cy, rx, ry, ellipse_moves, NULL) == CG_OK);
+        cg_image_free(image);
+        free(m);
+    }
+}
+
+/* ---- curves ------------------------------------------------------------------- */
+
+static void random_points(check_rng *rng, cg_vec2 *p, int n, double size)
+{
+    for (int i = 0; i < n; i++)
+        p[i] = cg_vec2_make(check_rng_range(rng, -size, size), check_rng_range(rng, -size, size));
+}
+
+static void casteljau_agrees(void)
+{
+    check_rng rng = {0xca57};
+    for (int trial = 0; trial < 500; trial++) {
+        int n = (int)check_rng_int(&rng, 2, 12);
+        cg_vec2 control[12], left[12], right[12], q;
+        random_points(&rng, control, n, 100);
+        double t = trial % 5 == 0 ? check_rng_int(&rng, 0, 1) : check_rng_unit(&rng);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_casteljau_steps(control, n, t, cg_step_log_record, log) == CG_OK);
+        CHECK_EQ_INT(cg_step_log_count(log), n + 1);
+        cg_bezier_point(control, n, t, &q);
+        cg_bezier_split(control, n, t, left, right);
+        const cg_step *top = cg_step_log_get(log, (size_t)n - 1);
+        const cg_step_field *point = cg_step_find(top, "Q");
+        CHECK(point && point->kind == CG_STEP_POINT && point->point.x == q.x && point->point.y == q.y);
+        const cg_step *split = cg_step_log_get(log, (size_t)n);
+        const cg_step_field *l = cg_step_find(split, "left"), *r = cg_step_find(split, "right");
+        CHECK(l && r && l->point_count == (size_t)n && r->point_count == (size_t)n);
+        for (int i = 0; l && r && i < n; i++)
+            CHECK(memcmp(&l->points[i], &left[i], sizeof left[i]) == 0
+                  && memcmp(&r->points[i], &right[i], sizeof right[i]) == 0);
+        /* each level has one point fewer, and is the interpolation of the one before */
+        for (int level = 1; level < n; level++) {
+            const cg_step_field *prev = cg_step_find(cg_step_log_get(log, (size_t)level - 1), "points");
+            const cg_step_field *cur = cg_step_find(cg_step_log_get(log, (size_t)level), "points");
+            CHECK(cur->point_count + 1 == prev->point_count);
+            for (size_t i = 0; i < cur->point_count; i++) {
+                cg_vec2 e = cg_vec2_add(cg_vec2_scale(prev->points[i], 1 - t),
+                                        cg_vec2_scale(prev->points[i + 1], t));
+                CHECK_NEAR(cur->points[i].x, e.x, 1e-9);
+                CHECK_NEAR(cur->points[i].y, e.y, 1e-9);
+            }
+        }
+        cg_step_log_free(log);
+    }
+}
+
+static void cubic_agrees(void)
+{
+    check_rng rng = {0xc0b1c};
+    for (int trial = 0; trial < 400; trial++) {
+        cg_cubic2 curve;
+        curve.basis = (cg_curve_basis)(trial % 4);
+        random_points(&rng, curve.g, 4, 50);
+        int n = (int)check_rng_int(&rng, 1, 20);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_cubic_steps(&curve, n, cg_step_log_record, log) == CG_OK);
+        CHECK_EQ_INT(cg_step_log_count(log), n + 1);
+        for (size_t k = 0; k < cg_step_log_count(log); k++) {
+            const cg_step *s = cg_step_log_get(log, k);
+            double t = cg_step_find(s, "t")->real, w[4], sum = 0;
+            cg_vec2 q = cg_cubic2_point(&curve, t), blended = {0, 0};
+            const cg_step_field *point = cg_step_find(s, "Q");
+            CHECK(point->point.x == q.x && point->point.y == q.y);
+            static const char *const names[4] = {"b1", "b2", "b3", "b4"};
+            for (int j = 0; j < 4; j++) {
+                w[j] = cg_step_find(s, names[j])->real;
+                sum += w[j];
+                blended = cg_vec2_add(blended, cg_vec2_scale(curve.g[j], w[j]));
+            }
+            CHECK_NEAR(blended.x, q.x, 1e-9 * 200);
+            CHECK_NEAR(blended.y, q.y, 1e-9 * 200);
+            if (curve.basis != CG_BASIS_HERMITE) /* the weights of a point basis sum to 1 */
+                CHECK_NEAR(sum, 1, 1e-12);
+        }
+        cg_step_log_free(log);
+    }
+}
+
+typedef struct point_list { cg_vec2 p[4096]; int n; } point_list;
+
+static cg_status collect_point(void *user, cg_vec2 p)
+{
+    point_list *l = user;
+    if (l->n < 4096)
+        l->p[l->n] = p;
+    l->n++;
+    return CG_OK;
+}
+
+static int collect_emitted(void *user, const cg_step *s)
+{
+    point_list *l = user;
+    const cg_step_field *point = cg_step_find(s, "point");
+    const cg_step_field *decision = cg_step_find(s, "decision");
+    if (point && point->kind == CG_STEP_POINT) {
+        CHECK(strcmp(decision->text, "emit") == 0);
+        collect_point(l, point->point);
+    } else {
+        CHECK(strcmp(decision->text, "split") == 0);
+    }
+    return 0;
+}
+
+static void flatten_agrees(void)
+{
+    check_rng rng = {0xf1a7};
+    static point_list library, traced;
+    for (int trial = 0; trial < 600; trial++) {
+        int n = (int)check_rng_int(&rng, 2, 8);
+        cg_vec2 control[8];
+        random_points(&rng, control, n, 200);
+        if (trial % 9 == 0) /* a cusp: coincident middle points */
+            control[n / 2] = control[(n - 1) / 2];
+        double tolerance = pow(10, check_rng_range(&rng, -2, 1));
+        library.n = traced.n = 0;
+        cg_status a = cg_bezier_flatten(control, n, tolerance, collect_point, &library);
+        cg_status b = cg_bezier_flatten_steps(control, n, tolerance, collect_emitted, &traced);
+        CHECK(a == CG_OK);
+        if (library.n > 4096 || b == CG_ERANGE)
+            continue;
+        CHECK(b == CG_OK);
+        CHECK_EQ_INT(traced.n, library.n);
+        CHECK_MSG(traced.n == library.n
+                      && memcmp(traced.p, library.p, (size_t)library.n * sizeof library.p[0]) == 0,
+                  "flatten trial %d: the trace's points differ from cg_bezier_flatten's", trial);
+    }
+}
+
+/* ---- the log and bad input ------------------------------------------------------ */
+
+static int stop_after_three(void *user, const cg_step *s)
+{
+    (void)s;
+    return ++*(int *)user >= 3;
+}
+
+static void log_and_bad_input(void)
+{
+    int calls = 0;
+    CHECK(cg_line_steps(0, 0, 40, 7, stop_after_three, &calls) == CG_OK);
+    CHECK_EQ_INT(calls, 3);
+    cg_step_log *log;
+    CHECK(cg_step_log_create(&log) == CG_OK);
+    cg_vec2 control[3] = {{0, 0}, {5, 9}, {10, 0}};
+    CHECK(cg_casteljau_steps(control, 3, 0.25, cg_step_log_record, log) == CG_OK);
+    CHECK(cg_step_log_status(log) == CG_OK);
+    const cg_step *s = cg_step_log_get(log, 0);
+    CHECK(s && s->phase && strcmp(s->phase, "levels") == 0 && s->geometry_count == 3);
+    CHECK(cg_step_log_get(log, 99) == NULL);
+    CHECK(cg_step_find(s, "no such field") == NULL);
+    cg_step_log_free(log);
+    cg_step_log_free(NULL);
+    CHECK(cg_line_steps(0, 0, 2000000, 0, cg_step_log_record, NULL) == CG_ERANGE);
+    CHECK(cg_line_steps(0, 0, 1, 1, NULL, NULL) == CG_EINVAL);
+    CHECK(cg_circle_steps(0, 0, -1, stop_after_three, &calls) == CG_EINVAL);
+    CHECK(cg_ellipse_steps(0, 0, 30000, 3, stop_after_three, &calls) == CG_ERANGE);
+    CHECK(cg_casteljau_steps(control, 1, 0.5, stop_after_three, &calls) == CG_EINVAL);
+    cg_vec2 bad[2] = {{0, 0}, {NAN, 1}};
+    CHECK(cg_casteljau_steps(bad, 2, 0.5, stop_after_three, &calls) == CG_EINVAL);
+    CHECK(cg_bezier_flatten_steps(control, 3, 0, stop_after_three, &calls) == CG_EINVAL);
+    CHECK(cg_bezier_flatten_steps(control, 3, 1e-30, stop_after_three, &calls) == CG_ERANGE);
+    cg_cubic2 curve = {CG_BASIS_BEZIER, {{0, 0}, {1, 1}, {2, 1}, {3, 0}}};
+    CHECK(cg_cubic_steps(&curve, 0, stop_after_three, &calls) == CG_EINVAL);
+}
+
+int main(int argc, char **argv)
+{
+    check_start(argc, argv);
+    CHECK_GROUP(line_agrees);
+    CHECK_GROUP(dda_definition);
+    CHECK_GROUP(circle_agrees);
+    CHECK_GROUP(ellipse_agrees);
+    CHECK_GROUP(casteljau_agrees);
+    CHECK_GROUP(cubic_agrees);
+    CHECK_GROUP(flatten_agrees);
+    CHECK_GROUP(log_and_bad_input);
+    return check_finish();
+}

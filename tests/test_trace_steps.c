@@ -363,6 +363,114 @@ static void flatten_agrees(void)
     }
 }
 
+/* ---- clipping ---------------------------------------------------------------- */
+
+static void liang_barsky_agrees(void)
+{
+    check_rng rng = {0x1b};
+    int accepted_count = 0, rejected_count = 0;
+    for (int trial = 0; trial < 4000; trial++) {
+        cg_rect w = {check_rng_range(&rng, -10, 0), check_rng_range(&rng, -10, 0),
+                     check_rng_range(&rng, 0, 10), check_rng_range(&rng, 0, 10)};
+        cg_vec2 p0 = {check_rng_range(&rng, -20, 20), check_rng_range(&rng, -20, 20)};
+        cg_vec2 p1 = {check_rng_range(&rng, -20, 20), check_rng_range(&rng, -20, 20)};
+        if (trial % 8 == 0) /* vertical and horizontal lines: p = 0 */
+            p1.x = p0.x;
+        if (trial % 8 == 1)
+            p1.y = p0.y;
+        cg_vec2 c0 = p0, c1 = p1;
+        int accepted;
+        CHECK(cg_clip_line_liang_barsky(w, &c0, &c1, &accepted) == CG_OK);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_liang_barsky_steps(w, p0, p1, cg_step_log_record, log) == CG_OK);
+        size_t count = cg_step_log_count(log);
+        const cg_step *last = cg_step_log_get(log, count - 1);
+        const cg_step_field *outcome = cg_step_find(last, "outcome");
+        CHECK(outcome && strcmp(outcome->text, accepted ? "accept" : "reject") == 0);
+        /* the trace's own t_enter and t_exit give the same part */
+        const cg_step *boundary = cg_step_log_get(log, count - 2);
+        double t0 = cg_step_find(boundary, "t_enter")->real, t1 = cg_step_find(boundary, "t_exit")->real;
+        int traced_accept = t0 <= t1 && !strstr(cg_step_find(boundary, "kind")->text, "reject");
+        CHECK_EQ_INT(traced_accept, accepted);
+        if (accepted) {
+            accepted_count++;
+            const cg_step_field *from = cg_step_find(last, "from"), *to = cg_step_find(last, "to");
+            CHECK(from->point.x == c0.x && from->point.y == c0.y && to->point.x == c1.x && to->point.y == c1.y);
+            cg_vec2 d = cg_vec2_sub(p1, p0);
+            CHECK_NEAR(p0.x + t0 * d.x, c0.x, 1e-9);
+            CHECK_NEAR(p0.y + t0 * d.y, c0.y, 1e-9);
+            CHECK_NEAR(p0.x + t1 * d.x, c1.x, 1e-9);
+            CHECK_NEAR(p0.y + t1 * d.y, c1.y, 1e-9);
+        } else {
+            rejected_count++;
+        }
+        /* p and q as the notes define them */
+        const cg_step *left = cg_step_log_get(log, 0);
+        CHECK(strcmp(cg_step_find(left, "boundary")->text, "left") == 0);
+        CHECK(cg_step_find(left, "p")->real == -(p1.x - p0.x) && cg_step_find(left, "q")->real == p0.x - w.xmin);
+        cg_step_log_free(log);
+    }
+    CHECK(accepted_count > 500 && rejected_count > 500);
+}
+
+/* The last "output" list of a Sutherland-Hodgman trace (the lists step of
+ * the last clip edge). */
+typedef struct last_list { cg_vec2 p[1024]; size_t n; int seen; } last_list;
+
+static int keep_lists(void *user, const cg_step *s)
+{
+    last_list *l = user;
+    const cg_step_field *input = cg_step_find(s, "input"), *output = cg_step_find(s, "output");
+    if (input && output) {
+        l->n = output->point_count < 1024 ? output->point_count : 1024;
+        memcpy(l->p, output->points, l->n * sizeof l->p[0]);
+        l->seen++;
+    }
+    return 0;
+}
+
+static void sutherland_hodgman_agrees(void)
+{
+    check_rng rng = {0x5a};
+    static last_list list;
+    for (int trial = 0; trial < 1500; trial++) {
+        /* a convex window: points on a circle in order; a random subject */
+        int m = (int)check_rng_int(&rng, 3, 8), n = (int)check_rng_int(&rng, 3, 12);
+        cg_vec2 window[8], subject[12];
+        double start = check_rng_range(&rng, 0, 6.28);
+        for (int i = 0; i < m; i++) {
+            double a = start + 6.283185307179586 * (i + check_rng_range(&rng, 0.1, 0.9)) / m;
+            window[i] = cg_vec2_make(10 * cos(a), 10 * sin(a));
+        }
+        if (trial % 2) /* clockwise windows too */
+            for (int i = 0; i < m / 2; i++) {
+                cg_vec2 t = window[i];
+                window[i] = window[m - 1 - i];
+                window[m - 1 - i] = t;
+            }
+        random_points(&rng, subject, n, 15);
+        if (trial % 10 == 0) /* vertices on the window's corners */
+            subject[0] = window[0];
+        cg_vec2 *result = NULL;
+        size_t count = 0;
+        cg_status a = cg_clip_sutherland_hodgman(subject, (size_t)n, window, (size_t)m, &result, &count);
+        memset(&list, 0, sizeof list);
+        cg_status b = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m, keep_lists, &list);
+        CHECK(a == b);
+        if (a == CG_OK) {
+            CHECK(list.seen >= 1);
+            CHECK_MSG(list.n == count && (count == 0 || memcmp(list.p, result, count * sizeof *result) == 0),
+                      "trial %d: the trace's last list (%zu points) is not the library's (%zu)", trial,
+                      list.n, count);
+        }
+        free(result);
+    }
+    /* A non-convex window is refused as by the library. */
+    cg_vec2 dart[4] = {{0, 0}, {10, 0}, {2, 2}, {0, 10}}, square[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    CHECK(cg_sutherland_hodgman_steps(square, 4, dart, 4, keep_lists, &list) == CG_EINVAL);
+}
+
 /* ---- the log and bad input ------------------------------------------------------ */
 
 static int stop_after_three(void *user, const cg_step *s)
@@ -410,6 +518,8 @@ int main(int argc, char **argv)
     CHECK_GROUP(casteljau_agrees);
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
+    CHECK_GROUP(liang_barsky_agrees);
+    CHECK_GROUP(sutherland_hodgman_agrees);
     CHECK_GROUP(log_and_bad_input);
     return check_finish();
 }

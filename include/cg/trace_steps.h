@@ -17,6 +17,7 @@
 #define CG_TRACE_STEPS_H
 
 #include "cg/core.h"
+#include "cg/clip.h"
 #include "cg/curve.h"
 
 #include <stddef.h>
@@ -64,6 +65,7 @@ typedef struct cg_step {
      * flattening step's chord. */
     const cg_vec2 *kept;
     int kept_count;
+    int kept_closed; /* kept is a closed polygon that replaces earlier ones */
 } cg_step;
 
 typedef int (*cg_step_fn)(void *user, const cg_step *step);
@@ -137,6 +139,25 @@ cg_status cg_cubic_steps(const cg_cubic2 *curve, int n, cg_step_fn step, void *u
  * exactly those cg_bezier_flatten gives the sink.  At most 100000 steps. */
 cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tolerance,
                                   cg_step_fn step, void *user);
+
+/* ---- chapter 11: clipping (y-up coordinates, as cg/clip.h) -------------- */
+
+/* Liang-Barsky: one step per boundary in the notes' order (left, right,
+ * bottom, top) with p, q, t = q / p, whether the line enters or leaves
+ * there (or runs parallel), and t_enter, t_exit so far; a last step gives
+ * the outcome, with the visible part as cg_clip_line_liang_barsky computes
+ * it (exactly; the trace's t values are doubles).  CG_EINVAL as
+ * cg_clip_line_liang_barsky. */
+cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step,
+                                void *user);
+
+/* Sutherland-Hodgman as cg_clip_sutherland_hodgman: for each clip edge one
+ * step per polygon edge s -> e (inside/outside of each end, the case and
+ * the points it outputs), then a step with the edge's input and output
+ * lists.  The last output list is cg_clip_sutherland_hodgman's result.
+ * Errors as cg_clip_sutherland_hodgman. */
+cg_status cg_sutherland_hodgman_steps(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
+                                      size_t m, cg_step_fn step, void *user);
 
 #ifdef __cplusplus
 }

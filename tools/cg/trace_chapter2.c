@@ -47,6 +47,8 @@ static int run_line(int argc, char **argv, const trace_outputs *out)
                                       v[0], v[1], v[2], v[3]);
     if (!run)
         return cli_fail("trace: out of memory");
+    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
+    trace_scene_add(run, real_line, 2, 0);
     cg_status status = cg_line_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
                                      cg_step_log_record, run->log);
     if (status == CG_OK && cg_step_log_count(run->log) > 0) {
@@ -92,6 +94,8 @@ static int run_dda(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "steps n = max(|dx|, |dy|) = %lld; x += dx/n = %g, y += dy/n = %g", n,
                n ? (double)dx / (double)n : 0.0, n ? (double)dy / (double)n : 0.0);
     trace_note(run, "each pixel is (round(x), round(y)), halves rounded up");
+    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
+    trace_scene_add(run, real_line, 2, 0);
     cg_status status = cg_line_dda_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
                                          cg_step_log_record, run->log);
     long pixels = trace_pixel_total(run);

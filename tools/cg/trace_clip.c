@@ -1,6 +1,120 @@
-/* `cg trace` for chapter 11: Liang-Barsky and Sutherland-Hodgman. */
+/* `cg trace` for chapter 11: Liang-Barsky and Sutherland-Hodgman (y-up
+ * coordinates, as cg clip). */
 #include "trace_algorithms.h"
 
+#include "cli.h"
+#include "cg/clip.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { MAX_POLYGON = 256 };
+
+static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
+{
+    double bounds[4];
+    cg_vec2 p0, p1;
+    static const char *const names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
+    if (argc != 7)
+        return cli_usage_error("trace", "liang-barsky: expected 'liang-barsky XMIN YMIN XMAX "
+                                        "YMAX X0,Y0 X1,Y1'");
+    for (int i = 0; i < 4; i++)
+        if (trace_parse_real(names[i], argv[i + 1], &bounds[i]))
+            return CLI_USAGE;
+    if (trace_parse_point("P0", argv[5], &p0) || trace_parse_point("P1", argv[6], &p1))
+        return CLI_USAGE;
+    if (bounds[0] > bounds[2] || bounds[1] > bounds[3])
+        return cli_usage_error("trace", "liang-barsky: the window needs XMIN <= XMAX and "
+                                        "YMIN <= YMAX");
+    cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
+    trace_run *run = trace_run_create("liang-barsky", argc - 1, argv + 1,
+                                      "Liang-Barsky: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",
+                                      p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax,
+                                      window.ymin, window.ymax);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    run->y_up = 1;
+    cg_vec2 frame[4] = {{window.xmin, window.ymin}, {window.xmax, window.ymin},
+                        {window.xmax, window.ymax}, {window.xmin, window.ymax}};
+    trace_scene_add(run, frame, 4, 1);
+    trace_note(run, "P(t) = P0 + t (P1 - P0), 0 <= t <= 1, is inside where p_k t <= q_k:");
+    trace_note(run, "  left p = -dx, q = x0 - xmin; right p = dx, q = xmax - x0;");
+    trace_note(run, "  bottom p = -dy, q = y0 - ymin; top p = dy, q = ymax - y0");
+    trace_note(run, "p < 0: entering at t = q/p (t_enter = max); p > 0: leaving (t_exit = min); "
+                    "p = 0: parallel, outside when q < 0");
+    trace_note(run, "visible from t_enter to t_exit when t_enter <= t_exit (the outcome's points "
+                    "are computed exactly by the library)");
+    cg_status status = cg_liang_barsky_steps(window, p0, p1, cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "the window or the points are not valid", out);
+    trace_run_free(run);
+    return code;
+}
+
+/* "X,Y X,Y ..." into points; the count, or -1 after a message. */
+static int parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity)
+{
+    int count = 0;
+    const char *at = text;
+    char word[128];
+    while (*at) {
+        while (*at == ' ' || *at == '\t')
+            at++;
+        if (!*at)
+            break;
+        size_t n = strcspn(at, " \t");
+        if (n >= sizeof word || count >= capacity) {
+            cli_usage_error("trace", "%s: at most %d points of at most %zu characters", what,
+                            capacity, sizeof word - 1);
+            return -1;
+        }
+        memcpy(word, at, n);
+        word[n] = 0;
+        if (trace_parse_point(what, word, &points[count]))
+            return -1;
+        count++;
+        at += n;
+    }
+    return count;
+}
+
+static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *out)
+{
+    static cg_vec2 window[MAX_POLYGON], subject[MAX_POLYGON];
+    if (argc != 3)
+        return cli_usage_error("trace", "sutherland-hodgman: expected 'sutherland-hodgman "
+                                        "\"WINDOW\" \"SUBJECT\"', each as 'X,Y X,Y X,Y ...'");
+    int m = parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
+    int n = m < 0 ? -1 : parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
+    if (m < 0 || n < 0)
+        return CLI_USAGE;
+    if (m < 3)
+        return cli_usage_error("trace", "sutherland-hodgman: the window needs at least 3 "
+                                        "points");
+    trace_run *run = trace_run_create("sutherland-hodgman", argc - 1, argv + 1,
+                                      "Sutherland-Hodgman: a %d-gon clipped by a convex %d-gon",
+                                      n, m);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    run->y_up = 1;
+    trace_scene_add(run, window, m, 1);
+    trace_scene_add(run, subject, n, 1);
+    trace_note(run, "for each clip edge in turn, every polygon edge s -> e of the input list "
+                    "adds to the output list:");
+    trace_note(run, "  in -> in: e;  in -> out: the crossing;  out -> out: nothing;  out -> in: "
+                    "the crossing, then e");
+    trace_note(run, "(a point on the clip line is inside); the output list is the next edge's "
+                    "input");
+    cg_status status = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m,
+                                                   cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "the window must be convex with non-zero area, and "
+                                         "every point finite", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_clip_algorithms[] = {
+    {"liang-barsky", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_liang_barsky},
+    {"sutherland-hodgman", "'WINDOW' 'SUBJECT'", run_sutherland_hodgman},
     {NULL, NULL, NULL},
 };

@@ -16,6 +16,7 @@
 #include "cli.h"
 #include "cg/color.h"
 #include "cg/draw.h"
+#include "cg/fill.h"
 #include "cg/image.h"
 
 #include <errno.h>
@@ -102,16 +103,39 @@ static void fill_cell(cg_image *image, const frame_view *v, int x, int y, cg_rgb
                 cg_image_blend(image, x0 + i, y0 + j, c);
 }
 
+/* A polyline stroked width pixels wide with round joins, and a dot on
+ * each vertex when dots. */
 static void draw_path(cg_image *image, const frame_view *v, const cg_vec2 *p, int n, int closed,
                       cg_rgba8 color, int dots)
 {
-    for (int i = 0; i + 1 < n || (closed && n > 2 && i < n); i++) {
-        cg_vec2 a = to_frame(v, p[i]), b = to_frame(v, p[(i + 1) % n]);
-        cg_draw_line_aa(image, a.x, a.y, b.x, b.y, color);
+    cg_path *path;
+    if (n <= 0 || cg_path_create(&path) != CG_OK)
+        return;
+    for (int i = 0; i < n; i++) {
+        cg_vec2 a = to_frame(v, p[i]);
+        if (i == 0)
+            cg_path_move_to(path, a.x, a.y);
+        else
+            cg_path_line_to(path, a.x, a.y);
     }
+    if (closed && n > 2)
+        cg_path_close(path);
+    cg_stroke_style style = cg_stroke_style_default();
+    style.width = 2;
+    style.join = CG_JOIN_ROUND;
+    style.cap = CG_CAP_ROUND;
+    cg_paint paint = cg_paint_solid(color);
+    if (n > 1)
+        cg_stroke_path(image, path, &style, &paint);
+    cg_path_free(path);
     for (int i = 0; dots && i < n; i++) {
         cg_vec2 a = to_frame(v, p[i]);
-        cg_draw_circle_aa(image, a.x, a.y, 2.5, color);
+        cg_path *disc;
+        if (cg_path_create(&disc) != CG_OK)
+            return;
+        cg_path_arc(disc, a.x, a.y, 3.5, 0, 6.283185307179586);
+        cg_fill_path(image, disc, CG_FILL_NONZERO, &paint);
+        cg_path_free(disc);
     }
 }
 
@@ -139,21 +163,24 @@ static void draw_frame(cg_image *image, const trace_run *run, const frame_view *
     const cg_rgba8 scene = {40, 150, 70, 255};
     cg_image_clear_rgba8(image, (cg_rgba8){255, 255, 255, 255});
     draw_grid(image, v);
-    for (int i = 0; i < run->scene_count; i++)
-        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed,
-                  scene, 0);
+    size_t last_list = 0;
+    for (size_t i = 0; i <= upto; i++)
+        if (cg_step_log_get(run->log, i)->kept_closed)
+            last_list = i;
     for (size_t i = 0; i <= upto; i++) {
         const cg_step *s = cg_step_log_get(run->log, i);
         for (int k = 0; k < s->pixel_count; k++)
             fill_cell(image, v, s->pixels[2 * k], s->pixels[2 * k + 1], i == upto ? now : done,
                       s->intensity ? s->intensity[k] : 1);
-        if (s->kept_count == 1) {
-            cg_vec2 a = to_frame(v, s->kept[0]);
-            cg_draw_circle_aa(image, a.x, a.y, 3, i == upto ? now : kept);
-        } else {
-            draw_path(image, v, s->kept, s->kept_count, 0, i == upto ? now : kept, 0);
-        }
+        /* a list of results (Sutherland-Hodgman's) replaces the one before it */
+        if (s->kept_closed && i < last_list)
+            continue;
+        draw_path(image, v, s->kept, s->kept_count, s->kept_closed, i == upto ? now : kept,
+                  s->kept_count == 1);
     }
+    for (int i = 0; i < run->scene_count; i++)
+        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed,
+                  scene, 0);
     const cg_step *s = cg_step_log_get(run->log, upto);
     draw_path(image, v, s->geometry, s->geometry_count, s->closed, look, 1);
 }

@@ -360,7 +360,7 @@ static void json_step(const cg_step *s, size_t index, size_t in_phase)
     json_points(s->geometry, (size_t)s->geometry_count);
     printf(",\"closed\":%s,\"kept\":", s->closed ? "true" : "false");
     json_points(s->kept, (size_t)s->kept_count);
-    printf("}");
+    printf(",\"kept_closed\":%s}", s->kept_closed ? "true" : "false");
 }
 
 void trace_print_json(const trace_run *run)

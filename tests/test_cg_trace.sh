@@ -229,6 +229,19 @@ left=$(ls -d /tmp/cg-trace-* 2>/dev/null | wc -l)
 "$CG" trace dda 0 0 5 2 --html "$dir/dda.html" >/dev/null
 check "temporary frames removed" "$left" "$(ls -d /tmp/cg-trace-* 2>/dev/null | wc -l)"
 
+# The examples of docs/teaching.md are what the command prints today.
+docs=${2:-}/docs/teaching.md
+if [ -n "${2:-}" ] && [ -f "$docs" ]; then
+    count=0
+    while IFS= read -r command; do
+        expected=$(awk -v c="$command" '$0 == "$ " c { on = 1; next } on && /^```/ { exit } on' "$docs")
+        actual=$(eval "\"$CG\" ${command#cg }")
+        check "docs example: $command" "$expected" "$actual"
+        count=$((count + 1))
+    done < <(sed -n 's/^\$ \(cg trace .*\)/\1/p' "$docs")
+    [ "$count" -ge 8 ] || { echo "FAIL: docs/teaching.md has only $count examples"; fail=1; }
+fi
+
 # A non-convex window, and --frames into a file that is not a folder.
 "$CG" trace sutherland-hodgman "0,0 10,0 2,2 0,10" "1,1 3,1 3,3" >/dev/null 2>"$dir/err" &&
     { echo "FAIL: a non-convex window is accepted"; fail=1; }

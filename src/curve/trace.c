@@ -74,12 +74,13 @@ cg_status cg_cubic_steps(const cg_cubic2 *curve, int n, cg_step_fn step, void *u
                 weight[j] += power[i] * m.m[i][j];
         }
         cg_vec2 q = cg_cubic2_point(curve, t), chord[2] = {previous, q};
-        cg_vec2 t_row[2] = {{power[0], power[1]}, {power[2], power[3]}};
+        char t_row[128];
+        snprintf(t_row, sizeof t_row, "[%.6g %.6g %.6g 1]", power[0], power[1], power[2]);
         core_step st;
         core_step_begin(&st, cg_curve_basis_name(curve->basis));
         core_step_integer(&st, "k", k);
         core_step_real(&st, "t", t);
-        core_step_points(&st, "T", t_row, 2);
+        core_step_text(&st, "T", t_row);
         for (int j = 0; j < 4; j++)
             core_step_real(&st, weight_names[j], weight[j]);
         core_step_point(&st, "Q", q);

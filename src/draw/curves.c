@@ -1,27 +1,16 @@
 /* Curves of section 2.3 drawn as flattened polylines. */
 #include "internal.h"
 #include "cg/curve.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 
-typedef struct point_list {
-    cg_vec2 *points;
-    size_t count, capacity;
-} point_list;
+typedef CORE_ARRAY(cg_vec2) point_list;
 
 static cg_status append(void *user, cg_vec2 p)
 {
     point_list *list = user;
-    if (list->count == list->capacity) {
-        size_t capacity = list->capacity ? list->capacity * 2 : 64;
-        cg_vec2 *grown = realloc(list->points, capacity * sizeof *grown);
-        if (!grown)
-            return CG_ENOMEM;
-        list->points = grown;
-        list->capacity = capacity;
-    }
-    list->points[list->count++] = p;
-    return CG_OK;
+    return core_array_push(list, p);
 }
 
 /* Largest coordinate accepted for aliased curves, whose points are rounded
@@ -34,14 +23,14 @@ static cg_status draw_points(cg_image *image, const point_list *list, cg_draw_mo
     if (mode == CG_DRAW_ANTIALIASED) {
         /* Both modes take image-plane coordinates; aliased curves join the pixels
          * that contain the polyline's points with Bresenham lines. */
-        return cg_draw_polyline_aa(image, list->points, (int)list->count, color);
+        return cg_draw_polyline_aa(image, list->data, (int)list->count, color);
     }
     int *xy = malloc(list->count * 2 * sizeof *xy);
     if (!xy)
         return CG_ENOMEM;
     int n = 0;
     for (size_t i = 0; i < list->count; i++) {
-        int x = (int)floor(list->points[i].x), y = (int)floor(list->points[i].y);
+        int x = (int)floor(list->data[i].x), y = (int)floor(list->data[i].y);
         if (n > 0 && xy[2 * n - 2] == x && xy[2 * n - 1] == y)
             continue;
         xy[2 * n] = x;
@@ -81,7 +70,7 @@ static cg_status draw_beziers(cg_image *image, const cg_vec2 *control, int segme
         status = cg_bezier_flatten(control + s * stride, points, tolerance, append, &list);
     if (status == CG_OK)
         status = draw_points(image, &list, mode, color);
-    free(list.points);
+    free(list.data);
     return status;
 }
 

@@ -1,21 +1,27 @@
 /* Allocation, growth, copying, compaction and conversion of the half-edge
  * structure. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-static int grow_array(void **array, size_t element, size_t old_count, size_t new_count)
+/* Grows *array (when there is one: attributes are optional) from capacity
+ * to room for `needed` elements with the growth policy of src/core/array.h,
+ * zeroing the new room; *grown_capacity receives the new capacity.  The
+ * policy depends only on (capacity, needed), so parallel arrays grown from
+ * the same capacity end with the same one. */
+static cg_status grow_array(void **array, size_t element, size_t capacity, size_t needed,
+                            size_t *grown_capacity)
 {
     if (!*array)
-        return 1;
-    void *p = realloc(*array, (new_count ? new_count : 1) * element);
-    if (!p)
-        return 0;
-    if (new_count > old_count)
-        memset((char *)p + old_count * element, 0, (new_count - old_count) * element);
-    *array = p;
-    return 1;
+        return CG_OK;
+    size_t room = capacity;
+    if (core_array_reserve(array, &room, needed, element) != CG_OK)
+        return CG_ENOMEM;
+    memset((char *)*array + capacity * element, 0, (room - capacity) * element);
+    *grown_capacity = room;
+    return CG_OK;
 }
 
 unsigned hm_attribute_flags(const cg_hemesh *m)
@@ -77,63 +83,55 @@ void cg_hemesh_free(cg_hemesh *m)
     free(m);
 }
 
-static size_t grown(size_t capacity, size_t needed)
-{
-    size_t c = capacity + capacity / 2 + 16;
-    return c < needed ? needed : c;
-}
-
 cg_status hm_reserve(cg_hemesh *m, size_t extra_vertices, size_t extra_edges, size_t extra_faces)
 {
     size_t nv = m->vertex_count + extra_vertices, nh = m->halfedge_count + 2 * extra_edges,
            nf = m->face_count + extra_faces;
     if (nv >= CG_HEMESH_DELETED || nh >= CG_HEMESH_DELETED || nf >= CG_HEMESH_DELETED)
         return CG_ERANGE;
+    /* The arrays of one kind share one capacity: it is updated only once
+     * all of them have grown. */
     if (nv > m->vertex_capacity) {
-        size_t c = grown(m->vertex_capacity, nv), old = m->vertex_capacity;
-        if (c >= CG_HEMESH_DELETED)
-            c = CG_HEMESH_DELETED - 1;
+        size_t old = m->vertex_capacity, c = old;
         void *vh = m->vertex_halfedge, *pos = m->positions;
         void *nor = m->normals, *tex = m->texcoords, *col = m->colors;
-        if (!grow_array(&vh, sizeof *m->vertex_halfedge, old, c))
-            return CG_ENOMEM;
+        cg_status s = grow_array(&vh, sizeof *m->vertex_halfedge, old, nv, &c);
         m->vertex_halfedge = vh;
-        if (!grow_array(&pos, sizeof *m->positions, old, c))
-            return CG_ENOMEM;
+        if (s == CG_OK)
+            s = grow_array(&pos, sizeof *m->positions, old, nv, &c);
         m->positions = pos;
-        if (!grow_array(&nor, sizeof *m->normals, old, c))
-            return CG_ENOMEM;
+        if (s == CG_OK)
+            s = grow_array(&nor, sizeof *m->normals, old, nv, &c);
         m->normals = nor;
-        if (!grow_array(&tex, sizeof *m->texcoords, old, c))
-            return CG_ENOMEM;
+        if (s == CG_OK)
+            s = grow_array(&tex, sizeof *m->texcoords, old, nv, &c);
         m->texcoords = tex;
-        if (!grow_array(&col, sizeof *m->colors, old, c))
-            return CG_ENOMEM;
+        if (s == CG_OK)
+            s = grow_array(&col, sizeof *m->colors, old, nv, &c);
         m->colors = col;
+        if (s != CG_OK)
+            return s;
         m->vertex_capacity = c;
     }
     if (nh > m->halfedge_capacity) {
-        size_t c = grown(m->halfedge_capacity, nh);
-        c += c & 1;
-        if (c >= CG_HEMESH_DELETED)
-            c = CG_HEMESH_DELETED - 1;
+        size_t c = m->halfedge_capacity;
         void *he = m->halfedges;
-        if (!grow_array(&he, sizeof *m->halfedges, m->halfedge_capacity, c))
-            return CG_ENOMEM;
+        cg_status s = grow_array(&he, sizeof *m->halfedges, m->halfedge_capacity, nh, &c);
         m->halfedges = he;
+        if (s != CG_OK)
+            return s;
         m->halfedge_capacity = c;
     }
     if (nf > m->face_capacity) {
-        size_t c = grown(m->face_capacity, nf), old = m->face_capacity;
-        if (c >= CG_HEMESH_DELETED)
-            c = CG_HEMESH_DELETED - 1;
+        size_t old = m->face_capacity, c = old;
         void *fh = m->face_halfedge, *fcol = m->face_colors;
-        if (!grow_array(&fh, sizeof *m->face_halfedge, old, c))
-            return CG_ENOMEM;
+        cg_status s = grow_array(&fh, sizeof *m->face_halfedge, old, nf, &c);
         m->face_halfedge = fh;
-        if (!grow_array(&fcol, sizeof *m->face_colors, old, c))
-            return CG_ENOMEM;
+        if (s == CG_OK)
+            s = grow_array(&fcol, sizeof *m->face_colors, old, nf, &c);
         m->face_colors = fcol;
+        if (s != CG_OK)
+            return s;
         m->face_capacity = c;
     }
     return CG_OK;

@@ -16,6 +16,7 @@
  *    an error).
  */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,22 +39,21 @@ typedef struct builder {
     uint32_t *cut_edges; /* the cut edges opened, cut of them */
     uint32_t first_nonmanifold[2], first_misoriented[2];
     uint32_t *partner; /* corners, only when orienting */
+    /* the room of the growing lists: cut_edges and the report's three */
+    size_t cut_capacity, bad_face_capacity, nonmanifold_edge_capacity,
+        nonmanifold_vertex_capacity;
 } builder;
 
-static void list_push(uint32_t **list, size_t *count, uint32_t value, int *failed)
+/* Appends value to *list (count items in room for *capacity); sets *failed
+ * when memory runs out. */
+static void list_push(uint32_t **list, size_t *count, size_t *capacity, uint32_t value,
+                      int *failed)
 {
-    /* capacity doubles at powers of two */
-    size_t n = *count;
-    if ((n & (n - 1)) == 0) {
-        uint32_t *p = realloc(*list, (n ? 2 * n : 1) * sizeof *p);
-        if (!p) {
-            *failed = 1;
-            return;
-        }
-        *list = p;
+    if (core_array_reserve((void **)list, capacity, *count + 1, sizeof **list) != CG_OK) {
+        *failed = 1;
+        return;
     }
-    (*list)[n] = value;
-    *count = n + 1;
+    (*list)[(*count)++] = value;
 }
 
 void cg_hemesh_report_clear(cg_hemesh_report *report)
@@ -124,7 +124,8 @@ static cg_status check_faces(builder *b)
                 first_bad = f;
             bad++;
             if (rep)
-                list_push(&rep->bad_faces, &rep->bad_face_count, (uint32_t)f, &failed);
+                list_push(&rep->bad_faces, &rep->bad_face_count, &b->bad_face_capacity, (uint32_t)f,
+                          &failed);
         } else {
             kept_corners += end - begin;
         }
@@ -233,6 +234,7 @@ static cg_status match(builder *b, int record)
     free(b->corner_halfedge);
     free(b->cut_edges);
     b->cut_edges = NULL;
+    b->cut_capacity = 0;
     free(b->edge_vertices);
     b->corner_halfedge = malloc((C ? C : 1) * sizeof *b->corner_halfedge);
     b->edge_vertices = malloc((C ? C : 1) * 2 * sizeof *b->edge_vertices);
@@ -320,8 +322,10 @@ static cg_status match(builder *b, int record)
                     }
                     nonmanifold++;
                     if (rep) {
-                        list_push(&rep->nonmanifold_edges, &entries, (uint32_t)a, &failed);
-                        list_push(&rep->nonmanifold_edges, &entries, other, &failed);
+                        list_push(&rep->nonmanifold_edges, &entries,
+                                  &b->nonmanifold_edge_capacity, (uint32_t)a, &failed);
+                        list_push(&rep->nonmanifold_edges, &entries,
+                                  &b->nonmanifold_edge_capacity, other, &failed);
                     }
                     if (first) {
                         b->partner[first[other]] = CG_HEMESH_NONE;
@@ -330,7 +334,7 @@ static cg_status match(builder *b, int record)
                 }
                 if (occupied[other] & (1u << dir)) {
                     size_t listed = cut;
-                    list_push(&b->cut_edges, &listed, (uint32_t)edges, &failed);
+                    list_push(&b->cut_edges, &listed, &b->cut_capacity, (uint32_t)edges, &failed);
                     cut++;
                     occupied[other] = 0;
                     current[other] = (uint32_t)edges++;
@@ -532,7 +536,7 @@ static cg_status assemble(builder *b, cg_hemesh **out)
     uint32_t first_bad_vertex = 0;
     int failed = 0;
     uint32_t *extra_fans = NULL; /* first half-edge of each extra fan */
-    size_t extra_count = 0;
+    size_t extra_count = 0, extra_capacity = 0;
     cg_hemesh_report *rep = b->report;
     for (size_t h0 = 0; h0 < H; h0++) {
         if (seen[h0 >> 6] >> (h0 & 63) & 1)
@@ -550,7 +554,7 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             continue;
         }
         /* a second (or later) fan at v */
-        list_push(&extra_fans, &extra_count, pick, &failed);
+        list_push(&extra_fans, &extra_count, &extra_capacity, pick, &failed);
     }
     free(seen);
     /* count distinct vertices among the extra fans (each fan's vertex is its origin) */
@@ -571,7 +575,7 @@ static cg_status assemble(builder *b, cg_hemesh **out)
             for (size_t v = 0; v < V; v++)
                 if (mark[v])
                     list_push(&rep->nonmanifold_vertices, &rep->nonmanifold_vertex_count,
-                              (uint32_t)v, &failed);
+                              &b->nonmanifold_vertex_capacity, (uint32_t)v, &failed);
         free(mark);
     }
     if (failed) {

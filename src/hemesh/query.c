@@ -1,5 +1,6 @@
 /* Traversals, counts, geometry and validation of the half-edge structure. */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -388,23 +389,16 @@ cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long
     /* genus per component with faces, in order of the lowest vertex */
     size_t count = 0;
     long common = -2;
-    long *list = NULL;
+    CORE_ARRAY(long) list = {0};
     int failed = 0;
     for (size_t v = 0; v < V; v++) {
         if (m->vertex_halfedge[v] == CG_HEMESH_DELETED || parent[v] != v || !has_face[v])
             continue;
         long g = (2 - chi[v] - loops[v]) / 2;
         common = common == -2 ? g : common == g ? g : -1;
-        if (component_genus) {
-            if ((count & (count - 1)) == 0) {
-                long *p = realloc(list, (count ? 2 * count : 1) * sizeof *p);
-                if (!p) {
-                    failed = 1;
-                    break;
-                }
-                list = p;
-            }
-            list[count] = g;
+        if (component_genus && core_array_push(&list, g) != CG_OK) {
+            failed = 1;
+            break;
         }
         count++;
     }
@@ -415,11 +409,11 @@ cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long
     free(loops);
     free(has_face);
     if (failed) {
-        free(list);
+        free(list.data);
         return CG_ENOMEM;
     }
     if (component_genus)
-        *component_genus = list;
+        *component_genus = list.data;
     if (component_genus_count)
         *component_genus_count = count;
     return CG_OK;

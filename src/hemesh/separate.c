@@ -12,6 +12,7 @@
  * builds again without a defect.
  */
 #include "internal.h"
+#include "../core/array.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -21,8 +22,7 @@
 static cg_status separate_find_among(const cg_hemesh *m, const uint32_t *candidates, size_t count,
                                      uint32_t **list, size_t *found_count)
 {
-    uint32_t *found = NULL;
-    size_t n = 0;
+    CORE_ARRAY(uint32_t) found = {0};
     for (size_t i = 0; i < count; i++) {
         uint32_t e = candidates[i], u = m->halfedges[2 * e].origin, v = m->halfedges[2 * e + 1].origin;
         uint32_t h0 = m->vertex_halfedge[u], h = h0;
@@ -32,25 +32,20 @@ static cg_status separate_find_among(const cg_hemesh *m, const uint32_t *candida
             /* another edge to v, not one split already (listed earlier) */
             if (f != e && m->halfedges[h ^ 1u].origin == v) {
                 twice = 1;
-                for (size_t j = 0; j < n && twice; j++)
-                    twice = found[j] != f;
+                for (size_t j = 0; j < found.count && twice; j++)
+                    twice = found.data[j] != f;
             }
             h = cg_hemesh_cw(m, h);
         } while (h != h0 && !twice);
         if (!twice)
             continue;
-        if ((n & (n - 1)) == 0) { /* capacity doubles at powers of two */
-            uint32_t *p = realloc(found, (n ? 2 * n : 1) * sizeof *p);
-            if (!p) {
-                free(found);
-                return CG_ENOMEM;
-            }
-            found = p;
+        if (core_array_push(&found, e) != CG_OK) {
+            free(found.data);
+            return CG_ENOMEM;
         }
-        found[n++] = e;
     }
-    *list = found;
-    *found_count = n;
+    *list = found.data;
+    *found_count = found.count;
     return CG_OK;
 }
 
@@ -60,8 +55,7 @@ static cg_status separate_find_new(const cg_hemesh *m, size_t first, uint32_t **
 {
     size_t V = m->vertex_count;
     uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
-    uint32_t *found = NULL;
-    size_t n = 0;
+    CORE_ARRAY(uint32_t) found = {0};
     if (!stamp)
         return CG_ENOMEM;
     memset(stamp, 0xff, V * sizeof *stamp);
@@ -73,24 +67,17 @@ static cg_status separate_find_new(const cg_hemesh *m, size_t first, uint32_t **
             uint32_t d = m->halfedges[h ^ 1u].origin;
             if (stamp[d] != (uint32_t)v) {
                 stamp[d] = (uint32_t)v;
-            } else {
-                if ((n & (n - 1)) == 0) {
-                    uint32_t *p = realloc(found, (n ? 2 * n : 1) * sizeof *p);
-                    if (!p) {
-                        free(found);
-                        free(stamp);
-                        return CG_ENOMEM;
-                    }
-                    found = p;
-                }
-                found[n++] = h >> 1;
+            } else if (core_array_push(&found, h >> 1) != CG_OK) {
+                free(found.data);
+                free(stamp);
+                return CG_ENOMEM;
             }
             h = cg_hemesh_cw(m, h);
         } while (h != h0);
     }
     free(stamp);
-    *list = found;
-    *count = n;
+    *list = found.data;
+    *count = found.count;
     return CG_OK;
 }
 
@@ -104,7 +91,7 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, const uint32_t *candidates, size
      * when both are one vertex those two new edges coincide, and the next
      * round splits one of them (whose opposite corners differ).  Later
      * rounds look only at the vertices the last one added. */
-    size_t first_new_vertex = 0;
+    size_t first_new_vertex = 0, face_origin_capacity = 0;
     for (int round = 0; round < 8; round++) {
         uint32_t *list;
         size_t n, vertices = m->vertex_count;
@@ -116,14 +103,13 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, const uint32_t *candidates, size
         if (!n)
             return CG_OK;
         s = hm_reserve(m, n, 3 * n, 2 * n);
-        uint32_t *grown = s == CG_OK ? realloc(*face_origin, (m->face_count + 2 * n - first_new_face + 1)
-                                                                 * sizeof *grown)
-                                     : NULL;
-        if (!grown) {
+        if (s == CG_OK)
+            s = core_array_reserve((void **)face_origin, &face_origin_capacity,
+                                   m->face_count + 2 * n - first_new_face + 1, sizeof **face_origin);
+        if (s != CG_OK) {
             free(list);
-            return s == CG_OK ? CG_ENOMEM : s;
+            return s;
         }
-        *face_origin = grown;
         for (size_t i = 0; i < n; i++) {
             uint32_t e = list[i], h = 2 * e;
             uint32_t sides[2] = {m->halfedges[h].face, m->halfedges[h + 1].face};

@@ -1,8 +1,10 @@
 /* Reading and writing image files: format detection and safe replacement. */
 #include "internal.h"
+#include "../core/array.h"
 #include "../core/safe_file.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,19 +12,10 @@
 
 cg_status byte_buffer_append(byte_buffer *buffer, const void *bytes, size_t size)
 {
-    if (size > buffer->capacity - buffer->size) {
-        size_t capacity = buffer->capacity ? buffer->capacity : 4096;
-        while (capacity - buffer->size < size) {
-            if (capacity > SIZE_MAX / 2)
-                return CG_ENOMEM;
-            capacity *= 2;
-        }
-        unsigned char *grown = realloc(buffer->bytes, capacity);
-        if (!grown)
-            return CG_ENOMEM;
-        buffer->bytes = grown;
-        buffer->capacity = capacity;
-    }
+    if (size > SIZE_MAX - buffer->size
+        || core_array_reserve((void **)&buffer->bytes, &buffer->capacity, buffer->size + size, 1)
+               != CG_OK)
+        return CG_ENOMEM;
     memcpy(buffer->bytes + buffer->size, bytes, size);
     buffer->size += size;
     return CG_OK;

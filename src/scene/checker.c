@@ -13,6 +13,7 @@
  * sides of the edge get the same point, and the pieces' corners are merged by
  * position so that the renderer's smooth normals still join across them. */
 #include "checker.h"
+#include "../core/array.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -29,25 +30,10 @@ typedef struct polygon_list {
 
 static int list_reserve(polygon_list *l, size_t points)
 {
-    if (l->point_count + points > l->point_capacity) {
-        size_t capacity = l->point_capacity ? 2 * l->point_capacity : 64;
-        while (capacity < l->point_count + points)
-            capacity *= 2;
-        cg_vec3 *p = realloc(l->points, capacity * sizeof *p);
-        if (!p)
-            return 0;
-        l->points = p;
-        l->point_capacity = capacity;
-    }
-    if (l->count + 2 > l->start_capacity) {
-        size_t capacity = l->start_capacity ? 2 * l->start_capacity : 16;
-        size_t *s = realloc(l->starts, capacity * sizeof *s);
-        if (!s)
-            return 0;
-        l->starts = s;
-        l->start_capacity = capacity;
-    }
-    return 1;
+    return core_array_reserve((void **)&l->points, &l->point_capacity, l->point_count + points,
+                              sizeof *l->points) == CG_OK
+           && core_array_reserve((void **)&l->starts, &l->start_capacity, l->count + 2,
+                                 sizeof *l->starts) == CG_OK;
 }
 
 /* Appends the polygon p[0..n) when it has at least three corners. */
@@ -149,13 +135,8 @@ static cg_status split_axis(const checker_frame *frame, int axis, const polygon_
         }
         /* A slab at a time.  Each half-plane clip adds at most one corner per
          * crossing edge: 2n after the first, 4n after the second. */
-        if (6 * n > *room) {
-            cg_vec3 *grown = realloc(*scratch, 6 * n * sizeof *grown);
-            if (!grown)
-                return CG_ENOMEM;
-            *scratch = grown;
-            *room = 6 * n;
-        }
+        if (core_array_reserve((void **)scratch, room, 6 * n, sizeof **scratch) != CG_OK)
+            return CG_ENOMEM;
         cg_vec3 *low = *scratch, *slab = *scratch + 2 * n;
         for (double k = first; k <= last && k < hi; k++) {
             size_t a = clip_half(frame, axis, p, n, k, 1, low);

@@ -6,6 +6,7 @@
 #include "cg/clip.h"
 #include "cg/curve.h"
 #include "cg/draw.h"
+#include "cg/fill.h"
 #include "cg/trace_steps.h"
 
 #include <stdlib.h>
@@ -363,6 +364,40 @@ static void flatten_agrees(void)
     }
 }
 
+/* ---- filling ------------------------------------------------------------------ */
+
+static void scanline_agrees(void)
+{
+    check_rng rng = {0x5ca1};
+    for (int trial = 0; trial < 1500; trial++) {
+        /* one or two contours of 3 to 9 points, some beyond the image, some on
+         * pixel centres and edges (where the centre rule decides) */
+        cg_vec2 points[18];
+        int sizes[2] = {(int)check_rng_int(&rng, 3, 9), (int)check_rng_int(&rng, 3, 9)};
+        int contours = trial % 3 == 0 ? 2 : 1, total = sizes[0] + (contours == 2 ? sizes[1] : 0);
+        for (int i = 0; i < total; i++) {
+            double x = check_rng_range(&rng, -15, SIDE + 15), y = check_rng_range(&rng, -15, SIDE + 15);
+            if (trial % 4 == 1) { /* on the half-grid: centres and pixel edges */
+                x = floor(x * 2) / 2;
+                y = floor(y * 2) / 2;
+            }
+            points[i] = cg_vec2_make(x, y);
+        }
+        cg_fill_rule rule = trial % 2 ? CG_FILL_NONZERO : CG_FILL_EVEN_ODD;
+        marks *m = new_marks("scan-lines");
+        cg_image *image = blank();
+        CHECK(cg_scanline_fill_steps(points, sizes, contours, rule, mark_step, m) == CG_OK);
+        CHECK(cg_fill_polygon(image, points, sizes, contours, rule, white) == CG_OK);
+        CHECK_MSG(compare(m, image, 1) == 0, "scanline trial %d: trace and cg_fill_polygon differ", trial);
+        cg_image_free(image);
+        free(m);
+    }
+    cg_vec2 far[3] = {{0, 0}, {5000, 0}, {0, 5}};
+    int three = 3;
+    CHECK(cg_scanline_fill_steps(far, &three, 1, CG_FILL_EVEN_ODD, mark_step, NULL) == CG_ERANGE);
+    CHECK(cg_scanline_fill_steps(far, &three, 1, (cg_fill_rule)7, mark_step, NULL) == CG_EINVAL);
+}
+
 /* ---- clipping ---------------------------------------------------------------- */
 
 static void liang_barsky_agrees(void)
@@ -518,6 +553,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(casteljau_agrees);
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
+    CHECK_GROUP(scanline_agrees);
     CHECK_GROUP(liang_barsky_agrees);
     CHECK_GROUP(sutherland_hodgman_agrees);
     CHECK_GROUP(log_and_bad_input);

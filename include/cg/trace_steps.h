@@ -19,6 +19,7 @@
 #include "cg/core.h"
 #include "cg/clip.h"
 #include "cg/curve.h"
+#include "cg/fill.h"
 
 #include <stddef.h>
 
@@ -139,6 +140,21 @@ cg_status cg_cubic_steps(const cg_cubic2 *curve, int n, cg_step_fn step, void *u
  * exactly those cg_bezier_flatten gives the sink.  At most 100000 steps. */
 cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tolerance,
                                   cg_step_fn step, void *user);
+
+/* ---- chapter 10: filling -------------------------------------------------- */
+
+/* Scan-line polygon fill as cg_fill_polygon does it (same arguments, image
+ * coordinates, y down): phase "edge table", one step per non-horizontal
+ * edge that crosses a pixel centre, sorted by first row (edge number, top,
+ * bottom, first_row, last_row, x_first, dx_per_row, direction); phase
+ * "scan-lines", one step per row with active edges (y, centre_y, the edges
+ * added and removed, the active list sorted by crossing, the spans with the
+ * pixel-centre rule at their ends), setting the spans' pixels: exactly
+ * cg_fill_polygon's, unclipped.  Coordinates up to 4096 (CG_ERANGE
+ * beyond). */
+cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes,
+                                 int contour_count, cg_fill_rule rule, cg_step_fn step,
+                                 void *user);
 
 /* ---- chapter 11: clipping (y-up coordinates, as cg/clip.h) -------------- */
 

@@ -8,7 +8,8 @@
 
 #include <string.h>
 
-static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_clip_algorithms};
+static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_fill_algorithms,
+                                                trace_clip_algorithms};
 
 static int run(int argc, char **argv)
 {
@@ -48,6 +49,11 @@ const cg_command cg_command_trace = {
     "                             and the two halves of the subdivision\n"
     "  flatten TOL P0 P1 [...]    adaptive flattening: each piece, its distance from\n"
     "                             the chord, split or emitted and why\n\n"
+    "Chapter 10 (image coordinates, y down):\n"
+    "  scanline 'POLYGON' [even-odd|nonzero]\n"
+    "                             scan-line fill: the edge table, then per scan-line the\n"
+    "                             active edge list and the spans with the pixel-centre\n"
+    "                             rule; contours separated by ';'\n\n"
     "Chapter 11 (y-up coordinates; a window is XMIN YMIN XMAX YMAX):\n"
     "  liang-barsky XMIN YMIN XMAX YMAX P0 P1\n"
     "                             p, q and t for each boundary, entering or leaving\n"

@@ -14,6 +14,7 @@ typedef struct trace_algorithm {
 
 /* Each table ends with a {NULL} entry. */
 extern const trace_algorithm trace_chapter2_algorithms[];
+extern const trace_algorithm trace_fill_algorithms[];
 extern const trace_algorithm trace_clip_algorithms[];
 
 /* Argument parsing for the algorithms: each prints "cg: trace: ..." and
@@ -22,5 +23,9 @@ int trace_parse_int(const char *what, const char *text, long min, long max, long
 int trace_parse_real(const char *what, const char *text, double *out);
 /* "X,Y" with finite coordinates. */
 int trace_parse_point(const char *what, const char *text, cg_vec2 *out);
+
+/* "X,Y X,Y ..." into at most capacity points: the count, or -1 after a
+ * message. */
+int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity);
 
 #endif

@@ -40,3 +40,30 @@ int trace_parse_point(const char *what, const char *text, cg_vec2 *out)
     }
     return 0;
 }
+
+/* "X,Y X,Y ..." into points; the count, or -1 after a message. */
+int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity)
+{
+    int count = 0;
+    const char *at = text;
+    char word[128];
+    while (*at) {
+        while (*at == ' ' || *at == '\t')
+            at++;
+        if (!*at)
+            break;
+        size_t n = strcspn(at, " \t");
+        if (n >= sizeof word || count >= capacity) {
+            cli_usage_error("trace", "%s: at most %d points of at most %zu characters", what,
+                            capacity, sizeof word - 1);
+            return -1;
+        }
+        memcpy(word, at, n);
+        word[n] = 0;
+        if (trace_parse_point(what, word, &points[count]))
+            return -1;
+        count++;
+        at += n;
+    }
+    return count;
+}

@@ -51,41 +51,14 @@ static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
-/* "X,Y X,Y ..." into points; the count, or -1 after a message. */
-static int parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity)
-{
-    int count = 0;
-    const char *at = text;
-    char word[128];
-    while (*at) {
-        while (*at == ' ' || *at == '\t')
-            at++;
-        if (!*at)
-            break;
-        size_t n = strcspn(at, " \t");
-        if (n >= sizeof word || count >= capacity) {
-            cli_usage_error("trace", "%s: at most %d points of at most %zu characters", what,
-                            capacity, sizeof word - 1);
-            return -1;
-        }
-        memcpy(word, at, n);
-        word[n] = 0;
-        if (trace_parse_point(what, word, &points[count]))
-            return -1;
-        count++;
-        at += n;
-    }
-    return count;
-}
-
 static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *out)
 {
     static cg_vec2 window[MAX_POLYGON], subject[MAX_POLYGON];
     if (argc != 3)
         return cli_usage_error("trace", "sutherland-hodgman: expected 'sutherland-hodgman "
                                         "\"WINDOW\" \"SUBJECT\"', each as 'X,Y X,Y X,Y ...'");
-    int m = parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
-    int n = m < 0 ? -1 : parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
+    int m = trace_parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
+    int n = m < 0 ? -1 : trace_parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
     if (m < 0 || n < 0)
         return CLI_USAGE;
     if (m < 3)

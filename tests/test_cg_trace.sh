@@ -1,9 +1,19 @@
 #!/bin/bash
-# cg trace: step tables compared with values worked by hand from
-# Algorithms 1 and 2 of the notes.
+# cg trace: step tables compared with values worked by hand from the
+# notes' algorithms, every algorithm's JSON, frames and page read back by
+# outside tools (jq, python, xmllint, chromium), the examples of
+# docs/teaching.md rerun, and bad input.
 set -u
-CG=$1
+CG=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 fail=0
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+# The room the fills are traced in (examples/teaching/room.txt).
+printf 'size 16 12\nbackground white\ncolor black\npolyline 1 1 14 1 14 10 1 10 1 1\nline 7 1 7 7\nline 10 4 14 4\n' \
+    >"$dir/room.txt"
+room=$dir/room.txt
+[ -n "${2:-}" ] && [ -f "$2/examples/teaching/room.txt" ] && room=$2/examples/teaching/room.txt
+"$CG" draw "$room" -o "$dir/room.png" || { echo "FAIL: cannot draw the room"; fail=1; }
 check() { # name expected actual
     if [ "$2" != "$3" ]; then
         echo "FAIL: $1"; echo "expected:"; echo "$2"; echo "got:"; echo "$3"; fail=1
@@ -154,7 +164,7 @@ samples=("line 0 0 7 3" "dda 0 0 7 3" "circle 5" "ellipse 6 3"
          "hermite 0,0 10,0 5,10 5,-10 4" "bezier 0,0 2,8 8,8 10,0" "bspline 0,0 2,8 8,8 10,0 3"
          "catmull-rom 0,0 2,8 8,8 10,0" "casteljau 0.3 0,0 2,8 8,8 10,0"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
-         "liang-barsky 0 0 10 8 -5,2 15,6"
+         "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
          "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15")
 help=$("$CG" help trace)
 for sample in "${samples[@]}"; do
@@ -162,6 +172,7 @@ for sample in "${samples[@]}"; do
     # shellcheck disable=SC2206
     args=(${sample})
     args=("${args[@]//|/ }")
+    args=("${args[@]/ROOM/$dir/room.png}")
     echo "$help" | grep -qE "^  $name " || { echo "FAIL: 'cg help trace' does not name $name"; fail=1; }
     table=$("$CG" trace "${args[@]}") || { echo "FAIL: cg trace $sample"; fail=1; continue; }
     rows_in_table=$(echo "$table" | grep -cE '^ +[0-9]+ ')
@@ -186,8 +197,6 @@ fi
 
 # --frames: one PNG per step, each a real PNG (signature and size read back
 # by python), the pictures changing from step to step.
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
 "$CG" trace line 1 1 22 9 --frames "$dir/frames" >/dev/null || { echo "FAIL: --frames"; fail=1; }
 check "frame count" "23" "$(ls "$dir/frames" | grep -c '^step_[0-9]\{4\}\.png$')"
 sizes=$(python3 - "$dir/frames" <<'PY'
@@ -230,19 +239,6 @@ left=$(ls -d /tmp/cg-trace-* 2>/dev/null | wc -l)
 "$CG" trace dda 0 0 5 2 --html "$dir/dda.html" >/dev/null
 check "temporary frames removed" "$left" "$(ls -d /tmp/cg-trace-* 2>/dev/null | wc -l)"
 
-# The examples of docs/teaching.md are what the command prints today.
-docs=${2:-}/docs/teaching.md
-if [ -n "${2:-}" ] && [ -f "$docs" ]; then
-    count=0
-    while IFS= read -r command; do
-        expected=$(awk -v c="$command" '$0 == "$ " c { on = 1; next } on && /^```/ { exit } on' "$docs")
-        actual=$(eval "\"$CG\" ${command#cg }")
-        check "docs example: $command" "$expected" "$actual"
-        count=$((count + 1))
-    done < <(sed -n 's/^\$ \(cg trace .*\)/\1/p' "$docs")
-    [ "$count" -ge 8 ] || { echo "FAIL: docs/teaching.md has only $count examples"; fail=1; }
-fi
-
 # A non-convex window, and --frames into a file that is not a folder.
 "$CG" trace sutherland-hodgman "0,0 10,0 2,2 0,10" "1,1 3,1 3,3" >/dev/null 2>"$dir/err" &&
     { echo "FAIL: a non-convex window is accepted"; fail=1; }
@@ -251,6 +247,19 @@ touch "$dir/plain"
 "$CG" trace line 0 0 3 1 --frames "$dir/plain" >/dev/null 2>"$dir/err" &&
     { echo "FAIL: --frames into a file"; fail=1; }
 [ -s "$dir/err" ] || { echo "FAIL: --frames into a file: no message"; fail=1; }
+
+# The examples of docs/teaching.md are what the command prints today.
+docs=${2:-}/docs/teaching.md
+if [ -n "${2:-}" ] && [ -f "$docs" ]; then
+    count=0
+    while IFS= read -r command; do
+        expected=$(awk -v c="$command" '$0 == "$ " c { on = 1; next } on && /^```/ { exit } on' "$docs")
+        actual=$(cd "$dir" && eval "\"$CG\" ${command#cg }")
+        check "docs example: $command" "$expected" "$actual"
+        count=$((count + 1))
+    done < <(sed -n 's/^\$ \(cg trace .*\)/\1/p' "$docs")
+    [ "$count" -ge 8 ] || { echo "FAIL: docs/teaching.md has only $count examples"; fail=1; }
+fi
 
 # Bad input: usage errors (exit 2) with a message on stderr.
 for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \

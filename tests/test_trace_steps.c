@@ -398,6 +398,68 @@ static void scanline_agrees(void)
     CHECK(cg_scanline_fill_steps(far, &three, 1, (cg_fill_rule)7, mark_step, NULL) == CG_EINVAL);
 }
 
+/* Random walls: a few lines and circles of two colours on white, and
+ * noise, so that regions are ragged and touch diagonally. */
+static cg_image *random_walls(check_rng *rng)
+{
+    cg_image *image = blank();
+    cg_image_clear_rgba8(image, white);
+    cg_rgba8 walls[2] = {{0, 0, 0, 255}, {10, 0, 0, 255}};
+    for (int i = 0; i < 6; i++) {
+        cg_rgba8 c = walls[i % 2];
+        int a = (int)check_rng_int(rng, 0, SIDE - 1), b = (int)check_rng_int(rng, 0, SIDE - 1);
+        if (i % 3 == 2)
+            cg_draw_circle(image, a, b, (int)check_rng_int(rng, 3, 30), c);
+        else
+            cg_draw_line(image, a, b, (int)check_rng_int(rng, 0, SIDE - 1),
+                         (int)check_rng_int(rng, 0, SIDE - 1), c);
+    }
+    for (int i = 0; i < 150; i++)
+        cg_image_set_rgba8(image, (int)check_rng_int(rng, 0, SIDE - 1),
+                           (int)check_rng_int(rng, 0, SIDE - 1), walls[i % 2]);
+    return image;
+}
+
+static void flood_agrees(void)
+{
+    check_rng rng = {0xf100d};
+    const cg_rgba8 paint = {0, 200, 0, 255};
+    for (int trial = 0; trial < 400; trial++) {
+        cg_image *image = random_walls(&rng), *painted;
+        cg_image_copy(image, &painted);
+        int x = (int)check_rng_int(&rng, 0, SIDE - 1), y = (int)check_rng_int(&rng, 0, SIDE - 1);
+        cg_connectivity c = trial % 2 ? CG_CONNECT_8 : CG_CONNECT_4;
+        int tolerance = trial % 3 == 0 ? 20 : 0, boundary = trial % 4 >= 2;
+        cg_rgba8 wall = {0, 0, 0, 255};
+        marks *m = new_marks("stack");
+        size_t filled = 0;
+        if (boundary) {
+            CHECK(cg_boundary_fill_steps(image, x, y, wall, c, tolerance, mark_step, m) == CG_OK);
+            CHECK(cg_boundary_fill(painted, x, y, paint, wall, c, tolerance, &filled) == CG_OK);
+        } else {
+            CHECK(cg_flood_fill_steps(image, x, y, c, tolerance, mark_step, m) == CG_OK);
+            CHECK(cg_flood_fill(painted, x, y, paint, c, tolerance, &filled) == CG_OK);
+        }
+        /* the pixels the library painted: those now of the paint colour */
+        cg_image *changed = blank();
+        for (int j = 0; j < SIDE; j++)
+            for (int i = 0; i < SIDE; i++)
+                if (cg_image_get_rgba8(painted, i, j).g == 200)
+                    cg_image_set_rgba8(changed, i, j, white);
+        CHECK_MSG(compare(m, changed, 1) == 0, "fill trial %d from (%d, %d): trace and library differ",
+                  trial, x, y);
+        CHECK_EQ_INT(m->listed, filled);
+        cg_image_free(image);
+        cg_image_free(painted);
+        cg_image_free(changed);
+        free(m);
+    }
+    cg_image *image = blank();
+    CHECK(cg_flood_fill_steps(image, -1, 0, CG_CONNECT_4, 0, mark_step, NULL) == CG_ERANGE);
+    CHECK(cg_flood_fill_steps(image, 0, 0, (cg_connectivity)5, 0, mark_step, NULL) == CG_EINVAL);
+    cg_image_free(image);
+}
+
 /* ---- clipping ---------------------------------------------------------------- */
 
 static void liang_barsky_agrees(void)
@@ -554,6 +616,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
     CHECK_GROUP(scanline_agrees);
+    CHECK_GROUP(flood_agrees);
     CHECK_GROUP(liang_barsky_agrees);
     CHECK_GROUP(sutherland_hodgman_agrees);
     CHECK_GROUP(log_and_bad_input);

@@ -156,6 +156,20 @@ cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes
                                  int contour_count, cg_fill_rule rule, cg_step_fn step,
                                  void *user);
 
+/* Flood fill (the region of pixels like the seed's colour) and boundary
+ * fill (the region of pixels not of the boundary colour) by the notes'
+ * scan-line seed fill with a stack of seeds: one step per seed popped
+ * (phase "stack": popped, span "filled" with its left and right ends or
+ * "already filled", the seeds pushed, stack_size and stack_top, the last
+ * 64 entries), setting the span's pixels.  The region, connectivity and
+ * tolerance are those of cg_flood_fill and cg_boundary_fill, which fill
+ * exactly these pixels; the image is only read.  Statuses as theirs. */
+cg_status cg_flood_fill_steps(const cg_image *image, int x, int y, cg_connectivity connectivity,
+                              int tolerance, cg_step_fn step, void *user);
+cg_status cg_boundary_fill_steps(const cg_image *image, int x, int y, cg_rgba8 boundary,
+                                 cg_connectivity connectivity, int tolerance, cg_step_fn step,
+                                 void *user);
+
 /* ---- chapter 11: clipping (y-up coordinates, as cg/clip.h) -------------- */
 
 /* Liang-Barsky: one step per boundary in the notes' order (left, right,

@@ -3,6 +3,7 @@
 
 #include "cli.h"
 #include "cg/fill.h"
+#include "cg/image.h"
 
 #include <string.h>
 
@@ -87,7 +88,82 @@ static int run_scanline(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* flood IMAGE X Y [4|8] [TOLERANCE], boundary IMAGE X Y COLOR [4|8] [TOLERANCE] */
+static int run_seed_fill(int boundary, int argc, char **argv, const trace_outputs *out)
+{
+    int fixed = boundary ? 5 : 4;
+    long x, y, connectivity = 4, tolerance = 0;
+    cg_rgba8 wall = {0, 0, 0, 255};
+    if (argc < fixed || argc > fixed + 2)
+        return cli_usage_error("trace", boundary ? "boundary: expected 'boundary IMAGE X Y COLOR "
+                                                   "[4|8] [TOLERANCE]'"
+                                                 : "flood: expected 'flood IMAGE X Y [4|8] "
+                                                   "[TOLERANCE]'");
+    if (trace_parse_int("X", argv[2], -2147483647L, 2147483647L, &x)
+        || trace_parse_int("Y", argv[3], -2147483647L, 2147483647L, &y)
+        || (boundary && cli_parse_color("trace", "COLOR", argv[4], &wall))
+        || (argc > fixed && trace_parse_int("connectivity", argv[fixed], 4, 8, &connectivity))
+        || (argc > fixed + 1 && trace_parse_int("TOLERANCE", argv[fixed + 1], 0, 255, &tolerance)))
+        return CLI_USAGE;
+    if (connectivity != 4 && connectivity != 8)
+        return cli_usage_error("trace", "%s: connectivity is 4 or 8, not %ld", argv[0],
+                               connectivity);
+    cg_image *read, *image;
+    cg_error err;
+    if (cg_image_read(argv[1], &read, &err) != CG_OK)
+        return cli_fail("trace: %s", err.message);
+    cg_status status = cg_image_convert(read, CG_PIXEL_RGBA8, &image);
+    cg_image_free(read);
+    if (status != CG_OK)
+        return cli_fail("trace: %s: %s", argv[1], cg_status_str(status));
+    trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1,
+                                      "%s fill of %s from (%ld, %ld), %ld-connected",
+                                      boundary ? "Boundary" : "Flood", argv[1], x, y,
+                                      connectivity);
+    if (!run) {
+        cg_image_free(image);
+        return cli_fail("trace: out of memory");
+    }
+    if (boundary)
+        trace_note(run, "the region: pixels not of the boundary colour %s (each channel within "
+                        "%ld), connected to the seed", argv[4], tolerance);
+    else
+        trace_note(run, "the region: pixels like the seed's colour (each channel within %ld), "
+                        "connected to the seed", tolerance);
+    trace_note(run, "pop a seed; extend it left and right to its whole run [left, right] and "
+                    "fill it;");
+    trace_note(run, "push the rightmost pixel of each run of region pixels next to it on the "
+                    "rows above and below%s", connectivity == 8 ? " (diagonals included)" : "");
+    cg_connectivity c = connectivity == 8 ? CG_CONNECT_8 : CG_CONNECT_4;
+    status = boundary ? cg_boundary_fill_steps(image, (int)x, (int)y, wall, c, (int)tolerance,
+                                               cg_step_log_record, run->log)
+                      : cg_flood_fill_steps(image, (int)x, (int)y, c, (int)tolerance,
+                                            cg_step_log_record, run->log);
+    if (image->width <= 512 && image->height <= 512)
+        run->background = image; /* drawn under the frames */
+    else
+        cg_image_free(image);
+    long pixels = trace_pixel_total(run);
+    trace_summary(run, "%zu seeds popped; %ld pixel%s filled", cg_step_log_count(run->log), pixels,
+                  pixels == 1 ? "" : "s");
+    int code = trace_finish(run, status, "the seed must be inside the image", out);
+    trace_run_free(run);
+    return code;
+}
+
+static int run_flood(int argc, char **argv, const trace_outputs *out)
+{
+    return run_seed_fill(0, argc, argv, out);
+}
+
+static int run_boundary(int argc, char **argv, const trace_outputs *out)
+{
+    return run_seed_fill(1, argc, argv, out);
+}
+
 const trace_algorithm trace_fill_algorithms[] = {
     {"scanline", "'POLYGON' [even-odd|nonzero]", run_scanline},
+    {"flood", "IMAGE X Y [4|8] [TOLERANCE]", run_flood},
+    {"boundary", "IMAGE X Y COLOR [4|8] [TOLERANCE]", run_boundary},
     {NULL, NULL, NULL},
 };

@@ -55,6 +55,10 @@ static frame_view make_view(const trace_run *run)
     frame_view v = {INFINITY, INFINITY, -INFINITY, -INFINITY, 1, 1, 1, run->y_up};
     for (int i = 0; i < run->scene_count; i++)
         grow_points(&v, run->scene[i].points, run->scene[i].count);
+    if (run->background) {
+        grow(&v, 0, 0);
+        grow(&v, run->background->width, run->background->height);
+    }
     for (size_t i = 0; i < cg_step_log_count(run->log); i++) {
         const cg_step *s = cg_step_log_get(run->log, i);
         for (int k = 0; k < s->pixel_count; k++) {
@@ -162,6 +166,10 @@ static void draw_frame(cg_image *image, const trace_run *run, const frame_view *
     const cg_rgba8 now = {235, 110, 20, 255}, look = {200, 30, 60, 255};
     const cg_rgba8 scene = {40, 150, 70, 255};
     cg_image_clear_rgba8(image, (cg_rgba8){255, 255, 255, 255});
+    const cg_image *back = run->background;
+    for (int y = 0; back && y < back->height; y++) /* the input image, faded */
+        for (int x = 0; x < back->width; x++)
+            fill_cell(image, v, x, y, cg_image_get_rgba8(back, x, y), 0.4);
     draw_grid(image, v);
     size_t last_list = 0;
     for (size_t i = 0; i <= upto; i++)

@@ -52,6 +52,7 @@ void trace_run_free(trace_run *run)
     for (int i = 0; i < run->scene_count; i++)
         free(run->scene[i].points);
     cg_step_log_free(run->log);
+    cg_image_free(run->background);
     free(run);
 }
 

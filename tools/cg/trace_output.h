@@ -6,6 +6,7 @@
 #define CG_TOOL_TRACE_OUTPUT_H
 
 #include "cg/core.h"
+#include "cg/image.h"
 #include "cg/trace_steps.h"
 
 enum { TRACE_MAX_NOTES = 24, TRACE_MAX_SCENE = 2, TRACE_MAX_FRAMES = 2000 };
@@ -30,6 +31,7 @@ typedef struct trace_run {
     int y_up;              /* geometry is y-up (clipping), not image rows */
     trace_scene_path scene[TRACE_MAX_SCENE];
     int scene_count;
+    cg_image *background; /* the image a fill works on, owned (or NULL) */
 } trace_run;
 
 /* Where a trace goes: the table (default) or JSON on stdout, and the

@@ -160,7 +160,7 @@ check "casteljau point" "3 3 0.5 (20, 15) (20, 15)" \
 
 # Every algorithm of `cg help trace` runs, as a table and as JSON that an
 # outside parser reads back with the same steps.
-samples=("line 0 0 7 3" "dda 0 0 7 3" "circle 5" "ellipse 6 3"
+samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "hermite 0,0 10,0 5,10 5,-10 4" "bezier 0,0 2,8 8,8 10,0" "bspline 0,0 2,8 8,8 10,0 3"
          "catmull-rom 0,0 2,8 8,8 10,0" "casteljau 0.3 0,0 2,8 8,8 10,0"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
@@ -264,7 +264,7 @@ fi
 # Bad input: usage errors (exit 2) with a message on stderr.
 for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "line 0 0 2147483648 0" "line 0 0 200000 0" "ellipse 5 5" "ellipse 5" \
-            "ellipse 30000 2" "dda 0 0 1" "bezier 0,0 1,1 2,2" "bezier 0,0 1,1 2,2 3,x" \
+            "ellipse 30000 2" "dda 0 0 1" "wu 0 0 300000 1" "bezier 0,0 1,1 2,2" "bezier 0,0 1,1 2,2 3,x" \
             "hermite 0,0 1,1 2,2 3,3 0" "casteljau 0.5 0,0" "casteljau nan 0,0 1,1" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
             "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \

@@ -173,6 +173,60 @@ static void dda_definition(void)
     }
 }
 
+typedef struct wu_check { const int *line; cg_image *image; } wu_check;
+
+static int wu_column_check(void *user, const cg_step *s)
+{
+    wu_check *w = user;
+    const int *line = w->line;
+    long dx = line[2] - line[0], dy = line[3] - line[1];
+    int steep = labs(dy) > labs(dx);
+    long n = steep ? labs(dy) : labs(dx);
+    long long k = cg_step_find(s, "k")->integer;
+    double minor = cg_step_find(s, "minor")->real;
+    double exact = n ? (steep ? line[0] + (double)dx * k / n : line[1] + (double)dy * k / n)
+                     : (steep ? line[0] : line[1]);
+    CHECK_NEAR(minor, exact, 1e-9 * (1 + fabs(exact)));
+    CHECK(s->pixel_count == 2 && s->intensity);
+    CHECK_NEAR(s->intensity[0] + s->intensity[1], 1, 1e-12);
+    int lower = steep ? s->pixels[0] : s->pixels[1], upper = steep ? s->pixels[2] : s->pixels[3];
+    CHECK(upper == lower + 1 && lower <= minor && minor < lower + 1);
+    CHECK_NEAR(s->intensity[1], minor - lower, 1e-12);
+    /* the pixels drawn by cg_draw_line_wu carry these intensities */
+    for (int i = 0; i < 2; i++) {
+        int x = s->pixels[2 * i], y = s->pixels[2 * i + 1];
+        if (cg_image_contains(w->image, x, y))
+            CHECK_NEAR(cg_image_get(w->image, x, y).r, s->intensity[i], 2e-6);
+    }
+    return 0;
+}
+
+static void wu_agrees(void)
+{
+    check_rng rng = {0x3e};
+    cg_image *image;
+    cg_image_create(&image, SIDE, SIDE, CG_PIXEL_RGBAF);
+    for (int trial = 0; trial < 2000; trial++) {
+        int line[4];
+        for (int i = 0; i < 4; i++)
+            line[i] = (int)check_rng_int(&rng, -20, SIDE + 20);
+        cg_image_clear(image, (cg_rgbaf){0, 0, 0, 1});
+        CHECK(cg_draw_line_wu(image, line[0], line[1], line[2], line[3], white) == CG_OK);
+        wu_check w = {line, image};
+        CHECK(cg_line_wu_steps(line[0], line[1], line[2], line[3], wu_column_check, &w) == CG_OK);
+        /* and nothing else is lit */
+        marks *m = new_marks(NULL);
+        cg_line_wu_steps(line[0], line[1], line[2], line[3], mark_step, m);
+        long stray = 0;
+        for (int y = 0; y < SIDE; y++)
+            for (int x = 0; x < SIDE; x++)
+                stray += m->count[y][x] == 0 && cg_image_get(image, x, y).r != 0;
+        CHECK_EQ_INT(stray, 0);
+        free(m);
+    }
+    cg_image_free(image);
+}
+
 /* ---- circles and ellipses ------------------------------------------------- */
 
 static void circle_agrees(void)
@@ -610,6 +664,7 @@ int main(int argc, char **argv)
     check_start(argc, argv);
     CHECK_GROUP(line_agrees);
     CHECK_GROUP(dda_definition);
+    CHECK_GROUP(wu_agrees);
     CHECK_GROUP(circle_agrees);
     CHECK_GROUP(ellipse_agrees);
     CHECK_GROUP(casteljau_agrees);

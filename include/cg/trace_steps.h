@@ -105,6 +105,13 @@ cg_status cg_line_steps(int x0, int y0, int x1, int y1, cg_step_fn step, void *u
  * midpoint, or by the rounding of the accumulated slope. */
 cg_status cg_line_dda_steps(int x0, int y0, int x1, int y1, cg_step_fn step, void *user);
 
+/* Wu's line as cg_draw_line_wu draws it: phase "columns", one step per
+ * column along the major axis with k, major (the column), minor (the real
+ * minor coordinate of the line there), the lower and upper pixels and
+ * their intensities I_lower = 1 - frac(minor), I_upper = frac(minor); the
+ * step's pixels carry those intensities. */
+cg_status cg_line_wu_steps(int x0, int y0, int x1, int y1, cg_step_fn step, void *user);
+
 /* Algorithm 2 (cg_circle_trace) with its 8 mirrors: fields f, dE, dSE, move,
  * f_next, dE_next, dSE_next, pixel (first octant); the step's pixels are
  * those cg_draw_circle sets for it, centred on (cx, cy).  r up to 10^6. */

@@ -38,6 +38,8 @@ const cg_command cg_command_trace = {
     "  line X1 Y1 X2 Y2           Bresenham's line (Algorithm 1), any octant: the octant\n"
     "                             mapping, then f, the move E/NE, f after the update\n"
     "  dda X1 Y1 X2 Y2            the DDA line: x, y accumulated, rounded to pixels\n"
+    "  wu X1 Y1 X2 Y2             Wu's anti-aliased line: the two pixels and their\n"
+    "                             intensities in each column\n"
     "  circle R                   the midpoint circle (Algorithm 2): f, dE, dSE, E/SE\n"
     "  ellipse RX RY              the midpoint ellipse: region 1 (E/SE), the switch,\n"
     "                             region 2 (S/SE), with the decision d at each step\n"

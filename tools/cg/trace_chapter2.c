@@ -105,6 +105,31 @@ static int run_dda(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+static int run_wu(int argc, char **argv, const trace_outputs *out)
+{
+    long v[4];
+    int bad = parse_line("wu", argc, argv, v);
+    if (bad)
+        return bad;
+    trace_run *run = trace_run_create("wu", argc - 1, argv + 1,
+                                      "Wu's anti-aliased line from (%ld, %ld) to (%ld, %ld)", v[0],
+                                      v[1], v[2], v[3]);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "one column per step along the major axis (rows for a steep line); minor is "
+                    "the real line's other coordinate there");
+    trace_note(run, "the two pixels around it share the intensity: I_lower = 1 - frac(minor), "
+                    "I_upper = frac(minor)");
+    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
+    trace_scene_add(run, real_line, 2, 0);
+    cg_status status = cg_line_wu_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
+                                        cg_step_log_record, run->log);
+    trace_summary(run, "%zu columns", cg_step_log_count(run->log));
+    int code = trace_finish(run, status, "the line cannot be traced", out);
+    trace_run_free(run);
+    return code;
+}
+
 static int run_circle(int argc, char **argv, const trace_outputs *out)
 {
     long r;
@@ -305,6 +330,7 @@ static int run_flatten(int argc, char **argv, const trace_outputs *out)
 const trace_algorithm trace_chapter2_algorithms[] = {
     {"line", "X1 Y1 X2 Y2", run_line},
     {"dda", "X1 Y1 X2 Y2", run_dda},
+    {"wu", "X1 Y1 X2 Y2", run_wu},
     {"circle", "R", run_circle},
     {"ellipse", "RX RY", run_ellipse},
     {"hermite", "P1 P4 R1 R4 [N]", run_hermite},

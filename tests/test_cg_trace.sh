@@ -165,7 +165,8 @@ samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "catmull-rom 0,0 2,8 8,8 10,0" "casteljau 0.3 0,0 2,8 8,8 10,0"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
          "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
-         "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15")
+         "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15"
+         "weiler-atherton 0,0|10,0|10,10|5,4|0,10 -2,3|12,3|12,7|-2,7")
 help=$("$CG" help trace)
 for sample in "${samples[@]}"; do
     name=${sample%% *}
@@ -267,7 +268,7 @@ for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "ellipse 30000 2" "dda 0 0 1" "wu 0 0 300000 1" "bezier 0,0 1,1 2,2" "bezier 0,0 1,1 2,2 3,x" \
             "hermite 0,0 1,1 2,2 3,3 0" "casteljau 0.5 0,0" "casteljau nan 0,0 1,1" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
-            "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
+            "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
             "scanline 0,0|5,0|0,5 odd" "scanline 0,0|9000,0|0,5" \
             "line 0 0 5 5 --bogus" "line 0 0 5 5 --frames" "circle 3 --html="; do
     # words split at blanks; '|' inside a word stands for a blank

@@ -14,6 +14,8 @@
 
 enum { SIDE = 80 };
 
+static int stop_after_three(void *user, const cg_step *s);
+
 /* The pixels of a trace, marked on a SIDE x SIDE grid (those inside it),
  * with how often each was listed. */
 typedef struct marks {
@@ -622,6 +624,82 @@ static void sutherland_hodgman_agrees(void)
     CHECK(cg_sutherland_hodgman_steps(square, 4, dart, 4, keep_lists, &list) == CG_EINVAL);
 }
 
+/* A random simple polygon: star-shaped around c, angles in order. */
+static int random_star(check_rng *rng, cg_vec2 c, double radius, cg_vec2 *out)
+{
+    int n = (int)check_rng_int(rng, 3, 10);
+    double angles[10];
+    for (int i = 0; i < n; i++)
+        angles[i] = 6.283185307179586 * (i + check_rng_range(rng, 0.05, 0.95)) / n;
+    for (int i = 0; i < n; i++) {
+        double r = radius * check_rng_range(rng, 0.3, 1);
+        out[i] = cg_vec2_make(c.x + r * cos(angles[i]), c.y + r * sin(angles[i]));
+    }
+    return n;
+}
+
+static int same_ring(const cg_vec2 *a, size_t an, const cg_vec2 *b, size_t bn)
+{
+    return an == bn && memcmp(a, b, an * sizeof *a) == 0;
+}
+
+static void weiler_atherton_agrees(void)
+{
+    check_rng rng = {0x3a};
+    int with_crossings = 0, with_holes = 0;
+    for (int trial = 0; trial < 800; trial++) {
+        cg_vec2 subject[10], window[10];
+        int n = random_star(&rng, cg_vec2_make(0, 0), 10, subject);
+        int m = random_star(&rng, cg_vec2_make(check_rng_range(&rng, -8, 8), check_rng_range(&rng, -8, 8)),
+                            check_rng_range(&rng, 3, 14), window);
+        if (trial % 2) /* clockwise input too */
+            for (int i = 0; i < n / 2; i++) {
+                cg_vec2 t = subject[i];
+                subject[i] = subject[n - 1 - i];
+                subject[n - 1 - i] = t;
+            }
+        cg_polygon_set result = {0};
+        CHECK(cg_clip_weiler_atherton(subject, (size_t)n, window, (size_t)m, &result) == CG_OK);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_weiler_atherton_steps(subject, (size_t)n, window, (size_t)m, cg_step_log_record, log) == CG_OK);
+        /* the loops kept are the library's rings, and the result steps list them */
+        size_t loops = 0, results = 0, rings_found = 0;
+        for (size_t i = 0; i < cg_step_log_count(log); i++) {
+            const cg_step *st = cg_step_log_get(log, i);
+            if (st->phase && strcmp(st->phase, "loops") == 0 && strcmp(cg_step_find(st, "kept")->text, "yes") == 0) {
+                loops++;
+                const cg_step_field *ring = cg_step_find(st, "ring");
+                for (size_t r = 0; r < result.ring_count; r++)
+                    rings_found += same_ring(ring->points, ring->point_count,
+                                             result.points + result.ring_start[r],
+                                             result.ring_start[r + 1] - result.ring_start[r]);
+            }
+            if (st->phase && strcmp(st->phase, "result") == 0) {
+                const cg_step_field *ring = cg_step_find(st, "ring");
+                CHECK(results < result.ring_count
+                      && same_ring(ring->points, ring->point_count, result.points + result.ring_start[results],
+                                   result.ring_start[results + 1] - result.ring_start[results]));
+                results++;
+            }
+            if (st->phase && strcmp(st->phase, "crossings") == 0 && cg_step_find(st, "crossing")->text[1] == '0')
+                with_crossings++;
+        }
+        CHECK_EQ_INT(results, result.ring_count);
+        if (loops > 0) {
+            CHECK_EQ_INT(loops, result.ring_count);
+            CHECK_EQ_INT(rings_found, result.ring_count);
+        }
+        with_holes += result.ring_count > result.polygon_count;
+        cg_step_log_free(log);
+        cg_polygon_set_clear(&result);
+    }
+    CHECK(with_crossings > 300);
+    (void)with_holes;
+    cg_vec2 two[2] = {{0, 0}, {1, 1}};
+    CHECK(cg_weiler_atherton_steps(two, 2, two, 2, stop_after_three, NULL) == CG_EINVAL);
+}
+
 /* ---- the log and bad input ------------------------------------------------------ */
 
 static int stop_after_three(void *user, const cg_step *s)
@@ -674,6 +752,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(flood_agrees);
     CHECK_GROUP(liang_barsky_agrees);
     CHECK_GROUP(sutherland_hodgman_agrees);
+    CHECK_GROUP(weiler_atherton_agrees);
     CHECK_GROUP(log_and_bad_input);
     return check_finish();
 }

@@ -196,6 +196,19 @@ cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_
 cg_status cg_sutherland_hodgman_steps(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
                                       size_t m, cg_step_fn step, void *user);
 
+/* Weiler-Atherton as cg_clip_weiler_atherton: phase "prepare" (both
+ * boundaries counter-clockwise, the window moved by window_shift off
+ * degenerate contacts), "crossings" (each crossing I0, I1, ... along the
+ * subject: subject_edge, window_edge, t, u, point, entering or exiting),
+ * "lists" (each boundary's nodes with the crossings inserted: S3, W1, I2(in)
+ * ...), "traversal" (each leg of a loop: from a crossing along the subject
+ * or the window to the next, the points emitted), "loops" (each loop
+ * closed), and "result" (the library's rings: polygon, outer or hole, area,
+ * ring).  With no crossing, phase "containment" says why the result is
+ * what it is.  Errors as cg_clip_weiler_atherton. */
+cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
+                                   size_t m, cg_step_fn step, void *user);
+
 #ifdef __cplusplus
 }
 #endif

@@ -86,8 +86,43 @@ static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *ou
     return code;
 }
 
+static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
+{
+    static cg_vec2 window[MAX_POLYGON], subject[MAX_POLYGON];
+    if (argc != 3)
+        return cli_usage_error("trace", "weiler-atherton: expected 'weiler-atherton \"WINDOW\" "
+                                        "\"SUBJECT\"', each as 'X,Y X,Y X,Y ...'");
+    int m = trace_parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
+    int n = m < 0 ? -1 : trace_parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
+    if (m < 0 || n < 0)
+        return CLI_USAGE;
+    if (m < 3 || n < 3)
+        return cli_usage_error("trace", "weiler-atherton: each polygon needs at least 3 points");
+    trace_run *run = trace_run_create("weiler-atherton", argc - 1, argv + 1,
+                                      "Weiler-Atherton: a %d-gon clipped by a %d-gon", n, m);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    run->y_up = 1;
+    trace_scene_add(run, window, m, 1);
+    trace_scene_add(run, subject, n, 1);
+    trace_note(run, "both boundaries are made counter-clockwise; every crossing of a subject "
+                    "edge with a window edge is entering (the subject goes into the window) or "
+                    "exiting");
+    trace_note(run, "each boundary's list gets its crossings inserted in order; from each "
+                    "entering crossing not yet visited:");
+    trace_note(run, "  follow the subject to the next crossing, then the window to the next, "
+                    "... until the start comes back: one loop");
+    trace_note(run, "loops turning clockwise are holes of the smallest loop around them");
+    cg_status status = cg_weiler_atherton_steps(subject, (size_t)n, window, (size_t)m,
+                                                cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "each polygon needs 3 finite points", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_clip_algorithms[] = {
     {"liang-barsky", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_liang_barsky},
     {"sutherland-hodgman", "'WINDOW' 'SUBJECT'", run_sutherland_hodgman},
+    {"weiler-atherton", "'WINDOW' 'SUBJECT'", run_weiler_atherton},
     {NULL, NULL, NULL},
 };

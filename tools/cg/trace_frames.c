@@ -180,15 +180,19 @@ static void draw_frame(cg_image *image, const trace_run *run, const frame_view *
         for (int k = 0; k < s->pixel_count; k++)
             fill_cell(image, v, s->pixels[2 * k], s->pixels[2 * k + 1], i == upto ? now : done,
                       s->intensity ? s->intensity[k] : 1);
+    }
+    /* the fixed input over the pixels (the real line), under the results */
+    for (int i = 0; i < run->scene_count; i++)
+        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed,
+                  scene, 0);
+    for (size_t i = 0; i <= upto; i++) {
+        const cg_step *s = cg_step_log_get(run->log, i);
         /* a list of results (Sutherland-Hodgman's) replaces the one before it */
         if (s->kept_closed && i < last_list)
             continue;
         draw_path(image, v, s->kept, s->kept_count, s->kept_closed, i == upto ? now : kept,
                   s->kept_count == 1);
     }
-    for (int i = 0; i < run->scene_count; i++)
-        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed,
-                  scene, 0);
     const cg_step *s = cg_step_log_get(run->log, upto);
     draw_path(image, v, s->geometry, s->geometry_count, s->closed, look, 1);
 }

@@ -158,13 +158,25 @@ check "liang-barsky outcome" "0 accept (0, 3) (10, 5)" \
 check "casteljau point" "3 3 0.5 (20, 15) (20, 15)" \
       "$("$CG" trace casteljau 0.5 0,0 10,20 30,20 40,0 | grep -E '^ +3 ' | head -1 | tr -s ' ' | sed 's/^ //')"
 
+# RGB (0.2, 0.4, 0.6) by hand: max 0.6, min 0.2, delta 0.4; V = 0.6,
+# S = 0.4 / 0.6; L = 0.4, S = 0.4 / 0.8 = 0.5; H = 60 ((R - G) / delta + 4) = 210.
+check "hsv result" "0 HSV [210 0.666667 0.6]" \
+      "$("$CG" trace hsv 0.2 0.4 0.6 | sed -n '/^result:$/,/^$/p' | grep -E '^ +[0-9]+ ' | tr -s ' ' | sed 's/^ //')"
+check "hsl result" "0 HSL [210 0.5 0.4]" \
+      "$("$CG" trace hsl 0.2 0.4 0.6 | sed -n '/^result:$/,/^$/p' | grep -E '^ +[0-9]+ ' | tr -s ' ' | sed 's/^ //')"
+# The point (1, 1, 0) seen from (0, 0, 5), 60 degrees, 640x480: eye (1, 1, -5),
+# w = 5, x_ndc = (1 / tan 30 deg / (4/3)) / 5 = 0.2598, pixel x = 320 (1 + 0.2598).
+check "pipeline pixel" "403" "$("$CG" trace pipeline 1,1,0 --json | jq '.steps[-1].pixels[0][0]')"
+
 # Every algorithm of `cg help trace` runs, as a table and as JSON that an
 # outside parser reads back with the same steps.
 samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "hermite 0,0 10,0 5,10 5,-10 4" "bezier 0,0 2,8 8,8 10,0" "bspline 0,0 2,8 8,8 10,0 3"
          "catmull-rom 0,0 2,8 8,8 10,0" "casteljau 0.3 0,0 2,8 8,8 10,0"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
-         "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
+         "pipeline 1,1,0" "pipeline 1,1,0 3,2,6 0,0,0 45 320x200"
+         "light 0,0,0 0,0,1 0,0,5" "light 0,0,0 0,0,1 0,0,5 ambient:0.1,0.1,0.1 directional:0,0,-1:1,1,1"
+         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
          "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15"
          "weiler-atherton 0,0|10,0|10,10|5,4|0,10 -2,3|12,3|12,7|-2,7")
 help=$("$CG" help trace)
@@ -268,7 +280,9 @@ for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "ellipse 30000 2" "dda 0 0 1" "wu 0 0 300000 1" "bezier 0,0 1,1 2,2" "bezier 0,0 1,1 2,2 3,x" \
             "hermite 0,0 1,1 2,2 3,3 0" "casteljau 0.5 0,0" "casteljau nan 0,0 1,1" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
-            "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
+            "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "pipeline 1,1" "pipeline 0,0,0 0,0,0" \
+            "pipeline 0,0,0 0,0,5 0,0,0 200" "light 0,0,0 0,0,0 0,0,5" "light 0,0,0 0,0,1 0,0,5 spot:1,1,1" \
+            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
             "scanline 0,0|5,0|0,5 odd" "scanline 0,0|9000,0|0,5" \
             "line 0 0 5 5 --bogus" "line 0 0 5 5 --frames" "circle 3 --html="; do
     # words split at blanks; '|' inside a word stands for a blank

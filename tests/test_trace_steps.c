@@ -5,7 +5,10 @@
 #include "check.h"
 #include "cg/clip.h"
 #include "cg/curve.h"
+#include "cg/color.h"
 #include "cg/draw.h"
+#include "cg/light.h"
+#include "cg/xform.h"
 #include "cg/fill.h"
 #include "cg/trace_steps.h"
 
@@ -420,6 +423,144 @@ static void flatten_agrees(void)
     }
 }
 
+/* ---- viewing, illumination, colour ------------------------------------------- */
+
+static const cg_step *last_step_of(const cg_step_log *log, const char *phase)
+{
+    const cg_step *found = NULL;
+    for (size_t i = 0; i < cg_step_log_count(log); i++) {
+        const cg_step *s = cg_step_log_get(log, i);
+        if (s->phase && strcmp(s->phase, phase) == 0)
+            found = s;
+    }
+    return found;
+}
+
+static void pipeline_agrees(void)
+{
+    check_rng rng = {0x919e};
+    int inside = 0;
+    for (int trial = 0; trial < 1000; trial++) {
+        cg_vec3 eye = {check_rng_range(&rng, -10, 10), check_rng_range(&rng, -10, 10), check_rng_range(&rng, 2, 10)};
+        cg_vec3 target = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1)};
+        cg_vec3 point = {check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3)};
+        cg_mat4 model = cg_xform3_rotate_y(check_rng_range(&rng, 0, 6)), view, projection;
+        CHECK(cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) == CG_OK);
+        CHECK(cg_proj_perspective(check_rng_range(&rng, 0.3, 2), 4.0 / 3, 0.1, 100, &projection) == CG_OK);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_pipeline_steps(model, view, projection, 640, 480, point, cg_step_log_record, log) == CG_OK);
+        const cg_step *window = last_step_of(log, "point");
+        int visible;
+        cg_vec3 expected = cg_project_point(cg_mat4_mul(cg_viewport(640, 480),
+                                                        cg_mat4_mul(projection, cg_mat4_mul(view, model))),
+                                            point, &visible);
+        const cg_step_field *space = cg_step_find(window, "space");
+        if (!visible) {
+            CHECK(strcmp(space->text, "ndc") == 0);
+        } else {
+            CHECK(strcmp(space->text, "window") == 0);
+            const cg_step_field *c = cg_step_find(window, "coordinates");
+            CHECK(c->kind == CG_STEP_REALS && c->real_count == 4);
+            CHECK_NEAR(c->reals[0], expected.x, 1e-9 * (1 + fabs(expected.x)));
+            CHECK_NEAR(c->reals[1], expected.y, 1e-9 * (1 + fabs(expected.y)));
+            CHECK_NEAR(c->reals[2], expected.z, 1e-9 * (1 + fabs(expected.z)));
+            inside += window->pixel_count == 1;
+            if (window->pixel_count == 1)
+                CHECK(window->pixels[0] == (int)floor(expected.x) && window->pixels[1] == (int)floor(expected.y));
+        }
+        /* the composite is the product of its factors */
+        const cg_step *composite = cg_step_log_get(log, 3);
+        cg_mat4 pvm = cg_mat4_mul(projection, cg_mat4_mul(view, model));
+        for (int k = 0; k < 16; k++)
+            CHECK(cg_step_find(composite, "value")->reals[k] == pvm.m[k / 4][k % 4]);
+        cg_step_log_free(log);
+    }
+    CHECK(inside > 100);
+}
+
+static void color_agrees(void)
+{
+    check_rng rng = {0xc0102};
+    for (int trial = 0; trial < 4000; trial++) {
+        cg_vec3 rgb = {check_rng_range(&rng, -0.2, 1.2), check_rng_range(&rng, -0.2, 1.2),
+                       check_rng_range(&rng, -0.2, 1.2)};
+        if (trial % 7 == 0) /* greys and ties between channels */
+            rgb.y = rgb.x;
+        if (trial % 11 == 0)
+            rgb.z = rgb.x = rgb.y;
+        for (int lightness = 0; lightness < 2; lightness++) {
+            cg_step_log *log;
+            cg_step_log_create(&log);
+            CHECK(cg_rgb_to_hsv_steps(rgb, lightness, cg_step_log_record, log) == CG_OK);
+            const cg_step_field *v = cg_step_find(last_step_of(log, "result"), "value");
+            cg_vec3 e = lightness ? cg_rgb_to_hsl(rgb) : cg_rgb_to_hsv(rgb);
+            CHECK_MSG(v && v->real_count == 3 && v->reals[0] == e.x && v->reals[1] == e.y && v->reals[2] == e.z,
+                      "%s of (%g, %g, %g): the trace's result differs", lightness ? "HSL" : "HSV",
+                      rgb.x, rgb.y, rgb.z);
+            cg_step_log_free(log);
+        }
+    }
+}
+
+static cg_vec3 reals3(const cg_step *s, const char *name)
+{
+    const cg_step_field *f = cg_step_find(s, name);
+    return f && f->real_count == 3 ? cg_vec3_make(f->reals[0], f->reals[1], f->reals[2]) : cg_vec3_make(NAN, NAN, NAN);
+}
+
+static void light_agrees(void)
+{
+    check_rng rng = {0x11947};
+    for (int trial = 0; trial < 1000; trial++) {
+        cg_light lights[4];
+        lights[0] = cg_light_ambient(cg_vec3_make(0.1, 0.2, 0.3));
+        lights[1] = cg_light_point(cg_vec3_make(check_rng_range(&rng, -5, 5), check_rng_range(&rng, -5, 5),
+                                                check_rng_range(&rng, -5, 5)), cg_vec3_make(1, 0.9, 0.8));
+        cg_light_set_attenuation(&lights[1], 1, 0.1, 0.05);
+        lights[2] = cg_light_directional(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), -1),
+                                         cg_vec3_make(0.5, 0.5, 0.5));
+        lights[3] = cg_light_spot(cg_vec3_make(0, 0, 4), cg_vec3_make(check_rng_range(&rng, -0.5, 0.5), 0, -1),
+                                  0.6, 2, cg_vec3_make(1, 1, 1));
+        cg_material material = cg_material_make(cg_vec3_make(0.8, 0.4, 0.2), 0.2, 0.7, 0.5,
+                                                check_rng_range(&rng, 1, 60));
+        material.specular = trial % 2 ? CG_SPECULAR_BLINN : CG_SPECULAR_PHONG;
+        cg_vec3 normal = cg_vec3_normalize(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
+        cg_vec3 view = cg_vec3_normalize(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
+        cg_vec3 point = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 0};
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_light_steps(point, normal, view, &material, lights, 4, cg_step_log_record, log) == CG_OK);
+        cg_shade_terms all = cg_light_shade_terms(point, normal, view, &material, lights, 4, NULL);
+        cg_vec3 diffuse = {0, 0, 0};
+        for (size_t i = 0; i < 4; i++) {
+            const cg_step *s = cg_step_log_get(log, i);
+            cg_vec3 d = reals3(s, "diffuse");
+            diffuse = cg_vec3_add(diffuse, d);
+            if (i == 0)
+                continue;
+            /* the diffuse term is f_att spot Il kd Od max(N.L, 0) */
+            double factor = cg_step_find(s, "f_att")->real * cg_step_find(s, "spot")->real
+                            * fmax(cg_step_find(s, "N.L")->real, 0) * material.kd;
+            CHECK_NEAR(d.x, factor * lights[i].color.x * material.color.x, 1e-12);
+            CHECK_NEAR(d.z, factor * lights[i].color.z * material.color.z, 1e-12);
+            /* and the specular term f_att spot Il ks spec */
+            double spec = cg_step_find(s, "f_att")->real * cg_step_find(s, "spot")->real
+                          * cg_step_find(s, "spec")->real * material.ks;
+            CHECK_NEAR(reals3(s, "specular").y, spec * lights[i].color.y, 1e-9);
+        }
+        CHECK_NEAR(diffuse.x, all.diffuse.x, 1e-12);
+        CHECK_NEAR(diffuse.y, all.diffuse.y, 1e-12);
+        const cg_step *total = last_step_of(log, "total");
+        cg_vec3 t = reals3(total, "I");
+        CHECK(t.x == all.ambient.x + (all.diffuse.x + all.specular.x));
+        cg_step_log_free(log);
+    }
+    cg_material bad = cg_material_make(cg_vec3_make(1, 1, 1), -1, 0, 0, 1);
+    CHECK(cg_light_steps(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 1), cg_vec3_make(0, 0, 1), &bad, NULL, 0,
+                         stop_after_three, NULL) == CG_EINVAL);
+}
+
 /* ---- filling ------------------------------------------------------------------ */
 
 static void scanline_agrees(void)
@@ -748,6 +889,9 @@ int main(int argc, char **argv)
     CHECK_GROUP(casteljau_agrees);
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
+    CHECK_GROUP(pipeline_agrees);
+    CHECK_GROUP(color_agrees);
+    CHECK_GROUP(light_agrees);
     CHECK_GROUP(scanline_agrees);
     CHECK_GROUP(flood_agrees);
     CHECK_GROUP(liang_barsky_agrees);

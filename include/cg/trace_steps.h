@@ -20,6 +20,8 @@
 #include "cg/clip.h"
 #include "cg/curve.h"
 #include "cg/fill.h"
+#include "cg/image.h"
+#include "cg/light.h"
 
 #include <stddef.h>
 
@@ -34,7 +36,9 @@ typedef enum cg_step_kind {
     CG_STEP_TEXT = 3,    /* text: a move, a decision, a reason */
     CG_STEP_PIXEL = 4,   /* pixel (x, y) in integer */
     CG_STEP_POINT = 5,   /* point in point */
-    CG_STEP_POINTS = 6   /* list of point_count points in points */
+    CG_STEP_POINTS = 6,  /* list of point_count points in points */
+    CG_STEP_REALS = 7    /* real_count reals in reals: a vector, or a 4 x 4
+                            matrix row by row (16 reals) */
 } cg_step_kind;
 
 typedef struct cg_step_field {
@@ -47,6 +51,8 @@ typedef struct cg_step_field {
     const char *text;
     const cg_vec2 *points;
     size_t point_count;
+    const double *reals;
+    size_t real_count;
 } cg_step_field;
 
 typedef struct cg_step {
@@ -147,6 +153,41 @@ cg_status cg_cubic_steps(const cg_cubic2 *curve, int n, cg_step_fn step, void *u
  * exactly those cg_bezier_flatten gives the sink.  At most 100000 steps. */
 cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tolerance,
                                   cg_step_fn step, void *user);
+
+/* ---- chapters 3-4: the viewing pipeline --------------------------------- */
+
+/* One point through model, view, projection and the viewport of a width x
+ * height image: phase "matrices" (M, V, P, P V M, W, W P V M as 16 reals
+ * row by row), phase "point" (the point in object, world, eye and clip
+ * coordinates as (x, y, z, w), after the divide by w in NDC, and in window
+ * coordinates: pixel x, y and depth, as cg_project_point gives them; the
+ * window step sets that pixel when the point is in the view volume).  A
+ * point with w <= 0 stops at the divide. */
+cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int width,
+                            int height, cg_vec3 point, cg_step_fn step, void *user);
+
+/* ---- chapters 6-7: illumination and colour -------------------------------- */
+
+/* The illumination at a point by cg/light.h's model, light by light: phase
+ * "lights", one step per light with its kind, intensity I_l and, for the
+ * others than ambient ones, L (unit, toward the light), distance, f_att,
+ * spot, N.L, R and R.V (Phong) or H and N.H (Blinn-Phong), spec, a note
+ * (lit, behind the surface, outside the cone), and the light's own
+ * ambient, diffuse and specular terms (cg_light_shade_terms of that light
+ * alone); phase "total": the terms of all lights and their sum I.
+ * CG_EINVAL for a material or light that cg_material_check or
+ * cg_light_check refuses. */
+cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
+                         const cg_material *material, const cg_light *lights, size_t count,
+                         cg_step_fn step, void *user);
+
+/* RGB to HSV (lightness 0) or HSL (lightness 1) by the notes' formulas:
+ * phase "formulas", one step per quantity (R, G, B clamped, max, min,
+ * delta, V or L, S with the case that applies, H by which channel is the
+ * largest, and H += 360 when negative) with its formula and value; phase
+ * "result": (H, S, V) or (H, S, L), exactly cg_rgb_to_hsv's or
+ * cg_rgb_to_hsl's. */
+cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void *user);
 
 /* ---- chapter 10: filling -------------------------------------------------- */
 

@@ -74,6 +74,15 @@ void core_step_points(core_step *s, const char *name, const cg_vec2 *points, siz
     }
 }
 
+void core_step_reals(core_step *s, const char *name, const double *reals, size_t count)
+{
+    cg_step_field *f = next_field(s, name, CG_STEP_REALS);
+    if (f) {
+        f->reals = reals;
+        f->real_count = count;
+    }
+}
+
 int core_step_emit(core_step *s, cg_step_fn fn, void *user)
 {
     s->step.fields = s->fields;
@@ -134,7 +143,7 @@ static size_t step_size(const cg_step *s)
     size += (size_t)(s->geometry_count + s->kept_count) * sizeof(cg_vec2);
     size += (size_t)s->pixel_count * (2 * sizeof(int) + (s->intensity ? sizeof(double) : 0));
     for (int i = 0; i < s->field_count; i++)
-        size += s->fields[i].point_count * sizeof(cg_vec2);
+        size += s->fields[i].point_count * sizeof(cg_vec2) + s->fields[i].real_count * sizeof(double);
     size += text_size(s->phase);
     for (int i = 0; i < s->field_count; i++)
         size += text_size(s->fields[i].name) + text_size(s->fields[i].text);
@@ -178,9 +187,12 @@ int cg_step_log_record(void *user, const cg_step *s)
     l->step.geometry = copy_bytes(&c, s->geometry, (size_t)s->geometry_count * sizeof(cg_vec2));
     l->step.kept = copy_bytes(&c, s->kept, (size_t)s->kept_count * sizeof(cg_vec2));
     l->step.intensity = copy_bytes(&c, s->intensity, s->intensity ? (size_t)s->pixel_count * sizeof(double) : 0);
-    for (int i = 0; i < s->field_count; i++)
+    for (int i = 0; i < s->field_count; i++) {
         fields[i].points = copy_bytes(&c, s->fields[i].points,
                                       s->fields[i].point_count * sizeof(cg_vec2));
+        fields[i].reals = copy_bytes(&c, s->fields[i].reals,
+                                     s->fields[i].real_count * sizeof(double));
+    }
     l->step.pixels = copy_bytes(&c, s->pixels, (size_t)s->pixel_count * 2 * sizeof(int));
     l->step.phase = copy_bytes(&c, s->phase, text_size(s->phase));
     for (int i = 0; i < s->field_count; i++) {

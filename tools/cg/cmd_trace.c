@@ -8,7 +8,7 @@
 
 #include <string.h>
 
-static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_fill_algorithms,
+static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms, trace_fill_algorithms,
                                                 trace_clip_algorithms};
 
 static int run(int argc, char **argv)
@@ -51,6 +51,16 @@ const cg_command cg_command_trace = {
     "                             and the two halves of the subdivision\n"
     "  flatten TOL P0 P1 [...]    adaptive flattening: each piece, its distance from\n"
     "                             the chord, split or emitted and why\n\n"
+    "Chapters 3-7:\n"
+    "  pipeline X,Y,Z [EYE [TARGET [FOVY [WxH]]]]\n"
+    "                             one point through each matrix (model, view,\n"
+    "                             projection, viewport): homogeneous coordinates before\n"
+    "                             and after the divide, the pixel it lands on\n"
+    "  light POINT NORMAL EYE [LIGHT ...]\n"
+    "                             ambient, diffuse, specular per light (LIGHT as\n"
+    "                             ambient:R,G,B, point:X,Y,Z:R,G,B, directional:X,Y,Z:R,G,B)\n"
+    "  hsv R G B                  RGB to HSV by the notes' formulas\n"
+    "  hsl R G B                  RGB to HSL\n\n"
     "Chapter 10 (image coordinates, y down):\n"
     "  scanline 'POLYGON' [even-odd|nonzero]\n"
     "                             scan-line fill: the edge table, then per scan-line the\n"

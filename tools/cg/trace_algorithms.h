@@ -14,6 +14,7 @@ typedef struct trace_algorithm {
 
 /* Each table ends with a {NULL} entry. */
 extern const trace_algorithm trace_chapter2_algorithms[];
+extern const trace_algorithm trace_view_algorithms[];
 extern const trace_algorithm trace_fill_algorithms[];
 extern const trace_algorithm trace_clip_algorithms[];
 

@@ -151,6 +151,20 @@ void trace_field_text(const cg_step_field *f, char *out, size_t size)
         put_real(b, sizeof b, f->point.y);
         snprintf(out, size, "(%s, %s)", a, b);
         break;
+    case CG_STEP_REALS: {
+        size_t used = (size_t)snprintf(out, size, "[");
+        for (size_t i = 0; i < f->real_count && used + 1 < size; i++) {
+            put_real(a, sizeof a, f->reals[i]);
+            const char *gap = i == 0 ? "" : f->real_count == 16 && i % 4 == 0 ? "; " : " ";
+            int n = snprintf(out + used, size - used, "%s%s", gap, a);
+            if (n < 0)
+                break;
+            used += (size_t)n;
+        }
+        if (used + 1 < size)
+            snprintf(out + used, size - used, "]");
+        break;
+    }
     case CG_STEP_POINTS: {
         size_t used = 0;
         out[0] = 0;
@@ -326,6 +340,15 @@ static void json_field(const cg_step_field *f)
     case CG_STEP_PIXEL: printf("[%d,%d]", f->pixel_x, f->pixel_y); break;
     case CG_STEP_POINT: json_point(f->point); break;
     case CG_STEP_POINTS: json_points(f->points, f->point_count); break;
+    case CG_STEP_REALS:
+        putchar('[');
+        for (size_t i = 0; i < f->real_count; i++) {
+            if (i)
+                putchar(',');
+            json_real(f->reals[i]);
+        }
+        putchar(']');
+        break;
     }
 }
 

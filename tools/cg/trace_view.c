@@ -1,0 +1,178 @@
+/* `cg trace` for chapters 3-7: the viewing pipeline of one point, the
+ * illumination at a point light by light, RGB to HSV and HSL. */
+#include "trace_algorithms.h"
+
+#include "cli.h"
+#include "cg/color.h"
+#include "cg/light.h"
+#include "cg/xform.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int run_pipeline(int argc, char **argv, const trace_outputs *out)
+{
+    cg_vec3 point, eye = {0, 0, 5}, target = {0, 0, 0};
+    double fovy = 60;
+    int width = 640, height = 480;
+    if (argc < 2 || argc > 6)
+        return cli_usage_error("trace", "pipeline: expected 'pipeline X,Y,Z [EYE [TARGET [FOVY "
+                                        "[WxH]]]]' (points as X,Y,Z)");
+    if (cli_parse_vec3("trace", "point", argv[1], &point)
+        || (argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &eye))
+        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &target))
+        || (argc > 4 && trace_parse_real("FOVY", argv[4], &fovy))
+        || (argc > 5 && cli_parse_size("trace", "WxH", argv[5], &width, &height)))
+        return CLI_USAGE;
+    cg_mat4 view, projection;
+    if (!(fovy > 0 && fovy < 180))
+        return cli_usage_error("trace", "pipeline: FOVY is in degrees, between 0 and 180");
+    if (cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
+        && cg_view_look_at(eye, target, cg_vec3_make(0, 0, -1), &view) != CG_OK)
+        return cli_usage_error("trace", "pipeline: EYE and TARGET must differ");
+    if (cg_proj_perspective(fovy * M_PI / 180, (double)width / height, 0.1, 100, &projection)
+        != CG_OK)
+        return cli_usage_error("trace", "pipeline: the projection cannot be made");
+    trace_run *run = trace_run_create("pipeline", argc - 1, argv + 1,
+                                      "The viewing pipeline of (%g, %g, %g): camera at (%g, %g, "
+                                      "%g) looking at (%g, %g, %g), %g degrees, %dx%d",
+                                      point.x, point.y, point.z, eye.x, eye.y, eye.z, target.x,
+                                      target.y, target.z, fovy, width, height);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "object --M--> world --V--> eye --P--> clip (x, y, z, w) --divide by w--> "
+                    "NDC --W--> window");
+    trace_note(run, "M is the identity here; V from look-at (up +y); P perspective, near 0.1, "
+                    "far 100; matrices row by row, rows separated by ';'");
+    cg_mat4 model = cg_xform3_translate(0, 0, 0);
+    cg_status status = cg_pipeline_steps(model, view, projection, width, height, point,
+                                         cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "the point must be finite", out);
+    trace_run_free(run);
+    return code;
+}
+
+static int run_color(int lightness, int argc, char **argv, const trace_outputs *out)
+{
+    double rgb[3];
+    static const char *const names[3] = {"R", "G", "B"};
+    if (argc != 4)
+        return cli_usage_error("trace", "%s: expected '%s R G B' with components in [0, 1]",
+                               argv[0], argv[0]);
+    for (int i = 0; i < 3; i++)
+        if (trace_parse_real(names[i], argv[i + 1], &rgb[i]))
+            return CLI_USAGE;
+    trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1, "RGB (%g, %g, %g) to %s",
+                                      rgb[0], rgb[1], rgb[2], lightness ? "HSL" : "HSV");
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "hue H in degrees [0, 360), saturation S and %s in [0, 1] (section 7.3)",
+               lightness ? "lightness L" : "value V");
+    cg_status status = cg_rgb_to_hsv_steps(cg_vec3_make(rgb[0], rgb[1], rgb[2]), lightness,
+                                           cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "bad colour", out);
+    trace_run_free(run);
+    return code;
+}
+
+static int run_hsv(int argc, char **argv, const trace_outputs *out)
+{
+    return run_color(0, argc, argv, out);
+}
+
+static int run_hsl(int argc, char **argv, const trace_outputs *out)
+{
+    return run_color(1, argc, argv, out);
+}
+
+enum { MAX_LIGHTS = 8 };
+
+/* "ambient:R,G,B", "point:X,Y,Z:R,G,B", "directional:X,Y,Z:R,G,B". */
+static int parse_light(const char *text, cg_light *light)
+{
+    char kind[16], a[128], b[128];
+    const char *colon = strchr(text, ':');
+    size_t n = colon ? (size_t)(colon - text) : 0;
+    if (!colon || n >= sizeof kind)
+        return cli_usage_error("trace", "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
+                                        "directional:X,Y,Z:R,G,B", text);
+    memcpy(kind, text, n);
+    kind[n] = 0;
+    const char *rest = colon + 1, *second = strchr(rest, ':');
+    cg_vec3 where, color;
+    if (strcmp(kind, "ambient") == 0 && !second) {
+        if (cli_parse_vec3("trace", "light colour", rest, &color))
+            return CLI_USAGE;
+        *light = cg_light_ambient(color);
+    } else if ((strcmp(kind, "point") == 0 || strcmp(kind, "directional") == 0) && second
+               && (size_t)(second - rest) < sizeof a && strlen(second + 1) < sizeof b) {
+        memcpy(a, rest, (size_t)(second - rest));
+        a[second - rest] = 0;
+        strcpy(b, second + 1);
+        if (cli_parse_vec3("trace", "light position", a, &where)
+            || cli_parse_vec3("trace", "light colour", b, &color))
+            return CLI_USAGE;
+        if (kind[0] == 'd' && !(cg_vec3_length(where) > 0))
+            return cli_usage_error("trace", "light: a direction must not be zero");
+        *light = kind[0] == 'p' ? cg_light_point(where, color) : cg_light_directional(where, color);
+    } else {
+        return cli_usage_error("trace", "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
+                                        "directional:X,Y,Z:R,G,B", text);
+    }
+    if (cg_light_check(light, NULL) != CG_OK)
+        return cli_usage_error("trace", "light: '%s': colours must not be negative", text);
+    return CLI_OK;
+}
+
+static int run_light(int argc, char **argv, const trace_outputs *out)
+{
+    cg_vec3 point, normal, eye;
+    cg_light lights[MAX_LIGHTS];
+    size_t count = 0;
+    if (argc < 4 || argc > 4 + MAX_LIGHTS)
+        return cli_usage_error("trace", "light: expected 'light POINT NORMAL EYE [LIGHT ...]' "
+                                        "(at most %d lights)", MAX_LIGHTS);
+    if (cli_parse_vec3("trace", "POINT", argv[1], &point)
+        || cli_parse_vec3("trace", "NORMAL", argv[2], &normal)
+        || cli_parse_vec3("trace", "EYE", argv[3], &eye))
+        return CLI_USAGE;
+    if (!(cg_vec3_length(normal) > 0) || !(cg_vec3_length(cg_vec3_sub(eye, point)) > 0))
+        return cli_usage_error("trace", "light: the normal must not be zero and the eye not at "
+                                        "the point");
+    for (int i = 4; i < argc; i++)
+        if (parse_light(argv[i], &lights[count++]) != CLI_OK)
+            return CLI_USAGE;
+    if (count == 0) {
+        lights[count++] = cg_light_ambient(cg_vec3_make(0.2, 0.2, 0.2));
+        lights[count++] = cg_light_point(cg_vec3_make(5, 5, 5), cg_vec3_make(1, 1, 1));
+    }
+    cg_material material = cg_material_make(cg_vec3_make(0.8, 0.4, 0.2), 0.2, 0.7, 0.5, 20);
+    normal = cg_vec3_normalize(normal);
+    cg_vec3 view = cg_vec3_normalize(cg_vec3_sub(eye, point));
+    trace_run *run = trace_run_create("light", argc - 1, argv + 1,
+                                      "Illumination at (%g, %g, %g), normal (%g, %g, %g), seen "
+                                      "from (%g, %g, %g)", point.x, point.y, point.z, normal.x,
+                                      normal.y, normal.z, eye.x, eye.y, eye.z);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "material: Od = (0.8, 0.4, 0.2), ka = 0.2, kd = 0.7, ks = 0.5, n = 20, "
+                    "Phong specular, Os white; V = (%g, %g, %g)", view.x, view.y, view.z);
+    trace_note(run, "I = sum ka Od Ia + sum f_att spot Il (kd Od max(N.L, 0) + ks Os spec), "
+                    "spec = max(R.V, 0)^n, R = 2 (N.L) N - L");
+    trace_note(run, "f_att = min(1, 1 / (c0 + c1 d + c2 d^2)) (no attenuation here: c = 1, 0, "
+                    "0); spec = 0 when N.L <= 0");
+    cg_status status = cg_light_steps(point, normal, view, &material, lights, count,
+                                      cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "bad material or light", out);
+    trace_run_free(run);
+    return code;
+}
+
+const trace_algorithm trace_view_algorithms[] = {
+    {"pipeline", "X,Y,Z [EYE [TARGET [FOVY [WxH]]]]", run_pipeline},
+    {"light", "POINT NORMAL EYE [LIGHT ...]", run_light},
+    {"hsv", "R G B", run_hsv},
+    {"hsl", "R G B", run_hsl},
+    {NULL, NULL, NULL},
+};

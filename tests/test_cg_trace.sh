@@ -8,6 +8,11 @@ CG=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 fail=0
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
+# The cube back-face culling is traced on (examples/teaching/cube.obj).
+cube=$dir/cube.obj
+[ -n "${2:-}" ] && [ -f "$2/examples/teaching/cube.obj" ] && cube=$2/examples/teaching/cube.obj
+[ -f "$cube" ] || printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n' >"$cube"
+mkdir -p "$dir/examples/teaching" && cp "$cube" "$dir/examples/teaching/cube.obj"
 # The room the fills are traced in (examples/teaching/room.txt).
 printf 'size 16 12\nbackground white\ncolor black\npolyline 1 1 14 1 14 10 1 10 1 1\nline 7 1 7 7\nline 10 4 14 4\n' \
     >"$dir/room.txt"
@@ -166,6 +171,8 @@ check "hsl result" "0 HSL [210 0.5 0.4]" \
       "$("$CG" trace hsl 0.2 0.4 0.6 | sed -n '/^result:$/,/^$/p' | grep -E '^ +[0-9]+ ' | tr -s ' ' | sed 's/^ //')"
 # The point (1, 1, 0) seen from (0, 0, 5), 60 degrees, 640x480: eye (1, 1, -5),
 # w = 5, x_ndc = (1 / tan 30 deg / (4/3)) / 5 = 0.2598, pixel x = 320 (1 + 0.2598).
+# Seen straight on (no turn), a cube shows one face: 10 of 12 triangles culled.
+check "backface straight on" "10 of 12 triangles culled" "$("$CG" trace backface "$cube" 0 0 | tail -n 1)"
 check "pipeline pixel" "403" "$("$CG" trace pipeline 1,1,0 --json | jq '.steps[-1].pixels[0][0]')"
 
 # Every algorithm of `cg help trace` runs, as a table and as JSON that an
@@ -176,7 +183,7 @@ samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
          "pipeline 1,1,0" "pipeline 1,1,0 3,2,6 0,0,0 45 320x200"
          "light 0,0,0 0,0,1 0,0,5" "light 0,0,0 0,0,1 0,0,5 ambient:0.1,0.1,0.1 directional:0,0,-1:1,1,1"
-         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
+         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "backface CUBE" "backface CUBE 0 0" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
          "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15"
          "weiler-atherton 0,0|10,0|10,10|5,4|0,10 -2,3|12,3|12,7|-2,7")
 help=$("$CG" help trace)
@@ -186,6 +193,7 @@ for sample in "${samples[@]}"; do
     args=(${sample})
     args=("${args[@]//|/ }")
     args=("${args[@]/ROOM/$dir/room.png}")
+    args=("${args[@]/CUBE/$cube}")
     echo "$help" | grep -qE "^  $name " || { echo "FAIL: 'cg help trace' does not name $name"; fail=1; }
     table=$("$CG" trace "${args[@]}") || { echo "FAIL: cg trace $sample"; fail=1; continue; }
     rows_in_table=$(echo "$table" | grep -cE '^ +[0-9]+ ')
@@ -282,7 +290,7 @@ for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
             "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "pipeline 1,1" "pipeline 0,0,0 0,0,0" \
             "pipeline 0,0,0 0,0,5 0,0,0 200" "light 0,0,0 0,0,0 0,0,5" "light 0,0,0 0,0,1 0,0,5 spot:1,1,1" \
-            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
+            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "backface /nonexistent.obj" "backface $dir/room.txt" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
             "scanline 0,0|5,0|0,5 odd" "scanline 0,0|9000,0|0,5" \
             "line 0 0 5 5 --bogus" "line 0 0 5 5 --frames" "circle 3 --html="; do
     # words split at blanks; '|' inside a word stands for a blank

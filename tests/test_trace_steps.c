@@ -8,6 +8,8 @@
 #include "cg/color.h"
 #include "cg/draw.h"
 #include "cg/light.h"
+#include "cg/mesh.h"
+#include "cg/render.h"
 #include "cg/xform.h"
 #include "cg/fill.h"
 #include "cg/trace_steps.h"
@@ -561,6 +563,44 @@ static void light_agrees(void)
                          stop_after_three, NULL) == CG_EINVAL);
 }
 
+static int count_culled(void *user, const cg_step *s)
+{
+    *(size_t *)user += strcmp(cg_step_find(s, "decision")->text, "back: culled") == 0;
+    return 0;
+}
+
+static void backface_agrees(void)
+{
+    check_rng rng = {0xbacf};
+    cg_mesh *meshes[3];
+    CHECK(cg_mesh_sphere(12, 8, 1, &meshes[0]) == CG_OK);
+    CHECK(cg_mesh_box(cg_vec3_make(-1, -0.5, -2), cg_vec3_make(1, 0.5, 2), &meshes[1]) == CG_OK);
+    CHECK(cg_mesh_torus(16, 8, 1, 0.3, &meshes[2]) == CG_OK);
+    cg_image *image;
+    cg_image_create(&image, 800, 600, CG_PIXEL_RGBA8);
+    for (int trial = 0; trial < 30; trial++) {
+        const cg_mesh *mesh = meshes[trial % 3];
+        cg_render_options options;
+        cg_render_options_default(&options);
+        options.model = cg_mat4_mul(cg_xform3_rotate_x(check_rng_range(&rng, 0, 6)),
+                                    cg_xform3_rotate_y(check_rng_range(&rng, 0, 6)));
+        options.camera.orthographic = trial % 5 == 4;
+        cg_renderer *renderer;
+        CHECK(cg_renderer_create(mesh, &options, &renderer, NULL) == CG_OK);
+        CHECK(cg_renderer_draw(renderer, image) == CG_OK);
+        cg_render_stats stats = cg_renderer_stats(renderer);
+        cg_camera camera = cg_renderer_camera(renderer);
+        size_t culled = 0;
+        CHECK(cg_backface_steps(mesh, options.model, &camera, count_culled, &culled) == CG_OK);
+        CHECK_MSG(culled == stats.culled, "trial %d: the trace culls %zu triangles, the renderer %zu (rejected %zu, clipped %zu, of %zu)",
+                  trial, culled, stats.culled, stats.rejected, stats.clipped, stats.triangles);
+        cg_renderer_free(renderer);
+    }
+    cg_image_free(image);
+    for (int i = 0; i < 3; i++)
+        cg_mesh_free(meshes[i]);
+}
+
 /* ---- filling ------------------------------------------------------------------ */
 
 static void scanline_agrees(void)
@@ -890,6 +930,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
     CHECK_GROUP(pipeline_agrees);
+    CHECK_GROUP(backface_agrees);
     CHECK_GROUP(color_agrees);
     CHECK_GROUP(light_agrees);
     CHECK_GROUP(scanline_agrees);

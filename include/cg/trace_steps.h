@@ -22,6 +22,8 @@
 #include "cg/fill.h"
 #include "cg/image.h"
 #include "cg/light.h"
+#include "cg/mesh.h"
+#include "cg/xform.h"
 
 #include <stddef.h>
 
@@ -165,6 +167,18 @@ cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tole
  * point with w <= 0 stops at the divide. */
 cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int width,
                             int height, cg_vec3 point, cg_step_fn step, void *user);
+
+/* Back-face culling (chapter 5) of a mesh placed by model and seen by
+ * camera: phase "triangles", one step per triangle of the fan
+ * triangulation (triangle, face, the world normal N = (v1 - v0) x (v2 - v0),
+ * V from v0 toward the eye (parallel cameras: against the view direction),
+ * N.V, the decision "back: culled" when N.V <= 0, culled_so_far).  The
+ * geometry is the triangle in view-space x, y (kept when it is front
+ * facing).  The count of culled triangles is the renderer's
+ * (cg_render_stats.culled) for a mesh in front of the camera.  Errors as
+ * cg_mesh_validate; CG_EINVAL for an unusable camera. */
+cg_status cg_backface_steps(const cg_mesh *mesh, cg_mat4 model, const cg_camera *camera,
+                            cg_step_fn step, void *user);
 
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 

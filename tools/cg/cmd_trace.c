@@ -56,6 +56,8 @@ const cg_command cg_command_trace = {
     "                             one point through each matrix (model, view,\n"
     "                             projection, viewport): homogeneous coordinates before\n"
     "                             and after the divide, the pixel it lands on\n"
+    "  backface MESH [ABOUT_Y [ABOUT_X]]\n"
+    "                             back-face culling per triangle: N, V, the sign of N.V\n"
     "  light POINT NORMAL EYE [LIGHT ...]\n"
     "                             ambient, diffuse, specular per light (LIGHT as\n"
     "                             ambient:R,G,B, point:X,Y,Z:R,G,B, directional:X,Y,Z:R,G,B)\n"

@@ -59,8 +59,10 @@ static frame_view make_view(const trace_run *run)
         grow(&v, 0, 0);
         grow(&v, run->background->width, run->background->height);
     }
+    int pixels = run->background != NULL;
     for (size_t i = 0; i < cg_step_log_count(run->log); i++) {
         const cg_step *s = cg_step_log_get(run->log, i);
+        pixels |= s->pixel_count > 0;
         for (int k = 0; k < s->pixel_count; k++) {
             grow(&v, s->pixels[2 * k], s->pixels[2 * k + 1]);
             grow(&v, s->pixels[2 * k] + 1, s->pixels[2 * k + 1] + 1);
@@ -72,14 +74,23 @@ static frame_view make_view(const trace_run *run)
         v.min_x = v.min_y = 0;
         v.max_x = v.max_y = 1;
     }
-    /* A margin of one cell, and whole cells for image traces. */
-    v.min_x = floor(v.min_x) - 1;
-    v.min_y = floor(v.min_y) - 1;
-    v.max_x = ceil(v.max_x) + 1;
-    v.max_y = ceil(v.max_y) + 1;
+    if (pixels) {
+        /* A margin of one cell, and whole cells for image traces. */
+        v.min_x = floor(v.min_x) - 1;
+        v.min_y = floor(v.min_y) - 1;
+        v.max_x = ceil(v.max_x) + 1;
+        v.max_y = ceil(v.max_y) + 1;
+    } else {
+        /* Geometry only: a margin of 5%, and the picture as large as allowed. */
+        double margin = 0.05 * fmax(fmax(v.max_x - v.min_x, v.max_y - v.min_y), 1e-9);
+        v.min_x -= margin;
+        v.min_y -= margin;
+        v.max_x += margin;
+        v.max_y += margin;
+    }
     double w = v.max_x - v.min_x, h = v.max_y - v.min_y;
     v.scale = fmin(FRAME_SIDE / w, FRAME_SIDE / h);
-    if (v.scale > MAX_CELL)
+    if (pixels && v.scale > MAX_CELL)
         v.scale = MAX_CELL;
     if (v.scale >= 2)
         v.scale = floor(v.scale);

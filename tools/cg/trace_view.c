@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "cg/color.h"
 #include "cg/light.h"
+#include "cg/mesh.h"
 #include "cg/xform.h"
 
 #include <math.h>
@@ -169,8 +170,70 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* backface MESH [ABOUT_Y [ABOUT_X]]: the mesh turned by the angles (degrees)
+ * and framed by the default camera, as cg render shows it. */
+static int run_backface(int argc, char **argv, const trace_outputs *out)
+{
+    double about_y = 30, about_x = 20;
+    if (argc < 2 || argc > 4)
+        return cli_usage_error("trace", "backface: expected 'backface MESH [ABOUT_Y [ABOUT_X]]' "
+                                        "(degrees)");
+    if ((argc > 2 && trace_parse_real("ABOUT_Y", argv[2], &about_y))
+        || (argc > 3 && trace_parse_real("ABOUT_X", argv[3], &about_x)))
+        return CLI_USAGE;
+    cg_mesh *mesh;
+    cg_error err;
+    if (cg_mesh_load(argv[1], &mesh, &err) != CG_OK)
+        return cli_fail("trace: %s", err.message);
+    cg_mat4 model = cg_mat4_mul(cg_xform3_rotate_x(about_x * M_PI / 180),
+                                cg_xform3_rotate_y(about_y * M_PI / 180));
+    cg_vec3 lo, hi, corner[8];
+    cg_camera camera = cg_camera_default();
+    cg_status status = cg_mesh_bounds(mesh, &lo, &hi);
+    if (status == CG_OK) { /* frame the turned box, as cg render does */
+        for (int i = 0; i < 8; i++)
+            corner[i] = cg_mat4_transform_point(model, cg_vec3_make(i & 1 ? hi.x : lo.x,
+                                                                    i & 2 ? hi.y : lo.y,
+                                                                    i & 4 ? hi.z : lo.z));
+        lo = hi = corner[0];
+        for (int i = 1; i < 8; i++) {
+            lo = cg_vec3_make(fmin(lo.x, corner[i].x), fmin(lo.y, corner[i].y), fmin(lo.z, corner[i].z));
+            hi = cg_vec3_make(fmax(hi.x, corner[i].x), fmax(hi.y, corner[i].y), fmax(hi.z, corner[i].z));
+        }
+        status = cg_camera_frame(&camera, lo, hi, 4.0 / 3.0);
+    }
+    if (status != CG_OK) {
+        cg_mesh_free(mesh);
+        return cli_fail("trace: %s: the mesh has no extent to look at", argv[1]);
+    }
+    trace_run *run = trace_run_create("backface", argc - 1, argv + 1,
+                                      "Back-face culling of %s turned %g degrees about y and %g "
+                                      "about x, camera at (%g, %g, %g)", argv[1], about_y, about_x,
+                                      camera.eye.x, camera.eye.y, camera.eye.z);
+    if (!run) {
+        cg_mesh_free(mesh);
+        return cli_fail("trace: out of memory");
+    }
+    run->y_up = 1;
+    trace_note(run, "N = (v1 - v0) x (v2 - v0) of each triangle in world space (faces are "
+                    "counter-clockwise seen from outside), V = eye - v0");
+    trace_note(run, "N.V > 0: the triangle faces the eye and is kept; N.V <= 0: a back face, "
+                    "culled");
+    trace_note(run, "the frames show the triangles in view space, x right and y up");
+    status = cg_backface_steps(mesh, model, &camera, cg_step_log_record, run->log);
+    cg_mesh_free(mesh);
+    long culled = 0;
+    for (size_t i = 0; i < cg_step_log_count(run->log); i++)
+        culled += strcmp(cg_step_find(cg_step_log_get(run->log, i), "decision")->text, "front: kept") != 0;
+    trace_summary(run, "%ld of %zu triangles culled", culled, cg_step_log_count(run->log));
+    int code = trace_finish(run, status, "the mesh is not valid", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_view_algorithms[] = {
     {"pipeline", "X,Y,Z [EYE [TARGET [FOVY [WxH]]]]", run_pipeline},
+    {"backface", "MESH [ABOUT_Y [ABOUT_X]]", run_backface},
     {"light", "POINT NORMAL EYE [LIGHT ...]", run_light},
     {"hsv", "R G B", run_hsv},
     {"hsl", "R G B", run_hsl},

@@ -48,4 +48,50 @@ grep -q "empty" "$work/err" && pass || fail "message says empty"
 expect 2 "unknown output format" "$cg" convert "$work/b.png" "$work/x.gif"
 expect 1 "missing input" "$cg" convert "$work/nope.png" "$work/x.png"
 
+# ---- the option parser (tools/cg/options.c), as every command meets it:
+# --name=value is --name value, -o has the long spelling --output, a flag
+# takes no value, and `cg help` lists each option from the same table.
+line="0 0 10 10 -5 3 15 8"
+expect 0 "clip line --algorithm VALUE" "$cg" clip line $line --algorithm liang-barsky
+cp "$work/out" "$work/spaced"
+expect 0 "clip line --algorithm=VALUE" "$cg" clip line $line --algorithm=liang-barsky
+cmp -s "$work/out" "$work/spaced" && pass || fail "--algorithm=VALUE differs from --algorithm VALUE"
+expect 2 "a flag with a value" "$cg" clip line $line --trace=yes
+one_line "a flag with a value"
+grep -q "option --trace takes no value" "$work/err" && pass || fail "flag value: $(cat "$work/err")"
+expect 2 "a missing value" "$cg" clip boolean union a b --fill
+grep -q "option --fill needs a value" "$work/err" && pass || fail "missing value: $(cat "$work/err")"
+expect 2 "a bad choice" "$cg" clip boolean union a b --fill odd
+grep -qF "clip: --fill: expected evenodd, nonzero, positive or negative, got 'odd' (see 'cg help clip')" \
+  "$work/err" && pass || fail "bad choice: $(cat "$work/err")"
+expect 2 "an unknown option names the action" "$cg" clip polygon a b --bogus
+grep -qF "clip: polygon: unknown option '--bogus'" "$work/err" && pass || fail "unknown: $(cat "$work/err")"
+wkt="$src/tests/fuzz/corpus/wkt"
+expect 0 "clip -o" "$cg" clip boolean xor "$wkt/square.wkt" "$wkt/bowtie.wkt" -o "$work/short.png"
+expect 0 "clip --output" "$cg" clip boolean xor "$wkt/square.wkt" "$wkt/bowtie.wkt" --output "$work/long.png"
+cmp -s "$work/short.png" "$work/long.png" && pass || fail "-o and --output differ"
+expect 0 "help clip" "$cg" help clip
+for spelling in "--algorithm cohen-sutherland|liang-barsky" "--trace" \
+                "--fill evenodd|nonzero|positive|negative" "-o, --output OUT.png" "--repeat N"; do
+  grep -qF -- "  $spelling" "$work/out" && pass || fail "cg help clip does not list '$spelling'"
+done
+for action in line polygon boolean; do
+  grep -q "^Options of cg clip $action:" "$work/out" && pass || fail "help clip: no options of $action"
+done
+# Every option `cg help` lists is one the command knows (the help and the
+# parser read the same table): given alone, none is an unknown option.
+listed=0
+for name in clip color convert demo draw mesh render trace trace-render view; do
+  "$cg" help "$name" | awk '/^Options of cg [a-z-]+ [a-z-]+:$/ {action = $5; sub(":", "", action)}
+                           /^Options:$/ {action = ""}
+                           /^  -/ {sub(",", "", $1); print action, $1}' > "$work/listed"
+  while read -r action option; do
+    [ -n "$option" ] || { option=$action; action=""; }
+    listed=$((listed + 1))
+    "$cg" $name $action "$option" >/dev/null 2>"$work/err" </dev/null
+    grep -q "unknown option" "$work/err" && fail "cg $name $action: $option is listed but unknown" || pass
+  done < "$work/listed"
+done
+[ "$listed" -ge 50 ] && pass || fail "cg help lists only $listed options in all"
+
 finish

@@ -164,7 +164,47 @@ static inline void mark_cell(uint64_t *bits, int c)
  * row's first cell, xa <= xb), signed height d; s = d / (xb - xa), the
  * area per unit of x, is the line's (given, as it is the same on every row).
  * Cell c's differences are row[2c] (added before pixel c's coverage is
- * taken) and row[2c + 1] (after). */
+ * taken) and row[2c + 1] (after).
+ *
+ * The part crossing cells c0 .. c1 (here c1 = c0 + 2).  A pixel's coverage
+ * is the area right of the line in its own column (dotted), times d's sign:
+ *
+ *         c0   c0+1 c1   c1+1
+ *        +----+----+----+----+   <- top of the part (ya)
+ *     xa | \..|....|....|....|  ^
+ *        |  \.|....|....|....|  |  d0 = s len0, len0 = c0 + 1 - xa
+ *        |   \|....|....|....|  v
+ *        |    \....|....|....|  ^
+ *        |    |\...|....|....|  |
+ *        |    | \..|....|....|  |  s: the height over one whole cell
+ *        |    |  \.|....|....|  |
+ *        |    |   \|....|....|  v
+ *        |    |    \....|....|  ^  d1 = s len1, len1 = xb - c1
+ *        |    |    |\...|....|  v
+ *        +----+----+----+----+   <- bottom of the part
+ *                   xb
+ *
+ *   pixel    coverage
+ *   c0       d0 len0 / 2                         (a triangle)
+ *   c0+1     d0 + s / 2                          (a rectangle and a triangle)
+ *   ...      s more for each whole cell
+ *   c1       d0 + s (c1 - c0 - 1) + d1 (1 - len1 / 2)
+ *   beyond   d0 + s (c1 - c0 - 1) + d1 = d       (the whole height)
+ *
+ * The running sum along the row gives pixel c the before-differences of
+ * cells 0 .. c and the after-differences of cells 0 .. c - 1, so a cell
+ * holds what its pixel's coverage adds to the coverage of the pixel before:
+ *
+ *   cell     row[2c] (before)                    row[2c + 1] (after)
+ *   c0       d0 len0 / 2                         0
+ *   c0+1     d0 (1 - len0 / 2) + s / 2           0
+ *   c0+2 ..  s                                   0
+ *   c1       s / 2 + d1 (1 - len1 / 2)           d1 len1 / 2
+ *
+ * With no whole cell (c1 = c0 + 1) both s / 2 terms go.  A line that stays
+ * in one cell (c0 = c1), at mean position fx = (xa + xb) / 2 - c0 in it:
+ *
+ *   c0       d (1 - fx)                          d fx */
 static inline int deposit_row(float *row, uint64_t *touched, double xa, double xb, double d,
                               double s)
 {

@@ -24,15 +24,6 @@ static int counts_face_is_polygon(const cg_mesh *mesh, size_t f, uint32_t *stamp
     return 1;
 }
 
-static uint32_t counts_find(uint32_t *parent, uint32_t v)
-{
-    while (parent[v] != v) {
-        parent[v] = parent[parent[v]]; /* path halving */
-        v = parent[v];
-    }
-    return v;
-}
-
 /* Distinct unordered vertex pairs among the sides of the polygons: each side
  * is bucketed under its smaller vertex (a counting sort), and inside a
  * bucket a stamp per larger vertex counts each pair once. */
@@ -41,25 +32,24 @@ static size_t counts_distinct_pairs(const cg_mesh *mesh, const uint8_t *polygon,
 {
     size_t V = mesh->vertex_count;
     memset(start, 0, (V + 1) * sizeof *start);
-    for (size_t f = 0; f < mesh->face_count; f++) {
-        if (!polygon[f])
-            continue;
-        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t a = mesh->face_indices[k], c = mesh->face_indices[k + 1 < end ? k + 1 : begin];
-            start[(a < c ? a : c) + 1]++;
+    /* pass 0 counts the sides of each bucket, pass 1 places them */
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t f = 0; f < mesh->face_count; f++) {
+            if (!polygon[f])
+                continue;
+            uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
+            for (uint32_t k = begin; k < end; k++) {
+                uint32_t a = mesh->face_indices[k], c = mesh->face_indices[k + 1 < end ? k + 1 : begin];
+                uint32_t lo = a < c ? a : c, hi = a < c ? c : a;
+                if (pass == 0)
+                    start[lo + 1]++;
+                else
+                    other[start[lo]++] = hi;
+            }
         }
-    }
-    for (size_t v = 0; v < V; v++)
-        start[v + 1] += start[v];
-    for (size_t f = 0; f < mesh->face_count; f++) {
-        if (!polygon[f])
-            continue;
-        uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        for (uint32_t k = begin; k < end; k++) {
-            uint32_t a = mesh->face_indices[k], c = mesh->face_indices[k + 1 < end ? k + 1 : begin];
-            other[start[a < c ? a : c]++] = a < c ? c : a;
-        }
+        if (pass == 0)
+            for (size_t v = 0; v < V; v++)
+                start[v + 1] += start[v];
     }
     /* bucket v now runs from start[v - 1] (0 for v = 0) to start[v] */
     memset(stamp, 0xff, V * sizeof *stamp);
@@ -106,9 +96,9 @@ cg_status cg_hemesh_input_counts_compute(const cg_mesh *mesh, cg_hemesh_input_co
         }
         out->faces++;
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        uint32_t root = counts_find(parent, mesh->face_indices[begin]);
+        uint32_t root = hm_find_root(parent, mesh->face_indices[begin]);
         for (uint32_t k = begin; k < end; k++) {
-            uint32_t v = mesh->face_indices[k], r = counts_find(parent, v);
+            uint32_t v = mesh->face_indices[k], r = hm_find_root(parent, v);
             used[v] = 1;
             if (r != root) {
                 parent[r] = root;

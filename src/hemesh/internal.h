@@ -25,6 +25,17 @@ uint32_t hm_add_face(cg_hemesh *m, uint32_t halfedge, uint32_t color_from);
 void hm_blend_attributes(cg_hemesh *m, uint32_t dst, const uint32_t *src, const double *weight,
                          size_t n);
 
+/* The root of v in a union-find forest over the vertices (parent[r] == r
+ * at a root), halving the path on the way. */
+static inline uint32_t hm_find_root(uint32_t *parent, uint32_t v)
+{
+    while (parent[v] != v) {
+        parent[v] = parent[parent[v]];
+        v = parent[v];
+    }
+    return v;
+}
+
 /* Points vertex_halfedge[v] at a boundary outgoing half-edge when there is
  * one, rotating from its current (live) half-edge. */
 void hm_fix_vertex_halfedge(cg_hemesh *m, uint32_t v);

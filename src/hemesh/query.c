@@ -262,49 +262,35 @@ cg_status cg_hemesh_compute_normals(cg_hemesh *m)
 
 /* ---- counts -------------------------------------------------------------- */
 
-static uint32_t find_root(uint32_t *parent, uint32_t x)
+/* The scratch of cg_hemesh_stats_compute, one entry per vertex (indexed by
+ * a component's root vertex for the per-component counts) or per half-edge. */
+typedef struct stats_scratch {
+    uint32_t *parent;  /* union-find over the vertices; a root is its component's lowest vertex */
+    uint8_t *seen;     /* half-edges already walked */
+    long *chi;         /* V - E + F of each component */
+    long *loops;       /* boundary loops of each component */
+    uint8_t *has_face; /* whether the component has a face */
+} stats_scratch;
+
+static void stats_scratch_free(stats_scratch *s)
 {
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
+    free(s->parent);
+    free(s->seen);
+    free(s->chi);
+    free(s->loops);
+    free(s->has_face);
 }
 
-cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long **component_genus,
-                                  size_t *component_genus_count)
+/* Joins the ends of every live edge: the components. */
+static void union_components(const cg_hemesh *m, uint32_t *parent)
 {
-    if (component_genus)
-        *component_genus = NULL;
-    if (component_genus_count)
-        *component_genus_count = 0;
-    if (!m || !out)
-        return CG_EINVAL;
-    memset(out, 0, sizeof *out);
-    size_t V = m->vertex_count, H = m->halfedge_count;
-    uint32_t *parent = malloc((V ? V : 1) * sizeof *parent);
-    uint8_t *seen = calloc(H ? H : 1, 1);
-    if (!parent || !seen) {
-        free(parent);
-        free(seen);
-        return CG_ENOMEM;
-    }
-    out->vertices = m->live_vertices;
-    out->edges = m->live_edges;
-    out->faces = m->live_faces;
-    out->all_triangles = out->all_quads = 1;
-    for (size_t v = 0; v < V; v++) {
+    for (size_t v = 0; v < m->vertex_count; v++)
         parent[v] = (uint32_t)v;
-        uint32_t h = m->vertex_halfedge[v];
-        if (h == CG_HEMESH_NONE)
-            out->isolated_vertices++;
-    }
-    /* components by union-find over the edges */
-    for (size_t h = 0; h < H; h += 2) {
+    for (size_t h = 0; h < m->halfedge_count; h += 2) {
         if (m->halfedges[h].origin == CG_HEMESH_DELETED)
             continue;
-        uint32_t a = find_root(parent, m->halfedges[h].origin);
-        uint32_t b = find_root(parent, m->halfedges[h + 1].origin);
+        uint32_t a = hm_find_root(parent, m->halfedges[h].origin);
+        uint32_t b = hm_find_root(parent, m->halfedges[h + 1].origin);
         if (a != b) {
             if (a < b)
                 parent[b] = a;
@@ -312,20 +298,34 @@ cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long
                 parent[a] = b;
         }
     }
-    /* boundary loops and complex vertices */
-    for (size_t h = 0; h < H; h++) {
-        if (seen[h] || m->halfedges[h].origin == CG_HEMESH_DELETED
+}
+
+/* The boundary loops, in all and per component. */
+static void count_boundary_loops(const cg_hemesh *m, stats_scratch *s, cg_hemesh_stats *out)
+{
+    for (size_t h = 0; h < m->halfedge_count; h++) {
+        if (s->seen[h] || m->halfedges[h].origin == CG_HEMESH_DELETED
             || m->halfedges[h].face != CG_HEMESH_NONE)
             continue;
         out->boundary_loops++;
+        s->loops[hm_find_root(s->parent, m->halfedges[h].origin)]++;
         uint32_t x = (uint32_t)h;
         do {
-            seen[x] = 1;
+            s->seen[x] = 1;
             x = m->halfedges[x].next;
-        } while (x != h && !seen[x]);
+        } while (x != h && !s->seen[x]);
     }
-    for (size_t v = 0; v < V; v++) {
+}
+
+/* Isolated vertices, vertices with more than one boundary gap, and whether
+ * every face is a triangle / a quad. */
+static void count_vertex_and_face_kinds(const cg_hemesh *m, cg_hemesh_stats *out)
+{
+    out->all_triangles = out->all_quads = 1;
+    for (size_t v = 0; v < m->vertex_count; v++) {
         uint32_t h0 = m->vertex_halfedge[v];
+        if (h0 == CG_HEMESH_NONE)
+            out->isolated_vertices++;
         if (h0 >= CG_HEMESH_DELETED || m->halfedges[h0].face != CG_HEMESH_NONE)
             continue;
         size_t gaps = 0;
@@ -343,117 +343,125 @@ cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long
         out->all_triangles &= k == 3;
         out->all_quads &= k == 4;
     }
-    out->euler_characteristic = (long)out->vertices - (long)out->edges + (long)out->faces;
-    /* per component: chi and boundary loops, indexed by root */
-    long *chi = calloc(V ? V : 1, sizeof *chi);
-    long *loops = calloc(V ? V : 1, sizeof *loops);
-    uint8_t *has_face = calloc(V ? V : 1, 1);
-    if (!chi || !loops || !has_face) {
-        free(parent);
-        free(seen);
-        free(chi);
-        free(loops);
-        free(has_face);
-        return CG_ENOMEM;
-    }
-    for (size_t v = 0; v < V; v++) {
+}
+
+/* The components, and the Euler characteristic of each. */
+static void count_component_euler(const cg_hemesh *m, stats_scratch *s, cg_hemesh_stats *out)
+{
+    for (size_t v = 0; v < m->vertex_count; v++) {
         if (m->vertex_halfedge[v] == CG_HEMESH_DELETED)
             continue;
-        uint32_t r = find_root(parent, (uint32_t)v);
+        uint32_t r = hm_find_root(s->parent, (uint32_t)v);
         if (r == v)
             out->components++;
-        chi[r]++;
+        s->chi[r]++;
     }
-    for (size_t h = 0; h < H; h += 2)
+    for (size_t h = 0; h < m->halfedge_count; h += 2)
         if (m->halfedges[h].origin != CG_HEMESH_DELETED)
-            chi[find_root(parent, m->halfedges[h].origin)]--;
+            s->chi[hm_find_root(s->parent, m->halfedges[h].origin)]--;
     for (size_t f = 0; f < m->face_count; f++) {
         if (m->face_halfedge[f] >= CG_HEMESH_DELETED)
             continue;
-        uint32_t r = find_root(parent, m->halfedges[m->face_halfedge[f]].origin);
-        chi[r]++;
-        has_face[r] = 1;
+        uint32_t r = hm_find_root(s->parent, m->halfedges[m->face_halfedge[f]].origin);
+        s->chi[r]++;
+        s->has_face[r] = 1;
     }
-    memset(seen, 0, H ? H : 1);
-    for (size_t h = 0; h < H; h++) {
-        if (seen[h] || m->halfedges[h].origin == CG_HEMESH_DELETED
-            || m->halfedges[h].face != CG_HEMESH_NONE)
-            continue;
-        loops[find_root(parent, m->halfedges[h].origin)]++;
-        uint32_t x = (uint32_t)h;
-        do {
-            seen[x] = 1;
-            x = m->halfedges[x].next;
-        } while (x != h && !seen[x]);
-    }
-    /* genus per component with faces, in order of the lowest vertex */
-    size_t count = 0;
+}
+
+/* The genus of each component with faces, in order of its lowest vertex:
+ * out->genus when all agree, and the list (when list is not NULL). */
+static cg_status list_genus(const cg_hemesh *m, const stats_scratch *s, cg_hemesh_stats *out,
+                            long **list, size_t *count)
+{
     long common = -2;
-    CORE_ARRAY(long) list = {0};
-    int failed = 0;
-    for (size_t v = 0; v < V; v++) {
-        if (m->vertex_halfedge[v] == CG_HEMESH_DELETED || parent[v] != v || !has_face[v])
+    CORE_ARRAY(long) genus = {0};
+    size_t components = 0;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        if (m->vertex_halfedge[v] == CG_HEMESH_DELETED || s->parent[v] != v || !s->has_face[v])
             continue;
-        long g = (2 - chi[v] - loops[v]) / 2;
+        long g = (2 - s->chi[v] - s->loops[v]) / 2;
         common = common == -2 ? g : common == g ? g : -1;
-        if (component_genus && core_array_push(&list, g) != CG_OK) {
-            failed = 1;
-            break;
+        if (list && core_array_push(&genus, g) != CG_OK) {
+            free(genus.data);
+            return CG_ENOMEM;
         }
-        count++;
+        components++;
     }
     out->genus = common < 0 ? -1 : common;
-    free(parent);
-    free(seen);
-    free(chi);
-    free(loops);
-    free(has_face);
-    if (failed) {
-        free(list.data);
+    if (list)
+        *list = genus.data;
+    if (count)
+        *count = components;
+    return CG_OK;
+}
+
+cg_status cg_hemesh_stats_compute(const cg_hemesh *m, cg_hemesh_stats *out, long **component_genus,
+                                  size_t *component_genus_count)
+{
+    if (component_genus)
+        *component_genus = NULL;
+    if (component_genus_count)
+        *component_genus_count = 0;
+    if (!m || !out)
+        return CG_EINVAL;
+    memset(out, 0, sizeof *out);
+    size_t V = m->vertex_count ? m->vertex_count : 1, H = m->halfedge_count ? m->halfedge_count : 1;
+    stats_scratch s = {malloc(V * sizeof *s.parent), calloc(H, 1), calloc(V, sizeof *s.chi),
+                       calloc(V, sizeof *s.loops), calloc(V, 1)};
+    if (!s.parent || !s.seen || !s.chi || !s.loops || !s.has_face) {
+        stats_scratch_free(&s);
         return CG_ENOMEM;
     }
-    if (component_genus)
-        *component_genus = list.data;
-    if (component_genus_count)
-        *component_genus_count = count;
-    return CG_OK;
+    out->vertices = m->live_vertices;
+    out->edges = m->live_edges;
+    out->faces = m->live_faces;
+    out->euler_characteristic = (long)out->vertices - (long)out->edges + (long)out->faces;
+    union_components(m, s.parent);
+    count_boundary_loops(m, &s, out);
+    count_vertex_and_face_kinds(m, out);
+    count_component_euler(m, &s, out);
+    cg_status status = list_genus(m, &s, out, component_genus, component_genus_count);
+    stats_scratch_free(&s);
+    return status;
 }
 
 /* ---- validation ------------------------------------------------------------ */
 
-#define FAIL(...)                                                       \
-    do {                                                                \
-        status = cg_error_set(err, CG_EFORMAT, "hemesh: " __VA_ARGS__); \
-        goto done;                                                      \
-    } while (0)
+/* What the checks of cg_hemesh_validate share. */
+typedef struct validation {
+    const cg_hemesh *m;
+    cg_error *err;
+    uint32_t *out_count;  /* per vertex: live half-edges starting there */
+    uint32_t *face_sides; /* per face: live half-edges on it */
+    uint32_t *stamp;      /* per vertex: the face being walked (NONE: none) */
+    size_t live_vertices, live_edges, live_faces;
+} validation;
 
-cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
+#define FAIL(...) return cg_error_set(check->err, CG_EFORMAT, "hemesh: " __VA_ARGS__)
+
+/* Both halves of an edge are live or deleted together, and a live edge
+ * has a face on at least one side. */
+static cg_status check_edges(validation *check)
 {
-    if (!m)
-        return cg_error_set(err, CG_EINVAL, "hemesh: none given");
-    size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
-    if (H % 2 || V > m->vertex_capacity || H > m->halfedge_capacity || F > m->face_capacity)
-        return cg_error_set(err, CG_EFORMAT, "hemesh: array sizes are inconsistent");
-    cg_status status = CG_OK;
-    uint32_t *out_count = calloc(V ? V : 1, sizeof *out_count);
-    uint32_t *face_sides = calloc(F ? F : 1, sizeof *face_sides);
-    uint32_t *stamp = malloc((V ? V : 1) * sizeof *stamp);
-    if (!out_count || !face_sides || !stamp) {
-        status = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");
-        goto done;
-    }
-    memset(stamp, 0xff, (V ? V : 1) * sizeof *stamp);
-    size_t live_v = 0, live_e = 0, live_f = 0;
-    for (size_t e = 0; e < H / 2; e++) {
+    const cg_hemesh *m = check->m;
+    for (size_t e = 0; e < m->halfedge_count / 2; e++) {
         const cg_hemesh_halfedge *a = &m->halfedges[2 * e], *b = &m->halfedges[2 * e + 1];
         if ((a->origin == CG_HEMESH_DELETED) != (b->origin == CG_HEMESH_DELETED))
             FAIL("edge %zu is half deleted", e);
         if (a->origin == CG_HEMESH_DELETED)
             continue;
-        live_e++;
+        check->live_edges++;
         if (a->face == CG_HEMESH_NONE && b->face == CG_HEMESH_NONE)
             FAIL("edge %zu has no face on either side", e);
     }
+    return CG_OK;
+}
+
+/* Each live half-edge: its origin, next, prev, twin and face agree. */
+static cg_status check_halfedges(validation *check)
+{
+    const cg_hemesh *m = check->m;
+    size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
     for (size_t i = 0; i < H; i++) {
         const cg_hemesh_halfedge *x = &m->halfedges[i];
         if (x->origin == CG_HEMESH_DELETED)
@@ -477,16 +485,26 @@ cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
         if (x->face != CG_HEMESH_NONE) {
             if (x->face >= F || m->face_halfedge[x->face] >= CG_HEMESH_DELETED)
                 FAIL("half-edge %u lies on face %u, out of range or deleted", h, x->face);
-            face_sides[x->face]++;
+            check->face_sides[x->face]++;
         }
-        out_count[x->origin]++;
+        check->out_count[x->origin]++;
     }
-    for (size_t f = 0; f < F; f++) {
-        uint32_t h0 = m->face_halfedge[f];
+    return CG_OK;
+}
+
+/* Each live face's loop closes over all its half-edges, visits no vertex
+ * twice and has at least three sides. */
+static cg_status check_face_loops(validation *check)
+{
+    const cg_hemesh *m = check->m;
+    uint32_t *stamp = check->stamp;
+    for (size_t f = 0; f < m->face_count; f++) {
+        uint32_t h0 = m->face_halfedge[f], sides = check->face_sides[f];
         if (h0 == CG_HEMESH_DELETED)
             continue;
-        live_f++;
-        if (h0 >= H || m->halfedges[h0].origin == CG_HEMESH_DELETED || m->halfedges[h0].face != f)
+        check->live_faces++;
+        if (h0 >= m->halfedge_count || m->halfedges[h0].origin == CG_HEMESH_DELETED
+            || m->halfedges[h0].face != f)
             FAIL("face %zu points at half-edge %u, which is not on it", f, h0);
         size_t n = 0;
         uint32_t h = h0;
@@ -497,9 +515,9 @@ cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
             stamp[v] = (uint32_t)f;
             n++;
             h = m->halfedges[h].next;
-        } while (h != h0 && n <= face_sides[f]);
-        if (h != h0 || n != face_sides[f])
-            FAIL("the loop of face %zu does not close over its %u half-edges", f, face_sides[f]);
+        } while (h != h0 && n <= sides);
+        if (h != h0 || n != sides)
+            FAIL("the loop of face %zu does not close over its %u half-edges", f, sides);
         if (n < 3)
             FAIL("face %zu has %zu sides", f, n);
         /* reset the stamps of this face (a vertex may come back in a later face) */
@@ -509,20 +527,28 @@ cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
             h = m->halfedges[h].next;
         } while (h != h0);
     }
-    for (size_t v = 0; v < V; v++) {
-        uint32_t h0 = m->vertex_halfedge[v];
+    return CG_OK;
+}
+
+/* Each live vertex's rotation visits exactly the half-edges starting there,
+ * and a boundary vertex points at a boundary half-edge. */
+static cg_status check_vertex_fans(validation *check)
+{
+    const cg_hemesh *m = check->m;
+    for (size_t v = 0; v < m->vertex_count; v++) {
+        uint32_t h0 = m->vertex_halfedge[v], outgoing = check->out_count[v];
         if (h0 == CG_HEMESH_DELETED) {
-            if (out_count[v])
+            if (outgoing)
                 FAIL("deleted vertex %zu still has half-edges", v);
             continue;
         }
-        live_v++;
+        check->live_vertices++;
         if (h0 == CG_HEMESH_NONE) {
-            if (out_count[v])
-                FAIL("vertex %zu has no half-edge but %u half-edges start there", v, out_count[v]);
+            if (outgoing)
+                FAIL("vertex %zu has no half-edge but %u half-edges start there", v, outgoing);
             continue;
         }
-        if (h0 >= H || m->halfedges[h0].origin != v)
+        if (h0 >= m->halfedge_count || m->halfedges[h0].origin != v)
             FAIL("vertex %zu points at half-edge %u, which does not start there", v, h0);
         size_t n = 0, boundary = 0;
         uint32_t h = h0;
@@ -533,18 +559,50 @@ cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
             boundary += m->halfedges[h].face == CG_HEMESH_NONE;
             n++;
             h = cg_hemesh_ccw(m, h);
-        } while (h != h0 && n <= out_count[v]);
-        if (h != h0 || n != out_count[v])
-            FAIL("rotating about vertex %zu visits %zu of its %u half-edges", v, n, out_count[v]);
+        } while (h != h0 && n <= outgoing);
+        if (h != h0 || n != outgoing)
+            FAIL("rotating about vertex %zu visits %zu of its %u half-edges", v, n, outgoing);
         if (boundary && m->halfedges[h0].face != CG_HEMESH_NONE)
             FAIL("boundary vertex %zu points at an interior half-edge", v);
     }
-    if (live_v != m->live_vertices || live_e != m->live_edges || live_f != m->live_faces)
-        FAIL("live counts %zu/%zu/%zu differ from the stored %zu/%zu/%zu", live_v, live_e, live_f,
-             m->live_vertices, m->live_edges, m->live_faces);
-done:
-    free(out_count);
-    free(face_sides);
-    free(stamp);
+    return CG_OK;
+}
+
+/* The counts found agree with the stored ones. */
+static cg_status check_live_counts(validation *check)
+{
+    const cg_hemesh *m = check->m;
+    if (check->live_vertices != m->live_vertices || check->live_edges != m->live_edges
+        || check->live_faces != m->live_faces)
+        FAIL("live counts %zu/%zu/%zu differ from the stored %zu/%zu/%zu", check->live_vertices,
+             check->live_edges, check->live_faces, m->live_vertices, m->live_edges, m->live_faces);
+    return CG_OK;
+}
+
+#undef FAIL
+
+cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
+{
+    if (!m)
+        return cg_error_set(err, CG_EINVAL, "hemesh: none given");
+    size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
+    if (H % 2 || V > m->vertex_capacity || H > m->halfedge_capacity || F > m->face_capacity)
+        return cg_error_set(err, CG_EFORMAT, "hemesh: array sizes are inconsistent");
+    validation check = {m, err, calloc(V ? V : 1, sizeof *check.out_count),
+                        calloc(F ? F : 1, sizeof *check.face_sides),
+                        malloc((V ? V : 1) * sizeof *check.stamp), 0, 0, 0};
+    cg_status status;
+    if (!check.out_count || !check.face_sides || !check.stamp) {
+        status = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");
+    } else {
+        memset(check.stamp, 0xff, (V ? V : 1) * sizeof *check.stamp);
+        if ((status = check_edges(&check)) == CG_OK && (status = check_halfedges(&check)) == CG_OK
+            && (status = check_face_loops(&check)) == CG_OK
+            && (status = check_vertex_fans(&check)) == CG_OK)
+            status = check_live_counts(&check);
+    }
+    free(check.out_count);
+    free(check.face_sides);
+    free(check.stamp);
     return status;
 }

@@ -114,14 +114,22 @@ static double loop_beta(size_t n)
     return (0.625 - c * c) / (double)n;
 }
 
-cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
+/* The start of both schemes: checks the arguments and gives input's dense
+ * form (*owned: a compacted copy to free, or NULL when input is dense). */
+static cg_status subdivide_begin(const cg_hemesh *input, cg_hemesh **out, const cg_hemesh **m,
+                                 cg_hemesh **owned)
 {
     if (!input || !out)
         return CG_EINVAL;
     *out = NULL;
+    return dense(input, m, owned);
+}
+
+cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
+{
     const cg_hemesh *m;
     cg_hemesh *owned;
-    cg_status s = dense(input, &m, &owned);
+    cg_status s = subdivide_begin(input, out, &m, &owned);
     if (s != CG_OK)
         return s;
     size_t V = m->vertex_count, E = m->halfedge_count / 2, F = m->face_count;
@@ -220,87 +228,83 @@ cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
     return CG_OK;
 }
 
-cg_status cg_hemesh_subdivide_catmull_clark(const cg_hemesh *input, cg_hemesh **out)
+/* offset[f]: the first corner of face f in a numbering of all corners face
+ * by face (offset[F] is their count). */
+static uint32_t *face_corner_offsets(const cg_hemesh *m)
 {
-    if (!input || !out)
-        return CG_EINVAL;
-    *out = NULL;
-    const cg_hemesh *m;
-    cg_hemesh *owned;
-    cg_status s = dense(input, &m, &owned);
-    if (s != CG_OK)
-        return s;
-    size_t V = m->vertex_count, E = m->halfedge_count / 2, F = m->face_count;
-    const cg_hemesh_halfedge *he = m->halfedges;
+    size_t F = m->face_count;
     uint32_t *offset = malloc((F + 1) * sizeof *offset);
-    if (!offset) {
-        cg_hemesh_free(owned);
-        return CG_ENOMEM;
-    }
+    if (!offset)
+        return NULL;
     size_t corners = 0;
     for (size_t f = 0; f < F; f++) {
         offset[f] = (uint32_t)corners;
         uint32_t h0 = m->face_halfedge[f], h = h0;
         do {
             corners++;
-            h = he[h].next;
+            h = m->halfedges[h].next;
         } while (h != h0);
     }
     offset[F] = (uint32_t)corners;
-    cg_hemesh *r;
-    s = make_result(m, V + E + F, 2 * E + corners, corners, &r);
-    if (s != CG_OK) {
-        free(offset);
-        cg_hemesh_free(owned);
-        return s;
-    }
-    split_edges(m, r);
+    return offset;
+}
+
+/* Catmull-Clark: the face point of face f (the centroid, attributes
+ * averaged) and the quads around it, one per corner. */
+static void catmull_clark_face(const cg_hemesh *m, cg_hemesh *r, const uint32_t *offset, size_t f)
+{
+    size_t V = m->vertex_count, E = m->halfedge_count / 2;
+    const cg_hemesh_halfedge *he = m->halfedges;
     cg_hemesh_halfedge *rh = r->halfedges;
     size_t base = 4 * E;
-    /* face points and the quads */
-    for (size_t f = 0; f < F; f++) {
-        uint32_t fp = (uint32_t)(V + E + f);
-        uint32_t h0 = m->face_halfedge[f], h = h0;
-        uint32_t k = offset[f + 1] - offset[f];
-        cg_vec3 centroid = {0, 0, 0};
-        uint32_t i = 0;
-        do {
-            /* I_i: even m_i -> fp (quad i), odd fp -> m_i (quad i + 1) */
-            uint32_t in = (uint32_t)(base + 2 * (offset[f] + i));
-            uint32_t in_prev = (uint32_t)(base + 2 * (offset[f] + (i + k - 1) % k));
-            uint32_t face = offset[f] + i;
-            uint32_t a = first_half(h), c = second_half(he[h].prev);
-            rh[in].origin = (uint32_t)(V + (h >> 1));
-            rh[in + 1].origin = fp;
-            link(r, a, in);
-            link(r, in, in_prev + 1);
-            link(r, in_prev + 1, c);
-            link(r, c, a);
-            rh[a].face = rh[in].face = rh[in_prev + 1].face = rh[c].face = face;
-            r->face_halfedge[face] = a;
-            if (m->face_colors)
-                r->face_colors[face] = m->face_colors[f];
-            centroid = cg_vec3_add(centroid, m->positions[he[h].origin]);
-            i++;
-            h = he[h].next;
-        } while (h != h0);
-        r->positions[fp] = cg_vec3_scale(centroid, 1.0 / (double)k);
-        r->vertex_halfedge[fp] = (uint32_t)(base + 2 * offset[f] + 1);
-        if (r->texcoords || r->colors || r->normals) {
-            uint32_t *src = malloc(k * sizeof *src);
-            double *w = malloc(k * sizeof *w);
-            if (src && w) {
-                for (uint32_t j = 0, x = h0; j < k; j++, x = he[x].next) {
-                    src[j] = he[x].origin;
-                    w[j] = 1.0 / (double)k;
-                }
-                hm_blend_attributes(r, fp, src, w, k);
+    uint32_t fp = (uint32_t)(V + E + f);
+    uint32_t h0 = m->face_halfedge[f], h = h0;
+    uint32_t k = offset[f + 1] - offset[f];
+    cg_vec3 centroid = {0, 0, 0};
+    uint32_t i = 0;
+    do {
+        /* I_i: even m_i -> fp (quad i), odd fp -> m_i (quad i + 1) */
+        uint32_t in = (uint32_t)(base + 2 * (offset[f] + i));
+        uint32_t in_prev = (uint32_t)(base + 2 * (offset[f] + (i + k - 1) % k));
+        uint32_t face = offset[f] + i;
+        uint32_t a = first_half(h), c = second_half(he[h].prev);
+        rh[in].origin = (uint32_t)(V + (h >> 1));
+        rh[in + 1].origin = fp;
+        link(r, a, in);
+        link(r, in, in_prev + 1);
+        link(r, in_prev + 1, c);
+        link(r, c, a);
+        rh[a].face = rh[in].face = rh[in_prev + 1].face = rh[c].face = face;
+        r->face_halfedge[face] = a;
+        if (m->face_colors)
+            r->face_colors[face] = m->face_colors[f];
+        centroid = cg_vec3_add(centroid, m->positions[he[h].origin]);
+        i++;
+        h = he[h].next;
+    } while (h != h0);
+    r->positions[fp] = cg_vec3_scale(centroid, 1.0 / (double)k);
+    r->vertex_halfedge[fp] = (uint32_t)(base + 2 * offset[f] + 1);
+    if (r->texcoords || r->colors || r->normals) {
+        uint32_t *src = malloc(k * sizeof *src);
+        double *w = malloc(k * sizeof *w);
+        if (src && w) {
+            for (uint32_t j = 0, x = h0; j < k; j++, x = he[x].next) {
+                src[j] = he[x].origin;
+                w[j] = 1.0 / (double)k;
             }
-            free(src);
-            free(w);
+            hm_blend_attributes(r, fp, src, w, k);
         }
+        free(src);
+        free(w);
     }
-    /* edge points */
+}
+
+/* Catmull-Clark edge points: the average of the ends and the two face
+ * points, or the midpoint on the boundary. */
+static void catmull_clark_edge_points(const cg_hemesh *m, cg_hemesh *r)
+{
+    size_t V = m->vertex_count, E = m->halfedge_count / 2;
+    const cg_hemesh_halfedge *he = m->halfedges;
     for (size_t e = 0; e < E; e++) {
         uint32_t h = (uint32_t)(2 * e);
         cg_vec3 a = m->positions[he[h].origin], b = m->positions[he[h + 1].origin];
@@ -313,7 +317,15 @@ cg_status cg_hemesh_subdivide_catmull_clark(const cg_hemesh *input, cg_hemesh **
                               0.25);
         r->positions[V + e] = p;
     }
-    /* old vertices */
+}
+
+/* Catmull-Clark: the old vertices move to (F + 2R + (n - 3)P) / n, F the
+ * average of the face points around, R of the edge midpoints; boundary
+ * vertices follow the boundary curve. */
+static void catmull_clark_vertex_points(const cg_hemesh *m, cg_hemesh *r)
+{
+    size_t V = m->vertex_count, E = m->halfedge_count / 2;
+    const cg_hemesh_halfedge *he = m->halfedges;
     for (size_t v = 0; v < V; v++) {
         uint32_t h0 = m->vertex_halfedge[v];
         cg_vec3 p = m->positions[v];
@@ -341,6 +353,34 @@ cg_status cg_hemesh_subdivide_catmull_clark(const cg_hemesh *input, cg_hemesh **
         r->positions[v] = cg_vec3_scale(
             cg_vec3_add(cg_vec3_add(favg, cg_vec3_scale(ravg, 2.0)), cg_vec3_scale(p, dn - 3.0)), 1.0 / dn);
     }
+}
+
+cg_status cg_hemesh_subdivide_catmull_clark(const cg_hemesh *input, cg_hemesh **out)
+{
+    const cg_hemesh *m;
+    cg_hemesh *owned;
+    cg_status s = subdivide_begin(input, out, &m, &owned);
+    if (s != CG_OK)
+        return s;
+    size_t V = m->vertex_count, E = m->halfedge_count / 2, F = m->face_count;
+    uint32_t *offset = face_corner_offsets(m);
+    if (!offset) {
+        cg_hemesh_free(owned);
+        return CG_ENOMEM;
+    }
+    size_t corners = offset[F];
+    cg_hemesh *r;
+    s = make_result(m, V + E + F, 2 * E + corners, corners, &r);
+    if (s != CG_OK) {
+        free(offset);
+        cg_hemesh_free(owned);
+        return s;
+    }
+    split_edges(m, r);
+    for (size_t f = 0; f < F; f++)
+        catmull_clark_face(m, r, offset, f);
+    catmull_clark_edge_points(m, r);
+    catmull_clark_vertex_points(m, r);
     if (m->normals)
         cg_hemesh_compute_normals(r);
     free(offset);

@@ -14,6 +14,7 @@
  * position so that the renderer's smooth normals still join across them. */
 #include "checker.h"
 #include "../core/array.h"
+#include "../core/vector_order.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -68,21 +69,12 @@ static double coordinate(const checker_frame *frame, int axis, cg_vec3 p)
     return cg_vec3_dot(cg_vec3_sub(p, frame->origin), frame->axis[axis]) / frame->size;
 }
 
-/* Lexicographic order of points, so that an edge is cut the same way from
+/* The point of segment [a, b] at coordinate level (between theirs), from
+ * the ends in lexicographic order, so that an edge is cut the same way from
  * either face. */
-static int point_less(cg_vec3 a, cg_vec3 b)
-{
-    if (a.x != b.x)
-        return a.x < b.x;
-    if (a.y != b.y)
-        return a.y < b.y;
-    return a.z < b.z;
-}
-
-/* The point of segment [a, b] at coordinate level (between theirs). */
 static cg_vec3 cut(const checker_frame *frame, int axis, cg_vec3 a, cg_vec3 b, double level)
 {
-    if (point_less(b, a)) {
+    if (core_vec3_less(b, a)) {
         cg_vec3 t = a;
         a = b;
         b = t;
@@ -169,9 +161,9 @@ typedef struct keyed_point {
 static int compare_points(const void *a, const void *b)
 {
     const keyed_point *x = a, *y = b;
-    if (point_less(x->p, y->p))
+    if (core_vec3_less(x->p, y->p))
         return -1;
-    if (point_less(y->p, x->p))
+    if (core_vec3_less(y->p, x->p))
         return 1;
     return x->index < y->index ? -1 : x->index > y->index;
 }
@@ -193,7 +185,7 @@ static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pie
             keys[i] = (keyed_point){pieces->points[i], i};
         qsort(keys, n, sizeof *keys, compare_points);
         for (size_t i = 0; i < n; i++) {
-            if (i > 0 && (point_less(keys[i - 1].p, keys[i].p)))
+            if (i > 0 && (core_vec3_less(keys[i - 1].p, keys[i].p)))
                 unique++;
             id[keys[i].index] = (uint32_t)unique;
         }

@@ -29,39 +29,45 @@ static void print_trace(void *user, cg_vec2 p0, unsigned c0, cg_vec2 p1, unsigne
            p0.y, b0, p1.x, p1.y, b1, step);
 }
 
+/* cg clip line: the window and the segment as eight numbers, the options. */
+typedef struct line_arguments {
+    double numbers[8]; /* XMIN YMIN XMAX YMAX X0 Y0 X1 Y1 */
+    int count;
+    int liang_barsky; /* --algorithm liang-barsky */
+    int trace;
+} line_arguments;
+
+static int line_number(const char *command, int index, const char *text, void *arguments)
+{
+    static const char *names[8] = {"XMIN", "YMIN", "XMAX", "YMAX", "X0", "Y0", "X1", "Y1"};
+    line_arguments *a = arguments;
+    if (index >= 8) {
+        cli_usage_error(command, "line: expected 8 numbers, got '%s' as a ninth", text);
+        return -1;
+    }
+    a->count = index + 1;
+    return cli_parse_double(command, names[index], text, &a->numbers[index]);
+}
+
+static const char *const line_algorithms[] = {"cohen-sutherland", "liang-barsky", NULL};
+static const cli_option line_options[] = {
+    {.name = "--algorithm", .kind = CLI_CHOICE, .offset = offsetof(line_arguments, liang_barsky),
+     .choices = line_algorithms, .help = "the clipping algorithm (default cohen-sutherland)"},
+    {.name = "--trace", .kind = CLI_FLAG, .offset = offsetof(line_arguments, trace),
+     .flag_value = 1, .help = "print each step of Cohen-Sutherland with the region codes"},
+};
+static const cli_option_group line_groups[] = {CLI_GROUP(NULL, line_options), {0}};
+static const cli_syntax line_syntax = {
+    .command = "clip", .action = "line", .groups = line_groups, .positional = line_number,
+};
+
 static int line(int argc, char **argv)
 {
-    double v[8];
-    int count = 0, trace = 0, liang = 0;
-    for (int i = 1; i < argc; i++) {
-        if (cli_option_is(argv[i], "--algorithm")) {
-            const char *a = cli_option_value("clip", argc, argv, &i);
-            if (!a)
-                return CLI_USAGE;
-            if (strcmp(a, "cohen-sutherland") == 0)
-                liang = 0;
-            else if (strcmp(a, "liang-barsky") == 0)
-                liang = 1;
-            else
-                return cli_usage_error("clip", "--algorithm: expected cohen-sutherland or "
-                                               "liang-barsky, got '%s'", a);
-        } else if (strcmp(argv[i], "--trace") == 0) {
-            trace = 1;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("clip", "line: unknown option '%s'", argv[i]);
-        } else {
-            static const char *names[8] = {"XMIN", "YMIN", "XMAX", "YMAX", "X0", "Y0", "X1", "Y1"};
-            if (count == 8)
-                return cli_usage_error("clip", "line: expected 8 numbers, got '%s' as a ninth",
-                                       argv[i]);
-            if (cli_parse_double("clip", names[count], argv[i], &v[count]) != 0)
-                return CLI_USAGE;
-            if (!isfinite(v[count]))
-                return cli_usage_error("clip", "%s: expected a finite number, got '%s'",
-                                       names[count], argv[i]);
-            count++;
-        }
-    }
+    line_arguments a = {{0}, 0, 0, 0};
+    if (cli_parse(&line_syntax, argc, argv, &a, NULL, NULL) != CLI_OK)
+        return CLI_USAGE;
+    int count = a.count, trace = a.trace, liang = a.liang_barsky;
+    const double *v = a.numbers;
     if (count != 8)
         return cli_usage_error("clip", "line: expected XMIN YMIN XMAX YMAX X0 Y0 X1 Y1");
     if (v[0] > v[2] || v[1] > v[3])
@@ -121,50 +127,41 @@ static int draw(const char *path, const cg_polygon_set *a, const cg_polygon_set 
     return status;
 }
 
-static int parse_fill(const char *text, cg_clip_fill *out)
-{
-    static const char *names[4] = {"evenodd", "nonzero", "positive", "negative"};
-    for (int i = 0; i < 4; i++)
-        if (strcmp(text, names[i]) == 0) {
-            *out = (cg_clip_fill)i;
-            return 0;
-        }
-    return -1;
-}
+/* cg clip boolean OPERATION A B: the fill rule of both, the picture, timing. */
+typedef struct boolean_arguments {
+    int fill; /* cg_clip_fill, in the order of fill_rules */
+    const char *output;
+    int repeat;
+} boolean_arguments;
+
+static const char *const fill_rules[] = {"evenodd", "nonzero", "positive", "negative", NULL};
+static const cli_option boolean_options[] = {
+    {.name = "--fill", .kind = CLI_CHOICE, .offset = offsetof(boolean_arguments, fill),
+     .choices = fill_rules, .help = "the fill rule of A and B (default evenodd)"},
+    CLI_OPTION_OUTPUT(boolean_arguments, output, "OUT.png",
+                      "draw A, B and the result instead of printing the result"),
+    CLI_OPTION_REPEAT(boolean_arguments, repeat, 100000,
+                      "perform the operation N times; the median time on stderr"),
+};
+static const cli_option_group boolean_groups[] = {CLI_GROUP(NULL, boolean_options), {0}};
+static const cli_syntax boolean_syntax = {
+    .command = "clip", .action = "boolean", .groups = boolean_groups,
+    .max_positionals = 3, .too_many = "boolean: unexpected argument '%s'",
+};
 
 static int boolean(int argc, char **argv)
 {
     static const char *ops[4] = {"intersection", "union", "difference", "xor"};
-    const char *files[2] = {NULL, NULL}, *out = NULL, *opname = NULL;
-    int nfiles = 0;
-    long repeat = 0;
-    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
-    for (int i = 1; i < argc; i++) {
-        if (cli_option_is(argv[i], "--fill")) {
-            const char *f = cli_option_value("clip", argc, argv, &i);
-            if (!f)
-                return CLI_USAGE;
-            if (parse_fill(f, &fill) != 0)
-                return cli_usage_error("clip", "--fill: expected evenodd, nonzero, positive or "
-                                               "negative, got '%s'", f);
-        } else if (cli_option_is(argv[i], "-o")) {
-            out = cli_option_value("clip", argc, argv, &i);
-            if (!out)
-                return CLI_USAGE;
-        } else if (cli_option_is(argv[i], "--repeat")) {
-            const char *r = cli_option_value("clip", argc, argv, &i);
-            if (!r || cli_parse_long("clip", "--repeat", r, 1, 100000, &repeat) != 0)
-                return CLI_USAGE;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("clip", "boolean: unknown option '%s'", argv[i]);
-        } else if (!opname) {
-            opname = argv[i];
-        } else if (nfiles < 2) {
-            files[nfiles++] = argv[i];
-        } else {
-            return cli_usage_error("clip", "boolean: unexpected argument '%s'", argv[i]);
-        }
-    }
+    boolean_arguments arguments = {CG_CLIP_EVEN_ODD, NULL, 0};
+    const char *positionals[3];
+    int count = 0;
+    if (cli_parse(&boolean_syntax, argc, argv, &arguments, positionals, &count) != CLI_OK)
+        return CLI_USAGE;
+    const char *opname = count > 0 ? positionals[0] : NULL, *out = arguments.output;
+    const char *files[2] = {count > 1 ? positionals[1] : NULL, count > 2 ? positionals[2] : NULL};
+    int nfiles = count > 0 ? count - 1 : 0;
+    long repeat = arguments.repeat;
+    cg_clip_fill fill = (cg_clip_fill)arguments.fill;
     if (!opname || nfiles != 2)
         return cli_usage_error("clip", "boolean: expected OPERATION A B");
     int op = -1;
@@ -221,34 +218,34 @@ done:
 }
 
 /* cg clip polygon WINDOW SUBJECT: first rings of two WKT files. */
+typedef struct polygon_arguments {
+    int weiler_atherton; /* --algorithm weiler-atherton */
+    const char *output;
+} polygon_arguments;
+
+static const char *const polygon_algorithms[] = {"sutherland-hodgman", "weiler-atherton", NULL};
+static const cli_option polygon_options[] = {
+    {.name = "--algorithm", .kind = CLI_CHOICE,
+     .offset = offsetof(polygon_arguments, weiler_atherton), .choices = polygon_algorithms,
+     .help = "the clipping algorithm (default sutherland-hodgman)"},
+    CLI_OPTION_OUTPUT(polygon_arguments, output, "OUT.png",
+                      "draw WINDOW, SUBJECT and the result instead of printing the result"),
+};
+static const cli_option_group polygon_groups[] = {CLI_GROUP(NULL, polygon_options), {0}};
+static const cli_syntax polygon_syntax = {
+    .command = "clip", .action = "polygon", .groups = polygon_groups,
+    .max_positionals = 2, .too_many = "polygon: unexpected argument '%s'",
+};
+
 static int polygon(int argc, char **argv)
 {
-    const char *files[2] = {NULL, NULL}, *out = NULL;
-    int nfiles = 0, weiler = 0;
-    for (int i = 1; i < argc; i++) {
-        if (cli_option_is(argv[i], "--algorithm")) {
-            const char *a = cli_option_value("clip", argc, argv, &i);
-            if (!a)
-                return CLI_USAGE;
-            if (strcmp(a, "sutherland-hodgman") == 0)
-                weiler = 0;
-            else if (strcmp(a, "weiler-atherton") == 0)
-                weiler = 1;
-            else
-                return cli_usage_error("clip", "--algorithm: expected sutherland-hodgman or "
-                                               "weiler-atherton, got '%s'", a);
-        } else if (cli_option_is(argv[i], "-o")) {
-            out = cli_option_value("clip", argc, argv, &i);
-            if (!out)
-                return CLI_USAGE;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("clip", "polygon: unknown option '%s'", argv[i]);
-        } else if (nfiles < 2) {
-            files[nfiles++] = argv[i];
-        } else {
-            return cli_usage_error("clip", "polygon: unexpected argument '%s'", argv[i]);
-        }
-    }
+    polygon_arguments arguments = {0, NULL};
+    const char *files[2] = {NULL, NULL};
+    int nfiles = 0;
+    if (cli_parse(&polygon_syntax, argc, argv, &arguments, files, &nfiles) != CLI_OK)
+        return CLI_USAGE;
+    const char *out = arguments.output;
+    int weiler = arguments.weiler_atherton;
     if (nfiles != 2)
         return cli_usage_error("clip", "polygon: expected WINDOW SUBJECT");
     if (out && cg_file_format_from_path(out) == CG_FILE_UNKNOWN)
@@ -309,6 +306,9 @@ static int run(int argc, char **argv)
                            argv[1]);
 }
 
+static const cli_syntax *const clip_syntaxes[] = {&line_syntax, &polygon_syntax, &boolean_syntax,
+                                                  NULL};
+
 const cg_command cg_command_clip = {
     "clip",
     "clip segments and polygons; boolean operations on polygons (WKT)",
@@ -334,4 +334,5 @@ const cg_command cg_command_clip = {
     "stderr as 'boolean: 1.23 ms'.  Coordinates are rounded to a grid 2^36 times\n"
     "finer than the largest |coordinate| (see docs/clip.md).\n",
     run,
+    clip_syntaxes,
 };

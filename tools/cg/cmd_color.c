@@ -26,26 +26,46 @@ static void print_value(double v, int last)
     printf("%.17g%c", v, last ? '\n' : ' ');
 }
 
+/* FROM-TO and up to four values; more are counted, for the message. */
+typedef struct color_arguments {
+    const char *texts[5];
+    int count;
+} color_arguments;
+
+static int color_argument(const char *command, int index, const char *text, void *arguments)
+{
+    (void)command;
+    color_arguments *a = arguments;
+    if (index < 5)
+        a->texts[index] = text;
+    a->count = index + 1;
+    return 0;
+}
+
+static const cli_syntax color_syntax = {.command = "color", .positional = color_argument};
+
 static int run(int argc, char **argv)
 {
-    if (argc < 2)
+    color_arguments arguments = {{NULL}, 0};
+    if (cli_parse(&color_syntax, argc, argv, &arguments, NULL, NULL) != CLI_OK)
+        return CLI_USAGE;
+    const char *const *texts = arguments.texts;
+    if (arguments.count == 0)
         return cli_usage_error("color", "expected FROM-TO and the values of a colour");
-    if (cli_is_option(argv[1]))
-        return cli_usage_error("color", "unknown option '%s'", argv[1]);
     cg_color_model from, to;
-    if (parse_conversion(argv[1], &from, &to) != 0)
+    if (parse_conversion(texts[0], &from, &to) != 0)
         return cli_usage_error("color",
                                "'%s': expected FROM-TO with FROM and TO among rgb, srgb, linear, "
                                "hsv, hsl, cmy, cmyk, yiq, ycbcr601, ycbcr709, xyz, lab",
-                               argv[1]);
+                               texts[0]);
     int need = cg_color_model_components(from);
-    int given = argc - 2;
+    int given = arguments.count - 1;
     double in[4] = {0, 0, 0, 0}, out[4];
     if (from == CG_MODEL_RGB && given == 1) {
         /* rgb from "#rrggbb" or a colour name */
         cg_rgba8 c;
         cg_error err;
-        if (cg_color_parse(argv[2], &c, &err) != CG_OK)
+        if (cg_color_parse(texts[1], &c, &err) != CG_OK)
             return cli_usage_error("color", "%s", err.message);
         in[0] = c.r / 255.0;
         in[1] = c.g / 255.0;
@@ -57,12 +77,12 @@ static int run(int argc, char **argv)
         for (int i = 0; i < need; i++) {
             char what[32];
             snprintf(what, sizeof what, "value %d", i + 1);
-            if (cli_parse_double("color", what, argv[2 + i], &in[i]) != 0)
+            if (cli_parse_double("color", what, texts[1 + i], &in[i]) != 0)
                 return CLI_USAGE;
         }
     }
     if (cg_color_convert(from, to, in, out) != CG_OK)
-        return cli_fail("color: conversion %s failed", argv[1]);
+        return cli_fail("color: conversion %s failed", texts[0]);
     int n = cg_color_model_components(to);
     for (int i = 0; i < n; i++)
         print_value(out[i], i == n - 1);
@@ -92,4 +112,5 @@ const cg_command cg_command_color = {
     "  cg color srgb-linear 0.5 0.5 0.5\n"
     "  cg color rgb-lab cornflowerblue\n",
     run,
+    NULL,
 };

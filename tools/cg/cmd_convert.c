@@ -4,17 +4,17 @@
 
 #include <stdio.h>
 
+static const cli_syntax convert_syntax = {
+    .command = "convert", .max_positionals = 2,
+    .too_many = "expected two files, got '%s' as a third",
+};
+
 static int run(int argc, char **argv)
 {
     const char *paths[2];
     int count = 0;
-    for (int i = 1; i < argc; i++) {
-        if (cli_is_option(argv[i]))
-            return cli_usage_error("convert", "unknown option '%s'", argv[i]);
-        if (count == 2)
-            return cli_usage_error("convert", "expected two files, got '%s' as a third", argv[i]);
-        paths[count++] = argv[i];
-    }
+    if (cli_parse(&convert_syntax, argc, argv, NULL, paths, &count) != CLI_OK)
+        return CLI_USAGE;
     if (count != 2)
         return cli_usage_error("convert", "expected IN and OUT files");
     if (cg_file_format_from_path(paths[1]) == CG_FILE_UNKNOWN)
@@ -37,4 +37,5 @@ const cg_command cg_command_convert = {
     "writes OUT in the format of its extension: .png, .ppm (binary P6) or .pgm\n"
     "(binary P5, luminance).  OUT is replaced only when writing succeeds.\n",
     run,
+    NULL,
 };

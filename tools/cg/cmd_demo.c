@@ -285,20 +285,25 @@ static const char *section_titles(const demo_section *const *ordered, char *list
     return list;
 }
 
+typedef struct demo_arguments {
+    const char *directory, *only;
+} demo_arguments;
+
+static const cli_option demo_options[] = {
+    CLI_OPTION_OUTPUT(demo_arguments, directory, "DIR", "the gallery's folder (default out)"),
+    {.name = "--only", .kind = CLI_STRING, .offset = offsetof(demo_arguments, only),
+     .value_name = "TEXT", .help = "only the sections whose title contains TEXT"},
+};
+static const cli_option_group demo_groups[] = {CLI_GROUP(NULL, demo_options), {0}};
+static const cli_syntax demo_syntax = {.command = "demo", .groups = demo_groups};
+static const cli_syntax *const demo_syntaxes[] = {&demo_syntax, NULL};
+
 static int run(int argc, char **argv)
 {
-    const char *directory = "out", *only = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (cli_option_is(argv[i], "-o") || cli_option_is(argv[i], "--output")) {
-            if (!(directory = cli_option_value("demo", argc, argv, &i)))
-                return CLI_USAGE;
-        } else if (cli_option_is(argv[i], "--only")) {
-            if (!(only = cli_option_value("demo", argc, argv, &i)))
-                return CLI_USAGE;
-        } else {
-            return cli_usage_error("demo", "unexpected argument '%s'", argv[i]);
-        }
-    }
+    demo_arguments arguments = {"out", NULL};
+    if (cli_parse(&demo_syntax, argc, argv, &arguments, NULL, NULL) != CLI_OK)
+        return CLI_USAGE;
+    const char *directory = arguments.directory, *only = arguments.only;
     const demo_section *ordered[SECTION_COUNT > 0 ? SECTION_COUNT : 1];
     for (int s = 0; s < SECTION_COUNT; s++)
         ordered[s] = sections[s];
@@ -345,4 +350,5 @@ const cg_command cg_command_demo = {
     "it, run in DIR (its inputs are written there; see docs/gallery.md).\n"
     "--only renders just the sections whose title contains TEXT.\n",
     run,
+    demo_syntaxes,
 };

@@ -6,26 +6,32 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+typedef struct draw_arguments {
+    const char *output;
+    int repeat;
+} draw_arguments;
+
+static const cli_option draw_options[] = {
+    CLI_OPTION_OUTPUT(draw_arguments, output, "OUT", "the image to write (required)"),
+    CLI_OPTION_REPEAT(draw_arguments, repeat, 1000000,
+                      "draw N times, each on a fresh canvas, and print the median\n"
+                      "drawing time on stderr as 'draw: 12.3 ms'"),
+};
+static const cli_option_group draw_groups[] = {CLI_GROUP(NULL, draw_options), {0}};
+static const cli_syntax draw_syntax = {
+    .command = "draw", .groups = draw_groups, .max_positionals = 1,
+    .too_many = "expected one script, got '%s' as a second",
+};
+static const cli_syntax *const draw_syntaxes[] = {&draw_syntax, NULL};
+
 static int run(int argc, char **argv)
 {
-    const char *input = NULL, *output = NULL;
-    long repeat = 1;
-    for (int i = 1; i < argc; i++) {
-        if (cli_option_is(argv[i], "-o") || cli_option_is(argv[i], "--output")) {
-            if (!(output = cli_option_value("draw", argc, argv, &i)))
-                return CLI_USAGE;
-        } else if (cli_option_is(argv[i], "--repeat")) {
-            const char *value = cli_option_value("draw", argc, argv, &i);
-            if (!value || cli_parse_long("draw", "--repeat", value, 1, 1000000, &repeat))
-                return CLI_USAGE;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("draw", "unknown option '%s'", argv[i]);
-        } else if (input) {
-            return cli_usage_error("draw", "expected one script, got '%s' as a second", argv[i]);
-        } else {
-            input = argv[i];
-        }
-    }
+    draw_arguments arguments = {NULL, 1};
+    const char *input = NULL;
+    if (cli_parse(&draw_syntax, argc, argv, &arguments, &input, NULL) != CLI_OK)
+        return CLI_USAGE;
+    const char *output = arguments.output;
+    long repeat = arguments.repeat;
     if (!input)
         return cli_usage_error("draw", "expected a script FILE (or - for stdin)");
     if (!output)
@@ -92,9 +98,7 @@ const cg_command cg_command_draw = {
     "Integer coordinates (pixel indices) for line, polyline, circle, disc, ellipse,\n"
     "arcs and the flood seeds; decimals for the others.  A bad line is reported as\n"
     "FILE:LINE: what was expected, and no output is written.  A UTF-8 byte-order\n"
-    "mark before the first line is skipped.  See docs/draw-script.md.\n\n"
-    "  -o OUT       the image to write (required)\n"
-    "  --repeat N   draw N times, each on a fresh canvas, and print the median\n"
-    "               drawing time on stderr as 'draw: 12.3 ms'\n",
+    "mark before the first line is skipped.  See docs/draw-script.md.\n",
     run,
+    draw_syntaxes,
 };

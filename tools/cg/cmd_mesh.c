@@ -95,23 +95,27 @@ static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t gen
 
 /* ---- info -------------------------------------------------------------------- */
 
+typedef struct info_arguments {
+    int repeat;
+} info_arguments;
+
+static const cli_option info_options[] = {
+    CLI_OPTION_REPEAT(info_arguments, repeat, 100000,
+                      "build N times; the median build and one-ring times on stderr"),
+};
+static const cli_option_group info_groups[] = {CLI_GROUP(NULL, info_options), {0}};
+static const cli_syntax info_syntax = {
+    .command = "mesh", .action = "info", .groups = info_groups, .max_positionals = 1,
+    .too_many = "info: expected one FILE, got '%s' as a second",
+};
+
 static int info(int argc, char **argv)
 {
     const char *path = NULL;
-    long repeat = 0;
-    for (int i = 2; i < argc; i++) {
-        if (cli_option_is(argv[i], "--repeat")) {
-            const char *value = cli_option_value("mesh", argc, argv, &i);
-            if (!value || cli_parse_long("mesh", "--repeat", value, 1, 100000, &repeat))
-                return CLI_USAGE;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("mesh", "info: unknown option '%s'", argv[i]);
-        } else if (path) {
-            return cli_usage_error("mesh", "info: expected one FILE, got '%s' as a second", argv[i]);
-        } else {
-            path = argv[i];
-        }
-    }
+    info_arguments arguments = {0};
+    if (cli_parse(&info_syntax, argc - 1, argv + 1, &arguments, &path, NULL) != CLI_OK)
+        return CLI_USAGE;
+    long repeat = arguments.repeat;
     if (!path)
         return cli_usage_error("mesh", "info: expected a mesh FILE");
     cg_mesh *mesh;
@@ -247,29 +251,40 @@ static int load_for_output(const char *what, const char *in, const char *out, cg
     return status;
 }
 
+/* --loop N or --catmull-clark N: the scheme, and the levels in either. */
+typedef struct subdivide_arguments {
+    int loop_levels, catmull_clark_levels;
+    int loop_given, catmull_clark_given;
+} subdivide_arguments;
+
+static const cli_option subdivide_options[] = {
+    {.name = "--loop", .kind = CLI_INT, .offset = offsetof(subdivide_arguments, loop_levels),
+     .value_name = "N", .what = "subdivision levels", .min = 0, .max = 12,
+     .given = CLI_GIVEN(subdivide_arguments, loop_given),
+     .help = "N levels of Loop subdivision (triangle meshes)"},
+    {.name = "--catmull-clark", .kind = CLI_INT,
+     .offset = offsetof(subdivide_arguments, catmull_clark_levels), .value_name = "N",
+     .what = "subdivision levels", .min = 0, .max = 12,
+     .given = CLI_GIVEN(subdivide_arguments, catmull_clark_given),
+     .help = "N levels of Catmull-Clark subdivision (any polygons)"},
+};
+static const cli_option_group subdivide_groups[] = {CLI_GROUP(NULL, subdivide_options), {0}};
+static const cli_syntax subdivide_syntax = {
+    .command = "mesh", .action = "subdivide", .groups = subdivide_groups, .max_positionals = 2,
+    .too_many = "subdivide: expected IN and OUT, got '%s' as a third",
+};
+
 static int subdivide(int argc, char **argv)
 {
-    int scheme = 0; /* 1 Loop, 2 Catmull-Clark */
-    long levels = -1;
+    subdivide_arguments arguments = {0, 0, 0, 0};
     const char *paths[2];
     int count = 0;
-    for (int i = 2; i < argc; i++) {
-        int which = cli_option_is(argv[i], "--loop") ? 1 : cli_option_is(argv[i], "--catmull-clark") ? 2 : 0;
-        if (which) {
-            if (scheme)
-                return cli_usage_error("mesh", "subdivide: give one of --loop and --catmull-clark");
-            scheme = which;
-            const char *value = cli_option_value("mesh", argc, argv, &i);
-            if (!value || cli_parse_long("mesh", "subdivision levels", value, 0, 12, &levels))
-                return CLI_USAGE;
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("mesh", "subdivide: unknown option '%s'", argv[i]);
-        } else if (count == 2) {
-            return cli_usage_error("mesh", "subdivide: expected IN and OUT, got '%s' as a third", argv[i]);
-        } else {
-            paths[count++] = argv[i];
-        }
-    }
+    if (cli_parse(&subdivide_syntax, argc - 1, argv + 1, &arguments, paths, &count) != CLI_OK)
+        return CLI_USAGE;
+    if (arguments.loop_given + arguments.catmull_clark_given > 1)
+        return cli_usage_error("mesh", "subdivide: give one of --loop and --catmull-clark");
+    int scheme = arguments.loop_given ? 1 : arguments.catmull_clark_given ? 2 : 0; /* 1 Loop, 2 Catmull-Clark */
+    long levels = scheme == 1 ? arguments.loop_levels : arguments.catmull_clark_levels;
     if (!scheme)
         return cli_usage_error("mesh", "subdivide: expected --loop N or --catmull-clark N");
     if (count != 2)
@@ -311,17 +326,17 @@ static int subdivide(int argc, char **argv)
     return status;
 }
 
+static const cli_syntax repair_syntax = {
+    .command = "mesh", .action = "repair", .max_positionals = 2,
+    .too_many = "repair: expected IN and OUT, got '%s' as a third",
+};
+
 static int repair(int argc, char **argv)
 {
     const char *paths[2];
     int count = 0;
-    for (int i = 2; i < argc; i++) {
-        if (cli_is_option(argv[i]))
-            return cli_usage_error("mesh", "repair: unknown option '%s'", argv[i]);
-        if (count == 2)
-            return cli_usage_error("mesh", "repair: expected IN and OUT, got '%s' as a third", argv[i]);
-        paths[count++] = argv[i];
-    }
+    if (cli_parse(&repair_syntax, argc - 1, argv + 1, NULL, paths, &count) != CLI_OK)
+        return CLI_USAGE;
     if (count != 2)
         return cli_usage_error("mesh", "repair: expected IN and OUT files");
     cg_hemesh *h = NULL;
@@ -351,6 +366,8 @@ static int run(int argc, char **argv)
         return repair(argc, argv);
     return cli_usage_error("mesh", "unknown action '%s' (expected info, subdivide or repair)", argv[1]);
 }
+
+static const cli_syntax *const mesh_syntaxes[] = {&info_syntax, &subdivide_syntax, NULL};
 
 const cg_command cg_command_mesh = {
     "mesh",
@@ -394,4 +411,5 @@ const cg_command cg_command_mesh = {
     "Vertex order, attributes, face order and face colours are otherwise kept;\n"
     "isolated vertices are kept.\n",
     run,
+    mesh_syntaxes,
 };

@@ -11,6 +11,8 @@
 static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms, trace_fill_algorithms,
                                                 trace_clip_algorithms};
 
+static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
+
 static int run(int argc, char **argv)
 {
     trace_outputs outputs;
@@ -82,13 +84,9 @@ const cg_command cg_command_trace = {
     "  weiler-atherton 'WINDOW' 'SUBJECT'\n"
     "                             any simple window: the crossings (entering or\n"
     "                             exiting), both lists, each leg of the traversal\n\n"
-    "Outputs:\n"
-    "  (default)        a table per phase of the algorithm, with notes above it\n"
-    "  --json           one JSON object (docs/teaching.md gives its schema)\n"
-    "  --frames DIR     a PNG per step, DIR/step_0000.png ...: the picture so far,\n"
-    "                   the step's pixels in orange and its geometry in red\n"
-    "  --html OUT.html  one self-contained page stepping through those pictures\n"
-    "                   (buttons, slider, arrow keys; works offline)\n\n"
+    "By default a table per phase of the algorithm, with notes above it; the\n"
+    "options below go anywhere on the line.\n\n"
     "Example: cg trace line 1 1 22 9;  cg trace circle 11 --html circle.html\n",
     run,
+    trace_syntaxes,
 };

@@ -9,6 +9,28 @@
 #include "cli.h"
 #include "command.h"
 
+#include <stddef.h>
+
+typedef struct view_arguments {
+    cli_size size;
+    int threads;
+    const char *screenshot_dir;
+} view_arguments;
+
+static const cli_option view_options[] = {
+    CLI_OPTION_SIZE(view_arguments, size, 0, "window size (default 1280x720)"),
+    CLI_OPTION_THREADS(view_arguments, threads, 0, "rendering threads (default: all cores)"),
+    {.name = "--screenshot-dir", .kind = CLI_STRING,
+     .offset = offsetof(view_arguments, screenshot_dir), .value_name = "DIR",
+     .help = "where s saves cg-view-N.png (default .)"},
+};
+static const cli_option_group view_groups[] = {CLI_GROUP(NULL, view_options), {0}};
+static const cli_syntax view_syntax = {
+    .command = "view", .groups = view_groups, .max_positionals = 1,
+    .too_many = "expected one MESH or SCENE file, got '%s' as well",
+};
+static const cli_syntax *const view_syntaxes[] = {&view_syntax, NULL};
+
 #ifdef CG_HAVE_SDL2
 
 #include "font5x7.h"
@@ -182,28 +204,13 @@ static int have_display(void)
 
 static int run(int argc, char **argv)
 {
-    const char *path = NULL, *shots = ".";
-    int width = 1280, height = 720;
-    long threads = SDL_GetCPUCount();
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *value;
-        if (!cli_is_option(a)) {
-            if (path)
-                return cli_usage_error(NAME, "expected one MESH or SCENE file, got '%s' as well", a);
-            path = a;
-        } else if (cli_option_is(a, "--size")) {
-            if (!(value = cli_option_value(NAME, argc, argv, &i)) || cli_parse_size(NAME, "--size", value, &width, &height))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--threads")) {
-            if (!(value = cli_option_value(NAME, argc, argv, &i)) || cli_parse_long(NAME, "--threads", value, 1, 64, &threads))
-                return CLI_USAGE;
-        } else if (cli_option_is(a, "--screenshot-dir")) {
-            if (!(shots = cli_option_value(NAME, argc, argv, &i)))
-                return CLI_USAGE;
-        } else {
-            return cli_usage_error(NAME, "unknown option '%s'", a);
-        }
-    }
+    view_arguments arguments = {{1280, 720}, SDL_GetCPUCount(), "."};
+    const char *path = NULL;
+    if (cli_parse(&view_syntax, argc, argv, &arguments, &path, NULL) != CLI_OK)
+        return CLI_USAGE;
+    const char *shots = arguments.screenshot_dir;
+    int width = arguments.size.width, height = arguments.size.height;
+    long threads = arguments.threads;
     if (!path)
         return cli_usage_error(NAME, "expected a MESH or SCENE file");
     if (threads < 1)
@@ -373,4 +380,5 @@ const cg_command cg_command_view = {
     "The window needs a display (DISPLAY or WAYLAND_DISPLAY); without one cg view\n"
     "says so and exits with status 1, unless SDL_VIDEODRIVER names a driver.\n",
     run,
+    view_syntaxes,
 };

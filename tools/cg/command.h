@@ -4,6 +4,8 @@
 #ifndef CG_TOOL_COMMAND_H
 #define CG_TOOL_COMMAND_H
 
+#include "options.h"
+
 typedef struct cg_command {
     const char *name;    /* as typed: "convert", "trace-render" */
     const char *summary; /* one line for `cg --help` */
@@ -11,6 +13,9 @@ typedef struct cg_command {
     /* argv[0] is the subcommand name.  Returns the process exit status:
      * 0 success, 1 failure, 2 bad usage. */
     int (*run)(int argc, char **argv);
+    /* The command lines run parses (options.h), NULL-terminated: `cg help
+     * NAME` lists their options after usage.  NULL for none. */
+    const cli_syntax *const *syntaxes;
 } cg_command;
 
 #endif

@@ -22,8 +22,8 @@ static int render(demo_context *context)
     raytrace_settings s;
     raytrace_settings_default(&s);
     s.extra.classic_scene = 1;
-    s.common.width = 480;
-    s.common.height = 320;
+    s.common.size.width = 480;
+    s.common.size.height = 320;
     s.extra.samples = 4;
     s.common.render.threads = 2;
     s.quiet = 1;
@@ -42,8 +42,8 @@ static int render(demo_context *context)
         return 1;
     raytrace_settings_default(&s);
     s.input = CG_SOURCE_DIR "/data/meshes/bunny.obj";
-    s.common.width = 400;
-    s.common.height = 320;
+    s.common.size.width = 400;
+    s.common.size.height = 320;
     s.extra.samples = 4;
     s.extra.floor = 1;
     s.common.render.threads = 2;

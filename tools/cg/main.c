@@ -36,6 +36,13 @@ static void print_overview(FILE *out)
     fprintf(out, "\nRun 'cg help COMMAND' for the options of one command.\n");
 }
 
+/* The command's usage text, then its options from its tables. */
+static void print_help(const cg_command *command)
+{
+    printf("%s", command->usage);
+    cli_print_options(stdout, command->syntaxes);
+}
+
 static int help(int argc, char **argv)
 {
     if (argc < 3) {
@@ -47,7 +54,7 @@ static int help(int argc, char **argv)
         cli_fail("help: unknown command '%s' (run 'cg --help' for the list)", argv[2]);
         return CLI_USAGE;
     }
-    printf("%s", command->usage);
+    print_help(command);
     return CLI_OK;
 }
 
@@ -72,7 +79,7 @@ int main(int argc, char **argv)
     /* `cg COMMAND --help` is the same as `cg help COMMAND`. */
     for (int i = 2; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            printf("%s", command->usage);
+            print_help(command);
             return CLI_OK;
         }
     }

@@ -16,7 +16,7 @@ static int place_camera(const char *command, const render_request *r, int bounde
                         cg_vec3 hi, cg_camera *out)
 {
     const render_cli_options *c = &r->trace.common;
-    double aspect = (double)c->width / c->height;
+    double aspect = (double)c->size.width / c->size.height;
     cg_camera camera = cg_camera_default();
     camera.up = c->up;
     camera.fovy = cg_radians(c->fov_degrees);
@@ -141,8 +141,8 @@ int render_mesh_raster(const char *command, const render_request *r)
     if (cg_renderer_create(mesh, &o, &renderer, &err) != CG_OK)
         status = cli_fail("%s: %s", path, err.message);
     cg_mesh_free(mesh);
-    if (status == CLI_OK && cg_image_create(&image, c->width, c->height, CG_PIXEL_RGBA8) != CG_OK)
-        status = cli_fail("%s: cannot make a %dx%d image", command, c->width, c->height);
+    if (status == CLI_OK && cg_image_create(&image, c->size.width, c->size.height, CG_PIXEL_RGBA8) != CG_OK)
+        status = cli_fail("%s: cannot make a %dx%d image", command, c->size.width, c->size.height);
     if (status == CLI_OK)
         status = draw_and_write(command, r, renderer, &progress, image);
     cg_renderer_free(renderer);

@@ -1,116 +1,239 @@
-/* The one parser of `cg render` and `cg trace-render` (see render_request.h):
- * the options shared with the ray tracer go through raytrace_parse_option
- * (which takes render_options.h's first), the rasterizer's here; then every
- * option given is checked against the algorithm and the input it would act
- * on, so that none is ignored in silence. */
+/* The one command line of `cg render` and `cg trace-render` (see
+ * render_request.h): the table of their options (options.h), then the checks
+ * that every option given means something for the algorithm and the input
+ * it would act on, so that none is ignored in silence. */
 #include "render_request.h"
 
 #include "cli.h"
 #include "render_scene.h"
-#include "cg/color.h"
 
+#include <math.h>
 #include <string.h>
 
-static const char *const option_names[OPT_COUNT] = {
-    "--algorithm", "--eye", "--target", "--up", "--fov", "--ortho", "--view-from",
-    "--light-dir", "--ambient", "--specular", "--shininess", "--color", "--background",
-    "--edge-color", "--crease", "--cull", "--wireframe", "--hidden-line", "--edges",
-    "--output-depth", "--spp", "--depth", "--stats", "--no-shadows", "--floor", "--scene",
-    "--quiet",
+/* Choices are stored as ints into these enums. */
+_Static_assert(sizeof(cg_shading) == sizeof(int) && sizeof(cg_cull_mode) == sizeof(int)
+                   && sizeof(cg_edge_mode) == sizeof(int)
+                   && sizeof(render_algorithm) == sizeof(int),
+               "choice members are ints");
+
+/* ---- the options that do more than store a value ---------------------------------- */
+
+/* --fov: degrees in (0, 180); a perspective view again after --ortho. */
+static int parse_fov(const char *command, const cli_option *option, const char *text,
+                     void *arguments)
+{
+    render_cli_options *common = &((render_request *)arguments)->trace.common;
+    if (cli_read_double(command, option, text, &common->fov_degrees))
+        return -1;
+    common->ortho_height = 0;
+    return 0;
+}
+
+/* --light-dir X,Y,Z: one more directional light, of strength 1. */
+static int parse_light(const char *command, const cli_option *option, const char *text,
+                       void *arguments)
+{
+    render_cli_options *common = &((render_request *)arguments)->trace.common;
+    cg_render_options *render = &common->render;
+    cg_vec3 direction;
+    if (cli_parse_vec3(command, option->name, text, &direction))
+        return -1;
+    int full = render->light_count == CG_RENDER_MAX_LIGHTS;
+    if (full && common->lights_full_first) {
+        cli_usage_error(command, "--light-dir: too many lights");
+        return -1;
+    }
+    if (!(cg_vec3_length(direction) > 0)) {
+        cli_usage_error(command, "--light-dir: the direction must not be zero");
+        return -1;
+    }
+    if (full) {
+        cli_usage_error(command, "--light-dir: at most %d lights", CG_RENDER_MAX_LIGHTS);
+        return -1;
+    }
+    render->lights[render->light_count].direction = direction;
+    render->lights[render->light_count++].intensity = 1;
+    return 0;
+}
+
+/* --view-from X,Y,Z: a direction, so not zero. */
+static int parse_view_from(const char *command, const cli_option *option, const char *text,
+                           void *arguments)
+{
+    raytrace_settings *trace = &((render_request *)arguments)->trace;
+    if (cli_parse_vec3(command, option->name, text, &trace->view_from))
+        return -1;
+    if (!(cg_vec3_length(trace->view_from) > 0)) {
+        cli_usage_error(command, "--view-from: the direction must not be zero");
+        return -1;
+    }
+    return 0;
+}
+
+/* --scene spheres: the one built-in scene. */
+static int parse_scene(const char *command, const cli_option *option, const char *text,
+                       void *arguments)
+{
+    (void)option;
+    if (strcmp(text, "spheres") != 0) {
+        cli_usage_error(command, "--scene: unknown scene '%s' (expected spheres)", text);
+        return -1;
+    }
+    ((render_request *)arguments)->trace.extra.classic_scene = 1;
+    return 0;
+}
+
+/* ---- the table ------------------------------------------------------------------- */
+
+#define COMMON(member) offsetof(render_request, trace.common.member)
+#define RENDER(member) offsetof(render_request, trace.common.render.member)
+#define EXTRA(member) offsetof(render_request, trace.extra.member)
+#define GIVEN(option) CLI_GIVEN(render_request, given[option])
+
+static const char *const shadings[] = {"flat", "gouraud", "phong", NULL};
+static const char *const culls[] = {"none", "back", NULL};
+static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", "depth-sort", NULL};
+
+static const cli_option output_options[] = {
+    CLI_OPTION_OUTPUT(render_request, trace.common.output, "OUT",
+                      "the image to write (.png, .ppm, .pgm)"),
 };
 
-const char *render_option_name(render_option option)
-{
-    return option_names[option];
-}
+static const cli_option camera_options[] = {
+    CLI_OPTION_SIZE(render_request, trace.common.size, GIVEN(OPT_SIZE),
+                    "image size (default 800x600)"),
+    {.name = "--eye", .kind = CLI_VEC3, .offset = COMMON(eye), .value_name = "X,Y,Z",
+     .given = GIVEN(OPT_EYE), .help = "camera position (then no automatic framing)"},
+    {.name = "--view-from", .kind = CLI_CUSTOM, .parse = parse_view_from, .value_name = "X,Y,Z",
+     .given = GIVEN(OPT_VIEW_FROM),
+     .help = "direction from the mesh toward a framed camera (default 0,0,1)"},
+    {.name = "--target", .kind = CLI_VEC3, .offset = COMMON(target), .value_name = "X,Y,Z",
+     .given = GIVEN(OPT_TARGET), .help = "point looked at (default: the centre of the mesh)"},
+    {.name = "--up", .kind = CLI_VEC3, .offset = COMMON(up), .value_name = "X,Y,Z",
+     .given = GIVEN(OPT_UP), .help = "up direction (default 0,1,0)"},
+    {.name = "--fov", .kind = CLI_CUSTOM, .parse = parse_fov, .value_name = "DEGREES",
+     .given = GIVEN(OPT_FOV), .low = 0, .high = 180, .open = CLI_OPEN_LOW | CLI_OPEN_HIGH,
+     .range_text = "degrees between 0 and 180",
+     .help = "vertical field of view, perspective (default 45)"},
+    {.name = "--ortho", .kind = CLI_DOUBLE, .offset = COMMON(ortho_height),
+     .value_name = "HEIGHT", .given = GIVEN(OPT_ORTHO), .low = 0, .high = INFINITY,
+     .open = CLI_OPEN_LOW, .range_text = "a positive height",
+     .help = "parallel projection showing HEIGHT world units vertically"},
+    {.name = "--near", .kind = CLI_DOUBLE, .offset = COMMON(near), .value_name = "D",
+     .given = GIVEN(OPT_NEAR),
+     .help = "near clip distance along the view (default: from the mesh's\n"
+             "depth range; a parallel view's near may be 0 or negative)"},
+    {.name = "--far", .kind = CLI_DOUBLE, .offset = COMMON(far), .value_name = "D",
+     .given = GIVEN(OPT_FAR), .help = "far clip distance (default: from the mesh's depth range)"},
+};
+
+static const cli_option light_options[] = {
+    {.name = "--light-dir", .kind = CLI_CUSTOM, .parse = parse_light, .value_name = "X,Y,Z",
+     .given = GIVEN(OPT_LIGHT_DIR),
+     .help = "directional light toward which lit surfaces face, strength 1;\n"
+             "repeatable (default: one light from the camera's upper left)"},
+    {.name = "--ambient", .kind = CLI_DOUBLE, .offset = RENDER(ambient), .value_name = "K",
+     .given = GIVEN(OPT_AMBIENT), .low = 0, .high = INFINITY, .range_text = "a number >= 0",
+     .help = "ambient coefficient (default 0.15)"},
+    {.name = "--specular", .kind = CLI_DOUBLE, .offset = RENDER(specular), .value_name = "K",
+     .given = GIVEN(OPT_SPECULAR), .low = 0, .high = INFINITY, .range_text = "a number >= 0",
+     .help = "specular coefficient, Blinn-Phong (default 0.25)"},
+    {.name = "--shininess", .kind = CLI_DOUBLE, .offset = RENDER(shininess), .value_name = "N",
+     .given = GIVEN(OPT_SHININESS), .low = 0, .high = INFINITY, .range_text = "a number >= 0",
+     .help = "specular exponent (default 32)"},
+    {.name = "--color", .kind = CLI_LINEAR_COLOR, .offset = RENDER(color), .value_name = "COLOR",
+     .given = GIVEN(OPT_COLOR), .help = "diffuse colour where the file has none (default #c4c4c4)"},
+    {.name = "--background", .kind = CLI_LINEAR_COLOR, .offset = RENDER(background),
+     .value_name = "COLOR", .given = GIVEN(OPT_BACKGROUND),
+     .help = "background (default #1d1f27; a sky with --floor and --scene)"},
+    {.name = "--edge-color", .kind = CLI_LINEAR_COLOR, .offset = RENDER(edge_color),
+     .value_name = "COLOR", .given = GIVEN(OPT_EDGE_COLOR),
+     .help = "colour of wireframe and hidden lines"},
+};
+
+static const cli_option pipeline_options[] = {
+    {.name = "--shading", .kind = CLI_CHOICE, .offset = RENDER(shading), .choices = shadings,
+     .given = GIVEN(OPT_SHADING), .help = "shading model (default gouraud)"},
+    {.name = "--crease", .kind = CLI_DOUBLE, .offset = offsetof(render_request, crease_degrees),
+     .value_name = "DEGREES", .given = GIVEN(OPT_CREASE), .low = 0, .high = 180,
+     .range_text = "a number >= 0 and <= 180",
+     .help = "computed normals are split where faces meet at a\n"
+             "larger angle (default 60)"},
+    {.name = "--cull", .kind = CLI_CHOICE, .offset = RENDER(cull), .choices = culls,
+     .given = GIVEN(OPT_CULL),
+     .help = "back-face culling; front faces are counter-clockwise as\n"
+             "seen by the camera (default back)"},
+    {.name = "--algorithm", .kind = CLI_CHOICE, .offset = offsetof(render_request, algorithm),
+     .choices = algorithms, .given = GIVEN(OPT_ALGORITHM),
+     .help = "visible-surface algorithm (default zbuffer); depth-sort is\n"
+             "painter's without its overlap tests, to show their purpose"},
+    {.name = "--wireframe", .kind = CLI_FLAG, .offset = RENDER(edges),
+     .flag_value = CG_EDGES_WIREFRAME, .given = GIVEN(OPT_WIREFRAME), .help = "every edge, no faces"},
+    {.name = "--hidden-line", .kind = CLI_FLAG, .offset = RENDER(edges),
+     .flag_value = CG_EDGES_HIDDEN_LINE, .given = GIVEN(OPT_HIDDEN_LINE),
+     .help = "visible edges only"},
+    {.name = "--edges", .kind = CLI_FLAG, .offset = RENDER(edges), .flag_value = CG_EDGES_OVERLAY,
+     .given = GIVEN(OPT_EDGES), .help = "shaded faces with their visible edges"},
+    {.name = "--output-depth", .kind = CLI_FLAG, .offset = offsetof(render_request, output_depth),
+     .flag_value = 1, .given = GIVEN(OPT_OUTPUT_DEPTH),
+     .help = "write the depth buffer (near light, far dark) instead"},
+    CLI_OPTION_THREADS(render_request, trace.common.render.threads, GIVEN(OPT_THREADS),
+                       "worker threads, 1 to 64; the picture is the same for any N"),
+    CLI_OPTION_REPEAT(render_request, trace.common.repeat, 100000,
+                      "render N frames after loading and print the median time\n"
+                      "on stderr as 'frame: 12.3 ms'"),
+    {.name = "--quiet", .kind = CLI_FLAG, .offset = offsetof(render_request, trace.quiet),
+     .flag_value = 1, .given = GIVEN(OPT_QUIET),
+     .help = "no progress on stderr (shown for frames over a second)"},
+};
+
+static const cli_option raytrace_options[] = {
+    {.name = "--spp", .kind = CLI_INT, .offset = EXTRA(samples), .value_name = "N", .min = 1,
+     .max = 65536, .given = GIVEN(OPT_SPP),
+     .help = "samples per pixel, stratified (default 1: pixel centres)"},
+    {.name = "--depth", .kind = CLI_INT, .offset = EXTRA(depth), .value_name = "N", .min = 0,
+     .max = 64, .given = GIVEN(OPT_DEPTH),
+     .help = "reflection/refraction recursion limit, 0..64 (default 5)"},
+    {.name = "--no-shadows", .kind = CLI_FLAG, .offset = EXTRA(shadows), .flag_value = 0,
+     .given = GIVEN(OPT_NO_SHADOWS), .help = "no shadow rays"},
+    {.name = "--floor", .kind = CLI_FLAG, .offset = EXTRA(floor), .flag_value = 1,
+     .given = GIVEN(OPT_FLOOR), .help = "a checkered floor under the mesh (and a sky behind)"},
+    {.name = "--scene", .kind = CLI_CUSTOM, .parse = parse_scene, .value_name = "spheres",
+     .given = GIVEN(OPT_SCENE), .help = "the built-in scene instead of a file"},
+    {.name = "--stats", .kind = CLI_FLAG, .offset = offsetof(render_request, trace.stats),
+     .flag_value = 1, .given = GIVEN(OPT_STATS),
+     .help = "print the BVH build time and rays per second"},
+};
+
+static const cli_option_group render_groups[] = {
+    CLI_GROUP(NULL, output_options),
+    CLI_GROUP("Camera (default: looking along -z, placed so the whole mesh fills the view):",
+              camera_options),
+    CLI_GROUP("Light and material:", light_options),
+    CLI_GROUP("Pipeline:", pipeline_options),
+    CLI_GROUP("Ray tracer (--algorithm raytrace only):", raytrace_options),
+    {0},
+};
+
+const cli_syntax render_syntax = {
+    .command = "render", .groups = render_groups, .max_positionals = 1,
+    .too_many = "expected one MESH file, got '%s' as well",
+};
+
+/* ---- what was given --------------------------------------------------------------- */
 
 int render_request_has(const render_request *r, render_option option)
 {
-    return (r->given >> option) & 1;
+    return r->given[option] > 0;
 }
 
-/* The option argv[i] names, or OPT_COUNT for the others (-o, --size, ...). */
-static render_option option_of(const char *arg)
+const char *render_option_name(render_option option)
 {
-    for (int k = 0; k < OPT_COUNT; k++)
-        if (cli_option_is(arg, option_names[k]))
-            return (render_option)k;
-    return OPT_COUNT;
-}
-
-/* The rasterizer's own options and the camera direction: 1 consumed, 0 not
- * one of them, -1 after an error. */
-static int parse_render_option(const char *command, int argc, char **argv, int *i,
-                               render_request *r)
-{
-    static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", "depth-sort"};
-    static const char *const culls[] = {"none", "back"};
-    cg_render_options *o = &r->trace.common.render;
-    const char *a = argv[*i], *v = NULL;
-#define VALUE()                                               \
-    do {                                                      \
-        if (!(v = cli_option_value(command, argc, argv, i))) \
-            return -1;                                        \
-    } while (0)
-    if (cli_option_is(a, "--view-from")) {
-        VALUE();
-        if (cli_parse_vec3(command, "--view-from", v, &r->trace.view_from))
-            return -1;
-        if (!(cg_vec3_length(r->trace.view_from) > 0)) {
-            cli_usage_error(command, "--view-from: the direction must not be zero");
-            return -1;
-        }
-        r->trace.have_view_from = 1;
-    } else if (cli_option_is(a, "--specular") || cli_option_is(a, "--shininess")
-               || cli_option_is(a, "--crease")) {
-        int which = cli_option_is(a, "--specular") ? 0 : cli_option_is(a, "--shininess") ? 1 : 2;
-        static const char *const names[] = {"--specular", "--shininess", "--crease"};
-        double k;
-        VALUE();
-        if (cli_parse_double(command, names[which], v, &k))
-            return -1;
-        if (!(k >= 0) || (which == 2 && k > 180)) {
-            cli_usage_error(command, "%s: expected a number >= 0%s, got '%s'", names[which],
-                            which == 2 ? " and <= 180" : "", v);
-            return -1;
-        }
-        if (which == 0)
-            o->specular = k;
-        else if (which == 1)
-            o->shininess = k;
-        else
-            r->crease_degrees = k;
-    } else if (cli_option_is(a, "--cull")) {
-        int c;
-        VALUE();
-        if (render_cli_parse_choice(command, "--cull", v, culls, 2, &c))
-            return -1;
-        o->cull = (cg_cull_mode)c;
-    } else if (cli_option_is(a, "--algorithm")) {
-        int c;
-        VALUE();
-        if (render_cli_parse_choice(command, "--algorithm", v, algorithms, 4, &c))
-            return -1;
-        r->algorithm = (render_algorithm)c;
-    } else if (cli_option_is(a, "--wireframe")) {
-        o->edges = CG_EDGES_WIREFRAME;
-    } else if (cli_option_is(a, "--hidden-line")) {
-        o->edges = CG_EDGES_HIDDEN_LINE;
-    } else if (cli_option_is(a, "--edges")) {
-        o->edges = CG_EDGES_OVERLAY;
-    } else if (cli_option_is(a, "--output-depth")) {
-        r->output_depth = 1;
-    } else if (cli_option_is(a, "--edge-color")) {
-        cg_rgba8 c;
-        VALUE();
-        if (cli_parse_color(command, "--edge-color", v, &c))
-            return -1;
-        o->edge_color = cg_rgba8_to_linear(c);
-    } else {
-        return 0;
-    }
-#undef VALUE
-    return 1;
+    for (const cli_option_group *group = render_groups; group->options; group++)
+        for (size_t k = 0; k < group->count; k++)
+            if (group->options[k].given == GIVEN(option))
+                return group->options[k].name;
+    return "?";
 }
 
 /* The first option of set[0..count) that was given, or -1. */
@@ -145,16 +268,33 @@ static int check_combinations(const char *command, int trace_only, const render_
     if (s->input && render_scene_is_scene(s->input)
         && (k = first_given(r, not_for_scenes, 6)) >= 0)
         return cli_usage_error(command, "%s: not available with a scene file (%s)",
-                               option_names[k],
+                               render_option_name((render_option)k),
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
                                                                 : "it applies to mesh files");
     if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 6)) >= 0)
         return cli_usage_error(command, "%s: not available with the ray tracer (use --algorithm "
-                                        "zbuffer or painter)", option_names[k]);
+                                        "zbuffer or painter)", render_option_name((render_option)k));
     if (r->algorithm != RENDER_RAYTRACE && (k = first_given(r, trace_options, 6)) >= 0)
         return cli_usage_error(command, "%s: only the ray tracer uses it (add --algorithm "
-                                        "raytrace)", option_names[k]);
+                                        "raytrace)", render_option_name((render_option)k));
     return CLI_OK;
+}
+
+/* The settings that say which options a scene file keeps its own for. */
+static void note_given(render_request *r)
+{
+    render_cli_options *common = &r->trace.common;
+    common->have_size = r->given[OPT_SIZE];
+    common->have_eye = r->given[OPT_EYE];
+    common->have_target = r->given[OPT_TARGET];
+    common->have_shading = r->given[OPT_SHADING];
+    common->have_threads = r->given[OPT_THREADS];
+    common->have_background = r->given[OPT_BACKGROUND];
+    common->have_near = r->given[OPT_NEAR];
+    common->have_far = r->given[OPT_FAR];
+    r->trace.have_samples = r->given[OPT_SPP];
+    r->trace.have_depth = r->given[OPT_DEPTH];
+    r->trace.have_view_from = r->given[OPT_VIEW_FROM];
 }
 
 int render_request_parse(const char *command, int argc, char **argv, int trace_only,
@@ -164,25 +304,13 @@ int render_request_parse(const char *command, int argc, char **argv, int trace_o
     raytrace_settings_default(&r->trace);
     r->algorithm = trace_only ? RENDER_RAYTRACE : RENDER_ZBUFFER;
     r->crease_degrees = 60;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!cli_is_option(a)) {
-            if (r->trace.input)
-                return cli_usage_error(command, "expected one MESH file, got '%s' as well", a);
-            r->trace.input = a;
-            continue;
-        }
-        render_option which = option_of(a);
-        int used = raytrace_parse_option(command, argc, argv, &i, &r->trace);
-        if (used == 0)
-            used = parse_render_option(command, argc, argv, &i, r);
-        if (used < 0)
-            return CLI_USAGE;
-        if (used == 0)
-            return cli_usage_error(command, "unknown option '%s'", a);
-        if (which != OPT_COUNT)
-            r->given |= 1ul << which;
-    }
+    cli_syntax syntax = render_syntax; /* the messages name the command typed */
+    syntax.command = command;
+    const char *input = NULL;
+    if (cli_parse(&syntax, argc, argv, r, &input, NULL) != CLI_OK)
+        return CLI_USAGE;
+    r->trace.input = input;
+    note_given(r);
     r->trace.common.render.crease_angle = cg_radians(r->crease_degrees);
     return check_combinations(command, trace_only, r);
 }

@@ -5,6 +5,7 @@
 #ifndef CG_TOOL_RENDER_REQUEST_H
 #define CG_TOOL_RENDER_REQUEST_H
 
+#include "options.h"
 #include "trace_command.h"
 
 /* --algorithm, in the order of its choices. */
@@ -15,14 +16,15 @@ typedef enum render_algorithm {
     RENDER_DEPTH_SORT
 } render_algorithm;
 
-/* Options that only some inputs or algorithms use, by the name the user
- * typed them with (for messages); bit i of render_request.given. */
+/* The options whose presence matters (an option that only some inputs or
+ * algorithms use, or one that overrides a scene file's setting): index of
+ * render_request.given. */
 typedef enum render_option {
     OPT_ALGORITHM, OPT_EYE, OPT_TARGET, OPT_UP, OPT_FOV, OPT_ORTHO, OPT_VIEW_FROM,
     OPT_LIGHT_DIR, OPT_AMBIENT, OPT_SPECULAR, OPT_SHININESS, OPT_COLOR, OPT_BACKGROUND,
     OPT_EDGE_COLOR, OPT_CREASE, OPT_CULL, OPT_WIREFRAME, OPT_HIDDEN_LINE, OPT_EDGES,
     OPT_OUTPUT_DEPTH, OPT_SPP, OPT_DEPTH, OPT_STATS, OPT_NO_SHADOWS, OPT_FLOOR, OPT_SCENE,
-    OPT_QUIET, OPT_COUNT
+    OPT_QUIET, OPT_SIZE, OPT_NEAR, OPT_FAR, OPT_SHADING, OPT_THREADS, OPT_COUNT
 } render_option;
 
 typedef struct render_request {
@@ -33,8 +35,11 @@ typedef struct render_request {
     render_algorithm algorithm;
     double crease_degrees;  /* --crease (default 60) */
     int output_depth;       /* --output-depth */
-    unsigned long given;    /* bit render_option: the option was on the command line */
+    int given[OPT_COUNT];   /* how often each option was on the command line */
 } render_request;
+
+/* The command line of `cg render` and `cg trace-render`, for the help. */
+extern const cli_syntax render_syntax;
 
 /* Parses argv[1..argc) for command ("render" or "trace-render"; the latter
  * always ray traces).  CLI_OK, or CLI_USAGE after printing one line. */

@@ -110,8 +110,8 @@ int render_scene_apply(const char *command, const render_request *r, cg_scene *s
                            : r->algorithm == RENDER_PAINTER ? CG_SCENE_PAINTER : CG_SCENE_ZBUFFER;
     }
     if (c->have_size) {
-        scene->width = c->width;
-        scene->height = c->height;
+        scene->width = c->size.width;
+        scene->height = c->size.height;
     }
     if (c->have_shading)
         scene->shading = o->shading == CG_SHADING_FLAT ? CG_SCENE_FLAT

@@ -22,55 +22,6 @@ void raytrace_settings_default(raytrace_settings *s)
     raytrace_extra_default(&s->extra);
 }
 
-int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
-                          raytrace_settings *s)
-{
-    int shared = render_cli_parse_option(command, argc, argv, i, &s->common);
-    if (shared)
-        return shared;
-    const char *arg = argv[*i];
-    const char *v;
-    long n;
-#define VALUE()                                               \
-    do {                                                      \
-        if (!(v = cli_option_value(command, argc, argv, i))) \
-            return -1;                                        \
-    } while (0)
-    if (cli_option_is(arg, "--scene")) {
-        VALUE();
-        if (strcmp(v, "spheres") != 0) {
-            cli_usage_error(command, "--scene: unknown scene '%s' (expected spheres)", v);
-            return -1;
-        }
-        s->extra.classic_scene = 1;
-    } else if (cli_option_is(arg, "--spp") || cli_option_is(arg, "--depth")) {
-        int spp = cli_option_is(arg, "--spp");
-        VALUE();
-        if (cli_parse_long(command, spp ? "--spp" : "--depth", v, spp ? 1 : 0, spp ? 65536 : 64,
-                           &n))
-            return -1;
-        if (spp) {
-            s->extra.samples = (int)n;
-            s->have_samples = 1;
-        } else {
-            s->extra.depth = (int)n;
-            s->have_depth = 1;
-        }
-    } else if (cli_option_is(arg, "--stats")) {
-        s->stats = 1;
-    } else if (cli_option_is(arg, "--no-shadows")) {
-        s->extra.shadows = 0;
-    } else if (cli_option_is(arg, "--floor")) {
-        s->extra.floor = 1;
-    } else if (cli_option_is(arg, "--quiet")) {
-        s->quiet = 1;
-    } else {
-        return 0;
-    }
-#undef VALUE
-    return 1;
-}
-
 /* The camera: the classic scene's own view, or framed to the mesh's box
  * [lo, hi] from the --view-from direction unless --eye places it (as the
  * rasterizer's path of `cg render` does). */
@@ -97,7 +48,7 @@ static int place_camera(const raytrace_settings *s, int bounded, cg_vec3 lo, cg_
     } else {
         c->target = s->common.have_target ? s->common.target : centre;
         c->eye = cg_vec3_add(c->target, s->view_from);
-        cg_camera_frame(c, lo, hi, (double)s->common.width / s->common.height);
+        cg_camera_frame(c, lo, hi, (double)s->common.size.width / s->common.size.height);
         if (s->common.have_target) {
             cg_vec3 offset = cg_vec3_sub(c->eye, c->target);
             c->target = s->common.target;
@@ -171,9 +122,9 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     if (status != CLI_OK)
         return status;
     cg_image *image;
-    if (cg_image_create(&image, s->common.width, s->common.height, CG_PIXEL_RGBA8) != CG_OK) {
+    if (cg_image_create(&image, s->common.size.width, s->common.size.height, CG_PIXEL_RGBA8) != CG_OK) {
         render_raytrace_free(tracer);
-        return cli_fail("%s: cannot make a %dx%d image", command, s->common.width, s->common.height);
+        return cli_fail("%s: cannot make a %dx%d image", command, s->common.size.width, s->common.size.height);
     }
     int runs = s->common.repeat > 0 ? s->common.repeat : 1;
     double *times = malloc((size_t)runs * sizeof *times);

@@ -48,10 +48,6 @@ typedef struct raytrace_settings {
 } raytrace_settings;
 
 void raytrace_settings_default(raytrace_settings *s);
-/* Parses the option at argv[*i] (advancing *i past its value): 1 when
- * consumed, 0 when not one of ours, -1 after printing an error. */
-int raytrace_parse_option(const char *command, int argc, char **argv, int *i,
-                          raytrace_settings *s);
 /* Renders into a new RGBA8 image (s->repeat times when > 0, printing
  * "frame: 12.3 ms"); returns an exit status. */
 int raytrace_render(const char *command, const raytrace_settings *s, cg_image **out);

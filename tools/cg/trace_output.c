@@ -96,35 +96,51 @@ long trace_pixel_total(const trace_run *run)
     return total;
 }
 
+enum { MAX_ARGUMENTS = 256 };
+
+/* --frames and --html take a path that is not empty. */
+static int parse_path(const char *command, const cli_option *option, const char *text,
+                      void *arguments)
+{
+    if (!*text) {
+        cli_usage_error(command, "%s needs a non-empty path", option->name);
+        return -1;
+    }
+    *(const char **)((char *)arguments + option->offset) = text;
+    return 0;
+}
+
+static const cli_option output_options[] = {
+    {.name = "--json", .kind = CLI_FLAG, .offset = offsetof(trace_outputs, json),
+     .flag_value = 1, .help = "one JSON object instead of the table (docs/teaching.md)"},
+    {.name = "--frames", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, frames_dir),
+     .value_name = "DIR", .parse = parse_path,
+     .help = "a PNG per step, DIR/step_0000.png ...: the picture so far,\n"
+             "the step's pixels in orange and its geometry in red"},
+    {.name = "--html", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, html),
+     .value_name = "OUT.html", .parse = parse_path,
+     .help = "one self-contained page stepping through those pictures\n"
+             "(buttons, slider, arrow keys; works offline)"},
+};
+
+static const cli_option_group output_groups[] = {CLI_GROUP(NULL, output_options), {0}};
+
+const cli_syntax trace_output_syntax = {
+    .command = "trace", .groups = output_groups, .max_positionals = MAX_ARGUMENTS,
+    .too_many = "too many arguments (at most 256), from '%s' on",
+};
+
 int trace_outputs_parse(int *argc, char **argv, trace_outputs *out)
 {
+    const char *rest[MAX_ARGUMENTS];
+    int count = 0;
     memset(out, 0, sizeof *out);
-    int kept = 1;
-    for (int i = 1; i < *argc; i++) {
-        const char *arg = argv[i];
-        if (cli_option_is(arg, "--json")) {
-            out->json = 1;
-        } else if (cli_option_is(arg, "--frames") || cli_option_is(arg, "--html")) {
-            const char *value = cli_option_value("trace", *argc, argv, &i);
-            if (!value)
-                return -1;
-            if (!*value) {
-                cli_usage_error("trace", "%s needs a non-empty path", arg);
-                return -1;
-            }
-            if (cli_option_is(arg, "--frames"))
-                out->frames_dir = value;
-            else
-                out->html = value;
-        } else if (cli_is_option(arg)) {
-            cli_usage_error("trace", "unknown option '%s'", arg);
-            return -1;
-        } else {
-            argv[kept++] = argv[i];
-        }
-    }
-    *argc = kept;
-    argv[kept] = NULL;
+    if (cli_parse(&trace_output_syntax, *argc, argv, out, rest, &count) != CLI_OK)
+        return -1;
+    for (int i = 0; i < count; i++)
+        argv[i + 1] = (char *)rest[i]; /* the same strings, in order */
+    *argc = count + 1;
+    argv[*argc] = NULL;
     return 0;
 }
 

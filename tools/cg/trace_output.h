@@ -5,6 +5,7 @@
 #ifndef CG_TOOL_TRACE_OUTPUT_H
 #define CG_TOOL_TRACE_OUTPUT_H
 
+#include "options.h"
 #include "cg/core.h"
 #include "cg/image.h"
 #include "cg/trace_steps.h"
@@ -42,8 +43,12 @@ typedef struct trace_outputs {
     const char *html;
 } trace_outputs;
 
-/* Takes --json, --frames DIR and --html OUT out of argv (anywhere after the
- * algorithm), compacting argv; 0, or -1 after printing an error. */
+/* The options every algorithm takes (options.h), anywhere on the line. */
+extern const cli_syntax trace_output_syntax;
+
+/* Parses --json, --frames DIR and --html OUT out of argv[1..argc) and
+ * leaves the other arguments, in order, in argv[1..*argc); 0, or -1 after
+ * printing an error. */
 int trace_outputs_parse(int *argc, char **argv, trace_outputs *out);
 
 /* A run with an empty log; the title as printf.  NULL when out of memory. */

@@ -601,6 +601,70 @@ static void backface_agrees(void)
         cg_mesh_free(meshes[i]);
 }
 
+typedef struct zbuffer_view { double margin; int covered; double depth; } zbuffer_view;
+
+/* The result's depth, and how clearly the pixel centre is inside the
+ * winning triangle (or outside every triangle when none won). */
+static int read_zbuffer(void *user, const cg_step *s)
+{
+    zbuffer_view *z = user;
+    const cg_step_field *w = cg_step_find(s, "barycentric");
+    if (strcmp(s->phase, "fragments") == 0 && w && w->kind == CG_STEP_REALS) {
+        double inner = fmin(w->reals[0], fmin(w->reals[1], w->reals[2]));
+        z->margin = fmin(z->margin, fabs(inner)); /* near an edge of any triangle */
+    }
+    if (strcmp(s->phase, "result") == 0) {
+        const cg_step_field *depth = cg_step_find(s, "depth");
+        z->covered = depth->kind == CG_STEP_REAL;
+        z->depth = z->covered ? depth->real : INFINITY;
+    }
+    return 0;
+}
+
+static void zbuffer_agrees(void)
+{
+    check_rng rng = {0x2b};
+    cg_mesh *meshes[2];
+    CHECK(cg_mesh_sphere(10, 6, 1, &meshes[0]) == CG_OK);
+    CHECK(cg_mesh_torus(12, 6, 1, 0.35, &meshes[1]) == CG_OK);
+    const int width = 160, height = 120;
+    cg_image *image;
+    cg_image_create(&image, width, height, CG_PIXEL_RGBA8);
+    int compared = 0, hits = 0;
+    for (int trial = 0; trial < 20; trial++) {
+        const cg_mesh *mesh = meshes[trial % 2];
+        cg_render_options options;
+        cg_render_options_default(&options);
+        options.model = cg_mat4_mul(cg_xform3_rotate_x(check_rng_range(&rng, 0, 6)),
+                                    cg_xform3_rotate_y(check_rng_range(&rng, 0, 6)));
+        cg_renderer *renderer;
+        CHECK(cg_renderer_create(mesh, &options, &renderer, NULL) == CG_OK);
+        CHECK(cg_renderer_draw(renderer, image) == CG_OK);
+        const float *depth = cg_renderer_depth(renderer);
+        cg_camera camera = cg_renderer_camera(renderer);
+        for (int k = 0; k < 40; k++) {
+            int x = (int)check_rng_int(&rng, 0, width - 1), y = (int)check_rng_int(&rng, 0, height - 1);
+            zbuffer_view z = {INFINITY, 0, INFINITY};
+            CHECK(cg_zbuffer_pixel_steps(mesh, options.model, &camera, width, height, x, y, 1,
+                                         read_zbuffer, &z) == CG_OK);
+            if (z.margin < 0.02) /* the centre is near an edge: snapping decides */
+                continue;
+            double expected = depth[(size_t)y * width + x];
+            compared++;
+            hits += z.covered;
+            CHECK_MSG(z.covered == isfinite(expected), "trial %d pixel (%d, %d): trace %s, renderer %s",
+                      trial, x, y, z.covered ? "covered" : "background", isfinite(expected) ? "covered" : "background");
+            if (z.covered && isfinite(expected))
+                CHECK_NEAR(z.depth, expected, 1e-3); /* the renderer snaps vertices to sub-pixels */
+        }
+        cg_renderer_free(renderer);
+    }
+    CHECK(compared > 300 && hits > 100);
+    cg_image_free(image);
+    cg_mesh_free(meshes[0]);
+    cg_mesh_free(meshes[1]);
+}
+
 /* ---- filling ------------------------------------------------------------------ */
 
 static void scanline_agrees(void)
@@ -931,6 +995,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(flatten_agrees);
     CHECK_GROUP(pipeline_agrees);
     CHECK_GROUP(backface_agrees);
+    CHECK_GROUP(zbuffer_agrees);
     CHECK_GROUP(color_agrees);
     CHECK_GROUP(light_agrees);
     CHECK_GROUP(scanline_agrees);

@@ -180,6 +180,21 @@ cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int
 cg_status cg_backface_steps(const cg_mesh *mesh, cg_mat4 model, const cg_camera *camera,
                             cg_step_fn step, void *user);
 
+/* The z-buffer at pixel (x, y) of a width x height frame of the mesh
+ * (placed by model, seen by camera, back faces culled when cull): phase
+ * "fragments", one step per triangle whose screen bounding box holds the
+ * pixel's centre (triangle, face, window_xyz: its three projected vertices
+ * as x, y, depth; the centre's barycentric coordinates; the interpolated
+ * depth; the buffer's depth before; the decision: not covered, culled,
+ * accepted as nearer, rejected), then phase "result": the triangle that
+ * won and its depth, or the background.  The depth is the renderer's
+ * (cg_renderer_depth) up to its fixed-point snapping of the vertices; a
+ * triangle with a vertex behind the camera is listed but left to the
+ * clipper. */
+cg_status cg_zbuffer_pixel_steps(const cg_mesh *mesh, cg_mat4 model, const cg_camera *camera,
+                                 int width, int height, int x, int y, int cull, cg_step_fn step,
+                                 void *user);
+
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 
 /* The illumination at a point by cg/light.h's model, light by light: phase

@@ -60,6 +60,8 @@ const cg_command cg_command_trace = {
     "                             and after the divide, the pixel it lands on\n"
     "  backface MESH [ABOUT_Y [ABOUT_X]]\n"
     "                             back-face culling per triangle: N, V, the sign of N.V\n"
+    "  zbuffer MESH X Y [WxH]     the z-buffer at one pixel: each triangle near it, its\n"
+    "                             barycentric coordinates, depth, accepted or rejected\n"
     "  light POINT NORMAL EYE [LIGHT ...]\n"
     "                             ambient, diffuse, specular per light (LIGHT as\n"
     "                             ambient:R,G,B, point:X,Y,Z:R,G,B, directional:X,Y,Z:R,G,B)\n"

@@ -170,8 +170,40 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
-/* backface MESH [ABOUT_Y [ABOUT_X]]: the mesh turned by the angles (degrees)
- * and framed by the default camera, as cg render shows it. */
+/* Loads the mesh, turns it about y then x (degrees) and frames it with the
+ * default camera for the aspect, as cg render does; CLI_OK or CLI_FAILED
+ * after a message. */
+static int frame_mesh(const char *path, double about_y, double about_x, double aspect,
+                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
+{
+    cg_error err;
+    if (cg_mesh_load(path, mesh, &err) != CG_OK)
+        return cli_fail("trace: %s", err.message);
+    *model = cg_mat4_mul(cg_xform3_rotate_x(about_x * M_PI / 180),
+                         cg_xform3_rotate_y(about_y * M_PI / 180));
+    cg_vec3 lo, hi, corner[8];
+    *camera = cg_camera_default();
+    cg_status status = cg_mesh_bounds(*mesh, &lo, &hi);
+    if (status == CG_OK) { /* frame the turned box */
+        for (int i = 0; i < 8; i++)
+            corner[i] = cg_mat4_transform_point(*model, cg_vec3_make(i & 1 ? hi.x : lo.x,
+                                                                     i & 2 ? hi.y : lo.y,
+                                                                     i & 4 ? hi.z : lo.z));
+        lo = hi = corner[0];
+        for (int i = 1; i < 8; i++) {
+            lo = cg_vec3_make(fmin(lo.x, corner[i].x), fmin(lo.y, corner[i].y), fmin(lo.z, corner[i].z));
+            hi = cg_vec3_make(fmax(hi.x, corner[i].x), fmax(hi.y, corner[i].y), fmax(hi.z, corner[i].z));
+        }
+        status = cg_camera_frame(camera, lo, hi, aspect);
+    }
+    if (status != CG_OK) {
+        cg_mesh_free(*mesh);
+        return cli_fail("trace: %s: the mesh has no extent to look at", path);
+    }
+    return CLI_OK;
+}
+
+/* backface MESH [ABOUT_Y [ABOUT_X]] */
 static int run_backface(int argc, char **argv, const trace_outputs *out)
 {
     double about_y = 30, about_x = 20;
@@ -182,30 +214,10 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
         || (argc > 3 && trace_parse_real("ABOUT_X", argv[3], &about_x)))
         return CLI_USAGE;
     cg_mesh *mesh;
-    cg_error err;
-    if (cg_mesh_load(argv[1], &mesh, &err) != CG_OK)
-        return cli_fail("trace: %s", err.message);
-    cg_mat4 model = cg_mat4_mul(cg_xform3_rotate_x(about_x * M_PI / 180),
-                                cg_xform3_rotate_y(about_y * M_PI / 180));
-    cg_vec3 lo, hi, corner[8];
-    cg_camera camera = cg_camera_default();
-    cg_status status = cg_mesh_bounds(mesh, &lo, &hi);
-    if (status == CG_OK) { /* frame the turned box, as cg render does */
-        for (int i = 0; i < 8; i++)
-            corner[i] = cg_mat4_transform_point(model, cg_vec3_make(i & 1 ? hi.x : lo.x,
-                                                                    i & 2 ? hi.y : lo.y,
-                                                                    i & 4 ? hi.z : lo.z));
-        lo = hi = corner[0];
-        for (int i = 1; i < 8; i++) {
-            lo = cg_vec3_make(fmin(lo.x, corner[i].x), fmin(lo.y, corner[i].y), fmin(lo.z, corner[i].z));
-            hi = cg_vec3_make(fmax(hi.x, corner[i].x), fmax(hi.y, corner[i].y), fmax(hi.z, corner[i].z));
-        }
-        status = cg_camera_frame(&camera, lo, hi, 4.0 / 3.0);
-    }
-    if (status != CG_OK) {
-        cg_mesh_free(mesh);
-        return cli_fail("trace: %s: the mesh has no extent to look at", argv[1]);
-    }
+    cg_mat4 model;
+    cg_camera camera;
+    if (frame_mesh(argv[1], about_y, about_x, 4.0 / 3.0, &mesh, &model, &camera) != CLI_OK)
+        return CLI_FAILED;
     trace_run *run = trace_run_create("backface", argc - 1, argv + 1,
                                       "Back-face culling of %s turned %g degrees about y and %g "
                                       "about x, camera at (%g, %g, %g)", argv[1], about_y, about_x,
@@ -220,7 +232,7 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "N.V > 0: the triangle faces the eye and is kept; N.V <= 0: a back face, "
                     "culled");
     trace_note(run, "the frames show the triangles in view space, x right and y up");
-    status = cg_backface_steps(mesh, model, &camera, cg_step_log_record, run->log);
+    cg_status status = cg_backface_steps(mesh, model, &camera, cg_step_log_record, run->log);
     cg_mesh_free(mesh);
     long culled = 0;
     for (size_t i = 0; i < cg_step_log_count(run->log); i++)
@@ -231,9 +243,48 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* zbuffer MESH X Y [WxH]: the mesh turned 30 degrees about y and 20 about x,
+ * framed, in a WxH frame (160x120). */
+static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
+{
+    long x, y;
+    int width = 160, height = 120;
+    if (argc < 4 || argc > 5)
+        return cli_usage_error("trace", "zbuffer: expected 'zbuffer MESH X Y [WxH]'");
+    if ((argc > 4 && cli_parse_size("trace", "WxH", argv[4], &width, &height))
+        || trace_parse_int("X", argv[2], 0, width - 1, &x)
+        || trace_parse_int("Y", argv[3], 0, height - 1, &y))
+        return CLI_USAGE;
+    cg_mesh *mesh;
+    cg_mat4 model;
+    cg_camera camera;
+    if (frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
+        return CLI_FAILED;
+    trace_run *run = trace_run_create("zbuffer", argc - 1, argv + 1,
+                                      "The z-buffer at pixel (%ld, %ld) of a %dx%d frame of %s",
+                                      x, y, width, height, argv[1]);
+    if (!run) {
+        cg_mesh_free(mesh);
+        return cli_fail("trace: out of memory");
+    }
+    trace_note(run, "the mesh turned 30 degrees about y and 20 about x, framed as cg render "
+                    "frames it; back faces culled");
+    trace_note(run, "each triangle whose screen box holds the centre (%ld.5, %ld.5): its "
+                    "window x, y, depth, the centre's barycentric coordinates", x, y);
+    trace_note(run, "a fragment when all three are >= 0; depth = the weighted vertex depths; "
+                    "accepted when nearer than the buffer (initially the background)");
+    cg_status status = cg_zbuffer_pixel_steps(mesh, model, &camera, width, height, (int)x, (int)y,
+                                              1, cg_step_log_record, run->log);
+    cg_mesh_free(mesh);
+    int code = trace_finish(run, status, "the mesh is not valid", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_view_algorithms[] = {
     {"pipeline", "X,Y,Z [EYE [TARGET [FOVY [WxH]]]]", run_pipeline},
     {"backface", "MESH [ABOUT_Y [ABOUT_X]]", run_backface},
+    {"zbuffer", "MESH X Y [WxH]", run_zbuffer},
     {"light", "POINT NORMAL EYE [LIGHT ...]", run_light},
     {"hsv", "R G B", run_hsv},
     {"hsl", "R G B", run_hsl},

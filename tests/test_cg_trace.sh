@@ -159,6 +159,13 @@ check "liang-barsky boundaries" "0 left -20 -5 0.25 entering 0.25 1
 check "liang-barsky outcome" "0 accept (0, 3) (10, 5)" \
       "$(echo "$out" | sed -n '/^outcome:$/,/^$/p' | grep -E '^ +[0-9]+ ' | tr -s ' ' | sed 's/^ //')"
 
+# Cohen-Sutherland by hand: (-5,2) is left (0001), (15,12) top and right
+# (1010); clip left at y = 2 + 10 * 5/20 = 4.5, then top at x = 7.
+check "cohen-sutherland" "0 (-5, 2) 0001 (15, 12) 1010 0 clip left
+1 (0, 4.5) 0000 (15, 12) 1010 0 clip top
+2 (0, 4.5) 0000 (7, 8) 0000 0 trivial accept" \
+      "$("$CG" trace cohen-sutherland 0 0 10 8 -5,2 15,12 | sed -n '/^steps:$/,/^$/p' | grep -E '^ +[0-9]+ ' | tr -s ' ' | sed 's/^ //')"
+
 # de Casteljau at t = 1/2 on (0,0) (10,20) (30,20) (40,0): Q = (20, 15).
 check "casteljau point" "3 3 0.5 (20, 15) (20, 15)" \
       "$("$CG" trace casteljau 0.5 0,0 10,20 30,20 40,0 | grep -E '^ +3 ' | head -1 | tr -s ' ' | sed 's/^ //')"
@@ -183,7 +190,7 @@ samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
          "pipeline 1,1,0" "pipeline 1,1,0 3,2,6 0,0,0 45 320x200"
          "light 0,0,0 0,0,1 0,0,5" "light 0,0,0 0,0,1 0,0,5 ambient:0.1,0.1,0.1 directional:0,0,-1:1,1,1"
-         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "backface CUBE" "backface CUBE 0 0" "zbuffer CUBE 80 60" "zbuffer CUBE 0 0 40x30" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "liang-barsky 0 0 10 8 -5,2 15,6"
+         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "backface CUBE" "backface CUBE 0 0" "zbuffer CUBE 80 60" "zbuffer CUBE 0 0 40x30" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "cohen-sutherland 0 0 10 8 -5,2 15,12" "liang-barsky 0 0 10 8 -5,2 15,6"
          "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15"
          "weiler-atherton 0,0|10,0|10,10|5,4|0,10 -2,3|12,3|12,7|-2,7")
 help=$("$CG" help trace)

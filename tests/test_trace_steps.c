@@ -812,6 +812,37 @@ static void liang_barsky_agrees(void)
     CHECK(accepted_count > 500 && rejected_count > 500);
 }
 
+static void cohen_sutherland_agrees(void)
+{
+    check_rng rng = {0xc5};
+    for (int trial = 0; trial < 2000; trial++) {
+        cg_rect w = {check_rng_range(&rng, -10, 0), check_rng_range(&rng, -10, 0),
+                     check_rng_range(&rng, 0, 10), check_rng_range(&rng, 0, 10)};
+        cg_vec2 p0 = {check_rng_range(&rng, -20, 20), check_rng_range(&rng, -20, 20)};
+        cg_vec2 p1 = {check_rng_range(&rng, -20, 20), check_rng_range(&rng, -20, 20)};
+        cg_vec2 c0 = p0, c1 = p1;
+        int accepted;
+        CHECK(cg_clip_line_cohen_sutherland(w, &c0, &c1, &accepted, NULL, NULL) == CG_OK);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_cohen_sutherland_steps(w, p0, p1, cg_step_log_record, log) == CG_OK);
+        const cg_step *last = cg_step_log_get(log, cg_step_log_count(log) - 1);
+        CHECK(strcmp(cg_step_find(last, "outcome")->text, accepted ? "accept" : "reject") == 0);
+        if (accepted) {
+            cg_vec2 from = cg_step_find(last, "from")->point, to = cg_step_find(last, "to")->point;
+            CHECK(from.x == c0.x && from.y == c0.y && to.x == c1.x && to.y == c1.y);
+        }
+        /* every step's codes are the region codes of its endpoints */
+        for (size_t i = 0; i + 1 < cg_step_log_count(log); i++) {
+            const cg_step *s = cg_step_log_get(log, i);
+            unsigned code = cg_clip_rcode(w, cg_step_find(s, "p0")->point);
+            const char *text = cg_step_find(s, "code0")->text;
+            CHECK(((code & CG_RCODE_TOP) != 0) == (text[0] == '1') && ((code & CG_RCODE_LEFT) != 0) == (text[3] == '1'));
+        }
+        cg_step_log_free(log);
+    }
+}
+
 /* The last "output" list of a Sutherland-Hodgman trace (the lists step of
  * the last clip edge). */
 typedef struct last_list { cg_vec2 p[1024]; size_t n; int seen; } last_list;
@@ -1000,6 +1031,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(light_agrees);
     CHECK_GROUP(scanline_agrees);
     CHECK_GROUP(flood_agrees);
+    CHECK_GROUP(cohen_sutherland_agrees);
     CHECK_GROUP(liang_barsky_agrees);
     CHECK_GROUP(sutherland_hodgman_agrees);
     CHECK_GROUP(weiler_atherton_agrees);

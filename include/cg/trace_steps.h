@@ -249,6 +249,14 @@ cg_status cg_boundary_fill_steps(const cg_image *image, int x, int y, cg_rgba8 b
 
 /* ---- chapter 11: clipping (y-up coordinates, as cg/clip.h) -------------- */
 
+/* Cohen-Sutherland as cg_clip_line_cohen_sutherland walks it (its trace
+ * callback): phase "steps", one step per decision with the endpoints p0,
+ * p1, their TBRL region codes code0, code1 ("1001": top and left), their
+ * AND, and the step ("trivial accept", "trivial reject", "clip top", ...);
+ * phase "outcome": accept or reject and the visible part. */
+cg_status cg_cohen_sutherland_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step,
+                                    void *user);
+
 /* Liang-Barsky: one step per boundary in the notes' order (left, right,
  * bottom, top) with p, q, t = q / p, whether the line enters or leaves
  * there (or runs parallel), and t_enter, t_exit so far; a last step gives

@@ -210,3 +210,72 @@ cg_status cg_sutherland_hodgman_steps(const cg_vec2 *subject, size_t n, const cg
     free(lists[1].data);
     return outcome < 0 ? CG_ENOMEM : CG_OK;
 }
+
+/* ---- Cohen-Sutherland ------------------------------------------------------ */
+
+typedef struct cohen_relay {
+    cg_step_fn fn;
+    void *user;
+    int stopped;
+} cohen_relay;
+
+/* The notes' 4-bit TBRL code as text: "1001" is top and left. */
+static void code_text(unsigned code, char out[5])
+{
+    out[0] = code & CG_RCODE_TOP ? '1' : '0';
+    out[1] = code & CG_RCODE_BOTTOM ? '1' : '0';
+    out[2] = code & CG_RCODE_RIGHT ? '1' : '0';
+    out[3] = code & CG_RCODE_LEFT ? '1' : '0';
+    out[4] = 0;
+}
+
+static void relay_cohen(void *user, cg_vec2 p0, unsigned code0, cg_vec2 p1, unsigned code1,
+                        const char *what)
+{
+    cohen_relay *r = user;
+    if (r->stopped)
+        return;
+    char c0[5], c1[5];
+    code_text(code0, c0);
+    code_text(code1, c1);
+    cg_vec2 segment[2] = {p0, p1};
+    core_step s;
+    core_step_begin(&s, "steps");
+    core_step_point(&s, "p0", p0);
+    core_step_text(&s, "code0", c0);
+    core_step_point(&s, "p1", p1);
+    core_step_text(&s, "code1", c1);
+    core_step_text(&s, "and", (code0 & code1) ? "not 0: both outside one boundary" : "0");
+    core_step_text(&s, "step", what);
+    s.step.geometry = segment;
+    s.step.geometry_count = 2;
+    r->stopped = core_step_emit(&s, r->fn, r->user);
+}
+
+cg_status cg_cohen_sutherland_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step,
+                                    void *user)
+{
+    if (!step)
+        return CG_EINVAL;
+    cohen_relay relay = {step, user, 0};
+    int accepted;
+    cg_status status = cg_clip_line_cohen_sutherland(window, &p0, &p1, &accepted, relay_cohen,
+                                                     &relay);
+    if (status != CG_OK || relay.stopped)
+        return status;
+    core_step s;
+    cg_vec2 visible[2] = {p0, p1};
+    core_step_begin(&s, "outcome");
+    core_step_text(&s, "outcome", accepted ? "accept" : "reject");
+    if (accepted) {
+        core_step_point(&s, "from", p0);
+        core_step_point(&s, "to", p1);
+        s.step.kept = visible;
+        s.step.kept_count = 2;
+    } else {
+        core_step_none(&s, "from");
+        core_step_none(&s, "to");
+    }
+    core_step_emit(&s, step, user);
+    return CG_OK;
+}

@@ -78,6 +78,8 @@ const cg_command cg_command_trace = {
     "  boundary IMAGE X Y COLOR [4|8] [TOL]\n"
     "                             the same inside a boundary colour\n\n"
     "Chapter 11 (y-up coordinates; a window is XMIN YMIN XMAX YMAX):\n"
+    "  cohen-sutherland XMIN YMIN XMAX YMAX P0 P1\n"
+    "                             the TBRL region codes and each decision\n"
     "  liang-barsky XMIN YMIN XMAX YMAX P0 P1\n"
     "                             p, q and t for each boundary, entering or leaving\n"
     "  sutherland-hodgman 'WINDOW' 'SUBJECT'\n"

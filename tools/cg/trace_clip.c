@@ -1,5 +1,5 @@
-/* `cg trace` for chapter 11: Liang-Barsky and Sutherland-Hodgman (y-up
- * coordinates, as cg clip). */
+/* `cg trace` for chapter 11: Cohen-Sutherland, Liang-Barsky,
+ * Sutherland-Hodgman and Weiler-Atherton (y-up coordinates, as cg clip). */
 #include "trace_algorithms.h"
 
 #include "cli.h"
@@ -10,6 +10,45 @@
 #include <string.h>
 
 enum { MAX_POLYGON = 256 };
+
+static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
+{
+    double bounds[4];
+    cg_vec2 p0, p1;
+    static const char *const names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
+    if (argc != 7)
+        return cli_usage_error("trace", "cohen-sutherland: expected 'cohen-sutherland XMIN YMIN "
+                                        "XMAX YMAX X0,Y0 X1,Y1'");
+    for (int i = 0; i < 4; i++)
+        if (trace_parse_real(names[i], argv[i + 1], &bounds[i]))
+            return CLI_USAGE;
+    if (trace_parse_point("P0", argv[5], &p0) || trace_parse_point("P1", argv[6], &p1))
+        return CLI_USAGE;
+    if (bounds[0] > bounds[2] || bounds[1] > bounds[3])
+        return cli_usage_error("trace", "cohen-sutherland: the window needs XMIN <= XMAX and "
+                                        "YMIN <= YMAX");
+    cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
+    trace_run *run = trace_run_create("cohen-sutherland", argc - 1, argv + 1,
+                                      "Cohen-Sutherland: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",
+                                      p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax,
+                                      window.ymin, window.ymax);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    run->y_up = 1;
+    cg_vec2 frame[4] = {{window.xmin, window.ymin}, {window.xmax, window.ymin},
+                        {window.xmax, window.ymax}, {window.xmin, window.ymax}};
+    trace_scene_add(run, frame, 4, 1);
+    trace_note(run, "region codes TBRL: T y > ymax, B y < ymin, R x > xmax, L x < xmin (a "
+                    "point on the boundary is inside)");
+    trace_note(run, "both codes 0: trivial accept; their AND not 0: trivial reject (both "
+                    "beyond one boundary)");
+    trace_note(run, "otherwise the outside endpoint (p0 first) moves to the first boundary its "
+                    "code names (top, bottom, right, left), and its code is computed again");
+    cg_status status = cg_cohen_sutherland_steps(window, p0, p1, cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "the window or the points are not valid", out);
+    trace_run_free(run);
+    return code;
+}
 
 static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
 {
@@ -121,6 +160,7 @@ static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
 }
 
 const trace_algorithm trace_clip_algorithms[] = {
+    {"cohen-sutherland", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_cohen_sutherland},
     {"liang-barsky", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_liang_barsky},
     {"sutherland-hodgman", "'WINDOW' 'SUBJECT'", run_sutherland_hodgman},
     {"weiler-atherton", "'WINDOW' 'SUBJECT'", run_weiler_atherton},

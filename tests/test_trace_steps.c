@@ -853,7 +853,8 @@ static int keep_lists(void *user, const cg_step *s)
     const cg_step_field *input = cg_step_find(s, "input"), *output = cg_step_find(s, "output");
     if (input && output) {
         l->n = output->point_count < 1024 ? output->point_count : 1024;
-        memcpy(l->p, output->points, l->n * sizeof l->p[0]);
+        if (l->n)
+            memcpy(l->p, output->points, l->n * sizeof l->p[0]);
         l->seen++;
     }
     return 0;

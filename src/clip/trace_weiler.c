@@ -129,7 +129,8 @@ static int find_crossings(weiler_trace *w)
                 return -1;
         }
     }
-    qsort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
+    if (w->crossings.count > 1)
+        qsort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
     for (size_t k = 0; k < w->crossings.count; k++) {
         const crossing *x = &w->crossings.data[k];
         core_step s;

@@ -563,6 +563,42 @@ static void light_agrees(void)
                          stop_after_three, NULL) == CG_EINVAL);
 }
 
+static void vanishing_agrees(void)
+{
+    check_rng rng = {0x7a};
+    int found = 0;
+    for (int trial = 0; trial < 1000; trial++) {
+        cg_vec3 eye = {check_rng_range(&rng, -5, 5), check_rng_range(&rng, -5, 5), check_rng_range(&rng, 3, 8)};
+        cg_vec3 d = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1)};
+        cg_mat4 view, projection;
+        if (cg_view_look_at(eye, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view) != CG_OK
+            || !(cg_vec3_length(d) > 0.1))
+            continue;
+        cg_proj_perspective(1, 4.0 / 3, 0.1, 100, &projection);
+        cg_step_log *log;
+        cg_step_log_create(&log);
+        CHECK(cg_vanishing_point_steps(view, projection, 640, 480, d, cg_step_log_record, log) == CG_OK);
+        const cg_step *last = last_step_of(log, "point");
+        if (strcmp(cg_step_find(last, "space")->text, "window") == 0) {
+            /* the images of points far along any line of direction d approach it */
+            cg_vec3 base = {check_rng_range(&rng, -2, 2), check_rng_range(&rng, -2, 2), check_rng_range(&rng, -2, 2)};
+            int visible;
+            cg_mat4 whole = cg_mat4_mul(cg_viewport(640, 480), cg_mat4_mul(projection, view));
+            cg_vec3 far = cg_project_point(whole, cg_vec3_add(base, cg_vec3_scale(d, 1e7)), &visible);
+            const double *vp = cg_step_find(last, "coordinates")->reals;
+            CHECK(visible);
+            CHECK_NEAR(far.x, vp[0], 1e-2 * (1 + fabs(vp[0])));
+            CHECK_NEAR(far.y, vp[1], 1e-2 * (1 + fabs(vp[1])));
+            found++;
+        } else { /* no vanishing point: the direction does not go away from the eye */
+            cg_vec4 e = cg_mat4_mul_vec4(view, cg_vec4_make(d.x, d.y, d.z, 0));
+            CHECK(!(e.z < 0));
+        }
+        cg_step_log_free(log);
+    }
+    CHECK(found > 200);
+}
+
 static int count_culled(void *user, const cg_step *s)
 {
     *(size_t *)user += strcmp(cg_step_find(s, "decision")->text, "back: culled") == 0;
@@ -1026,6 +1062,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
     CHECK_GROUP(pipeline_agrees);
+    CHECK_GROUP(vanishing_agrees);
     CHECK_GROUP(backface_agrees);
     CHECK_GROUP(zbuffer_agrees);
     CHECK_GROUP(color_agrees);

@@ -168,6 +168,15 @@ cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tole
 cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int width,
                             int height, cg_vec3 point, cg_step_fn step, void *user);
 
+/* The vanishing point of the lines of direction d under view and a
+ * perspective projection: phase "point", the point at infinity (d, 0) in
+ * direction, eye and clip coordinates, after the divide, and in window
+ * pixels (the step sets that pixel when it lies in the frame); w <= 0 ends
+ * the trace with the reason (parallel to the image plane, or receding
+ * behind the camera).  CG_EINVAL for a zero or non-finite direction. */
+cg_status cg_vanishing_point_steps(cg_mat4 view, cg_mat4 projection, int width, int height,
+                                   cg_vec3 direction, cg_step_fn step, void *user);
+
 /* Back-face culling (chapter 5) of a mesh placed by model and seen by
  * camera: phase "triangles", one step per triangle of the fan
  * triangulation (triangle, face, the world normal N = (v1 - v0) x (v2 - v0),

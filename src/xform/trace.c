@@ -101,3 +101,53 @@ cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int
     core_step_emit(&s, step, user);
     return CG_OK;
 }
+
+cg_status cg_vanishing_point_steps(cg_mat4 view, cg_mat4 projection, int width, int height,
+                                   cg_vec3 direction, cg_step_fn step, void *user)
+{
+    if (!step || width <= 0 || height <= 0 || !isfinite(direction.x) || !isfinite(direction.y)
+        || !isfinite(direction.z) || !(cg_vec3_length(direction) > 0))
+        return CG_EINVAL;
+    cg_mat4 viewport = cg_viewport(width, height);
+    cg_vec4 at_infinity = cg_vec4_make(direction.x, direction.y, direction.z, 0);
+    cg_vec4 eye = cg_mat4_mul_vec4(view, at_infinity);
+    cg_vec4 clip = cg_mat4_mul_vec4(projection, eye);
+    if (emit_point("direction", "the point at infinity (dx, dy, dz, 0) all lines of this "
+                                "direction meet",
+                   at_infinity, step, user)
+        || emit_point("eye", "V times it (w stays 0: a translation cannot move it)", eye, step,
+                      user)
+        || emit_point("clip", "P times eye: w = -z_eye, the depth of the direction", clip, step,
+                      user))
+        return CG_OK;
+    if (!(clip.w > 0)) {
+        core_step s;
+        core_step_begin(&s, "point");
+        core_step_text(&s, "space", "ndc");
+        core_step_text(&s, "how", clip.w == 0 ? "w = 0: the lines are parallel to the image "
+                                                "plane and stay parallel (no vanishing point)"
+                                              : "w < 0: the lines recede behind the camera (no "
+                                                "vanishing point in front)");
+        core_step_none(&s, "coordinates");
+        core_step_emit(&s, step, user);
+        return CG_OK;
+    }
+    cg_vec4 ndc = cg_vec4_make(clip.x / clip.w, clip.y / clip.w, clip.z / clip.w, 1);
+    cg_vec4 window = cg_mat4_mul_vec4(viewport, ndc);
+    if (emit_point("ndc", "clip / w (z > 1: beyond the far plane, as a point at infinity is)", ndc, step, user))
+        return CG_OK;
+    core_step s;
+    double reals[4] = {window.x, window.y, window.z, window.w};
+    core_step_begin(&s, "point");
+    core_step_text(&s, "space", "window");
+    core_step_text(&s, "how", "W times ndc: the vanishing point in pixels");
+    core_step_reals(&s, "coordinates", reals, 4);
+    int xy[2] = {(int)floor(window.x), (int)floor(window.y)};
+    if (fabs(window.x) < 1e9 && fabs(window.y) < 1e9 && window.x >= 0 && window.y >= 0
+        && window.x < width && window.y < height) {
+        s.step.pixels = xy;
+        s.step.pixel_count = 1;
+    }
+    core_step_emit(&s, step, user);
+    return CG_OK;
+}

@@ -54,6 +54,46 @@ static int run_pipeline(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+static int run_vanishing(int argc, char **argv, const trace_outputs *out)
+{
+    cg_vec3 direction, eye = {0, 0, 5}, target = {0, 0, 0};
+    double fovy = 60;
+    int width = 640, height = 480;
+    if (argc < 2 || argc > 6)
+        return cli_usage_error("trace", "vanishing: expected 'vanishing DX,DY,DZ [EYE [TARGET "
+                                        "[FOVY [WxH]]]]'");
+    if (cli_parse_vec3("trace", "direction", argv[1], &direction)
+        || (argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &eye))
+        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &target))
+        || (argc > 4 && trace_parse_real("FOVY", argv[4], &fovy))
+        || (argc > 5 && cli_parse_size("trace", "WxH", argv[5], &width, &height)))
+        return CLI_USAGE;
+    cg_mat4 view, projection;
+    if (!(fovy > 0 && fovy < 180) || !(cg_vec3_length(direction) > 0))
+        return cli_usage_error("trace", "vanishing: FOVY is in (0, 180) degrees and the "
+                                        "direction not zero");
+    if (cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
+        && cg_view_look_at(eye, target, cg_vec3_make(0, 0, -1), &view) != CG_OK)
+        return cli_usage_error("trace", "vanishing: EYE and TARGET must differ");
+    if (cg_proj_perspective(fovy * M_PI / 180, (double)width / height, 0.1, 100, &projection)
+        != CG_OK)
+        return cli_usage_error("trace", "vanishing: the projection cannot be made");
+    trace_run *run = trace_run_create("vanishing", argc - 1, argv + 1,
+                                      "The vanishing point of direction (%g, %g, %g), camera at "
+                                      "(%g, %g, %g) looking at (%g, %g, %g)", direction.x,
+                                      direction.y, direction.z, eye.x, eye.y, eye.z, target.x,
+                                      target.y, target.z);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "parallel lines of direction d meet at the point at infinity (d, 0); its "
+                    "image is where their images converge");
+    cg_status status = cg_vanishing_point_steps(view, projection, width, height, direction,
+                                                cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "the direction must not be zero", out);
+    trace_run_free(run);
+    return code;
+}
+
 static int run_color(int lightness, int argc, char **argv, const trace_outputs *out)
 {
     double rgb[3];
@@ -283,6 +323,7 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
 
 const trace_algorithm trace_view_algorithms[] = {
     {"pipeline", "X,Y,Z [EYE [TARGET [FOVY [WxH]]]]", run_pipeline},
+    {"vanishing", "DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]", run_vanishing},
     {"backface", "MESH [ABOUT_Y [ABOUT_X]]", run_backface},
     {"zbuffer", "MESH X Y [WxH]", run_zbuffer},
     {"light", "POINT NORMAL EYE [LIGHT ...]", run_light},

@@ -1013,6 +1013,46 @@ static void weiler_atherton_agrees(void)
     CHECK(cg_weiler_atherton_steps(two, 2, two, 2, stop_after_three, NULL) == CG_EINVAL);
 }
 
+static int keep_last_output3(void *user, const cg_step *s)
+{
+    const cg_step_field *input = cg_step_find(s, "input"), *output = cg_step_find(s, "output");
+    double *last = user;
+    if (input && output) {
+        last[0] = (double)output->real_count;
+        if (output->real_count)
+            memcpy(last + 1, output->reals, output->real_count * sizeof *last);
+    }
+    return 0;
+}
+
+static void frustum_agrees(void)
+{
+    check_rng rng = {0xf7};
+    static double last[1 + 3 * 64];
+    for (int trial = 0; trial < 1000; trial++) {
+        cg_mat4 view, projection;
+        cg_view_look_at(cg_vec3_make(check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), 6),
+                        cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view);
+        cg_proj_perspective(1, 4.0 / 3, 1, 20, &projection);
+        cg_plane planes[6];
+        cg_frustum_planes(cg_mat4_mul(projection, view), planes);
+        int n = (int)check_rng_int(&rng, 3, 8);
+        cg_vec3 polygon[8];
+        for (int i = 0; i < n; i++)
+            polygon[i] = cg_vec3_make(check_rng_range(&rng, -8, 8), check_rng_range(&rng, -8, 8),
+                                      check_rng_range(&rng, -30, 8));
+        cg_vec3 *result = NULL;
+        size_t count = 0;
+        CHECK(cg_clip_polygon_planes(polygon, (size_t)n, planes, 6, &result, &count) == CG_OK);
+        last[0] = -1;
+        CHECK(cg_clip_planes_steps(polygon, (size_t)n, planes, 6, NULL, keep_last_output3, last) == CG_OK);
+        CHECK_EQ_INT(last[0], 3 * (double)count);
+        for (size_t i = 0; i < count && last[0] == 3 * (double)count; i++)
+            CHECK(last[1 + 3 * i] == result[i].x && last[2 + 3 * i] == result[i].y && last[3 + 3 * i] == result[i].z);
+        free(result);
+    }
+}
+
 /* ---- the log and bad input ------------------------------------------------------ */
 
 static int stop_after_three(void *user, const cg_step *s)
@@ -1073,6 +1113,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(liang_barsky_agrees);
     CHECK_GROUP(sutherland_hodgman_agrees);
     CHECK_GROUP(weiler_atherton_agrees);
+    CHECK_GROUP(frustum_agrees);
     CHECK_GROUP(log_and_bad_input);
     return check_finish();
 }

@@ -296,6 +296,17 @@ cg_status cg_sutherland_hodgman_steps(const cg_vec2 *subject, size_t n, const cg
 cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
                                    size_t m, cg_step_fn step, void *user);
 
+/* Sutherland-Hodgman of a 3D polygon against planes, as
+ * cg_clip_polygon_planes (11.3): for each plane k, phase "plane k" (with
+ * plane_names[k] when given, as "near"), one step per polygon edge s -> e
+ * with the signed distances d_s, d_e (N.p + offset; >= 0 is kept), the case
+ * and the points it outputs (3 reals each), then a step with the plane's
+ * input and output lists.  The last output list is the library's result,
+ * bit for bit.  Errors as cg_clip_polygon_planes. */
+cg_status cg_clip_planes_steps(const cg_vec3 *polygon, size_t n, const cg_plane *planes,
+                               size_t plane_count, const char *const *plane_names,
+                               cg_step_fn step, void *user);
+
 #ifdef __cplusplus
 }
 #endif

@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "cg/clip.h"
+#include "cg/xform.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,10 +160,81 @@ static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* "X,Y,Z X,Y,Z ..." into at most capacity points: the count, or -1. */
+static int parse_polygon3(const char *text, cg_vec3 *points, int capacity)
+{
+    int count = 0;
+    char word[192];
+    for (const char *at = text; *at;) {
+        while (*at == ' ' || *at == '\t')
+            at++;
+        if (!*at)
+            break;
+        size_t n = strcspn(at, " \t");
+        if (n >= sizeof word || count >= capacity) {
+            cli_usage_error("trace", "frustum: at most %d points X,Y,Z", capacity);
+            return -1;
+        }
+        memcpy(word, at, n);
+        word[n] = 0;
+        if (cli_parse_vec3("trace", "POLYGON", word, &points[count]))
+            return -1;
+        count++;
+        at += n;
+    }
+    return count;
+}
+
+/* frustum 'X,Y,Z ...' [EYE [TARGET [FOVY]]]: the polygon clipped against the
+ * six planes of the camera's view volume (4:3, near 1, far 20). */
+static int run_frustum(int argc, char **argv, const trace_outputs *out)
+{
+    static cg_vec3 polygon[MAX_POLYGON];
+    cg_vec3 eye = {0, 0, 5}, target = {0, 0, 0};
+    double fovy = 60;
+    if (argc < 2 || argc > 5)
+        return cli_usage_error("trace", "frustum: expected 'frustum \"X,Y,Z X,Y,Z ...\" [EYE "
+                                        "[TARGET [FOVY]]]'");
+    int n = parse_polygon3(argv[1], polygon, MAX_POLYGON);
+    if (n < 0 || (argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &eye))
+        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &target))
+        || (argc > 4 && trace_parse_real("FOVY", argv[4], &fovy)))
+        return CLI_USAGE;
+    if (n < 3)
+        return cli_usage_error("trace", "frustum: the polygon needs at least 3 points");
+    cg_mat4 view, projection;
+    if (!(fovy > 0 && fovy < 180) || cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
+        || cg_proj_perspective(fovy * 3.14159265358979323846 / 180, 4.0 / 3.0, 1, 20, &projection) != CG_OK)
+        return cli_usage_error("trace", "frustum: EYE and TARGET must differ (not along +y) and "
+                                        "FOVY lie in (0, 180)");
+    cg_plane planes[6];
+    cg_frustum_planes(cg_mat4_mul(projection, view), planes);
+    static const char *const names[6] = {"left", "right", "bottom", "top", "near", "far"};
+    trace_run *run = trace_run_create("frustum", argc - 1, argv + 1,
+                                      "A %d-gon clipped against the view volume of a camera at "
+                                      "(%g, %g, %g) looking at (%g, %g, %g)", n, eye.x, eye.y,
+                                      eye.z, target.x, target.y, target.z);
+    if (!run)
+        return cli_fail("trace: out of memory");
+    trace_note(run, "%g degrees, aspect 4:3, near 1, far 20; the six planes in world space, "
+                    "normals inward: d(p) = N.p + offset >= 0 inside", fovy);
+    for (int k = 0; k < 6; k++)
+        trace_note(run, "  %-6s N = (%.6g, %.6g, %.6g), offset %.6g", names[k], planes[k].normal.x,
+                   planes[k].normal.y, planes[k].normal.z, planes[k].offset);
+    trace_note(run, "for each plane, every edge s -> e: in -> in: e; in -> out: the crossing; "
+                    "out -> in: the crossing, then e; out -> out: nothing");
+    cg_status status = cg_clip_planes_steps(polygon, (size_t)n, planes, 6, names,
+                                            cg_step_log_record, run->log);
+    int code = trace_finish(run, status, "every point must be finite", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_clip_algorithms[] = {
     {"cohen-sutherland", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_cohen_sutherland},
     {"liang-barsky", "XMIN YMIN XMAX YMAX X0,Y0 X1,Y1", run_liang_barsky},
     {"sutherland-hodgman", "'WINDOW' 'SUBJECT'", run_sutherland_hodgman},
     {"weiler-atherton", "'WINDOW' 'SUBJECT'", run_weiler_atherton},
+    {"frustum", "'X,Y,Z X,Y,Z ...' [EYE [TARGET [FOVY]]]", run_frustum},
     {NULL, NULL, NULL},
 };

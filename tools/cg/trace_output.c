@@ -115,8 +115,8 @@ static const cli_option output_options[] = {
      .flag_value = 1, .help = "one JSON object instead of the table (docs/teaching.md)"},
     {.name = "--frames", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, frames_dir),
      .value_name = "DIR", .parse = parse_path,
-     .help = "a PNG per step, DIR/step_0000.png ...: the picture so far,\n"
-             "the step's pixels in orange and its geometry in red"},
+     .help = "a PNG per step (DIR/step_0000.png ...): the picture so\n"
+             "far, the step's pixels orange, its geometry red"},
     {.name = "--html", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, html),
      .value_name = "OUT.html", .parse = parse_path,
      .help = "one self-contained page stepping through those pictures\n"

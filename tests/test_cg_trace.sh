@@ -298,7 +298,7 @@ for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
             "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "pipeline 1,1" "pipeline 0,0,0 0,0,0" \
             "pipeline 0,0,0 0,0,5 0,0,0 200" "light 0,0,0 0,0,0 0,0,5" "light 0,0,0 0,0,1 0,0,5 spot:1,1,1" \
-            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "backface /nonexistent.obj" "vanishing 0,0,0" "frustum 0,0,0|1,0,0" "frustum 0,0,0|1,0,0|0,1 " "frustum 0,0,0|1,0,0|0,1,0 0,0,0 0,0,0" "vanishing 1,0" "zbuffer $cube 160 0" "zbuffer $cube 0 -1" "zbuffer $cube 1" "backface $dir/room.txt" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
+            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "backface /nonexistent.obj" "vanishing 0,0,0" "liang-barsky 0 0 10 10 -1e308,0 1e308,5 --frames $dir/huge" "frustum 0,0,0|1,0,0" "frustum 0,0,0|1,0,0|0,1 " "frustum 0,0,0|1,0,0|0,1,0 0,0,0 0,0,0" "vanishing 1,0" "zbuffer $cube 160 0" "zbuffer $cube 0 -1" "zbuffer $cube 1" "backface $dir/room.txt" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
             "scanline 0,0|5,0|0,5 odd" "scanline 0,0|9000,0|0,5" \
             "line 0 0 5 5 --bogus" "line 0 0 5 5 --frames" "circle 3 --html="; do
     # words split at blanks; '|' inside a word stands for a blank

@@ -94,8 +94,9 @@ static frame_view make_view(const trace_run *run)
         v.scale = MAX_CELL;
     if (v.scale >= 2)
         v.scale = floor(v.scale);
-    v.width = (int)ceil(w * v.scale);
-    v.height = (int)ceil(h * v.scale);
+    double width = ceil(w * v.scale), height = ceil(h * v.scale);
+    v.width = width >= 1 && width <= 4 * FRAME_SIDE ? (int)width : 0;
+    v.height = height >= 1 && height <= 4 * FRAME_SIDE ? (int)height : 0;
     return v;
 }
 
@@ -233,6 +234,9 @@ int trace_write_frames(const trace_run *run, const char *dir, int *frame_count)
     if (make_directory(dir) != CLI_OK)
         return CLI_FAILED;
     frame_view v = make_view(run);
+    if (!(v.scale > 0) || !isfinite(v.scale) || v.width < 1 || v.height < 1
+        || v.width > 4 * FRAME_SIDE || v.height > 4 * FRAME_SIDE)
+        return cli_fail("trace: the trace's coordinates span too much to be drawn");
     cg_image *image;
     if (cg_image_create(&image, v.width, v.height, CG_PIXEL_RGBA8) != CG_OK)
         return cli_fail("trace: out of memory");

@@ -7,6 +7,7 @@
 #include "cg/curve.h"
 #include "cg/color.h"
 #include "cg/draw.h"
+#include "cg/hemesh.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/render.h"
@@ -701,6 +702,45 @@ static void zbuffer_agrees(void)
     cg_mesh_free(meshes[1]);
 }
 
+typedef struct halfedge_list { uint32_t h[256]; size_t n; } halfedge_list;
+
+static int collect_halfedge(void *user, const cg_step *s)
+{
+    halfedge_list *l = user;
+    if (l->n < 256)
+        l->h[l->n] = (uint32_t)cg_step_find(s, "h")->integer;
+    l->n++;
+    return 0;
+}
+
+static void hemesh_agrees(void)
+{
+    cg_mesh *shapes[2];
+    CHECK(cg_mesh_torus(10, 6, 1, 0.3, &shapes[0]) == CG_OK);
+    CHECK(cg_mesh_box(cg_vec3_make(0, 0, 0), cg_vec3_make(1, 2, 3), &shapes[1]) == CG_OK);
+    for (int i = 0; i < 2; i++) {
+        cg_hemesh *m;
+        CHECK(cg_hemesh_build(shapes[i], 0, &m, NULL, NULL) == CG_OK);
+        uint32_t expected[256];
+        for (uint32_t f = 0; f < m->face_count; f++) {
+            halfedge_list l = {{0}, 0};
+            CHECK(cg_hemesh_face_loop_steps(m, f, collect_halfedge, &l) == CG_OK);
+            size_t n = cg_hemesh_face_halfedges(m, f, expected, 256);
+            CHECK(l.n == n && memcmp(l.h, expected, n * sizeof *expected) == 0);
+        }
+        for (uint32_t v = 0; v < m->vertex_count; v++) {
+            halfedge_list l = {{0}, 0};
+            CHECK(cg_hemesh_one_ring_steps(m, v, collect_halfedge, &l) == CG_OK);
+            size_t n = cg_hemesh_vertex_outgoing(m, v, 1, expected, 256);
+            CHECK(l.n == n && memcmp(l.h, expected, n * sizeof *expected) == 0);
+        }
+        CHECK(cg_hemesh_face_loop_steps(m, (uint32_t)m->face_count, collect_halfedge, NULL) == CG_EINVAL);
+        CHECK(cg_hemesh_one_ring_steps(m, (uint32_t)m->vertex_count, collect_halfedge, NULL) == CG_EINVAL);
+        cg_hemesh_free(m);
+        cg_mesh_free(shapes[i]);
+    }
+}
+
 /* ---- filling ------------------------------------------------------------------ */
 
 static void scanline_agrees(void)
@@ -1101,6 +1141,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(casteljau_agrees);
     CHECK_GROUP(cubic_agrees);
     CHECK_GROUP(flatten_agrees);
+    CHECK_GROUP(hemesh_agrees);
     CHECK_GROUP(pipeline_agrees);
     CHECK_GROUP(vanishing_agrees);
     CHECK_GROUP(backface_agrees);

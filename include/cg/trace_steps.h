@@ -21,6 +21,7 @@
 #include "cg/curve.h"
 #include "cg/fill.h"
 #include "cg/image.h"
+#include "cg/hemesh.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
@@ -226,6 +227,18 @@ cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
  * "result": (H, S, V) or (H, S, L), exactly cg_rgb_to_hsv's or
  * cg_rgb_to_hsl's. */
 cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void *user);
+
+/* ---- chapter 9: half-edge meshes ------------------------------------------ */
+
+/* The loop of face f by next (phase "face loop": k, h, origin, next, twin,
+ * the face across, a note where the loop closes), in the order of
+ * cg_hemesh_face_halfedges; and the one-ring of vertex v counter-clockwise
+ * (phase "one-ring": k, the outgoing half-edge h, the neighbour at its end,
+ * its face, prev(h) and twin(prev(h)), the next outgoing one), in the order
+ * of cg_hemesh_vertex_outgoing(v, 1).  Geometry: x, y of the positions.
+ * CG_EINVAL for a deleted or missing face or vertex. */
+cg_status cg_hemesh_face_loop_steps(const cg_hemesh *m, uint32_t f, cg_step_fn step, void *user);
+cg_status cg_hemesh_one_ring_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step, void *user);
 
 /* ---- chapter 10: filling -------------------------------------------------- */
 

@@ -1,9 +1,11 @@
-/* `cg trace` for chapters 3-7: the viewing pipeline of one point, the
- * illumination at a point light by light, RGB to HSV and HSL. */
+/* `cg trace` for chapters 3-9: the viewing pipeline of one point, vanishing
+ * points, back-face culling, the z-buffer at a pixel, the illumination at a
+ * point light by light, RGB to HSV and HSL, half-edge traversals. */
 #include "trace_algorithms.h"
 
 #include "cli.h"
 #include "cg/color.h"
+#include "cg/hemesh.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
@@ -321,6 +323,60 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* face-loop MESH F and one-ring MESH V on the half-edge structure built
+ * from the file (strict: a defect is an error, named). */
+static int run_hemesh(int ring, int argc, char **argv, const trace_outputs *out)
+{
+    long index;
+    if (argc != 3)
+        return cli_usage_error("trace", "%s: expected '%s MESH %s'", argv[0], argv[0],
+                               ring ? "V" : "F");
+    if (trace_parse_int(ring ? "V" : "F", argv[2], 0, 4294967293L, &index))
+        return CLI_USAGE;
+    cg_mesh *mesh;
+    cg_hemesh *hemesh;
+    cg_error err;
+    if (cg_mesh_load(argv[1], &mesh, &err) != CG_OK)
+        return cli_fail("trace: %s", err.message);
+    cg_status status = cg_hemesh_build(mesh, 0, &hemesh, NULL, &err);
+    cg_mesh_free(mesh);
+    if (status != CG_OK)
+        return cli_fail("trace: %s: %s", argv[1], err.message);
+    trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1, "The %s of %s %ld in %s",
+                                      ring ? "one-ring" : "loop", ring ? "vertex" : "face", index,
+                                      argv[1]);
+    if (!run) {
+        cg_hemesh_free(hemesh);
+        return cli_fail("trace: out of memory");
+    }
+    run->y_up = 1;
+    trace_note(run, "half-edges come in twins: twin(h) = h xor 1; each knows its origin, next, "
+                    "prev and face");
+    if (ring)
+        trace_note(run, "around vertex %ld counter-clockwise: from an outgoing h, the next one "
+                        "is twin(prev(h))", index);
+    else
+        trace_note(run, "around face %ld: from its half-edge, follow next until it comes back",
+                   index);
+    trace_note(run, "the frames show x and y of the positions");
+    status = ring ? cg_hemesh_one_ring_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log)
+                  : cg_hemesh_face_loop_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log);
+    cg_hemesh_free(hemesh);
+    int code = trace_finish(run, status, ring ? "no such vertex" : "no such face", out);
+    trace_run_free(run);
+    return code;
+}
+
+static int run_face_loop(int argc, char **argv, const trace_outputs *out)
+{
+    return run_hemesh(0, argc, argv, out);
+}
+
+static int run_one_ring(int argc, char **argv, const trace_outputs *out)
+{
+    return run_hemesh(1, argc, argv, out);
+}
+
 const trace_algorithm trace_view_algorithms[] = {
     {"pipeline", "X,Y,Z [EYE [TARGET [FOVY [WxH]]]]", run_pipeline},
     {"vanishing", "DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]", run_vanishing},
@@ -329,5 +385,7 @@ const trace_algorithm trace_view_algorithms[] = {
     {"light", "POINT NORMAL EYE [LIGHT ...]", run_light},
     {"hsv", "R G B", run_hsv},
     {"hsl", "R G B", run_hsl},
+    {"face-loop", "MESH F", run_face_loop},
+    {"one-ring", "MESH V", run_one_ring},
     {NULL, NULL, NULL},
 };

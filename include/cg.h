@@ -19,5 +19,6 @@
 #include "cg/render.h"
 #include "cg/scene.h"
 #include "cg/trace.h"
+#include "cg/trace_steps.h"
 
 #endif

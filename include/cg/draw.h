@@ -48,6 +48,13 @@ cg_status cg_draw_line(cg_image *image, int x0, int y0, int x1, int y1, cg_rgba8
 cg_status cg_draw_line_aa(cg_image *image, double x0, double y0, double x1, double y1,
                           cg_rgba8 color);
 
+/* Wu's anti-aliased line between the centres of pixels (x0, y0) and
+ * (x1, y1): in each column along the major axis (row, for steep lines) the
+ * two pixels around the real line, with intensities 1 - f and f, f the
+ * fractional part of the line's minor coordinate there.  Blended in linear
+ * light; the trace is cg_line_wu_steps (cg/trace_steps.h). */
+cg_status cg_draw_line_wu(cg_image *image, int x0, int y0, int x1, int y1, cg_rgba8 color);
+
 /* Connected Bresenham lines through count points (pixel indices); each
  * joint pixel is drawn once.  count >= 1. */
 cg_status cg_draw_polyline(cg_image *image, const int *xy, int count, cg_rgba8 color);

@@ -30,7 +30,7 @@ typedef struct flattener {
     void *user;
 } flattener;
 
-static double distance2_to_segment(cg_vec2 p, cg_vec2 a, cg_vec2 b)
+double curve_distance2_to_segment(cg_vec2 p, cg_vec2 a, cg_vec2 b)
 {
     cg_vec2 d = cg_vec2_sub(b, a), ap = cg_vec2_sub(p, a);
     double l2 = cg_vec2_dot(d, d);
@@ -45,7 +45,7 @@ static double distance2_to_segment(cg_vec2 p, cg_vec2 a, cg_vec2 b)
 static int flat(const flattener *f, const cg_vec2 *c)
 {
     for (int i = 1; i < f->count - 1; i++)
-        if (!(distance2_to_segment(c[i], c[0], c[f->count - 1]) <= f->tolerance2))
+        if (!(curve_distance2_to_segment(c[i], c[0], c[f->count - 1]) <= f->tolerance2))
             return 0;
     return 1;
 }
@@ -61,12 +61,9 @@ static cg_status flatten(flattener *f, const cg_vec2 *c, int depth)
     return status != CG_OK ? status : flatten(f, right, depth + 1);
 }
 
-cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
-                            cg_point_sink sink, void *user)
+/* The deepest level of halving the curve may need (see the top). */
+cg_status curve_flatten_depth(const cg_vec2 *control, int count, double tolerance, int *out)
 {
-    if (!control || !sink || count < 2 || count > CG_BEZIER_MAX_POINTS || !(tolerance > 0)
-        || !isfinite(tolerance) || !curve_points_finite(control, count))
-        return CG_EINVAL;
     double second = 0, scale = 0;
     for (int i = 0; i < count; i++) {
         scale = fmax(scale, fmax(fabs(control[i].x), fabs(control[i].y)));
@@ -87,6 +84,20 @@ cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
     }
     if (depth > MAX_SEGMENTS_LOG2)
         return CG_ERANGE;
+    *out = depth;
+    return CG_OK;
+}
+
+cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
+                            cg_point_sink sink, void *user)
+{
+    if (!control || !sink || count < 2 || count > CG_BEZIER_MAX_POINTS || !(tolerance > 0)
+        || !isfinite(tolerance) || !curve_points_finite(control, count))
+        return CG_EINVAL;
+    int depth;
+    cg_status depth_status = curve_flatten_depth(control, count, tolerance, &depth);
+    if (depth_status != CG_OK)
+        return depth_status;
     flattener f = {count, tolerance * tolerance, depth, NULL, NULL, sink, user};
     size_t points = ((size_t)depth * 2 + 1) * (size_t)count;
     cg_vec2 small[256], *buffer = points <= 256 ? small : malloc(points * sizeof *buffer);

@@ -1,141 +1,77 @@
-/* cg trace line X1 Y1 X2 Y2 | circle R: Algorithms 1 and 2 step by step
- * (a trace of the algorithm, not the ray tracer: that is cg trace-render,
- * cmd_trace_render.c and raytrace_run.c). */
+/* cg trace ALGORITHM ARGS [--json] [--frames DIR] [--html OUT.html]: the
+ * course's algorithms step by step.  The algorithms live in trace_*.c (one
+ * table per chapter group, trace_algorithms.h); the outputs in
+ * trace_output.c, trace_frames.c and trace_page.c. */
 #include "cli.h"
 #include "command.h"
-#include "cg/draw.h"
+#include "trace_algorithms.h"
 
-#include <limits.h>
-#include <stdio.h>
 #include <string.h>
 
-enum { MAX_STEPS = 100000 };
+static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms, trace_fill_algorithms,
+                                                trace_clip_algorithms};
 
-static int line_step(void *user, const cg_line_step *s)
-{
-    long *step = user;
-    if (strcmp(s->move, "start") == 0)
-        printf("%5ld  %6s  %-5s  %7lld  (%d, %d)\n", *step, "-", s->move, s->f_next, s->x, s->y);
-    else
-        printf("%5ld  %6lld  %-5s  %7lld  (%d, %d)\n", *step, s->f, s->move, s->f_next, s->x, s->y);
-    ++*step;
-    return 0;
-}
-
-static const cli_syntax line_syntax = {
-    .command = "trace", .max_positionals = 4, .too_many = "expected 'line X1 Y1 X2 Y2'",
-    .min_positionals = 4, .too_few = "expected 'line X1 Y1 X2 Y2'",
-};
-
-static int trace_line(int argc, char **argv)
-{
-    const char *texts[4];
-    if (cli_parse(&line_syntax, argc, argv, NULL, texts, NULL) != CLI_OK)
-        return CLI_USAGE;
-    long v[4];
-    const char *names[4] = {"X1", "Y1", "X2", "Y2"};
-    for (int i = 0; i < 4; i++)
-        if (cli_parse_long("trace", names[i], texts[i], INT_MIN, INT_MAX, &v[i]))
-            return CLI_USAGE;
-    long long dx = (long long)v[2] - v[0], dy = (long long)v[3] - v[1];
-    long long adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
-    if ((adx > ady ? adx : ady) > MAX_STEPS)
-        return cli_fail("trace: the line has more than %d steps; trace a shorter one", MAX_STEPS);
-    int x_major = adx >= ady, swapped = x_major ? dx < 0 : dy < 0;
-    long long minor = x_major ? (swapped ? -dy : dy) : (swapped ? -dx : dx);
-    printf("Bresenham's line (Algorithm 1) from (%ld, %ld) to (%ld, %ld)\n", v[0], v[1], v[2], v[3]);
-    if (swapped)
-        printf("walked from (%ld, %ld), the end with the smaller %s\n", v[2], v[3],
-               x_major ? "x" : "y");
-    if (!x_major)
-        printf("steep line: x and y exchanged, so E steps y and NE steps both\n");
-    if (minor < 0)
-        printf("the minor coordinate decreases: NE steps it by -1\n");
-    long long fdx, fdy, de, dne;
-    long step = 0;
-    printf("first octant: dx = %lld, dy = %lld\n", adx > ady ? adx : ady, adx > ady ? ady : adx);
-    /* the header values come from the trace itself */
-    cg_line_trace((int)v[0], (int)v[1], (int)v[2], (int)v[3], NULL, NULL, &fdx, &fdy, &de, &dne);
-    printf("f = 2dy - dx = %lld, dE = 2dy = %lld, dNE = 2(dy - dx) = %lld\n", 2 * fdy - fdx, de,
-           dne);
-    printf("f <= 0 selects E (f += dE), else NE (f += dNE); f' is f after the update\n\n");
-    printf(" step       f  move        f'  pixel\n");
-    cg_line_trace((int)v[0], (int)v[1], (int)v[2], (int)v[3], line_step, &step, NULL, NULL, NULL,
-                  NULL);
-    printf("%ld pixel%s\n", step, step == 1 ? "" : "s");
-    return CLI_OK;
-}
-
-typedef struct circle_count { long step, pixels; } circle_count;
-
-static int circle_step(void *user, const cg_circle_step *s)
-{
-    circle_count *c = user;
-    const char *note = "";
-    if (s->x > s->y)
-        note = "  (x > y: mirrors an earlier pixel, not drawn)";
-    else if (s->x == 0 && s->y == 0)
-        c->pixels += 1;
-    else if (s->x == 0 || s->x == s->y)
-        c->pixels += 4;
-    else
-        c->pixels += 8;
-    if (strcmp(s->move, "start") == 0)
-        printf("%5ld  %6s  %6s  %6s  %-5s  %6lld  %6lld  %6lld  (%d, %d)%s\n", c->step, "-", "-",
-               "-", s->move, s->f_next, s->de_next, s->dse_next, s->x, s->y, note);
-    else
-        printf("%5ld  %6lld  %6lld  %6lld  %-5s  %6lld  %6lld  %6lld  (%d, %d)%s\n", c->step, s->f,
-               s->de, s->dse, s->move, s->f_next, s->de_next, s->dse_next, s->x, s->y, note);
-    c->step++;
-    return 0;
-}
-
-static const cli_syntax circle_syntax = {
-    .command = "trace", .max_positionals = 1, .too_many = "expected 'circle R'",
-    .min_positionals = 1, .too_few = "expected 'circle R'",
-};
-
-static int trace_circle(int argc, char **argv)
-{
-    const char *radius = NULL;
-    long r;
-    if (cli_parse(&circle_syntax, argc, argv, NULL, &radius, NULL) != CLI_OK)
-        return CLI_USAGE;
-    if (cli_parse_long("trace", "R", radius, 0, MAX_STEPS, &r))
-        return CLI_USAGE;
-    printf("Bresenham's circle (Algorithm 2), radius %ld: first octant 0 <= x <= y from (0, %ld)\n",
-           r, r);
-    printf("f = 1 - r = %ld, dE = 3, dSE = -2r + 5 = %ld\n", 1 - r, 5 - 2 * r);
-    printf("f < 0 selects E (x + 1, y): f += dE, dE += 2, dSE += 2\n");
-    printf("else SE (x + 1, y - 1): f += dSE, dE += 2, dSE += 4\n");
-    printf("f, dE, dSE: values tested; f', dE', dSE': after the update\n\n");
-    printf(" step       f      dE     dSE  move        f'     dE'    dSE'  pixel\n");
-    circle_count c = {0, 0};
-    cg_circle_trace((int)r, circle_step, &c);
-    printf("%ld step%s; with 8-way symmetry the circle has %ld pixel%s\n", c.step,
-           c.step == 1 ? "" : "s", c.pixels, c.pixels == 1 ? "" : "s");
-    return CLI_OK;
-}
+static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
 
 static int run(int argc, char **argv)
 {
-    static const cli_action figures[] = {{"line", trace_line}, {"circle", trace_circle}};
-    return cli_run_action("trace", argc, argv, figures, 2,
-                          "expected 'line X1 Y1 X2 Y2' or 'circle R'",
-                          "unknown figure '%s' (expected line or circle)");
+    trace_outputs outputs;
+    if (trace_outputs_parse(&argc, argv, &outputs) != 0)
+        return CLI_USAGE;
+    if (argc < 2)
+        return cli_usage_error("trace", "expected an algorithm, as 'line X1 Y1 X2 Y2' or "
+                                        "'circle R'");
+    for (size_t g = 0; g < sizeof groups / sizeof groups[0]; g++)
+        for (const trace_algorithm *a = groups[g]; a->name; a++)
+            if (strcmp(argv[1], a->name) == 0)
+                return a->run(argc - 1, argv + 1, &outputs);
+    return cli_usage_error("trace", "unknown algorithm '%s' (run 'cg help trace' for the list)",
+                           argv[1]);
 }
 
 const cg_command cg_command_trace = {
     "trace",
-    "print Bresenham's line or circle algorithm step by step",
-    "usage: cg trace line X1 Y1 X2 Y2\n"
-    "       cg trace circle R\n\n"
-    "Prints each step of Algorithm 1 (lines) or Algorithm 2 (circles) of the notes:\n"
-    "the decision variable f tested, the move chosen (E/NE for lines, E/SE for\n"
-    "circles), the values after the update (f, and dE, dSE for circles) and the\n"
-    "pixel selected.  A line in another octant is first mapped to the first octant\n"
-    "(0 <= dy <= dx) as the drawing code does; its pixels are shown in the real\n"
-    "image.  The circle is centred on (0, 0); its first octant is traced.\n",
+    "print the course's algorithms step by step (table, JSON, pictures, a page)",
+    "usage: cg trace ALGORITHM ARGS [--json] [--frames DIR] [--html OUT.html]\n\n"
+    "Prints one of the notes' algorithms step by step in the notes' terms; each\n"
+    "trace ends in the library call's own result.  docs/teaching.md gives every\n"
+    "algorithm's fields.  Pixels are integer indices; points X,Y (X,Y,Z in 3D).\n\n"
+    "Chapter 2:\n"
+    "  line X1 Y1 X2 Y2           Bresenham (Algorithm 1): octant mapping, f, E/NE\n"
+    "  dda X1 Y1 X2 Y2            the DDA line: x, y accumulated and rounded\n"
+    "  wu X1 Y1 X2 Y2             Wu's line: two pixels and intensities per column\n"
+    "  circle R                   midpoint circle (Algorithm 2): f, dE, dSE, E/SE\n"
+    "  ellipse RX RY              midpoint ellipse: region 1, the switch, region 2\n"
+    "  hermite P1 P4 R1 R4 [N]    Q(t) = T M G at N+1 values of t: T, weights T M, Q\n"
+    "  bezier P1 P2 P3 P4 [N]     the same for a Bezier segment,\n"
+    "  bspline P0 P1 P2 P3 [N]    a uniform B-spline segment\n"
+    "  catmull-rom P0 P1 P2 P3 [N] and a Catmull-Rom segment\n"
+    "  casteljau T P0 P1 [...]    de Casteljau: every level, the point, the halves\n"
+    "  flatten TOL P0 P1 [...]    adaptive flattening: each piece, split or emitted\n"
+    "Chapters 3-8:\n"
+    "  pipeline X,Y,Z [EYE [TARGET [FOVY [WxH]]]]  one point through M, V, P, W\n"
+    "  vanishing DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]  the vanishing point of d\n"
+    "  backface MESH [ABOUT_Y [ABOUT_X]]  N, V and the sign of N.V per triangle\n"
+    "  zbuffer MESH X Y [WxH]     every fragment at one pixel, accepted or not\n"
+    "  light POINT NORMAL EYE [LIGHT ...]  ambient, diffuse, specular per light\n"
+    "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
+    "  hsv R G B                  RGB to HSV by the notes' formulas\n"
+    "  hsl R G B                  RGB to HSL\n"
+    "Chapter 9:\n"
+    "  face-loop MESH F           a face's half-edges by next: origin, next, twin\n"
+    "  one-ring MESH V            a vertex's outgoing half-edges by twin(prev(h))\n"
+    "Chapter 10 (image coordinates, y down):\n"
+    "  scanline 'POLYGON' [even-odd|nonzero]  edge table, active list, spans\n"
+    "  flood IMAGE X Y [4|8] [TOL]  seed fill: each seed popped, span, pushes\n"
+    "  boundary IMAGE X Y COLOR [4|8] [TOL]  the same inside a boundary colour\n"
+    "Chapter 11 (y-up; polygons as 'X,Y X,Y X,Y ...'):\n"
+    "  cohen-sutherland XMIN YMIN XMAX YMAX P0 P1  region codes and decisions\n"
+    "  liang-barsky XMIN YMIN XMAX YMAX P0 P1  p, q, t per boundary\n"
+    "  sutherland-hodgman 'WINDOW' 'SUBJECT'  input and output lists per edge\n"
+    "  weiler-atherton 'WINDOW' 'SUBJECT'  crossings, lists, the traversal\n"
+    "  frustum 'X,Y,Z ...' [EYE [TARGET [FOVY]]]  3D polygon against each plane\n\n"
+    "By default a table per phase, with notes above it; the options go anywhere.\n"
+    "Example: cg trace line 1 1 22 9;  cg trace circle 11 --html circle.html\n",
     run,
-    NULL,
+    trace_syntaxes,
 };

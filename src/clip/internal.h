@@ -18,4 +18,11 @@ cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_
  * exact (0 below 3 points). */
 clip_i128 clip_ring_twice_area(const cg_point64 *p, size_t n);
 
+/* Weiler-Atherton's input rings (weiler.c, and its trace in trace_weiler.c):
+ * twice the signed area of p[0..n) in doubles, and a copy of in[0..n) into
+ * out without repeated points, counter-clockwise, moved by d; returns the
+ * copy's size. */
+double clip_weiler_twice_area(const cg_vec2 *p, size_t n);
+size_t clip_weiler_prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out);
+
 #endif

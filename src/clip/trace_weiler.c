@@ -11,6 +11,7 @@
  * Labels: S3 is the subject's vertex 3, W1 the window's vertex 1, I2 the
  * crossing 2 (numbered along the subject). */
 #include "cg/clip.h"
+#include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
 
@@ -48,35 +49,6 @@ typedef struct weiler_trace {
     cg_step_fn fn;
     void *user;
 } weiler_trace;
-
-static double area2(const cg_vec2 *p, size_t n)
-{
-    double s = 0;
-    for (size_t i = 0, j = n - 1; i < n; j = i++)
-        s += cg_vec2_cross(p[j], p[i]);
-    return s;
-}
-
-/* Without repeated points, counter-clockwise, moved by d (as weiler.c). */
-static size_t prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
-{
-    size_t m = 0;
-    for (size_t i = 0; i < n; i++) {
-        cg_vec2 p = cg_vec2_add(in[i], d);
-        if (m && p.x == out[m - 1].x && p.y == out[m - 1].y)
-            continue;
-        out[m++] = p;
-    }
-    while (m > 1 && out[0].x == out[m - 1].x && out[0].y == out[m - 1].y)
-        m--;
-    if (m >= 3 && area2(out, m) < 0)
-        for (size_t i = 0; i < m / 2; i++) {
-            cg_vec2 t = out[i];
-            out[i] = out[m - 1 - i];
-            out[m - 1 - i] = t;
-        }
-    return m;
-}
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
@@ -391,11 +363,11 @@ cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_ve
                       {{0}, {0}}, step, user};
     int outcome = w.subject && w.window ? 0 : -1;
     if (outcome == 0) {
-        w.n = prepare(subject, n, cg_vec2_make(0, 0), w.subject);
-        w.m = prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
+        w.n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), w.subject);
+        w.m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
         outcome = emit_prepared(&w, delta);
     }
-    int flat = w.n < 3 || w.m < 3 || area2(w.subject, w.n) == 0 || area2(w.window, w.m) == 0;
+    int flat = w.n < 3 || w.m < 3 || clip_weiler_twice_area(w.subject, w.n) == 0 || clip_weiler_twice_area(w.window, w.m) == 0;
     if (outcome == 0 && !flat)
         outcome = find_crossings(&w);
     if (outcome == 0 && !flat && (w.crossings.count == 0 || w.crossings.count % 2)) {

@@ -3,6 +3,7 @@
  * traced by following the subject from each entering intersection and the
  * window from each exiting one. */
 #include "cg/clip.h"
+#include "internal.h"
 #include "../core/array.h"
 
 #include <stdlib.h>
@@ -23,7 +24,7 @@ typedef struct xing {
     int entering;
 } xing;
 
-static double area2(const cg_vec2 *p, size_t n)
+double clip_weiler_twice_area(const cg_vec2 *p, size_t n)
 {
     double s = 0;
     for (size_t i = 0, j = n - 1; i < n; j = i++)
@@ -41,8 +42,7 @@ static int point_in(const cg_vec2 *p, size_t n, cg_vec2 q)
     return in;
 }
 
-/* copy without repeated points, counter-clockwise, shifted by d */
-static size_t prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
+size_t clip_weiler_prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
 {
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {
@@ -53,7 +53,7 @@ static size_t prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
     }
     while (m > 1 && out[0].x == out[m - 1].x && out[0].y == out[m - 1].y)
         m--;
-    if (m >= 3 && area2(out, m) < 0)
+    if (m >= 3 && clip_weiler_twice_area(out, m) < 0)
         for (size_t i = 0; i < m / 2; i++) {
             cg_vec2 t = out[i];
             out[i] = out[m - 1 - i];
@@ -103,9 +103,9 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
     /* the window moved off every degenerate contact (an irrational-looking
      * direction, 1e-9 of the extent) */
     double delta = (ext > 0 ? ext : 1) * 1e-9;
-    n = prepare(subject, n, cg_vec2_make(0, 0), S);
-    m = prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
-    if (n < 3 || m < 3 || area2(S, n) == 0 || area2(C, m) == 0) {
+    n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), S);
+    m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
+    if (n < 3 || m < 3 || clip_weiler_twice_area(S, n) == 0 || clip_weiler_twice_area(C, m) == 0) {
         st = CG_OK; /* nothing with an area */
         goto done;
     }

@@ -428,8 +428,10 @@ static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, size_t *coun
     size_t n = rings->point_count;
     if (core_array_reserve_for(&m->points, n + 3) != CG_OK)
         return CG_ENOMEM;
-    memcpy(m->points.data, rings->points, n * sizeof *rings->points);
-    qsort(m->points.data, n, sizeof *m->points.data, compare_points);
+    if (n > 0) { /* memcpy and qsort want non-null pointers even for no points */
+        memcpy(m->points.data, rings->points, n * sizeof *rings->points);
+        qsort(m->points.data, n, sizeof *m->points.data, compare_points);
+    }
     size_t distinct = 0;
     for (size_t i = 0; i < n; i++)
         if (distinct == 0 || compare_points(&m->points.data[distinct - 1], &m->points.data[i]) != 0)

@@ -52,7 +52,8 @@ static void star(shape *s, size_t n, double cx, double cy, double r0, double r1)
     free(p);
 }
 
-static void ellipse(shape *s, size_t n, double cx, double cy, double rx, double ry, double rot, int cw)
+static void ellipse(shape *s, size_t n, double cx, double cy, double rx, double ry, double rot,
+                    int cw)
 {
     cg_point64 *p = malloc(n * sizeof *p);
     for (size_t i = 0; i < n; i++) {
@@ -235,7 +236,8 @@ static void compare_pairs(const char *what, const shape *a, const shape *b, size
         prepare_all(&j, p->prepare);
         if (warm)
             p->run(&j);
-        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID) / (double)pairs;
+        double t = bench_median_clock(p->run, &j, p->runs, CLOCK_PROCESS_CPUTIME_ID)
+                   / (double)pairs;
         snprintf(note, sizeof note, "area cg %.6e, %s %.6e (diff %.1e); %zu result vertices",
                  area_cg, p->name, j.area, fabs(area_cg - j.area) / fmax(1, fabs(j.area)), nv);
         bench_row(name, t_cg, p->name, t, note);
@@ -322,7 +324,10 @@ int main(int argc, char **argv)
     for (size_t n = 10; n <= max_n && n <= 100000; n *= 10)
         if (n >= min_n)
             star_case(n, 9e5, "random polygons", n <= 1000 ? 4 : 2,
-                      n <= 100 ? 15 : n <= 1000 ? 7 : n <= 10000 ? 3 : 1);
+                      n <= 100     ? 15
+                      : n <= 1000  ? 7
+                      : n <= 10000 ? 3
+                                   : 1);
     /* spiky: radius uniform in [0.5, 1]: a scanline meets a third of the edges */
     for (size_t n = 10; n <= max_n && n <= 1000; n *= 10)
         if (n >= min_n)

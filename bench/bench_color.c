@@ -131,8 +131,7 @@ static void compare_bytes(const uint8_t *a, const uint8_t *b, size_t n, char *no
 }
 
 /* Hue bytes differ by 255 across the wrap: measure circularly for channel 0. */
-static void compare_hsv(const uint8_t *a, const uint8_t *b, size_t pixels, char *note,
-                        size_t size)
+static void compare_hsv(const uint8_t *a, const uint8_t *b, size_t pixels, char *note, size_t size)
 {
     size_t differ = 0;
     int worst = 0;
@@ -220,10 +219,8 @@ int main(void)
     bench_row("HSV8 -> RGB8 4K", bench_median(cg_hsv_back, &j, RUNS), "-", 0,
               "OpenCV not installed");
     bench_row("RGB8 -> Lab8 4K", bench_median(cg_lab, &j, RUNS), "-", 0, "OpenCV not installed");
-    bench_row("sRGB decode 4K", bench_median(cg_decode, &j, RUNS), "-", 0,
-              "OpenCV not installed");
-    bench_row("sRGB encode 4K", bench_median(cg_encode, &j, RUNS), "-", 0,
-              "OpenCV not installed");
+    bench_row("sRGB decode 4K", bench_median(cg_decode, &j, RUNS), "-", 0, "OpenCV not installed");
+    bench_row("sRGB encode 4K", bench_median(cg_encode, &j, RUNS), "-", 0, "OpenCV not installed");
 #endif
     free(j.rgb);
     free(j.hsv);

@@ -36,9 +36,13 @@ static uint64_t next(void)
     state ^= state << 17;
     return state;
 }
-static int uniform(int lo, int hi) { return lo + (int)(next() % (uint64_t)(hi - lo + 1)); }
+static int uniform(int lo, int hi)
+{
+    return lo + (int)(next() % (uint64_t)(hi - lo + 1));
+}
 
-static int lines[LINES * 4], small_lines[LINES * 4], far_lines[LINES * 4], fixed_lines[LINES * 4], circles[CIRCLES * 3];
+static int lines[LINES * 4], small_lines[LINES * 4], far_lines[LINES * 4], fixed_lines[LINES * 4],
+    circles[CIRCLES * 3];
 static double aa_lines[LINES * 4];
 static const cg_rgba8 color = {250, 180, 40, 255};
 
@@ -60,7 +64,8 @@ static void cg_lines(void *p)
 {
     job *j = p;
     for (int i = 0; i < j->n; i++)
-        cg_draw_line(j->image, j->ints[4 * i], j->ints[4 * i + 1], j->ints[4 * i + 2], j->ints[4 * i + 3], color);
+        cg_draw_line(j->image, j->ints[4 * i], j->ints[4 * i + 1], j->ints[4 * i + 2],
+                     j->ints[4 * i + 3], color);
 }
 
 static void cg_lines_aa(void *p)
@@ -157,7 +162,8 @@ static double circle_pixels(const int *c, int n, int filled)
 static void row(const char *name, double cg_time, const char *peer, double peer_time, double pixels)
 {
     char note[160];
-    snprintf(note, sizeof note, "%d x %d RGBA8; cg %.0f Mpx/s", SIZE, SIZE, pixels / cg_time * 1e-6);
+    snprintf(note, sizeof note, "%d x %d RGBA8; cg %.0f Mpx/s", SIZE, SIZE,
+             pixels / cg_time * 1e-6);
     bench_row(name, cg_time, peer, peer_time, note);
 }
 
@@ -199,10 +205,17 @@ int main(int argc, char **argv)
 #endif
     if (argc == 2)
         return only(argv[1], &j);
-    struct { const char *name; const int *ints; const double *doubles; int n, aa; double pixels; } line_cases[] = {
+    struct {
+        const char *name;
+        const int *ints;
+        const double *doubles;
+        int n, aa;
+        double pixels;
+    } line_cases[] = {
         {"draw: 20k Bresenham lines inside", lines, NULL, LINES, 0, line_pixels(lines, LINES)},
         {"draw: 20k Bresenham lines, clipped", far_lines, NULL, LINES, 0, 0},
-        {"draw: 20k anti-aliased lines", fixed_lines, aa_lines, LINES, 1, line_pixels(lines, LINES)},
+        {"draw: 20k anti-aliased lines", fixed_lines, aa_lines, LINES, 1,
+         line_pixels(lines, LINES)},
     };
     for (size_t c = 0; c < sizeof line_cases / sizeof line_cases[0]; c++) {
         j.ints = line_cases[c].ints;
@@ -229,8 +242,8 @@ int main(int argc, char **argv)
         cairo_set_antialias(j.cr, aa ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
         if (aa)
             j.ints = NULL;
-        row(line_cases[c].name, t_cg, aa ? "Cairo AA" : "Cairo no-AA", cpu_median(cairo_lines_job, &j, RUNS),
-            pixels);
+        row(line_cases[c].name, t_cg, aa ? "Cairo AA" : "Cairo no-AA",
+            cpu_median(cairo_lines_job, &j, RUNS), pixels);
         printed = 1;
 #endif
         if (!printed)
@@ -247,7 +260,8 @@ int main(int argc, char **argv)
         s.n = LINES;
         double t_cg = cpu_median(cg_lines, &s, RUNS), pixels = line_pixels(small_lines, LINES);
         char note[160];
-        snprintf(note, sizeof note, "256 x 256 RGBA8 (in cache); cg %.0f Mpx/s", pixels / t_cg * 1e-6);
+        snprintf(note, sizeof note, "256 x 256 RGBA8 (in cache); cg %.0f Mpx/s",
+                 pixels / t_cg * 1e-6);
         int printed = 0;
 #ifdef HAVE_OPENCV
         s.ocv = ocv_create(SIZE / 4, SIZE / 4);
@@ -272,7 +286,8 @@ int main(int argc, char **argv)
             bench_row("draw: 20k Bresenham lines, small image", t_cg, "-", 0, note);
         cg_image_free(small);
     }
-    const char *circle_names[3] = {"draw: 2k Bresenham circles r 1-300", "draw: 2k anti-aliased circles r 1-300",
+    const char *circle_names[3] = {"draw: 2k Bresenham circles r 1-300",
+                                   "draw: 2k anti-aliased circles r 1-300",
                                    "draw: 2k filled discs r 1-300"};
     for (int mode = 0; mode < 3; mode++) {
         j.ints = circles;
@@ -282,14 +297,17 @@ int main(int argc, char **argv)
         double t_cg = cpu_median(cg_circles, &j, RUNS);
         int printed = 0;
 #ifdef HAVE_OPENCV
-        row(circle_names[mode], t_cg, mode == 1 ? "OpenCV LINE_AA" : mode == 2 ? "OpenCV FILLED" : "OpenCV LINE_8",
+        row(circle_names[mode], t_cg,
+            mode == 1   ? "OpenCV LINE_AA"
+            : mode == 2 ? "OpenCV FILLED"
+                        : "OpenCV LINE_8",
             cpu_median(ocv_circles_job, &j, RUNS), pixels);
         printed = 1;
 #endif
 #ifdef HAVE_CAIRO
         cairo_set_antialias(j.cr, mode == 1 ? CAIRO_ANTIALIAS_DEFAULT : CAIRO_ANTIALIAS_NONE);
-        row(circle_names[mode], t_cg, mode == 1 ? "Cairo AA" : "Cairo no-AA", cpu_median(cairo_circles_job, &j, RUNS),
-            pixels);
+        row(circle_names[mode], t_cg, mode == 1 ? "Cairo AA" : "Cairo no-AA",
+            cpu_median(cairo_circles_job, &j, RUNS), pixels);
         printed = 1;
 #endif
         if (!printed)

@@ -357,7 +357,8 @@ static void run_case(shape_case *c, int runs)
                && drawn->height == SIZE && drawn->format == CG_PIXEL_RGBA8;
     for (int y = 0; same && y < SIZE; y++)
         same = memcmp(drawn->data + (size_t)y * drawn->stride,
-                      library.image->data + (size_t)y * library.image->stride, SIZE * 4) == 0;
+                      library.image->data + (size_t)y * library.image->stride, SIZE * 4)
+               == 0;
     cg_image_free(drawn);
     char note[200];
     snprintf(note, sizeof note, "cg draw %.0f shapes/s, library %.0f shapes/s; %s",
@@ -367,8 +368,8 @@ static void run_case(shape_case *c, int runs)
 
 #ifdef CG_BENCH_HAVE_OPENCV
     peer_row(c, t_tool,
-             c->kind == LINE     ? "OpenCV line LINE_8"
-             : c->kind == CIRCLE ? "OpenCV circle LINE_8"
+             c->kind == LINE      ? "OpenCV line LINE_8"
+             : c->kind == CIRCLE  ? "OpenCV circle LINE_8"
              : c->kind == POLYGON ? "OpenCV fillPoly LINE_8"
                                   : "OpenCV fillPoly LINE_AA",
              0, runs);
@@ -396,14 +397,22 @@ int main(int argc, char **argv)
     int runs = argc > 1 ? atoi(argv[1]) : 5;
     only = argc > 2 ? argv[2] : NULL;
     shape_case cases[] = {
-        {.name = "cg draw --repeat: 20k Bresenham lines, one colour each", .kind = LINE,
-         .count = LINES, .repeat = 20},
+        {.name = "cg draw --repeat: 20k Bresenham lines, one colour each",
+         .kind = LINE,
+         .count = LINES,
+         .repeat = 20},
         {.name = "cg draw --repeat: 2k Bresenham circles r 1-300, one colour each",
-         .kind = CIRCLE, .count = CIRCLES, .repeat = 60},
-        {.name = "cg draw --repeat: 20k star polygons, one colour each", .kind = POLYGON,
-         .count = POLYGONS, .repeat = 4},
+         .kind = CIRCLE,
+         .count = CIRCLES,
+         .repeat = 60},
+        {.name = "cg draw --repeat: 20k star polygons, one colour each",
+         .kind = POLYGON,
+         .count = POLYGONS,
+         .repeat = 4},
         {.name = "cg draw --repeat: 20k anti-aliased star polygons, one colour each",
-         .kind = AA_POLYGON, .count = POLYGONS, .repeat = 2},
+         .kind = AA_POLYGON,
+         .count = POLYGONS,
+         .repeat = 2},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
         if (!only || strstr(cases[i].name, only))

@@ -243,15 +243,15 @@ static size_t painted(const cg_image *im)
     return n;
 }
 
-static void row(const char *name, double cg_time, const char *peer, double peer_time,
-                double pixels)
+static void row(const char *name, double cg_time, const char *peer, double peer_time, double pixels)
 {
     char note[160];
     if (peer_time > 0)
         snprintf(note, sizeof note, "cg %.0f Mpx/s, %s %.0f Mpx/s", pixels / cg_time * 1e-6, peer,
                  pixels / peer_time * 1e-6);
     else
-        snprintf(note, sizeof note, "cg %.0f Mpx/s; %s not built in", pixels / cg_time * 1e-6, peer);
+        snprintf(note, sizeof note, "cg %.0f Mpx/s; %s not built in", pixels / cg_time * 1e-6,
+                 peer);
     bench_row(name, cg_time, peer_time > 0 ? peer : "-", peer_time, note);
 }
 
@@ -372,18 +372,18 @@ static void glyphs_init(void)
     double *p = glyph_o;
     for (int r = 0; r < 2; r++) {
         double rx = rings[r][0], ry = rings[r][1], s = r ? -1 : 1; /* inner ring reversed */
-        double pts[13][2] = {{1, 0},  {1, k * s},  {k, s},  {0, s},  {-k, s},  {-1, k * s},
-                             {-1, 0}, {-1, -k * s}, {-k, -s}, {0, -s}, {k, -s}, {1, -k * s},
-                             {1, 0}};
+        double pts[13][2] = {{1, 0},      {1, k * s},  {k, s},       {0, s},   {-k, s},
+                             {-1, k * s}, {-1, 0},     {-1, -k * s}, {-k, -s}, {0, -s},
+                             {k, -s},     {1, -k * s}, {1, 0}};
         for (int i = 0; i < 13; i++) {
             *p++ = 0.5 + rx * pts[i][0];
             *p++ = 0.5 + ry * pts[i][1];
         }
     }
-    static const double s[2 * 20] = {
-        0.80, 0.20, 0.60, 0.00, 0.20, 0.05, 0.20, 0.30, 0.20, 0.55, 0.80, 0.45, 0.80, 0.70,
-        0.80, 0.95, 0.40, 1.00, 0.15, 0.82, 0.28, 0.72, 0.45, 0.86, 0.66, 0.84, 0.66, 0.70,
-        0.66, 0.55, 0.05, 0.62, 0.05, 0.30, 0.05, -0.05, 0.60, -0.10, 0.90, 0.10};
+    static const double s[2 * 20] = {0.80, 0.20, 0.60, 0.00, 0.20, 0.05,  0.20, 0.30,  0.20, 0.55,
+                                     0.80, 0.45, 0.80, 0.70, 0.80, 0.95,  0.40, 1.00,  0.15, 0.82,
+                                     0.28, 0.72, 0.45, 0.86, 0.66, 0.84,  0.66, 0.70,  0.66, 0.55,
+                                     0.05, 0.62, 0.05, 0.30, 0.05, -0.05, 0.60, -0.10, 0.90, 0.10};
     memcpy(glyph_s, s, sizeof s);
 }
 
@@ -630,8 +630,8 @@ static void flood_cases(int runs)
             cg_flood_fill(im, 1, 1, ink, (cg_connectivity)conn, 0, &filled);
             j.toggle = 1; /* the next run paints back to white */
             char name[96];
-            snprintf(name, sizeof name, "flood %s %dx%d %d-connected", kind ? "open" : "maze", FLOOD,
-                     FLOOD, conn);
+            snprintf(name, sizeof name, "flood %s %dx%d %d-connected", kind ? "open" : "maze",
+                     FLOOD, FLOOD, conn);
             if (!wanted(name))
                 continue;
             double t_cg = timed(run_flood_cg, &j, runs);

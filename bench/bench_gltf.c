@@ -116,7 +116,7 @@ static int write_sphere_glb(const char *path, int slices, int stacks)
     if (cg_mesh_sphere(slices, stacks, 1.0, &m) != CG_OK)
         return 0;
     size_t nv = m->vertex_count, nt = cg_mesh_triangle_count(m);
-    uint32_t (*tri)[3] = malloc(nt * sizeof *tri);
+    uint32_t(*tri)[3] = malloc(nt * sizeof *tri);
     float *data = malloc(nv * 8 * sizeof *data);
     if (!tri || !data || cg_mesh_triangulate(m, tri) != CG_OK)
         return 0;
@@ -125,8 +125,14 @@ static int write_sphere_glb(const char *path, int slices, int stacks)
             tri[t][k] = m->face_indices[tri[t][k]];
     for (size_t i = 0; i < nv; i++) {
         cg_vec3 p = m->positions[i];
-        float v[8] = {(float)p.x, (float)p.y, (float)p.z, (float)p.x, (float)p.y, (float)p.z,
-                      (float)(atan2(p.z, p.x) / 6.283185307 + 0.5), (float)(p.y * 0.5 + 0.5)};
+        float v[8] = {(float)p.x,
+                      (float)p.y,
+                      (float)p.z,
+                      (float)p.x,
+                      (float)p.y,
+                      (float)p.z,
+                      (float)(atan2(p.z, p.x) / 6.283185307 + 0.5),
+                      (float)(p.y * 0.5 + 0.5)};
         memcpy(data + 8 * i, v, sizeof v);
     }
     size_t vertex_bytes = nv * 32, index_bytes = nt * 12;

@@ -84,14 +84,15 @@ static cg_mesh *sphere(int stacks, int slices)
     for (int i = 1; i < stacks; i++)
         for (int j = 0; j < slices; j++) {
             double theta = CG_PI * i / stacks, phi = 2 * CG_PI * j / slices;
-            m->positions[1 + (size_t)(i - 1) * slices + j] =
-                cg_vec3_make(sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
+            m->positions[1 + (size_t)(i - 1) * slices + j] = cg_vec3_make(
+                sin(theta) * cos(phi), cos(theta), sin(theta) * sin(phi));
         }
     m->positions[nv - 1] = cg_vec3_make(0, -1, 0);
     size_t f = 0, k = 0;
-#define RING(i, j) (uint32_t)(1 + (size_t)((i) - 1) * slices + (size_t)((j) % slices))
-#define TRI(a, b, c) (m->face_offsets[f++] = (uint32_t)k, m->face_indices[k++] = (a), \
-                      m->face_indices[k++] = (b), m->face_indices[k++] = (c))
+#define RING(i, j) (uint32_t)(1 + (size_t)((i)-1) * slices + (size_t)((j) % slices))
+#define TRI(a, b, c)                                                                             \
+    (m->face_offsets[f++] = (uint32_t)k, m->face_indices[k++] = (a), m->face_indices[k++] = (b), \
+     m->face_indices[k++] = (c))
     for (int j = 0; j < slices; j++) {
         TRI(0, RING(1, j + 1), RING(1, j));
         TRI((uint32_t)(nv - 1), RING(stacks - 1, j), RING(stacks - 1, j + 1));

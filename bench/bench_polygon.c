@@ -106,8 +106,10 @@ static void cg_boolean_rect_job(void *v)
 {
     job *j = v;
     cg_polygon_set64 window = {0};
-    cg_point64 w[4] = {{j->rect.xmin, j->rect.ymin}, {j->rect.xmax, j->rect.ymin},
-                       {j->rect.xmax, j->rect.ymax}, {j->rect.xmin, j->rect.ymax}};
+    cg_point64 w[4] = {{j->rect.xmin, j->rect.ymin},
+                       {j->rect.xmax, j->rect.ymin},
+                       {j->rect.xmax, j->rect.ymax},
+                       {j->rect.xmin, j->rect.ymax}};
     cg_polygon_set64_add_ring(&window, w, 4, 1);
     cg_clip_boolean64_ws(j->ws, CG_CLIP_INTERSECTION, &j->input->set, CG_CLIP_NON_ZERO, &window,
                          CG_CLIP_NON_ZERO, &j->result);
@@ -131,7 +133,10 @@ static void clipper2_triangulate_job(void *v)
     j->area = peer_clipper2_triangulate(j->peer);
 }
 
-static int runs_for(size_t n) { return n >= 100000 ? 3 : n >= 10000 ? 5 : 15; }
+static int runs_for(size_t n)
+{
+    return n >= 100000 ? 3 : n >= 10000 ? 5 : 15;
+}
 
 static void offsets(void)
 {
@@ -141,8 +146,15 @@ static void offsets(void)
         star(&s, sizes[k], RADIUS, 0);
         finish(&s);
         for (int join = 1; join >= 0; join--) {
-            job j = {&s, {0}, cg_clip_workspace_create(), RADIUS / 100, 0, RADIUS / 100 / 500, join,
-                     {0, 0, 0, 0}, NULL};
+            job j = {&s,
+                     {0},
+                     cg_clip_workspace_create(),
+                     RADIUS / 100,
+                     0,
+                     RADIUS / 100 / 500,
+                     join,
+                     {0, 0, 0, 0},
+                     NULL};
             int runs = runs_for(sizes[k]);
             double t_cg = bench_median(cg_offset_job, &j, runs), a_cg = j.area;
             char name[64], note[160];
@@ -181,7 +193,8 @@ static void rectangles(void)
             /* a tile across the boundary, or most of the star */
             int64_t h = large ? (int64_t)(0.8 * RADIUS) : (int64_t)(0.05 * RADIUS);
             int64_t cx = large ? 0 : (int64_t)RADIUS; /* the star crosses x = RADIUS on the axis */
-            job j = {&s, {0}, cg_clip_workspace_create(), 0, 0, 0, 0, {cx - h, -h, cx + h, h}, NULL};
+            job j = {&s, {0}, cg_clip_workspace_create(), 0,   0,
+                     0,  0,   {cx - h, -h, cx + h, h},    NULL};
             int runs = runs_for(sizes[k]);
             double t_cg = bench_median(cg_rect_job, &j, runs), a_cg = j.area;
             char name[64], note[160];

@@ -143,7 +143,8 @@ static void gl_measure(scene *scenes, int count, FILE *out)
 {
     unsigned char *buffer = malloc((size_t)WIDTH * HEIGHT * 4);
     OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
-    if (!context || !buffer || !OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT)) {
+    if (!context || !buffer
+        || !OSMesaMakeCurrent(context, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT)) {
         for (int i = 0; i < count * 2; i++)
             fprintf(out, "0 0\n");
         return;
@@ -285,15 +286,17 @@ int main(void)
                 double cpu, t = timed(cg_frame, &job, runs_for(scenes[i].triangles), &cpu);
                 cg_renderer_free(r);
                 char name[256], note[160];
-                snprintf(name, sizeof name, "render 1920x1080 %.40s %zuk tri %s %dT", scenes[i].name,
-                         (scenes[i].triangles + 500) / 1000, shading ? "gouraud" : "flat", threads);
+                snprintf(name, sizeof name, "render 1920x1080 %.40s %zuk tri %s %dT",
+                         scenes[i].name, (scenes[i].triangles + 500) / 1000,
+                         shading ? "gouraud" : "flat", threads);
                 double p = peer[i * 2 + shading], pc = peer_cpu[i * 2 + shading];
                 if (p > 0)
                     snprintf(note, sizeof note,
                              "%.1f vs %.1f fps; CPU per frame cg %.1f ms, llvmpipe %.1f ms", 1 / t,
                              1 / p, cpu * 1e3, pc * 1e3);
                 else
-                    snprintf(note, sizeof note, "%.1f fps; CPU per frame %.1f ms", 1 / t, cpu * 1e3);
+                    snprintf(note, sizeof note, "%.1f fps; CPU per frame %.1f ms", 1 / t,
+                             cpu * 1e3);
                 if (p > 0)
                     bench_row(name, t, "osmesa", p, note);
                 else

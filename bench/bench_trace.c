@@ -50,7 +50,8 @@ static void *trace_cg_range(void *arg)
         if (w->shadow)
             hits += cg_bvh_occluded(w->bvh, w->r->origin[i], w->r->direction[i], 0, INFINITY);
         else
-            hits += cg_bvh_intersect(w->bvh, w->r->origin[i], w->r->direction[i], 0, INFINITY, NULL);
+            hits += cg_bvh_intersect(w->bvh, w->r->origin[i], w->r->direction[i], 0, INFINITY,
+                                     NULL);
     }
     w->hits = hits;
     return NULL;
@@ -126,14 +127,17 @@ static void make_rays(const cg_bvh *bvh, const soup *s, rays *primary, rays *sha
     shadow->origin = malloc(n * sizeof(cg_vec3));
     shadow->direction = malloc(n * sizeof(cg_vec3));
     cg_vec3 light = cg_vec3_normalize(cg_vec3_make(-1, 2, 1.5));
-    double scale = fmax(fmax(fabs(lo.x), fabs(hi.x)), fmax(fmax(fabs(lo.y), fabs(hi.y)), fmax(fabs(lo.z), fabs(hi.z))));
+    double scale = fmax(fmax(fabs(lo.x), fabs(hi.x)),
+                        fmax(fmax(fabs(lo.y), fabs(hi.y)), fmax(fabs(lo.z), fabs(hi.z))));
     for (int y = 0; y < HEIGHT; y++)
         for (int x = 0; x < WIDTH; x++) {
             size_t i = (size_t)y * WIDTH + x;
-            cg_camera_ray(&cam, WIDTH, HEIGHT, x + 0.5, y + 0.5, &primary->origin[i], &primary->direction[i]);
+            cg_camera_ray(&cam, WIDTH, HEIGHT, x + 0.5, y + 0.5, &primary->origin[i],
+                          &primary->direction[i]);
             cg_bvh_hit h;
             if (cg_bvh_intersect(bvh, primary->origin[i], primary->direction[i], 0, INFINITY, &h)) {
-                cg_vec3 p = cg_vec3_add(primary->origin[i], cg_vec3_scale(primary->direction[i], h.t));
+                cg_vec3 p = cg_vec3_add(primary->origin[i],
+                                        cg_vec3_scale(primary->direction[i], h.t));
                 /* Backed off toward the eye, so the ray does not start
                  * inside the surface it leaves. */
                 p = cg_vec3_sub(p, cg_vec3_scale(primary->direction[i], scale * 1e-4));
@@ -194,7 +198,8 @@ static void bench_mesh(const char *name, const soup *s)
     cg_bvh_get_stats(bvh, &st);
     build_job bj = {s
 #ifdef CG_HAVE_EMBREE
-                    , NULL
+                    ,
+                    NULL
 #endif
     };
     int build_runs = s->nt > 500000 ? 3 : RUNS;
@@ -217,7 +222,8 @@ static void bench_mesh(const char *name, const soup *s)
     snprintf(label, sizeof label, "trace build %s, 2 threads", name);
     bj.s = s;
     double cg2 = bench_median(build_cg2, &bj, build_runs);
-    bench_row(label, cg2, "embree3", e2, "cg 2 threads, Embree default device (all cores); wall time");
+    bench_row(label, cg2, "embree3", e2,
+              "cg 2 threads, Embree default device (all cores); wall time");
     RTCScene scene = embree_scene(dev1, s->p, s->nv, s->idx, s->nt);
 #else
     snprintf(label, sizeof label, "trace build %s (%zu tris)", name, s->nt);
@@ -236,7 +242,8 @@ static void bench_mesh(const char *name, const soup *s)
             w.r = r;
             w.shadow = kind;
             w.threads = threads;
-            double (*timer)(void (*)(void *), void *, int) = threads == 1 ? median_cpu : bench_median;
+            double (*timer)(void (*)(void *), void *, int) = threads == 1 ? median_cpu
+                                                                          : bench_median;
             double tc = timer(run_cg, &w, RUNS);
             long cg_hits = w.hits;
             snprintf(label, sizeof label, "trace %s %s %dT (%zu rays)", kind ? "shadow" : "primary",
@@ -249,7 +256,8 @@ static void bench_mesh(const char *name, const soup *s)
                      threads == 1 ? "thread CPU time" : "wall time");
             bench_row(label, tc, "embree3", te, note);
 #else
-            snprintf(note, sizeof note, "cg %.2f Mrays/s; Embree 3 not installed", r->count / tc * 1e-6);
+            snprintf(note, sizeof note, "cg %.2f Mrays/s; Embree 3 not installed",
+                     r->count / tc * 1e-6);
             bench_row(label, tc, "-", 0, note);
 #endif
         }

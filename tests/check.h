@@ -30,31 +30,31 @@ static char **check_only;
 static int check_only_count, check_listing;
 static unsigned long long check_only_ran; /* bit i: check_only[i] matched */
 
-#define CHECK_REPORT(ok, ...)                                                  \
-    do {                                                                       \
-        if (ok) {                                                              \
-            check_passed++;                                                    \
-        } else {                                                               \
-            check_failed++;                                                    \
-            if (check_failed <= 50) {                                          \
+#define CHECK_REPORT(ok, ...)                                                 \
+    do {                                                                      \
+        if (ok) {                                                             \
+            check_passed++;                                                   \
+        } else {                                                              \
+            check_failed++;                                                   \
+            if (check_failed <= 50) {                                         \
                 fprintf(stderr, "%s:%d: check failed: ", __FILE__, __LINE__); \
-                fprintf(stderr, __VA_ARGS__);                                  \
-                fputc('\n', stderr);                                           \
-            }                                                                  \
-        }                                                                      \
+                fprintf(stderr, __VA_ARGS__);                                 \
+                fputc('\n', stderr);                                          \
+            }                                                                 \
+        }                                                                     \
     } while (0)
 
 #define CHECK(cond) CHECK_REPORT((cond), "%s", #cond)
 #define CHECK_MSG(cond, ...) CHECK_REPORT((cond), __VA_ARGS__)
-#define CHECK_NEAR(a, b, tol)                                                        \
-    do {                                                                             \
-        double check_a_ = (a), check_b_ = (b);                                       \
+#define CHECK_NEAR(a, b, tol)                                                                     \
+    do {                                                                                          \
+        double check_a_ = (a), check_b_ = (b);                                                    \
         CHECK_REPORT(fabs(check_a_ - check_b_) <= (tol), "%s = %.17g, %s = %.17g (tolerance %g)", \
-                     #a, check_a_, #b, check_b_, (double)(tol));                     \
+                     #a, check_a_, #b, check_b_, (double)(tol));                                  \
     } while (0)
-#define CHECK_EQ_INT(a, b)                                                               \
-    do {                                                                                 \
-        long long check_a_ = (long long)(a), check_b_ = (long long)(b);                  \
+#define CHECK_EQ_INT(a, b)                                                                      \
+    do {                                                                                        \
+        long long check_a_ = (long long)(a), check_b_ = (long long)(b);                         \
         CHECK_REPORT(check_a_ == check_b_, "%s = %lld, %s = %lld", #a, check_a_, #b, check_b_); \
     } while (0)
 
@@ -113,7 +113,9 @@ static inline int check_finish(void)
 }
 
 /* A deterministic random generator (xorshift64*) so failures reproduce. */
-typedef struct check_rng { uint64_t state; } check_rng;
+typedef struct check_rng {
+    uint64_t state;
+} check_rng;
 static inline uint64_t check_rng_next(check_rng *r)
 {
     r->state ^= r->state >> 12;

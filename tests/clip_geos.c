@@ -9,11 +9,13 @@
 #include <stdarg.h>
 #include <string.h>
 
-static void star(check_rng *rng, cg_vec2 *p, int n, double cx, double cy, double r0, double r1, int cw)
+static void star(check_rng *rng, cg_vec2 *p, int n, double cx, double cy, double r0, double r1,
+                 int cw)
 {
     for (int i = 0; i < n; i++) {
         int j = cw ? n - 1 - i : i;
-        double a = 2 * CG_PI * (i + check_rng_range(rng, 0, 0.8)) / n, r = check_rng_range(rng, r0, r1);
+        double a = 2 * CG_PI * (i + check_rng_range(rng, 0, 0.8)) / n,
+               r = check_rng_range(rng, r0, r1);
         p[j] = cg_vec2_make(cx + r * cos(a), cy + r * sin(a));
     }
 }
@@ -43,8 +45,10 @@ int main(void)
         if (it % 3 == 2) {
             /* rectangles on a coarse grid: shared edges and vertices */
             for (int k = 0; k < 2; k++) {
-                double x0 = (double)check_rng_int(&rng, 0, 4), y0 = (double)check_rng_int(&rng, 0, 4);
-                double x1 = x0 + (double)check_rng_int(&rng, 1, 4), y1 = y0 + (double)check_rng_int(&rng, 1, 4);
+                double x0 = (double)check_rng_int(&rng, 0, 4),
+                       y0 = (double)check_rng_int(&rng, 0, 4);
+                double x1 = x0 + (double)check_rng_int(&rng, 1, 4),
+                       y1 = y0 + (double)check_rng_int(&rng, 1, 4);
                 cg_vec2 rect[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
                 cg_polygon_set_add_ring(k ? &b : &a, rect, 4, 1);
             }
@@ -65,7 +69,8 @@ int main(void)
         GEOSGeometry *ga = clip_geos_polygons(h, &a), *gb = clip_geos_polygons(h, &b);
         for (int op = 0; op < 4; op++) {
             cg_polygon_set r = {0};
-            CHECK(cg_clip_boolean((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+            CHECK(cg_clip_boolean((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r)
+                  == CG_OK);
             GEOSGeometry *gr = op == 0   ? GEOSIntersection_r(h, ga, gb)
                                : op == 1 ? GEOSUnion_r(h, ga, gb)
                                : op == 2 ? GEOSDifference_r(h, ga, gb)
@@ -90,7 +95,8 @@ int main(void)
                 if (da > 1e-6 && db > 1e-6) {
                     int want = GEOSPreparedContains_r(h, prep, pt) == 1;
                     points++;
-                    CHECK_MSG(inside_result(&r, x, y) == want, "round %d op %d point %g %g", it, op, x, y);
+                    CHECK_MSG(inside_result(&r, x, y) == want, "round %d op %d point %g %g", it, op,
+                              x, y);
                 }
                 GEOSGeom_destroy_r(h, pt);
             }

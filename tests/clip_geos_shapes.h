@@ -10,7 +10,10 @@
 
 /* (GEOS's notices and errors are not the tests' business: they check the
  * results) */
-static void clip_geos_quiet(const char *fmt, ...) { (void)fmt; }
+static void clip_geos_quiet(const char *fmt, ...)
+{
+    (void)fmt;
+}
 
 /* A GEOS context that says nothing. */
 static inline GEOSContextHandle_t clip_geos_start(void)

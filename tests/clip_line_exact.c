@@ -145,10 +145,12 @@ static void compare(int dim, const double *a, const double *b, const double *lo,
         int same = 1;
         for (int j = 0; j < dim; j++)
             same &= got0[j] == want0[j] && got1[j] == want1[j];
-        CHECK_MSG(same, "round %d %dD %s: (%.17g %.17g %.17g) (%.17g %.17g %.17g), exact (%.17g %.17g %.17g) (%.17g %.17g %.17g)",
+        CHECK_MSG(same,
+                  "round %d %dD %s: (%.17g %.17g %.17g) (%.17g %.17g %.17g), exact (%.17g %.17g "
+                  "%.17g) (%.17g %.17g %.17g)",
                   round, dim, alg ? "liang-barsky" : "cohen-sutherland", got0[0], got0[1],
-                  dim == 3 ? got0[2] : 0, got1[0], got1[1], dim == 3 ? got1[2] : 0, want0[0], want0[1],
-                  dim == 3 ? want0[2] : 0, want1[0], want1[1], dim == 3 ? want1[2] : 0);
+                  dim == 3 ? got0[2] : 0, got1[0], got1[1], dim == 3 ? got1[2] : 0, want0[0],
+                  want0[1], dim == 3 ? want0[2] : 0, want1[0], want1[1], dim == 3 ? want1[2] : 0);
         compared++;
     }
 }
@@ -193,22 +195,25 @@ int main(void)
         CHECK(p0.x == 10 && p0.y == 2.5 && p1.x == 0 && p1.y == 2.5);
     }
     /* edge cases: the extremes, through corners, along bounds, subnormals */
-    static const double ext[] = {DBL_MAX, -DBL_MAX, 1.7e308, -1.7e308, DBL_MIN, -DBL_MIN,
-                                 4.9e-324, -4.9e-324, 0, 10, 5, 1e-300, 1e300};
+    static const double ext[] = {DBL_MAX,  -DBL_MAX, 1.7e308,   -1.7e308, DBL_MIN,
+                                 -DBL_MIN, 4.9e-324, -4.9e-324, 0,        10,
+                                 5,        1e-300,   1e300};
     int ne = (int)(sizeof ext / sizeof ext[0]), round = 0;
     for (int i = 0; i < ne; i++)
         for (int j = 0; j < ne; j++)
             for (int k = 0; k < ne; k++) {
-                compare(2, (double[]){ext[i], ext[j]}, (double[]){ext[k], ext[(i + j + k) % ne]}, lo, hi, round);
+                compare(2, (double[]){ext[i], ext[j]}, (double[]){ext[k], ext[(i + j + k) % ne]},
+                        lo, hi, round);
                 compare(2, (double[]){ext[i], ext[j]}, (double[]){ext[j], ext[k]}, lo, hi, round);
-                compare(3, (double[]){ext[i], ext[j], ext[k]}, (double[]){ext[k], ext[i], ext[j]}, lo, hi,
-                        round++);
+                compare(3, (double[]){ext[i], ext[j], ext[k]}, (double[]){ext[k], ext[i], ext[j]},
+                        lo, hi, round++);
             }
     /* a window at the extremes, and one of subnormal size */
     double blo[2] = {-DBL_MAX, -4.9e-324}, bhi[2] = {DBL_MAX, 4.9e-324};
     for (int i = 0; i < ne; i++)
         for (int j = 0; j < ne; j++)
-            compare(2, (double[]){ext[i], ext[j]}, (double[]){-ext[j], ext[(i + 1) % ne]}, blo, bhi, round++);
+            compare(2, (double[]){ext[i], ext[j]}, (double[]){-ext[j], ext[(i + 1) % ne]}, blo, bhi,
+                    round++);
     check_rng rng = {0x11e5c1f};
     /* short segments of integers and halves near a small window, as a
      * drawing program clips them */

@@ -24,7 +24,10 @@
 #include <stdio.h>
 
 static GEOSContextHandle_t geos;
-static void geos_message(const char *fmt, ...) { (void)fmt; }
+static void geos_message(const char *fmt, ...)
+{
+    (void)fmt;
+}
 
 #define QUADRANT_SEGMENTS 64
 
@@ -32,9 +35,15 @@ static const int geos_join[] = {GEOSBUF_JOIN_MITRE, GEOSBUF_JOIN_ROUND, 0, GEOSB
 static const char *const join_name[] = {"miter", "round", "square", "bevel"};
 
 /* The GEOS buffer's chord error at distance d. */
-static double geos_chord_error(double d) { return d * (1 - cos(M_PI / (4 * QUADRANT_SEGMENTS))); }
+static double geos_chord_error(double d)
+{
+    return d * (1 - cos(M_PI / (4 * QUADRANT_SEGMENTS)));
+}
 
-typedef struct comparison { double hausdorff, area_cg, area_geos, length; int valid; } comparison;
+typedef struct comparison {
+    double hausdorff, area_cg, area_geos, length;
+    int valid;
+} comparison;
 
 /* cg's result against GEOS's buffer of the same input. */
 static comparison compare(const cg_polygon_set *result, GEOSGeometry *expected)
@@ -100,7 +109,8 @@ static int definition_says(const cg_polygon_set *input, GEOSGeometry *geometry, 
     double x, y, distance;
     GEOSGeomGetX_r(geos, point, &x);
     GEOSGeomGetY_r(geos, point, &y);
-    GEOSGeometry *boundary = lines ? GEOSGeom_clone_r(geos, geometry) : GEOSBoundary_r(geos, geometry);
+    GEOSGeometry *boundary = lines ? GEOSGeom_clone_r(geos, geometry)
+                                   : GEOSBoundary_r(geos, geometry);
     GEOSDistance_r(geos, point, boundary, &distance);
     GEOSGeom_destroy_r(geos, boundary);
     double beside = edge_distance(input, !lines, x, y), d = fabs(delta);
@@ -131,8 +141,8 @@ static int definition_sides_with_cg(const cg_polygon_set *input, GEOSGeometry *g
     for (int k = 0; k < pieces && ok; k++) {
         GEOSGeometry *point = GEOSPointOnSurface_r(geos, GEOSGetGeometryN_r(geos, wide, k));
         int says = definition_says(input, geometry, lines, delta, reach, tolerance, point);
-        ok = says >= 0 && says == (GEOSContains_r(geos, mine, point) == 1) &&
-             says != (GEOSContains_r(geos, expected, point) == 1);
+        ok = says >= 0 && says == (GEOSContains_r(geos, mine, point) == 1)
+             && says != (GEOSContains_r(geos, expected, point) == 1);
         GEOSGeom_destroy_r(geos, point);
     }
     GEOSGeom_destroy_r(geos, wide);
@@ -177,8 +187,9 @@ static void check_against(const char *what, int trial, const cg_polygon_set *res
         grazing++;
         return;
     }
-    if (!close && definition_sides_with_cg(input, geometry, lines, result, expected, delta, reach,
-                                           tolerance)) {
+    if (!close
+        && definition_sides_with_cg(input, geometry, lines, result, expected, delta, reach,
+                                    tolerance)) {
         geos_overruled++;
         return;
     }
@@ -239,15 +250,16 @@ static void polygons_vs_geos(void)
         o.arc_tolerance = d / 1000;
         cg_status st = cg_offset(&input, delta, &o, 0, &result);
         CHECK_MSG(st == CG_OK, "trial %d: %s", trial, cg_status_str(st));
-        GEOSGeometry *expected =
-            GEOSBufferWithStyle_r(geos, g, delta, QUADRANT_SEGMENTS, GEOSBUF_CAP_ROUND,
-                                  geos_join[join], limit);
+        GEOSGeometry *expected = GEOSBufferWithStyle_r(geos, g, delta, QUADRANT_SEGMENTS,
+                                                       GEOSBUF_CAP_ROUND, geos_join[join], limit);
         double tolerance = o.arc_tolerance + geos_chord_error(d) + (convex ? 0 : 0.01 * d) + 1e-6;
         char what[64];
         snprintf(what, sizeof what, "%s %+g limit %.3g%s", join_name[join], delta, limit,
                  convex ? " convex" : "");
         long before = check_failed;
-        double reach = join == CG_OFFSET_JOIN_MITER ? limit * d : join == CG_OFFSET_JOIN_ROUND ? d : 1.5 * d;
+        double reach = join == CG_OFFSET_JOIN_MITER   ? limit * d
+                       : join == CG_OFFSET_JOIN_ROUND ? d
+                                                      : 1.5 * d;
         check_against(what, trial, &result, expected, tolerance, &input, g, 0, delta, reach);
         if (getenv("DUMP") && check_failed > before) {
             char *text = GEOSGeomToWKT_r(geos, g);
@@ -297,8 +309,10 @@ static void lines_vs_geos(void)
         long before = check_failed;
         check_against(what, trial, &result, expected,
                       o.arc_tolerance + geos_chord_error(d) + 0.01 * d + 1e-6, &input, line, 1, d,
-                      (join == CG_OFFSET_JOIN_MITER ? limit
-                       : join == CG_OFFSET_JOIN_ROUND && cap == 2 ? 1 : 1.5) * d);
+                      (join == CG_OFFSET_JOIN_MITER               ? limit
+                       : join == CG_OFFSET_JOIN_ROUND && cap == 2 ? 1
+                                                                  : 1.5)
+                          * d);
         if (getenv("DUMP") && check_failed > before) {
             char *text = GEOSGeomToWKT_r(geos, line);
             fprintf(stderr, "  input %s d %.17g limit %.17g\n", text, d, limit);
@@ -348,13 +362,14 @@ static void inflate_then_deflate(void)
         double bound = perimeter * (round ? 2 * o.arc_tolerance : 1e-6);
         CHECK_MSG(error <= bound, "trial %d (%s, d %g): area of difference %.3g > %.3g", trial,
                   round ? "round" : "miter", d, error, bound);
-        CHECK_MSG(simple.polygon_count == back.polygon_count &&
-                      simple.ring_count == back.ring_count,
+        CHECK_MSG(simple.polygon_count == back.polygon_count
+                      && simple.ring_count == back.ring_count,
                   "trial %d: %zu rings back from %zu", trial, back.ring_count, simple.ring_count);
         if (getenv("DUMP") && back.ring_count != simple.ring_count)
             for (size_t r = 0; r < back.ring_count; r++)
                 fprintf(stderr, "  ring %zu: %zu points, area %g\n", r,
-                        back.ring_start[r + 1] - back.ring_start[r], cg_polygon_set_ring_area(&back, r));
+                        back.ring_start[r + 1] - back.ring_start[r],
+                        cg_polygon_set_ring_area(&back, r));
     }
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&simple);
@@ -373,7 +388,8 @@ int main(int argc, char **argv)
     CHECK_GROUP(inflate_then_deflate);
     if (grazing)
         printf("%ld results within the tolerance of GEOS's as regions but not as boundaries "
-               "(grazing intersections)\n", grazing);
+               "(grazing intersections)\n",
+               grazing);
     if (geos_overruled)
         printf("%ld disagreements with GEOS settled for cg by the distance definition\n",
                geos_overruled);

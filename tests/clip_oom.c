@@ -56,9 +56,10 @@ static void random_star(check_rng *rng, cg_polygon_set64 *set, int n, double cx,
 
 static int same_result(const cg_polygon_set64 *a, const cg_polygon_set64 *b)
 {
-    return a->point_count == b->point_count && a->ring_count == b->ring_count &&
-           a->polygon_count == b->polygon_count &&
-           (!a->point_count || !memcmp(a->points, b->points, a->point_count * sizeof *a->points));
+    return a->point_count == b->point_count && a->ring_count == b->ring_count
+           && a->polygon_count == b->polygon_count
+           && (!a->point_count
+               || !memcmp(a->points, b->points, a->point_count * sizeof *a->points));
 }
 
 /* every allocation of op(a, b) failed in turn */
@@ -68,8 +69,8 @@ static void fail_each(const char *what, const cg_polygon_set64 *a, const cg_poly
         cg_polygon_set64 full = {0}, r = {0};
         fail_at = -1;
         allocations = 0;
-        CHECK(cg_clip_boolean64((cg_clip_op)op, a, CG_CLIP_NON_ZERO, b, CG_CLIP_NON_ZERO, &full) ==
-              CG_OK);
+        CHECK(cg_clip_boolean64((cg_clip_op)op, a, CG_CLIP_NON_ZERO, b, CG_CLIP_NON_ZERO, &full)
+              == CG_OK);
         long total = allocations, nomem = 0;
         for (long k = 1; k <= total; k++) {
             allocations = 0;
@@ -83,8 +84,8 @@ static void fail_each(const char *what, const cg_polygon_set64 *a, const cg_poly
                           "%s op %d, allocation %ld failed: the result is not empty", what, op, k);
             } else {
                 CHECK_MSG(st == CG_OK && same_result(&r, &full),
-                          "%s op %d, allocation %ld failed: status %d, or another result", what,
-                          op, k, (int)st);
+                          "%s op %d, allocation %ld failed: status %d, or another result", what, op,
+                          k, (int)st);
             }
             cg_polygon_set64_clear(&r);
         }

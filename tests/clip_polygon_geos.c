@@ -13,7 +13,10 @@
 #include <stdarg.h>
 
 static GEOSContextHandle_t geos;
-static void geos_message(const char *fmt, ...) { (void)fmt; }
+static void geos_message(const char *fmt, ...)
+{
+    (void)fmt;
+}
 
 /* A simple random region: stars (one with a hole) united by cg. */
 static void random_region(cg_polygon_set *region)
@@ -104,7 +107,8 @@ static void simplifications(void)
         int rdp = trial % 2 == 0;
         CHECK(cg_simplify(&region, 0, CG_CLIP_NON_ZERO,
                           rdp ? CG_SIMPLIFY_RDP : CG_SIMPLIFY_VISVALINGAM,
-                          rdp ? tolerance : tolerance * tolerance, 0, &simple) == CG_OK);
+                          rdp ? tolerance : tolerance * tolerance, 0, &simple)
+              == CG_OK);
         GEOSGeometry *mine = shapes_geos_polygons(geos, &simple);
         CHECK_MSG(GEOSisValid_r(geos, mine) == 1, "trial %d: simplified not valid", trial);
         if (rdp) {

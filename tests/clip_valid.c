@@ -184,8 +184,8 @@ int main(void)
         cg_polygon_set_clear(&a);
         cg_polygon_set_clear(&b);
     }
-    printf("GEOS validity: %ld results and %ld cleaned operands checked, %ld points compared\n", results,
-           cleaned, points);
+    printf("GEOS validity: %ld results and %ld cleaned operands checked, %ld points compared\n",
+           results, cleaned, points);
     GEOS_finish_r(h);
     return check_finish();
 }

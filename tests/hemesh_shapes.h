@@ -52,7 +52,8 @@ static inline void shape_face3(shape *s, uint32_t a, uint32_t b, uint32_t c)
 }
 
 /* A quad, or two triangles (a, b, c) and (a, c, d) when triangles is set. */
-static inline void shape_quad(shape *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d, int triangles)
+static inline void shape_quad(shape *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
+                              int triangles)
 {
     if (triangles) {
         shape_face3(s, a, b, c);
@@ -136,7 +137,8 @@ static inline cg_mesh *shape_torus(int n, int m, int triangles)
     for (int i = 0; i < n; i++)
         for (int j = 0; j < m; j++) {
             uint32_t a = (uint32_t)(i * m + j), b = (uint32_t)(((i + 1) % n) * m + j);
-            uint32_t c = (uint32_t)(((i + 1) % n) * m + (j + 1) % m), d = (uint32_t)(i * m + (j + 1) % m);
+            uint32_t c = (uint32_t)(((i + 1) % n) * m + (j + 1) % m),
+                     d = (uint32_t)(i * m + (j + 1) % m);
             shape_quad(&s, a, b, c, d, triangles);
         }
     return shape_finish(&s);
@@ -151,8 +153,9 @@ static inline cg_mesh *shape_voxels(const char *cells, int nx, int ny, int nz, i
     size_t lattice = (size_t)(nx + 1) * (ny + 1) * (nz + 1);
     uint32_t *id = (uint32_t *)malloc(lattice * sizeof *id);
     memset(id, 0xff, lattice * sizeof *id);
-#define VOX(x, y, z) ((x) >= 0 && (y) >= 0 && (z) >= 0 && (x) < nx && (y) < ny && (z) < nz \
-                      && cells[((z) * ny + (y)) * nx + (x)] == '#')
+#define VOX(x, y, z)                                                      \
+    ((x) >= 0 && (y) >= 0 && (z) >= 0 && (x) < nx && (y) < ny && (z) < nz \
+     && cells[((z)*ny + (y)) * nx + (x)] == '#')
     for (int z = 0; z < nz; z++)
         for (int y = 0; y < ny; y++)
             for (int x = 0; x < nx; x++) {
@@ -215,12 +218,12 @@ static inline cg_mesh *shape_icosphere(int level)
 {
     shape s = {0};
     double t = (1 + sqrt(5.0)) / 2;
-    double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                       {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    static const uint32_t f[20][3] = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
-                                      {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                      {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
-                                      {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    double v[12][3] = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                       {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    static const uint32_t f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
     for (int i = 0; i < 12; i++)
         shape_vertex(&s, v[i][0], v[i][1], v[i][2]);
     for (int i = 0; i < 20; i++)

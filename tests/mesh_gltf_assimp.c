@@ -76,7 +76,10 @@ static cg_vec3 transform_point(const struct aiMatrix4x4 *m, struct aiVector3D v)
                         m->c1 * (double)v.x + m->c2 * (double)v.y + m->c3 * (double)v.z + m->c4);
 }
 
-static double length3(cg_vec3 v) { return sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+static double length3(cg_vec3 v)
+{
+    return sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+}
 
 static int near3(cg_vec3 a, cg_vec3 b, double tolerance)
 {
@@ -87,7 +90,9 @@ static int near3(cg_vec3 a, cg_vec3 b, double tolerance)
 /* The normal matrix (inverse transpose of the upper 3x3) of m, as a cg_mat4. */
 static cg_mat4 normal_matrix(const struct aiMatrix4x4 *m)
 {
-    cg_mat4 a = {{{m->a1, m->a2, m->a3, 0}, {m->b1, m->b2, m->b3, 0}, {m->c1, m->c2, m->c3, 0},
+    cg_mat4 a = {{{m->a1, m->a2, m->a3, 0},
+                  {m->b1, m->b2, m->b3, 0},
+                  {m->c1, m->c2, m->c3, 0},
                   {0, 0, 0, 1}}};
     cg_mat4 inverse;
     if (cg_mat4_inverse(a, &inverse) != CG_OK)
@@ -98,11 +103,10 @@ static cg_mat4 normal_matrix(const struct aiMatrix4x4 *m)
 static void compare_mesh(walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *world)
 {
     const cg_mesh *m = w->mesh;
-    CHECK_MSG(w->vertex + am->mNumVertices <= m->vertex_count
-                  && w->face + am->mNumFaces <= m->face_count,
-              "%s: assimp has more vertices or faces than cg (%zu + %u of %zu, %zu + %u of %zu)",
-              w->name, w->vertex, am->mNumVertices, m->vertex_count, w->face, am->mNumFaces,
-              m->face_count);
+    CHECK_MSG(
+        w->vertex + am->mNumVertices <= m->vertex_count && w->face + am->mNumFaces <= m->face_count,
+        "%s: assimp has more vertices or faces than cg (%zu + %u of %zu, %zu + %u of %zu)", w->name,
+        w->vertex, am->mNumVertices, m->vertex_count, w->face, am->mNumFaces, m->face_count);
     if (w->vertex + am->mNumVertices > m->vertex_count || w->face + am->mNumFaces > m->face_count) {
         w->mismatch = 1;
         return;
@@ -156,10 +160,10 @@ static void compare_mesh(walk *w, const struct aiMesh *am, const struct aiMatrix
     }
     CHECK_MSG(bad_positions == 0, "%s: %ld of %u positions differ from assimp's", w->name,
               bad_positions, am->mNumVertices);
-    CHECK_MSG(bad_normals == 0, "%s: %ld of %u normals differ from assimp's", w->name,
-              bad_normals, am->mNumVertices);
-    CHECK_MSG(bad_texcoords == 0, "%s: %ld of %u texture coordinates differ from assimp's",
-              w->name, bad_texcoords, am->mNumVertices);
+    CHECK_MSG(bad_normals == 0, "%s: %ld of %u normals differ from assimp's", w->name, bad_normals,
+              am->mNumVertices);
+    CHECK_MSG(bad_texcoords == 0, "%s: %ld of %u texture coordinates differ from assimp's", w->name,
+              bad_texcoords, am->mNumVertices);
     CHECK_MSG(bad_faces == 0, "%s: %ld of %u triangles differ from assimp's", w->name, bad_faces,
               am->mNumFaces);
     CHECK_MSG(!am->mNormals == !m->normals || !am->mNormals,
@@ -222,15 +226,14 @@ static void try_model(const char *path)
         CHECK_MSG(s != CG_OK && !mesh, "%s: a broken model loaded", relative);
         CHECK_MSG(s != CG_OK && strncmp(err.message, path, strlen(path)) == 0
                       && strstr(err.message, says) && !strchr(err.message, '\n'),
-                  "%s: the message '%s' should name the file and say '%s'", relative,
-                  err.message, says);
+                  "%s: the message '%s' should name the file and say '%s'", relative, err.message,
+                  says);
         printf("error %s\n", err.message);
     } else {
         CHECK_MSG(s == CG_OK, "%s: a valid model is refused: %s", relative, err.message);
         if (s == CG_OK) {
             cg_error check;
-            CHECK_MSG(cg_mesh_validate(mesh, &check) == CG_OK, "%s: %s", relative,
-                      check.message);
+            CHECK_MSG(cg_mesh_validate(mesh, &check) == CG_OK, "%s: %s", relative, check.message);
             compare_with_assimp(path, relative, mesh);
         }
     }

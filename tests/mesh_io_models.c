@@ -18,8 +18,9 @@ static int loaded, rejected, failures;
 static int wanted(const char *name)
 {
     const char *dot = strrchr(name, '.');
-    return dot && (strcasecmp(dot, ".obj") == 0 || strcasecmp(dot, ".ply") == 0
-                   || strcasecmp(dot, ".off") == 0 || strcasecmp(dot, ".stl") == 0);
+    return dot
+           && (strcasecmp(dot, ".obj") == 0 || strcasecmp(dot, ".ply") == 0
+               || strcasecmp(dot, ".off") == 0 || strcasecmp(dot, ".stl") == 0);
 }
 
 static void try_file(const char *path)
@@ -100,7 +101,6 @@ int main(int argc, char **argv)
         return 77;
     }
     walk(models);
-    printf("%d loaded, %d rejected with a clear error, %d failures\n", loaded, rejected,
-           failures);
+    printf("%d loaded, %d rejected with a clear error, %d failures\n", loaded, rejected, failures);
     return failures || loaded + rejected == 0 ? 1 : 0;
 }

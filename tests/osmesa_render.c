@@ -90,8 +90,8 @@ static void compare(const char *path, cg_vec3 view_direction)
                 cg_vec3 p = mesh->positions[mesh->face_indices[i]];
                 cg_vec3 v = cg_vec3_normalize(cg_vec3_sub(camera.eye, p));
                 cg_vec3 shade = cg_light_shade(p, normals[i], v, &material, lights, 2);
-                cg_rgba8 e = cg_linear_to_rgba8((cg_rgbaf){(float)shade.x, (float)shade.y,
-                                                           (float)shade.z, 1});
+                cg_rgba8 e = cg_linear_to_rgba8(
+                    (cg_rgbaf){(float)shade.x, (float)shade.y, (float)shade.z, 1});
                 glColor3ub(e.r, e.g, e.b);
                 glVertex3d(p.x, p.y, p.z);
             }
@@ -118,7 +118,8 @@ static void compare(const char *path, cg_vec3 view_direction)
            path, agree * 100, mean, both);
     CHECK_MSG(agree >= 0.995, "%s: masks agree on only %.3f%%", path, agree * 100);
     CHECK_MSG(mean < 2, "%s: mean colour difference %.3f/255", path, mean);
-    CHECK_MSG(both > WIDTH * HEIGHT / 10, "%s: the mesh covers too little (%ld pixels)", path, both);
+    CHECK_MSG(both > WIDTH * HEIGHT / 10, "%s: the mesh covers too little (%ld pixels)", path,
+              both);
     OSMesaDestroyContext(context);
     free(buffer);
     free(normals);

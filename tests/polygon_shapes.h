@@ -18,11 +18,15 @@ static inline double shapes_uniform(void)
     shapes_state ^= shapes_state >> 27;
     return (double)((shapes_state * 2685821657736338717ull) >> 11) / 9007199254740992.0;
 }
-static inline double shapes_between(double lo, double hi) { return lo + (hi - lo) * shapes_uniform(); }
+static inline double shapes_between(double lo, double hi)
+{
+    return lo + (hi - lo) * shapes_uniform();
+}
 
 /* A star-shaped ring of n vertices around c: radius between r_lo and r_hi at
  * sorted random angles; counter-clockwise, or clockwise when reversed. */
-static inline void shapes_star(cg_vec2 *out, int n, cg_vec2 c, double r_lo, double r_hi, int reversed)
+static inline void shapes_star(cg_vec2 *out, int n, cg_vec2 c, double r_lo, double r_hi,
+                               int reversed)
 {
     double *angles = malloc((size_t)n * sizeof *angles);
     double a = 0;
@@ -60,7 +64,7 @@ static inline void shapes_convex(cg_vec2 *out, int n, cg_vec2 c, double r, int r
 #include <geos_c.h>
 
 static inline GEOSGeometry *shapes_geos_ring(GEOSContextHandle_t h, const cg_vec2 *p, size_t n,
-                                            int closed)
+                                             int closed)
 {
     unsigned count = (unsigned)n + (closed ? 1 : 0);
     GEOSCoordSequence *s = GEOSCoordSeq_create_r(h, count, 2);

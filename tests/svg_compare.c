@@ -91,7 +91,6 @@ int main(int argc, char **argv)
     double rate = 100.0 * passed / compared;
     printf("svg_compare: %d of %d icons within rsvg's difference + %.2f (%.1f%%; %d not "
            "rendered by resvg); mean difference from resvg: cg %.3f, rsvg %.3f codes\n",
-           passed, compared, margin, rate, unrendered, cg_total / compared,
-           rsvg_total / compared);
+           passed, compared, margin, rate, unrendered, cg_total / compared, rsvg_total / compared);
     return rate >= 99.0 ? 0 : 1;
 }

@@ -21,8 +21,8 @@ int main(int argc, char **argv)
     int failed = 0;
     for (int algorithm = CG_SCENE_ZBUFFER; algorithm <= CG_SCENE_RAYTRACE && !failed; algorithm++) {
         cg_image *image = NULL;
-        failed = cg_scene_render_with(scene, (cg_scene_algorithm)algorithm, &image, &err) != CG_OK ||
-                 cg_image_write(image, argv[2], CG_FILE_UNKNOWN, &err) != CG_OK;
+        failed = cg_scene_render_with(scene, (cg_scene_algorithm)algorithm, &image, &err) != CG_OK
+                 || cg_image_write(image, argv[2], CG_FILE_UNKNOWN, &err) != CG_OK;
         cg_image_free(image);
     }
     cg_scene_free(scene);
@@ -34,10 +34,10 @@ int main(int argc, char **argv)
     cg_vec2 square[4] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
     cg_vec2 shifted[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
     cg_polygon_set a = {0}, b = {0}, result = {0};
-    if (cg_polygon_set_add_ring(&a, square, 4, 1) != CG_OK ||
-        cg_polygon_set_add_ring(&b, shifted, 4, 1) != CG_OK ||
-        cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 1024, &result) !=
-            CG_OK)
+    if (cg_polygon_set_add_ring(&a, square, 4, 1) != CG_OK
+        || cg_polygon_set_add_ring(&b, shifted, 4, 1) != CG_OK
+        || cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 1024, &result)
+               != CG_OK)
         return 1;
     double area = cg_polygon_set_area(&result);
     cg_polygon_set_clear(&a);

@@ -33,8 +33,12 @@ static int covers(const screen_triangle *t, int x, int y, int *on_edge, int *nea
     memcpy(Y, t->y, sizeof Y);
     long long area = edge(X[0], Y[0], X[1], Y[1], X[2], Y[2]);
     if (area < 0) {
-        long long s = X[1]; X[1] = X[2]; X[2] = s;
-        s = Y[1]; Y[1] = Y[2]; Y[2] = s;
+        long long s = X[1];
+        X[1] = X[2];
+        X[2] = s;
+        s = Y[1];
+        Y[1] = Y[2];
+        Y[2] = s;
     }
     long long px = (long long)x * 256 + 128, py = (long long)y * 256 + 128;
     int inside = 1;
@@ -43,7 +47,8 @@ static int covers(const screen_triangle *t, int x, int y, int *on_edge, int *nea
         long long e = edge(X[i], Y[i], X[j], Y[j], px, py);
         if (e == 0)
             *on_edge = 1;
-        if ((double)e * e <= (double)((X[j] - X[i]) * (X[j] - X[i]) + (Y[j] - Y[i]) * (Y[j] - Y[i])))
+        if ((double)e * e
+            <= (double)((X[j] - X[i]) * (X[j] - X[i]) + (Y[j] - Y[i]) * (Y[j] - Y[i])))
             *near_edge = 1;
         if (e < 0) {
             inside = 0;
@@ -68,8 +73,7 @@ static cg_camera random_camera(check_rng *rng, int orthographic)
         c.up = cg_vec3_make(check_rng_range(rng, -1, 1), check_rng_range(rng, -1, 1),
                             check_rng_range(rng, -1, 1));
         double dl = cg_vec3_length(d);
-        if (dl > 0.2 && cg_vec3_length(cg_vec3_cross(d, c.up)) > 0.2 * dl * cg_vec3_length(c.up))
-        {
+        if (dl > 0.2 && cg_vec3_length(cg_vec3_cross(d, c.up)) > 0.2 * dl * cg_vec3_length(c.up)) {
             c.target = cg_vec3_add(c.eye, cg_vec3_scale(d, check_rng_range(rng, 0.5, 50) / dl));
             break;
         }
@@ -295,8 +299,9 @@ static void test_frame_tight(void)
                                                 check_rng_range(&rng, 0.1, 50)));
         cg_vec3 direction = cg_vec3_normalize(cg_vec3_sub(c.target, c.eye));
         CHECK(cg_camera_frame(&c, a, b, aspect) == CG_OK);
-        CHECK(cg_vec3_length(cg_vec3_sub(cg_vec3_normalize(cg_vec3_sub(c.target, c.eye)),
-                                         direction)) < 1e-9);
+        CHECK(
+            cg_vec3_length(cg_vec3_sub(cg_vec3_normalize(cg_vec3_sub(c.target, c.eye)), direction))
+            < 1e-9);
         cg_mat4 view, projection;
         CHECK(cg_camera_view(&c, &view) == CG_OK);
         CHECK(cg_camera_projection(&c, aspect, &projection) == CG_OK);
@@ -308,8 +313,8 @@ static void test_frame_tight(void)
             cg_vec3 p = {k & 1 ? b.x : a.x, k & 2 ? b.y : a.y, k & 4 ? b.z : a.z};
             int visible;
             cg_vec3 n = cg_project_point(vp, p, &visible);
-            inside &= visible && fabs(n.x) <= 1 + 1e-9 && fabs(n.y) <= 1 + 1e-9
-                   && n.z >= -1 - 1e-9 && n.z <= 1 + 1e-9;
+            inside &= visible && fabs(n.x) <= 1 + 1e-9 && fabs(n.y) <= 1 + 1e-9 && n.z >= -1 - 1e-9
+                      && n.z <= 1 + 1e-9;
             nearest = fmin(nearest, -cg_mat4_transform_point(view, p).z);
             ex = fmax(ex, fabs(n.x));
             ey = fmax(ey, fabs(n.y));

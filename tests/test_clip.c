@@ -11,8 +11,13 @@
 
 /* exact clip of an integer segment by an integer window: the parameter
  * interval [t0, t1] as fractions (num / den, den > 0) */
-typedef struct frac { long long n, d; } frac;
-static int frac_less(frac a, frac b) { return a.n * b.d < b.n * a.d; }
+typedef struct frac {
+    long long n, d;
+} frac;
+static int frac_less(frac a, frac b)
+{
+    return a.n * b.d < b.n * a.d;
+}
 
 static int exact_clip(const long long w[4], const long long s[4], double out[4])
 {
@@ -86,18 +91,19 @@ static void lines(void)
             divbyzero++;
         CHECK(cg_clip_line_liang_barsky(win, &b0, &b1, &acc_lb) == CG_OK);
         CHECK_MSG(acc_cs == expect && acc_lb == expect,
-                  "window %lld %lld %lld %lld segment %lld %lld %lld %lld: cs %d lb %d exact %d", w[0],
-                  w[1], w[2], w[3], s[0], s[1], s[2], s[3], acc_cs, acc_lb, expect);
+                  "window %lld %lld %lld %lld segment %lld %lld %lld %lld: cs %d lb %d exact %d",
+                  w[0], w[1], w[2], w[3], s[0], s[1], s[2], s[3], acc_cs, acc_lb, expect);
         if (expect && acc_cs == 1 && acc_lb == 1) {
             /* the same visible part, in the segment's direction */
             double tol = 1e-9;
-            int ok = fabs(a0.x - want[0]) <= tol && fabs(a0.y - want[1]) <= tol &&
-                     fabs(a1.x - want[2]) <= tol && fabs(a1.y - want[3]) <= tol &&
-                     fabs(b0.x - want[0]) <= tol && fabs(b0.y - want[1]) <= tol &&
-                     fabs(b1.x - want[2]) <= tol && fabs(b1.y - want[3]) <= tol;
-            CHECK_MSG(ok, "segment %lld %lld %lld %lld: cs %g %g %g %g lb %g %g %g %g exact %g %g %g %g",
-                      s[0], s[1], s[2], s[3], a0.x, a0.y, a1.x, a1.y, b0.x, b0.y, b1.x, b1.y, want[0],
-                      want[1], want[2], want[3]);
+            int ok = fabs(a0.x - want[0]) <= tol && fabs(a0.y - want[1]) <= tol
+                     && fabs(a1.x - want[2]) <= tol && fabs(a1.y - want[3]) <= tol
+                     && fabs(b0.x - want[0]) <= tol && fabs(b0.y - want[1]) <= tol
+                     && fabs(b1.x - want[2]) <= tol && fabs(b1.y - want[3]) <= tol;
+            CHECK_MSG(
+                ok, "segment %lld %lld %lld %lld: cs %g %g %g %g lb %g %g %g %g exact %g %g %g %g",
+                s[0], s[1], s[2], s[3], a0.x, a0.y, a1.x, a1.y, b0.x, b0.y, b1.x, b1.y, want[0],
+                want[1], want[2], want[3]);
             agree += ok;
         }
     }
@@ -139,8 +145,10 @@ static void lines3(void)
     cg_box3 box = {{-1, -2, -3}, {2, 1, 0.5}};
     long both = 0;
     for (int it = 0; it < 50000; it++) {
-        cg_vec3 a = {check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4)};
-        cg_vec3 b = {check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4)};
+        cg_vec3 a = {check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4),
+                     check_rng_range(&rng, -4, 4)};
+        cg_vec3 b = {check_rng_range(&rng, -4, 4), check_rng_range(&rng, -4, 4),
+                     check_rng_range(&rng, -4, 4)};
         if (it % 7 == 1)
             b.z = a.z;
         if (it % 11 == 2)
@@ -159,7 +167,8 @@ static void lines3(void)
             CHECK_MSG(c1 == 1 && c2 == 1, "3D segment visible but cs %d lb %d", c1, c2);
         if (c1 == 1 && c2 == 1) {
             both++;
-            CHECK(cg_vec3_length(cg_vec3_sub(a1, a2)) < 1e-9 && cg_vec3_length(cg_vec3_sub(b1, b2)) < 1e-9);
+            CHECK(cg_vec3_length(cg_vec3_sub(a1, a2)) < 1e-9
+                  && cg_vec3_length(cg_vec3_sub(b1, b2)) < 1e-9);
             CHECK(cg_clip_rcode3(box, a2) == 0 && cg_clip_rcode3(box, b2) == 0);
         } else {
             CHECK_MSG(c1 == c2, "3D cs %d lb %d", c1, c2);
@@ -173,7 +182,8 @@ static void lines3(void)
 static int star(check_rng *rng, cg_vec2 *p, int n, double cx, double cy, double r0, double r1)
 {
     for (int i = 0; i < n; i++) {
-        double a = 2 * CG_PI * (i + check_rng_range(rng, 0, 0.8)) / n, r = check_rng_range(rng, r0, r1);
+        double a = 2 * CG_PI * (i + check_rng_range(rng, 0, 0.8)) / n,
+               r = check_rng_range(rng, r0, r1);
         p[i] = cg_vec2_make(cx + r * cos(a), cy + r * sin(a));
     }
     return n;
@@ -203,7 +213,9 @@ static void sutherland_hodgman(void)
         cg_polygon_set s = {0}, w = {0}, r = {0}, o = {0};
         cg_polygon_set_add_ring(&s, sub, (size_t)n, 1);
         cg_polygon_set_add_ring(&w, win, (size_t)m, 1);
-        CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &s, CG_CLIP_NON_ZERO, &w, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK(
+            cg_clip_boolean(CG_CLIP_INTERSECTION, &s, CG_CLIP_NON_ZERO, &w, CG_CLIP_NON_ZERO, 0, &r)
+            == CG_OK);
         if (cnt)
             cg_polygon_set_add_ring(&o, out, cnt, 1);
         CHECK_NEAR(cg_polygon_set_area(&o), cg_polygon_set_area(&r), 1e-8);
@@ -221,7 +233,8 @@ static void sutherland_hodgman(void)
         cg_polygon_set_clear(&o);
     }
     /* the notes' Fig. 11.4 situation: a concave 'W' against a pentagon */
-    cg_vec2 W[] = {{0, 4}, {1, 0}, {2, 3}, {3, 0}, {4, 4}, {3.3, 4}, {3, 2}, {2, 5}, {1, 2}, {0.7, 4}};
+    cg_vec2 W[] = {{0, 4},   {1, 0}, {2, 3}, {3, 0}, {4, 4},
+                   {3.3, 4}, {3, 2}, {2, 5}, {1, 2}, {0.7, 4}};
     cg_vec2 pent[] = {{0.5, 1}, {3.5, 1}, {4, 3}, {2, 4.2}, {0, 3}};
     cg_vec2 *out = NULL;
     size_t cnt = 0;
@@ -238,7 +251,8 @@ static void sutherland_hodgman(void)
     CHECK(out == NULL && cnt == 0);
     /* subject entirely outside */
     cg_vec2 far[] = {{100, 100}, {101, 100}, {101, 101}};
-    CHECK(cg_clip_sutherland_hodgman(far, 3, pent, 5, &out, &cnt) == CG_OK && cnt == 0 && out == NULL);
+    CHECK(cg_clip_sutherland_hodgman(far, 3, pent, 5, &out, &cnt) == CG_OK && cnt == 0
+          && out == NULL);
 
     /* 3D: a polygon in z = 1 against vertical planes equals the 2D clip */
     for (int it = 0; it < 200; it++) {
@@ -257,7 +271,8 @@ static void sutherland_hodgman(void)
         CHECK(cg_clip_sutherland_hodgman(sub, (size_t)n, sq, 4, &o2, &c2) == CG_OK);
         CHECK_EQ_INT(c3, c2);
         for (size_t i = 0; i < c3 && i < c2; i++)
-            CHECK(fabs(o3[i].x - o2[i].x) < 1e-12 && fabs(o3[i].y - o2[i].y) < 1e-12 && o3[i].z == 1);
+            CHECK(fabs(o3[i].x - o2[i].x) < 1e-12 && fabs(o3[i].y - o2[i].y) < 1e-12
+                  && o3[i].z == 1);
         free(o3);
         free(o2);
     }
@@ -275,7 +290,8 @@ static void weiler_atherton(void)
         if (it % 4 == 3) {
             /* on a coarse grid: shared vertices and edges */
             double x0 = (double)check_rng_int(&rng, 0, 3), y0 = (double)check_rng_int(&rng, 0, 3);
-            double x1 = x0 + (double)check_rng_int(&rng, 1, 3), y1 = y0 + (double)check_rng_int(&rng, 1, 3);
+            double x1 = x0 + (double)check_rng_int(&rng, 1, 3),
+                   y1 = y0 + (double)check_rng_int(&rng, 1, 3);
             cg_vec2 r1[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
             memcpy(sub, r1, sizeof r1);
             n = 4;
@@ -288,7 +304,8 @@ static void weiler_atherton(void)
             m = 4;
         } else {
             star(&rng, sub, n, 0, 0, 0.2, 1.5);
-            star(&rng, win, m, check_rng_range(&rng, -0.8, 0.8), check_rng_range(&rng, -0.8, 0.8), 0.2, 1.5);
+            star(&rng, win, m, check_rng_range(&rng, -0.8, 0.8), check_rng_range(&rng, -0.8, 0.8),
+                 0.2, 1.5);
             if (it % 2)
                 for (int i = 0; i < m / 2; i++) {
                     cg_vec2 t = win[i];
@@ -300,13 +317,15 @@ static void weiler_atherton(void)
         CHECK(cg_clip_weiler_atherton(sub, (size_t)n, win, (size_t)m, &wa) == CG_OK);
         cg_polygon_set_add_ring(&s, sub, (size_t)n, 1);
         cg_polygon_set_add_ring(&w, win, (size_t)m, 1);
-        CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &s, CG_CLIP_NON_ZERO, &w, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK(
+            cg_clip_boolean(CG_CLIP_INTERSECTION, &s, CG_CLIP_NON_ZERO, &w, CG_CLIP_NON_ZERO, 0, &r)
+            == CG_OK);
         CHECK_MSG(fabs(cg_polygon_set_area(&wa) - cg_polygon_set_area(&r)) <= 1e-6,
                   "round %d: Weiler-Atherton %.9f, boolean %.9f", it, cg_polygon_set_area(&wa),
                   cg_polygon_set_area(&r));
         /* as many pieces as the boolean operation finds */
-        CHECK_MSG(wa.polygon_count == r.polygon_count || it % 4 == 3, "round %d: %zu pieces, boolean %zu", it,
-                  wa.polygon_count, r.polygon_count);
+        CHECK_MSG(wa.polygon_count == r.polygon_count || it % 4 == 3,
+                  "round %d: %zu pieces, boolean %zu", it, wa.polygon_count, r.polygon_count);
         split += wa.polygon_count > 1;
         cg_polygon_set_clear(&wa);
         cg_polygon_set_clear(&s);
@@ -330,7 +349,8 @@ static cg_mesh *sphere(int slices, int stacks)
 {
     cg_mesh *m = NULL;
     size_t nv = (size_t)slices * (stacks - 1) + 2, nf = (size_t)slices * (stacks - 1) * 2;
-    if (cg_mesh_create(&m, nv, nf, nf * 3, CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS) != CG_OK)
+    if (cg_mesh_create(&m, nv, nf, nf * 3, CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS)
+        != CG_OK)
         return NULL;
     size_t v = 0;
     m->positions[v++] = cg_vec3_make(0, 0, 1);
@@ -343,16 +363,16 @@ static cg_mesh *sphere(int slices, int stacks)
     for (size_t i = 0; i < nv; i++) {
         cg_vec3 p = m->positions[i];
         m->normals[i] = p;
-        m->texcoords[i] = cg_vec2_make(p.x, p.y);                  /* linear in position */
+        m->texcoords[i] = cg_vec2_make(p.x, p.y); /* linear in position */
         m->colors[i] = (cg_rgbaf){(float)p.z, (float)(p.x + p.y), 0.5f, 1};
     }
     size_t f = 0, k = 0;
-#define TRI(a, b, c)                                                           \
-    do {                                                                       \
-        m->face_indices[k++] = (uint32_t)(a);                                  \
-        m->face_indices[k++] = (uint32_t)(b);                                  \
-        m->face_indices[k++] = (uint32_t)(c);                                  \
-        m->face_offsets[++f] = (uint32_t)k;                                    \
+#define TRI(a, b, c)                          \
+    do {                                      \
+        m->face_indices[k++] = (uint32_t)(a); \
+        m->face_indices[k++] = (uint32_t)(b); \
+        m->face_indices[k++] = (uint32_t)(c); \
+        m->face_offsets[++f] = (uint32_t)k;   \
     } while (0)
     for (int j = 0; j < slices; j++)
         TRI(0, 1 + j, 1 + (j + 1) % slices);
@@ -373,9 +393,9 @@ static cg_mesh *sphere(int slices, int stacks)
 
 static int on_box_face(cg_box3 b, cg_vec3 p, cg_vec3 q)
 {
-    return (p.x == b.lo.x && q.x == b.lo.x) || (p.x == b.hi.x && q.x == b.hi.x) ||
-           (p.y == b.lo.y && q.y == b.lo.y) || (p.y == b.hi.y && q.y == b.hi.y) ||
-           (p.z == b.lo.z && q.z == b.lo.z) || (p.z == b.hi.z && q.z == b.hi.z);
+    return (p.x == b.lo.x && q.x == b.lo.x) || (p.x == b.hi.x && q.x == b.hi.x)
+           || (p.y == b.lo.y && q.y == b.lo.y) || (p.y == b.hi.y && q.y == b.hi.y)
+           || (p.z == b.lo.z && q.z == b.lo.z) || (p.z == b.hi.z && q.z == b.hi.z);
 }
 
 static int cmp_edge(const void *a, const void *b)
@@ -390,7 +410,9 @@ static void mesh_box(void)
     CHECK(m != NULL);
     if (!m)
         return;
-    cg_box3 boxes[3] = {{{-0.5, -2, -2}, {2, 0.3, 0.6}}, {{-0.7, -0.6, -0.5}, {0.6, 0.7, 0.4}}, {{-2, -2, -2}, {2, 2, 2}}};
+    cg_box3 boxes[3] = {{{-0.5, -2, -2}, {2, 0.3, 0.6}},
+                        {{-0.7, -0.6, -0.5}, {0.6, 0.7, 0.4}},
+                        {{-2, -2, -2}, {2, 2, 2}}};
     for (int bi = 0; bi < 3; bi++) {
         cg_box3 box = boxes[bi];
         cg_mesh *c = NULL;
@@ -420,8 +442,8 @@ static void mesh_box(void)
         for (size_t i = 0; i < ne; i++) {
             uint32_t a = (uint32_t)(e[i] >> 32), b = (uint32_t)e[i];
             uint64_t rev = ((uint64_t)b << 32) | a;
-            if (!bsearch(&rev, e, ne, sizeof *e, cmp_edge) &&
-                !on_box_face(box, c->positions[a], c->positions[b]))
+            if (!bsearch(&rev, e, ne, sizeof *e, cmp_edge)
+                && !on_box_face(box, c->positions[a], c->positions[b]))
                 open++;
         }
         CHECK_EQ_INT(open, 0);
@@ -445,15 +467,19 @@ static void frustum(void)
 {
     cg_mat4 proj, view;
     CHECK(cg_proj_perspective(cg_radians(60), 1.5, 0.5, 50, &proj) == CG_OK);
-    CHECK(cg_view_look_at(cg_vec3_make(1, 2, 10), cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view) == CG_OK);
+    CHECK(
+        cg_view_look_at(cg_vec3_make(1, 2, 10), cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view)
+        == CG_OK);
     cg_mat4 pv = cg_mat4_mul(proj, view);
     cg_plane planes[6];
     cg_frustum_planes(pv, planes);
     check_rng rng = {2024};
     int counts[3] = {0, 0, 0};
     for (int it = 0; it < 5000; it++) {
-        cg_vec3 c = {check_rng_range(&rng, -30, 30), check_rng_range(&rng, -30, 30), check_rng_range(&rng, -50, 15)};
-        cg_vec3 h = {check_rng_range(&rng, 0.01, 4), check_rng_range(&rng, 0.01, 4), check_rng_range(&rng, 0.01, 4)};
+        cg_vec3 c = {check_rng_range(&rng, -30, 30), check_rng_range(&rng, -30, 30),
+                     check_rng_range(&rng, -50, 15)};
+        cg_vec3 h = {check_rng_range(&rng, 0.01, 4), check_rng_range(&rng, 0.01, 4),
+                     check_rng_range(&rng, 0.01, 4)};
         cg_box3 box = {cg_vec3_sub(c, h), cg_vec3_add(c, h)};
         cg_cull cull = cg_frustum_cull_box(planes, box);
         counts[cull]++;

@@ -14,14 +14,10 @@ __extension__ typedef __int128 i128;
 static int fill_rule(cg_clip_fill f, long w)
 {
     switch (f) {
-    case CG_CLIP_EVEN_ODD:
-        return (int)(w & 1);
-    case CG_CLIP_NON_ZERO:
-        return w != 0;
-    case CG_CLIP_POSITIVE:
-        return w > 0;
-    default:
-        return w < 0;
+    case CG_CLIP_EVEN_ODD: return (int)(w & 1);
+    case CG_CLIP_NON_ZERO: return w != 0;
+    case CG_CLIP_POSITIVE: return w > 0;
+    default: return w < 0;
     }
 }
 
@@ -71,14 +67,10 @@ static double dist_to_set(const cg_polygon_set64 *set, double px, double py)
 static int inside_op(cg_clip_op op, int a, int b)
 {
     switch (op) {
-    case CG_CLIP_INTERSECTION:
-        return a && b;
-    case CG_CLIP_UNION:
-        return a || b;
-    case CG_CLIP_DIFFERENCE:
-        return a && !b;
-    default:
-        return a != b;
+    case CG_CLIP_INTERSECTION: return a && b;
+    case CG_CLIP_UNION: return a || b;
+    case CG_CLIP_DIFFERENCE: return a && !b;
+    default: return a != b;
     }
 }
 
@@ -101,8 +93,10 @@ static int segments_conflict(cg_point64 a0, cg_point64 a1, cg_point64 b0, cg_poi
     int ax = llabs(a1.x - a0.x) >= llabs(a1.y - a0.y);
     int64_t p0 = ax ? a0.x : a0.y, p1 = ax ? a1.x : a1.y;
     int64_t q0 = ax ? b0.x : b0.y, q1 = ax ? b1.x : b1.y;
-    int64_t lo = (p0 < p1 ? p0 : p1) > (q0 < q1 ? q0 : q1) ? (p0 < p1 ? p0 : p1) : (q0 < q1 ? q0 : q1);
-    int64_t hi = (p0 > p1 ? p0 : p1) < (q0 > q1 ? q0 : q1) ? (p0 > p1 ? p0 : p1) : (q0 > q1 ? q0 : q1);
+    int64_t lo = (p0 < p1 ? p0 : p1) > (q0 < q1 ? q0 : q1) ? (p0 < p1 ? p0 : p1)
+                                                           : (q0 < q1 ? q0 : q1);
+    int64_t hi = (p0 > p1 ? p0 : p1) < (q0 > q1 ? q0 : q1) ? (p0 > p1 ? p0 : p1)
+                                                           : (q0 > q1 ? q0 : q1);
     return hi > lo;
 }
 
@@ -143,7 +137,9 @@ static int result_is_simple(const cg_polygon_set64 *r)
 /* result_is_simple for results of many edges: each edge is noted in the
  * cells of a grid that its bounding box covers, and the pairs sharing a
  * cell are checked */
-typedef struct cell_edge { size_t cell, edge; } cell_edge;
+typedef struct cell_edge {
+    size_t cell, edge;
+} cell_edge;
 
 static int cmp_cell_edge(const void *a, const void *b)
 {
@@ -164,7 +160,8 @@ static int large_result_is_simple(const cg_polygon_set64 *r)
         x1 = A[i].x > x1 ? A[i].x : x1;
         y1 = A[i].y > y1 ? A[i].y : y1;
     }
-    int64_t side = m ? (int64_t)sqrt((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) / (double)m) + 1 : 1;
+    int64_t side = m ? (int64_t)sqrt((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) / (double)m) + 1
+                     : 1;
     size_t cols = m ? (size_t)((x1 - x0) / side) + 1 : 1, n = 0, cap = 4 * m + 16;
     cell_edge *ce = malloc(cap * sizeof *ce);
     int ok = 1;
@@ -232,13 +229,15 @@ static void random_ring(check_rng *rng, cg_polygon_set64 *set, int n, int grid, 
     cg_point64 pts[64];
     n = n > 64 ? 64 : n;
     for (int i = 0; i < n; i++)
-        pts[i] = (cg_point64){check_rng_int(rng, 0, grid) * scale, check_rng_int(rng, 0, grid) * scale};
+        pts[i] = (cg_point64){check_rng_int(rng, 0, grid) * scale,
+                              check_rng_int(rng, 0, grid) * scale};
     cg_polygon_set64_add_ring(set, pts, (size_t)n, 1);
 }
 
 static void fixed_cases(void)
 {
-    cg_point64 A[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, B[] = {{5, 5}, {15, 5}, {15, 15}, {5, 15}};
+    cg_point64 A[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+               B[] = {{5, 5}, {15, 5}, {15, 15}, {5, 15}};
     cg_point64 C[] = {{10, 10}, {20, 10}, {20, 20}, {10, 20}};
     cg_polygon_set64 a = {0}, b = {0}, c = {0}, r = {0};
     cg_polygon_set64_add_ring(&a, A, 4, 1);
@@ -246,20 +245,23 @@ static void fixed_cases(void)
     cg_polygon_set64_add_ring(&c, C, 4, 1);
     const double expect[4] = {25, 175, 75, 150};
     for (int op = 0; op < 4; op++) {
-        CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+        CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r)
+              == CG_OK);
         CHECK_NEAR(cg_polygon_set64_area(&r), expect[op], 0);
     }
     /* xor of overlapping squares: two L shapes touching at two corners */
     CHECK_EQ_INT(r.polygon_count, 2);
     /* squares touching at a corner stay two polygons */
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &c, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &c, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.polygon_count, 2);
     CHECK_NEAR(cg_polygon_set64_area(&r), 200, 0);
     /* a bow tie under even-odd: two triangles */
     cg_point64 T[] = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
     cg_polygon_set64 t = {0};
     cg_polygon_set64_add_ring(&t, T, 4, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.polygon_count, 2);
     CHECK_NEAR(cg_polygon_set64_area(&r), 50, 0);
     /* two slivers under a unit wide that cross near (45, 13): rounding keeps
@@ -268,18 +270,22 @@ static void fixed_cases(void)
     cg_point64 S[] = {{0, 35}, {51, 10}, {3, 38}, {50, 10}};
     cg_polygon_set64 sl = {0};
     cg_polygon_set64_add_ring(&sl, S, 4, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &sl, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &sl, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 23.73, 2);
     cg_polygon_set64_clear(&sl);
     /* a clockwise bow tie half: positive keeps only the counter-clockwise lobe */
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_POSITIVE, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_POSITIVE, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 25, 0);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_NEGATIVE, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &t, CG_CLIP_NEGATIVE, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 25, 0);
     /* a hole: outer counter-clockwise, inner clockwise */
     cg_point64 H[] = {{2, 2}, {2, 8}, {8, 8}, {8, 2}};
     cg_polygon_set64_add_ring(&a, H, 4, 0);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.polygon_count, 1);
     CHECK_EQ_INT(r.ring_count, 2);
     CHECK_NEAR(cg_polygon_set64_area(&r), 64, 0);
@@ -288,30 +294,37 @@ static void fixed_cases(void)
     cg_polygon_set64 d = {0};
     cg_polygon_set64_add_ring(&d, A, 4, 1);
     cg_polygon_set64_add_ring(&d, A, 4, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.ring_count, 0);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &d, CG_CLIP_NON_ZERO, NULL, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
     /* empty, a point, collinear points: empty results, no error */
     cg_polygon_set64 e = {0};
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &e, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &e, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.ring_count, 0);
     cg_point64 P[] = {{3, 3}}, L[] = {{0, 0}, {5, 5}, {10, 10}};
     cg_polygon_set64_add_ring(&e, P, 1, 1);
     cg_polygon_set64_add_ring(&e, L, 3, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &e, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
     /* only rings without points (so no point array): empty, no error (found
      * by fuzz_clip_boolean) */
     cg_polygon_set64 z = {0};
     cg_polygon_set64_add_ring(&z, NULL, 0, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &z, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &z, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 100, 0);
-    CHECK(cg_clip_boolean64(CG_CLIP_INTERSECTION, &b, CG_CLIP_NON_ZERO, &z, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_INTERSECTION, &b, CG_CLIP_NON_ZERO, &z, CG_CLIP_EVEN_ODD, &r)
+          == CG_OK);
     CHECK_EQ_INT(r.ring_count, 0);
     cg_polygon_set zd = {0}, rd = {0};
     cg_polygon_set_add_ring(&zd, NULL, 0, 1);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &zd, CG_CLIP_NON_ZERO, &zd, CG_CLIP_NON_ZERO, 0, &rd) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &zd, CG_CLIP_NON_ZERO, &zd, CG_CLIP_NON_ZERO, 0, &rd)
+          == CG_OK);
     CHECK_EQ_INT(rd.ring_count, 0);
     cg_polygon_set64_clear(&z);
     cg_polygon_set_clear(&zd);
@@ -320,20 +333,28 @@ static void fixed_cases(void)
     cg_point64 Big[] = {{0, 0}, {CG_CLIP_MAX_COORD + 1, 0}, {0, 5}};
     cg_polygon_set64 big = {0};
     cg_polygon_set64_add_ring(&big, Big, 3, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &big, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_ERANGE);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &big, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r)
+          == CG_ERANGE);
     CHECK_EQ_INT(r.ring_count, 0);
     /* the extreme corners of the range are fine */
-    cg_point64 Max[] = {{-CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD}, {CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD},
-                        {-CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD}, {CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD}};
+    cg_point64 Max[] = {{-CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD},
+                        {CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD},
+                        {-CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD},
+                        {CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD}};
     cg_polygon_set64 mx = {0};
     cg_polygon_set64_add_ring(&mx, Max, 4, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &mx, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_NON_ZERO, &r) == CG_OK);
-    CHECK_NEAR(cg_polygon_set64_area(&r), 2.0 * (double)CG_CLIP_MAX_COORD * (double)CG_CLIP_MAX_COORD,
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &mx, CG_CLIP_EVEN_ODD, NULL, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
+    CHECK_NEAR(cg_polygon_set64_area(&r),
+               2.0 * (double)CG_CLIP_MAX_COORD * (double)CG_CLIP_MAX_COORD,
                1e-6 * (double)CG_CLIP_MAX_COORD * (double)CG_CLIP_MAX_COORD);
     CHECK(result_is_simple(&r));
-    CHECK(cg_clip_boolean64((cg_clip_op)9, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r) == CG_EINVAL);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, (cg_clip_fill)7, NULL, CG_CLIP_NON_ZERO, &r) == CG_EINVAL);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, NULL) == CG_EINVAL);
+    CHECK(cg_clip_boolean64((cg_clip_op)9, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &r)
+          == CG_EINVAL);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, (cg_clip_fill)7, NULL, CG_CLIP_NON_ZERO, &r)
+          == CG_EINVAL);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, NULL)
+          == CG_EINVAL);
     cg_polygon_set64_clear(&a);
     cg_polygon_set64_clear(&b);
     cg_polygon_set64_clear(&c);
@@ -347,13 +368,16 @@ static void fixed_cases(void)
 
 static void double_api(void)
 {
-    cg_vec2 A[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, B[] = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+    cg_vec2 A[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+            B[] = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
     cg_polygon_set a = {0}, b = {0}, r = {0};
     cg_polygon_set_add_ring(&a, A, 4, 1);
     cg_polygon_set_add_ring(&b, B, 4, 1);
-    CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_INTERSECTION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 0, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set_area(&r), 0.25, 1e-12);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 1000, &r) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, 1000, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set_area(&r), 1.75, 1e-12);
     /* tiny and huge coordinates with the automatic scale */
     for (int k = -200; k <= 200; k += 50) {
@@ -366,7 +390,8 @@ static void double_api(void)
         cg_polygon_set as = {0}, bs = {0};
         cg_polygon_set_add_ring(&as, As, 4, 1);
         cg_polygon_set_add_ring(&bs, Bs, 4, 1);
-        CHECK(cg_clip_boolean(CG_CLIP_XOR, &as, CG_CLIP_NON_ZERO, &bs, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK(cg_clip_boolean(CG_CLIP_XOR, &as, CG_CLIP_NON_ZERO, &bs, CG_CLIP_NON_ZERO, 0, &r)
+              == CG_OK);
         CHECK_NEAR(cg_polygon_set_area(&r) / (s * s), 1.5, 1e-9);
         cg_polygon_set_clear(&as);
         cg_polygon_set_clear(&bs);
@@ -376,7 +401,8 @@ static void double_api(void)
         cg_vec2 T[3] = {{0, 0}, {1e-300, 0}, {0, 1e-300}};
         cg_polygon_set t = {0};
         cg_polygon_set_add_ring(&t, T, 3, 1);
-        CHECK(cg_clip_boolean(CG_CLIP_UNION, &t, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+        CHECK(cg_clip_boolean(CG_CLIP_UNION, &t, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r)
+              == CG_OK);
         /* (the area itself underflows: check the vertices) */
         CHECK_EQ_INT(r.point_count, 3);
         double big = 0;
@@ -386,18 +412,24 @@ static void double_api(void)
         cg_polygon_set_clear(&t);
     }
     /* NaN, infinity, out of range with an explicit scale */
-    cg_vec2 N[] = {{0, 0}, {NAN, 0}, {1, 1}}, I[] = {{0, 0}, {INFINITY, 0}, {1, 1}}, Bg[] = {{0, 0}, {1e300, 0}, {1, 1}};
+    cg_vec2 N[] = {{0, 0}, {NAN, 0}, {1, 1}}, I[] = {{0, 0}, {INFINITY, 0}, {1, 1}},
+            Bg[] = {{0, 0}, {1e300, 0}, {1, 1}};
     cg_polygon_set n = {0}, i = {0}, bg = {0};
     cg_polygon_set_add_ring(&n, N, 3, 1);
     cg_polygon_set_add_ring(&i, I, 3, 1);
     cg_polygon_set_add_ring(&bg, Bg, 3, 1);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &n, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 0, &r) == CG_EINVAL);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &i, CG_CLIP_NON_ZERO, 0, &r) == CG_EINVAL);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 1e6, &r) == CG_ERANGE);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, NAN, &r) == CG_EINVAL);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &n, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 0, &r)
+          == CG_EINVAL);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &i, CG_CLIP_NON_ZERO, 0, &r)
+          == CG_EINVAL);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, &a, CG_CLIP_NON_ZERO, 1e6, &r)
+          == CG_ERANGE);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_NON_ZERO, NAN, &r)
+          == CG_EINVAL);
     CHECK_EQ_INT(r.ring_count, 0);
     /* with the automatic scale a huge coordinate is fine */
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &bg, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, 0, &r)
+          == CG_OK);
     cg_polygon_set_clear(&a);
     cg_polygon_set_clear(&b);
     cg_polygon_set_clear(&n);
@@ -469,7 +501,8 @@ static void fuzz(void)
             random_ring(&rng, &a, (int)check_rng_int(&rng, 3, it % 5 ? 10 : 40), grid, scale);
         for (int k = 0; k < nb; k++)
             random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 10), grid, scale);
-        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3),
+                     fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
         /* rounding moves each crossing by under a unit: the identities
          * allow a little per edge */
         check_round("round", it, &a, fa, &b, fb, &rng, grid, scale, 12, 40.0 * (double)scale * grid,
@@ -488,13 +521,16 @@ static void stress(void)
         cg_polygon_set64 a = {0}, b = {0}, r = {0};
         cg_point64 pts[64];
         for (int i = 0; i < 60; i++)
-            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000), check_rng_int(&rng, -1000000, 1000000)};
+            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000),
+                                  check_rng_int(&rng, -1000000, 1000000)};
         cg_polygon_set64_add_ring(&a, pts, 60, 1);
         for (int i = 0; i < 60; i++)
-            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000), check_rng_int(&rng, -1000000, 1000000)};
+            pts[i] = (cg_point64){check_rng_int(&rng, -1000000, 1000000),
+                                  check_rng_int(&rng, -1000000, 1000000)};
         cg_polygon_set64_add_ring(&b, pts, 60, 1);
         for (int op = 0; op < 4; op++) {
-            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r)
+                  == CG_OK);
             CHECK(result_is_simple(&r));
             CHECK(result_is_oriented(&r));
         }
@@ -520,7 +556,8 @@ static void crowded(void)
         random_ring(&rng, &a, (int)check_rng_int(&rng, 30, 64), grid, scale);
         random_ring(&rng, &a, (int)check_rng_int(&rng, 3, 64), grid, scale);
         random_ring(&rng, &b, (int)check_rng_int(&rng, 30, 64), grid, scale);
-        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3),
+                     fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
         double tol = 4.0 * (double)(a.point_count + b.point_count) * (double)scale * grid;
         check_round("crowded round", it, &a, fa, &b, fb, &rng, grid, scale, scale > 1 ? 30 : 0,
                     scale > 1 ? tol : 0, &membership_checks);
@@ -542,12 +579,14 @@ static void snapping(void)
         random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 30), grid, 1);
         if (it % 2)
             random_ring(&rng, &b, (int)check_rng_int(&rng, 3, 12), grid, 1);
-        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3), fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 3),
+                     fb = (cg_clip_fill)check_rng_int(&rng, 0, 3);
         for (int op = 0; op < 4; op++) {
             cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, fa, &b, fb, &r);
             CHECK_MSG(st == CG_OK, "snap round %d op %d: status %d", it, op, (int)st);
             CHECK_MSG(result_is_simple(&r), "snap round %d op %d: result edges cross", it, op);
-            CHECK_MSG(result_is_oriented(&r), "snap round %d op %d: orientation or nesting", it, op);
+            CHECK_MSG(result_is_oriented(&r), "snap round %d op %d: orientation or nesting", it,
+                      op);
         }
         cg_polygon_set64_clear(&a);
         cg_polygon_set64_clear(&b);
@@ -566,14 +605,16 @@ static void extremes(void)
         cg_point64 pts[12];
         int n = (int)check_rng_int(&rng, 3, 12);
         for (int i = 0; i < n; i++)
-            pts[i] = (cg_point64){check_rng_int(&rng, 0, 1) ? M - check_rng_int(&rng, 0, 3) : -M + check_rng_int(&rng, 0, 3),
+            pts[i] = (cg_point64){check_rng_int(&rng, 0, 1) ? M - check_rng_int(&rng, 0, 3)
+                                                            : -M + check_rng_int(&rng, 0, 3),
                                   check_rng_int(&rng, -M, M)};
         cg_polygon_set64_add_ring(&a, pts, (size_t)n, 1);
         for (int i = 0; i < n; i++)
             pts[i] = (cg_point64){check_rng_int(&rng, -M, M), check_rng_int(&rng, -M, M)};
         cg_polygon_set64_add_ring(&b, pts, (size_t)n, 1);
         for (int op = 0; op < 4; op++) {
-            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r);
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b,
+                                             CG_CLIP_NON_ZERO, &r);
             CHECK_MSG(st == CG_OK, "extreme round %d op %d: status %d", it, op, (int)st);
             CHECK(result_is_simple(&r));
             CHECK(result_is_oriented(&r));
@@ -596,7 +637,8 @@ static void extremes(void)
             cg_polygon_set64_add_ring(k ? &b : &a, pts, 30, 1);
         }
         for (int op = 0; op < 4; op++) {
-            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r);
+            cg_status st = cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b,
+                                             CG_CLIP_NON_ZERO, &r);
             CHECK_MSG(st == CG_OK, "fan round %d op %d: status %d", it, op, (int)st);
             CHECK(result_is_simple(&r));
             CHECK(result_is_oriented(&r));
@@ -607,13 +649,16 @@ static void extremes(void)
     }
     /* 2,000 copies of one square and one of a shifted square */
     cg_polygon_set64 a = {0}, b = {0}, r = {0};
-    cg_point64 S[4] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}}, T[4] = {{50, 50}, {150, 50}, {150, 150}, {50, 150}};
+    cg_point64 S[4] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}},
+               T[4] = {{50, 50}, {150, 50}, {150, 150}, {50, 150}};
     for (int i = 0; i < 2000; i++)
         cg_polygon_set64_add_ring(&a, S, 4, 1);
     cg_polygon_set64_add_ring(&b, T, 4, 1);
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 10000, 0); /* even count: a is empty */
-    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_POSITIVE, &b, CG_CLIP_NON_ZERO, &r) == CG_OK);
+    CHECK(cg_clip_boolean64(CG_CLIP_UNION, &a, CG_CLIP_POSITIVE, &b, CG_CLIP_NON_ZERO, &r)
+          == CG_OK);
     CHECK_NEAR(cg_polygon_set64_area(&r), 17500, 0);
     CHECK_EQ_INT(r.ring_count, 1);
     cg_polygon_set64_clear(&a);
@@ -657,7 +702,8 @@ static void smooth(void)
         smooth_ring(&rng, &b, n, check_rng_range(&rng, 400000, 600000),
                     check_rng_range(&rng, 400000, 600000), 450000,
                     check_rng_range(&rng, 150000, 450000), check_rng_range(&rng, 0, 3), 0, jitter);
-        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 1), fb = (cg_clip_fill)check_rng_int(&rng, 0, 1);
+        cg_clip_fill fa = (cg_clip_fill)check_rng_int(&rng, 0, 1),
+                     fb = (cg_clip_fill)check_rng_int(&rng, 0, 1);
         check_round("smooth round", it, &a, fa, &b, fb, &rng, 1000, 1000, 40,
                     4.0 * (double)(a.point_count + b.point_count) * 1000, &membership_checks);
         cg_polygon_set64_clear(&a);
@@ -722,7 +768,7 @@ static void check_large_round(const char *tag, int it, const cg_polygon_set64 *a
         for (size_t p = 0; p < r[op].polygon_count; p++)
             for (size_t k = r[op].polygon_start[p]; k < r[op].polygon_start[p + 1]; k++)
                 oriented &= k == r[op].polygon_start[p] ? ring_area2(&r[op], k) > 0
-                                                         : ring_area2(&r[op], k) < 0;
+                                                        : ring_area2(&r[op], k) < 0;
         CHECK_MSG(oriented, "%s %d op %d: ring orientation", tag, it, op);
         for (int q = 0; q < 25; q++) {
             double px = check_rng_range(rng, 0, extent), py = check_rng_range(rng, 0, extent);
@@ -769,7 +815,8 @@ static void dense(void)
         int n = it ? 600 : 450;
         for (int k = 0; k < 2; k++) {
             for (int i = 0; i < n; i++)
-                pts[i] = (cg_point64){check_rng_int(&rng, 0, 999999), check_rng_int(&rng, 0, 999999)};
+                pts[i] = (cg_point64){check_rng_int(&rng, 0, 999999),
+                                      check_rng_int(&rng, 0, 999999)};
             cg_polygon_set64_add_ring(k ? &b : &a, pts, (size_t)n, 1);
         }
         free(pts);
@@ -862,16 +909,17 @@ static void dense_grids(void)
 /* same points, rings and polygons */
 static int same_set64(const cg_polygon_set64 *a, const cg_polygon_set64 *b)
 {
-    if (a->point_count != b->point_count || a->ring_count != b->ring_count ||
-        a->polygon_count != b->polygon_count)
+    if (a->point_count != b->point_count || a->ring_count != b->ring_count
+        || a->polygon_count != b->polygon_count)
         return 0;
     if (a->point_count && memcmp(a->points, b->points, a->point_count * sizeof *a->points))
         return 0;
-    if (a->ring_count &&
-        memcmp(a->ring_start, b->ring_start, (a->ring_count + 1) * sizeof *a->ring_start))
+    if (a->ring_count
+        && memcmp(a->ring_start, b->ring_start, (a->ring_count + 1) * sizeof *a->ring_start))
         return 0;
-    return !a->polygon_count || !memcmp(a->polygon_start, b->polygon_start,
-                                        (a->polygon_count + 1) * sizeof *a->polygon_start);
+    return !a->polygon_count
+           || !memcmp(a->polygon_start, b->polygon_start,
+                      (a->polygon_count + 1) * sizeof *a->polygon_start);
 }
 
 /* A result passed again and again (its arrays reused, of a larger result
@@ -890,16 +938,20 @@ static void result_reuse(void)
         for (int op = 0; op < 4; op++) {
             cg_polygon_set64 fresh = {0}, as_a = {0}, as_b = {0};
             CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
-                                    &fresh) == CG_OK);
-            CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
-                                    &kept) == CG_OK);
+                                    &fresh)
+                  == CG_OK);
+            CHECK(
+                cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO, &kept)
+                == CG_OK);
             CHECK_MSG(same_set64(&kept, &fresh), "reuse %d op %d: reused result differs", it, op);
             cg_polygon_set64_add_ring(&as_a, a.points, a.point_count, 1);
             cg_polygon_set64_add_ring(&as_b, b.points, b.point_count, 1);
             CHECK(cg_clip_boolean64((cg_clip_op)op, &as_a, CG_CLIP_EVEN_ODD, &b, CG_CLIP_NON_ZERO,
-                                    &as_a) == CG_OK);
+                                    &as_a)
+                  == CG_OK);
             CHECK(cg_clip_boolean64((cg_clip_op)op, &a, CG_CLIP_EVEN_ODD, &as_b, CG_CLIP_NON_ZERO,
-                                    &as_b) == CG_OK);
+                                    &as_b)
+                  == CG_OK);
             CHECK_MSG(same_set64(&as_a, &fresh) && same_set64(&as_b, &fresh),
                       "reuse %d op %d: result as an operand differs", it, op);
             cg_polygon_set64_clear(&fresh);
@@ -910,8 +962,8 @@ static void result_reuse(void)
         cg_polygon_set64_clear(&b);
     }
     /* a refused call leaves the reused result empty */
-    CHECK(cg_clip_boolean64((cg_clip_op)9, NULL, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &kept) ==
-          CG_EINVAL);
+    CHECK(cg_clip_boolean64((cg_clip_op)9, NULL, CG_CLIP_NON_ZERO, NULL, CG_CLIP_NON_ZERO, &kept)
+          == CG_EINVAL);
     CHECK_EQ_INT(kept.point_count + kept.ring_count + kept.polygon_count, 0);
     cg_polygon_set64_clear(&kept);
     /* the double API */
@@ -919,11 +971,13 @@ static void result_reuse(void)
     cg_polygon_set x = {0}, y = {0}, r = {0};
     cg_polygon_set_add_ring(&x, sq, 4, 1);
     cg_polygon_set_add_ring(&y, sh, 4, 1);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &r) == CG_OK);
-    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &x) == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &r)
+          == CG_OK);
+    CHECK(cg_clip_boolean(CG_CLIP_UNION, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &x)
+          == CG_OK);
     CHECK_EQ_INT(x.point_count, r.point_count);
-    CHECK(x.point_count == r.point_count &&
-          !memcmp(x.points, r.points, r.point_count * sizeof *r.points));
+    CHECK(x.point_count == r.point_count
+          && !memcmp(x.points, r.points, r.point_count * sizeof *r.points));
     CHECK_NEAR(cg_polygon_set_area(&x), 7, 1e-12);
     cg_polygon_set_clear(&x);
     cg_polygon_set_clear(&y);
@@ -946,12 +1000,13 @@ static void workspace(void)
         random_star(&rng, &a, n, grid / 2, grid / 2, 0.3 * grid, 0.5 * grid);
         random_star(&rng, &b, n, 0.6 * grid, grid / 2, 0.3 * grid, 0.5 * grid);
         cg_clip_op op = (cg_clip_op)(it % 4);
-        CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &r) == CG_OK);
+        CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &r)
+              == CG_OK);
         CHECK(cg_clip_boolean64(op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &plain) == CG_OK);
         CHECK_MSG(same_set64(&r, &plain), "workspace %d: result differs", it);
         if (it % 10 == 0) { /* the result as an operand, with the workspace */
-            CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &a) ==
-                  CG_OK);
+            CHECK(cg_clip_boolean64_ws(ws, op, &a, CG_CLIP_NON_ZERO, &b, CG_CLIP_EVEN_ODD, &a)
+                  == CG_OK);
             CHECK_MSG(same_set64(&a, &plain), "workspace %d: result as subject differs", it);
         }
         cg_polygon_set64_clear(&a);
@@ -964,11 +1019,13 @@ static void workspace(void)
     cg_polygon_set_add_ring(&y, sh, 4, 1);
     for (int op = 0; op < 4; op++) {
         CHECK(cg_clip_boolean_ws(ws, (cg_clip_op)op, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0,
-                                 &dr) == CG_OK);
-        CHECK(cg_clip_boolean((cg_clip_op)op, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0,
-                              &dplain) == CG_OK);
-        CHECK(dr.point_count == dplain.point_count &&
-              !memcmp(dr.points, dplain.points, dr.point_count * sizeof *dr.points));
+                                 &dr)
+              == CG_OK);
+        CHECK(
+            cg_clip_boolean((cg_clip_op)op, &x, CG_CLIP_NON_ZERO, &y, CG_CLIP_NON_ZERO, 0, &dplain)
+            == CG_OK);
+        CHECK(dr.point_count == dplain.point_count
+              && !memcmp(dr.points, dplain.points, dr.point_count * sizeof *dr.points));
     }
     cg_polygon_set_clear(&x);
     cg_polygon_set_clear(&y);

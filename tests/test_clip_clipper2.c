@@ -113,8 +113,8 @@ int main(void)
                            sol_area, exact, eok ? "within tolerance" : "outside too");
                     /* cg's grid result must be as close to the exact area as
                      * the rounding of its vertices allows */
-                    CHECK_MSG(eok || fabs(area - exact) <= 0.1 * exact, "case %d: area %.1f, exact %.2f",
-                              number, area, exact);
+                    CHECK_MSG(eok || fabs(area - exact) <= 0.1 * exact,
+                              "case %d: area %.1f, exact %.2f", number, area, exact);
                     cg_polygon_set64_clear(&s2);
                     cg_polygon_set64_clear(&c2);
                     cg_polygon_set64_clear(&r2);
@@ -152,7 +152,8 @@ int main(void)
             sol_area = atof(line + 9);
         } else if (strncmp(line, "SOL_COUNT:", 10) == 0) {
             sol_count = atol(line + 10);
-        } else if (strncmp(line, "SUBJECTS_OPEN", 13) == 0 || strncmp(line, "CLIPS_OPEN", 10) == 0) {
+        } else if (strncmp(line, "SUBJECTS_OPEN", 13) == 0
+                   || strncmp(line, "CLIPS_OPEN", 10) == 0) {
             section = 3; /* open paths: not part of the closed-path suite */
         } else if (strncmp(line, "SUBJECTS", 8) == 0) {
             section = 1;

@@ -41,8 +41,8 @@ static void squares(void)
     CHECK_NEAR(offset_area64(&sq, d, CG_OFFSET_JOIN_SQUARE, CG_OFFSET_END_POLYGON, 2),
                (s + 2 * d) * (s + 2 * d) - 4 * d * d * (3 - 2 * sqrt(2)), 4 * 83 * 0.5);
     /* a miter limit below sqrt(2) cuts the corners as square joins at limit * d */
-    CHECK(offset_area64(&sq, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_POLYGON, 1.2) <
-          (s + 2 * d) * (s + 2 * d));
+    CHECK(offset_area64(&sq, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_POLYGON, 1.2)
+          < (s + 2 * d) * (s + 2 * d));
     double round = offset_area64(&sq, d, CG_OFFSET_JOIN_ROUND, CG_OFFSET_END_POLYGON, 2);
     double exact = s * s + 4 * s * d + M_PI * d * d, tolerance = d / 500;
     CHECK_MSG(round <= exact && round >= exact - 2 * M_PI * d * (tolerance + 0.5),
@@ -90,7 +90,8 @@ static void open_paths(void)
     CHECK_NEAR(offset_area64(&seg, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_SQUARE, 2),
                2 * d * (L + 2 * d), 2);
     double round = offset_area64(&seg, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_ROUND, 2);
-    CHECK_MSG(round <= 2 * d * L + M_PI * d * d + 2 && round >= 2 * d * L + M_PI * d * d - 2 * M_PI * d,
+    CHECK_MSG(round <= 2 * d * L + M_PI * d * d + 2
+                  && round >= 2 * d * L + M_PI * d * d - 2 * M_PI * d,
               "round ends: %.2f", round);
     /* a negative width is its absolute value */
     CHECK_NEAR(offset_area64(&seg, -d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_BUTT, 2), 2 * d * L, 2);
@@ -100,7 +101,8 @@ static void open_paths(void)
     cg_point64 q[3] = {{0, 0}, {1000, 0}, {1000, 1000}};
     cg_polygon_set64_add_ring(&ell, q, 3, 1);
     /* two 1000 x 100 bands meeting in a mitered corner: 2 * 2d * 1000 */
-    CHECK_NEAR(offset_area64(&ell, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_BUTT, 2), 4 * d * 1000, 0);
+    CHECK_NEAR(offset_area64(&ell, d, CG_OFFSET_JOIN_MITER, CG_OFFSET_END_BUTT, 2), 4 * d * 1000,
+               0);
     CHECK_NEAR(offset_area64(&ell, d, CG_OFFSET_JOIN_BEVEL, CG_OFFSET_END_BUTT, 2),
                4 * d * 1000 - d * d / 2, 0);
     cg_polygon_set64_clear(&ell);
@@ -133,8 +135,8 @@ static void double_api(void)
     o.arc_tolerance = 1e-4;
     CHECK(cg_offset(&sq, 0.1, &o, 0, &out) == CG_OK);
     double exact = 1 + 0.4 + M_PI * 0.01;
-    CHECK_MSG(cg_polygon_set_area(&out) <= exact + 1e-9 &&
-                  cg_polygon_set_area(&out) >= exact - (4 + 2 * M_PI * 0.1) * 1e-4,
+    CHECK_MSG(cg_polygon_set_area(&out) <= exact + 1e-9
+                  && cg_polygon_set_area(&out) >= exact - (4 + 2 * M_PI * 0.1) * 1e-4,
               "area %.9f, exact %.9f", cg_polygon_set_area(&out), exact);
     /* an explicit scale, and a workspace reused */
     cg_clip_workspace *ws = cg_clip_workspace_create();

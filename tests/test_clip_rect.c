@@ -77,8 +77,9 @@ static void polygons_against_engine(void)
         cg_point64 w[4] = {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
         cg_polygon_set64_clear(&window);
         cg_polygon_set64_add_ring(&window, w, 4, 1);
-        CHECK(cg_clip_boolean64(CG_CLIP_INTERSECTION, &in, fill, &window, CG_CLIP_NON_ZERO,
-                                &general) == CG_OK);
+        CHECK(
+            cg_clip_boolean64(CG_CLIP_INTERSECTION, &in, fill, &window, CG_CLIP_NON_ZERO, &general)
+            == CG_OK);
         /* each crossing rounded moves the boundary by at most a unit over
          * an edge no longer than the rectangle's diagonal */
         double diagonal = hypot((double)(r.xmax - r.xmin), (double)(r.ymax - r.ymin));
@@ -88,11 +89,12 @@ static void polygons_against_engine(void)
                   cg_polygon_set64_area(&general));
         int outside = 0;
         for (size_t i = 0; i < fast.point_count; i++)
-            outside += fast.points[i].x < r.xmin || fast.points[i].x > r.xmax ||
-                       fast.points[i].y < r.ymin || fast.points[i].y > r.ymax;
+            outside += fast.points[i].x < r.xmin || fast.points[i].x > r.xmax
+                       || fast.points[i].y < r.ymin || fast.points[i].y > r.ymax;
         CHECK_MSG(outside == 0, "trial %d: %d points outside the rectangle", trial, outside);
         for (int k = 0; k < 40; k++) {
-            double x = (double)uniform(r.xmin, r.xmax) + 0.5, y = (double)uniform(r.ymin, r.ymax) + 0.25;
+            double x = (double)uniform(r.xmin, r.xmax) + 0.5,
+                   y = (double)uniform(r.ymin, r.ymax) + 0.25;
             int near = 0;
             int want = filled(winding(&in, x, y, &near), fill);
             int got = winding(&fast, x, y, &near) != 0;
@@ -162,8 +164,8 @@ static void polylines(void)
             size_t a = out.ring_start[k], b = out.ring_start[k + 1];
             CHECK(b > a);
             for (size_t i = a; i < b; i++)
-                CHECK(out.points[i].x >= r.xmin && out.points[i].x <= r.xmax &&
-                      out.points[i].y >= r.ymin && out.points[i].y <= r.ymax);
+                CHECK(out.points[i].x >= r.xmin && out.points[i].x <= r.xmax
+                      && out.points[i].y >= r.ymin && out.points[i].y <= r.ymax);
         }
     }
     /* a segment along a side is kept; one touching a corner is a point */

@@ -35,8 +35,8 @@ static int on_segment(cg_point64 a, cg_point64 b, cg_point64 q)
 /* Edges a-b and c-d meet somewhere other than at a shared end. */
 static int edges_meet(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 d)
 {
-    int shared = (a.x == c.x && a.y == c.y) || (a.x == d.x && a.y == d.y) ||
-                 (b.x == c.x && b.y == c.y) || (b.x == d.x && b.y == d.y);
+    int shared = (a.x == c.x && a.y == c.y) || (a.x == d.x && a.y == d.y)
+                 || (b.x == c.x && b.y == c.y) || (b.x == d.x && b.y == d.y);
     int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0)
         return 1;
@@ -72,7 +72,8 @@ static double distance_to_boundary(const cg_polygon_set64 *s, cg_point64 q, int 
             size_t i2 = i + 1 < s->ring_start[r + 1] ? i + 1 : s->ring_start[r];
             double ax = (double)s->points[i].x, ay = (double)s->points[i].y;
             double dx = (double)s->points[i2].x - ax, dy = (double)s->points[i2].y - ay;
-            double l2 = dx * dx + dy * dy, t = l2 > 0 ? ((q.x - ax) * dx + (q.y - ay) * dy) / l2 : 0;
+            double l2 = dx * dx + dy * dy,
+                   t = l2 > 0 ? ((q.x - ax) * dx + (q.y - ay) * dy) / l2 : 0;
             t = t < 0 ? 0 : t > 1 ? 1 : t;
             best = fmin(best, hypot(ax + t * dx - (double)q.x, ay + t * dy - (double)q.y));
         }
@@ -119,7 +120,8 @@ static void check_result(const char *what, int trial, const cg_polygon_set64 *in
     for (size_t i = 0; i < out->point_count; i++) {
         int found = 0;
         for (size_t j = 0; j < simple.point_count && !found; j++)
-            found = simple.points[j].x == out->points[i].x && simple.points[j].y == out->points[i].y;
+            found = simple.points[j].x == out->points[i].x
+                    && simple.points[j].y == out->points[i].y;
         foreign += !found;
     }
     CHECK_MSG(small == 0, "%s %d: %d rings collapsed", what, trial, small);
@@ -189,7 +191,8 @@ static void interleaved_combs(void)
     cg_polygon_set64_add_ring(&in, b, (size_t)nb, 1);
     for (int alg = 0; alg < 2; alg++) {
         CHECK(cg_simplify64(&in, 0, CG_CLIP_NON_ZERO, (cg_simplify_algorithm)alg,
-                            alg ? 1e12 : 10000, &out) == CG_OK);
+                            alg ? 1e12 : 10000, &out)
+              == CG_OK);
         check_result("combs", alg, &in, &out, 0, 10000, 0);
     }
     cg_polygon_set64_clear(&in);
@@ -205,13 +208,16 @@ static void polylines(void)
             cg_point64 p[300];
             double y = 3000.0 * r;
             for (int i = 0; i < 300; i++)
-                p[i] = (cg_point64){100 * i, llround(y + 800 * sin(i * 0.05 + r) + uniform(-200, 200))};
+                p[i] = (cg_point64){100 * i,
+                                    llround(y + 800 * sin(i * 0.05 + r) + uniform(-200, 200))};
             cg_polygon_set64_add_ring(&in, p, 300, 1);
         }
         int rdp = trial % 2 == 0;
         double tolerance = 50.0 * (1 + trial % 5);
-        CHECK(cg_simplify64(&in, 1, CG_CLIP_EVEN_ODD, rdp ? CG_SIMPLIFY_RDP : CG_SIMPLIFY_VISVALINGAM,
-                            rdp ? tolerance : tolerance * tolerance, &out) == CG_OK);
+        CHECK(cg_simplify64(&in, 1, CG_CLIP_EVEN_ODD,
+                            rdp ? CG_SIMPLIFY_RDP : CG_SIMPLIFY_VISVALINGAM,
+                            rdp ? tolerance : tolerance * tolerance, &out)
+              == CG_OK);
         check_result("polyline", trial, &in, &out, 1, tolerance, rdp);
         for (size_t r = 0; r < out.ring_count; r++) { /* the ends stay */
             CHECK(out.points[out.ring_start[r]].x == 0);

@@ -33,14 +33,17 @@ static int in_circle(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 d)
 {
     i128 adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
     i128 cdx = c.x - d.x, cdy = c.y - d.y;
-    i128 det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-               (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-               (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+    i128 det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy)
+               + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy)
+               + (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
     return det > 0;
 }
 
 /* A directed edge and where it came from. */
-typedef struct edge { cg_point64 from, to; int triangle, ring; } edge;
+typedef struct edge {
+    cg_point64 from, to;
+    int triangle, ring;
+} edge;
 
 static int compare_edges(const void *a, const void *b)
 {
@@ -59,7 +62,10 @@ static edge *find(edge *edges, size_t n, cg_point64 from, cg_point64 to, int rin
     return bsearch(&key, edges, n, sizeof key, compare_edges);
 }
 
-static int same(cg_point64 a, cg_point64 b) { return a.x == b.x && a.y == b.y; }
+static int same(cg_point64 a, cg_point64 b)
+{
+    return a.x == b.x && a.y == b.y;
+}
 
 /* The ring edge a-b as the pieces between the rings' vertices lying on it
  * (a hole may touch the outer ring inside an edge): written to out, counted. */
@@ -74,7 +80,8 @@ static size_t ring_pieces(const cg_polygon_set64 *simple, cg_point64 a, cg_point
         i128 len = (i128)(b.x - from.x) * (b.x - from.x) + (i128)(b.y - from.y) * (b.y - from.y);
         for (size_t k = 0; k < simple->point_count; k++) {
             cg_point64 c = simple->points[k];
-            i128 dot = (i128)(c.x - from.x) * (b.x - from.x) + (i128)(c.y - from.y) * (b.y - from.y);
+            i128 dot = (i128)(c.x - from.x) * (b.x - from.x)
+                       + (i128)(c.y - from.y) * (b.y - from.y);
             if (cross(from, b, c) == 0 && dot > 0 && dot < len && (best == 0 || dot < best)) {
                 best = dot;
                 next = c;

@@ -16,9 +16,9 @@ static int near3(cg_vec3 a, cg_vec3 b, double tol)
     return fabs(a.x - b.x) <= tol && fabs(a.y - b.y) <= tol && fabs(a.z - b.z) <= tol;
 }
 
-#define CHECK_VEC(got, want, tol)                                                              \
-    do {                                                                                       \
-        cg_vec3 g_ = (got), w_ = (want);                                                       \
+#define CHECK_VEC(got, want, tol)                                                               \
+    do {                                                                                        \
+        cg_vec3 g_ = (got), w_ = (want);                                                        \
         CHECK_MSG(near3(g_, w_, tol), "%s = (%.17g, %.17g, %.17g), want (%.17g, %.17g, %.17g)", \
                   #got, g_.x, g_.y, g_.z, w_.x, w_.y, w_.z);                                    \
     } while (0)
@@ -213,8 +213,7 @@ static void test_reference_values(void)
     /* Mid grey (linear 0.18) has L* = 116 * cbrt(0.18) - 16 = 49.496. */
     CHECK_NEAR(cg_xyz_to_lab(v3(0.18 * 0.9505, 0.18, 0.18 * 1.089)).x, 49.496, 0.001);
     /* YCbCr of red, BT.601: Y = .299, Cb = -.299 / 1.772, Cr = .5. */
-    CHECK_VEC(cg_rgb_to_ycbcr(v3(1, 0, 0), CG_YCBCR_BT601), v3(0.299, -0.299 / 1.772, 0.5),
-              1e-15);
+    CHECK_VEC(cg_rgb_to_ycbcr(v3(1, 0, 0), CG_YCBCR_BT601), v3(0.299, -0.299 / 1.772, 0.5), 1e-15);
     CHECK_VEC(cg_rgb_to_ycbcr(v3(0, 0, 1), CG_YCBCR_BT709), v3(0.0722, 0.5, -0.0722 / 1.5748),
               1e-15);
     CHECK_VEC(cg_rgb_to_yiq(v3(1, 0, 0)), v3(0.299, 0.596, 0.212), 1e-15);
@@ -244,7 +243,13 @@ static void test_round_trips(void)
     for (int i = 0; i < 200000; i++) {
         cg_vec3 c = random_rgb(&r);
         if (i < 64) /* edges: channels at 0 and 1, greys */
-            c = v3((i & 1) ? 1 : (i & 8) ? c.x : 0, (i & 2) ? 1 : c.y, (i & 4) ? 0 : (i & 16) ? c.z : c.y);
+            c = v3((i & 1)   ? 1
+                   : (i & 8) ? c.x
+                             : 0,
+                   (i & 2) ? 1 : c.y,
+                   (i & 4)    ? 0
+                   : (i & 16) ? c.z
+                              : c.y);
         bad[0] += !near3(cg_hsv_to_rgb(cg_rgb_to_hsv(c)), c, 1e-9);
         bad[1] += !near3(cg_hsl_to_rgb(cg_rgb_to_hsl(c)), c, 1e-9);
         bad[2] += !near3(cg_cmy_to_rgb(cg_rgb_to_cmy(c)), c, 1e-9);
@@ -265,8 +270,8 @@ static void test_round_trips(void)
                       && (fabs(back.y - hsv.y) > 1e-9
                           || fmin(fabs(back.x - hsv.x), 360 - fabs(back.x - hsv.x)) > 1e-6));
     }
-    static const char *names[10] = {"hsv", "hsl", "cmy", "cmyk", "yiq", "ycbcr601", "ycbcr709",
-                                    "xyz", "lab", "hsv from hsv"};
+    static const char *names[10] = {"hsv",      "hsl",      "cmy", "cmyk", "yiq",
+                                    "ycbcr601", "ycbcr709", "xyz", "lab",  "hsv from hsv"};
     for (int i = 0; i < 10; i++)
         CHECK_MSG(bad[i] == 0, "%s round trip: %d failures", names[i], bad[i]);
     /* Hue is always in [0, 360). */
@@ -366,8 +371,8 @@ static void test_8bit_fast_paths(void)
             hsx8_reference(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], hsl, want);
             if (memcmp(want, out + 3 * i, 3) != 0 && bad++ < 5)
                 fprintf(stderr, "%s8 of %d %d %d: got %d %d %d want %d %d %d\n",
-                        hsl ? "hsl" : "hsv", rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2],
-                        out[3 * i], out[3 * i + 1], out[3 * i + 2], want[0], want[1], want[2]);
+                        hsl ? "hsl" : "hsv", rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], out[3 * i],
+                        out[3 * i + 1], out[3 * i + 2], want[0], want[1], want[2]);
             if ((i & 63) == 0) { /* and against the double conversion */
                 cg_vec3 c = v3(rgb[3 * i] / 255.0, rgb[3 * i + 1] / 255.0, rgb[3 * i + 2] / 255.0);
                 cg_vec3 m = hsl ? cg_rgb_to_hsl(c) : cg_rgb_to_hsv(c);
@@ -389,9 +394,8 @@ static void test_8bit_fast_paths(void)
         cg_color_convert(CG_MODEL_HSV, CG_MODEL_RGB, hsv, x);
         for (int c = 0; c < 3; c++)
             if (!byte_matches(back[3 * i + c], x[c] * 255) && bad++ < 5)
-                fprintf(stderr, "hsv8 %d %d %d -> rgb: channel %d got %d want %.9f\n",
-                        rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], c, back[3 * i + c],
-                        x[c] * 255);
+                fprintf(stderr, "hsv8 %d %d %d -> rgb: channel %d got %d want %.9f\n", rgb[3 * i],
+                        rgb[3 * i + 1], rgb[3 * i + 2], c, back[3 * i + c], x[c] * 255);
     }
     CHECK_EQ_INT(bad, 0);
     /* 8-bit HSV round trip: off by little (256 hues, 256 saturations). */
@@ -534,8 +538,7 @@ static void test_bad_input(void)
     CHECK_VEC(cg_hsv_to_rgb(v3(-120, 1, 1)), v3(0, 0, 1), 1e-12);
     CHECK_VEC(cg_hsv_to_rgb(v3(INFINITY, 1, 1)), v3(1, 0, 0), 0);
     CHECK_VEC(cg_hsl_to_rgb(v3(NAN, NAN, NAN)), v3(0, 0, 0), 0);
-    CHECK_VEC(cg_hsv_to_rgb(v3(1e300, 0.5, 0.5)), cg_hsv_to_rgb(v3(fmod(1e300, 360), 0.5, 0.5)),
-              0);
+    CHECK_VEC(cg_hsv_to_rgb(v3(1e300, 0.5, 0.5)), cg_hsv_to_rgb(v3(fmod(1e300, 360), 0.5, 0.5)), 0);
     cg_vec3 x = cg_lab_to_rgb(v3(NAN, 1e308, -INFINITY));
     CHECK(x.x >= 0 && x.x <= 1 && x.y >= 0 && x.y <= 1 && x.z >= 0 && x.z <= 1);
     x = cg_yiq_to_rgb(v3(5, -5, NAN));
@@ -582,8 +585,8 @@ static void test_quantize_dither(void)
                 double mean = sum / (W * H);
                 if (fabs(mean - v) > 1.0 / (2 * levels)) {
                     if (bad_mean++ < 5)
-                        fprintf(stderr, "dither %d levels %d: flat %g -> mean %g\n", m, levels,
-                                v, mean);
+                        fprintf(stderr, "dither %d levels %d: flat %g -> mean %g\n", m, levels, v,
+                                mean);
                 }
             }
     CHECK_EQ_INT(bad_mean, 0);
@@ -734,7 +737,8 @@ static void test_encode_tables(void)
             /* near a threshold a third of the time, anywhere (and outside
              * [0, 1]) otherwise */
             int t = (int)check_rng_range(&r, 0, 255);
-            v[k] = i % 3 == 0 ? nextafterf(color_srgb_threshold_table[t], (float)check_rng_range(&r, -1, 2))
+            v[k] = i % 3 == 0 ? nextafterf(color_srgb_threshold_table[t],
+                                           (float)check_rng_range(&r, -1, 2))
                               : (float)check_rng_range(&r, -0.2, 1.2);
         }
         if (i == 0) {

@@ -20,7 +20,8 @@ static void growth_policy(void)
     CHECK(data == NULL && capacity == 0);
     CHECK(core_array_reserve((void **)&data, &capacity, 1, sizeof *data) == CG_OK);
     CHECK_EQ_INT(capacity, CORE_ARRAY_FIRST);
-    CHECK(core_array_reserve((void **)&data, &capacity, CORE_ARRAY_FIRST + 1, sizeof *data) == CG_OK);
+    CHECK(core_array_reserve((void **)&data, &capacity, CORE_ARRAY_FIRST + 1, sizeof *data)
+          == CG_OK);
     CHECK_EQ_INT(capacity, 2 * CORE_ARRAY_FIRST);
     CHECK(core_array_reserve((void **)&data, &capacity, 1000, sizeof *data) == CG_OK);
     CHECK_EQ_INT(capacity, 1024);
@@ -77,9 +78,9 @@ typedef struct pool_job {
     atomic_int claims[POOL_BLOCKS_MAX];
     int worker_of[POOL_BLOCKS_MAX];
     atomic_int second_claims[POOL_BLOCKS_MAX];
-    atomic_int early;        /* second-phase blocks that saw the first unfinished */
-    atomic_int bad_worker;   /* worker indices out of range */
-    atomic_int calls;        /* task calls */
+    atomic_int early;      /* second-phase blocks that saw the first unfinished */
+    atomic_int bad_worker; /* worker indices out of range */
+    atomic_int calls;      /* task calls */
 } pool_job;
 
 static void pool_task(void *context, int worker)
@@ -127,7 +128,8 @@ static int pool_round(core_worker_pool *pool, size_t blocks, size_t second,
     atomic_init(&j.calls, 0);
     core_worker_pool_run(pool, pool_task, &j);
     int ok = atomic_load(&j.early) == 0 && atomic_load(&j.bad_worker) == 0
-             && atomic_load(&j.calls) >= 1 && atomic_load(&j.calls) <= core_worker_pool_workers(pool)
+             && atomic_load(&j.calls) >= 1
+             && atomic_load(&j.calls) <= core_worker_pool_workers(pool)
              && atomic_load(&j.first.done) == blocks && atomic_load(&j.second.done) == second;
     for (size_t i = 0; i < blocks; i++) {
         ok &= atomic_load(&j.claims[i]) == 1;
@@ -163,8 +165,7 @@ static void worker_pool_claims(void)
         CHECK_MSG(rounds_ok == rounds, "%d workers: %d of %d rounds claimed every block once",
                   workers, rounds_ok, rounds);
         CHECK(took_part & 1); /* the caller always takes part */
-        CHECK_MSG(took_part < (1ul << workers), "%d workers: worker bits %#lx", workers,
-                  took_part);
+        CHECK_MSG(took_part < (1ul << workers), "%d workers: worker bits %#lx", workers, took_part);
         core_worker_pool_free(pool);
     }
     /* No pool: the caller alone. */
@@ -291,8 +292,8 @@ static void arena_measure_then_carve(void)
         size_t bytes = 0;
         for (size_t k = 0; k < takes; k++) {
             CHECK(core_arena_take(&measure, count[k], size[k]) == NULL);
-            bytes += (count[k] * size[k] + CORE_ARENA_ALIGN - 1) / CORE_ARENA_ALIGN *
-                     CORE_ARENA_ALIGN;
+            bytes += (count[k] * size[k] + CORE_ARENA_ALIGN - 1) / CORE_ARENA_ALIGN
+                     * CORE_ARENA_ALIGN;
         }
         CHECK(!measure.failed);
         CHECK_EQ_INT(measure.used, bytes);
@@ -349,7 +350,7 @@ static void arena_blocks(void)
     void *block = stack;
     size_t size = sizeof stack;
     CHECK(core_arena_block(&block, &size, 100, stack) == CG_OK);
-    CHECK(block == stack && size == sizeof stack); /* room enough: kept */
+    CHECK(block == stack && size == sizeof stack);                /* room enough: kept */
     CHECK(core_arena_block(&block, &size, 1000, stack) == CG_OK); /* the stack is not freed */
     CHECK(block != stack && size == 1000);
     memset(block, 1, 1000);
@@ -381,13 +382,13 @@ static void array_from_initial_buffer(void)
         same &= data[i] == 10 * i && initial[i] == 10 * i;
     CHECK(same);
     data[8] = 80;
-    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, 1000, sizeof *data, initial) ==
-          CG_OK);
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, 1000, sizeof *data, initial)
+          == CG_OK);
     CHECK(capacity >= 1000 && data[8] == 80 && data[0] == 0);
     size_t before = capacity;
     int *kept = data;
-    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, SIZE_MAX / 2, sizeof *data,
-                                  initial) == CG_ENOMEM);
+    CHECK(core_array_reserve_from((void **)&data, &capacity, 9, SIZE_MAX / 2, sizeof *data, initial)
+          == CG_ENOMEM);
     CHECK(data == kept && capacity == before); /* refused: unchanged */
     free(data);
     /* refused while still in the buffer: still there */

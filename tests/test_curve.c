@@ -37,13 +37,15 @@ static void bernstein(void)
 static void basis_matrices(void)
 {
     for (int b = CG_BASIS_HERMITE; b <= CG_BASIS_CATMULL_ROM; b++) {
-        cg_mat4 m = cg_curve_basis_matrix((cg_curve_basis)b), inv = cg_curve_basis_inverse((cg_curve_basis)b);
+        cg_mat4 m = cg_curve_basis_matrix((cg_curve_basis)b),
+                inv = cg_curve_basis_inverse((cg_curve_basis)b);
         CHECK_MSG(cg_mat4_near(cg_mat4_mul(m, inv), cg_mat4_identity(), 1e-12), "basis %d", b);
         CHECK_MSG(cg_mat4_near(cg_mat4_mul(inv, m), cg_mat4_identity(), 1e-12), "basis %d", b);
     }
     /* The matrices printed in the notes. */
     cg_mat4 h = cg_curve_basis_matrix(CG_BASIS_HERMITE);
-    CHECK(h.m[0][0] == 2 && h.m[0][1] == -2 && h.m[1][0] == -3 && h.m[1][3] == -1 && h.m[3][0] == 1);
+    CHECK(h.m[0][0] == 2 && h.m[0][1] == -2 && h.m[1][0] == -3 && h.m[1][3] == -1
+          && h.m[3][0] == 1);
     cg_mat4 bz = cg_curve_basis_matrix(CG_BASIS_BEZIER);
     CHECK(bz.m[0][0] == -1 && bz.m[1][1] == -6 && bz.m[2][0] == -3 && bz.m[3][0] == 1);
     /* M_B = M_H M_HB (eq. 2.21) */
@@ -56,14 +58,17 @@ static void hermite_and_bases(void)
 {
     check_rng r = {2};
     for (int i = 0; i < 500; i++) {
-        cg_cubic2 h = {CG_BASIS_HERMITE, {rand_point(&r, 100), rand_point(&r, 100), rand_point(&r, 300), rand_point(&r, 300)}};
+        cg_cubic2 h = {
+            CG_BASIS_HERMITE,
+            {rand_point(&r, 100), rand_point(&r, 100), rand_point(&r, 300), rand_point(&r, 300)}};
         CHECK(dist(cg_cubic2_point(&h, 0), h.g[0]) < 1e-12);
         CHECK(dist(cg_cubic2_point(&h, 1), h.g[1]) < 1e-9);
         CHECK(dist(cg_cubic2_tangent(&h, 0), h.g[2]) < 1e-12);
         CHECK(dist(cg_cubic2_tangent(&h, 1), h.g[3]) < 1e-9);
         /* tangent = derivative of the point (central difference) */
         double t = check_rng_unit(&r), e = 1e-6;
-        cg_vec2 fd = cg_vec2_scale(cg_vec2_sub(cg_cubic2_point(&h, t + e), cg_cubic2_point(&h, t - e)), 0.5 / e);
+        cg_vec2 fd = cg_vec2_scale(
+            cg_vec2_sub(cg_cubic2_point(&h, t + e), cg_cubic2_point(&h, t - e)), 0.5 / e);
         CHECK(dist(fd, cg_cubic2_tangent(&h, t)) < 1e-4);
         /* 3D Hermite */
         cg_cubic3 h3 = {CG_BASIS_HERMITE, {{1, 2, 3}, {4, -5, 6}, {7, 8, -9}, {-1, 0, 2}}};
@@ -73,16 +78,21 @@ static void hermite_and_bases(void)
     }
     /* Bézier: eq. 2.22, endpoints, R1 = 3 (P2 - P1), R4 = 3 (P4 - P3) */
     for (int i = 0; i < 500; i++) {
-        cg_cubic2 b = {CG_BASIS_BEZIER, {rand_point(&r, 50), rand_point(&r, 50), rand_point(&r, 50), rand_point(&r, 50)}};
+        cg_cubic2 b = {
+            CG_BASIS_BEZIER,
+            {rand_point(&r, 50), rand_point(&r, 50), rand_point(&r, 50), rand_point(&r, 50)}};
         double t = check_rng_unit(&r), s = 1 - t;
-        cg_vec2 expect = cg_vec2_add(cg_vec2_add(cg_vec2_scale(b.g[0], s * s * s), cg_vec2_scale(b.g[1], 3 * t * s * s)),
-                                     cg_vec2_add(cg_vec2_scale(b.g[2], 3 * t * t * s), cg_vec2_scale(b.g[3], t * t * t)));
+        cg_vec2 expect = cg_vec2_add(
+            cg_vec2_add(cg_vec2_scale(b.g[0], s * s * s), cg_vec2_scale(b.g[1], 3 * t * s * s)),
+            cg_vec2_add(cg_vec2_scale(b.g[2], 3 * t * t * s), cg_vec2_scale(b.g[3], t * t * t)));
         CHECK(dist(cg_cubic2_point(&b, t), expect) < 1e-10);
         cg_vec2 dc;
         CHECK(cg_bezier_point(b.g, 4, t, &dc) == CG_OK);
         CHECK(dist(dc, expect) < 1e-10);
-        CHECK(dist(cg_cubic2_tangent(&b, 0), cg_vec2_scale(cg_vec2_sub(b.g[1], b.g[0]), 3)) < 1e-10);
-        CHECK(dist(cg_cubic2_tangent(&b, 1), cg_vec2_scale(cg_vec2_sub(b.g[3], b.g[2]), 3)) < 1e-10);
+        CHECK(dist(cg_cubic2_tangent(&b, 0), cg_vec2_scale(cg_vec2_sub(b.g[1], b.g[0]), 3))
+              < 1e-10);
+        CHECK(dist(cg_cubic2_tangent(&b, 1), cg_vec2_scale(cg_vec2_sub(b.g[3], b.g[2]), 3))
+              < 1e-10);
         cg_vec2 tan;
         CHECK(cg_bezier_tangent(b.g, 4, t, &tan) == CG_OK);
         CHECK(dist(tan, cg_cubic2_tangent(&b, t)) < 1e-9);
@@ -110,7 +120,10 @@ static void conversions(void)
     for (int i = 0; i < 400; i++)
         for (int from = 0; from < 4; from++)
             for (int to = 0; to < 4; to++) {
-                cg_cubic2 a = {(cg_curve_basis)from, {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10)}}, b, back;
+                cg_cubic2 a = {(cg_curve_basis)from,
+                               {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10),
+                                rand_point(&r, 10)}},
+                          b, back;
                 CHECK(cg_cubic2_convert(&a, (cg_curve_basis)to, &b) == CG_OK);
                 CHECK(b.basis == (cg_curve_basis)to);
                 for (int k = 0; k <= 10; k++) {
@@ -125,7 +138,8 @@ static void conversions(void)
     CHECK_EQ_INT(bad, 0);
     cg_cubic3 a3 = {CG_BASIS_BSPLINE, {{0, 0, 0}, {1, 2, 3}, {4, 0, 1}, {2, 2, 2}}}, b3;
     CHECK(cg_cubic3_convert(&a3, CG_BASIS_HERMITE, &b3) == CG_OK);
-    CHECK(cg_vec3_length(cg_vec3_sub(cg_cubic3_point(&a3, 0.3), cg_cubic3_point(&b3, 0.3))) < 1e-12);
+    CHECK(cg_vec3_length(cg_vec3_sub(cg_cubic3_point(&a3, 0.3), cg_cubic3_point(&b3, 0.3)))
+          < 1e-12);
     cg_cubic2 bad_basis = {(cg_curve_basis)9, {{0, 0}, {0, 0}, {0, 0}, {0, 0}}}, out;
     CHECK(cg_cubic2_convert(&bad_basis, CG_BASIS_BEZIER, &out) == CG_EINVAL);
 }
@@ -171,7 +185,11 @@ static void casteljau(void)
 
 /* ---- flattening ---------------------------------------------------------- */
 
-typedef struct polyline { cg_vec2 *p; int n, cap; int fail_after; } polyline;
+typedef struct polyline {
+    cg_vec2 *p;
+    int n, cap;
+    int fail_after;
+} polyline;
 
 static cg_status collect(void *user, cg_vec2 point)
 {
@@ -228,7 +246,8 @@ static void flattening(void)
         /* polyline -> curve (the dense polyline is far closer than tol) */
         for (int s = 1; s < l.n; s++)
             for (int k = 0; k <= 8; k++) {
-                cg_vec2 q = cg_vec2_add(l.p[s - 1], cg_vec2_scale(cg_vec2_sub(l.p[s], l.p[s - 1]), k / 8.0));
+                cg_vec2 q = cg_vec2_add(l.p[s - 1],
+                                        cg_vec2_scale(cg_vec2_sub(l.p[s], l.p[s - 1]), k / 8.0));
                 bad_back += point_polyline(q, dense, DENSE + 1) > tol * 1.001 + 1e-9;
             }
     }
@@ -262,7 +281,8 @@ static void flattening(void)
     CHECK(cg_bezier_flatten(curve, 4, INFINITY, collect, &l) == CG_EINVAL);
     CHECK(cg_bezier_flatten(curve, 1, 0.5, collect, &l) == CG_EINVAL);
     CHECK(cg_bezier_flatten(NULL, 4, 0.5, collect, &l) == CG_EINVAL);
-    cg_vec2 nan_curve[3] = {{0, 0}, {NAN, 1}, {2, 2}}, inf_curve[3] = {{0, 0}, {INFINITY, 1}, {2, 2}};
+    cg_vec2 nan_curve[3] = {{0, 0}, {NAN, 1}, {2, 2}},
+            inf_curve[3] = {{0, 0}, {INFINITY, 1}, {2, 2}};
     CHECK(cg_bezier_flatten(nan_curve, 3, 0.5, collect, &l) == CG_EINVAL);
     CHECK(cg_bezier_flatten(inf_curve, 3, 0.5, collect, &l) == CG_EINVAL);
     cg_vec2 huge[3] = {{0, 0}, {1e15, 1e15}, {2e15, 0}};
@@ -296,8 +316,12 @@ static void continuity(void)
     check_rng r = {6};
     for (int i = 0; i < 200; i++) {
         int basis = i % 4;
-        cg_cubic2 a = {(cg_curve_basis)basis, {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10)}};
-        cg_cubic2 b = {(cg_curve_basis)((basis + i / 4) % 4), {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10)}};
+        cg_cubic2 a = {
+            (cg_curve_basis)basis,
+            {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10)}};
+        cg_cubic2 b = {
+            (cg_curve_basis)((basis + i / 4) % 4),
+            {rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10), rand_point(&r, 10)}};
         CHECK(cg_cubic2_continuity(&a, &b, 1e-9) == CG_CONTINUITY_NONE);
         cg_cubic2 c1 = b;
         CHECK(cg_cubic2_join_c1(&a, &c1) == CG_OK);
@@ -310,7 +334,8 @@ static void continuity(void)
         CHECK(cg_cubic2_join_g1(&a, &g1) == CG_OK);
         cg_continuity k = cg_cubic2_continuity(&a, &g1, 1e-9);
         CHECK(k == CG_CONTINUITY_G1);
-        CHECK_NEAR(cg_vec2_length(cg_cubic2_tangent(&g1, 0)), cg_vec2_length(cg_cubic2_tangent(&b, 0)), 1e-9);
+        CHECK_NEAR(cg_vec2_length(cg_cubic2_tangent(&g1, 0)),
+                   cg_vec2_length(cg_cubic2_tangent(&b, 0)), 1e-9);
     }
     /* Figure 2.10: Bézier P1..P4 and P4..P7 with P3, P4, P5 collinear */
     cg_cubic2 left = {CG_BASIS_BEZIER, {{0, 0}, {1, 2}, {2, 1}, {3, 1}}};
@@ -322,7 +347,9 @@ static void continuity(void)
     CHECK(cg_cubic2_continuity(&left, &right, 1e-12) == CG_CONTINUITY_G0);
     right.g[1] = cg_vec2_make(2, 1); /* opposite direction: G0 only */
     CHECK(cg_cubic2_continuity(&left, &right, 1e-12) == CG_CONTINUITY_G0);
-    CHECK(cg_joint_continuity(cg_vec2_make(0, 0), cg_vec2_make(0, 0), cg_vec2_make(0, 0), cg_vec2_make(1, 0), 1e-12) == CG_CONTINUITY_G0);
+    CHECK(cg_joint_continuity(cg_vec2_make(0, 0), cg_vec2_make(0, 0), cg_vec2_make(0, 0),
+                              cg_vec2_make(1, 0), 1e-12)
+          == CG_CONTINUITY_G0);
     CHECK(strcmp(cg_continuity_name(CG_CONTINUITY_C1), "C1") == 0);
     cg_cubic3 a3 = {CG_BASIS_BEZIER, {{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {3, 1, 1}}};
     cg_cubic3 b3 = {CG_BASIS_BEZIER, {{3, 1, 1}, {4, 1, 2}, {5, 0, 0}, {6, 0, 0}}};

@@ -18,7 +18,11 @@ static int is_set(const cg_image *image, int x, int y)
 
 /* ---- the first octant by Algorithm 2, as traced ------------------------ */
 
-typedef struct octant { int *row; int last; int cap; } octant;
+typedef struct octant {
+    int *row;
+    int last;
+    int cap;
+} octant;
 
 static int record(void *user, const cg_circle_step *s)
 {
@@ -36,7 +40,9 @@ static int member(const octant *o, long long dx, long long dy)
 {
     long long x = llabs(dx), y = llabs(dy);
     if (x > y) {
-        long long t = x; x = y; y = t;
+        long long t = x;
+        x = y;
+        y = t;
     }
     return x <= o->last && o->row[x] == y;
 }
@@ -178,7 +184,9 @@ static int member_closed(long long r, long long dx, long long dy)
     if (r == 0)
         return x == 0 && y == 0;
     if (x > y) {
-        long long t = x; x = y; y = t;
+        long long t = x;
+        x = y;
+        y = t;
     }
     wide n = (wide)r * r - (wide)x * x;
     return (wide)y * (y - 1) < n && n <= (wide)y * (y + 1) && x <= y;
@@ -226,7 +234,8 @@ static void discs(void)
     long bad = 0;
     for (int i = 0; i < 1500; i++) {
         int r = (int)check_rng_int(&rng, 0, i < 1000 ? 40 : 3000);
-        int cx = (int)check_rng_int(&rng, -r - 5, W + r + 5), cy = (int)check_rng_int(&rng, -r - 5, H + r + 5);
+        int cx = (int)check_rng_int(&rng, -r - 5, W + r + 5),
+            cy = (int)check_rng_int(&rng, -r - 5, H + r + 5);
         /* Reference rows come from a big-enough circle drawn around it. */
         cg_image_clear_rgba8(disc, black);
         cg_draw_disc(disc, cx, cy, r, white);
@@ -310,8 +319,12 @@ static void ellipses(void)
                 int mx = 2 * cx - x, my = 2 * cy - y;
                 sym &= is_set(image, mx, y) && is_set(image, x, my);
                 double dx = fabs((double)(x - cx)), dy = fabs((double)(y - cy));
-                double xd = dy <= ry && ry > 0 ? fabs(dx - rx * sqrt(1 - dy * dy / ((double)ry * ry))) : (dy == 0 ? fabs(dx - rx) : 1e9);
-                double yd = dx <= rx && rx > 0 ? fabs(dy - ry * sqrt(1 - dx * dx / ((double)rx * rx))) : (dx == 0 ? fabs(dy - ry) : 1e9);
+                double xd = dy <= ry && ry > 0
+                                ? fabs(dx - rx * sqrt(1 - dy * dy / ((double)ry * ry)))
+                                : (dy == 0 ? fabs(dx - rx) : 1e9);
+                double yd = dx <= rx && rx > 0
+                                ? fabs(dy - ry * sqrt(1 - dx * dx / ((double)rx * rx)))
+                                : (dx == 0 ? fabs(dy - ry) : 1e9);
                 if (ry == 0 || rx == 0)
                     xd = yd = 0; /* degenerate: a segment */
                 dist &= fmin(xd, yd) <= 0.5 + 1e-9;
@@ -352,7 +365,8 @@ static void ellipses(void)
     long bad = 0;
     for (int i = 0; i < 300; i++) {
         int rx = (int)check_rng_int(&rng, 0, 150), ry = (int)check_rng_int(&rng, 0, 150);
-        int cx = (int)check_rng_int(&rng, -rx - 2, 30 + rx + 2), cy = (int)check_rng_int(&rng, -ry - 2, 20 + ry + 2);
+        int cx = (int)check_rng_int(&rng, -rx - 2, 30 + rx + 2),
+            cy = (int)check_rng_int(&rng, -ry - 2, 20 + ry + 2);
         cg_image_clear_rgba8(small, black);
         cg_image_clear_rgba8(big, black);
         cg_draw_ellipse(small, cx, cy, rx, ry, white);
@@ -409,7 +423,8 @@ static void arcs(void)
     /* A quarter arc from 0 to 90 degrees is the upper-right quarter. */
     cg_image_clear_rgba8(arc, black);
     cg_draw_arc(arc, 50, 50, 20, 0, 90, white);
-    CHECK(is_set(arc, 70, 50) && is_set(arc, 50, 30) && !is_set(arc, 30, 50) && !is_set(arc, 50, 70));
+    CHECK(is_set(arc, 70, 50) && is_set(arc, 50, 30) && !is_set(arc, 30, 50)
+          && !is_set(arc, 50, 70));
     cg_image_free(full);
     cg_image_free(arc);
 }
@@ -492,9 +507,7 @@ static void drawn_curves(void)
         case CG_BASIS_BSPLINE:
             status = cg_draw_bspline(image, p, 4, tol, CG_DRAW_ALIASED, white);
             break;
-        default:
-            status = cg_draw_catmull_rom(image, p, 4, tol, CG_DRAW_ALIASED, white);
-            break;
+        default: status = cg_draw_catmull_rom(image, p, 4, tol, CG_DRAW_ALIASED, white); break;
         }
         if (status == CG_ERANGE || (i % 4 == CG_BASIS_HERMITE && status != CG_OK))
             continue; /* a Hermite with huge tangents may leave the image */
@@ -553,7 +566,8 @@ static void bad_input(void)
     CHECK(cg_draw_bezier(image, same, 4, 0.5, CG_DRAW_ANTIALIASED, white) == CG_EEMPTY);
     CHECK(cg_draw_bspline(image, same, 4, 0.5, CG_DRAW_ALIASED, white) == CG_EEMPTY);
     CHECK(cg_draw_hermite(image, same[0], same[0], cg_vec2_make(0, 0), cg_vec2_make(0, 0), 0.5,
-                          CG_DRAW_ALIASED, white) == CG_EEMPTY);
+                          CG_DRAW_ALIASED, white)
+          == CG_EEMPTY);
     CHECK(cg_draw_bspline(image, same, 3, 0.5, CG_DRAW_ALIASED, white) == CG_EINVAL);
     cg_vec2 far[2] = {{0, 0}, {1e12, 5}};
     CHECK(cg_draw_bezier(image, far, 2, 0.5, CG_DRAW_ALIASED, white) == CG_ERANGE);

@@ -17,24 +17,39 @@ static int is_set(const cg_image *image, int x, int y)
 /* Clears the rectangle [x0, x1] x [y0, y1] (clipped) to black. */
 static void clear_box(cg_image *image, long long x0, long long y0, long long x1, long long y1)
 {
-    if (x1 < x0) { long long t = x0; x0 = x1; x1 = t; }
-    if (y1 < y0) { long long t = y0; y0 = y1; y1 = t; }
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 >= image->width) x1 = image->width - 1;
-    if (y1 >= image->height) y1 = image->height - 1;
+    if (x1 < x0) {
+        long long t = x0;
+        x0 = x1;
+        x1 = t;
+    }
+    if (y1 < y0) {
+        long long t = y0;
+        y0 = y1;
+        y1 = t;
+    }
+    if (x0 < 0)
+        x0 = 0;
+    if (y0 < 0)
+        y0 = 0;
+    if (x1 >= image->width)
+        x1 = image->width - 1;
+    if (y1 >= image->height)
+        y1 = image->height - 1;
     for (long long y = y0; y <= y1; y++)
         for (long long x = x0; x <= x1; x++)
             cg_image_set_rgba8(image, (int)x, (int)y, black);
 }
 
-typedef struct pixel { int x, y; } pixel;
+typedef struct pixel {
+    int x, y;
+} pixel;
 
 /* The pixels of the line in the box [x0, x1] x [y0, y1] of the image, listed
  * along the major axis (x for |dx| >= |dy|). */
 static int collect(const cg_image *image, int ax, int ay, int bx, int by, pixel *out, int cap)
 {
-    int x0 = ax < bx ? ax : bx, x1 = ax < bx ? bx : ax, y0 = ay < by ? ay : by, y1 = ay < by ? by : ay;
+    int x0 = ax < bx ? ax : bx, x1 = ax < bx ? bx : ax, y0 = ay < by ? ay : by,
+        y1 = ay < by ? by : ay;
     int x_major = abs(bx - ax) >= abs(by - ay), n = 0;
     if (x_major) {
         for (int x = x0; x <= x1; x++)
@@ -159,8 +174,12 @@ __extension__ typedef __int128 wide;
 static long long expected_minor(long long u0, long long v0, long long u1, long long v1, long long u)
 {
     if (u1 < u0) {
-        long long t = u0; u0 = u1; u1 = t;
-        t = v0; v0 = v1; v1 = t;
+        long long t = u0;
+        u0 = u1;
+        u1 = t;
+        t = v0;
+        v0 = v1;
+        v1 = t;
     }
     wide du = u1 - u0, dv = v1 - v0, k = u - u0;
     /* v = v0 + dv k / du; nearest with ties toward v0: */
@@ -200,8 +219,16 @@ static void huge_lines(void)
         }
         if (i < 8) { /* the extreme corners */
             long long c[4] = {INT_MIN, INT_MAX, INT_MIN, INT_MAX};
-            ax = c[i % 2]; ay = c[(i / 2) % 2 + 2]; bx = c[1 - i % 2]; by = c[3 - (i / 2) % 2 - 0];
-            if (i >= 4) { ax = INT_MIN; ay = INT_MIN + i; bx = INT_MAX; by = INT_MAX - i; }
+            ax = c[i % 2];
+            ay = c[(i / 2) % 2 + 2];
+            bx = c[1 - i % 2];
+            by = c[3 - (i / 2) % 2 - 0];
+            if (i >= 4) {
+                ax = INT_MIN;
+                ay = INT_MIN + i;
+                bx = INT_MAX;
+                by = INT_MAX - i;
+            }
         }
         cg_image_clear_rgba8(image, black);
         cg_draw_line(image, (int)ax, (int)ay, (int)bx, (int)by, white);
@@ -229,12 +256,14 @@ static void edge_cases(void)
 {
     cg_image *image;
     cg_image_create(&image, 16, 12, CG_PIXEL_RGBA8);
-    struct { int ax, ay, bx, by, count; } cases[] = {
-        {3, 4, 3, 4, 1},     /* single pixel */
-        {0, 5, 15, 5, 16},   /* horizontal, full width */
-        {7, 0, 7, 11, 12},   /* vertical, full height */
-        {0, 0, 11, 11, 12},  /* diagonal */
-        {11, 0, 0, 11, 12},  /* anti-diagonal */
+    struct {
+        int ax, ay, bx, by, count;
+    } cases[] = {
+        {3, 4, 3, 4, 1},    /* single pixel */
+        {0, 5, 15, 5, 16},  /* horizontal, full width */
+        {7, 0, 7, 11, 12},  /* vertical, full height */
+        {0, 0, 11, 11, 12}, /* diagonal */
+        {11, 0, 0, 11, 12}, /* anti-diagonal */
         {-100, 3, 100, 3, 16},
         {5, -100, 5, 100, 12},
         {INT_MIN, 2, INT_MAX, 2, 16},
@@ -244,7 +273,8 @@ static void edge_cases(void)
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         cg_image_clear_rgba8(image, black);
-        CHECK(cg_draw_line(image, cases[i].ax, cases[i].ay, cases[i].bx, cases[i].by, white) == CG_OK);
+        CHECK(cg_draw_line(image, cases[i].ax, cases[i].ay, cases[i].bx, cases[i].by, white)
+              == CG_OK);
         int n = 0;
         for (int y = 0; y < 12; y++)
             for (int x = 0; x < 16; x++)
@@ -306,7 +336,10 @@ static void blending_once(void)
 }
 
 /* cg_line_trace follows Algorithm 1 and agrees with the drawing. */
-typedef struct trace_record { pixel p[256]; int n; } trace_record;
+typedef struct trace_record {
+    pixel p[256];
+    int n;
+} trace_record;
 static int record(void *user, const cg_line_step *s)
 {
     trace_record *r = user;

@@ -324,7 +324,7 @@ static void strokes(void)
     style.dash_count = 2;
     cg_stroke_path(im, path, &style, &paint);
     CHECK_NEAR(total_alpha(im), 5 * 4 * 2, quantization(im));
-    CHECK(cg_image_get(im, 7, 10).a < 0.01f);  /* in the first gap: x 6..8 */
+    CHECK(cg_image_get(im, 7, 10).a < 0.01f); /* in the first gap: x 6..8 */
     CHECK(cg_image_get(im, 4, 10).a > 0.99f);
     /* Offset by 1: the pattern starts 1 into the first dash. */
     cg_image_clear_rgba8(im, (cg_rgba8){0, 0, 0, 0});
@@ -435,10 +435,12 @@ static void svg_paths(void)
     cg_paint paint = cg_paint_solid(white);
     /* The same square five ways. */
     const char *squares[] = {"M 4 4 L 20 4 L 20 20 L 4 20 Z", "M4,4 20,4 20,20 4,20z",
-                             "m4 4 h16 v16 h-16 z", "M4 4H20V20H4Z", "M 4e0 .4e1 l 16 0 0 16 -16 0 Z"};
+                             "m4 4 h16 v16 h-16 z", "M4 4H20V20H4Z",
+                             "M 4e0 .4e1 l 16 0 0 16 -16 0 Z"};
     for (int i = 0; i < 5; i++) {
         cg_path_reset(path);
-        CHECK_MSG(cg_path_append_svg(path, squares[i], &err) == CG_OK, "%s: %s", squares[i], err.message);
+        CHECK_MSG(cg_path_append_svg(path, squares[i], &err) == CG_OK, "%s: %s", squares[i],
+                  err.message);
         cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
         cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
         CHECK_NEAR(total_alpha(a), 256, 1e-3);
@@ -446,7 +448,8 @@ static void svg_paths(void)
     }
     /* A circle from two SVG arcs: area pi r^2 within the flattening. */
     cg_path_reset(path);
-    CHECK(cg_path_append_svg(path, "M 6 16 A 10 10 0 0 1 26 16 A 10 10 0 1 1 6 16 Z", &err) == CG_OK);
+    CHECK(cg_path_append_svg(path, "M 6 16 A 10 10 0 0 1 26 16 A 10 10 0 1 1 6 16 Z", &err)
+          == CG_OK);
     cg_image_clear_rgba8(a, (cg_rgba8){0, 0, 0, 0});
     cg_fill_path(a, path, CG_FILL_NONZERO, &paint);
     CHECK_NEAR(total_alpha(a), CG_PI * 100, 0.1 * 2 * CG_PI * 10);
@@ -464,8 +467,9 @@ static void svg_paths(void)
     cg_fill_path(b, path, CG_FILL_EVEN_ODD, &paint);
     CHECK_NEAR(total_alpha(b), CG_PI * 64, 0.1 * 2 * CG_PI * 8);
     /* Malformed data: a clear message, the path unchanged. */
-    const char *bad[] = {"L 10 10", "M 10", "M 10 10 L 5", "M 1e999 0", "M 10 10 A 5 5 0 2 1 0 0",
-                         "M 10 10 X 4", "M nan 4", "M 0x10 4", "M 10 10 L 4 4 Q"};
+    const char *bad[] = {
+        "L 10 10",     "M 10",    "M 10 10 L 5", "M 1e999 0",      "M 10 10 A 5 5 0 2 1 0 0",
+        "M 10 10 X 4", "M nan 4", "M 0x10 4",    "M 10 10 L 4 4 Q"};
     for (int i = 0; i < (int)(sizeof bad / sizeof bad[0]); i++) {
         cg_path_reset(path);
         cg_path_move_to(path, 1, 1);
@@ -523,7 +527,8 @@ static void curves(void)
     CHECK_NEAR(total_alpha(a), CG_PI * r * r, 0.1 * 2 * CG_PI * r + quantization(a));
     /* Smooth and relative forms. */
     const char *pairs[][2] = {
-        {"M 8 40 C 8 10 30 10 30 40 C 30 70 56 70 56 40 Z", "M 8 40 c 0 -30 22 -30 22 0 s 26 30 26 0 z"},
+        {"M 8 40 C 8 10 30 10 30 40 C 30 70 56 70 56 40 Z",
+         "M 8 40 c 0 -30 22 -30 22 0 s 26 30 26 0 z"},
         {"M 8 40 Q 20 10 32 40 Q 44 70 56 40 Z", "m 8 40 q 12 -30 24 0 t 24 0 z"},
         {"M 8 8 L 40 8 L 40 40 Z", "M 8 8 H 40 V 40 z"},
     };
@@ -597,9 +602,13 @@ static void aa_blending(void)
     int bad = 0;
     for (int t = 0; t < 300; t++) {
         cg_rgba8 bg = {(uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255),
-                       (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)(t % 3 == 0 ? 0 : t % 3 == 1 ? 255 : check_rng_int(&rng, 1, 254))};
+                       (uint8_t)check_rng_int(&rng, 0, 255),
+                       (uint8_t)(t % 3 == 0   ? 0
+                                 : t % 3 == 1 ? 255
+                                              : check_rng_int(&rng, 1, 254))};
         cg_rgba8 fg = {(uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)check_rng_int(&rng, 0, 255),
-                       (uint8_t)check_rng_int(&rng, 0, 255), (uint8_t)(t % 2 ? 255 : check_rng_int(&rng, 0, 255))};
+                       (uint8_t)check_rng_int(&rng, 0, 255),
+                       (uint8_t)(t % 2 ? 255 : check_rng_int(&rng, 0, 255))};
         double cover = check_rng_range(&rng, 0.05, 0.95);
         cg_image *a, *b;
         cg_image_create(&a, 2, 1, CG_PIXEL_RGBA8);
@@ -635,7 +644,9 @@ static void aa_blending_reused(void)
     cg_image *a, *b;
     cg_image_create(&a, 2, 1, CG_PIXEL_RGBA8);
     cg_image_create(&b, 2, 1, CG_PIXEL_RGBA8);
-    const cg_rgba8 palette[4] = {{30, 60, 200, 255}, {255, 255, 255, 255}, {0, 0, 0, 255},
+    const cg_rgba8 palette[4] = {{30, 60, 200, 255},
+                                 {255, 255, 255, 255},
+                                 {0, 0, 0, 255},
                                  {200, 30, 90, 160}};
     int bad = 0, same_bad = 0;
     cg_rgba8 fg = palette[0], bg = palette[0];
@@ -656,7 +667,8 @@ static void aa_blending_reused(void)
         cg_vec2 rect[4] = {{0, 0}, {cover, 0}, {cover, 1}, {0, 1}};
         int four = 4;
         cg_paint paint = cg_paint_solid(fg);
-        CHECK(cg_rasterizer_fill_polygon_aa(r, a, rect, &four, 1, CG_FILL_EVEN_ODD, &paint) == CG_OK);
+        CHECK(cg_rasterizer_fill_polygon_aa(r, a, rect, &four, 1, CG_FILL_EVEN_ODD, &paint)
+              == CG_OK);
         cg_rgbaf src = cg_rgba8_to_linear(fg);
         src.a *= (float)(floor(cover * 255 + 0.5) / 255);
         cg_image_blend(b, 0, 0, src);
@@ -689,7 +701,7 @@ static void aa_blend_exact(void)
     cg_image *im;
     CHECK(cg_image_create(&im, 1, 1, CG_PIXEL_RGBA8) == CG_OK);
     cg_rgba8 paints[10] = {{30, 60, 200, 255}, {200, 90, 40, 255}, {255, 255, 255, 255},
-                           {0, 0, 0, 255}, {1, 254, 128, 255}, {200, 30, 90, 160},
+                           {0, 0, 0, 255},     {1, 254, 128, 255}, {200, 30, 90, 160},
                            {90, 10, 30, 0}};
     for (int i = 7; i < 10; i++)
         paints[i] = (cg_rgba8){(uint8_t)check_rng_int(&rng, 0, 255),
@@ -725,9 +737,8 @@ static void aa_blend_exact(void)
                         fprintf(stderr,
                                 "blend of %d,%d,%d,%d over %d,%d,%d,%d at %d: %d,%d,%d,%d vs "
                                 "%d,%d,%d,%d\n",
-                                paints[i].r, paints[i].g, paints[i].b, paints[i].a, d.r, d.g,
-                                d.b, d.a, c, got.r, got.g, got.b, got.a, want.r, want.g, want.b,
-                                want.a);
+                                paints[i].r, paints[i].g, paints[i].b, paints[i].a, d.r, d.g, d.b,
+                                d.a, c, got.r, got.g, got.b, got.a, want.r, want.g, want.b, want.a);
                 }
             }
     }
@@ -752,8 +763,11 @@ static void aa_opaque_over_opaque(void)
     cg_image_create(&im, size, size, CG_PIXEL_RGBA8);
     cg_image_create(&expect, size, size, CG_PIXEL_RGBA8);
     cg_image_create(&cover, size, size, CG_PIXEL_RGBA8);
-    const cg_rgba8 palette[5] = {{30, 60, 200, 255}, {200, 90, 40, 255}, {255, 255, 255, 255},
-                                 {0, 0, 0, 255}, {17, 240, 128, 255}};
+    const cg_rgba8 palette[5] = {{30, 60, 200, 255},
+                                 {200, 90, 40, 255},
+                                 {255, 255, 255, 255},
+                                 {0, 0, 0, 255},
+                                 {17, 240, 128, 255}};
     for (int y = 0; y < size; y++)
         for (int x = 0; x < size; x++) {
             cg_rgba8 c = x < size / 2 ? palette[check_rng_int(&rng, 0, 4)]
@@ -886,7 +900,8 @@ static void rules_and_paints(void)
     CHECK(monotonic);
     /* Middle of the gradient is linear 0.5 (interpolated in linear light). */
     for (int x = 4; x < 28; x++)
-        CHECK(abs(cg_image_get_rgba8(im, x, 3).r - cg_linear_to_srgb8((float)((x + 0.5 - 4) / 24))) <= 2);
+        CHECK(abs(cg_image_get_rgba8(im, x, 3).r - cg_linear_to_srgb8((float)((x + 0.5 - 4) / 24)))
+              <= 2);
     /* Radial: centre is the first stop, far corner the last. */
     cg_paint rad = cg_paint_radial(cg_vec2_make(16, 16), 10, stops, 2);
     CHECK(cg_fill_polygon_aa(im, all, &four, 1, CG_FILL_NONZERO, &rad) == CG_OK);
@@ -960,8 +975,8 @@ static void near_vertical(void)
         for (int i = 0; i < ulps; i++)
             off = nextafter(off, n % 2 ? 0 : 200);
         /* the shape lies right of the edge from (off, bottom) up to (x, top) */
-        cg_vec2 p[6] = {{x, top}, {x + 16.125, top}, {x + 16.125, bottom}, {102, 98},
-                        {34, 112}, {off, bottom}};
+        cg_vec2 p[6] = {{x, top},  {x + 16.125, top}, {x + 16.125, bottom},
+                        {102, 98}, {34, 112},         {off, bottom}};
         cg_image *im;
         cg_image_create(&im, 128, 128, CG_PIXEL_RGBA8);
         int six = 6;

@@ -66,12 +66,9 @@ static double ref_separable(cg_blend_mode m, double cb, double cs)
         return cb <= 0.5 ? cs * 2 * cb : 1 - (1 - cs) * (1 - (2 * cb - 1));
     case CG_BLEND_DARKEN: return fmin(cb, cs);
     case CG_BLEND_LIGHTEN: return fmax(cb, cs);
-    case CG_BLEND_COLOR_DODGE:
-        return cb == 0 ? 0 : (cs == 1 ? 1 : fmin(1, cb / (1 - cs)));
-    case CG_BLEND_COLOR_BURN:
-        return cb == 1 ? 1 : (cs == 0 ? 0 : 1 - fmin(1, (1 - cb) / cs));
-    case CG_BLEND_HARD_LIGHT:
-        return cs <= 0.5 ? cb * 2 * cs : 1 - (1 - cb) * (1 - (2 * cs - 1));
+    case CG_BLEND_COLOR_DODGE: return cb == 0 ? 0 : (cs == 1 ? 1 : fmin(1, cb / (1 - cs)));
+    case CG_BLEND_COLOR_BURN: return cb == 1 ? 1 : (cs == 0 ? 0 : 1 - fmin(1, (1 - cb) / cs));
+    case CG_BLEND_HARD_LIGHT: return cs <= 0.5 ? cb * 2 * cs : 1 - (1 - cb) * (1 - (2 * cs - 1));
     case CG_BLEND_SOFT_LIGHT: {
         if (cs <= 0.5)
             return cb - (1 - 2 * cs) * cb * (1 - cb);
@@ -83,7 +80,10 @@ static double ref_separable(cg_blend_mode m, double cb, double cs)
     }
 }
 
-static double ref_lum(const double *c) { return 0.3 * c[0] + 0.59 * c[1] + 0.11 * c[2]; }
+static double ref_lum(const double *c)
+{
+    return 0.3 * c[0] + 0.59 * c[1] + 0.11 * c[2];
+}
 
 static void ref_clip(double *c)
 {
@@ -176,10 +176,12 @@ static void operators(void)
             reference_operator((cg_composite_operator)op, sd, bd, want);
             cg_rgbaf got = cg_composite(s, b, (cg_composite_operator)op, CG_BLEND_NORMAL);
             if (!near_color(got, want, 2e-6) && bad++ == 0)
-                CHECK_MSG(0, "%s: (%g %g %g %g) on (%g %g %g %g) gave (%g %g %g %g), want "
-                          "(%g %g %g %g)", cg_composite_operator_name((cg_composite_operator)op),
-                          sd[0], sd[1], sd[2], sd[3], bd[0], bd[1], bd[2], bd[3], got.r, got.g,
-                          got.b, got.a, want[0], want[1], want[2], want[3]);
+                CHECK_MSG(0,
+                          "%s: (%g %g %g %g) on (%g %g %g %g) gave (%g %g %g %g), want "
+                          "(%g %g %g %g)",
+                          cg_composite_operator_name((cg_composite_operator)op), sd[0], sd[1],
+                          sd[2], sd[3], bd[0], bd[1], bd[2], bd[3], got.r, got.g, got.b, got.a,
+                          want[0], want[1], want[2], want[3]);
         }
         CHECK_MSG(bad == 0, "%s: %d of 2000 off", cg_composite_operator_name(op), bad);
     }
@@ -242,12 +244,13 @@ static void names(void)
     CHECK(cg_composite_operator_name(CG_OPERATOR_COUNT) == NULL);
     cg_rasterizer *r;
     CHECK(cg_rasterizer_create(&r) == CG_OK);
-    CHECK(cg_rasterizer_set_compositing(r, (cg_compositing_space)2, CG_OPERATOR_OVER,
-                                        CG_BLEND_NORMAL) == CG_EINVAL);
-    CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_COUNT,
-                                        CG_BLEND_NORMAL) == CG_EINVAL);
-    CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_OVER,
-                                        (cg_blend_mode)-1) == CG_EINVAL);
+    CHECK(
+        cg_rasterizer_set_compositing(r, (cg_compositing_space)2, CG_OPERATOR_OVER, CG_BLEND_NORMAL)
+        == CG_EINVAL);
+    CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_COUNT, CG_BLEND_NORMAL)
+          == CG_EINVAL);
+    CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_OVER, (cg_blend_mode)-1)
+          == CG_EINVAL);
     cg_rasterizer_free(r);
 }
 
@@ -297,12 +300,14 @@ static void rasterizer_srgb(void)
     cg_rgba8 black = {0, 0, 0, 255}, white = {255, 255, 255, 255};
     cg_paint paint = cg_paint_solid(white);
     cg_image *image = filled_image(1, 1, black);
-    CHECK(cg_rasterizer_fill_polygon_aa(r, image, half, &four, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK(cg_rasterizer_fill_polygon_aa(r, image, half, &four, 1, CG_FILL_NONZERO, &paint)
+          == CG_OK);
     CHECK_EQ_INT(cg_image_row_rgba8(image, 0)[0].r, 188);
     cg_image_row_rgba8(image, 0)[0] = black;
     CHECK(cg_rasterizer_set_compositing(r, CG_COMPOSITE_SRGB, CG_OPERATOR_OVER, CG_BLEND_NORMAL)
           == CG_OK);
-    CHECK(cg_rasterizer_fill_polygon_aa(r, image, half, &four, 1, CG_FILL_NONZERO, &paint) == CG_OK);
+    CHECK(cg_rasterizer_fill_polygon_aa(r, image, half, &four, 1, CG_FILL_NONZERO, &paint)
+          == CG_OK);
     CHECK_EQ_INT(cg_image_row_rgba8(image, 0)[0].r, 128);
     cg_image_free(image);
 
@@ -310,7 +315,8 @@ static void rasterizer_srgb(void)
      * formula on the encoded values within one code */
     int bad = 0, total = 0;
     for (int n = 0; n < 3000; n++) {
-        cg_composite_operator op = (cg_composite_operator)check_rng_int(&rng, 0, CG_OPERATOR_COUNT - 1);
+        cg_composite_operator op = (cg_composite_operator)check_rng_int(&rng, 0,
+                                                                        CG_OPERATOR_COUNT - 1);
         cg_blend_mode mode = (cg_blend_mode)check_rng_int(&rng, 0, CG_BLEND_COUNT - 1);
         cg_rgba8 s = random_rgba8(), d = random_rgba8();
         double width = check_rng_int(&rng, 0, 4) == 0 ? 1 : check_rng_unit(&rng);
@@ -331,9 +337,11 @@ static void rasterizer_srgb(void)
             ok = ok && fabs(got_rgb[i] * got.a / 255 - want[i] * 255) <= 1.01;
         total++;
         if (!ok && bad++ < 3)
-            CHECK_MSG(0, "%s/%s: (%d %d %d %d) at %g onto (%d %d %d %d) gave (%d %d %d %d), want "
-                      "(%.1f %.1f %.1f %.1f)", cg_composite_operator_name(op), cg_blend_mode_name(mode),
-                      s.r, s.g, s.b, s.a, width, d.r, d.g, d.b, d.a, got.r, got.g, got.b, got.a,
+            CHECK_MSG(0,
+                      "%s/%s: (%d %d %d %d) at %g onto (%d %d %d %d) gave (%d %d %d %d), want "
+                      "(%.1f %.1f %.1f %.1f)",
+                      cg_composite_operator_name(op), cg_blend_mode_name(mode), s.r, s.g, s.b, s.a,
+                      width, d.r, d.g, d.b, d.a, got.r, got.g, got.b, got.a,
                       wa > 0 ? want[0] / wa * 255 : 0, wa > 0 ? want[1] / wa * 255 : 0,
                       wa > 0 ? want[2] / wa * 255 : 0, wa * 255);
         cg_image_free(image);
@@ -507,8 +515,9 @@ static void layers(void)
     cg_image *after = filled_image(32, 32, white);
     cg_path *ring;
     CHECK(cg_path_create(&ring) == CG_OK);
-    CHECK(cg_path_append_svg(ring, "M 3.3 3.7 L 28.6 4.2 L 27.1 29.4 Z M 9 9 L 20 10 L 18 19 Z",
-                             NULL) == CG_OK);
+    CHECK(
+        cg_path_append_svg(ring, "M 3.3 3.7 L 28.6 4.2 L 27.1 29.4 Z M 9 9 L 20 10 L 18 19 Z", NULL)
+        == CG_OK);
     cg_rasterizer *plain;
     CHECK(cg_rasterizer_create(&plain) == CG_OK);
     cg_paint ink = cg_paint_solid(white);
@@ -592,8 +601,8 @@ static void layers(void)
     style = cg_layer_style_default();
     style.mode = CG_BLEND_COUNT;
     CHECK(cg_rasterizer_composite_layer(r, image, layer, &style) == CG_EINVAL);
-    cg_image *list[] = {image, layer, before, coverage, after, clipped, mask, masked,
-                        alpha_masked, backdrop, expected, small};
+    cg_image *list[] = {image, layer,  before,       coverage, after,    clipped,
+                        mask,  masked, alpha_masked, backdrop, expected, small};
     for (size_t i = 0; i < sizeof list / sizeof *list; i++)
         cg_image_free(list[i]);
     cg_path_free(a);

@@ -29,7 +29,8 @@ static size_t bfs_fill(cg_image *im, int sx, int sy, cg_rgba8 color, int boundar
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
             cg_rgba8 p = cg_image_get_rgba8(im, x, y);
-            in[(size_t)y * w + x] = boundary_mode ? !near(p, boundary, tolerance) : near(p, seed, tolerance);
+            in[(size_t)y * w + x] = boundary_mode ? !near(p, boundary, tolerance)
+                                                  : near(p, seed, tolerance);
         }
     size_t count = 0, head = 0, tail = 0;
     if (in[(size_t)sy * w + sx]) {
@@ -103,7 +104,8 @@ static void random_images(void)
         cg_image_copy(a, &b);
         int sx = (int)check_rng_int(&rng, 0, w - 1), sy = (int)check_rng_int(&rng, 0, h - 1);
         int eight = check_rng_int(&rng, 0, 1) != 0;
-        int tolerance = kind == 1 ? (int)check_rng_int(&rng, 0, 20) : (int)check_rng_int(&rng, 0, 1) * 3;
+        int tolerance = kind == 1 ? (int)check_rng_int(&rng, 0, 20)
+                                  : (int)check_rng_int(&rng, 0, 1) * 3;
         int boundary_mode = check_rng_int(&rng, 0, 3) == 0;
         cg_rgba8 color = palette((int)check_rng_int(&rng, 0, 5));
         cg_rgba8 boundary = palette((int)check_rng_int(&rng, 0, colors - 1));
@@ -119,14 +121,16 @@ static void random_images(void)
         runs++;
         if (st != CG_OK || filled != expect || !images_equal(a, b)) {
             if (++mismatches <= 5)
-                fprintf(stderr, "trial %d: %dx%d seed %d,%d eight %d tol %d boundary %d: "
-                                "filled %zu expected %zu status %d\n",
+                fprintf(stderr,
+                        "trial %d: %dx%d seed %d,%d eight %d tol %d boundary %d: "
+                        "filled %zu expected %zu status %d\n",
                         trial, w, h, sx, sy, eight, tolerance, boundary_mode, filled, expect, st);
         }
         cg_image_free(a);
         cg_image_free(b);
     }
-    CHECK_MSG(mismatches == 0, "%d of %d random fills differ from the BFS reference", mismatches, runs);
+    CHECK_MSG(mismatches == 0, "%d of %d random fills differ from the BFS reference", mismatches,
+              runs);
 }
 
 /* A perfect maze on a grid of cells. */
@@ -168,12 +172,14 @@ static void mazes_and_spirals(void)
 {
     check_rng rng = {99};
     for (int t = 0; t < 40; t++) {
-        cg_image *a = maze(&rng, (int)check_rng_int(&rng, 1, 60), (int)check_rng_int(&rng, 1, 60)), *b;
+        cg_image *a = maze(&rng, (int)check_rng_int(&rng, 1, 60), (int)check_rng_int(&rng, 1, 60)),
+                 *b;
         cg_image_copy(a, &b);
         cg_rgba8 red = {255, 0, 0, 255};
         size_t filled;
         int eight = t % 2;
-        CHECK(cg_flood_fill(a, 1, 1, red, eight ? CG_CONNECT_8 : CG_CONNECT_4, 0, &filled) == CG_OK);
+        CHECK(cg_flood_fill(a, 1, 1, red, eight ? CG_CONNECT_8 : CG_CONNECT_4, 0, &filled)
+              == CG_OK);
         size_t expect = bfs_fill(b, 1, 1, red, 0, red, eight, 0);
         CHECK_EQ_INT(filled, expect);
         CHECK(images_equal(a, b));

@@ -169,7 +169,8 @@ static void tilings(void)
         int quads = trial % 3 == 0;
         for (int j = 0; j < gy; j++)
             for (int i = 0; i < gx; i++) {
-                cg_vec2 a = grid[j][i], b = grid[j][i + 1], c = grid[j + 1][i + 1], d = grid[j + 1][i];
+                cg_vec2 a = grid[j][i], b = grid[j][i + 1], c = grid[j + 1][i + 1],
+                        d = grid[j + 1][i];
                 if (quads) {
                     cg_vec2 q[4] = {a, b, c, d};
                     int n = 4;

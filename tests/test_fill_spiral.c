@@ -30,7 +30,7 @@ static int wall(int x, int y, int n)
     /* (d, d+1) lies on ring d exactly when 2d <= n - 2 */
     int special = x == d && y == d + 1 && 2 * d <= n - 2;
     if (d % 2 == 0)
-        return !(special && d > 0);            /* door */
+        return !(special && d > 0);                   /* door */
     return special && d >= 3 && 2 * (d - 1) <= n - 2; /* blocker after a door */
 }
 
@@ -101,8 +101,7 @@ static size_t mismatches(cg_image *im, cg_rgba8 wall_color, cg_rgba8 corridor_co
     return bad;
 }
 
-static const cg_rgba8 black = {0, 0, 0, 255}, white = {255, 255, 255, 255},
-                      red = {255, 0, 0, 255};
+static const cg_rgba8 black = {0, 0, 0, 255}, white = {255, 255, 255, 255}, red = {255, 0, 0, 255};
 
 /* Small spirals: the corridor is one 4-connected region whose size is the
  * count by construction, so the definition and the count can be trusted. */

@@ -30,8 +30,8 @@ static void check_stats(const char *name, const cg_hemesh *h, size_t V, size_t E
               st.faces, V, E, F);
     CHECK_MSG(st.boundary_loops == loops, "%s: %zu boundary loops, expected %zu", name,
               st.boundary_loops, loops);
-    CHECK_MSG(st.components == components, "%s: %zu components, expected %zu", name,
-              st.components, components);
+    CHECK_MSG(st.components == components, "%s: %zu components, expected %zu", name, st.components,
+              components);
     CHECK_MSG(st.genus == genus, "%s: genus %ld, expected %ld", name, st.genus, genus);
     CHECK_EQ_INT(st.euler_characteristic, (long)V - (long)E + (long)F);
 }
@@ -90,8 +90,9 @@ static void check_traversals(const char *name, const cg_mesh *mesh, const cg_hem
         int reversed = n1 == 0 || b[0] == a[0];
         for (size_t i = 1; i < n1 && reversed; i++)
             reversed = b[i] == a[n1 - i];
-        CHECK_MSG(reversed, "%s: vertex %zu: clockwise ring is not the counter-clockwise one reversed",
-                  name, v);
+        CHECK_MSG(reversed,
+                  "%s: vertex %zu: clockwise ring is not the counter-clockwise one reversed", name,
+                  v);
         qsort(a, n1, sizeof *a, cmp_u32);
         CHECK_MSG(memcmp(a, nb, nn * sizeof *a) == 0, "%s: vertex %zu: wrong neighbours", name, v);
         qsort(c, n3, sizeof *c, cmp_u32);
@@ -187,7 +188,9 @@ static void test_shapes(void)
         if (back) {
             CHECK_EQ_INT(back->vertex_count, mesh->vertex_count);
             CHECK_EQ_INT(back->face_count, mesh->face_count);
-            CHECK(memcmp(back->positions, mesh->positions, mesh->vertex_count * sizeof *mesh->positions) == 0);
+            CHECK(memcmp(back->positions, mesh->positions,
+                         mesh->vertex_count * sizeof *mesh->positions)
+                  == 0);
             check_traversals("round trip", back, h);
             cg_mesh_free(back);
         }
@@ -203,7 +206,8 @@ static void test_components(void)
     cg_mesh *a = shape_torus(6, 4, 0), *b = shape_cube(0);
     cg_mesh *m = NULL;
     CHECK(cg_mesh_create(&m, a->vertex_count + b->vertex_count + 2, a->face_count + b->face_count,
-                         a->face_offsets[a->face_count] + b->face_offsets[b->face_count], 0) == CG_OK);
+                         a->face_offsets[a->face_count] + b->face_offsets[b->face_count], 0)
+          == CG_OK);
     memcpy(m->positions, a->positions, a->vertex_count * sizeof *a->positions);
     memcpy(m->positions + a->vertex_count, b->positions, b->vertex_count * sizeof *b->positions);
     size_t na = a->face_offsets[a->face_count];
@@ -283,11 +287,15 @@ static void test_attributes(void)
 {
     cg_mesh *src = shape_grid(3, 2, 1);
     cg_mesh *mesh = NULL;
-    CHECK(cg_mesh_create(&mesh, src->vertex_count, src->face_count, src->face_offsets[src->face_count],
-                         CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS | CG_MESH_FACE_COLORS) == CG_OK);
+    CHECK(cg_mesh_create(&mesh, src->vertex_count, src->face_count,
+                         src->face_offsets[src->face_count],
+                         CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS | CG_MESH_FACE_COLORS)
+          == CG_OK);
     memcpy(mesh->positions, src->positions, src->vertex_count * sizeof *src->positions);
-    memcpy(mesh->face_offsets, src->face_offsets, (src->face_count + 1) * sizeof *src->face_offsets);
-    memcpy(mesh->face_indices, src->face_indices, src->face_offsets[src->face_count] * sizeof(uint32_t));
+    memcpy(mesh->face_offsets, src->face_offsets,
+           (src->face_count + 1) * sizeof *src->face_offsets);
+    memcpy(mesh->face_indices, src->face_indices,
+           src->face_offsets[src->face_count] * sizeof(uint32_t));
     for (size_t v = 0; v < mesh->vertex_count; v++) {
         mesh->normals[v] = cg_vec3_make(0, 0, 1);
         mesh->texcoords[v] = cg_vec2_make(mesh->positions[v].x / 3, mesh->positions[v].y / 2);
@@ -299,10 +307,12 @@ static void test_attributes(void)
     cg_mesh *back = NULL;
     CHECK(cg_hemesh_to_mesh(h, &back) == CG_OK);
     CHECK(back->normals && back->texcoords && back->colors && back->face_colors);
-    CHECK(memcmp(back->texcoords, mesh->texcoords, mesh->vertex_count * sizeof *mesh->texcoords) == 0);
+    CHECK(memcmp(back->texcoords, mesh->texcoords, mesh->vertex_count * sizeof *mesh->texcoords)
+          == 0);
     CHECK(memcmp(back->colors, mesh->colors, mesh->vertex_count * sizeof *mesh->colors) == 0);
     CHECK(memcmp(back->normals, mesh->normals, mesh->vertex_count * sizeof *mesh->normals) == 0);
-    CHECK(memcmp(back->face_colors, mesh->face_colors, mesh->face_count * sizeof *mesh->face_colors) == 0);
+    CHECK(memcmp(back->face_colors, mesh->face_colors, mesh->face_count * sizeof *mesh->face_colors)
+          == 0);
     /* an edge split averages the attributes of the edge's ends */
     uint32_t e = 0, v;
     cg_vec2 ta = h->texcoords[h->halfedges[0].origin], tb = h->texcoords[h->halfedges[1].origin];
@@ -356,7 +366,8 @@ static void test_bad_input(void)
     uint32_t i1[] = {0, 1, 7};
     cg_mesh *m = faces_mesh(3, tri, 1, i1);
     expect_error("out of range", m, 0, CG_EFORMAT, "refers to vertex 7");
-    expect_error("out of range, dropped", m, CG_HEMESH_DROP_BAD_FACES, CG_EEMPTY, "no usable faces");
+    expect_error("out of range, dropped", m, CG_HEMESH_DROP_BAD_FACES, CG_EEMPTY,
+                 "no usable faces");
     cg_mesh_free(m);
     /* repeated vertex */
     uint32_t sizes2[] = {3, 4};
@@ -461,7 +472,8 @@ static void test_orientation(void)
         for (size_t f = 0; f < m->face_count; f++) {
             if (check_rng_next(&rng) % 3 || (f == 0 && keep_first))
                 continue;
-            uint32_t *lo = m->face_indices + m->face_offsets[f], *hi = m->face_indices + m->face_offsets[f + 1] - 1;
+            uint32_t *lo = m->face_indices + m->face_offsets[f],
+                     *hi = m->face_indices + m->face_offsets[f + 1] - 1;
             while (lo < hi) {
                 uint32_t t = *lo;
                 *lo++ = *hi;
@@ -550,7 +562,8 @@ static void test_random_soups(void)
                 CHECK(back && cg_mesh_validate(back, NULL) == CG_OK);
                 cg_mesh_free(back);
             } else {
-                CHECK_MSG(pass == 0 || s == CG_EEMPTY, "soup %d: repair failed: %s", trial, err.message);
+                CHECK_MSG(pass == 0 || s == CG_EEMPTY, "soup %d: repair failed: %s", trial,
+                          err.message);
                 CHECK(h == NULL && err.message[0] != 0);
             }
             cg_hemesh_report_clear(&rep);
@@ -590,7 +603,8 @@ static void test_random_voxels(void)
             /* a strict build fails exactly when something was split */
             cg_hemesh *strict = NULL;
             cg_status s2 = cg_hemesh_build(m, 0, &strict, NULL, NULL);
-            CHECK((s2 == CG_OK) == (rep.nonmanifold_edge_count == 0 && rep.nonmanifold_vertex_count == 0));
+            CHECK((s2 == CG_OK)
+                  == (rep.nonmanifold_edge_count == 0 && rep.nonmanifold_vertex_count == 0));
             cg_hemesh_free(strict);
         }
         cg_hemesh_report_clear(&rep);

@@ -52,7 +52,8 @@ static uint32_t random_live_face(const cg_hemesh *h, check_rng *rng)
 
 static int is_triangle_side(const cg_hemesh *h, uint32_t x)
 {
-    return !cg_hemesh_halfedge_is_boundary(h, x) && cg_hemesh_face_size(h, cg_hemesh_face(h, x)) == 3;
+    return !cg_hemesh_halfedge_is_boundary(h, x)
+           && cg_hemesh_face_size(h, cg_hemesh_face(h, x)) == 3;
 }
 
 /* Link condition by brute force: the vertices joined to both ends of h are
@@ -63,9 +64,11 @@ static int link_condition(const cg_hemesh *h, uint32_t x)
     uint32_t a[512], b[512];
     size_t na = cg_hemesh_vertex_neighbors(h, u, 1, a, 512);
     size_t nb = cg_hemesh_vertex_neighbors(h, v, 1, b, 512);
-    uint32_t c = is_triangle_side(h, x) ? cg_hemesh_origin(h, cg_hemesh_prev(h, x)) : CG_HEMESH_NONE;
+    uint32_t c = is_triangle_side(h, x) ? cg_hemesh_origin(h, cg_hemesh_prev(h, x))
+                                        : CG_HEMESH_NONE;
     uint32_t y = x ^ 1u;
-    uint32_t d = is_triangle_side(h, y) ? cg_hemesh_origin(h, cg_hemesh_prev(h, y)) : CG_HEMESH_NONE;
+    uint32_t d = is_triangle_side(h, y) ? cg_hemesh_origin(h, cg_hemesh_prev(h, y))
+                                        : CG_HEMESH_NONE;
     for (size_t i = 0; i < na && i < 512; i++)
         for (size_t j = 0; j < nb && j < 512; j++)
             if (a[i] == b[j] && a[i] != c && a[i] != d)
@@ -104,7 +107,8 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
         } else if (op == 1) { /* split edge */
             int sides = is_triangle_side(h, 2 * e) + is_triangle_side(h, 2 * e + 1);
             cg_vec3 mid = cg_vec3_scale(cg_vec3_add(h->positions[cg_hemesh_origin(h, 2 * e)],
-                                                    h->positions[cg_hemesh_dest(h, 2 * e)]), 0.5);
+                                                    h->positions[cg_hemesh_dest(h, 2 * e)]),
+                                        0.5);
             uint32_t v;
             CHECK(cg_hemesh_split_edge(h, e, mid, &v) == CG_OK);
             done[1]++;
@@ -194,8 +198,12 @@ static void random_operations(const char *name, cg_hemesh *h, int steps, uint64_
         CHECK_MSG(chi(h) == chi0, "%s: chi %ld, was %ld", what, chi(h), chi0);
     }
     if (getenv("HEMESH_VERBOSE"))
-        fprintf(stderr, "%s: flips %d splits %d collapses %d face splits %d face removals %d vertex removals %d diagonals %d\n", name, done[0], done[1], done[2], done[3], done[4], done[5], done[6]);
-    CHECK_MSG(done[0] + done[1] + done[2] + done[3] > steps / 4, "%s: too few operations done", name);
+        fprintf(stderr,
+                "%s: flips %d splits %d collapses %d face splits %d face removals %d vertex "
+                "removals %d diagonals %d\n",
+                name, done[0], done[1], done[2], done[3], done[4], done[5], done[6]);
+    CHECK_MSG(done[0] + done[1] + done[2] + done[3] > steps / 4, "%s: too few operations done",
+              name);
     /* compaction keeps the counts and the invariants */
     cg_hemesh_stats before, after;
     cg_hemesh_stats_compute(h, &before, NULL, NULL);
@@ -234,22 +242,21 @@ static void test_random_operations(void)
         const char *name;
         cg_mesh *mesh;
     } cases[] = {
-        {"icosphere", shape_icosphere(2)},
-        {"torus", shape_torus(9, 6, 1)},
-        {"grid", shape_grid(7, 6, 1)},
-        {"cube quads", shape_cube(0)},
-        {"torus quads", shape_torus(8, 5, 0)},
-        {"double ring", shape_double_ring(1)},
+        {"icosphere", shape_icosphere(2)},     {"torus", shape_torus(9, 6, 1)},
+        {"grid", shape_grid(7, 6, 1)},         {"cube quads", shape_cube(0)},
+        {"torus quads", shape_torus(8, 5, 0)}, {"double ring", shape_double_ring(1)},
         {"grid quads", shape_grid(5, 5, 0)},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         for (uint64_t seed = 1; seed <= 6; seed++) {
             cg_mesh *copy = NULL;
             cg_mesh *src = cases[i].mesh;
-            cg_mesh_create(&copy, src->vertex_count, src->face_count, src->face_offsets[src->face_count], 0);
+            cg_mesh_create(&copy, src->vertex_count, src->face_count,
+                           src->face_offsets[src->face_count], 0);
             memcpy(copy->positions, src->positions, src->vertex_count * sizeof *src->positions);
             memcpy(copy->face_offsets, src->face_offsets, (src->face_count + 1) * sizeof(uint32_t));
-            memcpy(copy->face_indices, src->face_indices, src->face_offsets[src->face_count] * sizeof(uint32_t));
+            memcpy(copy->face_indices, src->face_indices,
+                   src->face_offsets[src->face_count] * sizeof(uint32_t));
             cg_hemesh *h = build(copy);
             if (!h)
                 continue;
@@ -279,8 +286,8 @@ static void test_random_small_edits(void)
         if (cg_mesh_create(&mesh, V, F, 4 * F, 0) != CG_OK)
             break;
         for (size_t i = 0; i < V; i++)
-            mesh->positions[i] = cg_vec3_make(check_rng_int(&rng, 0, 99), check_rng_int(&rng, 0, 99),
-                                              check_rng_int(&rng, 0, 99));
+            mesh->positions[i] = cg_vec3_make(
+                check_rng_int(&rng, 0, 99), check_rng_int(&rng, 0, 99), check_rng_int(&rng, 0, 99));
         uint32_t corners = 0; /* triangles, and a quad now and then */
         for (size_t f = 0; f < F; f++) {
             mesh->face_offsets[f] = corners;
@@ -407,9 +414,11 @@ static void test_diagonals(void)
 {
     cg_hemesh *h = build(shape_grid(4, 3, 0));
     size_t E = h->live_edges, F = h->live_faces;
-    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0], cg_hemesh_next(h, h->face_halfedge[0]), NULL)
+    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0],
+                                       cg_hemesh_next(h, h->face_halfedge[0]), NULL)
           == CG_EINVAL);
-    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0], h->face_halfedge[1], NULL) == CG_EINVAL);
+    CHECK(cg_hemesh_split_face_between(h, h->face_halfedge[0], h->face_halfedge[1], NULL)
+          == CG_EINVAL);
     for (uint32_t f = 0; f < F; f++) {
         uint32_t p = h->face_halfedge[f], q = cg_hemesh_next(h, cg_hemesh_next(h, p)), g;
         CHECK(cg_hemesh_split_face_between(h, p, q, &g) == CG_OK);
@@ -466,18 +475,23 @@ static void test_loop(void)
                 for (uint32_t w = 0; w < 4; w++)
                     if (w != v)
                         sum = cg_vec3_add(sum, h->positions[w]);
-                cg_vec3 want = cg_vec3_add(cg_vec3_scale(h->positions[v], 1 - 9.0 / 16), cg_vec3_scale(sum, 3.0 / 16));
+                cg_vec3 want = cg_vec3_add(cg_vec3_scale(h->positions[v], 1 - 9.0 / 16),
+                                           cg_vec3_scale(sum, 3.0 / 16));
                 CHECK(near3(next->positions[v], want));
             }
             for (uint32_t e = 0; e < 6; e++) {
-                cg_vec3 a = h->positions[cg_hemesh_origin(h, 2 * e)], b = h->positions[cg_hemesh_dest(h, 2 * e)];
+                cg_vec3 a = h->positions[cg_hemesh_origin(h, 2 * e)],
+                        b = h->positions[cg_hemesh_dest(h, 2 * e)];
                 cg_vec3 c = h->positions[cg_hemesh_origin(h, cg_hemesh_prev(h, 2 * e))];
                 cg_vec3 d = h->positions[cg_hemesh_origin(h, cg_hemesh_prev(h, 2 * e + 1))];
-                cg_vec3 want = cg_vec3_add(cg_vec3_scale(cg_vec3_add(a, b), 3.0 / 8), cg_vec3_scale(cg_vec3_add(c, d), 1.0 / 8));
+                cg_vec3 want = cg_vec3_add(cg_vec3_scale(cg_vec3_add(a, b), 3.0 / 8),
+                                           cg_vec3_scale(cg_vec3_add(c, d), 1.0 / 8));
                 CHECK(near3(next->positions[4 + e], want));
                 /* the edge point is joined to both ends of its edge */
-                CHECK(cg_hemesh_find_halfedge(next, 4 + e, cg_hemesh_origin(h, 2 * e)) != CG_HEMESH_NONE);
-                CHECK(cg_hemesh_find_halfedge(next, 4 + e, cg_hemesh_dest(h, 2 * e)) != CG_HEMESH_NONE);
+                CHECK(cg_hemesh_find_halfedge(next, 4 + e, cg_hemesh_origin(h, 2 * e))
+                      != CG_HEMESH_NONE);
+                CHECK(cg_hemesh_find_halfedge(next, 4 + e, cg_hemesh_dest(h, 2 * e))
+                      != CG_HEMESH_NONE);
             }
         }
         if (level != h)
@@ -502,7 +516,8 @@ static void test_loop(void)
     for (uint32_t e = 0; e < h->live_edges; e++)
         if (cg_hemesh_edge_is_boundary(h, e)) {
             cg_vec3 mid = cg_vec3_scale(cg_vec3_add(h->positions[cg_hemesh_origin(h, 2 * e)],
-                                                    h->positions[cg_hemesh_dest(h, 2 * e)]), 0.5);
+                                                    h->positions[cg_hemesh_dest(h, 2 * e)]),
+                                        0.5);
             CHECK(near3(next->positions[h->vertex_count + e], mid));
         }
     cg_hemesh_free(next);

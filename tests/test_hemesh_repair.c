@@ -93,16 +93,18 @@ static cg_hemesh_input_counts brute_counts(const cg_mesh *m)
 static void check_counts(const char *name, int trial, const cg_mesh *m)
 {
     cg_hemesh_input_counts got, want = brute_counts(m);
-    CHECK_MSG(cg_hemesh_input_counts_compute(m, &got) == CG_OK, "%s %d: counts failed", name, trial);
-    CHECK_MSG(got.vertices == want.vertices && got.edges == want.edges && got.faces == want.faces
-                  && got.bad_faces == want.bad_faces && got.components == want.components
-                  && got.isolated_vertices == want.isolated_vertices
-                  && got.euler_characteristic == want.euler_characteristic,
-              "%s %d: counts V %zu E %zu F %zu bad %zu C %zu iso %zu, brute force V %zu E %zu F %zu "
-              "bad %zu C %zu iso %zu",
-              name, trial, got.vertices, got.edges, got.faces, got.bad_faces, got.components,
-              got.isolated_vertices, want.vertices, want.edges, want.faces, want.bad_faces,
-              want.components, want.isolated_vertices);
+    CHECK_MSG(cg_hemesh_input_counts_compute(m, &got) == CG_OK, "%s %d: counts failed", name,
+              trial);
+    CHECK_MSG(
+        got.vertices == want.vertices && got.edges == want.edges && got.faces == want.faces
+            && got.bad_faces == want.bad_faces && got.components == want.components
+            && got.isolated_vertices == want.isolated_vertices
+            && got.euler_characteristic == want.euler_characteristic,
+        "%s %d: counts V %zu E %zu F %zu bad %zu C %zu iso %zu, brute force V %zu E %zu F %zu "
+        "bad %zu C %zu iso %zu",
+        name, trial, got.vertices, got.edges, got.faces, got.bad_faces, got.components,
+        got.isolated_vertices, want.vertices, want.edges, want.faces, want.bad_faces,
+        want.components, want.isolated_vertices);
 }
 
 /* ---- repair ------------------------------------------------------------- */
@@ -114,7 +116,8 @@ static int same_mesh(const cg_mesh *a, const cg_mesh *b)
     if (memcmp(a->positions, b->positions, a->vertex_count * sizeof *a->positions))
         return 0;
     size_t corners = a->face_offsets[a->face_count];
-    return memcmp(a->face_offsets, b->face_offsets, (a->face_count + 1) * sizeof *a->face_offsets) == 0
+    return memcmp(a->face_offsets, b->face_offsets, (a->face_count + 1) * sizeof *a->face_offsets)
+               == 0
            && memcmp(a->face_indices, b->face_indices, corners * sizeof *a->face_indices) == 0;
 }
 
@@ -167,10 +170,11 @@ static void check_repair(const char *name, int trial, const cg_mesh *m, int clos
                   st.boundary_loops);
     cg_hemesh_stats st2;
     cg_mesh *twice = repair(name, trial, once, &rep, &st2);
-    CHECK_MSG(twice && same_mesh(once, twice), "%s %d: a second repair changed the mesh", name, trial);
-    CHECK_MSG(rep.bad_face_count + rep.flipped_face_count + rep.cut_edge_count + rep.added_vertex_count
-                      + rep.split_edge_count + rep.nonmanifold_edge_count + rep.nonmanifold_vertex_count
-                      + rep.misoriented_edge_count
+    CHECK_MSG(twice && same_mesh(once, twice), "%s %d: a second repair changed the mesh", name,
+              trial);
+    CHECK_MSG(rep.bad_face_count + rep.flipped_face_count + rep.cut_edge_count
+                      + rep.added_vertex_count + rep.split_edge_count + rep.nonmanifold_edge_count
+                      + rep.nonmanifold_vertex_count + rep.misoriented_edge_count
                   == 0,
               "%s %d: a second repair still found defects", name, trial);
     cg_hemesh_report_clear(&rep);
@@ -185,13 +189,14 @@ static void copy_into(shape *s, const cg_mesh *m)
     for (size_t v = 0; v < m->vertex_count; v++)
         shape_vertex(s, m->positions[v].x, m->positions[v].y, m->positions[v].z);
     for (size_t f = 0; f < m->face_count; f++)
-        shape_face(s, m->face_indices + m->face_offsets[f], m->face_offsets[f + 1] - m->face_offsets[f]);
+        shape_face(s, m->face_indices + m->face_offsets[f],
+                   m->face_offsets[f + 1] - m->face_offsets[f]);
 }
 
 /* A closed or open base surface with random defects added. */
 static cg_mesh *damaged(check_rng *rng, int trial)
 {
-    cg_mesh *base = trial % 3 == 0 ? shape_torus(6 + trial % 4, 4 + trial % 3, trial % 2)
+    cg_mesh *base = trial % 3 == 0   ? shape_torus(6 + trial % 4, 4 + trial % 3, trial % 2)
                     : trial % 3 == 1 ? shape_cube(trial % 2)
                                      : shape_grid(3 + trial % 3, 3, 1);
     shape s;
@@ -210,9 +215,7 @@ static cg_mesh *damaged(check_rng *rng, int trial)
         uint32_t fresh = (uint32_t)s.vertex_count;
         cg_vec3 pa = s.positions[a];
         switch (check_rng_int(rng, 0, 4)) {
-        case 0: /* the same face again */
-            shape_face(&s, v, n);
-            break;
+        case 0: /* the same face again */ shape_face(&s, v, n); break;
         case 1: /* the face reversed */
             for (uint32_t i = 0; i < n / 2; i++) {
                 uint32_t t = v[i];

@@ -184,9 +184,11 @@ static void expect_bad(const void *bytes, size_t n, cg_status status, const char
     cg_error err;
     cg_error_clear(&err);
     cg_status got = cg_image_read_memory(bytes, n, "bad", &img, &err);
-    CHECK_MSG(got == status, "expected status %d, got %d (%s) for '%s'", status, got, err.message, text);
+    CHECK_MSG(got == status, "expected status %d, got %d (%s) for '%s'", status, got, err.message,
+              text);
     CHECK(img == NULL);
-    CHECK_MSG(strstr(err.message, text) != NULL, "message '%s' should contain '%s'", err.message, text);
+    CHECK_MSG(strstr(err.message, text) != NULL, "message '%s' should contain '%s'", err.message,
+              text);
 }
 
 static uint32_t crc32_of(const unsigned char *p, size_t n)

@@ -139,8 +139,8 @@ static void test_back_facing(void)
         m.specular = (cg_specular_model)model;
         for (int i = 0; i < 3; i++)
             for (int k = 0; k < 3; k++) {
-                cg_shade_terms t =
-                    cg_light_shade_terms(origin, up, views[k], &m, &lights[i], 1, NULL);
+                cg_shade_terms t = cg_light_shade_terms(origin, up, views[k], &m, &lights[i], 1,
+                                                        NULL);
                 check_vec(cg_shade_terms_sum(t), v3(0, 0, 0), 0, "back-facing light");
             }
     }
@@ -171,8 +171,7 @@ static cg_vec3 random_color(check_rng *r, double max)
 }
 
 /* The model computed straight from its definition, for one non-ambient light. */
-static cg_vec3 reference(cg_vec3 p, cg_vec3 n, cg_vec3 v, const cg_material *m,
-                         const cg_light *l)
+static cg_vec3 reference(cg_vec3 p, cg_vec3 n, cg_vec3 v, const cg_material *m, const cg_light *l)
 {
     cg_vec3 L;
     double f = 1, spot = 1;

@@ -30,9 +30,21 @@ static void put(bytes *b, const void *data, size_t n)
     b->size += n;
 }
 
-static void put_u8(bytes *b, unsigned v) { unsigned char c = (unsigned char)v; put(b, &c, 1); }
-static void put_u16(bytes *b, unsigned v) { put_u8(b, v & 255); put_u8(b, v >> 8 & 255); }
-static void put_u32(bytes *b, uint32_t v) { put_u16(b, v & 65535); put_u16(b, v >> 16); }
+static void put_u8(bytes *b, unsigned v)
+{
+    unsigned char c = (unsigned char)v;
+    put(b, &c, 1);
+}
+static void put_u16(bytes *b, unsigned v)
+{
+    put_u8(b, v & 255);
+    put_u8(b, v >> 8 & 255);
+}
+static void put_u32(bytes *b, uint32_t v)
+{
+    put_u16(b, v & 65535);
+    put_u16(b, v >> 16);
+}
 static void put_f32(bytes *b, float f)
 {
     uint32_t v;
@@ -149,7 +161,8 @@ static void accessor_encodings(void)
         size_t offset = 4 * (size_t)check_rng_int(&rng, 0, 3);
         int tt = (int)check_rng_int(&rng, 0, 2);
         int it = index_types[check_rng_int(&rng, 0, 2)];
-        int texcoord_type = texcoord_types[tt].type, texcoord_normalized = texcoord_types[tt].normalized;
+        int texcoord_type = texcoord_types[tt].type,
+            texcoord_normalized = texcoord_types[tt].normalized;
         bytes b = {0};
         /* view 0: positions, interleaved with junk up to the stride */
         for (size_t i = 0; i < offset; i++)
@@ -167,8 +180,8 @@ static void accessor_encodings(void)
         double *texcoord = malloc(vertices * 2 * sizeof *texcoord);
         for (size_t v = 0; v < vertices; v++)
             for (int c = 0; c < 2; c++)
-                texcoord[2 * v + (size_t)c]
-                    = put_component(&b, texcoord_type, texcoord_normalized, &rng);
+                texcoord[2 * v + (size_t)c] = put_component(&b, texcoord_type, texcoord_normalized,
+                                                            &rng);
         size_t view1_length = b.size - view1;
         pad_to(&b, 4, 0);
         size_t view2 = b.size;
@@ -215,8 +228,8 @@ static void accessor_encodings(void)
             }
             for (size_t i = 0; i < triangles * 3 && mesh->face_count == triangles; i++)
                 bad += mesh->face_indices[i] != index[i];
-            CHECK_MSG(bad == 0, "round %d: %ld values differ (stride %zu, texcoord type %d)",
-                      round, bad, stride, texcoord_type);
+            CHECK_MSG(bad == 0, "round %d: %ld values differ (stride %zu, texcoord type %d)", round,
+                      bad, stride, texcoord_type);
         }
         cg_mesh_free(mesh);
         free(text);
@@ -308,9 +321,9 @@ static void sparse_accessors(void)
             "5123}, \"values\": {\"bufferView\": %d}}}],"
             "\"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"mode\": 0}]}],"
             "\"nodes\": [{\"mesh\": 0}]",
-            with_base ? base_view : "", indices_at, 2 * chosen_count, values_at,
-            12 * chosen_count, with_base ? "\"bufferView\": 0, " : "", count, chosen_count,
-            with_base ? 1 : 0, with_base ? 2 : 1);
+            with_base ? base_view : "", indices_at, 2 * chosen_count, values_at, 12 * chosen_count,
+            with_base ? "\"bufferView\": 0, " : "", count, chosen_count, with_base ? 1 : 0,
+            with_base ? 2 : 1);
         /* mode 0 (points) is not drawn: make it triangles when count allows */
         char *triangles = strstr(members, "\"mode\": 0");
         if (count % 3 == 0)
@@ -448,8 +461,8 @@ static void node_transforms(void)
             " {\"mesh\": 0, \"matrix\": [%.17g, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, "
             "%.17g, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g]}],"
             "\"scenes\": [{\"nodes\": [0]}], \"scene\": 0",
-            t[0], t[1], t[2], q[0], q[1], q[2], q[3], sc[0], sc[1], sc[2], m[0], m[1], m[2],
-            m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11], m[12], m[13], m[14], m[15]);
+            t[0], t[1], t[2], q[0], q[1], q[2], q[3], sc[0], sc[1], sc[2], m[0], m[1], m[2], m[3],
+            m[4], m[5], m[6], m[7], m[8], m[9], m[10], m[11], m[12], m[13], m[14], m[15]);
         char *text = gltf_text(&b, members);
         cg_mesh *mesh = NULL;
         cg_error err;
@@ -501,13 +514,15 @@ static char *triangle_text(const char *views, const char *accessors, const char 
     put_u8(&b, 2);
     char *members = format(
         "\"bufferViews\": %s, \"accessors\": %s, \"meshes\": %s, \"nodes\": %s",
-        views ? views : "[{\"buffer\": 0, \"byteLength\": 36}, {\"buffer\": 0, \"byteOffset\": 36, "
-                        "\"byteLength\": 3}]",
+        views ? views
+              : "[{\"buffer\": 0, \"byteLength\": 36}, {\"buffer\": 0, \"byteOffset\": 36, "
+                "\"byteLength\": 3}]",
         accessors ? accessors
                   : "[{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": "
                     "\"VEC3\"}, {\"bufferView\": 1, \"componentType\": 5121, \"count\": 3, "
                     "\"type\": \"SCALAR\"}]",
-        meshes ? meshes : "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"indices\": 1}]}]",
+        meshes ? meshes
+               : "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"indices\": 1}]}]",
         nodes ? nodes : "[{\"mesh\": 0}]");
     char *text = gltf_text(&b, members);
     free(members);
@@ -525,8 +540,9 @@ static void broken_files(void)
         {NULL,
          "[{\"bufferView\": 0, \"componentType\": 5126, \"count\": 4, \"type\": \"VEC3\"}, "
          "{\"bufferView\": 1, \"componentType\": 5121, \"count\": 3, \"type\": \"SCALAR\"}]",
-         NULL, NULL, "accessors[0]: expected 4 elements of 12 bytes (stride 12) from byteOffset 0 "
-                     "to fit in bufferViews[0] (36 bytes)"},
+         NULL, NULL,
+         "accessors[0]: expected 4 elements of 12 bytes (stride 12) from byteOffset 0 "
+         "to fit in bufferViews[0] (36 bytes)"},
         {NULL,
          "[{\"bufferView\": 0, \"byteOffset\": 4, \"componentType\": 5126, \"count\": 3, "
          "\"type\": \"VEC3\"}, {\"bufferView\": 1, \"componentType\": 5121, \"count\": 3, "
@@ -543,24 +559,23 @@ static void broken_files(void)
          NULL, "indices: expected an accessor of unsigned byte, short or int SCALARs"},
         {NULL, NULL, "[{\"primitives\": [{\"attributes\": {\"POSITION\": 2}}]}]", NULL,
          "POSITION: expected an index into accessors (0 to 1), got the number 2"},
-        {NULL, NULL, "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"mode\": 7}]}]",
-         NULL, "mode: expected an integer in [0, 6], got the number 7"},
-        {NULL, NULL, "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0, \"UV\": 0}}]}]",
-         NULL, "attributes.UV: expected POSITION, NORMAL"},
-        {NULL, NULL, NULL, "[{\"mesh\": 0, \"children\": [1]}, {\"children\": [0]}]",
-         "node cycle"},
+        {NULL, NULL, "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"mode\": 7}]}]", NULL,
+         "mode: expected an integer in [0, 6], got the number 7"},
+        {NULL, NULL, "[{\"primitives\": [{\"attributes\": {\"POSITION\": 0, \"UV\": 0}}]}]", NULL,
+         "attributes.UV: expected POSITION, NORMAL"},
+        {NULL, NULL, NULL, "[{\"mesh\": 0, \"children\": [1]}, {\"children\": [0]}]", "node cycle"},
         {NULL, NULL, NULL, "[{\"mesh\": 0, \"children\": [0]}]", "is its own child"},
         {NULL, NULL, NULL, "[{\"children\": [2]}, {\"children\": [2]}, {\"mesh\": 0}]",
          "nodes[1].children[0]: expected a node without a parent, but node 2 is already a "
          "child of node 0"},
-        {NULL, NULL, NULL, "[{\"mesh\": 0, \"matrix\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, "
-                           "0, 0, 1], \"scale\": [1, 1, 1]}]",
+        {NULL, NULL, NULL,
+         "[{\"mesh\": 0, \"matrix\": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, "
+         "0, 0, 1], \"scale\": [1, 1, 1]}]",
          "expected either matrix or translation/rotation/scale, got both"},
         {NULL, NULL, NULL, "[{\"mesh\": 0, \"rotation\": [0, 0, 0]}]",
          "nodes[0].rotation: expected an array of 4 numbers"},
         {NULL, NULL, NULL, "[{\"mesh\": 3}]", "nodes[0].mesh: expected an index into meshes"},
-        {NULL,
-         "[{\"bufferView\": 0, \"componentType\": 5127, \"count\": 3, \"type\": \"VEC3\"}]",
+        {NULL, "[{\"bufferView\": 0, \"componentType\": 5127, \"count\": 3, \"type\": \"VEC3\"}]",
          NULL, NULL, "accessors[0].componentType: expected 5120, 5121, 5122, 5123, 5125 or 5126"},
         {NULL, "[{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC5\"}]",
          NULL, NULL, "accessors[0].type: expected \"SCALAR\""},
@@ -631,7 +646,8 @@ static void broken_files(void)
         {"{\"asset\": {\"version\": \"1.0\"}}", "asset.version: expected \"2.x\""},
         {"{\"asset\": {}}", "asset.version: expected a string"},
         {"[1, 2]", "expected a JSON object"},
-        {"{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": [\"EXT_meshopt_compression\"]}",
+        {"{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": "
+         "[\"EXT_meshopt_compression\"]}",
          "requires the extension EXT_meshopt_compression, which cg does not read"},
         {"{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"byteLength\": 4, \"uri\": "
          "\"data:application/octet-stream;base64,AA!A\"}]}",

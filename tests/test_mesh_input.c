@@ -59,7 +59,7 @@ static const struct {
     float binary;
     const char *shown;
 } bad_values[] = {
-    {"nan", NAN, "nan"},       {"NaN", NAN, "nan"},         {"inf", INFINITY, "inf"},
+    {"nan", NAN, "nan"},         {"NaN", NAN, "nan"},        {"inf", INFINITY, "inf"},
     {"-inf", -INFINITY, "-inf"}, {"1e999", INFINITY, "inf"}, {"-Infinity", -INFINITY, "-inf"},
 };
 enum { BAD_VALUES = sizeof bad_values / sizeof bad_values[0] };
@@ -82,10 +82,10 @@ static void expect_refused(const text *t, const char *name, const char *where, c
     snprintf(value, sizeof value, "got %c = %s", axis, shown);
     CHECK_MSG(s == CG_EFORMAT && m == NULL, "%s: status %d, expected CG_EFORMAT (%s)", name, s,
               err.message);
-    CHECK_MSG(strstr(err.message, where) == err.message, "%s: '%s' does not start with '%s'",
-              name, err.message, where);
-    CHECK_MSG(strstr(err.message, value) != NULL, "%s: '%s' does not say '%s'", name,
-              err.message, value);
+    CHECK_MSG(strstr(err.message, where) == err.message, "%s: '%s' does not start with '%s'", name,
+              err.message, where);
+    CHECK_MSG(strstr(err.message, value) != NULL, "%s: '%s' does not say '%s'", name, err.message,
+              value);
     CHECK_MSG(strstr(err.message, "finite") != NULL, "%s: '%s'", name, err.message);
     cg_mesh_free(m);
 }
@@ -112,9 +112,10 @@ static size_t write_text_mesh(text *t, enum text_format format, check_rng *rng, 
         putf(t, "OFF\n%d %d 0\n", n, n / 3);
         line = 2;
     } else if (format == TEXT_PLY) {
-        putf(t, "ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
-                "property float z\nelement face %d\nproperty list uchar int vertex_indices\n"
-                "end_header\n",
+        putf(t,
+             "ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+             "property float z\nelement face %d\nproperty list uchar int vertex_indices\n"
+             "end_header\n",
              n, n / 3);
         line = 9;
     } else if (format == TEXT_STL) {
@@ -191,15 +192,17 @@ static void test_binary_formats(void)
         text t = {0};
         char where[64];
         if (round % 3 < 2) {
-            putf(&t, "ply\nformat binary_%s_endian 1.0\nelement vertex %d\nproperty float x\n"
-                     "property float y\nproperty float z\nproperty float nx\nelement face %d\n"
-                     "property list uchar int vertex_indices\nend_header\n",
+            putf(&t,
+                 "ply\nformat binary_%s_endian 1.0\nelement vertex %d\nproperty float x\n"
+                 "property float y\nproperty float z\nproperty float nx\nelement face %d\n"
+                 "property list uchar int vertex_indices\nend_header\n",
                  big ? "big" : "little", n, n / 3);
             size_t body = t.size;
             for (int v = 0; v < n; v++) {
                 for (int k = 0; k < 3; k++)
-                    put_float(&t, v == at && k == axis ? bad_values[bad].binary
-                                                       : (float)random_coordinate(&rng),
+                    put_float(&t,
+                              v == at && k == axis ? bad_values[bad].binary
+                                                   : (float)random_coordinate(&rng),
                               big);
                 put_float(&t, v % 2 ? NAN : 0.0f, big); /* a NaN normal is kept */
             }
@@ -234,14 +237,14 @@ static void test_binary_formats(void)
                     put_float(&t, 0.0f, 0); /* normal */
                 for (int c = 0; c < 3; c++)
                     for (int k = 0; k < 3; k++)
-                        put_float(&t, 3 * f + c == at && k == axis
-                                          ? bad_values[bad].binary
-                                          : (float)random_coordinate(&rng),
+                        put_float(&t,
+                                  3 * f + c == at && k == axis ? bad_values[bad].binary
+                                                               : (float)random_coordinate(&rng),
                                   0);
                 put(&t, "\0\0", 2);
             }
-            snprintf(where, sizeof where, "random.stl: byte %d: ",
-                     84 + 50 * (at / 3) + 12 + 12 * (at % 3));
+            snprintf(where, sizeof where,
+                     "random.stl: byte %d: ", 84 + 50 * (at / 3) + 12 + 12 * (at % 3));
             expect_refused(&t, "random.stl", where, "xyz"[axis], bad_values[bad].shown);
         }
         free(t.bytes);
@@ -272,12 +275,16 @@ static void test_validate(void)
         size_t at = check_rng_next(&rng) % n;
         int axis = (int)(check_rng_next(&rng) % 3);
         double bad = round % 3 == 0 ? NAN : round % 3 == 1 ? INFINITY : -INFINITY;
-        double *p = axis == 0 ? &m->positions[at].x : axis == 1 ? &m->positions[at].y
-                                                                 : &m->positions[at].z;
+        double *p = axis == 0   ? &m->positions[at].x
+                    : axis == 1 ? &m->positions[at].y
+                                : &m->positions[at].z;
         *p = bad;
         char expected[64];
         snprintf(expected, sizeof expected, "vertex %zu: expected finite coordinates, got %c = %s",
-                 at, "xyz"[axis], round % 3 == 0 ? "nan" : round % 3 == 1 ? "inf" : "-inf");
+                 at, "xyz"[axis],
+                 round % 3 == 0   ? "nan"
+                 : round % 3 == 1 ? "inf"
+                                  : "-inf");
         CHECK(cg_mesh_validate(m, &err) == CG_EFORMAT);
         CHECK_MSG(strstr(err.message, expected) != NULL, "'%s' does not say '%s'", err.message,
                   expected);
@@ -293,26 +300,28 @@ static void test_negative_list_lengths(void)
     for (int c = 0; c < 6; c++) {
         for (int length = -3; length <= -1; length++) {
             text t = {0};
-            putf(&t, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                     "property float y\nproperty float z\nelement face 1\n"
-                     "property list %s int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
-                     "%d 0 1 2\n",
+            putf(&t,
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                 "property float y\nproperty float z\nelement face 1\n"
+                 "property list %s int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                 "%d 0 1 2\n",
                  count_types[c], length);
             cg_mesh *m = NULL;
             cg_error err;
-            cg_status s = cg_mesh_load_memory(t.bytes, t.size, "neg.ply", CG_MESH_FORMAT_AUTO,
-                                              &m, &err);
+            cg_status s = cg_mesh_load_memory(t.bytes, t.size, "neg.ply", CG_MESH_FORMAT_AUTO, &m,
+                                              &err);
             char expected[96];
             snprintf(expected, sizeof expected,
                      "neg.ply:13: expected a list length of 0 or more in face 0, got %d", length);
-            CHECK_MSG(s == CG_EFORMAT && strstr(err.message, expected) == err.message,
-                      "%s %d: %s", count_types[c], length, err.message);
+            CHECK_MSG(s == CG_EFORMAT && strstr(err.message, expected) == err.message, "%s %d: %s",
+                      count_types[c], length, err.message);
             cg_mesh_free(m);
             /* a list the face does not use (an extra property) too */
             t.size = 0;
-            putf(&t, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                     "property float y\nproperty float z\nproperty list %s float extra\n"
-                     "end_header\n0 0 0 0\n1 0 0 %d\n0 1 0 0\n",
+            putf(&t,
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                 "property float y\nproperty float z\nproperty list %s float extra\n"
+                 "end_header\n0 0 0 0\n1 0 0 %d\n0 1 0 0\n",
                  count_types[c], length);
             s = cg_mesh_load_memory(t.bytes, t.size, "neg2.ply", CG_MESH_FORMAT_AUTO, &m, &err);
             CHECK_MSG(s == CG_EFORMAT && m == NULL, "%s", err.message);

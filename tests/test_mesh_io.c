@@ -165,7 +165,7 @@ static void test_obj_materials(void)
     if (m) {
         CHECK(m->face_colors != NULL);
         if (m->face_colors) {
-            CHECK(m->face_colors[0].a == 0);                       /* no material */
+            CHECK(m->face_colors[0].a == 0);                             /* no material */
             CHECK(m->face_colors[1].r == 1 && m->face_colors[1].g == 0); /* red */
             CHECK(m->face_colors[2].r == 0.5f && m->face_colors[2].b == 0.5f);
             CHECK(m->face_colors[3].a == 0); /* unknown material */
@@ -220,8 +220,7 @@ static void test_off(void)
               && m->face_colors[0].r == 1 && m->face_colors[0].g == 1);
         cg_mesh_free(m);
     }
-    m = load_ok("COFF 3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 0.5\n0 1 0 0 0 1 1\n3 0 1 2\n",
-                "c.off");
+    m = load_ok("COFF 3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 0.5\n0 1 0 0 0 1 1\n3 0 1 2\n", "c.off");
     if (m) {
         CHECK(m->colors && m->colors[1].g == 1 && m->colors[1].a == 0.5f);
         cg_mesh_free(m);
@@ -441,57 +440,119 @@ typedef struct bad_case {
 static void test_malformed(void)
 {
     static const bad_case cases[] = {
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", CG_EFORMAT, "a.obj:4: face refers to vertex 4"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", CG_EFORMAT, "a.obj:4: expected an index other than 0"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", CG_EFORMAT, "a.obj:4: relative index -4"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", CG_EFORMAT, "a.obj:4: expected a face of at least 3"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", CG_EFORMAT,
+         "a.obj:4: face refers to vertex 4"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", CG_EFORMAT,
+         "a.obj:4: expected an index other than 0"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", CG_EFORMAT,
+         "a.obj:4: relative index -4"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", CG_EFORMAT,
+         "a.obj:4: expected a face of at least 3"},
         {"a.obj", "v 0 0 0\nv 1 0 x\n", CG_EFORMAT, "a.obj:2: expected a number"},
         {"a.obj", "v 0 0 0\nv 1 0 1.5.2\n", CG_EFORMAT, "a.obj:2: expected a number"},
         {"a.obj", "v 0 0 0\nv 1 0 1e\n", CG_EFORMAT, "a.obj:2:"},
         {"a.obj", "v 0 0\n", CG_EFORMAT, "a.obj:1: expected 3, 4 or 6 numbers"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", CG_EFORMAT, "a.obj:4: expected a texture coordinate index"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n", CG_EFORMAT, "a.obj:5: face refers to texture coordinate 2"},
-        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n", CG_EFORMAT, "a.obj:4: face refers to normal 1"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n", CG_EFORMAT,
+         "a.obj:4: expected a texture coordinate index"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/2 2/1 3/1\n", CG_EFORMAT,
+         "a.obj:5: face refers to texture coordinate 2"},
+        {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n", CG_EFORMAT,
+         "a.obj:4: face refers to normal 1"},
         {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999\n", CG_EFORMAT, "a.obj:4:"},
         {"a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n", CG_EFORMAT, "a.obj:4:"},
         {"a.obj", "# nothing\n", CG_EFORMAT, "expected vertices"},
         {"a.obj", "", CG_EFORMAT, "a.obj: the file is empty"},
-        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", CG_EFORMAT, "a.off:5: expected 3 vertices, the file ends after 2"},
-        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", CG_EFORMAT, "a.off:6: face 0 refers to vertex 3"},
-        {"a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", CG_EFORMAT, "expected 2 faces, the file ends after 1"},
-        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n", CG_EFORMAT, "a.off:7: expected the end of the file"},
-        {"a.off", "OFF\n3 1 0\n0 0 0 5\n1 0 0\n0 1 0\n3 0 1 2\n", CG_EFORMAT, "a.off:3: expected 3 numbers"},
+        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", CG_EFORMAT,
+         "a.off:5: expected 3 vertices, the file ends after 2"},
+        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", CG_EFORMAT,
+         "a.off:6: face 0 refers to vertex 3"},
+        {"a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", CG_EFORMAT,
+         "expected 2 faces, the file ends after 1"},
+        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n", CG_EFORMAT,
+         "a.off:7: expected the end of the file"},
+        {"a.off", "OFF\n3 1 0\n0 0 0 5\n1 0 0\n0 1 0\n3 0 1 2\n", CG_EFORMAT,
+         "a.off:3: expected 3 numbers"},
         {"a.off", "OFF\n-3 1 0\n", CG_EFORMAT, "a.off:2: expected the vertex count"},
         {"a.off", "OFF\n999999999999 1 0\n0 0 0\n", CG_ERANGE, "over cg_mesh's limit"},
-        {"a.off", "OFF\n4000000000 1 0\n0 0 0\n", CG_EFORMAT, "expected 4000000000 vertices, the file ends after 1"},
+        {"a.off", "OFF\n4000000000 1 0\n0 0 0\n", CG_EFORMAT,
+         "expected 4000000000 vertices, the file ends after 1"},
         {"a.off", "4OFF\n1 0 0\n0 0 0 0\n", CG_EUNSUPPORTED, "4OFF"},
-        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", CG_EFORMAT, "a.off:6: expected a face's vertex count (3 or more)"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1\n", CG_EFORMAT, "a.ply:10: expected a number of vertex 1, got the end of the file"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n5\n", CG_EFORMAT, "a.ply:9: expected the end of the file"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", CG_EFORMAT, "a.ply:13: face 0 refers to vertex 3"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n", CG_EFORMAT, "a.ply:13: face 0 refers to vertex -1"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n", CG_EFORMAT, "a.ply:13: expected a list length (a whole number, 0 or more) of face 0, got '300'"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar x\nproperty float y\nproperty float z\nend_header\n0.5 0 0\n", CG_EFORMAT, "a.ply:8: expected an integer of vertex 0, got '0.5'"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n", CG_EFORMAT, "properties x, y and z"},
+        {"a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", CG_EFORMAT,
+         "a.off:6: expected a face's vertex count (3 or more)"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty "
+         "float z\nend_header\n0 0 0\n1 1\n",
+         CG_EFORMAT, "a.ply:10: expected a number of vertex 1, got the end of the file"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty "
+         "float z\nend_header\n0 0 0\n5\n",
+         CG_EFORMAT, "a.ply:9: expected the end of the file"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+         "float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 "
+         "0\n0 1 0\n3 0 1 3\n",
+         CG_EFORMAT, "a.ply:13: face 0 refers to vertex 3"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+         "float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 "
+         "0\n0 1 0\n3 0 1 -1\n",
+         CG_EFORMAT, "a.ply:13: face 0 refers to vertex -1"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+         "float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 "
+         "0\n0 1 0\n300 0 1 2\n",
+         CG_EFORMAT,
+         "a.ply:13: expected a list length (a whole number, 0 or more) of face 0, got '300'"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar x\nproperty float y\nproperty "
+         "float z\nend_header\n0.5 0 0\n",
+         CG_EFORMAT, "a.ply:8: expected an integer of vertex 0, got '0.5'"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float "
+         "y\nend_header\n0 0\n",
+         CG_EFORMAT, "properties x, y and z"},
         {"a.ply", "ply\nformat ascii 2.0\n", CG_EFORMAT, "a.ply:2: expected version 1.0"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float32x x\n", CG_EFORMAT, "a.ply:4: expected a property type"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", CG_EFORMAT, "expected 'end_header'"},
-        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999999\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n", CG_EFORMAT, "a.ply:9: expected a number of vertex 1"},
-        {"a.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0123456789ab", CG_EFORMAT, "byte 124: the header says 4000000000 items of element 'vertex' (line 3)"},
-        {"a.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n0123456789ab\xff\xff\xff\xff", CG_EFORMAT, "byte 184: the file ends inside face 0"},
-        {"a.ply", "ply\nformat ascii 1.0\nbogus line\n", CG_EFORMAT, "a.ply:3: expected a header keyword"},
-        {"a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid\n", CG_EFORMAT, "a.stl:6: expected another 'vertex'"},
-        {"a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 z 0\n", CG_EFORMAT, "a.stl:6: expected a vertex coordinate"},
-        {"a.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\n", CG_EFORMAT, "a.stl:8: expected 'endfacet', got the end of the file"},
-        {"a.stl", "not an stl file at all, but long enough to have an 84-byte header................!!!!", CG_EFORMAT, "a.stl: byte 80: the header says"},
+        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float32x x\n", CG_EFORMAT,
+         "a.ply:4: expected a property type"},
+        {"a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", CG_EFORMAT,
+         "expected 'end_header'"},
+        {"a.ply",
+         "ply\nformat ascii 1.0\nelement vertex 99999999999999\nproperty float x\nproperty float "
+         "y\nproperty float z\nend_header\n0 0 0\n",
+         CG_EFORMAT, "a.ply:9: expected a number of vertex 1"},
+        {"a.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float "
+         "x\nproperty float y\nproperty float z\nend_header\n0123456789ab",
+         CG_EFORMAT, "byte 124: the header says 4000000000 items of element 'vertex' (line 3)"},
+        {"a.ply",
+         "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float "
+         "y\nproperty float z\nelement face 1\nproperty list uint int "
+         "vertex_indices\nend_header\n0123456789ab\xff\xff\xff\xff",
+         CG_EFORMAT, "byte 184: the file ends inside face 0"},
+        {"a.ply", "ply\nformat ascii 1.0\nbogus line\n", CG_EFORMAT,
+         "a.ply:3: expected a header keyword"},
+        {"a.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 "
+         "0\nendloop\nendfacet\nendsolid\n",
+         CG_EFORMAT, "a.stl:6: expected another 'vertex'"},
+        {"a.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 z 0\n",
+         CG_EFORMAT, "a.stl:6: expected a vertex coordinate"},
+        {"a.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 "
+         "0\nendloop\n",
+         CG_EFORMAT, "a.stl:8: expected 'endfacet', got the end of the file"},
+        {"a.stl",
+         "not an stl file at all, but long enough to have an 84-byte header................!!!!",
+         CG_EFORMAT, "a.stl: byte 80: the header says"},
         {"a.xyz", "hello\n", CG_EFORMAT, "unknown mesh format"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         cg_status s;
         cg_error err;
         cg_mesh *m = load_text(cases[i].text, cases[i].name, CG_MESH_FORMAT_AUTO, &s, &err);
-        CHECK_MSG(s == cases[i].status && m == NULL, "case %zu (%s): status %d, expected %d: %s",
-                  i, cases[i].name, (int)s, (int)cases[i].status, err.message);
+        CHECK_MSG(s == cases[i].status && m == NULL, "case %zu (%s): status %d, expected %d: %s", i,
+                  cases[i].name, (int)s, (int)cases[i].status, err.message);
         CHECK_MSG(strstr(err.message, cases[i].message) != NULL,
                   "case %zu: message '%s' lacks '%s'", i, err.message, cases[i].message);
         cg_mesh_free(m);
@@ -516,7 +577,10 @@ static void test_numbers(void)
         case 0: snprintf(number, sizeof number, "%.17g", x); break;
         case 1: snprintf(number, sizeof number, "%.6f", x); break;
         case 2: snprintf(number, sizeof number, "%.9e", x); break;
-        case 3: snprintf(number, sizeof number, "%lld", (long long)check_rng_int(&rng, -99999999, 99999999)); break;
+        case 3:
+            snprintf(number, sizeof number, "%lld",
+                     (long long)check_rng_int(&rng, -99999999, 99999999));
+            break;
         case 4: snprintf(number, sizeof number, "%.25g", x); break; /* beyond 19 digits */
         case 5: /* huge / denormal, finite (positions cg keeps are) */
             snprintf(number, sizeof number, "%.3g", isfinite(x * 1e280) ? x * 1e280 : x * 1e250);
@@ -525,13 +589,18 @@ static void test_numbers(void)
             snprintf(number, sizeof number, "%.*e", (int)check_rng_int(&rng, 15, 18), x);
             break;
         default: /* a 19-digit integer with a decimal point somewhere */
-            snprintf(number, sizeof number, "%llu", (unsigned long long)(check_rng_next(&rng) >> 1));
+            snprintf(number, sizeof number, "%llu",
+                     (unsigned long long)(check_rng_next(&rng) >> 1));
             memmove(number + 4, number + 3, strlen(number + 3) + 1);
             number[3] = '.';
             break;
         }
         expected[i] = strtod(number, NULL);
-        at += (size_t)sprintf(text + at, i % 3 == 0 ? "v %s" : i % 3 == 2 ? " %s\n" : " %s", number);
+        at += (size_t)sprintf(text + at,
+                              i % 3 == 0   ? "v %s"
+                              : i % 3 == 2 ? " %s\n"
+                                           : " %s",
+                              number);
     }
     text[at] = '\0';
     cg_status s;
@@ -597,8 +666,8 @@ static cg_mesh *random_mesh(check_rng *rng, unsigned flags)
         m->positions[v] = cg_vec3_make(check_rng_range(rng, -1, 1) * scale,
                                        check_rng_range(rng, -1, 1), check_rng_int(rng, -5, 5));
         if (m->normals)
-            m->normals[v] = cg_vec3_normalize(cg_vec3_make(check_rng_range(rng, -1, 1),
-                                                           check_rng_range(rng, -1, 1), 0.5));
+            m->normals[v] = cg_vec3_normalize(
+                cg_vec3_make(check_rng_range(rng, -1, 1), check_rng_range(rng, -1, 1), 0.5));
         if (m->texcoords)
             m->texcoords[v] = cg_vec2_make(check_rng_unit(rng), check_rng_unit(rng));
         if (m->colors) {
@@ -637,13 +706,12 @@ static void compare_meshes(const cg_mesh *a, const cg_mesh *b, const char *what,
         return;
     CHECK_MSG(memcmp(a->positions, b->positions, a->vertex_count * sizeof(cg_vec3)) == 0,
               "%s: positions differ", what);
-    CHECK_MSG(memcmp(a->face_offsets, b->face_offsets, (a->face_count + 1) * sizeof(uint32_t))
-                  == 0,
+    CHECK_MSG(memcmp(a->face_offsets, b->face_offsets, (a->face_count + 1) * sizeof(uint32_t)) == 0,
               "%s: faces differ", what);
-    CHECK_MSG(memcmp(a->face_indices, b->face_indices,
-                     a->face_offsets[a->face_count] * sizeof(uint32_t))
-                  == 0,
-              "%s: face indices differ", what);
+    CHECK_MSG(
+        memcmp(a->face_indices, b->face_indices, a->face_offsets[a->face_count] * sizeof(uint32_t))
+            == 0,
+        "%s: face indices differ", what);
     CHECK_MSG(!a->normals == !b->normals && !a->texcoords == !b->texcoords
                   && !a->colors == !b->colors && !a->face_colors == !b->face_colors,
               "%s: optional arrays differ", what);
@@ -664,14 +732,18 @@ static void compare_meshes(const cg_mesh *a, const cg_mesh *b, const char *what,
 static void test_round_trips(void)
 {
     check_rng rng = {42};
-    static const struct { cg_mesh_format format; const char *file; } formats[] = {
+    static const struct {
+        cg_mesh_format format;
+        const char *file;
+    } formats[] = {
         {CG_MESH_FORMAT_OBJ, "round.obj"},
         {CG_MESH_FORMAT_PLY_ASCII, "round-ascii.ply"},
         {CG_MESH_FORMAT_PLY_BINARY, "round-binary.ply"},
     };
     unsigned flag_sets[] = {0, CG_MESH_NORMALS, CG_MESH_TEXCOORDS | CG_MESH_NORMALS,
                             CG_MESH_COLORS | CG_MESH_FACE_COLORS,
-                            CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS | CG_MESH_FACE_COLORS};
+                            CG_MESH_NORMALS | CG_MESH_TEXCOORDS | CG_MESH_COLORS
+                                | CG_MESH_FACE_COLORS};
     for (int round = 0; round < 40; round++) {
         unsigned flags = flag_sets[round % 5];
         cg_mesh *m = random_mesh(&rng, flags);
@@ -722,7 +794,10 @@ static void test_round_trips(void)
 
 static void test_real_meshes(void)
 {
-    static const struct { const char *file; size_t vertices, faces; } meshes[] = {
+    static const struct {
+        const char *file;
+        size_t vertices, faces;
+    } meshes[] = {
         {"bunny.obj", 1839, 3674},
         {"teapot.obj", 792, 992},
         {"dragon_vrip_res4.ply.gz", 5205, 11102},
@@ -806,7 +881,8 @@ static void test_gzip(void)
     CHECK(cg_mesh_load_memory(nested, nn, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err) == CG_EFORMAT);
     CHECK_MSG(strstr(err.message, "gzip data inside gzip data") != NULL, "%s", err.message);
     memcpy(twice + n, "junk", 4);
-    CHECK(cg_mesh_load_memory(twice, n + 4, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err) == CG_EFORMAT);
+    CHECK(cg_mesh_load_memory(twice, n + 4, "t.obj.gz", CG_MESH_FORMAT_AUTO, &m, &err)
+          == CG_EFORMAT);
     CHECK_MSG(strstr(err.message, "4 more bytes follow") != NULL, "%s", err.message);
 }
 

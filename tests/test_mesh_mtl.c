@@ -53,44 +53,42 @@ static void statements(void)
     write_file("lib/normals.png", "x");
     write_file("lib/spec.png", "x");
     write_file("lib/alpha.png", "x");
-    write_file("lib/materials.mtl",
-               "# every statement\n"
-               "newmtl Polished Wood Floor\n"
-               "Ka 0.1 0.1 0.1\n"
-               "Kd 0.8 0.6 0.4\n"
-               "Ks 0.5 0.25 0.125\n"
-               "Ns 96\n"
-               "Ke 0.5 0 0\n"
-               "d 0.75\n"
-               "illum 3\n"
-               "map_Kd -s 2 4 -o 0.5 0.25 -clamp on wood grain.png\n"
-               "map_Ks spec.png\n"
-               "map_d -imfchan m alpha.png\n"
-               "map_bump -bm 0.3 bump.png\n"
-               "norm normals.png\n"
-               "\n"
-               "newmtl glass\n"
-               "Kd 0.5\n"
-               "Tr 0.9\n"
-               "bump .\\bump.png\n"
-               "newmtl unused\n"
-               "Kd 1 0 0\n"
-               "map_Kd missing.png\n"
-               "newmtl plain\n"
-               "illum 1\n"
-               "map_Kd missing texture.png\n");
-    write_file("model.obj",
-               "mtllib lib/materials.mtl\n"
-               "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
-               "f 1 2 3\n"
-               "usemtl Polished Wood Floor\n"
-               "f 2 4 3\n"
-               "usemtl glass\n"
-               "f 1 2 4\n"
-               "usemtl plain\n"
-               "f 1 4 3\n"
-               "usemtl Polished Wood Floor\n"
-               "f 1 3 4\n");
+    write_file("lib/materials.mtl", "# every statement\n"
+                                    "newmtl Polished Wood Floor\n"
+                                    "Ka 0.1 0.1 0.1\n"
+                                    "Kd 0.8 0.6 0.4\n"
+                                    "Ks 0.5 0.25 0.125\n"
+                                    "Ns 96\n"
+                                    "Ke 0.5 0 0\n"
+                                    "d 0.75\n"
+                                    "illum 3\n"
+                                    "map_Kd -s 2 4 -o 0.5 0.25 -clamp on wood grain.png\n"
+                                    "map_Ks spec.png\n"
+                                    "map_d -imfchan m alpha.png\n"
+                                    "map_bump -bm 0.3 bump.png\n"
+                                    "norm normals.png\n"
+                                    "\n"
+                                    "newmtl glass\n"
+                                    "Kd 0.5\n"
+                                    "Tr 0.9\n"
+                                    "bump .\\bump.png\n"
+                                    "newmtl unused\n"
+                                    "Kd 1 0 0\n"
+                                    "map_Kd missing.png\n"
+                                    "newmtl plain\n"
+                                    "illum 1\n"
+                                    "map_Kd missing texture.png\n");
+    write_file("model.obj", "mtllib lib/materials.mtl\n"
+                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                            "f 1 2 3\n"
+                            "usemtl Polished Wood Floor\n"
+                            "f 2 4 3\n"
+                            "usemtl glass\n"
+                            "f 1 2 4\n"
+                            "usemtl plain\n"
+                            "f 1 4 3\n"
+                            "usemtl Polished Wood Floor\n"
+                            "f 1 3 4\n");
     cg_error err;
     cg_mesh *mesh = load("model.obj", &err);
     CHECK_MSG(mesh != NULL, "%s", err.message);
@@ -134,7 +132,8 @@ static void statements(void)
     CHECK(ends_with(wood->normal_map.image_path, "/lib/normals.png"));
     /* Tr is transparency; one Kd number is grey; a backslash path */
     CHECK_NEAR(glass->base_color.a, 0.1, 1e-6);
-    CHECK(glass->base_color.r == 0.5f && glass->base_color.g == 0.5f && glass->base_color.b == 0.5f);
+    CHECK(glass->base_color.r == 0.5f && glass->base_color.g == 0.5f
+          && glass->base_color.b == 0.5f);
     CHECK_MSG(ends_with(glass->bump_map.image_path, "/lib/./bump.png"), "bump '%s'",
               glass->bump_map.image_path);
     /* a missing map: a note naming the file, and the colour stays */
@@ -160,8 +159,9 @@ static void missing_and_broken(void)
     if (mesh) {
         CHECK(mesh->material_count == 1 && strcmp(mesh->materials[0].name, "a") == 0);
         CHECK(mesh->materials[0].base_color.r == 1 && mesh->materials[0].base_color.a == 1);
-        CHECK_MSG(mesh->notes && strstr(mesh->notes, "nolib.obj: material library nowhere.mtl "
-                                                     "not found"),
+        CHECK_MSG(mesh->notes
+                      && strstr(mesh->notes, "nolib.obj: material library nowhere.mtl "
+                                             "not found"),
                   "notes '%s'", mesh->notes ? mesh->notes : "");
     }
     cg_mesh_free(mesh);

@@ -104,7 +104,7 @@ static void off_round_trip(void)
 static uint32_t (*triangles_of(const cg_mesh *m, size_t *n))[3]
 {
     *n = cg_mesh_triangle_count(m);
-    uint32_t (*t)[3] = malloc((*n ? *n : 1) * sizeof *t);
+    uint32_t(*t)[3] = malloc((*n ? *n : 1) * sizeof *t);
     cg_mesh_triangulate(m, t);
     for (size_t i = 0; i < *n; i++)
         for (int k = 0; k < 3; k++)
@@ -128,8 +128,8 @@ static void stl_round_trip(void)
         CHECK_MSG(cg_mesh_save(m, path, CG_MESH_FORMAT_AUTO, &err) == CG_OK, "%s", err.message);
         CHECK_MSG(cg_mesh_load(path, &back, &err) == CG_OK, "%s", err.message);
         size_t n, nb = 0;
-        uint32_t (*a)[3] = triangles_of(m, &n);
-        uint32_t (*b)[3] = back ? triangles_of(back, &nb) : NULL;
+        uint32_t(*a)[3] = triangles_of(m, &n);
+        uint32_t(*b)[3] = back ? triangles_of(back, &nb) : NULL;
         CHECK(back && nb == n);
         long bad = 0;
         for (size_t t = 0; back && t < n && t < nb; t++)
@@ -159,8 +159,8 @@ static void glb_round_trip(void)
             continue;
         }
         size_t n, nb;
-        uint32_t (*a)[3] = triangles_of(m, &n);
-        uint32_t (*b)[3] = triangles_of(back, &nb);
+        uint32_t(*a)[3] = triangles_of(m, &n);
+        uint32_t(*b)[3] = triangles_of(back, &nb);
         CHECK_EQ_INT(nb, n);
         /* the writer groups triangles by material (0, 1, 2, then none), in order */
         size_t *order = malloc(n * sizeof *order), k = 0;
@@ -171,8 +171,7 @@ static void glb_round_trip(void)
         for (int g = 0; g <= (with_materials ? 3 : 0); g++)
             for (size_t t = 0; t < n; t++) {
                 uint32_t mat = with_materials ? m->face_materials[face_of[t]] : CG_MESH_NO_MATERIAL;
-                if (with_materials ? (g == 3 ? mat == CG_MESH_NO_MATERIAL : mat == (uint32_t)g)
-                                   : 1)
+                if (with_materials ? (g == 3 ? mat == CG_MESH_NO_MATERIAL : mat == (uint32_t)g) : 1)
                     order[k++] = t;
             }
         long bad = 0;

@@ -26,7 +26,10 @@ static long long orient(long long ax, long long ay, long long bx, long long by, 
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-static int sign(long long v) { return (v > 0) - (v < 0); }
+static int sign(long long v)
+{
+    return (v > 0) - (v < 0);
+}
 
 /* Twice the signed area. */
 static long long twice_area(const polygon *p)
@@ -179,7 +182,8 @@ static int check_exact(const polygon *p, uint32_t (*t)[3], const char *what)
                     int all_out = 1;
                     for (int m = 0; m < 3; m++)
                         all_out &= orient(p->x[u], p->y[u], p->x[v], p->y[v], p->x[Q[m]],
-                                          p->y[Q[m]]) <= 0;
+                                          p->y[Q[m]])
+                                   <= 0;
                     separated = all_out;
                 }
             }
@@ -203,7 +207,7 @@ static int is_fan(uint32_t (*t)[3], int n)
 static uint32_t (*triangles_of(const polygon *p))[3]
 {
     cg_mesh *m = mesh_of(p);
-    uint32_t (*t)[3] = malloc((size_t)p->n * sizeof *t);
+    uint32_t(*t)[3] = malloc((size_t)p->n * sizeof *t);
     CHECK(m && t);
     if (!m || !t) {
         cg_mesh_free(m);
@@ -219,7 +223,7 @@ static uint32_t (*triangles_of(const polygon *p))[3]
 /* Triangulates p and checks it; returns 1 when it held. */
 static int check_polygon(const polygon *p, const char *what)
 {
-    uint32_t (*t)[3] = triangles_of(p);
+    uint32_t(*t)[3] = triangles_of(p);
     if (!t)
         return 0;
     int ok = check_exact(p, t, what);
@@ -277,8 +281,8 @@ static int random_two_opt(check_rng *rng, polygon *p, int k, long long range)
                 int i2 = i + 1, j2 = (j + 1) % k;
                 if (j2 == i)
                     continue;
-                if (segments_cross(p->x[i], p->y[i], p->x[i2], p->y[i2], p->x[j], p->y[j],
-                                   p->x[j2], p->y[j2])) {
+                if (segments_cross(p->x[i], p->y[i], p->x[i2], p->y[i2], p->x[j], p->y[j], p->x[j2],
+                                   p->y[j2])) {
                     for (int a = i2, b = j; a < b; a++, b--) {
                         long long sx = p->x[a], sy = p->y[a];
                         p->x[a] = p->x[b];
@@ -468,7 +472,7 @@ static void test_orthogonal_and_holes(void)
 static void test_l_hexagon(void)
 {
     polygon p = {6, {2, 1, 1, 0, 0, 2}, {1, 1, 2, 2, 0, 0}};
-    uint32_t (*t)[3] = triangles_of(&p);
+    uint32_t(*t)[3] = triangles_of(&p);
     if (!t)
         return;
     CHECK(check_exact(&p, t, "L hexagon"));
@@ -496,7 +500,7 @@ static void test_fan_kept(void)
             continue;
         if (c % 2)
             add_degeneracies(&rng, &p, 2, 1);
-        uint32_t (*t)[3] = triangles_of(&p);
+        uint32_t(*t)[3] = triangles_of(&p);
         if (!t)
             return;
         CHECK_MSG(is_fan(t, p.n), "convex face of %d corners keeps the fan", p.n);
@@ -505,7 +509,7 @@ static void test_fan_kept(void)
     }
     /* star-shaped from the first corner though concave elsewhere */
     polygon l = {6, {0, 2, 2, 1, 1, 0}, {0, 0, 1, 1, 2, 2}};
-    uint32_t (*t)[3] = triangles_of(&l);
+    uint32_t(*t)[3] = triangles_of(&l);
     if (t) {
         CHECK(is_fan(t, l.n));
         free(t);
@@ -527,7 +531,7 @@ static void test_in_space(void)
                                 cg_mat4_mul(cg_xform3_rotate_x(2 * CG_PI * check_rng_unit(&rng)),
                                             cg_xform3_rotate_y(2 * CG_PI * check_rng_unit(&rng))));
         cg_mesh *mesh = mesh_of(&p);
-        uint32_t (*t)[3] = malloc((size_t)p.n * sizeof *t);
+        uint32_t(*t)[3] = malloc((size_t)p.n * sizeof *t);
         if (!mesh || !t) {
             CHECK(0);
             cg_mesh_free(mesh);
@@ -538,7 +542,8 @@ static void test_in_space(void)
         double bend = c % 2 ? 1e-6 : 0;
         for (int i = 0; i < p.n; i++) {
             cg_vec3 q = cg_mat4_transform_point(m, mesh->positions[i]);
-            mesh->positions[i] = cg_vec3_add(q, cg_vec3_scale(normal, bend * (check_rng_unit(&rng) - 0.5)));
+            mesh->positions[i] = cg_vec3_add(
+                q, cg_vec3_scale(normal, bend * (check_rng_unit(&rng) - 0.5)));
         }
         CHECK_EQ_INT(cg_mesh_triangulate_face(mesh, 0, t), CG_OK);
         check_exact(&p, t, bend > 0 ? "in space, slightly bent" : "in space");
@@ -572,7 +577,7 @@ static void test_whole_mesh(void)
     }
     size_t count = cg_mesh_triangle_count(m);
     CHECK_EQ_INT(count, corners - 2 * 20);
-    uint32_t (*all)[3] = malloc(count * sizeof *all), (*one)[3] = malloc(64 * sizeof *one);
+    uint32_t(*all)[3] = malloc(count * sizeof *all), (*one)[3] = malloc(64 * sizeof *one);
     CHECK_EQ_INT(cg_mesh_triangulate(m, all), CG_OK);
     size_t t = 0;
     for (int f = 0; f < faces; f++) {
@@ -604,7 +609,7 @@ static void test_degenerate(void)
             p.x[i] = rng_int(&rng, -5, 5);
             p.y[i] = c % 5 == 0 ? 2 * p.x[i] : rng_int(&rng, -5, 5); /* every 5th on a line */
         }
-        uint32_t (*t)[3] = triangles_of(&p);
+        uint32_t(*t)[3] = triangles_of(&p);
         if (!t)
             return;
         int ok = 1;
@@ -621,7 +626,7 @@ static void test_degenerate(void)
         p.x[i] = llround(r * cos(a));
         p.y[i] = llround(r * sin(a));
     }
-    uint32_t (*t)[3] = triangles_of(&p);
+    uint32_t(*t)[3] = triangles_of(&p);
     if (t) {
         long long sum = 0;
         int clockwise = 0;
@@ -642,11 +647,12 @@ static void test_degenerate(void)
         cg_mesh *r;
         CHECK_EQ_INT(cg_mesh_create(&r, big, 1, big, 0), CG_OK);
         for (uint32_t i = 0; i < big; i++) {
-            r->positions[i] = cg_vec3_make((double)rng_int(&rng, 0, 999), (double)rng_int(&rng, 0, 999), 0);
+            r->positions[i] = cg_vec3_make((double)rng_int(&rng, 0, 999),
+                                           (double)rng_int(&rng, 0, 999), 0);
             r->face_indices[i] = i;
         }
         r->face_offsets[1] = big;
-        uint32_t (*rt)[3] = malloc(big * sizeof *rt);
+        uint32_t(*rt)[3] = malloc(big * sizeof *rt);
         CHECK_EQ_INT(cg_mesh_triangulate(r, rt), CG_OK);
         int ok = 1;
         for (uint32_t a = 0; a + 2 < big; a++)

@@ -136,10 +136,9 @@ static cg_mesh *random_soup(check_rng *rng, int n, double spread)
         cg_vec3 c = {check_rng_range(rng, -1, 1), check_rng_range(rng, -1, 1),
                      check_rng_range(rng, -1, 1)};
         for (int k = 0; k < 3; k++) {
-            m->positions[t * 3 + k] =
-                cg_vec3_make(c.x + check_rng_range(rng, -spread, spread),
-                             c.y + check_rng_range(rng, -spread, spread),
-                             c.z + check_rng_range(rng, -spread, spread));
+            m->positions[t * 3 + k] = cg_vec3_make(c.x + check_rng_range(rng, -spread, spread),
+                                                   c.y + check_rng_range(rng, -spread, spread),
+                                                   c.z + check_rng_range(rng, -spread, spread));
             m->face_indices[t * 3 + k] = (uint32_t)(t * 3 + k);
         }
         m->face_offsets[t + 1] = (uint32_t)(t * 3 + 3);
@@ -254,11 +253,13 @@ static void test_zbuffer_brute_force(void)
                      * allow the depth plane that step of tilt. */
                     const cg_vec3 *v = s + winner * 3;
                     double area = (v[1].x - v[0].x) * (v[2].y - v[0].y)
-                                - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+                                  - (v[1].y - v[0].y) * (v[2].x - v[0].x);
                     double zx = ((v[1].z - v[0].z) * (v[2].y - v[0].y)
-                                 - (v[2].z - v[0].z) * (v[1].y - v[0].y)) / area;
+                                 - (v[2].z - v[0].z) * (v[1].y - v[0].y))
+                                / area;
                     double zy = ((v[2].z - v[0].z) * (v[1].x - v[0].x)
-                                 - (v[1].z - v[0].z) * (v[2].x - v[0].x)) / area;
+                                 - (v[1].z - v[0].z) * (v[2].x - v[0].x))
+                                / area;
                     if (!(fabs(d - best) < 2e-6 + (fabs(zx) + fabs(zy)) / 256)) {
                         depth_wrong++;
                         if (depth_wrong < 5)
@@ -306,7 +307,8 @@ static int compare_images(const cg_image *a, const cg_image *b)
     int differ = 0;
     for (int y = 0; y < a->height; y++)
         differ += memcmp(cg_image_row_rgba8((cg_image *)a, y), cg_image_row_rgba8((cg_image *)b, y),
-                         (size_t)a->width * 4) != 0
+                         (size_t)a->width * 4)
+                          != 0
                       ? 1
                       : 0;
     return differ;
@@ -350,8 +352,9 @@ static void test_painter(void)
         render_with(m, o, CG_RENDER_ZBUFFER, z, NULL);
         render_with(m, o, CG_RENDER_PAINTER, p, &ps);
         render_with(m, o, CG_RENDER_DEPTH_SORT, n, NULL);
-        CHECK_MSG(compare_images(z, p) == 0, "scene %d: painter's differs from the z-buffer in %d pixels",
-                  scene, count_differences(z, p));
+        CHECK_MSG(compare_images(z, p) == 0,
+                  "scene %d: painter's differs from the z-buffer in %d pixels", scene,
+                  count_differences(z, p));
         CHECK_EQ_INT(ps.splits, 0);
         /* Plain sorting is wrong on most of these scenes. */
         naive_wrong += count_differences(z, n) > 0;
@@ -360,7 +363,8 @@ static void test_painter(void)
         cg_image_free(n);
         cg_mesh_free(m);
     }
-    CHECK_MSG(naive_wrong >= 3, "plain depth sorting was wrong in only %d of 5 scenes", naive_wrong);
+    CHECK_MSG(naive_wrong >= 3, "plain depth sorting was wrong in only %d of 5 scenes",
+              naive_wrong);
     /* A cyclic overlap (three sticks, each over the next) and random
      * interpenetrating triangles: splitting makes painter's agree with the
      * z-buffer except along the cuts. */
@@ -373,8 +377,8 @@ static void test_painter(void)
         render_with(m, o, CG_RENDER_ZBUFFER, z, NULL);
         render_with(m, o, CG_RENDER_PAINTER, p, &ps);
         int differ = count_differences(z, p);
-        CHECK_MSG(differ <= 100 * 100 / 100, "soup %d: %d pixels differ (%zu splits)", scene, differ,
-                  ps.splits);
+        CHECK_MSG(differ <= 100 * 100 / 100, "soup %d: %d pixels differ (%zu splits)", scene,
+                  differ, ps.splits);
         CHECK(ps.splits > 0);
         cg_image_free(z);
         cg_image_free(p);
@@ -445,8 +449,8 @@ static void test_perspective_interpolation(void)
                 worst = e;
             checked++;
         }
-    CHECK_MSG(worst < 2e-3 && checked > 500, "perspective-correct colours: worst error %g over %d pixels",
-              worst, checked);
+    CHECK_MSG(worst < 2e-3 && checked > 500,
+              "perspective-correct colours: worst error %g over %d pixels", worst, checked);
     cg_image_free(img);
     cg_mesh_free(m);
 }
@@ -552,8 +556,8 @@ static void test_threads_identical(void)
             if (!first)
                 first = img;
             else {
-                CHECK_MSG(compare_images(first, img) == 0, "mode %d: %d threads differ from 1", mode,
-                          threads);
+                CHECK_MSG(compare_images(first, img) == 0, "mode %d: %d threads differ from 1",
+                          mode, threads);
                 cg_image_free(img);
             }
         }
@@ -711,7 +715,7 @@ static void test_renderer_reuse(void)
         o.edges = frame % 8 == 3 ? CG_EDGES_WIREFRAME : CG_EDGES_NONE;
         o.camera.eye = cg_vec3_make(check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), 3);
         o.frame_camera = frame % 2; /* unframed: the torus fills different tiles */
-        if (frame % 4 == 0) { /* the same size for a few frames, then another */
+        if (frame % 4 == 0) {       /* the same size for a few frames, then another */
             w = 40 + (int)(check_rng_next(&rng) % 200);
             h = 30 + (int)(check_rng_next(&rng) % 150);
         }
@@ -788,9 +792,8 @@ static void test_float_lighting(void)
         cg_vec3 a = m->positions[0], b = m->positions[1], c = m->positions[2];
         cg_vec3 centre = cg_vec3_scale(cg_vec3_add(cg_vec3_add(a, b), c), 1.0 / 3);
         cg_vec3 normal = cg_vec3_normalize(cg_vec3_cross(cg_vec3_sub(b, a), cg_vec3_sub(c, a)));
-        cg_vec3 view = cg_vec3_normalize(cg_vec3_sub(o.camera.eye, o.camera.orthographic
-                                                                       ? o.camera.target
-                                                                       : centre));
+        cg_vec3 view = cg_vec3_normalize(
+            cg_vec3_sub(o.camera.eye, o.camera.orthographic ? o.camera.target : centre));
         cg_material material = cg_material_make(cg_vec3_make(o.color.r, o.color.g, o.color.b),
                                                 o.ambient, 1, o.specular, o.shininess);
         material.specular = CG_SPECULAR_BLINN;

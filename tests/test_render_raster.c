@@ -32,7 +32,10 @@ static grid grid_make(int w, int h)
 
 /* ---- the definition, computed independently with exact integers ---------- */
 
-static long long snap(double v) { return (long long)floor(v * 256 + 0.5); }
+static long long snap(double v)
+{
+    return (long long)floor(v * 256 + 0.5);
+}
 
 /* Edge function of p against a->b (1/256 units). */
 static long long edge(long long ax, long long ay, long long bx, long long by, long long px,
@@ -55,8 +58,12 @@ static int covered(const cg_vec2 v[3], int x, int y)
     if (area == 0)
         return 0;
     if (area < 0) {
-        long long t = X[1]; X[1] = X[2]; X[2] = t;
-        t = Y[1]; Y[1] = Y[2]; Y[2] = t;
+        long long t = X[1];
+        X[1] = X[2];
+        X[2] = t;
+        t = Y[1];
+        Y[1] = Y[2];
+        Y[2] = t;
     }
     long long px = (long long)x * 256 + 128, py = (long long)y * 256 + 128;
     for (int k = 0; k < 3; k++) {
@@ -90,7 +97,8 @@ static void test_definition(void)
                 v[k] = cg_vec2_make(check_rng_int(&rng, -4, 2 * w + 4) * 0.5,
                                     check_rng_int(&rng, -4, 2 * h + 4) * 0.5);
             else
-                v[k] = cg_vec2_make(check_rng_range(&rng, -3, w + 3), check_rng_range(&rng, -3, h + 3));
+                v[k] = cg_vec2_make(check_rng_range(&rng, -3, w + 3),
+                                    check_rng_range(&rng, -3, h + 3));
         }
         grid g = grid_make(w, h);
         CHECK(cg_raster_triangle(v, w, h, count_span, &g) == CG_OK);
@@ -156,10 +164,14 @@ static void test_tiling(void)
         for (int i = 0; i <= n; i++)
             for (int j = 0; j <= n; j++) {
                 double x = (double)j / n * w, y = (double)i / n * h;
-                if (j == 0) x = -spread;
-                if (j == n) x = w + spread;
-                if (i == 0) y = -spread;
-                if (i == n) y = h + spread;
+                if (j == 0)
+                    x = -spread;
+                if (j == n)
+                    x = w + spread;
+                if (i == 0)
+                    y = -spread;
+                if (i == n)
+                    y = h + spread;
                 if (j > 0 && j < n)
                     x += check_rng_range(&rng, -0.3, 0.3) * w / n;
                 if (i > 0 && i < n)
@@ -178,14 +190,24 @@ static void test_tiling(void)
                         c = p[(i + 1) * (n + 1) + j + 1], d = p[(i + 1) * (n + 1) + j];
                 cg_vec2 t1[3], t2[3];
                 if (check_rng_unit(&rng) < 0.5) {
-                    t1[0] = a; t1[1] = b; t1[2] = c;
-                    t2[0] = a; t2[1] = c; t2[2] = d;
+                    t1[0] = a;
+                    t1[1] = b;
+                    t1[2] = c;
+                    t2[0] = a;
+                    t2[1] = c;
+                    t2[2] = d;
                 } else {
-                    t1[0] = a; t1[1] = b; t1[2] = d;
-                    t2[0] = b; t2[1] = c; t2[2] = d;
+                    t1[0] = a;
+                    t1[1] = b;
+                    t1[2] = d;
+                    t2[0] = b;
+                    t2[1] = c;
+                    t2[2] = d;
                 }
                 if (check_rng_unit(&rng) < 0.5) {
-                    cg_vec2 s = t1[1]; t1[1] = t1[2]; t1[2] = s;
+                    cg_vec2 s = t1[1];
+                    t1[1] = t1[2];
+                    t1[2] = s;
                 }
                 cg_raster_triangle(t1, w, h, count_span, &g);
                 cg_raster_triangle(t2, w, h, count_span, &g);

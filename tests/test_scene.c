@@ -19,7 +19,8 @@ static void expect_error(const char *json, const char *text)
     cg_status st = parse(json, &s, &err);
     CHECK_MSG(st != CG_OK, "accepted: %s", json);
     CHECK(s == NULL);
-    CHECK_MSG(strstr(err.message, text) != NULL, "message '%s' should contain '%s'", err.message, text);
+    CHECK_MSG(strstr(err.message, text) != NULL, "message '%s' should contain '%s'", err.message,
+              text);
 }
 
 static void test_fields(void)
@@ -29,16 +30,23 @@ static void test_fields(void)
         " \"camera\": {\"eye\": [1, 2, 3], \"target\": [0, 0, -1], \"up\": [0, 0, 1],"
         "   \"projection\": \"perspective\", \"fov\": 60, \"near\": 0.5, \"far\": 50},"
         " \"render\": {\"algorithm\": \"painter\", \"shading\": \"flat\", \"cull\": \"none\","
-        "   \"edges\": \"overlay\", \"threads\": 2, \"samples\": 9, \"depth\": 3, \"shadows\": false},"
+        "   \"edges\": \"overlay\", \"threads\": 2, \"samples\": 9, \"depth\": 3, \"shadows\": "
+        "false},"
         " \"lights\": [{\"type\": \"ambient\", \"color\": [0.2, 0.2, 0.2]},"
         "   {\"type\": \"directional\", \"direction\": [0, -2, 0], \"intensity\": 2},"
         "   {\"type\": \"point\", \"position\": [1, 1, 1], \"attenuation\": [1, 0.1, 0.01]},"
-        "   {\"type\": \"spot\", \"position\": [0, 5, 0], \"direction\": [0, -1, 0], \"cutoff\": 20},"
-        "   {\"type\": \"area\", \"corner\": [0, 5, 0], \"edge_u\": [1, 0, 0], \"edge_v\": [0, 0, 1], \"samples\": 3}],"
-        " \"materials\": {\"red\": {\"color\": [1, 0, 0], \"ks\": 0.5, \"shininess\": 10, \"specular\": \"phong\","
-        "   \"reflectance\": 0.3, \"transmittance\": 0.2, \"ior\": 1.5, \"checker\": {\"color\": \"white\", \"size\": 2}}},"
-        " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 1, 0], \"radius\": 2, \"material\": \"red\","
-        "   \"transform\": [{\"translate\": [1, 0, 0]}, {\"scale\": 2}, {\"rotate\": 90, \"axis\": [0, 0, 1]}]},"
+        "   {\"type\": \"spot\", \"position\": [0, 5, 0], \"direction\": [0, -1, 0], \"cutoff\": "
+        "20},"
+        "   {\"type\": \"area\", \"corner\": [0, 5, 0], \"edge_u\": [1, 0, 0], \"edge_v\": [0, 0, "
+        "1], \"samples\": 3}],"
+        " \"materials\": {\"red\": {\"color\": [1, 0, 0], \"ks\": 0.5, \"shininess\": 10, "
+        "\"specular\": \"phong\","
+        "   \"reflectance\": 0.3, \"transmittance\": 0.2, \"ior\": 1.5, \"checker\": {\"color\": "
+        "\"white\", \"size\": 2}}},"
+        " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 1, 0], \"radius\": 2, \"material\": "
+        "\"red\","
+        "   \"transform\": [{\"translate\": [1, 0, 0]}, {\"scale\": 2}, {\"rotate\": 90, \"axis\": "
+        "[0, 0, 1]}]},"
         "   {\"type\": \"plane\", \"point\": [0, -1, 0], \"normal\": [0, 1, 0]},"
         "   {\"type\": \"box\", \"lo\": [0, 0, 0], \"hi\": [1, 2, 3]}],"
         " \"overlays\": [\"color red\", \"line 0 0 10 10\"]}";
@@ -62,14 +70,15 @@ static void test_fields(void)
     CHECK_EQ_INT(s->light_count, 4);
     CHECK_EQ_INT(s->area_light_count, 1);
     CHECK(s->lights[0].kind == CG_LIGHT_AMBIENT && s->lights[1].kind == CG_LIGHT_DIRECTIONAL);
-    CHECK_NEAR(s->lights[1].color.x, 2, 0);           /* intensity scales the colour */
-    CHECK_NEAR(s->lights[1].direction.y, -1, 1e-15);  /* normalized */
+    CHECK_NEAR(s->lights[1].color.x, 2, 0);          /* intensity scales the colour */
+    CHECK_NEAR(s->lights[1].direction.y, -1, 1e-15); /* normalized */
     CHECK_NEAR(s->lights[2].attenuation[1], 0.1, 0);
     CHECK_NEAR(s->lights[3].spot_cos_cutoff, cos(cg_radians(20)), 1e-12);
     CHECK_EQ_INT(s->area_lights[0].samples, 3);
     CHECK_EQ_INT(s->material_count, 2);
     CHECK(strcmp(s->materials[1].name, "red") == 0);
-    CHECK(s->materials[1].surface.ks == 0.5 && s->materials[1].surface.specular == CG_SPECULAR_PHONG);
+    CHECK(s->materials[1].surface.ks == 0.5
+          && s->materials[1].surface.specular == CG_SPECULAR_PHONG);
     CHECK(s->materials[1].surface.refractive_index == 1.5 && s->materials[1].checker_size == 2);
     CHECK_EQ_INT(s->object_count, 3);
     CHECK(s->objects[0].kind == CG_SCENE_SPHERE && s->objects[0].material == 1);
@@ -84,11 +93,12 @@ static void test_fields(void)
     cg_scene_free(s);
 
     /* Every projection kind reads. */
-    const char *kinds[] = {"orthographic", "isometric", "dimetric", "trimetric", "cavalier",
-                           "cabinet", "oblique"};
+    const char *kinds[] = {"orthographic", "isometric", "dimetric", "trimetric",
+                           "cavalier",     "cabinet",   "oblique"};
     for (int i = 0; i < 7; i++) {
         char text[256];
-        snprintf(text, sizeof text, "{\"camera\": {\"projection\": \"%s\", \"ratio\": 0.5, \"angles\": [10, 20]}}",
+        snprintf(text, sizeof text,
+                 "{\"camera\": {\"projection\": \"%s\", \"ratio\": 0.5, \"angles\": [10, 20]}}",
                  kinds[i]);
         CHECK_EQ_INT(parse(text, &s, &err), CG_OK);
         if (s) {
@@ -103,49 +113,67 @@ static void test_errors(void)
 {
     expect_error("{\"camera\": {\"fov\": \"wide\"}}",
                  "s.json: camera.fov: expected a number between 1 and 179, got \"wide\"");
-    expect_error("{\"camera\": {\"fov\": 180}}", "camera.fov: expected a number between 1 and 179, got 180");
+    expect_error("{\"camera\": {\"fov\": 180}}",
+                 "camera.fov: expected a number between 1 and 179, got 180");
     expect_error("{\"camera\": {\"fob\": 1}}", "camera.fob: unknown key");
     expect_error("{\"cameras\": {}}", "s.json: cameras: unknown key");
     expect_error("{\"image\": {\"width\": 1000000000, \"height\": 1000000000}}",
                  "image.width: expected a whole number between 1 and 16384");
     expect_error("{\"image\": {\"width\": 10.5}}", "image.width: expected a whole number");
     expect_error("{\"image\": {\"background\": \"#12345\"}}", "image.background: colour '#12345'");
-    expect_error("{\"image\": {\"background\": \"chartreuse-ish\"}}", "unknown colour 'chartreuse-ish'");
+    expect_error("{\"image\": {\"background\": \"chartreuse-ish\"}}",
+                 "unknown colour 'chartreuse-ish'");
     expect_error("{\"image\": [1, 2]}", "image: expected an object, got an array of 2");
     expect_error("{\"camera\": {\"eye\": [1, 2]}}", "camera.eye: expected an array of 3 numbers");
-    expect_error("{\"camera\": {\"eye\": [1, \"x\", 3]}}", "camera.eye[1]: expected a finite number");
+    expect_error("{\"camera\": {\"eye\": [1, \"x\", 3]}}",
+                 "camera.eye[1]: expected a finite number");
     expect_error("{\"camera\": {\"eye\": [0, 0, 0], \"target\": [0, 0, 0]}}", "camera.target");
-    expect_error("{\"camera\": {\"near\": 5, \"far\": 1}}", "camera.far: expected a distance greater than near");
-    expect_error("{\"camera\": {\"projection\": \"fisheye\"}}", "camera.projection: expected one of \"perspective\"");
-    expect_error("{\"render\": {\"algorithm\": \"scanline\"}}", "render.algorithm: expected one of");
+    expect_error("{\"camera\": {\"near\": 5, \"far\": 1}}",
+                 "camera.far: expected a distance greater than near");
+    expect_error("{\"camera\": {\"projection\": \"fisheye\"}}",
+                 "camera.projection: expected one of \"perspective\"");
+    expect_error("{\"render\": {\"algorithm\": \"scanline\"}}",
+                 "render.algorithm: expected one of");
     expect_error("{\"render\": {\"threads\": 0}}", "render.threads");
     expect_error("{\"render\": {\"shadows\": 1}}", "render.shadows: expected true or false, got 1");
     expect_error("{\"lights\": [{\"type\": \"laser\"}]}", "lights[0].type: expected one of");
     expect_error("{\"lights\": [{}]}", "lights[0].type: expected one of");
-    expect_error("{\"lights\": [{\"type\": \"directional\", \"direction\": [0, 0, 0]}]}", "lights[0]: expected a non-zero direction");
-    expect_error("{\"lights\": [{\"type\": \"point\", \"color\": [-1, 0, 0]}]}", "lights[0].color: expected colour components >= 0");
+    expect_error("{\"lights\": [{\"type\": \"directional\", \"direction\": [0, 0, 0]}]}",
+                 "lights[0]: expected a non-zero direction");
+    expect_error("{\"lights\": [{\"type\": \"point\", \"color\": [-1, 0, 0]}]}",
+                 "lights[0].color: expected colour components >= 0");
     expect_error("{\"lights\": [{\"type\": \"point\", \"attenuation\": [0, 0, 0]}]}", "lights[0]");
     expect_error("{\"lights\": {}}", "lights: expected an array");
-    expect_error("{\"materials\": {\"m\": {\"ka\": -1}}}", "materials.m.ka: expected a number between 0 and");
+    expect_error("{\"materials\": {\"m\": {\"ka\": -1}}}",
+                 "materials.m.ka: expected a number between 0 and");
     expect_error("{\"materials\": {\"m\": {\"glow\": 1}}}", "materials.m.glow: unknown key");
     expect_error("{\"objects\": [{\"type\": \"sphere\", \"material\": \"gold\"}]}",
-                 "objects[0].material: expected the name of a material defined in \"materials\", got \"gold\"");
-    expect_error("{\"objects\": [{\"type\": \"mesh\"}]}", "objects[0].file: expected the path of a mesh file, got nothing");
-    expect_error("{\"objects\": [{\"type\": \"sphere\", \"file\": \"a.obj\"}]}", "objects[0].file: only mesh objects");
+                 "objects[0].material: expected the name of a material defined in \"materials\", "
+                 "got \"gold\"");
+    expect_error("{\"objects\": [{\"type\": \"mesh\"}]}",
+                 "objects[0].file: expected the path of a mesh file, got nothing");
+    expect_error("{\"objects\": [{\"type\": \"sphere\", \"file\": \"a.obj\"}]}",
+                 "objects[0].file: only mesh objects");
     expect_error("{\"objects\": [{\"type\": \"sphere\", \"radius\": -1}]}", "objects[0].radius");
-    expect_error("{\"objects\": [{\"type\": \"plane\", \"normal\": [0, 0, 0]}]}", "objects[0].normal: expected a non-zero normal");
-    expect_error("{\"objects\": [{\"type\": \"box\", \"lo\": [1, 0, 0], \"hi\": [0, 1, 1]}]}", "objects[0].hi");
+    expect_error("{\"objects\": [{\"type\": \"plane\", \"normal\": [0, 0, 0]}]}",
+                 "objects[0].normal: expected a non-zero normal");
+    expect_error("{\"objects\": [{\"type\": \"box\", \"lo\": [1, 0, 0], \"hi\": [0, 1, 1]}]}",
+                 "objects[0].hi");
     expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"spin\": 3}]}]}",
                  "objects[0].transform[0]: expected a step with one of translate");
     expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"scale\": 0}]}]}",
                  "objects[0].transform[0].scale: expected non-zero scale factors");
-    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"rotate\": 5, \"axis\": [0, 0, 0]}]}]}",
+    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"rotate\": 5, \"axis\": "
+                 "[0, 0, 0]}]}]}",
                  "expected a non-zero rotation axis");
-    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"matrix\": [0,0,0,0, 0,0,0,0, 0,0,0,0, 0,0,0,1]}]}]}",
+    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"matrix\": [0,0,0,0, "
+                 "0,0,0,0, 0,0,0,0, 0,0,0,1]}]}]}",
                  "transform[0].matrix: expected an invertible matrix");
-    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"translate\": [1, 1, 1], \"center\": [0, 0, 0]}]}]}",
+    expect_error("{\"objects\": [{\"type\": \"sphere\", \"transform\": [{\"translate\": [1, 1, 1], "
+                 "\"center\": [0, 0, 0]}]}]}",
                  "transform[0].center: unknown key");
-    expect_error("{\"overlays\": [\"line 0 0 1 1\", 7]}", "overlays[1]: expected one line of a cg draw script, got 7");
+    expect_error("{\"overlays\": [\"line 0 0 1 1\", 7]}",
+                 "overlays[1]: expected one line of a cg draw script, got 7");
     expect_error("", "empty scene file");
     expect_error("[1, 2]", "expected a JSON object at the top level");
     expect_error("{\"image\": {\"width\": 10,\n  \"height\": }", "s.json:2:");
@@ -180,7 +208,8 @@ static void test_errors(void)
     cg_error err;
     const char *json = "{\"objects\": [{\"type\": \"mesh\", \"file\": \"no-such-mesh.obj\"}]}";
     CHECK(cg_scene_parse(json, strlen(json), "s.json", "some/dir", 1, &s, &err) != CG_OK);
-    CHECK_MSG(strstr(err.message, "objects[0].file") && strstr(err.message, "some/dir/no-such-mesh.obj"),
+    CHECK_MSG(strstr(err.message, "objects[0].file")
+                  && strstr(err.message, "some/dir/no-such-mesh.obj"),
               "message: %s", err.message);
     CHECK_EQ_INT(cg_scene_load("no/such/scene.json", &s, &err), CG_EIO);
 }
@@ -188,12 +217,12 @@ static void test_errors(void)
 /* Random damage to a valid scene: every result is a scene or a clear error. */
 static void test_mutations(void)
 {
-    const char *base =
-        "{\"image\": {\"width\": 32, \"height\": 24}, \"camera\": {\"eye\": [0, 0, 5], \"fov\": 50},"
-        " \"lights\": [{\"type\": \"point\", \"position\": [1, 2, 3]}],"
-        " \"materials\": {\"m\": {\"color\": \"#aabbcc\", \"ks\": 0.5}},"
-        " \"objects\": [{\"type\": \"sphere\", \"radius\": 1, \"material\": \"m\","
-        "   \"transform\": [{\"rotate\": 30, \"axis\": [1, 0, 0]}]}]}";
+    const char *base = "{\"image\": {\"width\": 32, \"height\": 24}, \"camera\": {\"eye\": [0, 0, "
+                       "5], \"fov\": 50},"
+                       " \"lights\": [{\"type\": \"point\", \"position\": [1, 2, 3]}],"
+                       " \"materials\": {\"m\": {\"color\": \"#aabbcc\", \"ks\": 0.5}},"
+                       " \"objects\": [{\"type\": \"sphere\", \"radius\": 1, \"material\": \"m\","
+                       "   \"transform\": [{\"rotate\": 30, \"axis\": [1, 0, 0]}]}]}";
     size_t n = strlen(base);
     char *text = malloc(n + 1);
     check_rng rng = {4242};
@@ -203,7 +232,8 @@ static void test_mutations(void)
         memcpy(text, base, n + 1);
         int edits = (int)check_rng_int(&rng, 1, 4);
         for (int e = 0; e < edits; e++)
-            text[check_rng_int(&rng, 0, (long long)n - 1)] = alphabet[check_rng_int(&rng, 0, (long long)sizeof alphabet - 2)];
+            text[check_rng_int(&rng, 0, (long long)n - 1)] =
+                alphabet[check_rng_int(&rng, 0, (long long)sizeof alphabet - 2)];
         cg_scene *s = NULL;
         cg_error err;
         cg_error_clear(&err);
@@ -234,11 +264,11 @@ static double coverage(const cg_image *img, cg_rgba8 background)
 
 static void test_render(void)
 {
-    const char *json =
-        "{\"image\": {\"width\": 96, \"height\": 72, \"background\": \"#000000\"},"
-        " \"camera\": {\"eye\": [0, 0, 6], \"target\": [0, 0, 0], \"fov\": 40},"
-        " \"lights\": [{\"type\": \"directional\", \"direction\": [0, 0, -1]}],"
-        " \"objects\": [{\"type\": \"sphere\", \"radius\": 1}, {\"type\": \"box\", \"lo\": [1.5, -0.5, -0.5], \"hi\": [2.2, 0.5, 0.5]}]}";
+    const char *json = "{\"image\": {\"width\": 96, \"height\": 72, \"background\": \"#000000\"},"
+                       " \"camera\": {\"eye\": [0, 0, 6], \"target\": [0, 0, 0], \"fov\": 40},"
+                       " \"lights\": [{\"type\": \"directional\", \"direction\": [0, 0, -1]}],"
+                       " \"objects\": [{\"type\": \"sphere\", \"radius\": 1}, {\"type\": \"box\", "
+                       "\"lo\": [1.5, -0.5, -0.5], \"hi\": [2.2, 0.5, 0.5]}]}";
     cg_scene *s;
     cg_error err;
     CHECK_EQ_INT(parse(json, &s, &err), CG_OK);
@@ -265,14 +295,15 @@ static void test_render(void)
     cg_image_free(painter);
     cg_image_free(traced);
     /* Every projection kind renders something with the rasterizer. */
-    const char *kinds[] = {"perspective", "orthographic", "isometric", "dimetric", "trimetric",
-                           "cavalier", "cabinet", "oblique"};
+    const char *kinds[] = {"perspective", "orthographic", "isometric", "dimetric",
+                           "trimetric",   "cavalier",     "cabinet",   "oblique"};
     for (int k = 0; k < 8; k++) {
         s->projection = (cg_scene_projection)k;
         s->camera.orthographic = k != 0;
         s->frame_camera = 1;
         cg_image *img = NULL;
-        CHECK_MSG(cg_scene_render_with(s, CG_SCENE_ZBUFFER, &img, &err) == CG_OK, "%s: %s", kinds[k], err.message);
+        CHECK_MSG(cg_scene_render_with(s, CG_SCENE_ZBUFFER, &img, &err) == CG_OK, "%s: %s",
+                  kinds[k], err.message);
         if (img) {
             double c = coverage(img, black);
             CHECK_MSG(c > 0.05 && c < 0.95, "%s covers %g", kinds[k], c);
@@ -283,13 +314,16 @@ static void test_render(void)
             CHECK_EQ_INT(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &img, &err), CG_EUNSUPPORTED);
             CHECK(img == NULL && strstr(err.message, "oblique"));
         } else if (k > 0) {
-            CHECK_MSG(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &img, &err) == CG_OK, "%s traced: %s", kinds[k], err.message);
+            CHECK_MSG(cg_scene_render_with(s, CG_SCENE_RAYTRACE, &img, &err) == CG_OK,
+                      "%s traced: %s", kinds[k], err.message);
             cg_image_free(img);
         }
     }
     cg_scene_free(s);
     /* An empty scene renders the background. */
-    CHECK_EQ_INT(parse("{\"image\": {\"width\": 8, \"height\": 8, \"background\": \"#000000\"}}", &s, &err), CG_OK);
+    CHECK_EQ_INT(
+        parse("{\"image\": {\"width\": 8, \"height\": 8, \"background\": \"#000000\"}}", &s, &err),
+        CG_OK);
     cg_image *img = NULL;
     if (s && cg_scene_render(s, &img, &err) == CG_OK) {
         CHECK(coverage(img, black) == 0);

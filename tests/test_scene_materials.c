@@ -90,21 +90,24 @@ static void checker_scenes(void)
         double ey = check_rng_range(&rng, 4, 6);
         int ortho = trial % 3 == 2;
         char json[2048];
-        snprintf(json, sizeof json,
-                 "{\"image\": {\"width\": %d, \"height\": %d, \"background\": [0, 0, 0]},"
-                 " \"camera\": {\"eye\": [%.3f, %.3f, %.3f], \"target\": [0.4, 0.4, 0],"
-                 " \"projection\": \"%s\", \"frame\": true},"
-                 " \"render\": {\"shading\": \"flat\", \"shadows\": false, \"depth\": 0, \"cull\": \"back\"},"
-                 " \"lights\": [{\"type\": \"ambient\", \"intensity\": 1}],"
-                 " \"materials\": {\"c\": {\"color\": [0.9, 0.02, 0.02], \"ka\": 1, \"kd\": 0,"
-                 " \"ks\": 0, \"checker\": {\"color\": [0.02, 0.02, 0.9], \"size\": %.4f}}},"
-                 " \"objects\": [{\"type\": \"plane\", \"point\": [0, -0.5, 0],"
-                 " \"normal\": [%.3f, 1, %.3f], \"material\": \"c\"},"
-                 " {\"type\": \"box\", \"lo\": [-1, 0, -0.5], \"hi\": [0, 1, 0.4], \"material\": \"c\","
-                 " \"transform\": [{\"rotate\": %.2f, \"axis\": [0, 1, 0]}%s]},"
-                 " {\"type\": \"sphere\", \"center\": [1.9, 0.6, 0.3], \"radius\": 0.5, \"material\": \"c\"}]}",
-                 W, H, ex, ey, ez, ortho ? "orthographic" : "perspective", size, tilt, -tilt,
-                 angle, trial % 2 ? ", {\"scale\": [-1, 1, 1]}" : "");
+        snprintf(
+            json, sizeof json,
+            "{\"image\": {\"width\": %d, \"height\": %d, \"background\": [0, 0, 0]},"
+            " \"camera\": {\"eye\": [%.3f, %.3f, %.3f], \"target\": [0.4, 0.4, 0],"
+            " \"projection\": \"%s\", \"frame\": true},"
+            " \"render\": {\"shading\": \"flat\", \"shadows\": false, \"depth\": 0, \"cull\": "
+            "\"back\"},"
+            " \"lights\": [{\"type\": \"ambient\", \"intensity\": 1}],"
+            " \"materials\": {\"c\": {\"color\": [0.9, 0.02, 0.02], \"ka\": 1, \"kd\": 0,"
+            " \"ks\": 0, \"checker\": {\"color\": [0.02, 0.02, 0.9], \"size\": %.4f}}},"
+            " \"objects\": [{\"type\": \"plane\", \"point\": [0, -0.5, 0],"
+            " \"normal\": [%.3f, 1, %.3f], \"material\": \"c\"},"
+            " {\"type\": \"box\", \"lo\": [-1, 0, -0.5], \"hi\": [0, 1, 0.4], \"material\": \"c\","
+            " \"transform\": [{\"rotate\": %.2f, \"axis\": [0, 1, 0]}%s]},"
+            " {\"type\": \"sphere\", \"center\": [1.9, 0.6, 0.3], \"radius\": 0.5, \"material\": "
+            "\"c\"}]}",
+            W, H, ex, ey, ez, ortho ? "orthographic" : "perspective", size, tilt, -tilt, angle,
+            trial % 2 ? ", {\"scale\": [-1, 1, 1]}" : "");
         cg_scene *s = parse(json);
         CHECK(s != NULL);
         if (!s)
@@ -137,7 +140,8 @@ static void checker_scenes(void)
                       count[3]);
             CHECK_MSG(wrong_z == 0 && wrong_p == 0,
                       "trial %d: %ld (z-buffer) and %ld (painter) of %ld interior pixels show "
-                      "another cell than the ray tracer", trial, wrong_z, wrong_p, interior);
+                      "another cell than the ray tracer",
+                      trial, wrong_z, wrong_p, interior);
             CHECK_MSG(beyond < interior / 4, "trial %d: %ld pixels beyond the rasterized plane",
                       trial, beyond);
             /* Both colours in sizeable areas: the test sees a pattern. */
@@ -169,18 +173,22 @@ static void surface_terms(void)
                      check_rng_range(&rng, 0.1, 1), check_rng_range(&rng, 0, 0.8),
                      check_rng_range(&rng, 2, 80));
         char json[2048];
-        snprintf(json, sizeof json,
-                 "{\"image\": {\"width\": %d, \"height\": %d},"
-                 " \"camera\": {\"eye\": [%.2f, 2.5, 4], \"target\": [0, 0, 0], \"frame\": true},"
-                 " \"render\": {\"shading\": \"phong\", \"shadows\": false, \"depth\": 0},"
-                 " \"lights\": [{\"type\": \"ambient\", \"intensity\": 0.4},"
-                 " {\"type\": \"directional\", \"direction\": [-0.4, -1, -0.5]},"
-                 " {\"type\": \"directional\", \"direction\": [0.8, -0.3, -0.6], \"intensity\": 0.5}],"
-                 " \"materials\": {%s, %s, %s},"
-                 " \"objects\": [{\"type\": \"box\", \"lo\": [-2, -0.5, -0.5], \"hi\": [-0.8, 0.5, 0.5], \"material\": \"m0\"},"
-                 " {\"type\": \"box\", \"lo\": [-0.6, -0.5, -0.5], \"hi\": [0.6, 0.5, 0.5], \"material\": \"m1\"},"
-                 " {\"type\": \"box\", \"lo\": [0.8, -0.5, -0.5], \"hi\": [2, 0.5, 0.5], \"material\": \"m2\"}]}",
-                 W, H, check_rng_range(&rng, -2, 2), materials[0], materials[1], materials[2]);
+        snprintf(
+            json, sizeof json,
+            "{\"image\": {\"width\": %d, \"height\": %d},"
+            " \"camera\": {\"eye\": [%.2f, 2.5, 4], \"target\": [0, 0, 0], \"frame\": true},"
+            " \"render\": {\"shading\": \"phong\", \"shadows\": false, \"depth\": 0},"
+            " \"lights\": [{\"type\": \"ambient\", \"intensity\": 0.4},"
+            " {\"type\": \"directional\", \"direction\": [-0.4, -1, -0.5]},"
+            " {\"type\": \"directional\", \"direction\": [0.8, -0.3, -0.6], \"intensity\": 0.5}],"
+            " \"materials\": {%s, %s, %s},"
+            " \"objects\": [{\"type\": \"box\", \"lo\": [-2, -0.5, -0.5], \"hi\": [-0.8, 0.5, "
+            "0.5], \"material\": \"m0\"},"
+            " {\"type\": \"box\", \"lo\": [-0.6, -0.5, -0.5], \"hi\": [0.6, 0.5, 0.5], "
+            "\"material\": \"m1\"},"
+            " {\"type\": \"box\", \"lo\": [0.8, -0.5, -0.5], \"hi\": [2, 0.5, 0.5], \"material\": "
+            "\"m2\"}]}",
+            W, H, check_rng_range(&rng, -2, 2), materials[0], materials[1], materials[2]);
         cg_scene *s = parse(json);
         CHECK(s != NULL);
         if (!s)
@@ -233,7 +241,8 @@ static void refusals(void)
                  "{\"image\": {\"width\": 16, \"height\": 16},"
                  " \"materials\": {\"x\": {\"ks\": 0.5, %s}},"
                  " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1,"
-                 " \"material\": \"x\"}]}", keys[k][0]);
+                 " \"material\": \"x\"}]}",
+                 keys[k][0]);
         cg_scene *s = parse(json);
         CHECK(s != NULL);
         if (!s)

@@ -325,8 +325,7 @@ static void edges_and_alpha(void)
 
 /* ---- files ------------------------------------------------------------- */
 
-static unsigned char *jpeg_encode(const cg_image *image, int grey, int quality,
-                                  unsigned long *size)
+static unsigned char *jpeg_encode(const cg_image *image, int grey, int quality, unsigned long *size)
 {
     struct jpeg_compress_struct info;
     struct jpeg_error_mgr errors;
@@ -419,10 +418,10 @@ static void jpeg_files(void)
     cg_error err;
     CHECK(cg_texture_load_memory("GIF89a", 6, "a.gif", CG_TEXTURE_SRGB, &t, &err) == CG_EFORMAT
           && strstr(err.message, "a.gif: expected a PNG or JPEG image"));
-    unsigned char png[33] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
-                             'I', 'H', 'D', 'R', 0, 1, 0, 0, 0, 1, 0, 0, 8, 6, 0, 0, 0};
-    CHECK(cg_texture_load_memory(png, sizeof png, "big.png", CG_TEXTURE_SRGB, &t, &err)
-              == CG_ERANGE
+    unsigned char png[33] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0,
+                             0,    13,  'I', 'H', 'D',  'R',  0,    1,    0, 0,
+                             0,    1,   0,   0,   8,    6,    0,    0,    0};
+    CHECK(cg_texture_load_memory(png, sizeof png, "big.png", CG_TEXTURE_SRGB, &t, &err) == CG_ERANGE
           && strstr(err.message, "big.png: a PNG of 65536 x 65536 pixels"));
     CHECK(cg_texture_load("/nonexistent/t.png", CG_TEXTURE_SRGB, &t, &err) == CG_EIO
           && strstr(err.message, "/nonexistent/t.png: cannot open"));

@@ -33,7 +33,8 @@ static cg_vec3 feature_point(check_rng *rng, const soup *s, int kind)
     if (kind == 1)
         return cg_vec3_add(a, cg_vec3_scale(cg_vec3_sub(b, a), x));
     double y = check_rng_unit(rng) * (1 - x);
-    return cg_vec3_add(a, cg_vec3_add(cg_vec3_scale(cg_vec3_sub(b, a), x), cg_vec3_scale(cg_vec3_sub(c, a), y)));
+    return cg_vec3_add(
+        a, cg_vec3_add(cg_vec3_scale(cg_vec3_sub(b, a), x), cg_vec3_scale(cg_vec3_sub(c, a), y)));
 }
 
 /* BVH nearest hit and occlusion against brute force on rays of every kind. */
@@ -79,7 +80,8 @@ static void check_against_brute(const char *name, const soup *s, long rays, chec
         }
         occluded_mismatches += occluded != expect;
     }
-    CHECK_MSG(mismatches == 0, "%s: %ld of %ld rays differ from brute force", name, mismatches, rays);
+    CHECK_MSG(mismatches == 0, "%s: %ld of %ld rays differ from brute force", name, mismatches,
+              rays);
     CHECK_MSG(occluded_mismatches == 0, "%s: %ld of %ld shadow rays differ", name,
               occluded_mismatches, rays);
     CHECK_MSG(hits > rays / 10, "%s: only %ld hits of %ld rays", name, hits, rays);
@@ -99,7 +101,8 @@ static void check_watertight(const char *name, const soup *s, cg_vec3 (*inside)(
     long misses = 0;
     for (long i = 0; i < rays; i++) {
         cg_vec3 o = inside(rng);
-        cg_vec3 d = i % 3 == 2 ? random_dir(rng) : cg_vec3_sub(feature_point(rng, s, (int)(i % 3)), o);
+        cg_vec3 d = i % 3 == 2 ? random_dir(rng)
+                               : cg_vec3_sub(feature_point(rng, s, (int)(i % 3)), o);
         if (!cg_bvh_intersect(bvh, o, d, 0, INFINITY, NULL))
             misses++;
         if (!cg_bvh_occluded(bvh, o, d, 0, INFINITY))
@@ -173,7 +176,8 @@ static void test_bvh(void)
     CHECK(cg_bvh_build(far.p, far.nv, far.idx, far.nt, &bvh) == CG_OK);
     long misses = 0;
     for (int i = 0; i < 100000 / RAY_SCALE; i++) {
-        cg_vec3 o = cg_vec3_add(cg_vec3_make(5e4, -3e4, 2e4), cg_vec3_scale(inside_sphere(&rng), 500));
+        cg_vec3 o = cg_vec3_add(cg_vec3_make(5e4, -3e4, 2e4),
+                                cg_vec3_scale(inside_sphere(&rng), 500));
         cg_vec3 d = cg_vec3_sub(feature_point(&rng, &far, i % 2), o);
         misses += !cg_bvh_intersect(bvh, o, d, 0, INFINITY, NULL);
     }
@@ -189,28 +193,42 @@ static void test_triangle_and_bad_input(void)
 {
     cg_vec3 a = {0, 0, 0}, b = {1, 0, 0}, c = {0, 1, 0};
     double t, u, v;
-    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t, &u, &v));
+    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY,
+                          &t, &u, &v));
     CHECK_NEAR(t, 1, 1e-7);
     CHECK_NEAR(u, 0.25, 1e-7);
     CHECK_NEAR(v, 0.25, 1e-7);
     /* Back face is hit too; t is in the ray's units. */
-    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, -2), cg_vec3_make(0, 0, 4), a, b, c, 0, INFINITY, &t, NULL, NULL));
+    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, -2), cg_vec3_make(0, 0, 4), a, b, c, 0, INFINITY,
+                          &t, NULL, NULL));
     CHECK_NEAR(t, 0.5, 1e-7);
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.75, 0.75, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.75, 0.75, 1), cg_vec3_make(0, 0, -1), a, b, c, 0,
+                           INFINITY, &t, &u, &v));
     /* Range: t_min exclusive, t_max inclusive. */
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 1, INFINITY, &t, &u, &v));
-    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, 1, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, 0.5, &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 1,
+                           INFINITY, &t, &u, &v));
+    CHECK(cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, 1, &t,
+                          &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, 0.5, &t,
+                           &u, &v));
     /* Parallel rays, degenerate triangles, NaN and zero directions: no hit. */
-    CHECK(!cg_ray_triangle(cg_vec3_make(-1, 0.25, 0), cg_vec3_make(1, 0, 0), a, b, c, 0, INFINITY, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0, 1), cg_vec3_make(0, 0, -1), a, b, b, 0, INFINITY, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.5, 0, 1), cg_vec3_make(0, 0, -1), a, b, cg_vec3_make(2, 0, 0), 0, INFINITY, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(NAN, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, 0), a, b, c, 0, INFINITY, &t, &u, &v));
-    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, cg_vec3_make(0, NAN, 0), 0, INFINITY, &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(-1, 0.25, 0), cg_vec3_make(1, 0, 0), a, b, c, 0, INFINITY,
+                           &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0, 1), cg_vec3_make(0, 0, -1), a, b, b, 0, INFINITY,
+                           &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.5, 0, 1), cg_vec3_make(0, 0, -1), a, b,
+                           cg_vec3_make(2, 0, 0), 0, INFINITY, &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(NAN, 0.25, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY,
+                           &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, 0), a, b, c, 0, INFINITY,
+                           &t, &u, &v));
+    CHECK(!cg_ray_triangle(cg_vec3_make(0.25, 0.25, 1), cg_vec3_make(0, 0, -1), a, b,
+                           cg_vec3_make(0, NAN, 0), 0, INFINITY, &t, &u, &v));
     /* Corners and edges count as inside. */
-    CHECK(cg_ray_triangle(cg_vec3_make(0, 0, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t, &u, &v));
-    CHECK(cg_ray_triangle(cg_vec3_make(0.5, 0.5, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t, &u, &v));
+    CHECK(cg_ray_triangle(cg_vec3_make(0, 0, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY, &t,
+                          &u, &v));
+    CHECK(cg_ray_triangle(cg_vec3_make(0.5, 0.5, 1), cg_vec3_make(0, 0, -1), a, b, c, 0, INFINITY,
+                          &t, &u, &v));
 
     /* BVH: empty, NaN vertices, bad indices. */
     cg_bvh *bvh;
@@ -224,10 +242,13 @@ static void test_triangle_and_bad_input(void)
     cg_bvh_get_stats(bvh, &st);
     CHECK_EQ_INT(st.triangles, 1);
     cg_bvh_hit h;
-    CHECK(cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, 0, -1), 0, INFINITY, &h));
+    CHECK(
+        cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, 0, -1), 0, INFINITY, &h));
     CHECK_EQ_INT(h.triangle, 0);
-    CHECK(!cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, NAN, -1), 0, INFINITY, &h));
-    CHECK(!cg_bvh_intersect(bvh, cg_vec3_make(INFINITY, 0.2, 1), cg_vec3_make(0, 0, -1), 0, INFINITY, &h));
+    CHECK(!cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, NAN, -1), 0, INFINITY,
+                            &h));
+    CHECK(!cg_bvh_intersect(bvh, cg_vec3_make(INFINITY, 0.2, 1), cg_vec3_make(0, 0, -1), 0,
+                            INFINITY, &h));
     cg_bvh_free(bvh);
     uint32_t bad[3] = {0, 1, 6};
     CHECK(cg_bvh_build(p, 6, bad, 1, &bvh) == CG_EINVAL);
@@ -239,7 +260,8 @@ static void test_triangle_and_bad_input(void)
     for (int i = 0; i < 3 * COPIES; i++)
         same[i] = p[i % 3];
     CHECK(cg_bvh_build(same, 3 * COPIES, NULL, COPIES, &bvh) == CG_OK);
-    CHECK(cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, 0, -1), 0, INFINITY, &h));
+    CHECK(
+        cg_bvh_intersect(bvh, cg_vec3_make(0.2, 0.2, 1), cg_vec3_make(0, 0, -1), 0, INFINITY, &h));
     CHECK_EQ_INT(h.triangle, 0);
     cg_bvh_get_stats(bvh, &st);
     CHECK(st.depth <= 64);
@@ -279,7 +301,8 @@ static void test_optics(void)
     /* Leaving glass below the critical angle uses the transmitted angle:
      * at 30 degrees, sin(theta_t) = 0.75. */
     double ct = sqrt(1 - 0.75 * 0.75);
-    CHECK_NEAR(cg_fresnel_schlick(cos(cg_radians(30)), 1.5, 1), 0.04 + 0.96 * pow(1 - ct, 5), 1e-12);
+    CHECK_NEAR(cg_fresnel_schlick(cos(cg_radians(30)), 1.5, 1), 0.04 + 0.96 * pow(1 - ct, 5),
+               1e-12);
     /* Invalid indices: no refraction, full reflection. */
     CHECK(!cg_refract(in, n, 1, 0, &t));
     CHECK(!cg_refract(in, n, NAN, 1, &t));
@@ -313,8 +336,7 @@ static int render_equal(cg_trace_scene *scene, const cg_camera *cam, cg_trace_op
 
 /* The classic scene, a camera at eye looking at its centre, and options
  * with `samples` samples per pixel. */
-static cg_trace_scene *classic_view(cg_vec3 eye, int samples, cg_camera *cam,
-                                    cg_trace_options *opt)
+static cg_trace_scene *classic_view(cg_vec3 eye, int samples, cg_camera *cam, cg_trace_options *opt)
 {
     cg_trace_scene *scene = NULL;
     CHECK(cg_trace_scene_classic(&scene) == CG_OK);
@@ -365,8 +387,9 @@ static void test_scene_threads(void)
         CHECK_MSG(same_pixels(first, again), "%d threads: the picture differs from one thread's",
                   counts[i]);
         CHECK_EQ_INT(stats.rays, reference.rays);
-        CHECK_MSG(log.calls == tiles && log.in_order, "%d threads: %d progress calls (in order: %d)",
-                  counts[i], log.calls, log.in_order);
+        CHECK_MSG(log.calls == tiles && log.in_order,
+                  "%d threads: %d progress calls (in order: %d)", counts[i], log.calls,
+                  log.in_order);
     }
     cg_image_free(first);
     cg_image_free(again);
@@ -380,7 +403,8 @@ static void test_scene(void)
     cg_trace_scene *scene = classic_view(cg_vec3_make(0, 2.5, 7), 3, &cam, &opt);
     if (!scene)
         return;
-    CHECK_MSG(render_equal(scene, &cam, opt, 45, 31), "classic scene differs between 1 and 3 threads");
+    CHECK_MSG(render_equal(scene, &cam, opt, 45, 31),
+              "classic scene differs between 1 and 3 threads");
     cg_trace_stats stats;
     cg_image *img;
     cg_image_create(&img, 40, 30, CG_PIXEL_RGBAF);
@@ -403,7 +427,8 @@ static void test_scene(void)
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(NAN, 0, 0), 1, NULL, &m) == CG_EINVAL);
     cg_mat4 singular = cg_xform3_scale(1, 0, 1, cg_vec3_make(0, 0, 0));
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, &singular, &m) == CG_EINVAL);
-    CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 0), &m) == CG_EINVAL);
+    CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 0), &m)
+          == CG_EINVAL);
     m.surface.transmittance = 1;
     m.surface.refractive_index = -1;
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &m) == CG_EINVAL);
@@ -490,7 +515,8 @@ static void test_index_one(void)
             glass.surface.ka = glass.surface.kd = glass.surface.ks = 0;
             glass.surface.transmittance = 1;
             glass.surface.refractive_index = k == 1 ? 1 : 0;
-            CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 1, 0), 1, NULL, &glass) == CG_OK);
+            CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 1, 0), 1, NULL, &glass)
+                  == CG_OK);
         }
         cg_image_create(&img[k], 40, 30, CG_PIXEL_RGBAF);
         cg_trace_options opt = cg_trace_options_default();
@@ -547,7 +573,7 @@ static void test_mesh_input(void)
     CHECK_NEAR(c.a, 1, 0);
     cg_rgbaf corner_px = cg_image_get(img, 0, 0);
     CHECK(corner_px.r == 0 && corner_px.a == 1); /* background: opaque black */
-    mesh->face_indices[9] = 7; /* out of range */
+    mesh->face_indices[9] = 7;                   /* out of range */
     CHECK(cg_trace_scene_add_mesh(scene, mesh, NULL, cg_radians(60), &m) == CG_EFORMAT);
     cg_mesh_free(mesh);
     cg_image_free(img);
@@ -563,7 +589,8 @@ static void test_shadow(void)
     CHECK(cg_trace_scene_create(&scene) == CG_OK);
     cg_trace_material m = cg_trace_material_default();
     m.surface.ks = 0;
-    CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &m) == CG_OK);
+    CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &m)
+          == CG_OK);
     CHECK(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 2, 0), 1, NULL, &m) == CG_OK);
     /* Light from (1, 1, 0): it travels along (-1, -1, 0). */
     cg_light light = cg_light_directional(cg_vec3_make(-1, -1, 0), cg_vec3_make(1, 1, 1));

@@ -41,7 +41,8 @@ static void compare(const char *name, cg_mesh *mesh, cg_vec3 direction, int orth
     long agree = 0, covered = 0;
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++) {
-            int a = cg_image_get_rgba8(raster, x, y).a > 0, b = cg_image_get_rgba8(traced, x, y).a > 0;
+            int a = cg_image_get_rgba8(raster, x, y).a > 0,
+                b = cg_image_get_rgba8(traced, x, y).a > 0;
             agree += a == b;
             covered += a;
         }

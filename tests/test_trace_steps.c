@@ -88,8 +88,10 @@ static void line_agrees(void)
     int octants[9] = {0};
     for (int trial = 0; trial < 3000; trial++) {
         /* Endpoints up to 20 pixels outside the image on each side. */
-        int x0 = (int)check_rng_int(&rng, -20, SIDE + 20), y0 = (int)check_rng_int(&rng, -20, SIDE + 20);
-        int x1 = (int)check_rng_int(&rng, -20, SIDE + 20), y1 = (int)check_rng_int(&rng, -20, SIDE + 20);
+        int x0 = (int)check_rng_int(&rng, -20, SIDE + 20),
+            y0 = (int)check_rng_int(&rng, -20, SIDE + 20);
+        int x1 = (int)check_rng_int(&rng, -20, SIDE + 20),
+            y1 = (int)check_rng_int(&rng, -20, SIDE + 20);
         if (trial % 10 == 0) /* diagonals, axes and points, where ties live */
             switch (trial / 10 % 4) {
             case 0: y1 = y0 + (x1 - x0); break;
@@ -102,8 +104,8 @@ static void line_agrees(void)
         CHECK(cg_line_steps(x0, y0, x1, y1, mark_step, m) == CG_OK);
         CHECK(cg_draw_line(image, x0, y0, x1, y1, white) == CG_OK);
         long dx = labs((long)x1 - x0), dy = labs((long)y1 - y0);
-        CHECK_MSG(compare(m, image, 1) == 0, "line (%d, %d)-(%d, %d): trace and cg_draw_line differ",
-                  x0, y0, x1, y1);
+        CHECK_MSG(compare(m, image, 1) == 0,
+                  "line (%d, %d)-(%d, %d): trace and cg_draw_line differ", x0, y0, x1, y1);
         CHECK_EQ_INT(m->listed, (dx > dy ? dx : dy) + 1);
         cg_image_free(image);
         free(m);
@@ -120,12 +122,15 @@ static void line_agrees(void)
             if (k == 0) {
                 CHECK(x0 == x1 && y0 == y1);
             } else {
-                double angle = atan2((double)y1 - y0, (double)x1 - x0) * 180 / 3.14159265358979323846;
+                double angle = atan2((double)y1 - y0, (double)x1 - x0) * 180
+                               / 3.14159265358979323846;
                 if (angle < 0)
                     angle += 360;
                 /* exact diagonals belong to the octant they open */
-                CHECK_MSG(angle >= 45.0 * (k - 1) - 1e-9 && angle < 45.0 * k - 1e-9 + (k == 8 ? 1e-6 : 0),
-                          "direction (%d, %d) at %g degrees is not in octant %d", x1 - x0, y1 - y0, angle, k);
+                CHECK_MSG(angle >= 45.0 * (k - 1) - 1e-9
+                              && angle < 45.0 * k - 1e-9 + (k == 8 ? 1e-6 : 0),
+                          "direction (%d, %d) at %g degrees is not in octant %d", x1 - x0, y1 - y0,
+                          angle, k);
             }
         }
         /* f and the move agree: f <= 0 selects E. */
@@ -181,7 +186,10 @@ static void dda_definition(void)
     }
 }
 
-typedef struct wu_check { const int *line; cg_image *image; } wu_check;
+typedef struct wu_check {
+    const int *line;
+    cg_image *image;
+} wu_check;
 
 static int wu_column_check(void *user, const cg_step *s)
 {
@@ -242,15 +250,16 @@ static void circle_agrees(void)
     check_rng rng = {0xc1c1e};
     for (int trial = 0; trial < 400; trial++) {
         int r = trial < 60 ? trial : (int)check_rng_int(&rng, 0, 70);
-        int cx = (int)check_rng_int(&rng, -10, SIDE + 10), cy = (int)check_rng_int(&rng, -10, SIDE + 10);
+        int cx = (int)check_rng_int(&rng, -10, SIDE + 10),
+            cy = (int)check_rng_int(&rng, -10, SIDE + 10);
         if (trial < 60)
             cx = cy = SIDE / 2;
         marks *m = new_marks(NULL);
         cg_image *image = blank();
         CHECK(cg_circle_steps(cx, cy, r, mark_step, m) == CG_OK);
         CHECK(cg_draw_circle(image, cx, cy, r, white) == CG_OK);
-        CHECK_MSG(compare(m, image, 1) == 0, "circle r %d at (%d, %d): trace and cg_draw_circle differ",
-                  r, cx, cy);
+        CHECK_MSG(compare(m, image, 1) == 0,
+                  "circle r %d at (%d, %d): trace and cg_draw_circle differ", r, cx, cy);
         cg_image_free(image);
         free(m);
     }
@@ -281,15 +290,18 @@ static void ellipse_agrees(void)
             ry = (int)check_rng_int(&rng, 0, 3);
         if (rx == ry)
             continue;
-        int cx = (int)check_rng_int(&rng, -10, SIDE + 10), cy = (int)check_rng_int(&rng, -10, SIDE + 10);
+        int cx = (int)check_rng_int(&rng, -10, SIDE + 10),
+            cy = (int)check_rng_int(&rng, -10, SIDE + 10);
         if (trial < 200)
             cx = cy = SIDE / 2;
         marks *m = new_marks(NULL);
         cg_image *image = blank();
         CHECK(cg_ellipse_steps(cx, cy, rx, ry, mark_step, m) == CG_OK);
         CHECK(cg_draw_ellipse(image, cx, cy, rx, ry, white) == CG_OK);
-        CHECK_MSG(compare(m, image, 0) == 0, "ellipse %d x %d at (%d, %d): trace and "
-                  "cg_draw_ellipse differ", rx, ry, cx, cy);
+        CHECK_MSG(compare(m, image, 0) == 0,
+                  "ellipse %d x %d at (%d, %d): trace and "
+                  "cg_draw_ellipse differ",
+                  rx, ry, cx, cy);
         CHECK(cg_ellipse_steps(cx, cy, rx, ry, ellipse_moves, NULL) == CG_OK);
         cg_image_free(image);
         free(m);
@@ -320,7 +332,8 @@ static void casteljau_agrees(void)
         cg_bezier_split(control, n, t, left, right);
         const cg_step *top = cg_step_log_get(log, (size_t)n - 1);
         const cg_step_field *point = cg_step_find(top, "Q");
-        CHECK(point && point->kind == CG_STEP_POINT && point->point.x == q.x && point->point.y == q.y);
+        CHECK(point && point->kind == CG_STEP_POINT && point->point.x == q.x
+              && point->point.y == q.y);
         const cg_step *split = cg_step_log_get(log, (size_t)n);
         const cg_step_field *l = cg_step_find(split, "left"), *r = cg_step_find(split, "right");
         CHECK(l && r && l->point_count == (size_t)n && r->point_count == (size_t)n);
@@ -329,7 +342,8 @@ static void casteljau_agrees(void)
                   && memcmp(&r->points[i], &right[i], sizeof right[i]) == 0);
         /* each level has one point fewer, and is the interpolation of the one before */
         for (int level = 1; level < n; level++) {
-            const cg_step_field *prev = cg_step_find(cg_step_log_get(log, (size_t)level - 1), "points");
+            const cg_step_field *prev = cg_step_find(cg_step_log_get(log, (size_t)level - 1),
+                                                     "points");
             const cg_step_field *cur = cg_step_find(cg_step_log_get(log, (size_t)level), "points");
             CHECK(cur->point_count + 1 == prev->point_count);
             for (size_t i = 0; i < cur->point_count; i++) {
@@ -376,7 +390,10 @@ static void cubic_agrees(void)
     }
 }
 
-typedef struct point_list { cg_vec2 p[4096]; int n; } point_list;
+typedef struct point_list {
+    cg_vec2 p[4096];
+    int n;
+} point_list;
 
 static cg_status collect_point(void *user, cg_vec2 p)
 {
@@ -444,20 +461,25 @@ static void pipeline_agrees(void)
     check_rng rng = {0x919e};
     int inside = 0;
     for (int trial = 0; trial < 1000; trial++) {
-        cg_vec3 eye = {check_rng_range(&rng, -10, 10), check_rng_range(&rng, -10, 10), check_rng_range(&rng, 2, 10)};
-        cg_vec3 target = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1)};
-        cg_vec3 point = {check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3)};
+        cg_vec3 eye = {check_rng_range(&rng, -10, 10), check_rng_range(&rng, -10, 10),
+                       check_rng_range(&rng, 2, 10)};
+        cg_vec3 target = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1),
+                          check_rng_range(&rng, -1, 1)};
+        cg_vec3 point = {check_rng_range(&rng, -3, 3), check_rng_range(&rng, -3, 3),
+                         check_rng_range(&rng, -3, 3)};
         cg_mat4 model = cg_xform3_rotate_y(check_rng_range(&rng, 0, 6)), view, projection;
         CHECK(cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) == CG_OK);
-        CHECK(cg_proj_perspective(check_rng_range(&rng, 0.3, 2), 4.0 / 3, 0.1, 100, &projection) == CG_OK);
+        CHECK(cg_proj_perspective(check_rng_range(&rng, 0.3, 2), 4.0 / 3, 0.1, 100, &projection)
+              == CG_OK);
         cg_step_log *log;
         cg_step_log_create(&log);
-        CHECK(cg_pipeline_steps(model, view, projection, 640, 480, point, cg_step_log_record, log) == CG_OK);
+        CHECK(cg_pipeline_steps(model, view, projection, 640, 480, point, cg_step_log_record, log)
+              == CG_OK);
         const cg_step *window = last_step_of(log, "point");
         int visible;
-        cg_vec3 expected = cg_project_point(cg_mat4_mul(cg_viewport(640, 480),
-                                                        cg_mat4_mul(projection, cg_mat4_mul(view, model))),
-                                            point, &visible);
+        cg_vec3 expected = cg_project_point(
+            cg_mat4_mul(cg_viewport(640, 480), cg_mat4_mul(projection, cg_mat4_mul(view, model))),
+            point, &visible);
         const cg_step_field *space = cg_step_find(window, "space");
         if (!visible) {
             CHECK(strcmp(space->text, "ndc") == 0);
@@ -470,7 +492,8 @@ static void pipeline_agrees(void)
             CHECK_NEAR(c->reals[2], expected.z, 1e-9 * (1 + fabs(expected.z)));
             inside += window->pixel_count == 1;
             if (window->pixel_count == 1)
-                CHECK(window->pixels[0] == (int)floor(expected.x) && window->pixels[1] == (int)floor(expected.y));
+                CHECK(window->pixels[0] == (int)floor(expected.x)
+                      && window->pixels[1] == (int)floor(expected.y));
         }
         /* the composite is the product of its factors */
         const cg_step *composite = cg_step_log_get(log, 3);
@@ -498,7 +521,8 @@ static void color_agrees(void)
             CHECK(cg_rgb_to_hsv_steps(rgb, lightness, cg_step_log_record, log) == CG_OK);
             const cg_step_field *v = cg_step_find(last_step_of(log, "result"), "value");
             cg_vec3 e = lightness ? cg_rgb_to_hsl(rgb) : cg_rgb_to_hsv(rgb);
-            CHECK_MSG(v && v->real_count == 3 && v->reals[0] == e.x && v->reals[1] == e.y && v->reals[2] == e.z,
+            CHECK_MSG(v && v->real_count == 3 && v->reals[0] == e.x && v->reals[1] == e.y
+                          && v->reals[2] == e.z,
                       "%s of (%g, %g, %g): the trace's result differs", lightness ? "HSL" : "HSV",
                       rgb.x, rgb.y, rgb.z);
             cg_step_log_free(log);
@@ -509,7 +533,8 @@ static void color_agrees(void)
 static cg_vec3 reals3(const cg_step *s, const char *name)
 {
     const cg_step_field *f = cg_step_find(s, name);
-    return f && f->real_count == 3 ? cg_vec3_make(f->reals[0], f->reals[1], f->reals[2]) : cg_vec3_make(NAN, NAN, NAN);
+    return f && f->real_count == 3 ? cg_vec3_make(f->reals[0], f->reals[1], f->reals[2])
+                                   : cg_vec3_make(NAN, NAN, NAN);
 }
 
 static void light_agrees(void)
@@ -518,22 +543,29 @@ static void light_agrees(void)
     for (int trial = 0; trial < 1000; trial++) {
         cg_light lights[4];
         lights[0] = cg_light_ambient(cg_vec3_make(0.1, 0.2, 0.3));
-        lights[1] = cg_light_point(cg_vec3_make(check_rng_range(&rng, -5, 5), check_rng_range(&rng, -5, 5),
-                                                check_rng_range(&rng, -5, 5)), cg_vec3_make(1, 0.9, 0.8));
+        lights[1] = cg_light_point(cg_vec3_make(check_rng_range(&rng, -5, 5),
+                                                check_rng_range(&rng, -5, 5),
+                                                check_rng_range(&rng, -5, 5)),
+                                   cg_vec3_make(1, 0.9, 0.8));
         cg_light_set_attenuation(&lights[1], 1, 0.1, 0.05);
-        lights[2] = cg_light_directional(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), -1),
-                                         cg_vec3_make(0.5, 0.5, 0.5));
-        lights[3] = cg_light_spot(cg_vec3_make(0, 0, 4), cg_vec3_make(check_rng_range(&rng, -0.5, 0.5), 0, -1),
-                                  0.6, 2, cg_vec3_make(1, 1, 1));
+        lights[2] = cg_light_directional(
+            cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), -1),
+            cg_vec3_make(0.5, 0.5, 0.5));
+        lights[3] = cg_light_spot(cg_vec3_make(0, 0, 4),
+                                  cg_vec3_make(check_rng_range(&rng, -0.5, 0.5), 0, -1), 0.6, 2,
+                                  cg_vec3_make(1, 1, 1));
         cg_material material = cg_material_make(cg_vec3_make(0.8, 0.4, 0.2), 0.2, 0.7, 0.5,
                                                 check_rng_range(&rng, 1, 60));
         material.specular = trial % 2 ? CG_SPECULAR_BLINN : CG_SPECULAR_PHONG;
-        cg_vec3 normal = cg_vec3_normalize(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
-        cg_vec3 view = cg_vec3_normalize(cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
+        cg_vec3 normal = cg_vec3_normalize(
+            cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
+        cg_vec3 view = cg_vec3_normalize(
+            cg_vec3_make(check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 1));
         cg_vec3 point = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), 0};
         cg_step_log *log;
         cg_step_log_create(&log);
-        CHECK(cg_light_steps(point, normal, view, &material, lights, 4, cg_step_log_record, log) == CG_OK);
+        CHECK(cg_light_steps(point, normal, view, &material, lights, 4, cg_step_log_record, log)
+              == CG_OK);
         cg_shade_terms all = cg_light_shade_terms(point, normal, view, &material, lights, 4, NULL);
         cg_vec3 diffuse = {0, 0, 0};
         for (size_t i = 0; i < 4; i++) {
@@ -560,8 +592,9 @@ static void light_agrees(void)
         cg_step_log_free(log);
     }
     cg_material bad = cg_material_make(cg_vec3_make(1, 1, 1), -1, 0, 0, 1);
-    CHECK(cg_light_steps(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 1), cg_vec3_make(0, 0, 1), &bad, NULL, 0,
-                         stop_after_three, NULL) == CG_EINVAL);
+    CHECK(cg_light_steps(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 1), cg_vec3_make(0, 0, 1), &bad,
+                         NULL, 0, stop_after_three, NULL)
+          == CG_EINVAL);
 }
 
 static void vanishing_agrees(void)
@@ -569,8 +602,10 @@ static void vanishing_agrees(void)
     check_rng rng = {0x7a};
     int found = 0;
     for (int trial = 0; trial < 1000; trial++) {
-        cg_vec3 eye = {check_rng_range(&rng, -5, 5), check_rng_range(&rng, -5, 5), check_rng_range(&rng, 3, 8)};
-        cg_vec3 d = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1)};
+        cg_vec3 eye = {check_rng_range(&rng, -5, 5), check_rng_range(&rng, -5, 5),
+                       check_rng_range(&rng, 3, 8)};
+        cg_vec3 d = {check_rng_range(&rng, -1, 1), check_rng_range(&rng, -1, 1),
+                     check_rng_range(&rng, -1, 1)};
         cg_mat4 view, projection;
         if (cg_view_look_at(eye, cg_vec3_make(0, 0, 0), cg_vec3_make(0, 1, 0), &view) != CG_OK
             || !(cg_vec3_length(d) > 0.1))
@@ -578,14 +613,17 @@ static void vanishing_agrees(void)
         cg_proj_perspective(1, 4.0 / 3, 0.1, 100, &projection);
         cg_step_log *log;
         cg_step_log_create(&log);
-        CHECK(cg_vanishing_point_steps(view, projection, 640, 480, d, cg_step_log_record, log) == CG_OK);
+        CHECK(cg_vanishing_point_steps(view, projection, 640, 480, d, cg_step_log_record, log)
+              == CG_OK);
         const cg_step *last = last_step_of(log, "point");
         if (strcmp(cg_step_find(last, "space")->text, "window") == 0) {
             /* the images of points far along any line of direction d approach it */
-            cg_vec3 base = {check_rng_range(&rng, -2, 2), check_rng_range(&rng, -2, 2), check_rng_range(&rng, -2, 2)};
+            cg_vec3 base = {check_rng_range(&rng, -2, 2), check_rng_range(&rng, -2, 2),
+                            check_rng_range(&rng, -2, 2)};
             int visible;
             cg_mat4 whole = cg_mat4_mul(cg_viewport(640, 480), cg_mat4_mul(projection, view));
-            cg_vec3 far = cg_project_point(whole, cg_vec3_add(base, cg_vec3_scale(d, 1e7)), &visible);
+            cg_vec3 far = cg_project_point(whole, cg_vec3_add(base, cg_vec3_scale(d, 1e7)),
+                                           &visible);
             const double *vp = cg_step_find(last, "coordinates")->reals;
             CHECK(visible);
             CHECK_NEAR(far.x, vp[0], 1e-2 * (1 + fabs(vp[0])));
@@ -629,7 +667,9 @@ static void backface_agrees(void)
         cg_camera camera = cg_renderer_camera(renderer);
         size_t culled = 0;
         CHECK(cg_backface_steps(mesh, options.model, &camera, count_culled, &culled) == CG_OK);
-        CHECK_MSG(culled == stats.culled, "trial %d: the trace culls %zu triangles, the renderer %zu (rejected %zu, clipped %zu, of %zu)",
+        CHECK_MSG(culled == stats.culled,
+                  "trial %d: the trace culls %zu triangles, the renderer %zu (rejected %zu, "
+                  "clipped %zu, of %zu)",
                   trial, culled, stats.culled, stats.rejected, stats.clipped, stats.triangles);
         cg_renderer_free(renderer);
     }
@@ -638,7 +678,11 @@ static void backface_agrees(void)
         cg_mesh_free(meshes[i]);
 }
 
-typedef struct zbuffer_view { double margin; int covered; double depth; } zbuffer_view;
+typedef struct zbuffer_view {
+    double margin;
+    int covered;
+    double depth;
+} zbuffer_view;
 
 /* The result's depth, and how clearly the pixel centre is inside the
  * winning triangle (or outside every triangle when none won). */
@@ -680,17 +724,21 @@ static void zbuffer_agrees(void)
         const float *depth = cg_renderer_depth(renderer);
         cg_camera camera = cg_renderer_camera(renderer);
         for (int k = 0; k < 40; k++) {
-            int x = (int)check_rng_int(&rng, 0, width - 1), y = (int)check_rng_int(&rng, 0, height - 1);
+            int x = (int)check_rng_int(&rng, 0, width - 1),
+                y = (int)check_rng_int(&rng, 0, height - 1);
             zbuffer_view z = {INFINITY, 0, INFINITY};
             CHECK(cg_zbuffer_pixel_steps(mesh, options.model, &camera, width, height, x, y, 1,
-                                         read_zbuffer, &z) == CG_OK);
+                                         read_zbuffer, &z)
+                  == CG_OK);
             if (z.margin < 0.02) /* the centre is near an edge: snapping decides */
                 continue;
             double expected = depth[(size_t)y * width + x];
             compared++;
             hits += z.covered;
-            CHECK_MSG(z.covered == isfinite(expected), "trial %d pixel (%d, %d): trace %s, renderer %s",
-                      trial, x, y, z.covered ? "covered" : "background", isfinite(expected) ? "covered" : "background");
+            CHECK_MSG(z.covered == isfinite(expected),
+                      "trial %d pixel (%d, %d): trace %s, renderer %s", trial, x, y,
+                      z.covered ? "covered" : "background",
+                      isfinite(expected) ? "covered" : "background");
             if (z.covered && isfinite(expected))
                 CHECK_NEAR(z.depth, expected, 1e-3); /* the renderer snaps vertices to sub-pixels */
         }
@@ -702,7 +750,10 @@ static void zbuffer_agrees(void)
     cg_mesh_free(meshes[1]);
 }
 
-typedef struct halfedge_list { uint32_t h[256]; size_t n; } halfedge_list;
+typedef struct halfedge_list {
+    uint32_t h[256];
+    size_t n;
+} halfedge_list;
 
 static int collect_halfedge(void *user, const cg_step *s)
 {
@@ -734,8 +785,10 @@ static void hemesh_agrees(void)
             size_t n = cg_hemesh_vertex_outgoing(m, v, 1, expected, 256);
             CHECK(l.n == n && memcmp(l.h, expected, n * sizeof *expected) == 0);
         }
-        CHECK(cg_hemesh_face_loop_steps(m, (uint32_t)m->face_count, collect_halfedge, NULL) == CG_EINVAL);
-        CHECK(cg_hemesh_one_ring_steps(m, (uint32_t)m->vertex_count, collect_halfedge, NULL) == CG_EINVAL);
+        CHECK(cg_hemesh_face_loop_steps(m, (uint32_t)m->face_count, collect_halfedge, NULL)
+              == CG_EINVAL);
+        CHECK(cg_hemesh_one_ring_steps(m, (uint32_t)m->vertex_count, collect_halfedge, NULL)
+              == CG_EINVAL);
         cg_hemesh_free(m);
         cg_mesh_free(shapes[i]);
     }
@@ -753,7 +806,8 @@ static void scanline_agrees(void)
         int sizes[2] = {(int)check_rng_int(&rng, 3, 9), (int)check_rng_int(&rng, 3, 9)};
         int contours = trial % 3 == 0 ? 2 : 1, total = sizes[0] + (contours == 2 ? sizes[1] : 0);
         for (int i = 0; i < total; i++) {
-            double x = check_rng_range(&rng, -15, SIDE + 15), y = check_rng_range(&rng, -15, SIDE + 15);
+            double x = check_rng_range(&rng, -15, SIDE + 15),
+                   y = check_rng_range(&rng, -15, SIDE + 15);
             if (trial % 4 == 1) { /* on the half-grid: centres and pixel edges */
                 x = floor(x * 2) / 2;
                 y = floor(y * 2) / 2;
@@ -765,7 +819,8 @@ static void scanline_agrees(void)
         cg_image *image = blank();
         CHECK(cg_scanline_fill_steps(points, sizes, contours, rule, mark_step, m) == CG_OK);
         CHECK(cg_fill_polygon(image, points, sizes, contours, rule, white) == CG_OK);
-        CHECK_MSG(compare(m, image, 1) == 0, "scanline trial %d: trace and cg_fill_polygon differ", trial);
+        CHECK_MSG(compare(m, image, 1) == 0, "scanline trial %d: trace and cg_fill_polygon differ",
+                  trial);
         cg_image_free(image);
         free(m);
     }
@@ -823,8 +878,8 @@ static void flood_agrees(void)
             for (int i = 0; i < SIDE; i++)
                 if (cg_image_get_rgba8(painted, i, j).g == 200)
                     cg_image_set_rgba8(changed, i, j, white);
-        CHECK_MSG(compare(m, changed, 1) == 0, "fill trial %d from (%d, %d): trace and library differ",
-                  trial, x, y);
+        CHECK_MSG(compare(m, changed, 1) == 0,
+                  "fill trial %d from (%d, %d): trace and library differ", trial, x, y);
         CHECK_EQ_INT(m->listed, filled);
         cg_image_free(image);
         cg_image_free(painted);
@@ -864,13 +919,15 @@ static void liang_barsky_agrees(void)
         CHECK(outcome && strcmp(outcome->text, accepted ? "accept" : "reject") == 0);
         /* the trace's own t_enter and t_exit give the same part */
         const cg_step *boundary = cg_step_log_get(log, count - 2);
-        double t0 = cg_step_find(boundary, "t_enter")->real, t1 = cg_step_find(boundary, "t_exit")->real;
+        double t0 = cg_step_find(boundary, "t_enter")->real,
+               t1 = cg_step_find(boundary, "t_exit")->real;
         int traced_accept = t0 <= t1 && !strstr(cg_step_find(boundary, "kind")->text, "reject");
         CHECK_EQ_INT(traced_accept, accepted);
         if (accepted) {
             accepted_count++;
             const cg_step_field *from = cg_step_find(last, "from"), *to = cg_step_find(last, "to");
-            CHECK(from->point.x == c0.x && from->point.y == c0.y && to->point.x == c1.x && to->point.y == c1.y);
+            CHECK(from->point.x == c0.x && from->point.y == c0.y && to->point.x == c1.x
+                  && to->point.y == c1.y);
             cg_vec2 d = cg_vec2_sub(p1, p0);
             CHECK_NEAR(p0.x + t0 * d.x, c0.x, 1e-9);
             CHECK_NEAR(p0.y + t0 * d.y, c0.y, 1e-9);
@@ -882,7 +939,8 @@ static void liang_barsky_agrees(void)
         /* p and q as the notes define them */
         const cg_step *left = cg_step_log_get(log, 0);
         CHECK(strcmp(cg_step_find(left, "boundary")->text, "left") == 0);
-        CHECK(cg_step_find(left, "p")->real == -(p1.x - p0.x) && cg_step_find(left, "q")->real == p0.x - w.xmin);
+        CHECK(cg_step_find(left, "p")->real == -(p1.x - p0.x)
+              && cg_step_find(left, "q")->real == p0.x - w.xmin);
         cg_step_log_free(log);
     }
     CHECK(accepted_count > 500 && rejected_count > 500);
@@ -913,7 +971,8 @@ static void cohen_sutherland_agrees(void)
             const cg_step *s = cg_step_log_get(log, i);
             unsigned code = cg_clip_rcode(w, cg_step_find(s, "p0")->point);
             const char *text = cg_step_find(s, "code0")->text;
-            CHECK(((code & CG_RCODE_TOP) != 0) == (text[0] == '1') && ((code & CG_RCODE_LEFT) != 0) == (text[3] == '1'));
+            CHECK(((code & CG_RCODE_TOP) != 0) == (text[0] == '1')
+                  && ((code & CG_RCODE_LEFT) != 0) == (text[3] == '1'));
         }
         cg_step_log_free(log);
     }
@@ -921,7 +980,11 @@ static void cohen_sutherland_agrees(void)
 
 /* The last "output" list of a Sutherland-Hodgman trace (the lists step of
  * the last clip edge). */
-typedef struct last_list { cg_vec2 p[1024]; size_t n; int seen; } last_list;
+typedef struct last_list {
+    cg_vec2 p[1024];
+    size_t n;
+    int seen;
+} last_list;
 
 static int keep_lists(void *user, const cg_step *s)
 {
@@ -960,20 +1023,24 @@ static void sutherland_hodgman_agrees(void)
             subject[0] = window[0];
         cg_vec2 *result = NULL;
         size_t count = 0;
-        cg_status a = cg_clip_sutherland_hodgman(subject, (size_t)n, window, (size_t)m, &result, &count);
+        cg_status a = cg_clip_sutherland_hodgman(subject, (size_t)n, window, (size_t)m, &result,
+                                                 &count);
         memset(&list, 0, sizeof list);
-        cg_status b = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m, keep_lists, &list);
+        cg_status b = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m, keep_lists,
+                                                  &list);
         CHECK(a == b);
         if (a == CG_OK) {
             CHECK(list.seen >= 1);
-            CHECK_MSG(list.n == count && (count == 0 || memcmp(list.p, result, count * sizeof *result) == 0),
-                      "trial %d: the trace's last list (%zu points) is not the library's (%zu)", trial,
-                      list.n, count);
+            CHECK_MSG(list.n == count
+                          && (count == 0 || memcmp(list.p, result, count * sizeof *result) == 0),
+                      "trial %d: the trace's last list (%zu points) is not the library's (%zu)",
+                      trial, list.n, count);
         }
         free(result);
     }
     /* A non-convex window is refused as by the library. */
-    cg_vec2 dart[4] = {{0, 0}, {10, 0}, {2, 2}, {0, 10}}, square[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    cg_vec2 dart[4] = {{0, 0}, {10, 0}, {2, 2}, {0, 10}},
+            square[4] = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
     CHECK(cg_sutherland_hodgman_steps(square, 4, dart, 4, keep_lists, &list) == CG_EINVAL);
 }
 
@@ -1003,8 +1070,9 @@ static void weiler_atherton_agrees(void)
     for (int trial = 0; trial < 800; trial++) {
         cg_vec2 subject[10], window[10];
         int n = random_star(&rng, cg_vec2_make(0, 0), 10, subject);
-        int m = random_star(&rng, cg_vec2_make(check_rng_range(&rng, -8, 8), check_rng_range(&rng, -8, 8)),
-                            check_rng_range(&rng, 3, 14), window);
+        int m = random_star(
+            &rng, cg_vec2_make(check_rng_range(&rng, -8, 8), check_rng_range(&rng, -8, 8)),
+            check_rng_range(&rng, 3, 14), window);
         if (trial % 2) /* clockwise input too */
             for (int i = 0; i < n / 2; i++) {
                 cg_vec2 t = subject[i];
@@ -1015,12 +1083,15 @@ static void weiler_atherton_agrees(void)
         CHECK(cg_clip_weiler_atherton(subject, (size_t)n, window, (size_t)m, &result) == CG_OK);
         cg_step_log *log;
         cg_step_log_create(&log);
-        CHECK(cg_weiler_atherton_steps(subject, (size_t)n, window, (size_t)m, cg_step_log_record, log) == CG_OK);
+        CHECK(
+            cg_weiler_atherton_steps(subject, (size_t)n, window, (size_t)m, cg_step_log_record, log)
+            == CG_OK);
         /* the loops kept are the library's rings, and the result steps list them */
         size_t loops = 0, results = 0, rings_found = 0;
         for (size_t i = 0; i < cg_step_log_count(log); i++) {
             const cg_step *st = cg_step_log_get(log, i);
-            if (st->phase && strcmp(st->phase, "loops") == 0 && strcmp(cg_step_find(st, "kept")->text, "yes") == 0) {
+            if (st->phase && strcmp(st->phase, "loops") == 0
+                && strcmp(cg_step_find(st, "kept")->text, "yes") == 0) {
                 loops++;
                 const cg_step_field *ring = cg_step_find(st, "ring");
                 for (size_t r = 0; r < result.ring_count; r++)
@@ -1031,11 +1102,13 @@ static void weiler_atherton_agrees(void)
             if (st->phase && strcmp(st->phase, "result") == 0) {
                 const cg_step_field *ring = cg_step_find(st, "ring");
                 CHECK(results < result.ring_count
-                      && same_ring(ring->points, ring->point_count, result.points + result.ring_start[results],
+                      && same_ring(ring->points, ring->point_count,
+                                   result.points + result.ring_start[results],
                                    result.ring_start[results + 1] - result.ring_start[results]));
                 results++;
             }
-            if (st->phase && strcmp(st->phase, "crossings") == 0 && cg_step_find(st, "crossing")->text[1] == '0')
+            if (st->phase && strcmp(st->phase, "crossings") == 0
+                && cg_step_find(st, "crossing")->text[1] == '0')
                 with_crossings++;
         }
         CHECK_EQ_INT(results, result.ring_count);
@@ -1085,10 +1158,12 @@ static void frustum_agrees(void)
         size_t count = 0;
         CHECK(cg_clip_polygon_planes(polygon, (size_t)n, planes, 6, &result, &count) == CG_OK);
         last[0] = -1;
-        CHECK(cg_clip_planes_steps(polygon, (size_t)n, planes, 6, NULL, keep_last_output3, last) == CG_OK);
+        CHECK(cg_clip_planes_steps(polygon, (size_t)n, planes, 6, NULL, keep_last_output3, last)
+              == CG_OK);
         CHECK_EQ_INT(last[0], 3 * (double)count);
         for (size_t i = 0; i < count && last[0] == 3 * (double)count; i++)
-            CHECK(last[1 + 3 * i] == result[i].x && last[2 + 3 * i] == result[i].y && last[3 + 3 * i] == result[i].z);
+            CHECK(last[1 + 3 * i] == result[i].x && last[2 + 3 * i] == result[i].y
+                  && last[3 + 3 * i] == result[i].z);
         free(result);
     }
 }

@@ -76,7 +76,8 @@ static void test_2d_random_invariants(void)
         CHECK_NEAR(cg_vec2_cross(cg_vec2_normalize(d), cg_vec2_sub(mid, c)), 0, 1e-10);
         CHECK_NEAR(cg_vec2_dot(d, cg_vec2_sub(rp2, p)), 0, 1e-10);
         /* Inverse of a composite undoes it. */
-        cg_mat3 steps[4] = {rot, ref, cg_xform2_scale(2.5, 0.25, q.x, q.y), cg_xform2_shear(0.3, -0.7)};
+        cg_mat3 steps[4] = {rot, ref, cg_xform2_scale(2.5, 0.25, q.x, q.y),
+                            cg_xform2_shear(0.3, -0.7)};
         cg_mat3 all = cg_mat3_compose(steps, 4), inv;
         CHECK_EQ_INT(cg_mat3_inverse(all, &inv), CG_OK);
         cg_vec2 back = cg_mat3_transform_point(inv, cg_mat3_transform_point(all, p));
@@ -87,29 +88,34 @@ static void test_2d_random_invariants(void)
 
 static void test_3d(void)
 {
-    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_x(CG_PI / 2), cg_vec3_make(0, 1, 0)), 0, 0, 1,
-               1e-15, "rotate x: y -> z");
-    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_y(CG_PI / 2), cg_vec3_make(0, 0, 1)), 1, 0, 0,
-               1e-15, "rotate y: z -> x");
-    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_z(CG_PI / 2), cg_vec3_make(1, 0, 0)), 0, 1, 0,
-               1e-15, "rotate z: x -> y");
+    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_x(CG_PI / 2), cg_vec3_make(0, 1, 0)), 0, 0,
+               1, 1e-15, "rotate x: y -> z");
+    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_y(CG_PI / 2), cg_vec3_make(0, 0, 1)), 1, 0,
+               0, 1e-15, "rotate y: z -> x");
+    check_vec3(cg_mat4_transform_point(cg_xform3_rotate_z(CG_PI / 2), cg_vec3_make(1, 0, 0)), 0, 1,
+               0, 1e-15, "rotate z: x -> y");
     cg_mat4 m;
     /* 120 degrees about (1,1,1) cycles the axes: x -> y -> z -> x. */
-    CHECK_EQ_INT(cg_xform3_rotate_axis(cg_vec3_make(1, 1, 1), 2 * CG_PI / 3, cg_vec3_make(0, 0, 0), &m),
-                 CG_OK);
+    CHECK_EQ_INT(
+        cg_xform3_rotate_axis(cg_vec3_make(1, 1, 1), 2 * CG_PI / 3, cg_vec3_make(0, 0, 0), &m),
+        CG_OK);
     check_vec3(cg_mat4_transform_point(m, cg_vec3_make(1, 0, 0)), 0, 1, 0, 1e-15, "axis (1,1,1)");
     /* About the vertical axis through (1, 0, 0): (2, 5, 0) -> (1, 5, -1) for +90 deg. */
-    CHECK_EQ_INT(cg_xform3_rotate_axis(cg_vec3_make(0, 2, 0), CG_PI / 2, cg_vec3_make(1, 0, 0), &m), CG_OK);
-    check_vec3(cg_mat4_transform_point(m, cg_vec3_make(2, 5, 0)), 1, 5, -1, 1e-15, "axis through point");
-    CHECK_EQ_INT(cg_xform3_rotate_axis(cg_vec3_make(0, 0, 0), 1, cg_vec3_make(0, 0, 0), &m), CG_EINVAL);
+    CHECK_EQ_INT(cg_xform3_rotate_axis(cg_vec3_make(0, 2, 0), CG_PI / 2, cg_vec3_make(1, 0, 0), &m),
+                 CG_OK);
+    check_vec3(cg_mat4_transform_point(m, cg_vec3_make(2, 5, 0)), 1, 5, -1, 1e-15,
+               "axis through point");
+    CHECK_EQ_INT(cg_xform3_rotate_axis(cg_vec3_make(0, 0, 0), 1, cg_vec3_make(0, 0, 0), &m),
+                 CG_EINVAL);
     /* Reflection about the plane z = 2. */
     CHECK_EQ_INT(cg_xform3_reflect(cg_vec3_make(0, 0, 2), cg_vec3_make(0, 0, 5), &m), CG_OK);
     check_vec3(cg_mat4_transform_point(m, cg_vec3_make(1, 2, 3)), 1, 2, 1, 1e-15, "reflect z=2");
     CHECK_EQ_INT(cg_xform3_reflect(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 0, 0), &m), CG_EINVAL);
-    check_vec3(cg_mat4_transform_point(cg_xform3_scale(2, 3, 4, cg_vec3_make(1, 1, 1)), cg_vec3_make(2, 2, 2)),
+    check_vec3(cg_mat4_transform_point(cg_xform3_scale(2, 3, 4, cg_vec3_make(1, 1, 1)),
+                                       cg_vec3_make(2, 2, 2)),
                3, 4, 5, 0, "scale about point");
-    check_vec3(cg_mat4_transform_point(cg_xform3_shear(1, 0, 0, 0, 0, 2), cg_vec3_make(1, 1, 1)), 2, 1, 3, 0,
-               "shear");
+    check_vec3(cg_mat4_transform_point(cg_xform3_shear(1, 0, 0, 0, 0, 2), cg_vec3_make(1, 1, 1)), 2,
+               1, 3, 0, "shear");
 
     check_rng rng = {77};
     for (int n = 0; n < 5000; n++) {
@@ -134,7 +140,8 @@ static void test_3d(void)
         CHECK_NEAR(cg_mat4_determinant(ref), -1, 1e-13);
         CHECK(cg_mat4_near(cg_mat4_mul(ref, ref), cg_mat4_identity(), 1e-12));
         cg_mat4 steps[5] = {m, ref, cg_xform3_translate(p.x, p.y, p.z),
-                            cg_xform3_scale(0.5, 2, 3, q), cg_xform3_shear(0.1, 0.2, -0.3, 0.4, 0.5, -0.6)};
+                            cg_xform3_scale(0.5, 2, 3, q),
+                            cg_xform3_shear(0.1, 0.2, -0.3, 0.4, 0.5, -0.6)};
         cg_mat4 all = cg_mat4_compose(steps, 5), inv;
         CHECK_EQ_INT(cg_mat4_inverse(all, &inv), CG_OK);
         cg_vec3 back = cg_mat4_transform_point(inv, cg_mat4_transform_point(all, s));
@@ -192,8 +199,8 @@ static void test_parallel_projections(void)
     CHECK(fabs(f.x - f.y) > 1e-3 && fabs(f.y - f.z) > 1e-3 && fabs(f.x - f.z) > 1e-3);
 
     /* Parallel projections keep parallel lines parallel. */
-    cg_mat4 kinds[6] = {iso, dim, tri, cg_proj_cavalier(0.7), cg_proj_cabinet(1.1),
-                        cg_proj_oblique(2.0, 0.3)};
+    cg_mat4 kinds[6] = {
+        iso, dim, tri, cg_proj_cavalier(0.7), cg_proj_cabinet(1.1), cg_proj_oblique(2.0, 0.3)};
     check_rng rng = {5};
     for (int k = 0; k < 6; k++) {
         for (int n = 0; n < 500; n++) {
@@ -214,7 +221,8 @@ static void test_perspective(void)
     CHECK_EQ_INT(cg_proj_frustum(-2, 2, -1, 1, 1, 10, &p), CG_OK);
     /* Near-plane corners go to NDC corners at z = -1; far ones at z = +1. */
     check_vec3(cg_mat4_transform_point(p, cg_vec3_make(2, 1, -1)), 1, 1, -1, 1e-15, "near corner");
-    check_vec3(cg_mat4_transform_point(p, cg_vec3_make(-20, -10, -10)), -1, -1, 1, 1e-14, "far corner");
+    check_vec3(cg_mat4_transform_point(p, cg_vec3_make(-20, -10, -10)), -1, -1, 1, 1e-14,
+               "far corner");
     /* A unit cube 2 units in front of the camera, hand computed:
      * x_ndc = (2 near / (r - l)) x / -z = 0.5 x / -z, y_ndc = y / -z. */
     for (int i = 0; i < 8; i++) {
@@ -232,7 +240,8 @@ static void test_perspective(void)
     CHECK_EQ_INT(cg_proj_perspective(1, NAN, 1, 10, &p), CG_EINVAL);
     CHECK_EQ_INT(cg_proj_orthographic(-1, 1, -1, 1, 1, 1, &p), CG_EINVAL);
     CHECK_EQ_INT(cg_proj_orthographic(-2, 2, -1, 1, 1, 3, &p), CG_OK);
-    check_vec3(cg_mat4_transform_point(p, cg_vec3_make(2, -1, -3)), 1, -1, 1, 1e-15, "ortho corner");
+    check_vec3(cg_mat4_transform_point(p, cg_vec3_make(2, -1, -3)), 1, -1, 1, 1e-15,
+               "ortho corner");
 }
 
 /* The vanishing point of direction d: the image of the point at infinity. */
@@ -250,13 +259,17 @@ static void test_vanishing_points(void)
     cg_mat4 proj, view;
     cg_proj_perspective(1.0, 1.0, 0.1, 1000, &proj);
     cg_vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    struct { cg_vec3 eye, target; int points; } setups[3] = {
-        {{0.5, 0.5, 5}, {0.5, 0.5, 0}, 1},  /* facing the cube: one point */
-        {{4, 0.5, 4}, {0, 0.5, 0}, 2},      /* turned, level: two points */
-        {{4, 5, 4}, {0, 0, 0}, 3},          /* turned and tilted: three */
+    struct {
+        cg_vec3 eye, target;
+        int points;
+    } setups[3] = {
+        {{0.5, 0.5, 5}, {0.5, 0.5, 0}, 1}, /* facing the cube: one point */
+        {{4, 0.5, 4}, {0, 0.5, 0}, 2},     /* turned, level: two points */
+        {{4, 5, 4}, {0, 0, 0}, 3},         /* turned and tilted: three */
     };
     for (int s = 0; s < 3; s++) {
-        CHECK_EQ_INT(cg_view_look_at(setups[s].eye, setups[s].target, cg_vec3_make(0, 1, 0), &view), CG_OK);
+        CHECK_EQ_INT(cg_view_look_at(setups[s].eye, setups[s].target, cg_vec3_make(0, 1, 0), &view),
+                     CG_OK);
         cg_mat4 m = cg_mat4_mul(proj, view);
         int finite = 0;
         for (int a = 0; a < 3; a++) {
@@ -318,8 +331,9 @@ static void test_camera_and_viewport(void)
     cg_vec3 t = cg_mat4_transform_point(view, target);
     check_vec3(t, 0, 0, -cg_vec3_length(cg_vec3_sub(target, eye)), 1e-14, "target on -z");
     CHECK_EQ_INT(cg_view_look_at(eye, eye, cg_vec3_make(0, 1, 0), &view), CG_EINVAL);
-    CHECK_EQ_INT(cg_view_look_at(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 5, 0), cg_vec3_make(0, 1, 0), &view),
-                 CG_EINVAL);
+    CHECK_EQ_INT(
+        cg_view_look_at(cg_vec3_make(0, 0, 0), cg_vec3_make(0, 5, 0), cg_vec3_make(0, 1, 0), &view),
+        CG_EINVAL);
 
     /* A primary ray through a pixel projects back onto that pixel. */
     check_rng rng = {3};
@@ -339,7 +353,8 @@ static void test_camera_and_viewport(void)
             cg_vec3 o, d;
             CHECK_EQ_INT(cg_camera_ray(&cam, w, h, x, y, &o, &d), CG_OK);
             CHECK_NEAR(cg_vec3_length(d), 1, 1e-14);
-            cg_vec3 p = cg_mat4_transform_point(all, cg_vec3_add(o, cg_vec3_scale(d, check_rng_range(&rng, 1, 8))));
+            cg_vec3 p = cg_mat4_transform_point(
+                all, cg_vec3_add(o, cg_vec3_scale(d, check_rng_range(&rng, 1, 8))));
             CHECK(fabs(p.x - x) < 1e-9 && fabs(p.y - y) < 1e-9);
         }
     }

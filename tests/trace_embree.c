@@ -52,7 +52,8 @@ static void compare(RTCDevice device, const char *name, const soup *s, check_rng
     CHECK_MSG(rate >= 0.999, "%s: nearest hits agree on only %.4f%%", name, 100 * rate);
     CHECK_MSG(shadow_agree >= 0.999 * RAY_COUNT, "%s: shadow rays agree on only %ld of %ld", name,
               shadow_agree, (long)RAY_COUNT);
-    CHECK_MSG(t_close >= 0.999 * both, "%s: distances agree on only %ld of %ld", name, t_close, both);
+    CHECK_MSG(t_close >= 0.999 * both, "%s: distances agree on only %ld of %ld", name, t_close,
+              both);
     CHECK(hits > RAY_COUNT / 4);
     rtcReleaseScene(scene);
     cg_bvh_free(bvh);

@@ -12,7 +12,7 @@
 /* Commits a scene of triangles (corners positions[indices[3 i + k]], or
  * 3 i + k without indices) with Embree's default build settings. */
 static inline RTCScene embree_scene(RTCDevice device, const cg_vec3 *positions, size_t vertex_count,
-                             const uint32_t *indices, size_t triangle_count)
+                                    const uint32_t *indices, size_t triangle_count)
 {
     RTCScene scene = rtcNewScene(device);
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -34,11 +34,11 @@ static inline soup bumpy_sphere(check_rng *rng, int stacks, int slices, double j
         for (int j = 0; j < slices; j++) {
             double th = CG_PI * i / stacks, ph = 2 * CG_PI * j / slices;
             double r = 1 + jitter * check_rng_range(rng, -1, 1);
-            s.p[2 + (size_t)(i - 1) * slices + j]
-                = cg_vec3_make(r * sin(th) * cos(ph), r * cos(th), r * sin(th) * sin(ph));
+            s.p[2 + (size_t)(i - 1) * slices + j] = cg_vec3_make(r * sin(th) * cos(ph), r * cos(th),
+                                                                 r * sin(th) * sin(ph));
         }
     size_t t = 0;
-#define V(i, j) (uint32_t)(2 + (size_t)((i) - 1) * slices + (size_t)(((j) % slices)))
+#define V(i, j) (uint32_t)(2 + (size_t)((i)-1) * slices + (size_t)(((j) % slices)))
 #define TRI(a, b, c)            \
     do {                        \
         s.idx[3 * t] = (a);     \
@@ -77,7 +77,8 @@ static inline soup torus(int nu, int nv)
     for (int i = 0; i < nu; i++)
         for (int j = 0; j < nv; j++) {
             uint32_t a = (uint32_t)(i * nv + j), b = (uint32_t)(((i + 1) % nu) * nv + j),
-                     c = (uint32_t)(i * nv + (j + 1) % nv), d = (uint32_t)(((i + 1) % nu) * nv + (j + 1) % nv);
+                     c = (uint32_t)(i * nv + (j + 1) % nv),
+                     d = (uint32_t)(((i + 1) % nu) * nv + (j + 1) % nv);
             TRI(a, b, d);
             TRI(a, d, c);
         }
@@ -103,7 +104,7 @@ static inline soup random_soup(check_rng *rng, size_t n)
                                                          size * check_rng_range(rng, -1, 1)));
         if (i % 97 == 0)
             s.p[3 * i + 2] = s.p[3 * i + 1]; /* repeated corner */
-        if (i % 89 == 0) /* collinear */
+        if (i % 89 == 0)                     /* collinear */
             s.p[3 * i + 2] = cg_vec3_scale(cg_vec3_add(s.p[3 * i], s.p[3 * i + 1]), 0.5);
     }
     return s;

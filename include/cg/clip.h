@@ -31,8 +31,12 @@ enum {
     CG_RCODE_FAR = 32
 };
 
-typedef struct cg_rect { double xmin, ymin, xmax, ymax; } cg_rect;
-typedef struct cg_box3 { cg_vec3 lo, hi; } cg_box3;
+typedef struct cg_rect {
+    double xmin, ymin, xmax, ymax;
+} cg_rect;
+typedef struct cg_box3 {
+    cg_vec3 lo, hi;
+} cg_box3;
 
 /* rCode of p against the window (points on the boundary are inside). */
 unsigned cg_clip_rcode(cg_rect window, cg_vec2 p);
@@ -41,8 +45,8 @@ unsigned cg_clip_rcode3(cg_box3 box, cg_vec3 p);
 /* Called by Cohen-Sutherland at each step when not NULL: the current
  * endpoints, their rCodes and what the step decided ("accept", "reject",
  * "clip top", ...). */
-typedef void (*cg_clip_trace_fn)(void *user, cg_vec2 p0, unsigned code0, cg_vec2 p1,
-                                 unsigned code1, const char *step);
+typedef void (*cg_clip_trace_fn)(void *user, cg_vec2 p0, unsigned code0, cg_vec2 p1, unsigned code1,
+                                 const char *step);
 
 /* Cohen-Sutherland clipping of the segment *p0-*p1 against window.  On return
  * *accepted is 1 and *p0, *p1 hold the visible part, or 0 (points untouched)
@@ -70,7 +74,10 @@ cg_status cg_clip_sutherland_hodgman(const cg_vec2 *subject, size_t n, const cg_
                                      size_t m, cg_vec2 **out, size_t *out_count);
 
 /* A plane keeps the points p with dot(normal, p) + offset >= 0. */
-typedef struct cg_plane { cg_vec3 normal; double offset; } cg_plane;
+typedef struct cg_plane {
+    cg_vec3 normal;
+    double offset;
+} cg_plane;
 
 /* Sutherland-Hodgman of a 3D polygon against plane_count planes; *out as
  * above (free()). */
@@ -87,7 +94,7 @@ cg_status cg_clip_polygon_planes(const cg_vec3 *polygon, size_t n, const cg_plan
 typedef struct cg_polygon_set {
     cg_vec2 *points;
     size_t point_count;
-    size_t *ring_start;    /* ring_count + 1 entries (NULL when empty) */
+    size_t *ring_start; /* ring_count + 1 entries (NULL when empty) */
     size_t ring_count;
     size_t *polygon_start; /* polygon_count + 1 entries (NULL when empty) */
     size_t polygon_count;
@@ -95,7 +102,9 @@ typedef struct cg_polygon_set {
 } cg_polygon_set;
 
 /* The same on the integer grid the boolean operations work on. */
-typedef struct cg_point64 { int64_t x, y; } cg_point64;
+typedef struct cg_point64 {
+    int64_t x, y;
+} cg_point64;
 typedef struct cg_polygon_set64 {
     cg_point64 *points;
     size_t point_count;
@@ -195,8 +204,8 @@ cg_status cg_clip_boolean_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_poly
  * CG_EINVAL for fewer than 3 points or non-finite input; the polygons must
  * be simple (self-intersecting input gives a meaningless result, use
  * cg_clip_boolean for that). */
-cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
-                                  size_t m, cg_polygon_set *result);
+cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window, size_t m,
+                                  cg_polygon_set *result);
 
 /* ---- 3D (11.3) ----------------------------------------------------------- */
 

@@ -108,12 +108,12 @@ cg_vec3 cg_lab_to_rgb(cg_vec3 lab);
 
 /* Any model to any other by name. */
 typedef enum cg_color_model {
-    CG_MODEL_RGB = 0,  /* sRGB-encoded R'G'B' */
-    CG_MODEL_LINEAR,   /* linear-light RGB */
+    CG_MODEL_RGB = 0, /* sRGB-encoded R'G'B' */
+    CG_MODEL_LINEAR,  /* linear-light RGB */
     CG_MODEL_HSV,
     CG_MODEL_HSL,
     CG_MODEL_CMY,
-    CG_MODEL_CMYK,     /* 4 components */
+    CG_MODEL_CMYK, /* 4 components */
     CG_MODEL_YIQ,
     CG_MODEL_YCBCR601,
     CG_MODEL_YCBCR709,
@@ -133,8 +133,7 @@ int cg_color_model_components(cg_color_model model);
 /* Converts in (3 or 4 components as the model has) to out.  Between linear,
  * XYZ and L*a*b* the path stays linear (no clamp to the RGB gamut); other
  * paths go through encoded RGB.  CG_EINVAL for an unknown model. */
-cg_status cg_color_convert(cg_color_model from, cg_color_model to, const double *in,
-                           double *out);
+cg_status cg_color_convert(cg_color_model from, cg_color_model to, const double *in, double *out);
 
 /* ---- tints, shades and tones (7.3.1) ------------------------------------- */
 

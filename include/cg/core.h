@@ -60,49 +60,122 @@ void cg_error_clear(cg_error *err);
 
 /* ---- vectors ---------------------------------------------------------- */
 
-typedef struct cg_vec2 { double x, y; } cg_vec2;
-typedef struct cg_vec3 { double x, y, z; } cg_vec3;
-typedef struct cg_vec4 { double x, y, z, w; } cg_vec4;
+typedef struct cg_vec2 {
+    double x, y;
+} cg_vec2;
+typedef struct cg_vec3 {
+    double x, y, z;
+} cg_vec3;
+typedef struct cg_vec4 {
+    double x, y, z, w;
+} cg_vec4;
 
-static inline cg_vec2 cg_vec2_make(double x, double y) { cg_vec2 v = {x, y}; return v; }
-static inline cg_vec2 cg_vec2_add(cg_vec2 a, cg_vec2 b) { return cg_vec2_make(a.x + b.x, a.y + b.y); }
-static inline cg_vec2 cg_vec2_sub(cg_vec2 a, cg_vec2 b) { return cg_vec2_make(a.x - b.x, a.y - b.y); }
-static inline cg_vec2 cg_vec2_scale(cg_vec2 a, double s) { return cg_vec2_make(a.x * s, a.y * s); }
-static inline double cg_vec2_dot(cg_vec2 a, cg_vec2 b) { return a.x * b.x + a.y * b.y; }
+static inline cg_vec2 cg_vec2_make(double x, double y)
+{
+    cg_vec2 v = {x, y};
+    return v;
+}
+static inline cg_vec2 cg_vec2_add(cg_vec2 a, cg_vec2 b)
+{
+    return cg_vec2_make(a.x + b.x, a.y + b.y);
+}
+static inline cg_vec2 cg_vec2_sub(cg_vec2 a, cg_vec2 b)
+{
+    return cg_vec2_make(a.x - b.x, a.y - b.y);
+}
+static inline cg_vec2 cg_vec2_scale(cg_vec2 a, double s)
+{
+    return cg_vec2_make(a.x * s, a.y * s);
+}
+static inline double cg_vec2_dot(cg_vec2 a, cg_vec2 b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 /* z component of the 3D cross product: positive when b is counter-clockwise from a
  * in a y-up frame. */
-static inline double cg_vec2_cross(cg_vec2 a, cg_vec2 b) { return a.x * b.y - a.y * b.x; }
-static inline double cg_vec2_length(cg_vec2 a) { return hypot(a.x, a.y); }
+static inline double cg_vec2_cross(cg_vec2 a, cg_vec2 b)
+{
+    return a.x * b.y - a.y * b.x;
+}
+static inline double cg_vec2_length(cg_vec2 a)
+{
+    return hypot(a.x, a.y);
+}
 /* Unit vector in the direction of a, for any finite length however tiny or
  * huge; zero, NaN and infinite vectors are returned as they are. */
 cg_vec2 cg_vec2_normalize(cg_vec2 a);
 
-static inline cg_vec3 cg_vec3_make(double x, double y, double z) { cg_vec3 v = {x, y, z}; return v; }
-static inline cg_vec3 cg_vec3_add(cg_vec3 a, cg_vec3 b) { return cg_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-static inline cg_vec3 cg_vec3_sub(cg_vec3 a, cg_vec3 b) { return cg_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
-static inline cg_vec3 cg_vec3_scale(cg_vec3 a, double s) { return cg_vec3_make(a.x * s, a.y * s, a.z * s); }
-static inline cg_vec3 cg_vec3_mul(cg_vec3 a, cg_vec3 b) { return cg_vec3_make(a.x * b.x, a.y * b.y, a.z * b.z); }
-static inline double cg_vec3_dot(cg_vec3 a, cg_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline cg_vec3 cg_vec3_make(double x, double y, double z)
+{
+    cg_vec3 v = {x, y, z};
+    return v;
+}
+static inline cg_vec3 cg_vec3_add(cg_vec3 a, cg_vec3 b)
+{
+    return cg_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+static inline cg_vec3 cg_vec3_sub(cg_vec3 a, cg_vec3 b)
+{
+    return cg_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z);
+}
+static inline cg_vec3 cg_vec3_scale(cg_vec3 a, double s)
+{
+    return cg_vec3_make(a.x * s, a.y * s, a.z * s);
+}
+static inline cg_vec3 cg_vec3_mul(cg_vec3 a, cg_vec3 b)
+{
+    return cg_vec3_make(a.x * b.x, a.y * b.y, a.z * b.z);
+}
+static inline double cg_vec3_dot(cg_vec3 a, cg_vec3 b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 static inline cg_vec3 cg_vec3_cross(cg_vec3 a, cg_vec3 b)
 {
     return cg_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-static inline double cg_vec3_length(cg_vec3 a) { return sqrt(cg_vec3_dot(a, a)); }
+static inline double cg_vec3_length(cg_vec3 a)
+{
+    return sqrt(cg_vec3_dot(a, a));
+}
 /* Unit vector in the direction of a, for any finite length however tiny or
  * huge; zero, NaN and infinite vectors are returned as they are. */
 cg_vec3 cg_vec3_normalize(cg_vec3 a);
 
-static inline cg_vec4 cg_vec4_make(double x, double y, double z, double w) { cg_vec4 v = {x, y, z, w}; return v; }
-static inline cg_vec4 cg_vec4_add(cg_vec4 a, cg_vec4 b) { return cg_vec4_make(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w); }
-static inline cg_vec4 cg_vec4_sub(cg_vec4 a, cg_vec4 b) { return cg_vec4_make(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w); }
-static inline cg_vec4 cg_vec4_scale(cg_vec4 a, double s) { return cg_vec4_make(a.x * s, a.y * s, a.z * s, a.w * s); }
-static inline double cg_vec4_dot(cg_vec4 a, cg_vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
-static inline cg_vec4 cg_vec4_from_point(cg_vec3 p) { return cg_vec4_make(p.x, p.y, p.z, 1.0); }
+static inline cg_vec4 cg_vec4_make(double x, double y, double z, double w)
+{
+    cg_vec4 v = {x, y, z, w};
+    return v;
+}
+static inline cg_vec4 cg_vec4_add(cg_vec4 a, cg_vec4 b)
+{
+    return cg_vec4_make(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
+}
+static inline cg_vec4 cg_vec4_sub(cg_vec4 a, cg_vec4 b)
+{
+    return cg_vec4_make(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
+}
+static inline cg_vec4 cg_vec4_scale(cg_vec4 a, double s)
+{
+    return cg_vec4_make(a.x * s, a.y * s, a.z * s, a.w * s);
+}
+static inline double cg_vec4_dot(cg_vec4 a, cg_vec4 b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+}
+static inline cg_vec4 cg_vec4_from_point(cg_vec3 p)
+{
+    return cg_vec4_make(p.x, p.y, p.z, 1.0);
+}
 
 /* ---- matrices --------------------------------------------------------- */
 
-typedef struct cg_mat3 { double m[3][3]; } cg_mat3;
-typedef struct cg_mat4 { double m[4][4]; } cg_mat4;
+typedef struct cg_mat3 {
+    double m[3][3];
+} cg_mat3;
+typedef struct cg_mat4 {
+    double m[4][4];
+} cg_mat4;
 
 cg_mat3 cg_mat3_identity(void);
 /* a b: b is applied first. */
@@ -146,8 +219,14 @@ cg_mat4 cg_mat4_compose(const cg_mat4 *steps, size_t n);
 
 #define CG_PI 3.14159265358979323846
 
-static inline double cg_radians(double degrees) { return degrees * (CG_PI / 180.0); }
-static inline double cg_degrees(double radians) { return radians * (180.0 / CG_PI); }
+static inline double cg_radians(double degrees)
+{
+    return degrees * (CG_PI / 180.0);
+}
+static inline double cg_degrees(double radians)
+{
+    return radians * (180.0 / CG_PI);
+}
 
 #ifdef __cplusplus
 }

@@ -33,8 +33,14 @@ cg_mat4 cg_curve_basis_inverse(cg_curve_basis basis);
 const char *cg_curve_basis_name(cg_curve_basis basis);
 
 /* A cubic segment in 2D or 3D. */
-typedef struct cg_cubic2 { cg_curve_basis basis; cg_vec2 g[4]; } cg_cubic2;
-typedef struct cg_cubic3 { cg_curve_basis basis; cg_vec3 g[4]; } cg_cubic3;
+typedef struct cg_cubic2 {
+    cg_curve_basis basis;
+    cg_vec2 g[4];
+} cg_cubic2;
+typedef struct cg_cubic3 {
+    cg_curve_basis basis;
+    cg_vec3 g[4];
+} cg_cubic3;
 
 /* The coefficient rows C = M G: c[0] t^3 + c[1] t^2 + c[2] t + c[3]. */
 void cg_cubic2_coefficients(const cg_cubic2 *curve, cg_vec2 c[4]);
@@ -84,8 +90,8 @@ typedef cg_status (*cg_point_sink)(void *user, cg_vec2 point);
  * out of range; CG_ERANGE when the tolerance is too small for the curve's
  * size (more than 2^24 segments, or below the floating-point resolution of
  * its coordinates).  Nothing is emitted on error. */
-cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
-                            cg_point_sink sink, void *user);
+cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance, cg_point_sink sink,
+                            void *user);
 /* The same for a cubic segment in any basis (converted to Bézier form). */
 cg_status cg_cubic2_flatten(const cg_cubic2 *curve, double tolerance, cg_point_sink sink,
                             void *user);

@@ -120,8 +120,8 @@ cg_status cg_draw_hermite(cg_image *image, cg_vec2 p1, cg_vec2 p4, cg_vec2 r1, c
  * segments), or a Catmull-Rom spline (interpolates points 1 .. count-2). */
 cg_status cg_draw_bspline(cg_image *image, const cg_vec2 *control, int count, double tolerance,
                           cg_draw_mode mode, cg_rgba8 color);
-cg_status cg_draw_catmull_rom(cg_image *image, const cg_vec2 *control, int count,
-                              double tolerance, cg_draw_mode mode, cg_rgba8 color);
+cg_status cg_draw_catmull_rom(cg_image *image, const cg_vec2 *control, int count, double tolerance,
+                              cg_draw_mode mode, cg_rgba8 color);
 
 /* ---- stepping through the algorithms (for `cg trace`) ------------------- */
 
@@ -130,10 +130,10 @@ cg_status cg_draw_catmull_rom(cg_image *image, const cg_vec2 *control, int count
  * f, dE and dNE are the notes' doubled decision variable and increments in
  * that octant, and (x, y) the pixel chosen in the real image. */
 typedef struct cg_line_step {
-    int x, y;          /* pixel selected at this step */
-    const char *move;  /* "start", "E" or "NE" (in first-octant terms) */
-    long long f;       /* decision value tested to choose this move (start: the initial f) */
-    long long f_next;  /* f after the update, tested at the next step */
+    int x, y;         /* pixel selected at this step */
+    const char *move; /* "start", "E" or "NE" (in first-octant terms) */
+    long long f;      /* decision value tested to choose this move (start: the initial f) */
+    long long f_next; /* f after the update, tested at the next step */
 } cg_line_step;
 
 /* Calls step(user, &s) for every pixel of the line, in drawing order, and
@@ -141,8 +141,8 @@ typedef struct cg_line_step {
  * Any out-pointer may be NULL, and step too (only the description is
  * filled then).  A non-zero callback result stops the walk. */
 cg_status cg_line_trace(int x0, int y0, int x1, int y1,
-                        int (*step)(void *user, const cg_line_step *s), void *user,
-                        long long *dx, long long *dy, long long *de, long long *dne);
+                        int (*step)(void *user, const cg_line_step *s), void *user, long long *dx,
+                        long long *dy, long long *de, long long *dne);
 
 /* One step of Algorithm 2 for the first octant of a circle of radius r. */
 typedef struct cg_circle_step {

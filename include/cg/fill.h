@@ -59,8 +59,8 @@ typedef enum cg_connectivity {
  * RGBA8 images only (CG_EUNSUPPORTED otherwise); CG_ERANGE when the seed is
  * outside the image; CG_EINVAL for a bad connectivity or tolerance;
  * CG_ENOMEM when the stack cannot grow (the image is then partly filled). */
-cg_status cg_flood_fill(cg_image *image, int x, int y, cg_rgba8 color,
-                        cg_connectivity connectivity, int tolerance, size_t *filled);
+cg_status cg_flood_fill(cg_image *image, int x, int y, cg_rgba8 color, cg_connectivity connectivity,
+                        int tolerance, size_t *filled);
 
 /* Boundary fill: paints color over the connected region around (x, y) of
  * pixels that are not of the boundary colour (within tolerance, as above).
@@ -99,12 +99,12 @@ typedef struct cg_gradient_stop {
  * the constructors below, and zero means "not used". */
 typedef struct cg_paint {
     cg_paint_type type;
-    cg_rgba8 color;              /* CG_PAINT_SOLID */
-    cg_vec2 p0, p1;              /* linear: t = 0 at p0, 1 at p1; radial: centre p0 */
-    double radius;               /* radial: t = 1 at this distance from p0 */
+    cg_rgba8 color; /* CG_PAINT_SOLID */
+    cg_vec2 p0, p1; /* linear: t = 0 at p0, 1 at p1; radial: centre p0 */
+    double radius;  /* radial: t = 1 at this distance from p0 */
     const cg_gradient_stop *stops;
-    int stop_count;              /* at least 1 for gradients */
-    cg_gradient_spread spread;   /* beyond the ends; default pad */
+    int stop_count;            /* at least 1 for gradients */
+    cg_gradient_spread spread; /* beyond the ends; default pad */
     /* radial with has_focal: t = 0 at focal (SVG's fx, fy) and 1 on the
      * circle, along each ray from focal; a focal point outside the circle
      * is moved just inside it, as SVG 1.1 says */
@@ -273,13 +273,13 @@ typedef enum cg_line_join { CG_JOIN_MITER = 0, CG_JOIN_ROUND = 1, CG_JOIN_BEVEL 
 typedef enum cg_line_cap { CG_CAP_BUTT = 0, CG_CAP_ROUND = 1, CG_CAP_SQUARE = 2 } cg_line_cap;
 
 typedef struct cg_stroke_style {
-    double width;        /* > 0 */
+    double width; /* > 0 */
     cg_line_join join;
     cg_line_cap cap;
-    double miter_limit;  /* >= 1: longest miter / width; longer ones become bevels */
+    double miter_limit;   /* >= 1: longest miter / width; longer ones become bevels */
     const double *dashes; /* NULL or dash_count lengths: on, off, on, ... */
-    int dash_count;      /* an odd count is repeated twice, as in SVG */
-    double dash_offset;  /* distance into the pattern at the start of each subpath */
+    int dash_count;       /* an odd count is repeated twice, as in SVG */
+    double dash_offset;   /* distance into the pattern at the start of each subpath */
 } cg_stroke_style;
 
 /* Width 1, miter joins with limit 4, butt caps, no dashes (SVG's defaults). */
@@ -325,9 +325,8 @@ cg_status cg_rasterizer_fill_polygon_aa(cg_rasterizer *rasterizer, cg_image *ima
                                         const cg_paint *paint);
 cg_status cg_rasterizer_fill_path(cg_rasterizer *rasterizer, cg_image *image, const cg_path *path,
                                   cg_fill_rule rule, const cg_paint *paint);
-cg_status cg_rasterizer_stroke_path(cg_rasterizer *rasterizer, cg_image *image,
-                                    const cg_path *path, const cg_stroke_style *style,
-                                    const cg_paint *paint);
+cg_status cg_rasterizer_stroke_path(cg_rasterizer *rasterizer, cg_image *image, const cg_path *path,
+                                    const cg_stroke_style *style, const cg_paint *paint);
 
 /* ---- layers ------------------------------------------------------------------ */
 
@@ -342,8 +341,8 @@ typedef enum cg_mask_type {
 } cg_mask_type;
 
 typedef struct cg_layer_style {
-    double opacity;             /* 0..1: scales the layer's alpha */
-    cg_composite_operator op;   /* how the layer meets the drawing */
+    double opacity;           /* 0..1: scales the layer's alpha */
+    cg_composite_operator op; /* how the layer meets the drawing */
     cg_blend_mode mode;
     /* NULL, or a path in pixel coordinates: the layer shows only inside it
      * (anti-aliased: a pixel half inside gets half the layer's effect),

@@ -67,10 +67,10 @@ typedef struct cg_hemesh {
     uint32_t *vertex_halfedge;
     uint32_t *face_halfedge;
 
-    cg_vec3 *positions;   /* vertex_count */
-    cg_vec3 *normals;     /* vertex_count, or NULL */
-    cg_vec2 *texcoords;   /* vertex_count, or NULL */
-    cg_rgbaf *colors;     /* vertex_count, or NULL */
+    cg_vec3 *positions;    /* vertex_count */
+    cg_vec3 *normals;      /* vertex_count, or NULL */
+    cg_vec2 *texcoords;    /* vertex_count, or NULL */
+    cg_rgbaf *colors;      /* vertex_count, or NULL */
     cg_rgbaf *face_colors; /* face_count, or NULL */
 
     size_t vertex_capacity, halfedge_capacity, face_capacity;
@@ -99,11 +99,11 @@ enum {
 /* What the build found in the input and what it changed.  Lists hold input
  * indices (faces and vertices of the cg_mesh), in increasing order. */
 typedef struct cg_hemesh_report {
-    size_t bad_face_count;       /* faces too small, out of range or repeating a vertex */
+    size_t bad_face_count; /* faces too small, out of range or repeating a vertex */
     uint32_t *bad_faces;
-    size_t nonmanifold_edge_count; /* edges on more than two faces */
-    uint32_t *nonmanifold_edges;   /* 2 per edge: its vertices, smaller first */
-    size_t misoriented_edge_count; /* edges two faces traverse the same way */
+    size_t nonmanifold_edge_count;   /* edges on more than two faces */
+    uint32_t *nonmanifold_edges;     /* 2 per edge: its vertices, smaller first */
+    size_t misoriented_edge_count;   /* edges two faces traverse the same way */
     size_t nonmanifold_vertex_count; /* vertices whose faces form more than one fan */
     uint32_t *nonmanifold_vertices;
     size_t isolated_vertex_count; /* vertices on no face (kept, as isolated vertices) */
@@ -114,7 +114,7 @@ typedef struct cg_hemesh_report {
      * joined the same two vertices (an indexed mesh names an edge by its
      * vertices: so the result converts to a manifold cg_mesh) */
     size_t split_edge_count;
-    int orientable;               /* 0 when a component could not be oriented */
+    int orientable;     /* 0 when a component could not be oriented */
     uint32_t *face_map; /* for each hemesh face, the input face it came from */
 } cg_hemesh_report;
 
@@ -153,23 +153,51 @@ cg_status cg_hemesh_validate(const cg_hemesh *hemesh, cg_error *err);
 
 /* ---- navigation (O(1)) -------------------------------------------------- */
 
-static inline uint32_t cg_hemesh_twin(uint32_t h) { return h ^ 1u; }
-static inline uint32_t cg_hemesh_edge(uint32_t h) { return h >> 1; }
-static inline uint32_t cg_hemesh_next(const cg_hemesh *m, uint32_t h) { return m->halfedges[h].next; }
-static inline uint32_t cg_hemesh_prev(const cg_hemesh *m, uint32_t h) { return m->halfedges[h].prev; }
-static inline uint32_t cg_hemesh_origin(const cg_hemesh *m, uint32_t h) { return m->halfedges[h].origin; }
-static inline uint32_t cg_hemesh_dest(const cg_hemesh *m, uint32_t h) { return m->halfedges[h ^ 1u].origin; }
-static inline uint32_t cg_hemesh_face(const cg_hemesh *m, uint32_t h) { return m->halfedges[h].face; }
+static inline uint32_t cg_hemesh_twin(uint32_t h)
+{
+    return h ^ 1u;
+}
+static inline uint32_t cg_hemesh_edge(uint32_t h)
+{
+    return h >> 1;
+}
+static inline uint32_t cg_hemesh_next(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h].next;
+}
+static inline uint32_t cg_hemesh_prev(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h].prev;
+}
+static inline uint32_t cg_hemesh_origin(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h].origin;
+}
+static inline uint32_t cg_hemesh_dest(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h ^ 1u].origin;
+}
+static inline uint32_t cg_hemesh_face(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h].face;
+}
 /* Next outgoing half-edge around origin(h), counter-clockwise / clockwise. */
-static inline uint32_t cg_hemesh_ccw(const cg_hemesh *m, uint32_t h) { return m->halfedges[h].prev ^ 1u; }
-static inline uint32_t cg_hemesh_cw(const cg_hemesh *m, uint32_t h) { return m->halfedges[h ^ 1u].next; }
+static inline uint32_t cg_hemesh_ccw(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h].prev ^ 1u;
+}
+static inline uint32_t cg_hemesh_cw(const cg_hemesh *m, uint32_t h)
+{
+    return m->halfedges[h ^ 1u].next;
+}
 static inline int cg_hemesh_halfedge_is_boundary(const cg_hemesh *m, uint32_t h)
 {
     return m->halfedges[h].face == CG_HEMESH_NONE;
 }
 static inline int cg_hemesh_edge_is_boundary(const cg_hemesh *m, uint32_t e)
 {
-    return m->halfedges[2 * e].face == CG_HEMESH_NONE || m->halfedges[2 * e + 1].face == CG_HEMESH_NONE;
+    return m->halfedges[2 * e].face == CG_HEMESH_NONE
+           || m->halfedges[2 * e + 1].face == CG_HEMESH_NONE;
 }
 static inline int cg_hemesh_vertex_is_boundary(const cg_hemesh *m, uint32_t v)
 {
@@ -223,7 +251,7 @@ typedef struct cg_hemesh_stats {
     size_t vertices, edges, faces; /* live; isolated vertices included */
     size_t isolated_vertices;
     size_t boundary_loops;
-    size_t components;     /* connected components, an isolated vertex is one */
+    size_t components;         /* connected components, an isolated vertex is one */
     long euler_characteristic; /* V - E + F */
     /* Genus of each component with faces: (2 - chi - boundary loops) / 2,
      * for orientable surfaces.  genus is that value when all agree, and -1

@@ -22,8 +22,12 @@ typedef enum cg_pixel_format {
     CG_PIXEL_RGBAF = 1  /* linear-light float RGBA */
 } cg_pixel_format;
 
-typedef struct cg_rgba8 { uint8_t r, g, b, a; } cg_rgba8;
-typedef struct cg_rgbaf { float r, g, b, a; } cg_rgbaf;
+typedef struct cg_rgba8 {
+    uint8_t r, g, b, a;
+} cg_rgba8;
+typedef struct cg_rgbaf {
+    float r, g, b, a;
+} cg_rgbaf;
 
 /* Limits.  CG_IMAGE_MAX_SIDE: largest width or height, 2^24 = 16,777,216,
  * everywhere.  CG_IMAGE_MAX_PIXELS: largest pixel count of an image read
@@ -92,8 +96,8 @@ void cg_image_set_rgba8(cg_image *image, int x, int y, cg_rgba8 color);
 typedef enum cg_file_format {
     CG_FILE_UNKNOWN = 0,
     CG_FILE_PNG,
-    CG_FILE_PPM, /* binary P6 when written */
-    CG_FILE_PGM, /* binary P5 when written */
+    CG_FILE_PPM,       /* binary P6 when written */
+    CG_FILE_PGM,       /* binary P5 when written */
     CG_FILE_PPM_ASCII, /* P3 */
     CG_FILE_PGM_ASCII  /* P2 */
 } cg_file_format;
@@ -106,8 +110,8 @@ cg_file_format cg_file_format_from_path(const char *path);
  * message for malformed content, CG_ERANGE for dimensions over the limits. */
 cg_status cg_image_read(const char *path, cg_image **out, cg_error *err);
 /* The same from memory; name is used in messages. */
-cg_status cg_image_read_memory(const void *bytes, size_t size, const char *name,
-                               cg_image **out, cg_error *err);
+cg_status cg_image_read_memory(const void *bytes, size_t size, const char *name, cg_image **out,
+                               cg_error *err);
 
 /* Writes the image in the given format (CG_FILE_UNKNOWN: from the path's
  * extension).  The file is written to a temporary name beside path and renamed
@@ -132,10 +136,10 @@ cg_status cg_image_encode_srgb(const cg_image *src, cg_image **out);
 cg_status cg_image_tonemap(const cg_image *src, double stops, double exposure, cg_image **out);
 
 typedef enum cg_dither {
-    CG_DITHER_NONE = 0,   /* plain quantization to the nearest level */
-    CG_DITHER_BAYER2,     /* ordered dithering, 2x2 Bayer matrix */
-    CG_DITHER_BAYER4,     /* 4x4 */
-    CG_DITHER_BAYER8,     /* 8x8 */
+    CG_DITHER_NONE = 0,       /* plain quantization to the nearest level */
+    CG_DITHER_BAYER2,         /* ordered dithering, 2x2 Bayer matrix */
+    CG_DITHER_BAYER4,         /* 4x4 */
+    CG_DITHER_BAYER8,         /* 8x8 */
     CG_DITHER_FLOYD_STEINBERG /* error diffusion 7/16, 3/16, 5/16, 1/16 */
 } cg_dither;
 

@@ -66,12 +66,12 @@ typedef enum cg_light_kind {
 
 typedef struct cg_light {
     cg_light_kind kind;
-    cg_vec3 color;       /* linear RGB intensity Il (or Ia), components >= 0 */
-    cg_vec3 position;    /* point and spot lights */
-    cg_vec3 direction;   /* UNIT vector: directional lights: the direction the
+    cg_vec3 color;          /* linear RGB intensity Il (or Ia), components >= 0 */
+    cg_vec3 position;       /* point and spot lights */
+    cg_vec3 direction;      /* UNIT vector: directional lights: the direction the
                             light travels (from the light into the scene);
                             spot lights: the cone axis, pointing away from it */
-    double attenuation[3]; /* c0, c1, c2 of f_att (point and spot); {1, 0, 0}: none */
+    double attenuation[3];  /* c0, c1, c2 of f_att (point and spot); {1, 0, 0}: none */
     double spot_cos_cutoff; /* cos of the cone's half-angle (spot) */
     double spot_exponent;   /* e, concentration of the beam (spot), >= 0 */
 } cg_light;
@@ -110,8 +110,8 @@ cg_status cg_material_check(const cg_material *material, cg_error *err);
  * normal and view are unit vectors; view points from the surface toward the
  * eye.  The normal is used as given: for two-sided surfaces pass
  * cg_light_face_forward(normal, view). */
-cg_vec3 cg_light_shade(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
-                       const cg_material *material, const cg_light *lights, size_t count);
+cg_vec3 cg_light_shade(cg_vec3 position, cg_vec3 normal, cg_vec3 view, const cg_material *material,
+                       const cg_light *lights, size_t count);
 
 /* The same with the terms kept apart, and an optional visibility per light
  * (visibility[i] in [0, 1] scales light i's diffuse and specular terms: the
@@ -125,8 +125,7 @@ cg_shade_terms cg_light_shade_terms(cg_vec3 position, cg_vec3 normal, cg_vec3 vi
  * (INFINITY for directional lights), for shadow rays.  Returns 0 for an
  * ambient light or when position coincides with the light (nothing to
  * trace), 1 otherwise. */
-int cg_light_vector(const cg_light *light, cg_vec3 position, cg_vec3 *to_light,
-                    double *distance);
+int cg_light_vector(const cg_light *light, cg_vec3 position, cg_vec3 *to_light, double *distance);
 
 /* normal, or -normal when it faces away from the viewer (N.V < 0). */
 static inline cg_vec3 cg_light_face_forward(cg_vec3 normal, cg_vec3 view)

@@ -33,16 +33,16 @@ typedef struct cg_mesh_texture_ref {
     char *image_path;
     unsigned char *image_bytes;
     size_t image_byte_count;
-    cg_texture_encoding encoding; /* CG_TEXTURE_SRGB for colour (base colour,
+    cg_texture_encoding encoding;   /* CG_TEXTURE_SRGB for colour (base colour,
                                emissive, specular), CG_TEXTURE_LINEAR for data
                                (normal, metallic-roughness, occlusion, alpha, bump) */
-    int texcoord_set;       /* glTF texCoord (cg_mesh carries set 0) */
+    int texcoord_set;               /* glTF texCoord (cg_mesh carries set 0) */
     cg_texture_wrap wrap_u, wrap_v; /* glTF sampler wrapS, wrapT; OBJ: -clamp on */
-    int magnify_nearest;    /* glTF magFilter NEAREST (0: linear or unset) */
+    int magnify_nearest;            /* glTF magFilter NEAREST (0: linear or unset) */
     /* KHR_texture_transform, in glTF's texture space (origin top-left):
      * uv' = translate(offset) rotate(rotation) scale(scale) uv */
     double offset[2], rotation, scale[2];
-    double amount;          /* normal map scale, occlusion strength, -bm bump
+    double amount; /* normal map scale, occlusion strength, -bm bump
                                multiplier; 1 otherwise */
 } cg_mesh_texture_ref;
 
@@ -50,18 +50,18 @@ enum { CG_MESH_MATERIAL_PHONG = 0, CG_MESH_MATERIAL_METALLIC_ROUGHNESS = 1 };
 enum { CG_MESH_ALPHA_OPAQUE = 0, CG_MESH_ALPHA_MASK = 1, CG_MESH_ALPHA_BLEND = 2 };
 
 typedef struct cg_mesh_material {
-    char *name;             /* "" when the file gives none */
-    int model;              /* CG_MESH_MATERIAL_PHONG (OBJ) or _METALLIC_ROUGHNESS (glTF) */
-    cg_rgbaf base_color;    /* Kd with alpha d (1 - Tr); glTF baseColorFactor */
-    cg_rgbaf specular;      /* Ks (Phong) */
-    double shininess;       /* Ns (Phong) */
-    int illum;              /* OBJ illumination model (2 when not given) */
-    double metallic, roughness;  /* glTF factors */
-    cg_rgbaf emissive;      /* Ke; glTF emissiveFactor times KHR_materials_emissive_strength */
-    int alpha_mode;         /* CG_MESH_ALPHA_*: BLEND when d < 1 in OBJ */
-    double alpha_cutoff;    /* MASK threshold (glTF alphaCutoff, 0.5 by default) */
+    char *name;                 /* "" when the file gives none */
+    int model;                  /* CG_MESH_MATERIAL_PHONG (OBJ) or _METALLIC_ROUGHNESS (glTF) */
+    cg_rgbaf base_color;        /* Kd with alpha d (1 - Tr); glTF baseColorFactor */
+    cg_rgbaf specular;          /* Ks (Phong) */
+    double shininess;           /* Ns (Phong) */
+    int illum;                  /* OBJ illumination model (2 when not given) */
+    double metallic, roughness; /* glTF factors */
+    cg_rgbaf emissive;          /* Ke; glTF emissiveFactor times KHR_materials_emissive_strength */
+    int alpha_mode;             /* CG_MESH_ALPHA_*: BLEND when d < 1 in OBJ */
+    double alpha_cutoff;        /* MASK threshold (glTF alphaCutoff, 0.5 by default) */
     int double_sided;
-    int unlit;              /* KHR_materials_unlit */
+    int unlit;                                  /* KHR_materials_unlit */
     cg_mesh_texture_ref base_color_map;         /* map_Kd; baseColorTexture (sRGB) */
     cg_mesh_texture_ref specular_map;           /* map_Ks (sRGB) */
     cg_mesh_texture_ref alpha_map;              /* map_d (linear) */
@@ -77,41 +77,36 @@ typedef struct cg_mesh_material {
 
 typedef struct cg_mesh {
     size_t vertex_count;
-    cg_vec3 *positions;  /* vertex_count */
-    cg_vec3 *normals;    /* vertex_count, or NULL */
-    cg_vec2 *texcoords;  /* vertex_count, or NULL */
-    cg_rgbaf *colors;    /* vertex_count linear-light colours, or NULL */
+    cg_vec3 *positions; /* vertex_count */
+    cg_vec3 *normals;   /* vertex_count, or NULL */
+    cg_vec2 *texcoords; /* vertex_count, or NULL */
+    cg_rgbaf *colors;   /* vertex_count linear-light colours, or NULL */
 
     size_t face_count;
-    uint32_t *face_offsets;  /* face_count + 1; face_offsets[0] == 0 */
-    uint32_t *face_indices;  /* face_offsets[face_count] corners */
-    cg_rgbaf *face_colors;   /* face_count diffuse colours (OBJ usemtl, PLY, OFF), or NULL;
+    uint32_t *face_offsets; /* face_count + 1; face_offsets[0] == 0 */
+    uint32_t *face_indices; /* face_offsets[face_count] corners */
+    cg_rgbaf *face_colors;  /* face_count diffuse colours (OBJ usemtl, PLY, OFF), or NULL;
                                 alpha 0 marks a face the file gives no colour */
 
     /* Set by the file readers; NULL / 0 otherwise.  cg_mesh_free frees them. */
     size_t material_count;
-    cg_mesh_material *materials;  /* material_count */
-    uint32_t *face_materials;     /* face_count indices into materials or
+    cg_mesh_material *materials; /* material_count */
+    uint32_t *face_materials;    /* face_count indices into materials or
                                      CG_MESH_NO_MATERIAL; NULL when no face has one */
-    char *notes;                  /* what the reader left out or could not find, one
+    char *notes;                 /* what the reader left out or could not find, one
                                      line each ("model.glb: 1 skin(s) (the rest pose
                                      is drawn)"), or NULL */
 } cg_mesh;
 
 /* Which optional arrays cg_mesh_create allocates. */
-enum {
-    CG_MESH_NORMALS = 1,
-    CG_MESH_TEXCOORDS = 2,
-    CG_MESH_COLORS = 4,
-    CG_MESH_FACE_COLORS = 8
-};
+enum { CG_MESH_NORMALS = 1, CG_MESH_TEXCOORDS = 2, CG_MESH_COLORS = 4, CG_MESH_FACE_COLORS = 8 };
 
 /* A mesh with room for vertex_count vertices, face_count faces and
  * index_count corners in all; arrays are zeroed (face_offsets too: the caller
  * fills them).  flags selects the optional arrays.  CG_ERANGE beyond the
  * limits above. */
-cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count,
-                         size_t index_count, unsigned flags);
+cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count, size_t index_count,
+                         unsigned flags);
 void cg_mesh_free(cg_mesh *mesh);
 /* Frees what a material owns (name, texture paths and bytes) and zeroes it. */
 void cg_mesh_material_clear(cg_mesh_material *material);
@@ -177,15 +172,15 @@ cg_status cg_mesh_triangulate(const cg_mesh *mesh, uint32_t (*triangles)[3]);
  * gzip-compressed (detected by content).  See docs/mesh-io.md for the
  * accepted variants, limits and messages. */
 typedef enum cg_mesh_format {
-    CG_MESH_FORMAT_AUTO = 0,    /* loading: by content, then by extension;
+    CG_MESH_FORMAT_AUTO = 0, /* loading: by content, then by extension;
                                    saving: by extension (.obj, .ply = binary) */
     CG_MESH_FORMAT_OBJ,
     CG_MESH_FORMAT_OFF,
-    CG_MESH_FORMAT_PLY,         /* loading: any PLY; saving: binary little-endian */
-    CG_MESH_FORMAT_PLY_ASCII,   /* saving: ASCII PLY (loading: same as CG_MESH_FORMAT_PLY) */
-    CG_MESH_FORMAT_PLY_BINARY,  /* saving: binary little-endian PLY */
-    CG_MESH_FORMAT_STL,         /* loading: ASCII or binary, by content; saving: binary */
-    CG_MESH_FORMAT_GLTF         /* loading: .gltf (JSON) or .glb (binary), by content;
+    CG_MESH_FORMAT_PLY,        /* loading: any PLY; saving: binary little-endian */
+    CG_MESH_FORMAT_PLY_ASCII,  /* saving: ASCII PLY (loading: same as CG_MESH_FORMAT_PLY) */
+    CG_MESH_FORMAT_PLY_BINARY, /* saving: binary little-endian PLY */
+    CG_MESH_FORMAT_STL,        /* loading: ASCII or binary, by content; saving: binary */
+    CG_MESH_FORMAT_GLTF        /* loading: .gltf (JSON) or .glb (binary), by content;
                                    saving: .glb */
 } cg_mesh_format;
 
@@ -220,8 +215,7 @@ cg_status cg_mesh_load_memory(const void *bytes, size_t size, const char *name,
  * the triangles (faces triangulated); glTF (.glb) the triangles, normals,
  * texture coordinates, vertex colours and the material table's factors,
  * one primitive per material (texture maps are not written). */
-cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,
-                       cg_error *err);
+cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format, cg_error *err);
 
 /* Vertex normals of a mesh, computed as the renderer does when the mesh has
  * none: every corner gets the sum of the unit normals of the faces around its
@@ -229,8 +223,7 @@ cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format for
  * weighted by the faces' angles at that vertex, normalized.  corner_normals
  * receives face_offsets[face_count] normals (one per face corner, in
  * face_indices order); degenerate faces get a zero normal. */
-cg_status cg_mesh_corner_normals(const cg_mesh *mesh, double crease_angle,
-                                 cg_vec3 *corner_normals);
+cg_status cg_mesh_corner_normals(const cg_mesh *mesh, double crease_angle, cg_vec3 *corner_normals);
 
 /* ---- generated meshes (tests, gallery, benchmarks) ----------------------- */
 

@@ -76,8 +76,8 @@ cg_offset_options cg_offset_options_default(void);
  * parts that vanish are gone.  CG_EINVAL for a NaN or infinite delta or
  * option, an unknown join or end; CG_ERANGE when a coordinate of the input
  * or of the result leaves the grid; CG_ENOMEM. */
-cg_status cg_offset64(const cg_polygon_set64 *paths, double delta,
-                      const cg_offset_options *options, cg_polygon_set64 *result);
+cg_status cg_offset64(const cg_polygon_set64 *paths, double delta, const cg_offset_options *options,
+                      cg_polygon_set64 *result);
 cg_status cg_offset64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, double delta,
                          const cg_offset_options *options, cg_polygon_set64 *result);
 cg_status cg_offset(const cg_polygon_set *paths, double delta, const cg_offset_options *options,
@@ -88,7 +88,9 @@ cg_status cg_offset_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, doubl
 /* ---- clipping against an axis-aligned rectangle ------------------------------ */
 
 /* A rectangle on the integer grid (the boundary belongs to it). */
-typedef struct cg_rect64 { int64_t xmin, ymin, xmax, ymax; } cg_rect64;
+typedef struct cg_rect64 {
+    int64_t xmin, ymin, xmax, ymax;
+} cg_rect64;
 
 /* The part inside the rectangle of the region the rings cover under the
  * fill rule, as polygons with holes (valid as a boolean result is).  Each
@@ -102,8 +104,8 @@ typedef struct cg_rect64 { int64_t xmin, ymin, xmax, ymax; } cg_rect64;
  * xmin > xmax or ymin > ymax; CG_ERANGE for a coordinate off the grid. */
 cg_status cg_rect_clip64(const cg_polygon_set64 *paths, cg_clip_fill fill, cg_rect64 rect,
                          cg_polygon_set64 *result);
-cg_status cg_rect_clip64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
-                            cg_clip_fill fill, cg_rect64 rect, cg_polygon_set64 *result);
+cg_status cg_rect_clip64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, cg_clip_fill fill,
+                            cg_rect64 rect, cg_polygon_set64 *result);
 cg_status cg_rect_clip(const cg_polygon_set *paths, cg_clip_fill fill, cg_rect rect, double scale,
                        cg_polygon_set *result);
 cg_status cg_rect_clip_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,

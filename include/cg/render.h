@@ -57,8 +57,8 @@ cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_
 /* ---- the pipeline -------------------------------------------------------- */
 
 typedef enum cg_render_algorithm {
-    CG_RENDER_ZBUFFER = 0, /* z-buffer (5.3), tiled and multithreaded */
-    CG_RENDER_PAINTER = 1, /* depth sort with Newell's overlap tests (5.2) */
+    CG_RENDER_ZBUFFER = 0,   /* z-buffer (5.3), tiled and multithreaded */
+    CG_RENDER_PAINTER = 1,   /* depth sort with Newell's overlap tests (5.2) */
     CG_RENDER_DEPTH_SORT = 2 /* plain depth sort, no overlap tests: shows what the
                                 tests are for (wrong where polygons overlap in depth) */
 } cg_render_algorithm;
@@ -92,9 +92,9 @@ typedef struct cg_render_light {
 
 typedef struct cg_render_options {
     cg_camera camera;
-    int frame_camera;    /* non-zero: cg_camera_frame places the camera to show the
+    int frame_camera; /* non-zero: cg_camera_frame places the camera to show the
                             whole mesh, keeping its viewing direction (default 1) */
-    cg_mat4 model;       /* model matrix, world = model * position (default identity) */
+    cg_mat4 model;    /* model matrix, world = model * position (default identity) */
     cg_render_algorithm algorithm;
     cg_shading shading;
     cg_cull_mode cull;
@@ -123,14 +123,14 @@ void cg_render_options_default(cg_render_options *options);
 
 /* Counts from the last frame. */
 typedef struct cg_render_stats {
-    size_t triangles;   /* triangles in the mesh (fan triangulation) */
-    size_t culled;      /* removed by back-face culling */
-    size_t clipped;     /* that needed clipping against the frustum */
-    size_t rejected;    /* outside the frustum, degenerate or not finite */
-    size_t rasterized;  /* screen triangles rasterized (after clipping) */
-    size_t fragments;   /* covered pixels generated (before the depth test) */
-    size_t splits;      /* painter's: polygons split to break cyclic overlaps */
-    int object_culled;  /* the whole mesh was outside the view (bounding box test) */
+    size_t triangles;  /* triangles in the mesh (fan triangulation) */
+    size_t culled;     /* removed by back-face culling */
+    size_t clipped;    /* that needed clipping against the frustum */
+    size_t rejected;   /* outside the frustum, degenerate or not finite */
+    size_t rasterized; /* screen triangles rasterized (after clipping) */
+    size_t fragments;  /* covered pixels generated (before the depth test) */
+    size_t splits;     /* painter's: polygons split to break cyclic overlaps */
+    int object_culled; /* the whole mesh was outside the view (bounding box test) */
 } cg_render_stats;
 
 typedef struct cg_renderer cg_renderer;

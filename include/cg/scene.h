@@ -21,10 +21,10 @@ extern "C" {
 #endif
 
 /* Limits that keep a hostile file from asking for absurd work. */
-#define CG_SCENE_MAX_SIDE 16384          /* image width and height */
+#define CG_SCENE_MAX_SIDE 16384 /* image width and height */
 #define CG_SCENE_MAX_OBJECTS 10000
 #define CG_SCENE_MAX_LIGHTS 64
-#define CG_SCENE_MAX_TRANSFORMS 256      /* steps in one object's transform list */
+#define CG_SCENE_MAX_TRANSFORMS 256 /* steps in one object's transform list */
 #define CG_SCENE_MAX_OVERLAYS 100000
 
 typedef enum cg_scene_projection {
@@ -73,15 +73,15 @@ typedef struct cg_scene_material {
 
 typedef struct cg_scene_object {
     cg_scene_object_kind kind;
-    char *file;          /* mesh: the path as resolved against the scene's folder */
-    cg_mesh *mesh;       /* mesh: loaded by cg_scene_load */
-    cg_vec3 center;      /* sphere */
-    double radius;       /* sphere */
-    cg_vec3 point;       /* plane */
-    cg_vec3 normal;      /* plane */
-    cg_vec3 lo, hi;      /* box */
-    cg_mat4 transform;   /* the composed transform list (identity when none) */
-    size_t material;     /* index into materials */
+    char *file;        /* mesh: the path as resolved against the scene's folder */
+    cg_mesh *mesh;     /* mesh: loaded by cg_scene_load */
+    cg_vec3 center;    /* sphere */
+    double radius;     /* sphere */
+    cg_vec3 point;     /* plane */
+    cg_vec3 normal;    /* plane */
+    cg_vec3 lo, hi;    /* box */
+    cg_mat4 transform; /* the composed transform list (identity when none) */
+    size_t material;   /* index into materials */
 } cg_scene_object;
 
 /* A rectangular light for soft shadows (ray tracer). */
@@ -92,25 +92,25 @@ typedef struct cg_scene_area_light {
 
 typedef struct cg_scene {
     int width, height;
-    cg_rgbaf background;          /* linear light */
+    cg_rgbaf background; /* linear light */
 
-    cg_camera camera;             /* eye, target, up, fovy or ortho_height, near, far */
-    int frame_camera;             /* move the eye so the whole scene fits (keeps direction) */
-    int near_given, far_given;    /* camera.near / far came from the file; otherwise they
+    cg_camera camera;          /* eye, target, up, fovy or ortho_height, near, far */
+    int frame_camera;          /* move the eye so the whole scene fits (keeps direction) */
+    int near_given, far_given; /* camera.near / far came from the file; otherwise they
                                      enclose the scene's depth range along the view */
     cg_scene_projection projection;
-    double projection_angle;      /* trimetric: about y; oblique: direction of depth (radians) */
-    double projection_angle2;     /* trimetric: about x (radians) */
-    double projection_ratio;      /* dimetric: z ratio; oblique: depth foreshortening */
+    double projection_angle;  /* trimetric: about y; oblique: direction of depth (radians) */
+    double projection_angle2; /* trimetric: about x (radians) */
+    double projection_ratio;  /* dimetric: z ratio; oblique: depth foreshortening */
 
     cg_scene_algorithm algorithm;
     cg_scene_shading shading;
-    int cull_back;                /* back-face culling (rasterizer) */
+    int cull_back; /* back-face culling (rasterizer) */
     cg_scene_edges edges;
     int threads;
-    int samples;                  /* ray tracer: samples per pixel */
-    int max_depth;                /* ray tracer: recursion limit */
-    int shadows;                  /* ray tracer: shadow rays */
+    int samples;   /* ray tracer: samples per pixel */
+    int max_depth; /* ray tracer: recursion limit */
+    int shadows;   /* ray tracer: shadow rays */
 
     cg_light *lights;
     size_t light_count;
@@ -120,7 +120,7 @@ typedef struct cg_scene {
     size_t material_count;
     cg_scene_object *objects;
     size_t object_count;
-    char **overlays;              /* `cg draw` script lines drawn over the picture */
+    char **overlays; /* `cg draw` script lines drawn over the picture */
     size_t overlay_count;
 } cg_scene;
 
@@ -144,8 +144,8 @@ void cg_scene_free(cg_scene *scene);
  * rasterizer draws every projection. */
 cg_status cg_scene_render(const cg_scene *scene, cg_image **out, cg_error *err);
 /* The same with another algorithm than the scene's. */
-cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorithm,
-                               cg_image **out, cg_error *err);
+cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorithm, cg_image **out,
+                               cg_error *err);
 
 /* The pieces the rasterizer gets, for programs that render a scene many
  * times (the viewer): every object as one world-space mesh with per-face

@@ -30,10 +30,10 @@
 extern "C" {
 #endif
 
-#define CG_SVG_MAX_BYTES (64u << 20)     /* 64 MiB of XML */
-#define CG_SVG_MAX_DEPTH 256             /* nesting of elements */
-#define CG_SVG_MAX_ELEMENTS 1000000      /* elements in the file */
-#define CG_SVG_MAX_RENDERED 2000000      /* elements drawn, <use> expanded */
+#define CG_SVG_MAX_BYTES (64u << 20) /* 64 MiB of XML */
+#define CG_SVG_MAX_DEPTH 256         /* nesting of elements */
+#define CG_SVG_MAX_ELEMENTS 1000000  /* elements in the file */
+#define CG_SVG_MAX_RENDERED 2000000  /* elements drawn, <use> expanded */
 
 typedef struct cg_svg cg_svg;
 

@@ -30,9 +30,9 @@ typedef enum cg_texture_encoding {
 } cg_texture_encoding;
 
 typedef enum cg_texture_filter {
-    CG_TEXTURE_NEAREST = 0,   /* the texel under the point, level 0 */
-    CG_TEXTURE_BILINEAR = 1,  /* the four texels around it, weighted, level 0 */
-    CG_TEXTURE_TRILINEAR = 2  /* bilinear in levels floor(lod) and floor(lod) + 1,
+    CG_TEXTURE_NEAREST = 0,  /* the texel under the point, level 0 */
+    CG_TEXTURE_BILINEAR = 1, /* the four texels around it, weighted, level 0 */
+    CG_TEXTURE_TRILINEAR = 2 /* bilinear in levels floor(lod) and floor(lod) + 1,
                                  mixed by lod's fraction (lod clamped to the levels) */
 } cg_texture_filter;
 
@@ -92,8 +92,8 @@ void cg_texture_free(cg_texture *texture);
  * y = (1 - v) h - 0.5, the texels floor(x) + {0, 1} and floor(y) + {0, 1}
  * (wrapped) get (1 - fx, fx) x (1 - fy, fy), fx and fy the fractions.  A
  * non-finite u, v or lod is taken as 0. */
-cg_rgbaf cg_texture_sample(const cg_texture *texture, const cg_texture_sampler *sampler,
-                           double u, double v, double lod);
+cg_rgbaf cg_texture_sample(const cg_texture *texture, const cg_texture_sampler *sampler, double u,
+                           double v, double lod);
 
 /* The texel index i (any integer) of a row or column of n texels, wrapped. */
 int cg_texture_wrap_index(long long i, int n, cg_texture_wrap wrap);

@@ -52,11 +52,11 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
 void cg_bvh_free(cg_bvh *bvh);
 
 typedef struct cg_bvh_stats {
-    size_t triangles;   /* triangles stored (finite ones) */
-    size_t nodes;       /* nodes of the 4-wide tree, 128 bytes each */
-    size_t leaves;      /* leaves (1 to 8 triangles each) */
-    int depth;          /* longest root-to-leaf path in nodes, root = 1 */
-    double sah_cost;    /* SAH cost of the tree (node 1, triangle 1) */
+    size_t triangles; /* triangles stored (finite ones) */
+    size_t nodes;     /* nodes of the 4-wide tree, 128 bytes each */
+    size_t leaves;    /* leaves (1 to 8 triangles each) */
+    int depth;        /* longest root-to-leaf path in nodes, root = 1 */
+    double sah_cost;  /* SAH cost of the tree (node 1, triangle 1) */
 } cg_bvh_stats;
 void cg_bvh_get_stats(const cg_bvh *bvh, cg_bvh_stats *out);
 
@@ -162,17 +162,17 @@ cg_status cg_trace_scene_classic(cg_trace_scene **out);
 
 /* Normals used for triangle meshes. */
 typedef enum cg_trace_normals {
-    CG_TRACE_FLAT,   /* face normals */
-    CG_TRACE_SMOOTH  /* interpolated vertex normals (Phong) */
+    CG_TRACE_FLAT,  /* face normals */
+    CG_TRACE_SMOOTH /* interpolated vertex normals (Phong) */
 } cg_trace_normals;
 
 typedef struct cg_trace_options {
-    int samples;          /* samples per pixel, >= 1 (stratified; 1: pixel centre) */
-    int max_depth;        /* reflection/refraction recursion limit, >= 0 */
-    int threads;          /* worker threads, >= 1 */
-    int shadows;          /* cast shadow rays */
+    int samples;   /* samples per pixel, >= 1 (stratified; 1: pixel centre) */
+    int max_depth; /* reflection/refraction recursion limit, >= 0 */
+    int threads;   /* worker threads, >= 1 */
+    int shadows;   /* cast shadow rays */
     cg_trace_normals normals;
-    cg_rgbaf background;  /* linear light; alpha kept where no object is hit */
+    cg_rgbaf background; /* linear light; alpha kept where no object is hit */
     /* Non-zero: primary rays see only depths between the camera's near and
      * far along the viewing direction, the rasterizer's view volume (far
      * may be +infinity).  0 (default): from the eye, or a parallel camera's
@@ -187,17 +187,16 @@ typedef struct cg_trace_options {
 cg_trace_options cg_trace_options_default(void);
 
 typedef struct cg_trace_stats {
-    double build_seconds;   /* BVH build (0 when already built) */
+    double build_seconds; /* BVH build (0 when already built) */
     double render_seconds;
-    uint64_t rays;          /* primary, shadow and secondary rays traced */
+    uint64_t rays; /* primary, shadow and secondary rays traced */
 } cg_trace_stats;
 
 /* Renders the scene as seen by camera into image (any size and format; each
  * pixel is overwritten).  The same inputs give the same bytes on any number of
  * threads.  stats may be NULL. */
 cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
-                          const cg_trace_options *options, cg_image *image,
-                          cg_trace_stats *stats);
+                          const cg_trace_options *options, cg_image *image, cg_trace_stats *stats);
 
 #ifdef __cplusplus
 }

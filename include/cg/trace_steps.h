@@ -59,7 +59,7 @@ typedef struct cg_step_field {
 } cg_step_field;
 
 typedef struct cg_step {
-    const char *phase;          /* "region 1", "clip edge 2", ... or NULL */
+    const char *phase; /* "region 1", "clip edge 2", ... or NULL */
     const cg_step_field *fields;
     int field_count;
     /* The pixels this step sets, x y pairs, and their intensities in [0, 1]
@@ -166,8 +166,8 @@ cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tole
  * coordinates: pixel x, y and depth, as cg_project_point gives them; the
  * window step sets that pixel when the point is in the view volume).  A
  * point with w <= 0 stops at the divide. */
-cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int width,
-                            int height, cg_vec3 point, cg_step_fn step, void *user);
+cg_status cg_pipeline_steps(cg_mat4 model, cg_mat4 view, cg_mat4 projection, int width, int height,
+                            cg_vec3 point, cg_step_fn step, void *user);
 
 /* The vanishing point of the lines of direction d under view and a
  * perspective projection: phase "point", the point at infinity (d, 0) in
@@ -251,9 +251,8 @@ cg_status cg_hemesh_one_ring_steps(const cg_hemesh *m, uint32_t v, cg_step_fn st
  * pixel-centre rule at their ends), setting the spans' pixels: exactly
  * cg_fill_polygon's, unclipped.  Coordinates up to 4096 (CG_ERANGE
  * beyond). */
-cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes,
-                                 int contour_count, cg_fill_rule rule, cg_step_fn step,
-                                 void *user);
+cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes, int contour_count,
+                                 cg_fill_rule rule, cg_step_fn step, void *user);
 
 /* Flood fill (the region of pixels like the seed's colour) and boundary
  * fill (the region of pixels not of the boundary colour) by the notes'
@@ -317,8 +316,8 @@ cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_ve
  * input and output lists.  The last output list is the library's result,
  * bit for bit.  Errors as cg_clip_polygon_planes. */
 cg_status cg_clip_planes_steps(const cg_vec3 *polygon, size_t n, const cg_plane *planes,
-                               size_t plane_count, const char *const *plane_names,
-                               cg_step_fn step, void *user);
+                               size_t plane_count, const char *const *plane_names, cg_step_fn step,
+                               void *user);
 
 #ifdef __cplusplus
 }

@@ -69,8 +69,8 @@ cg_status cg_proj_frustum(double left, double right, double bottom, double top, 
 cg_status cg_proj_perspective(double fovy, double aspect, double near, double far, cg_mat4 *out);
 /* Orthographic parallel projection of the box [left, right] x [bottom, top] x
  * [-near, -far] in view space (glOrtho). */
-cg_status cg_proj_orthographic(double left, double right, double bottom, double top,
-                               double near, double far, cg_mat4 *out);
+cg_status cg_proj_orthographic(double left, double right, double bottom, double top, double near,
+                               double far, cg_mat4 *out);
 
 /* The principal orthographic views: which world plane is looked at. */
 typedef enum cg_ortho_view {
@@ -126,8 +126,8 @@ cg_vec3 cg_project_point(cg_mat4 transform, cg_vec3 point, int *visible);
 
 typedef struct cg_camera {
     cg_vec3 eye, target, up;
-    int orthographic;   /* 0: perspective with fovy; 1: parallel with ortho_height */
-    double fovy;        /* vertical field of view in radians, in (0, pi) */
+    int orthographic;    /* 0: perspective with fovy; 1: parallel with ortho_height */
+    double fovy;         /* vertical field of view in radians, in (0, pi) */
     double ortho_height; /* height of the visible region for parallel views */
     /* Clip distances along the viewing direction, near < far; a
      * perspective camera needs 0 < near, a parallel one may reach behind

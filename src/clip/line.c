@@ -8,19 +8,25 @@
 
 static int rect_valid(cg_rect w)
 {
-    return isfinite(w.xmin) && isfinite(w.ymin) && isfinite(w.xmax) && isfinite(w.ymax) &&
-           w.xmin <= w.xmax && w.ymin <= w.ymax;
+    return isfinite(w.xmin) && isfinite(w.ymin) && isfinite(w.xmax) && isfinite(w.ymax)
+           && w.xmin <= w.xmax && w.ymin <= w.ymax;
 }
 
 static int box_valid(cg_box3 b)
 {
-    return isfinite(b.lo.x) && isfinite(b.lo.y) && isfinite(b.lo.z) && isfinite(b.hi.x) &&
-           isfinite(b.hi.y) && isfinite(b.hi.z) && b.lo.x <= b.hi.x && b.lo.y <= b.hi.y &&
-           b.lo.z <= b.hi.z;
+    return isfinite(b.lo.x) && isfinite(b.lo.y) && isfinite(b.lo.z) && isfinite(b.hi.x)
+           && isfinite(b.hi.y) && isfinite(b.hi.z) && b.lo.x <= b.hi.x && b.lo.y <= b.hi.y
+           && b.lo.z <= b.hi.z;
 }
 
-static int vec2_finite(cg_vec2 p) { return isfinite(p.x) && isfinite(p.y); }
-static int vec3_finite(cg_vec3 p) { return isfinite(p.x) && isfinite(p.y) && isfinite(p.z); }
+static int vec2_finite(cg_vec2 p)
+{
+    return isfinite(p.x) && isfinite(p.y);
+}
+static int vec3_finite(cg_vec3 p)
+{
+    return isfinite(p.x) && isfinite(p.y) && isfinite(p.z);
+}
 
 /* Note: Fig. 11.3 of the notes sets RIGHT whenever x >= xmin and TOP whenever
  * y >= ymin (a missing "else if (x > xmax)"); the codes of Fig. 11.1 need the
@@ -41,7 +47,8 @@ unsigned cg_clip_rcode(cg_rect w, cg_vec2 p)
 
 unsigned cg_clip_rcode3(cg_box3 b, cg_vec3 p)
 {
-    unsigned code = cg_clip_rcode((cg_rect){b.lo.x, b.lo.y, b.hi.x, b.hi.y}, cg_vec2_make(p.x, p.y));
+    unsigned code = cg_clip_rcode((cg_rect){b.lo.x, b.lo.y, b.hi.x, b.hi.y},
+                                  cg_vec2_make(p.x, p.y));
     if (p.z < b.lo.z)
         code |= CG_RCODE_NEAR;
     else if (p.z > b.hi.z)
@@ -83,8 +90,8 @@ static unsigned exact_code(const line_seg *s, const line_param *t, const double 
 
 /* One step of Cohen-Sutherland told to trace (when given): the two
  * endpoints p with their region codes c, and what is done. */
-static inline void cs_trace(cg_clip_trace_fn trace, void *user, double p[2][3],
-                            const unsigned c[2], const char *what)
+static inline void cs_trace(cg_clip_trace_fn trace, void *user, double p[2][3], const unsigned c[2],
+                            const char *what)
 {
     if (trace)
         trace(user, cg_vec2_make(p[0][0], p[0][1]), c[0], cg_vec2_make(p[1][0], p[1][1]), c[1],
@@ -169,8 +176,7 @@ static int lb_clip(int dim, double *a, double *b, const double *lo, const double
 }
 
 /* Both ends inside: the segment itself (exact, and the common case). */
-static int inside_all(int dim, const double *a, const double *b, const double *lo,
-                      const double *hi)
+static int inside_all(int dim, const double *a, const double *b, const double *lo, const double *hi)
 {
     for (int j = 0; j < dim; j++)
         if (a[j] < lo[j] || a[j] > hi[j] || b[j] < lo[j] || b[j] > hi[j])

@@ -115,7 +115,10 @@ void line_int_mul(line_int *r, const line_int *a, const line_int *b)
         line_int_copy(r, t);
 }
 
-int line_int_sign(const line_int *x) { return x->n == 0 ? 0 : x->neg ? -1 : 1; }
+int line_int_sign(const line_int *x)
+{
+    return x->n == 0 ? 0 : x->neg ? -1 : 1;
+}
 
 /* x <<= s (s >= 0) */
 static void mag_shl(line_int *x, int s)
@@ -201,7 +204,7 @@ static double round_scaled(uint64_t q, int sticky, int e, int neg)
     if (lsb < -1074)
         lsb = -1074;
     int drop = lsb - e; /* >= 2 */
-    if (drop >= 58) /* q < 2^57: below half of the smallest step */
+    if (drop >= 58)     /* q < 2^57: below half of the smallest step */
         return neg ? -0.0 : 0.0;
     uint64_t kept = q >> drop, rest = q & (((uint64_t)1 << drop) - 1);
     uint64_t half = (uint64_t)1 << (drop - 1);
@@ -346,7 +349,10 @@ void line_param_bound(const line_seg *s, int axis, double bound, line_param *t)
     }
 }
 
-static int sign128(line_i128 v) { return (v > 0) - (v < 0); }
+static int sign128(line_i128 v)
+{
+    return (v > 0) - (v < 0);
+}
 
 int line_param_cmp(const line_seg *s, const line_param *t, const line_param *u)
 {
@@ -371,8 +377,8 @@ static int param_end(const line_seg *s, const line_param *t, int *at_b)
         return 1;
     }
     *at_b = 1;
-    return t->bnum.n == t->bden.n && !t->bnum.neg &&
-           !memcmp(t->bnum.w, t->bden.w, (size_t)t->bnum.n * sizeof t->bnum.w[0]);
+    return t->bnum.n == t->bden.n && !t->bnum.neg
+           && !memcmp(t->bnum.w, t->bden.w, (size_t)t->bnum.n * sizeof t->bnum.w[0]);
 }
 
 int line_side(const line_seg *s, const line_param *t, int axis, double bound)
@@ -384,8 +390,8 @@ int line_side(const line_seg *s, const line_param *t, int axis, double bound)
     }
     /* sign(a + d num / den - bound) = sign((a - bound) den + d num), den > 0 */
     if (s->small)
-        return sign128((line_i128)(s->sa[axis] - small_from(bound, s->scale)) * t->den +
-                       (line_i128)s->sd[axis] * t->num);
+        return sign128((line_i128)(s->sa[axis] - small_from(bound, s->scale)) * t->den
+                       + (line_i128)s->sd[axis] * t->num);
     line_int x, y;
     line_int_from(&x, bound, s->scale);
     line_int_add(&x, &s->ai[axis], &x, 1);
@@ -404,7 +410,8 @@ static double small_quotient(line_i128 num, int64_t den, int scale)
     line_u128 n = neg ? -(line_u128)num : (line_u128)num, d = (line_u128)den;
     /* as in line_int_quotient: 2^55 <= q < 2^57 from n 2^k / d, where
      * n 2^k < 2^57 d < 2^120 fits; or n / d with its low bits dropped */
-    int bn = n >> 64 ? 128 - __builtin_clzll((uint64_t)(n >> 64)) : 64 - __builtin_clzll((uint64_t)n);
+    int bn = n >> 64 ? 128 - __builtin_clzll((uint64_t)(n >> 64))
+                     : 64 - __builtin_clzll((uint64_t)n);
     int bd = 64 - __builtin_clzll((uint64_t)d);
     int k = 56 - (bn - bd), e = scale, sticky;
     line_u128 q;
@@ -416,7 +423,8 @@ static double small_quotient(line_i128 num, int64_t den, int scale)
     } else {
         q = n / d;
         sticky = n % d != 0;
-        int bq = q >> 64 ? 128 - __builtin_clzll((uint64_t)(q >> 64)) : 64 - __builtin_clzll((uint64_t)q);
+        int bq = q >> 64 ? 128 - __builtin_clzll((uint64_t)(q >> 64))
+                         : 64 - __builtin_clzll((uint64_t)q);
         if (bq > 57) { /* the bits dropped join the sticky bit */
             int drop = bq - 57;
             sticky |= (q & (((line_u128)1 << drop) - 1)) != 0;

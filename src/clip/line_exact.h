@@ -39,12 +39,12 @@ double line_int_quotient(const line_int *num, const line_int *den, int scale);
 typedef struct line_seg {
     int dim, scale, small;
     double a[3], b[3];
-    int64_t sa[3], sd[3];  /* a and b - a, scaled, in the small form (line_exact.c) */
+    int64_t sa[3], sd[3]; /* a and b - a, scaled, in the small form (line_exact.c) */
     line_int ai[3], d[3]; /* the same otherwise */
 } line_seg;
 typedef struct line_param {
-    int64_t num, den;      /* in the small form */
-    line_int bnum, bden;   /* otherwise */
+    int64_t num, den;    /* in the small form */
+    line_int bnum, bden; /* otherwise */
 } line_param;
 
 /* the bounds lo, hi only set the scale (so that they are integers too) */

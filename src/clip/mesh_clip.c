@@ -28,7 +28,10 @@ static int pos_less(cg_vec3 a, cg_vec3 b)
     return a.z < b.z;
 }
 
-static float lerpf(float a, float b, double t) { return (float)(a + (b - a) * t); }
+static float lerpf(float a, float b, double t)
+{
+    return (float)(a + (b - a) * t);
+}
 
 /* Vertex where the edge a-b meets the plane coordinate `axis` == value. */
 static cvert cut(const cvert *a, const cvert *b, int axis, double value)
@@ -137,7 +140,8 @@ static int add_vertex(builder *b, const cvert *v, uint32_t *index)
     if (b->vertex_count >= CG_MESH_MAX_VERTICES)
         return 0;
     if (core_array_reserve((void **)&b->verts, &b->vertex_capacity, b->vertex_count + 1,
-                           sizeof *b->verts) != CG_OK)
+                           sizeof *b->verts)
+        != CG_OK)
         return 0;
     b->verts[b->vertex_count] = *v;
     *index = (uint32_t)b->vertex_count;
@@ -173,9 +177,11 @@ static int add_triangle(builder *b, uint32_t i0, uint32_t i1, uint32_t i2, size_
         /* (the corners, three a triangle, and the faces grow together) */
         size_t corners_capacity = b->triangle_capacity, faces_capacity = b->triangle_capacity;
         if (core_array_reserve((void **)&b->tris, &corners_capacity, b->triangle_count + 1,
-                               3 * sizeof *b->tris) != CG_OK ||
-            core_array_reserve((void **)&b->tri_face, &faces_capacity, b->triangle_count + 1,
-                               sizeof *b->tri_face) != CG_OK)
+                               3 * sizeof *b->tris)
+                != CG_OK
+            || core_array_reserve((void **)&b->tri_face, &faces_capacity, b->triangle_count + 1,
+                                  sizeof *b->tri_face)
+                   != CG_OK)
             return 0;
         b->triangle_capacity = corners_capacity;
     }
@@ -192,9 +198,9 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
     if (!out)
         return CG_EINVAL;
     *out = NULL;
-    if (!mesh || !isfinite(box.lo.x) || !isfinite(box.lo.y) || !isfinite(box.lo.z) ||
-        !isfinite(box.hi.x) || !isfinite(box.hi.y) || !isfinite(box.hi.z) ||
-        box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z)
+    if (!mesh || !isfinite(box.lo.x) || !isfinite(box.lo.y) || !isfinite(box.lo.z)
+        || !isfinite(box.hi.x) || !isfinite(box.hi.y) || !isfinite(box.hi.z) || box.lo.x > box.hi.x
+        || box.lo.y > box.hi.y || box.lo.z > box.hi.z)
         return CG_EINVAL;
     cg_status st = cg_mesh_validate_topology(mesh, NULL);
     if (st != CG_OK)
@@ -207,7 +213,7 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
     /* Faces are split by the mesh module's triangulation (concave faces
      * included), as the renderers split them. */
     size_t triangle_count = cg_mesh_triangle_count(mesh);
-    uint32_t (*corners)[3] = malloc((triangle_count ? triangle_count : 1) * sizeof *corners);
+    uint32_t(*corners)[3] = malloc((triangle_count ? triangle_count : 1) * sizeof *corners);
     if (!b.orig_map || !b.w.slot || !corners || cg_mesh_triangulate(mesh, corners) != CG_OK)
         goto done;
     const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
@@ -251,10 +257,10 @@ cg_status cg_clip_mesh_box(const cg_mesh *mesh, cg_box3 box, cg_mesh **out)
         }
     }
     {
-        unsigned flags = (mesh->normals ? CG_MESH_NORMALS : 0) |
-                         (mesh->texcoords ? CG_MESH_TEXCOORDS : 0) |
-                         (mesh->colors ? CG_MESH_COLORS : 0) |
-                         (mesh->face_colors ? CG_MESH_FACE_COLORS : 0);
+        unsigned flags = (mesh->normals ? CG_MESH_NORMALS : 0)
+                         | (mesh->texcoords ? CG_MESH_TEXCOORDS : 0)
+                         | (mesh->colors ? CG_MESH_COLORS : 0)
+                         | (mesh->face_colors ? CG_MESH_FACE_COLORS : 0);
         cg_mesh *m = NULL;
         st = cg_mesh_create(&m, b.vertex_count, b.triangle_count, b.triangle_count * 3, flags);
         if (st != CG_OK)

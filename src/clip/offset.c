@@ -37,7 +37,9 @@
 
 #include <math.h>
 
-typedef struct direction { double x, y; } direction;
+typedef struct direction {
+    double x, y;
+} direction;
 
 /* What one offset builds its band with. */
 enum { BAND_RIGHT = 1, BAND_LEFT = 2 };
@@ -69,7 +71,10 @@ static double distance(cg_point64 a, cg_point64 b)
     return hypot((double)(b.x - a.x), (double)(b.y - a.y));
 }
 
-static direction right_normal(direction t) { return (direction){t.y, -t.x}; }
+static direction right_normal(direction t)
+{
+    return (direction){t.y, -t.x};
+}
 
 static cg_status piece_push(offset_band *band, cg_point64 p)
 {
@@ -125,11 +130,8 @@ static cg_status push_join_points(offset_band *band, cg_point64 p, direction m1,
     if (st != CG_OK)
         return st;
     switch (band->join) {
-    case CG_OFFSET_JOIN_BEVEL:
-        break;
-    case CG_OFFSET_JOIN_SQUARE:
-        st = add_flat_cut(band, p, m1, m2, b, phi, d);
-        break;
+    case CG_OFFSET_JOIN_BEVEL: break;
+    case CG_OFFSET_JOIN_SQUARE: st = add_flat_cut(band, p, m1, m2, b, phi, d); break;
     case CG_OFFSET_JOIN_MITER:
         if (cos_phi * band->miter_limit >= 1)
             st = piece_push(band, moved(p, b, d / cos_phi));
@@ -366,12 +368,12 @@ static cg_status build_band(offset_band *band, const cg_polygon_set64 *paths, cg
         clean.count = 0;
         st = core_array_reserve_for(&clean, n);
         for (size_t i = 0; i < n && st == CG_OK; i++)
-            if (clean.count == 0 || clean.data[clean.count - 1].x != p[i].x ||
-                clean.data[clean.count - 1].y != p[i].y)
+            if (clean.count == 0 || clean.data[clean.count - 1].x != p[i].x
+                || clean.data[clean.count - 1].y != p[i].y)
                 clean.data[clean.count++] = p[i];
         int closed = end == CG_OFFSET_END_POLYGON || end == CG_OFFSET_END_JOINED;
-        while (closed && clean.count > 1 && clean.data[0].x == clean.data[clean.count - 1].x &&
-               clean.data[0].y == clean.data[clean.count - 1].y)
+        while (closed && clean.count > 1 && clean.data[0].x == clean.data[clean.count - 1].x
+               && clean.data[0].y == clean.data[clean.count - 1].y)
             clean.count--;
         if (st != CG_OK || clean.count == 0)
             continue;
@@ -397,11 +399,11 @@ cg_offset_options cg_offset_options_default(void)
 /* Checks the options and fills in their defaults for a width d on the grid. */
 static cg_status check_options(const cg_offset_options *options, double d, offset_band *band)
 {
-    if ((unsigned)options->join > CG_OFFSET_JOIN_BEVEL ||
-        (unsigned)options->end > CG_OFFSET_END_ROUND ||
-        (unsigned)options->fill > CG_CLIP_NEGATIVE || !isfinite(options->miter_limit) ||
-        !isfinite(options->arc_tolerance) || options->arc_tolerance < 0 ||
-        (options->miter_limit != 0 && options->miter_limit < 1))
+    if ((unsigned)options->join > CG_OFFSET_JOIN_BEVEL
+        || (unsigned)options->end > CG_OFFSET_END_ROUND
+        || (unsigned)options->fill > CG_CLIP_NEGATIVE || !isfinite(options->miter_limit)
+        || !isfinite(options->arc_tolerance) || options->arc_tolerance < 0
+        || (options->miter_limit != 0 && options->miter_limit < 1))
         return CG_EINVAL;
     band->width = d;
     band->join = options->join;

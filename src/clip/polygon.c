@@ -13,8 +13,8 @@ typedef struct vec2_list {
 
 static int list_push(vec2_list *l, cg_vec2 p)
 {
-    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points) !=
-        CG_OK)
+    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points)
+        != CG_OK)
         return 0;
     l->points[l->count++] = p;
     return 1;
@@ -117,8 +117,8 @@ typedef struct vec3_list {
 
 static int list3_push(vec3_list *l, cg_vec3 p)
 {
-    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points) !=
-        CG_OK)
+    if (core_array_reserve((void **)&l->points, &l->capacity, l->count + 1, sizeof *l->points)
+        != CG_OK)
         return 0;
     l->points[l->count++] = p;
     return 1;
@@ -143,8 +143,8 @@ cg_status cg_clip_polygon_planes(const cg_vec3 *polygon, size_t n, const cg_plan
         if (!isfinite(polygon[i].x) || !isfinite(polygon[i].y) || !isfinite(polygon[i].z))
             return CG_EINVAL;
     for (size_t k = 0; k < plane_count; k++)
-        if (!isfinite(planes[k].normal.x) || !isfinite(planes[k].normal.y) ||
-            !isfinite(planes[k].normal.z) || !isfinite(planes[k].offset))
+        if (!isfinite(planes[k].normal.x) || !isfinite(planes[k].normal.y)
+            || !isfinite(planes[k].normal.z) || !isfinite(planes[k].offset))
             return CG_EINVAL;
     if (n == 0)
         return CG_OK;

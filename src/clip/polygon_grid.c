@@ -113,7 +113,8 @@ cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest)
 {
     int64_t m = 0;
     for (size_t r = 0; set && r < set->ring_count; r++)
-        if (set->ring_start[r + 1] < set->ring_start[r] || set->ring_start[r + 1] > set->point_count)
+        if (set->ring_start[r + 1] < set->ring_start[r]
+            || set->ring_start[r + 1] > set->point_count)
             return CG_EINVAL;
     for (size_t i = 0; set && i < set->point_count; i++) {
         int64_t x = set->points[i].x, y = set->points[i].y;
@@ -129,7 +130,8 @@ cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest)
 
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c)
 {
-    polygon_i128 d = (polygon_i128)(b.x - a.x) * (c.y - a.y) - (polygon_i128)(b.y - a.y) * (c.x - a.x);
+    polygon_i128 d = (polygon_i128)(b.x - a.x) * (c.y - a.y)
+                     - (polygon_i128)(b.y - a.y) * (c.x - a.x);
     return (d > 0) - (d < 0);
 }
 

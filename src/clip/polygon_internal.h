@@ -11,7 +11,10 @@ __extension__ typedef __int128 polygon_i128;
 
 /* The grid of a double API call: multiply by an explicit scale, or
  * (automatic) by 2^exponent, which is exact at any magnitude. */
-typedef struct polygon_grid { double scale; int exponent; } polygon_grid;
+typedef struct polygon_grid {
+    double scale;
+    int exponent;
+} polygon_grid;
 
 /* The grid for scale (<= 0: automatic, mapping `largest` below 2^36).
  * CG_EINVAL for a NaN or infinite scale or largest. */

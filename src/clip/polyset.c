@@ -17,16 +17,17 @@
     }                                                                                              \
     cg_status RESERVE(SET *set, size_t points, size_t rings, size_t polygons)                      \
     {                                                                                              \
-        if (points > ((size_t)-1) / 4 / sizeof(POINT) ||                                           \
-            rings > ((size_t)-1) / 4 / sizeof(size_t) ||                                           \
-            polygons > ((size_t)-1) / 4 / sizeof(size_t))                                          \
+        if (points > ((size_t)-1) / 4 / sizeof(POINT) || rings > ((size_t)-1) / 4 / sizeof(size_t) \
+            || polygons > ((size_t)-1) / 4 / sizeof(size_t))                                       \
             return CG_ENOMEM;                                                                      \
-        if (core_array_reserve((void **)&set->points, &set->point_capacity, points,                \
-                               sizeof(POINT)) != CG_OK ||                                          \
-            core_array_reserve((void **)&set->ring_start, &set->ring_capacity, rings + 1,          \
-                               sizeof(size_t)) != CG_OK ||                                         \
-            core_array_reserve((void **)&set->polygon_start, &set->polygon_capacity, polygons + 1, \
-                               sizeof(size_t)) != CG_OK)                                           \
+        if (core_array_reserve((void **)&set->points, &set->point_capacity, points, sizeof(POINT)) \
+                != CG_OK                                                                           \
+            || core_array_reserve((void **)&set->ring_start, &set->ring_capacity, rings + 1,       \
+                                  sizeof(size_t))                                                  \
+                   != CG_OK                                                                        \
+            || core_array_reserve((void **)&set->polygon_start, &set->polygon_capacity,            \
+                                  polygons + 1, sizeof(size_t))                                    \
+                   != CG_OK)                                                                       \
             return CG_ENOMEM;                                                                      \
         return CG_OK;                                                                              \
     }                                                                                              \
@@ -37,8 +38,8 @@
         if (n > ((size_t)-1) / 4 / sizeof(POINT) - set->point_count)                               \
             return CG_ENOMEM;                                                                      \
         int new_p = new_polygon || set->polygon_count == 0;                                        \
-        cg_status st =                                                                             \
-            RESERVE(set, set->point_count + n, set->ring_count + 1, set->polygon_count + new_p);   \
+        cg_status st = RESERVE(set, set->point_count + n, set->ring_count + 1,                     \
+                               set->polygon_count + new_p);                                        \
         if (st != CG_OK)                                                                           \
             return st;                                                                             \
         if (new_p) {                                                                               \

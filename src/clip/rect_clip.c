@@ -31,9 +31,15 @@ typedef CORE_ARRAY(cg_point64) point_array;
 
 /* One side of the rectangle as a half-plane: the points whose coordinate
  * `axis` (0 x, 1 y) is >= limit (sign +1) or <= limit (sign -1). */
-typedef struct side { int axis, sign; int64_t limit; } side;
+typedef struct side {
+    int axis, sign;
+    int64_t limit;
+} side;
 
-static int64_t coordinate(cg_point64 p, int axis) { return axis ? p.y : p.x; }
+static int64_t coordinate(cg_point64 p, int axis)
+{
+    return axis ? p.y : p.x;
+}
 
 static int inside(side s, cg_point64 p)
 {
@@ -51,7 +57,7 @@ static int64_t divide_rounded(polygon_i128 numerator, polygon_i128 denominator)
     }
     polygon_i128 half = denominator / 2;
     return (int64_t)(numerator >= 0 ? (numerator + half) / denominator
-                                     : -((-numerator + half) / denominator));
+                                    : -((-numerator + half) / denominator));
 }
 
 /* Where the edge a-b (one end on each side of the line) crosses the side's
@@ -109,7 +115,9 @@ static cg_status check_input(const cg_polygon_set64 *paths, cg_rect64 rect,
  * three points dropped). */
 static cg_status cut_rings(const cg_polygon_set64 *paths, cg_rect64 rect, cg_polygon_set64 *cut)
 {
-    const side sides[4] = {{0, 1, rect.xmin}, {0, -1, rect.xmax}, {1, 1, rect.ymin},
+    const side sides[4] = {{0, 1, rect.xmin},
+                           {0, -1, rect.xmax},
+                           {1, 1, rect.ymin},
                            {1, -1, rect.ymax}};
     point_array one = {0}, two = {0};
     cg_status st = CG_OK;
@@ -118,11 +126,11 @@ static cg_status cut_rings(const cg_polygon_set64 *paths, cg_rect64 rect, cg_pol
         size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
         cg_rect64 b;
         ring_bounds(p, n, &b);
-        if (n < 3 || b.xmax < rect.xmin || b.xmin > rect.xmax || b.ymax < rect.ymin ||
-            b.ymin > rect.ymax)
+        if (n < 3 || b.xmax < rect.xmin || b.xmin > rect.xmax || b.ymax < rect.ymin
+            || b.ymin > rect.ymax)
             continue; /* it winds around no point of the rectangle */
-        if (b.xmin >= rect.xmin && b.xmax <= rect.xmax && b.ymin >= rect.ymin &&
-            b.ymax <= rect.ymax) {
+        if (b.xmin >= rect.xmin && b.xmax <= rect.xmax && b.ymin >= rect.ymin
+            && b.ymax <= rect.ymax) {
             st = cg_polygon_set64_add_ring(cut, p, n, 1);
             continue;
         }
@@ -143,8 +151,8 @@ static cg_status cut_rings(const cg_polygon_set64 *paths, cg_rect64 rect, cg_pol
     return st;
 }
 
-cg_status cg_rect_clip64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
-                            cg_clip_fill fill, cg_rect64 rect, cg_polygon_set64 *result)
+cg_status cg_rect_clip64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths, cg_clip_fill fill,
+                            cg_rect64 rect, cg_polygon_set64 *result)
 {
     cg_status st = check_input(paths, rect, result);
     if (st != CG_OK)
@@ -230,8 +238,8 @@ static int cut_segment(cg_point64 a, cg_point64 b, cg_rect64 rect, double *t0, d
 static cg_status clip_polyline(pieces *out, const cg_point64 *p, size_t n, cg_rect64 rect)
 {
     cg_status st = CG_OK;
-    if (n == 1 && p[0].x >= rect.xmin && p[0].x <= rect.xmax && p[0].y >= rect.ymin &&
-        p[0].y <= rect.ymax)
+    if (n == 1 && p[0].x >= rect.xmin && p[0].x <= rect.xmax && p[0].y >= rect.ymin
+        && p[0].y <= rect.ymax)
         st = piece_add(out, p[0]);
     for (size_t i = 0; i + 1 < n && st == CG_OK; i++) {
         double t0, t1;

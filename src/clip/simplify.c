@@ -25,8 +25,8 @@ typedef struct simplifier {
     const cg_point64 *points;
     size_t count;
     uint8_t *alive;
-    size_t *next, *prev;          /* along each path (closed ones cyclic) */
-    size_t *stamp, token;         /* stamp[v] == token: v is inside the stretch checked */
+    size_t *next, *prev;  /* along each path (closed ones cyclic) */
+    size_t *stamp, token; /* stamp[v] == token: v is inside the stretch checked */
     /* the grid: cell c holds vertices cell_items[cell_start[c] .. cell_start[c + 1]) */
     size_t *cell_start, *cell_items;
     int64_t x0, y0;
@@ -68,7 +68,8 @@ static cg_status build_grid(simplifier *s)
     if (!s->cell_start || !s->cell_items)
         return CG_ENOMEM;
     for (size_t i = 0; i < s->count; i++)
-        s->cell_start[cell_row(s, s->points[i].y) * s->columns + cell_column(s, s->points[i].x) + 1]++;
+        s->cell_start[cell_row(s, s->points[i].y) * s->columns + cell_column(s, s->points[i].x)
+                      + 1]++;
     for (size_t c = 0; c < cells; c++)
         s->cell_start[c + 1] += s->cell_start[c];
     size_t *fill = malloc((cells + 1) * sizeof *fill);
@@ -77,18 +78,22 @@ static cg_status build_grid(simplifier *s)
     for (size_t c = 0; c <= cells; c++)
         fill[c] = s->cell_start[c];
     for (size_t i = 0; i < s->count; i++)
-        s->cell_items[fill[cell_row(s, s->points[i].y) * s->columns + cell_column(s, s->points[i].x)]++] = i;
+        s->cell_items[fill[cell_row(s, s->points[i].y) * s->columns
+                           + cell_column(s, s->points[i].x)]++] = i;
     free(fill);
     return CG_OK;
 }
 
-static int same(cg_point64 a, cg_point64 b) { return a.x == b.x && a.y == b.y; }
+static int same(cg_point64 a, cg_point64 b)
+{
+    return a.x == b.x && a.y == b.y;
+}
 
 /* 1 when the edge from `from` to w leaves along the direction of from-to. */
 static int runs_along(cg_point64 from, cg_point64 to, cg_point64 w)
 {
-    polygon_i128 dot = (polygon_i128)(w.x - from.x) * (to.x - from.x) +
-                       (polygon_i128)(w.y - from.y) * (to.y - from.y);
+    polygon_i128 dot = (polygon_i128)(w.x - from.x) * (to.x - from.x)
+                       + (polygon_i128)(w.y - from.y) * (to.y - from.y);
     return polygon_orient(from, to, w) == 0 && dot > 0;
 }
 
@@ -108,8 +113,8 @@ static int in_stretch(const simplifier *s, size_t a, size_t b, cg_point64 q)
     int winding = 0;
     for (size_t i = a; i != b; i = s->next[i]) {
         cg_point64 p = s->points[i], r = s->points[s->next[i]];
-        if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0 &&
-            (q.y - p.y) * (q.y - r.y) <= 0)
+        if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0
+            && (q.y - p.y) * (q.y - r.y) <= 0)
             return 1;
         if (p.y <= q.y && r.y > q.y && polygon_orient(p, r, q) > 0)
             winding++;
@@ -117,8 +122,8 @@ static int in_stretch(const simplifier *s, size_t a, size_t b, cg_point64 q)
             winding--;
     }
     cg_point64 p = s->points[b], r = s->points[a];
-    if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0 &&
-        (q.y - p.y) * (q.y - r.y) <= 0)
+    if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0
+        && (q.y - p.y) * (q.y - r.y) <= 0)
         return 1;
     if (p.y <= q.y && r.y > q.y && polygon_orient(p, r, q) > 0)
         winding++;
@@ -152,16 +157,16 @@ static int shortcut_is_safe(simplifier *s, size_t a, size_t b)
                 size_t q = s->cell_items[k];
                 cg_point64 pq = s->points[q];
                 /* the stretch's own vertices are in it by definition */
-                if (!s->alive[q] || q == a || q == b || s->stamp[q] == s->token ||
-                    pq.x < x0 || pq.x > x1 || pq.y < y0 || pq.y > y1)
+                if (!s->alive[q] || q == a || q == b || s->stamp[q] == s->token || pq.x < x0
+                    || pq.x > x1 || pq.y < y0 || pq.y > y1)
                     continue;
                 if (same(pq, pa) || same(pq, pb)) {
                     /* a path touching at a or b: its edges from there end
                      * inside (found as vertices), or run along a-b, which
                      * would then lie on them */
                     cg_point64 from = same(pq, pa) ? pa : pb, to = same(pq, pa) ? pb : pa;
-                    if (runs_along(from, to, s->points[s->next[q]]) ||
-                        runs_along(from, to, s->points[s->prev[q]]))
+                    if (runs_along(from, to, s->points[s->next[q]])
+                        || runs_along(from, to, s->points[s->prev[q]]))
                         return 0;
                     continue;
                 }
@@ -258,10 +263,16 @@ static cg_status rdp_path(simplifier *s, size_t first, size_t n, int closed, dou
 
 /* ---- Visvalingam-Whyatt ------------------------------------------------------------ */
 
-typedef struct candidate { double area; size_t vertex, version; } candidate;
+typedef struct candidate {
+    double area;
+    size_t vertex, version;
+} candidate;
 typedef CORE_ARRAY(candidate) heap;
 
-static int heap_less(const candidate *a, const candidate *b) { return a->area < b->area; }
+static int heap_less(const candidate *a, const candidate *b)
+{
+    return a->area < b->area;
+}
 
 static cg_status heap_push(heap *h, candidate c)
 {
@@ -332,7 +343,8 @@ static cg_status visvalingam(simplifier *s, const size_t *path_of, size_t *path_
         s->next[a] = b;
         s->prev[b] = a;
         path_size[path_of[v]]--;
-        if (movable[a] && (st = heap_push(&h, (candidate){triangle_area(s, a), a, ++version[a]})) != CG_OK)
+        if (movable[a]
+            && (st = heap_push(&h, (candidate){triangle_area(s, a), a, ++version[a]})) != CG_OK)
             break;
         if (movable[b])
             st = heap_push(&h, (candidate){triangle_area(s, b), b, ++version[b]});
@@ -344,12 +356,14 @@ static cg_status visvalingam(simplifier *s, const size_t *path_of, size_t *path_
 
 /* ---- the operation ------------------------------------------------------------------- */
 
-static cg_status simplify_paths(const cg_polygon_set64 *in, int open, cg_simplify_algorithm algorithm,
-                                double tolerance, cg_polygon_set64 *out)
+static cg_status simplify_paths(const cg_polygon_set64 *in, int open,
+                                cg_simplify_algorithm algorithm, double tolerance,
+                                cg_polygon_set64 *out)
 {
     if (in->point_count == 0)
         return CG_OK;
-    simplifier s = {in->points, in->point_count, NULL, NULL, NULL, NULL, 0, NULL, NULL, 0, 0, 0, 0, 0};
+    simplifier s = {in->points, in->point_count, NULL, NULL, NULL, NULL, 0, NULL, NULL, 0, 0, 0, 0,
+                    0};
     size_t n = in->point_count, rings = in->ring_count;
     s.alive = malloc(n + 1);
     s.next = malloc((n + 1) * sizeof *s.next);
@@ -358,7 +372,8 @@ static cg_status simplify_paths(const cg_polygon_set64 *in, int open, cg_simplif
     uint8_t *movable = malloc(n + 1);
     s.stamp = calloc(n + 1, sizeof *s.stamp);
     cg_status st = s.alive && s.next && s.prev && path_of && size && movable && s.stamp
-                       ? build_grid(&s) : CG_ENOMEM;
+                       ? build_grid(&s)
+                       : CG_ENOMEM;
     for (size_t r = 0; r < rings && st == CG_OK; r++) {
         size_t a = in->ring_start[r], b = in->ring_start[r + 1];
         size[r] = b - a;
@@ -400,8 +415,8 @@ static cg_status simplify_paths(const cg_polygon_set64 *in, int open, cg_simplif
 cg_status cg_simplify64(const cg_polygon_set64 *paths, int open, cg_clip_fill fill,
                         cg_simplify_algorithm algorithm, double tolerance, cg_polygon_set64 *result)
 {
-    if (!paths || !result || !(tolerance >= 0) || isinf(tolerance) ||
-        (unsigned)algorithm > CG_SIMPLIFY_VISVALINGAM || (unsigned)fill > CG_CLIP_NEGATIVE)
+    if (!paths || !result || !(tolerance >= 0) || isinf(tolerance)
+        || (unsigned)algorithm > CG_SIMPLIFY_VISVALINGAM || (unsigned)fill > CG_CLIP_NEGATIVE)
         return CG_EINVAL;
     int64_t largest;
     cg_status st = polygon_set64_max_abs(paths, &largest);

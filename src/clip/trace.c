@@ -9,8 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step,
-                                void *user)
+cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step, void *user)
 {
     cg_vec2 c0 = p0, c1 = p1;
     int accepted;
@@ -48,7 +47,8 @@ cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_
             }
             if (t_enter > t_exit) {
                 rejected = 1;
-                kind = p[k] < 0 ? "entering after the exit: reject" : "leaving before the entry: reject";
+                kind = p[k] < 0 ? "entering after the exit: reject"
+                                : "leaving before the entry: reject";
             }
         }
         core_step_begin(&s, "boundaries");
@@ -133,8 +133,7 @@ static int emit_pair(clip_edge_trace *c, cg_vec2 s, double ds, cg_vec2 e, double
 
 /* One clip edge over the list in: the output list in out.  1 when the
  * callback stopped the trace, -1 out of memory. */
-static int clip_one_edge(clip_edge_trace *c, double orient, const point_array *in,
-                         point_array *out)
+static int clip_one_edge(clip_edge_trace *c, double orient, const point_array *in, point_array *out)
 {
     cg_vec2 a = c->edge[0], edge = cg_vec2_sub(c->edge[1], a);
     out->count = 0;

@@ -105,8 +105,8 @@ static int clip_plane(const char *phase, cg_plane plane, const point3_list *in, 
 }
 
 cg_status cg_clip_planes_steps(const cg_vec3 *polygon, size_t n, const cg_plane *planes,
-                               size_t plane_count, const char *const *plane_names,
-                               cg_step_fn step, void *user)
+                               size_t plane_count, const char *const *plane_names, cg_step_fn step,
+                               void *user)
 {
     cg_vec3 *result = NULL;
     size_t result_count = 0;

@@ -53,7 +53,8 @@ typedef struct weiler_trace {
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static void append(char *text, const char *format, ...)
+static void
+append(char *text, const char *format, ...)
 {
     size_t used = strlen(text);
     if (used + 4 >= LABELS)
@@ -151,7 +152,9 @@ static int emit_list(weiler_trace *w, int window)
         label(&l->data[i], window, name, sizeof name);
         long c = l->data[i].crossing;
         append(text, "%s%s%s", i ? " " : "", name,
-               c < 0 ? "" : w->crossings.data[c].entering ? "(in)" : "(out)");
+               c < 0                           ? ""
+               : w->crossings.data[c].entering ? "(in)"
+                                               : "(out)");
         points[i] = l->data[i].p;
     }
     core_step s;
@@ -215,8 +218,7 @@ static int build_lists(weiler_trace *w)
 /* One leg of a loop: from crossing node `at` of list `side` along that
  * boundary to its next crossing, the points appended to ring.  Returns the
  * crossing's node index on that list, or -1 (the walk ran away). */
-static long walk_leg(weiler_trace *w, int side, size_t at, point_list *ring, int loop,
-                     int *stopped)
+static long walk_leg(weiler_trace *w, int side, size_t at, point_list *ring, int loop, int *stopped)
 {
     node_list *l = &w->lists[side];
     size_t limit = w->lists[0].count + w->lists[1].count, guard = 0, first = ring->count;
@@ -359,23 +361,32 @@ cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_ve
         extent = fmax(extent, fmax(fabs(p.x), fabs(p.y)));
     }
     double delta = (extent > 0 ? extent : 1) * 1e-9;
-    weiler_trace w = {malloc(n * sizeof(cg_vec2)), malloc(m * sizeof(cg_vec2)), 0, 0, {0},
-                      {{0}, {0}}, step, user};
+    weiler_trace w = {malloc(n * sizeof(cg_vec2)),
+                      malloc(m * sizeof(cg_vec2)),
+                      0,
+                      0,
+                      {0},
+                      {{0}, {0}},
+                      step,
+                      user};
     int outcome = w.subject && w.window ? 0 : -1;
     if (outcome == 0) {
         w.n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), w.subject);
-        w.m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
+        w.m = clip_weiler_prepare(
+            window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
         outcome = emit_prepared(&w, delta);
     }
-    int flat = w.n < 3 || w.m < 3 || clip_weiler_twice_area(w.subject, w.n) == 0 || clip_weiler_twice_area(w.window, w.m) == 0;
+    int flat = w.n < 3 || w.m < 3 || clip_weiler_twice_area(w.subject, w.n) == 0
+               || clip_weiler_twice_area(w.window, w.m) == 0;
     if (outcome == 0 && !flat)
         outcome = find_crossings(&w);
     if (outcome == 0 && !flat && (w.crossings.count == 0 || w.crossings.count % 2)) {
         core_step s;
         core_step_begin(&s, "containment");
-        core_step_text(&s, "outcome", result.ring_count ? "no crossing: one polygon lies inside "
-                                                          "the other and is the result"
-                                                        : "no crossing: the polygons are apart");
+        core_step_text(&s, "outcome",
+                       result.ring_count ? "no crossing: one polygon lies inside "
+                                           "the other and is the result"
+                                         : "no crossing: the polygons are apart");
         outcome = core_step_emit(&s, step, user);
     } else if (outcome == 0 && !flat) {
         outcome = build_lists(&w);

@@ -35,7 +35,7 @@
 
 #define NONE UINT32_MAX
 #define NEXT(i) ((i) == 2 ? 0 : (i) + 1)
-#define PREV(i) ((i) == 0 ? 2 : (i) - 1)
+#define PREV(i) ((i) == 0 ? 2 : (i)-1)
 
 typedef struct triangle {
     uint32_t vertex[3];
@@ -45,11 +45,11 @@ typedef struct triangle {
 } triangle;
 
 typedef struct mesh {
-    CORE_ARRAY(cg_point64) points;    /* the vertices, then the 3 enclosing corners */
+    CORE_ARRAY(cg_point64) points; /* the vertices, then the 3 enclosing corners */
     CORE_ARRAY(triangle) triangles;
-    CORE_ARRAY(uint32_t) corner_of;   /* a triangle with each vertex */
-    CORE_ARRAY(uint64_t) stack;       /* edges to check: triangle << 2 | vertex */
-    uint32_t last;                    /* where the next walk starts */
+    CORE_ARRAY(uint32_t) corner_of; /* a triangle with each vertex */
+    CORE_ARRAY(uint64_t) stack;     /* edges to check: triangle << 2 | vertex */
+    uint32_t last;                  /* where the next walk starts */
 } mesh;
 
 static cg_point64 point_of(const mesh *m, const triangle *t, int i)
@@ -195,8 +195,8 @@ static cg_status insert(mesh *m, uint32_t v)
         triangle y = m->triangles.data[u];
         int j = back_index(m, u, t);
         uint32_t d = y.vertex[j], un_b = y.neighbor[PREV(j)], un_c = y.neighbor[NEXT(j)];
-        set_triangle(m, t, a, b, v, b2, b1, nc);  /* t1 = (a, b, p) */
-        set_triangle(m, b1, a, v, c, u, nb, t);   /* t2 = (a, p, c) */
+        set_triangle(m, t, a, b, v, b2, b1, nc);   /* t1 = (a, b, p) */
+        set_triangle(m, b1, a, v, c, u, nb, t);    /* t2 = (a, p, c) */
         set_triangle(m, u, d, c, v, b1, b2, un_b); /* u1 = (d, c, p) */
         set_triangle(m, b2, d, v, b, t, un_c, u);  /* u2 = (d, p, b) */
         relink(m, nb, t, b1);
@@ -243,8 +243,10 @@ static int inside_segment(cg_point64 a, cg_point64 b, cg_point64 c)
 {
     if (polygon_orient(a, b, c) != 0)
         return 0;
-    polygon_i128 dot = (polygon_i128)(c.x - a.x) * (b.x - a.x) + (polygon_i128)(c.y - a.y) * (b.y - a.y);
-    polygon_i128 len = (polygon_i128)(b.x - a.x) * (b.x - a.x) + (polygon_i128)(b.y - a.y) * (b.y - a.y);
+    polygon_i128 dot = (polygon_i128)(c.x - a.x) * (b.x - a.x)
+                       + (polygon_i128)(c.y - a.y) * (b.y - a.y);
+    polygon_i128 len = (polygon_i128)(b.x - a.x) * (b.x - a.x)
+                       + (polygon_i128)(b.y - a.y) * (b.y - a.y);
     return dot > 0 && dot < len;
 }
 
@@ -398,7 +400,10 @@ static uint64_t morton(uint64_t x, uint64_t y)
     return key;
 }
 
-typedef struct keyed { uint64_t key; uint32_t vertex; } keyed;
+typedef struct keyed {
+    uint64_t key;
+    uint32_t vertex;
+} keyed;
 
 static int compare_keyed(const void *a, const void *b)
 {
@@ -442,8 +447,8 @@ static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, size_t *coun
     m->points.data[distinct + 2] = (cg_point64){-far, 2 * far};
     m->points.count = distinct + 3;
     *count = distinct;
-    if (core_array_reserve_for(&m->corner_of, distinct + 3) != CG_OK ||
-        core_array_reserve_for(&m->triangles, 2 * distinct + 8) != CG_OK)
+    if (core_array_reserve_for(&m->corner_of, distinct + 3) != CG_OK
+        || core_array_reserve_for(&m->triangles, 2 * distinct + 8) != CG_OK)
         return CG_ENOMEM;
     m->corner_of.count = distinct + 3;
     m->triangles.count = 1;
@@ -550,8 +555,7 @@ static cg_status mark_inside(mesh *m, const cg_polygon_set64 *rings, size_t coun
 }
 
 /* Steps 2 to 5 on simple rings; the inside triangles into result. */
-static cg_status triangulate_rings(mesh *m, const cg_polygon_set64 *rings,
-                                   cg_polygon_set64 *result)
+static cg_status triangulate_rings(mesh *m, const cg_polygon_set64 *rings, cg_polygon_set64 *result)
 {
     size_t count;
     if (rings->point_count > ((size_t)1 << 30))

@@ -11,7 +11,10 @@
 #include <string.h>
 
 /* A signed 256-bit integer: magnitude in limbs (least significant first). */
-typedef struct wide { uint64_t limb[4]; int negative; } wide;
+typedef struct wide {
+    uint64_t limb[4];
+    int negative;
+} wide;
 
 __extension__ typedef unsigned __int128 u128;
 
@@ -92,9 +95,9 @@ int triangulate_incircle(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 d)
     double clift = cdx * cdx + cdy * cdy;
     double ab = bdx * cdy - cdx * bdy, bc = cdx * ady - adx * cdy, ca = adx * bdy - bdx * ady;
     double det = alift * ab + blift * bc + clift * ca;
-    double permanent = alift * (fabs(bdx * cdy) + fabs(cdx * bdy)) +
-                       blift * (fabs(cdx * ady) + fabs(adx * cdy)) +
-                       clift * (fabs(adx * bdy) + fabs(bdx * ady));
+    double permanent = alift * (fabs(bdx * cdy) + fabs(cdx * bdy))
+                       + blift * (fabs(cdx * ady) + fabs(adx * cdy))
+                       + clift * (fabs(adx * bdy) + fabs(bdx * ady));
     /* the differences are exact in doubles (below 2^53); the bound covers
      * the rounding of the products and sums that follow */
     double bound = 1e-14 * permanent;

@@ -11,9 +11,9 @@
 
 typedef struct wnode {
     cg_vec2 p;
-    size_t next;   /* next node on the same boundary */
-    size_t twin;   /* the same intersection on the other boundary, or -1 */
-    int entering;  /* subject enters the window here */
+    size_t next;  /* next node on the same boundary */
+    size_t twin;  /* the same intersection on the other boundary, or -1 */
+    int entering; /* subject enters the window here */
     int visited;
 } wnode;
 
@@ -36,8 +36,8 @@ static int point_in(const cg_vec2 *p, size_t n, cg_vec2 q)
 {
     int in = 0;
     for (size_t i = 0, j = n - 1; i < n; j = i++)
-        if ((p[i].y > q.y) != (p[j].y > q.y) &&
-            q.x < p[j].x + (q.y - p[j].y) * (p[i].x - p[j].x) / (p[i].y - p[j].y))
+        if ((p[i].y > q.y) != (p[j].y > q.y)
+            && q.x < p[j].x + (q.y - p[j].y) * (p[i].x - p[j].x) / (p[i].y - p[j].y))
             in = !in;
     return in;
 }
@@ -78,8 +78,8 @@ static int cmp_c(const void *a, const void *b)
     return ((*x)->u > (*y)->u) - ((*x)->u < (*y)->u);
 }
 
-cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window,
-                                  size_t m, cg_polygon_set *result)
+cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window, size_t m,
+                                  cg_polygon_set *result)
 {
     if (!result)
         return CG_EINVAL;
@@ -223,16 +223,17 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
                 double best_area = INFINITY;
                 for (size_t o = 0; o < nr; o++) {
                     double a = cg_polygon_set_ring_area(result, o);
-                    if (a > 0 && a < best_area &&
-                        point_in(result->points + result->ring_start[o],
-                                 result->ring_start[o + 1] - result->ring_start[o], q)) {
+                    if (a > 0 && a < best_area
+                        && point_in(result->points + result->ring_start[o],
+                                    result->ring_start[o + 1] - result->ring_start[o], q)) {
                         best = o;
                         best_area = a;
                     }
                 }
                 if (best == r)
                     st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[h],
-                                                 result->ring_start[h + 1] - result->ring_start[h], 0);
+                                                 result->ring_start[h + 1] - result->ring_start[h],
+                                                 0);
             }
         }
         cg_polygon_set_clear(result);

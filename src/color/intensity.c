@@ -112,8 +112,8 @@ static float quantize_float(double v, double top)
 
 /* Floyd-Steinberg on a working copy in double (errors accumulate in double
  * so the total is kept to rounding). */
-static cg_status floyd_steinberg(const float *in, float *out, int width, int height,
-                                 size_t stride, int levels)
+static cg_status floyd_steinberg(const float *in, float *out, int width, int height, size_t stride,
+                                 int levels)
 {
     size_t w = (size_t)width;
     double *cur = calloc(w + 2, sizeof *cur), *next = calloc(w + 2, sizeof *next);
@@ -178,8 +178,7 @@ cg_status cg_dither_plane(const float *in, float *out, int width, int height, si
     case CG_DITHER_BAYER2: ordered(in, out, width, height, stride, levels, 2); return CG_OK;
     case CG_DITHER_BAYER4: ordered(in, out, width, height, stride, levels, 4); return CG_OK;
     case CG_DITHER_BAYER8: ordered(in, out, width, height, stride, levels, 8); return CG_OK;
-    case CG_DITHER_FLOYD_STEINBERG:
-        return floyd_steinberg(in, out, width, height, stride, levels);
+    case CG_DITHER_FLOYD_STEINBERG: return floyd_steinberg(in, out, width, height, stride, levels);
     default: return CG_EINVAL;
     }
 }
@@ -221,8 +220,7 @@ static const int halftone4[16] = {12, 5, 6, 13, 4, 0, 1, 7, 11, 3, 2, 8, 15, 10,
 cg_status cg_halftone_plane(const float *in, int width, int height, size_t stride, int cell,
                             uint8_t *out)
 {
-    if (!in || !out || width <= 0 || height <= 0 || stride < (size_t)width || cell < 2
-        || cell > 4)
+    if (!in || !out || width <= 0 || height <= 0 || stride < (size_t)width || cell < 2 || cell > 4)
         return CG_EINVAL;
     const int *rank = cell == 2 ? halftone2 : cell == 3 ? halftone3 : halftone4;
     size_t out_width = (size_t)width * (size_t)cell;

@@ -15,7 +15,7 @@
 #if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
 #define CG_SIMD_DISPATCH 1
 #define CG_TARGET_AVX2 __attribute__((target("avx2")))
-#define CG_TARGET_AVX512                                                                  \
+#define CG_TARGET_AVX512 \
     __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq,prefer-vector-width=512")))
 #else
 #define CG_TARGET_AVX2
@@ -37,13 +37,13 @@ static inline int cg_simd_level(void)
 
 /* Defines the three variants NAME, NAME_avx2 and NAME_avx512 with a macro
  * DEFINE(NAME, ATTRIBUTES, ...). */
-#define CG_SIMD_VARIANTS(DEFINE, NAME, ...)                                                \
-    DEFINE(NAME, , __VA_ARGS__)                                                            \
-    DEFINE(NAME##_avx2, CG_TARGET_AVX2, __VA_ARGS__)                                       \
+#define CG_SIMD_VARIANTS(DEFINE, NAME, ...)          \
+    DEFINE(NAME, , __VA_ARGS__)                      \
+    DEFINE(NAME##_avx2, CG_TARGET_AVX2, __VA_ARGS__) \
     DEFINE(NAME##_avx512, CG_TARGET_AVX512, __VA_ARGS__)
 
 /* The one of three variants for this CPU. */
-#define CG_SIMD_PICK(base, avx2, avx512)                                                  \
+#define CG_SIMD_PICK(base, avx2, avx512) \
     (cg_simd_level() == 2 ? (avx512) : cg_simd_level() == 1 ? (avx2) : (base))
 
 #endif

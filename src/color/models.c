@@ -127,8 +127,8 @@ cg_vec3 cg_hsl_to_rgb(cg_vec3 hsl)
         return cg_vec3_make(l, l, l);
     double m2 = l <= 0.5 ? l * (1 + s) : l + s - l * s;
     double m1 = 2 * l - m2;
-    return unit3(cg_vec3_make(hsl_value(m1, m2, h + 120), hsl_value(m1, m2, h),
-                              hsl_value(m1, m2, h - 120)));
+    return unit3(
+        cg_vec3_make(hsl_value(m1, m2, h + 120), hsl_value(m1, m2, h), hsl_value(m1, m2, h - 120)));
 }
 
 cg_vec3 cg_rgb_to_cmy(cg_vec3 rgb)
@@ -169,10 +169,9 @@ static cg_vec3 mul3(const double m[3][3], cg_vec3 v)
 static const double yiq_from_rgb[3][3] = {
     {0.299, 0.587, 0.114}, {0.596, -0.275, -0.321}, {0.212, -0.523, 0.311}};
 /* The exact inverse (computed in rational arithmetic, rounded to double). */
-static const double rgb_from_yiq[3][3] = {
-    {1, 0.95568806036115672, 0.61985809445637075},
-    {1, -0.2715817969440586, -0.64687381613840134},
-    {1, -1.108177326682662, 1.7050645599191818}};
+static const double rgb_from_yiq[3][3] = {{1, 0.95568806036115672, 0.61985809445637075},
+                                          {1, -0.2715817969440586, -0.64687381613840134},
+                                          {1, -1.108177326682662, 1.7050645599191818}};
 
 cg_vec3 cg_rgb_to_yiq(cg_vec3 rgb)
 {
@@ -409,8 +408,7 @@ static void from_rgb(cg_color_model to, cg_vec3 rgb, double *out)
     }
 }
 
-cg_status cg_color_convert(cg_color_model from, cg_color_model to, const double *in,
-                           double *out)
+cg_status cg_color_convert(cg_color_model from, cg_color_model to, const double *in, double *out)
 {
     if (!valid_model(from) || !valid_model(to) || !in || !out)
         return CG_EINVAL;

@@ -134,42 +134,42 @@ void cg_color_from_bytes(cg_color_model model, const uint8_t *b, double *v)
  * (never the same memory: callers copy a block first); alpha is copied.
  * Deinterleaving to planar bytes first lets the arithmetic loop load
  * contiguous vectors. */
-#define HSV_FORWARD(NAME, ATTR, CH, HSL)                                             \
-    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
-    {                                                                                \
-        uint8_t pr[BLOCK], pg[BLOCK], pb[BLOCK], ph[BLOCK], ps[BLOCK];               \
-        for (int i = 0; i < m; i++) {                                                \
-            pr[i] = in[CH * i];                                                      \
-            pg[i] = in[CH * i + 1];                                                  \
-            pb[i] = in[CH * i + 2];                                                  \
-        }                                                                            \
-        for (int i = 0; i < m; i++) {                                                \
-            float r = pr[i], g = pg[i], b = pb[i];                                   \
-            float mx = r > g ? r : g;                                                \
-            mx = mx > b ? mx : b;                                                    \
-            float mn = r < g ? r : g;                                                \
-            mn = mn < b ? mn : b;                                                    \
-            float d = mx - mn;                                                       \
-            float t = mx == r ? g - b : (mx == g ? 2 * d + b - r : 4 * d + r - g);   \
-            t = t < 0 ? t + 6 * d : t;                                               \
-            float dd = d > 0 ? d : 1;                                                \
-            int h = (int)((512 * t + 6 * dd) / (12 * dd));                           \
+#define HSV_FORWARD(NAME, ATTR, CH, HSL)                                            \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m) \
+    {                                                                               \
+        uint8_t pr[BLOCK], pg[BLOCK], pb[BLOCK], ph[BLOCK], ps[BLOCK];              \
+        for (int i = 0; i < m; i++) {                                               \
+            pr[i] = in[CH * i];                                                     \
+            pg[i] = in[CH * i + 1];                                                 \
+            pb[i] = in[CH * i + 2];                                                 \
+        }                                                                           \
+        for (int i = 0; i < m; i++) {                                               \
+            float r = pr[i], g = pg[i], b = pb[i];                                  \
+            float mx = r > g ? r : g;                                               \
+            mx = mx > b ? mx : b;                                                   \
+            float mn = r < g ? r : g;                                               \
+            mn = mn < b ? mn : b;                                                   \
+            float d = mx - mn;                                                      \
+            float t = mx == r ? g - b : (mx == g ? 2 * d + b - r : 4 * d + r - g);  \
+            t = t < 0 ? t + 6 * d : t;                                              \
+            float dd = d > 0 ? d : 1;                                               \
+            int h = (int)((512 * t + 6 * dd) / (12 * dd));                          \
             /* saturation denominator: max (HSV); max + min or 510 - max - min  \
-             * (HSL, by the lightness) */                                           \
-            float sum = mx + mn;                                                     \
-            float den = HSL ? (sum <= 255 ? sum : 510 - sum) : mx;                   \
-            den = den > 0 ? den : 1;                                                 \
-            ph[i] = (uint8_t)h; /* 256 wraps to 0 */                                 \
-            ps[i] = (uint8_t)(int)((510 * d + den) / (2 * den));                     \
-            pb[i] = (uint8_t)(int)(HSL ? (sum + 1) * 0.5f : mx);                     \
-        }                                                                            \
-        for (int i = 0; i < m; i++) {                                                \
-            out[CH * i] = ph[i];                                                     \
-            out[CH * i + 1] = ps[i];                                                 \
-            out[CH * i + 2] = pb[i];                                                 \
-            if (CH == 4)                                                             \
-                out[CH * i + CH - 1] = in[CH * i + CH - 1];                          \
-        }                                                                            \
+             * (HSL, by the lightness) */   \
+            float sum = mx + mn;                                                    \
+            float den = HSL ? (sum <= 255 ? sum : 510 - sum) : mx;                  \
+            den = den > 0 ? den : 1;                                                \
+            ph[i] = (uint8_t)h; /* 256 wraps to 0 */                                \
+            ps[i] = (uint8_t)(int)((510 * d + den) / (2 * den));                    \
+            pb[i] = (uint8_t)(int)(HSL ? (sum + 1) * 0.5f : mx);                    \
+        }                                                                           \
+        for (int i = 0; i < m; i++) {                                               \
+            out[CH * i] = ph[i];                                                    \
+            out[CH * i + 1] = ps[i];                                                \
+            out[CH * i + 2] = pb[i];                                                \
+            if (CH == 4)                                                            \
+                out[CH * i + CH - 1] = in[CH * i + CH - 1];                         \
+        }                                                                           \
     }
 
 /* (H8, S8, V8) -> RGB: round(255 x) of the double formula with h / 60 =
@@ -191,28 +191,28 @@ static inline int hsv_channel(int n256, int h6, int s, int v)
     return (u + 1 + (u >> 8)) >> 8;
 }
 
-#define HSV_INVERSE(NAME, ATTR, CH)                                                  \
-    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)  \
-    {                                                                                \
-        uint8_t ph[BLOCK], ps[BLOCK], pv[BLOCK], pr[BLOCK], pg[BLOCK], pb[BLOCK];    \
-        for (int i = 0; i < m; i++) {                                                \
-            ph[i] = in[CH * i];                                                      \
-            ps[i] = in[CH * i + 1];                                                  \
-            pv[i] = in[CH * i + 2];                                                  \
-        }                                                                            \
-        for (int i = 0; i < m; i++) {                                                \
-            int h6 = 6 * ph[i], s = ps[i], v = pv[i];                                \
-            pr[i] = (uint8_t)hsv_channel(1280, h6, s, v);                            \
-            pg[i] = (uint8_t)hsv_channel(768, h6, s, v);                             \
-            pb[i] = (uint8_t)hsv_channel(256, h6, s, v);                             \
-        }                                                                            \
-        for (int i = 0; i < m; i++) {                                                \
-            out[CH * i] = pr[i];                                                     \
-            out[CH * i + 1] = pg[i];                                                 \
-            out[CH * i + 2] = pb[i];                                                 \
-            if (CH == 4)                                                             \
-                out[CH * i + CH - 1] = in[CH * i + CH - 1];                          \
-        }                                                                            \
+#define HSV_INVERSE(NAME, ATTR, CH)                                                 \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m) \
+    {                                                                               \
+        uint8_t ph[BLOCK], ps[BLOCK], pv[BLOCK], pr[BLOCK], pg[BLOCK], pb[BLOCK];   \
+        for (int i = 0; i < m; i++) {                                               \
+            ph[i] = in[CH * i];                                                     \
+            ps[i] = in[CH * i + 1];                                                 \
+            pv[i] = in[CH * i + 2];                                                 \
+        }                                                                           \
+        for (int i = 0; i < m; i++) {                                               \
+            int h6 = 6 * ph[i], s = ps[i], v = pv[i];                               \
+            pr[i] = (uint8_t)hsv_channel(1280, h6, s, v);                           \
+            pg[i] = (uint8_t)hsv_channel(768, h6, s, v);                            \
+            pb[i] = (uint8_t)hsv_channel(256, h6, s, v);                            \
+        }                                                                           \
+        for (int i = 0; i < m; i++) {                                               \
+            out[CH * i] = pr[i];                                                    \
+            out[CH * i + 1] = pg[i];                                                \
+            out[CH * i + 2] = pb[i];                                                \
+            if (CH == 4)                                                            \
+                out[CH * i + CH - 1] = in[CH * i + CH - 1];                         \
+        }                                                                           \
     }
 
 CG_SIMD_VARIANTS(HSV_FORWARD, hsv_forward_3, 3, 0)
@@ -247,20 +247,23 @@ static void run_blocks(const uint8_t *in, uint8_t *out, size_t n, int ch, block_
 
 static void rgb8_to_hsv8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_forward_4, hsv_forward_4_avx2, hsv_forward_4_avx512)
-                                   : CG_SIMD_PICK(hsv_forward_3, hsv_forward_3_avx2, hsv_forward_3_avx512));
+    run_blocks(in, out, n, ch,
+               ch == 4 ? CG_SIMD_PICK(hsv_forward_4, hsv_forward_4_avx2, hsv_forward_4_avx512)
+                       : CG_SIMD_PICK(hsv_forward_3, hsv_forward_3_avx2, hsv_forward_3_avx512));
 }
 
 static void rgb8_to_hsl8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsl_forward_4, hsl_forward_4_avx2, hsl_forward_4_avx512)
-                                   : CG_SIMD_PICK(hsl_forward_3, hsl_forward_3_avx2, hsl_forward_3_avx512));
+    run_blocks(in, out, n, ch,
+               ch == 4 ? CG_SIMD_PICK(hsl_forward_4, hsl_forward_4_avx2, hsl_forward_4_avx512)
+                       : CG_SIMD_PICK(hsl_forward_3, hsl_forward_3_avx2, hsl_forward_3_avx512));
 }
 
 static void hsv8_to_rgb8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(hsv_inverse_4, hsv_inverse_4_avx2, hsv_inverse_4_avx512)
-                                   : CG_SIMD_PICK(hsv_inverse_3, hsv_inverse_3_avx2, hsv_inverse_3_avx512));
+    run_blocks(in, out, n, ch,
+               ch == 4 ? CG_SIMD_PICK(hsv_inverse_4, hsv_inverse_4_avx2, hsv_inverse_4_avx512)
+                       : CG_SIMD_PICK(hsv_inverse_3, hsv_inverse_3_avx2, hsv_inverse_3_avx512));
 }
 
 /* ---- L*a*b* ---------------------------------------------------------------- */
@@ -296,29 +299,30 @@ static inline float clamp_byte(float v)
 
 /* Decoding goes to planar arrays first (table lookups), then the
  * arithmetic runs on contiguous floats, which vectorizes. */
-#define LAB_FORWARD(NAME, ATTR, CH)                                                    \
-    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)    \
-    {                                                                                  \
-        const float *dec = color_srgb_decode_table;                                       \
-        float lr[BLOCK], lg[BLOCK], lb[BLOCK];                                         \
-        for (int i = 0; i < m; i++) {                                                  \
-            lr[i] = dec[in[CH * i]];                                                   \
-            lg[i] = dec[in[CH * i + 1]];                                               \
-            lb[i] = dec[in[CH * i + 2]];                                               \
-        }                                                                              \
-        for (int i = 0; i < m; i++) {                                                  \
-            float r = lr[i], g = lg[i], b = lb[i];                                     \
-            float x = LAB_MX0 * r + LAB_MX1 * g + LAB_MX2 * b;                         \
-            float y = 0.2126f * r + 0.7152f * g + 0.0722f * b;                         \
-            float z = LAB_MZ0 * r + LAB_MZ1 * g + LAB_MZ2 * b;                         \
-            float fx = lab_f_fast(x), fy = lab_f_fast(y), fz = lab_f_fast(z);          \
-            out[CH * i] = (uint8_t)(int)(clamp_byte((116.0f * 2.55f) * fy - 16.0f * 2.55f) + 0.5f); \
+#define LAB_FORWARD(NAME, ATTR, CH)                                                           \
+    ATTR static void NAME(const uint8_t *restrict in, uint8_t *restrict out, int m)           \
+    {                                                                                         \
+        const float *dec = color_srgb_decode_table;                                           \
+        float lr[BLOCK], lg[BLOCK], lb[BLOCK];                                                \
+        for (int i = 0; i < m; i++) {                                                         \
+            lr[i] = dec[in[CH * i]];                                                          \
+            lg[i] = dec[in[CH * i + 1]];                                                      \
+            lb[i] = dec[in[CH * i + 2]];                                                      \
+        }                                                                                     \
+        for (int i = 0; i < m; i++) {                                                         \
+            float r = lr[i], g = lg[i], b = lb[i];                                            \
+            float x = LAB_MX0 * r + LAB_MX1 * g + LAB_MX2 * b;                                \
+            float y = 0.2126f * r + 0.7152f * g + 0.0722f * b;                                \
+            float z = LAB_MZ0 * r + LAB_MZ1 * g + LAB_MZ2 * b;                                \
+            float fx = lab_f_fast(x), fy = lab_f_fast(y), fz = lab_f_fast(z);                 \
+            out[CH * i] = (uint8_t)(int)(clamp_byte((116.0f * 2.55f) * fy - 16.0f * 2.55f)    \
+                                         + 0.5f);                                             \
             out[CH * i + 1] = (uint8_t)(int)(clamp_byte(500.0f * (fx - fy) + 128.0f) + 0.5f); \
             out[CH * i + 2] = (uint8_t)(int)(clamp_byte(200.0f * (fy - fz) + 128.0f) + 0.5f); \
-        }                                                                              \
-        if (CH == 4)                                                                   \
-            for (int i = 0; i < m; i++)                                                \
-                out[CH * i + CH - 1] = in[CH * i + CH - 1];                            \
+        }                                                                                     \
+        if (CH == 4)                                                                          \
+            for (int i = 0; i < m; i++)                                                       \
+                out[CH * i + CH - 1] = in[CH * i + CH - 1];                                   \
     }
 
 /* Rows of the sRGB matrix for X / Xn and Z / Zn. */
@@ -334,8 +338,9 @@ CG_SIMD_VARIANTS(LAB_FORWARD, lab_forward_4, 4)
 
 static void rgb8_to_lab8(const uint8_t *in, uint8_t *out, size_t n, int ch)
 {
-    run_blocks(in, out, n, ch, ch == 4 ? CG_SIMD_PICK(lab_forward_4, lab_forward_4_avx2, lab_forward_4_avx512)
-                                   : CG_SIMD_PICK(lab_forward_3, lab_forward_3_avx2, lab_forward_3_avx512));
+    run_blocks(in, out, n, ch,
+               ch == 4 ? CG_SIMD_PICK(lab_forward_4, lab_forward_4_avx2, lab_forward_4_avx512)
+                       : CG_SIMD_PICK(lab_forward_3, lab_forward_3_avx2, lab_forward_3_avx512));
 }
 
 /* ---- generic paths through double ----------------------------------------- */
@@ -354,8 +359,7 @@ static void via_double(cg_color_model from, cg_color_model to, const uint8_t *in
     }
 }
 
-static int buffer_args_ok(cg_color_model model, const uint8_t *in, const uint8_t *out,
-                          int channels)
+static int buffer_args_ok(cg_color_model model, const uint8_t *in, const uint8_t *out, int channels)
 {
     return in && out && (channels == 3 || channels == 4) && (int)model >= 0
            && model < CG_MODEL_COUNT && model != CG_MODEL_CMYK;

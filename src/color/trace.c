@@ -6,8 +6,7 @@
 
 #include <math.h>
 
-static int emit(const char *quantity, const char *formula, double value, cg_step_fn fn,
-                void *user)
+static int emit(const char *quantity, const char *formula, double value, cg_step_fn fn, void *user)
 {
     core_step s;
     core_step_begin(&s, "formulas");
@@ -81,8 +80,9 @@ cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void 
             saturation = first <= 0.5 ? delta / sum : delta / (2 - sum);
             if (saturation > 1)
                 saturation = 1;
-            if (emit("S", first <= 0.5 ? "L <= 1/2: delta / (max + min)"
-                                       : "L > 1/2: delta / (2 - max - min)",
+            if (emit("S",
+                     first <= 0.5 ? "L <= 1/2: delta / (max + min)"
+                                  : "L > 1/2: delta / (2 - max - min)",
                      saturation, step, user))
                 return CG_OK;
         }

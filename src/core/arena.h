@@ -41,10 +41,10 @@
 #define CORE_ARENA_ALIGN 16
 
 typedef struct core_arena {
-    char *base; /* the allocation carved, or NULL while measuring */
+    char *base;      /* the allocation carved, or NULL while measuring */
     size_t capacity; /* its size in bytes */
-    size_t used; /* bytes taken so far, the padding included */
-    int failed; /* a take did not fit, or its size overflowed */
+    size_t used;     /* bytes taken so far, the padding included */
+    int failed;      /* a take did not fit, or its size overflowed */
 } core_arena;
 
 /* An arena that only measures: its takes return NULL and add up `used`. */

@@ -51,11 +51,11 @@ cg_status core_array_reserve_from(void **data, size_t *capacity, size_t count, s
                                   size_t element_size, const void *initial);
 
 /* A typed array: `data` holds `count` elements in room for `capacity`. */
-#define CORE_ARRAY(type)    \
-    struct {                \
-        type *data;         \
-        size_t count;       \
-        size_t capacity;    \
+#define CORE_ARRAY(type) \
+    struct {             \
+        type *data;      \
+        size_t count;    \
+        size_t capacity; \
     }
 
 /* Room for `needed` elements in typed array a (a pointer to a CORE_ARRAY). */
@@ -63,16 +63,16 @@ cg_status core_array_reserve_from(void **data, size_t *capacity, size_t count, s
     core_array_reserve((void **)&(a)->data, &(a)->capacity, (needed), sizeof *(a)->data)
 
 /* Appends value to typed array a: CG_OK, or CG_ENOMEM with a unchanged. */
-#define core_array_push(a, value)                                                  \
-    (core_array_reserve_for((a), (a)->count + 1) == CG_OK                          \
-         ? ((a)->data[(a)->count++] = (value), CG_OK)                              \
+#define core_array_push(a, value)                         \
+    (core_array_reserve_for((a), (a)->count + 1) == CG_OK \
+         ? ((a)->data[(a)->count++] = (value), CG_OK)     \
          : CG_ENOMEM)
 
 /* Frees typed array a's storage and empties it. */
-#define core_array_free(a)             \
-    do {                               \
-        free((a)->data);               \
-        (a)->data = NULL;              \
+#define core_array_free(a)              \
+    do {                                \
+        free((a)->data);                \
+        (a)->data = NULL;               \
         (a)->count = (a)->capacity = 0; \
     } while (0)
 

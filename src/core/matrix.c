@@ -98,8 +98,8 @@ cg_mat3 cg_mat3_transpose(cg_mat3 a)
 double cg_mat3_determinant(cg_mat3 a)
 {
     return a.m[0][0] * (a.m[1][1] * a.m[2][2] - a.m[1][2] * a.m[2][1])
-         - a.m[0][1] * (a.m[1][0] * a.m[2][2] - a.m[1][2] * a.m[2][0])
-         + a.m[0][2] * (a.m[1][0] * a.m[2][1] - a.m[1][1] * a.m[2][0]);
+           - a.m[0][1] * (a.m[1][0] * a.m[2][2] - a.m[1][2] * a.m[2][0])
+           + a.m[0][2] * (a.m[1][0] * a.m[2][1] - a.m[1][1] * a.m[2][0]);
 }
 
 cg_status cg_mat3_inverse(cg_mat3 a, cg_mat3 *out)
@@ -135,8 +135,8 @@ cg_mat4 cg_mat4_mul(cg_mat4 a, cg_mat4 b)
     cg_mat4 r;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++)
-            r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j]
-                      + a.m[i][2] * b.m[2][j] + a.m[i][3] * b.m[3][j];
+            r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j]
+                        + a.m[i][3] * b.m[3][j];
     return r;
 }
 

@@ -78,4 +78,3 @@ cg_status safe_file_close(safe_file *o, cg_status status, cg_error *err)
     o->temporary = NULL;
     return status;
 }
-

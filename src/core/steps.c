@@ -143,14 +143,17 @@ static size_t step_size(const cg_step *s)
     size += (size_t)(s->geometry_count + s->kept_count) * sizeof(cg_vec2);
     size += (size_t)s->pixel_count * (2 * sizeof(int) + (s->intensity ? sizeof(double) : 0));
     for (int i = 0; i < s->field_count; i++)
-        size += s->fields[i].point_count * sizeof(cg_vec2) + s->fields[i].real_count * sizeof(double);
+        size += s->fields[i].point_count * sizeof(cg_vec2)
+                + s->fields[i].real_count * sizeof(double);
     size += text_size(s->phase);
     for (int i = 0; i < s->field_count; i++)
         size += text_size(s->fields[i].name) + text_size(s->fields[i].text);
     return size;
 }
 
-typedef struct copier { char *at; } copier;
+typedef struct copier {
+    char *at;
+} copier;
 
 /* Copies n bytes to the copier's next place (doubles and pointers first, so
  * every piece stays aligned; texts last). */
@@ -186,7 +189,8 @@ int cg_step_log_record(void *user, const cg_step *s)
     l->step.fields = fields;
     l->step.geometry = copy_bytes(&c, s->geometry, (size_t)s->geometry_count * sizeof(cg_vec2));
     l->step.kept = copy_bytes(&c, s->kept, (size_t)s->kept_count * sizeof(cg_vec2));
-    l->step.intensity = copy_bytes(&c, s->intensity, s->intensity ? (size_t)s->pixel_count * sizeof(double) : 0);
+    l->step.intensity = copy_bytes(&c, s->intensity,
+                                   s->intensity ? (size_t)s->pixel_count * sizeof(double) : 0);
     for (int i = 0; i < s->field_count; i++) {
         fields[i].points = copy_bytes(&c, s->fields[i].points,
                                       s->fields[i].point_count * sizeof(cg_vec2));

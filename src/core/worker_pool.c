@@ -24,10 +24,10 @@ struct core_worker_pool {
     int workers;               /* the caller and the threads started */
     int inside;                /* threads inside the open run's task */
     int quit;
-    unsigned long generation;  /* runs opened */
-    core_worker_task task;     /* the open run's; NULL once it is closed */
+    unsigned long generation; /* runs opened */
+    core_worker_task task;    /* the open run's; NULL once it is closed */
     void *context;
-    pthread_t *ids;            /* workers - 1 of them */
+    pthread_t *ids; /* workers - 1 of them */
     pool_thread *threads;
 };
 
@@ -82,8 +82,7 @@ static int init_sync(core_worker_pool *pool)
     return 0;
 }
 
-cg_status core_worker_pool_create_with(int workers, core_thread_start start,
-                                       core_worker_pool **out)
+cg_status core_worker_pool_create_with(int workers, core_thread_start start, core_worker_pool **out)
 {
     if (!out)
         return CG_EINVAL;

@@ -75,9 +75,9 @@ void core_worker_pool_run(core_worker_pool *pool, core_worker_task task, void *c
 /* ---- phases: blocks claimed from a counter, counted when done ------------ */
 
 typedef struct core_worker_phase {
-    atomic_size_t next;  /* the next block to claim */
-    atomic_size_t done;  /* blocks finished */
-    size_t blocks;       /* blocks in the phase */
+    atomic_size_t next; /* the next block to claim */
+    atomic_size_t done; /* blocks finished */
+    size_t blocks;      /* blocks in the phase */
 } core_worker_phase;
 
 /* A phase of `blocks` blocks, none claimed (before the run starts). */

@@ -1,15 +1,12 @@
 /* Parametric cubic segments Q(t) = T M G (section 2.3.1) in four bases. */
 #include "cg/curve.h"
 
-static const double hermite[4][4] = {
-    {2, -2, 1, 1}, {-3, 3, -2, -1}, {0, 0, 1, 0}, {1, 0, 0, 0}};
-static const double bezier[4][4] = {
-    {-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}};
-static const double bspline[4][4] = {
-    {-1 / 6.0, 3 / 6.0, -3 / 6.0, 1 / 6.0},
-    {3 / 6.0, -6 / 6.0, 3 / 6.0, 0},
-    {-3 / 6.0, 0, 3 / 6.0, 0},
-    {1 / 6.0, 4 / 6.0, 1 / 6.0, 0}};
+static const double hermite[4][4] = {{2, -2, 1, 1}, {-3, 3, -2, -1}, {0, 0, 1, 0}, {1, 0, 0, 0}};
+static const double bezier[4][4] = {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}};
+static const double bspline[4][4] = {{-1 / 6.0, 3 / 6.0, -3 / 6.0, 1 / 6.0},
+                                     {3 / 6.0, -6 / 6.0, 3 / 6.0, 0},
+                                     {-3 / 6.0, 0, 3 / 6.0, 0},
+                                     {1 / 6.0, 4 / 6.0, 1 / 6.0, 0}};
 static const double catmull_rom[4][4] = {
     {-0.5, 1.5, -1.5, 0.5}, {1, -2.5, 2, -0.5}, {-0.5, 0, 0.5, 0}, {0, 1, 0, 0}};
 

@@ -88,8 +88,8 @@ cg_status curve_flatten_depth(const cg_vec2 *control, int count, double toleranc
     return CG_OK;
 }
 
-cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance,
-                            cg_point_sink sink, void *user)
+cg_status cg_bezier_flatten(const cg_vec2 *control, int count, double tolerance, cg_point_sink sink,
+                            void *user)
 {
     if (!control || !sink || count < 2 || count > CG_BEZIER_MAX_POINTS || !(tolerance > 0)
         || !isfinite(tolerance) || !curve_points_finite(control, count))

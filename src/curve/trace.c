@@ -192,6 +192,7 @@ cg_status cg_bezier_flatten_steps(const cg_vec2 *control, int count, double tole
     cg_status status = curve_flatten_depth(control, count, tolerance, &depth);
     if (status != CG_OK)
         return status;
-    flatten_trace f = {count, depth, tolerance, tolerance * tolerance, control[0], 0, step, user, 0};
+    flatten_trace f = {count, depth, tolerance, tolerance * tolerance, control[0], 0,
+                       step,  user,  0};
     return trace_piece(&f, control, 0, 0, 1);
 }

@@ -17,8 +17,14 @@ static int finite4(double a, double b, double c, double d)
     return isfinite(a) && isfinite(b) && isfinite(c) && isfinite(d);
 }
 
-static inline double min2(double a, double b) { return a < b ? a : b; }
-static inline double max2(double a, double b) { return a > b ? a : b; }
+static inline double min2(double a, double b)
+{
+    return a < b ? a : b;
+}
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
 
 /* floor for the finite values used here (well inside the long long range). */
 static inline long long floor_ll(double v)
@@ -32,8 +38,12 @@ static void line_aa(const cg_painter *painter, double x0, double y0, double x1, 
     int swap = fabs(y1 - y0) > fabs(x1 - x0);
     double u0 = swap ? y0 : x0, v0 = swap ? x0 : y0, u1 = swap ? y1 : x1, v1 = swap ? x1 : y1;
     if (u1 < u0) {
-        double t = u0; u0 = u1; u1 = t;
-        t = v0; v0 = v1; v1 = t;
+        double t = u0;
+        u0 = u1;
+        u1 = t;
+        t = v0;
+        v0 = v1;
+        v1 = t;
     }
     double du = u1 - u0;
     if (!(du > 0))
@@ -46,7 +56,9 @@ static void line_aa(const cg_painter *painter, double x0, double y0, double x1, 
     if (m != 0) {
         double ua = u0 + (-h - v0) / m, ub = u0 + ((double)vmax + h - v0) / m;
         if (ua > ub) {
-            double t = ua; ua = ub; ub = t;
+            double t = ua;
+            ua = ub;
+            ub = t;
         }
         lo = max2(lo, ua - 1);
         hi = min2(hi, ub + 1);
@@ -127,7 +139,8 @@ static void ring_aa(const cg_painter *painter, double cx, double cy, double rx, 
         if (fabs(dy) >= oy)
             continue;
         double outer = ox * sqrt(1 - (dy / oy) * (dy / oy));
-        double inner = (ix > 0 && iy > 0 && fabs(dy) < iy) ? ix * sqrt(1 - (dy / iy) * (dy / iy)) : -1;
+        double inner = (ix > 0 && iy > 0 && fabs(dy) < iy) ? ix * sqrt(1 - (dy / iy) * (dy / iy))
+                                                           : -1;
         /* Left and right runs, or one run across when there is no hole. */
         double runs[2][2] = {{cx - outer, inner >= 0 ? cx - inner : cx + outer},
                              {cx + inner, cx + outer}};

@@ -47,7 +47,8 @@ static cg_status draw_points(cg_image *image, const point_list *list, cg_draw_mo
 static cg_status draw_beziers(cg_image *image, const cg_vec2 *control, int segments, int stride,
                               int points, double tolerance, cg_draw_mode mode, cg_rgba8 color)
 {
-    if (!image || !image->data || !control || (mode != CG_DRAW_ALIASED && mode != CG_DRAW_ANTIALIASED))
+    if (!image || !image->data || !control
+        || (mode != CG_DRAW_ALIASED && mode != CG_DRAW_ANTIALIASED))
         return CG_EINVAL;
     int same = 1;
     for (int s = 0; s < segments; s++)
@@ -127,8 +128,8 @@ cg_status cg_draw_bspline(cg_image *image, const cg_vec2 *control, int count, do
     return draw_spline(image, CG_BASIS_BSPLINE, control, count, tolerance, mode, color);
 }
 
-cg_status cg_draw_catmull_rom(cg_image *image, const cg_vec2 *control, int count,
-                              double tolerance, cg_draw_mode mode, cg_rgba8 color)
+cg_status cg_draw_catmull_rom(cg_image *image, const cg_vec2 *control, int count, double tolerance,
+                              cg_draw_mode mode, cg_rgba8 color)
 {
     return draw_spline(image, CG_BASIS_CATMULL_ROM, control, count, tolerance, mode, color);
 }

@@ -42,7 +42,8 @@ static void emit4(const ellipse *e, long long x, long long y)
 static long long row_of_column(const ellipse *e, long long x)
 {
     cg_wide rhs = 4 * e->a2 * e->b2 - 4 * e->b2 * x * x;
-    double t = (double)e->ry * sqrt(fmax(0, 1 - ((double)x / (double)e->rx) * ((double)x / (double)e->rx)));
+    double t = (double)e->ry
+               * sqrt(fmax(0, 1 - ((double)x / (double)e->rx) * ((double)x / (double)e->rx)));
     long long y = (long long)(t - 0.5) - 1;
     if (y < 0)
         y = 0;
@@ -57,7 +58,8 @@ static long long row_of_column(const ellipse *e, long long x)
 static long long column_of_row(const ellipse *e, long long y)
 {
     cg_wide rhs = 4 * e->a2 * e->b2 - 4 * e->a2 * y * y;
-    double t = (double)e->rx * sqrt(fmax(0, 1 - ((double)y / (double)e->ry) * ((double)y / (double)e->ry)));
+    double t = (double)e->rx
+               * sqrt(fmax(0, 1 - ((double)y / (double)e->ry) * ((double)y / (double)e->ry)));
     long long x = (long long)(t - 0.5) - 1;
     if (x < 0)
         x = 0;
@@ -73,8 +75,10 @@ static long long column_of_row(const ellipse *e, long long y)
 static int visible_offsets(long long centre, long long size, long long last, long long *lo,
                            long long *hi)
 {
-    long long a1 = -centre > 0 ? -centre : 0, b1 = size - 1 - centre < last ? size - 1 - centre : last;
-    long long a2 = centre - size + 1 > 0 ? centre - size + 1 : 0, b2 = centre < last ? centre : last;
+    long long a1 = -centre > 0 ? -centre : 0,
+              b1 = size - 1 - centre < last ? size - 1 - centre : last;
+    long long a2 = centre - size + 1 > 0 ? centre - size + 1 : 0,
+              b2 = centre < last ? centre : last;
     int one = a1 <= b1, two = a2 <= b2;
     if (!one && !two)
         return 0;
@@ -97,7 +101,8 @@ static void walk_ellipse(const ellipse *e, long long width, long long height)
     }
     /* Last column of region 1 and last row of region 2: x^2 (a2 + b2) <= a2^2. */
     cg_wide sum = e->a2 + e->b2;
-    long long xs = (long long)((double)e->a2 / sqrt((double)sum)), ys = (long long)((double)e->b2 / sqrt((double)sum));
+    long long xs = (long long)((double)e->a2 / sqrt((double)sum)),
+              ys = (long long)((double)e->b2 / sqrt((double)sum));
     while (xs > 0 && (cg_wide)xs * xs * sum > e->a2 * e->a2)
         xs--;
     while ((cg_wide)(xs + 1) * (xs + 1) * sum <= e->a2 * e->a2)
@@ -111,7 +116,7 @@ static void walk_ellipse(const ellipse *e, long long width, long long height)
         for (long long x = lo; x <= hi; x++)
             emit4(e, x, row_of_column(e, x));
     long long ax = xs, ay = row_of_column(e, xs); /* region 1's last pixel */
-    long long bx = column_of_row(e, ys), by = ys;  /* region 2's last pixel */
+    long long bx = column_of_row(e, ys), by = ys; /* region 2's last pixel */
     int same = ax == bx && ay == by;
     if (visible_offsets(e->cy, height, ys, &lo, &hi))
         for (long long y = lo; y <= hi; y++)

@@ -94,14 +94,13 @@ static inline void cg_cover_add(cg_cover_batch *batch, int x, int y, float cover
 
 /* The Bresenham line with the options polylines need: skip_first leaves out
  * the pixel (x0, y0) (already drawn as the end of the previous segment). */
-void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
-                          int skip_first);
+void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1, int skip_first);
 
 /* The first-octant form of a line: the walk starts at (u0, v0) in (major,
  * minor) coordinates, du >= dv >= 0, the minor coordinate moving by sv. */
 typedef struct cg_line_frame {
-    int x_major;        /* major axis is x */
-    int swapped;        /* endpoints were swapped to walk from the smaller major coordinate */
+    int x_major; /* major axis is x */
+    int swapped; /* endpoints were swapped to walk from the smaller major coordinate */
     long long u0, v0, du, dv;
     int sv;
 } cg_line_frame;

@@ -19,8 +19,12 @@ void draw_line_frame_make(int x0, int y0, int x1, int y1, cg_line_frame *frame)
     frame->x_major = adx >= ady;
     frame->swapped = frame->x_major ? dx < 0 : dy < 0;
     if (frame->swapped) {
-        int t = x0; x0 = x1; x1 = t;
-        t = y0; y0 = y1; y1 = t;
+        int t = x0;
+        x0 = x1;
+        x1 = t;
+        t = y0;
+        y0 = y1;
+        y1 = t;
         dx = -dx;
         dy = -dy;
     }
@@ -49,8 +53,7 @@ static cg_wide ceil_div(cg_wide a, cg_wide b)
     return -floor_div(-a, b);
 }
 
-void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1,
-                          int skip_first)
+void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1, int skip_first)
 {
     cg_line_frame l;
     draw_line_frame_make(x0, y0, x1, y1, &l);
@@ -88,9 +91,9 @@ void draw_line_clipped(const cg_painter *painter, int x0, int y0, int x1, int y1
         if (kmin > kmax)
             return;
     }
-    long long j = l.du > 0 ? (long long)floor_div((cg_wide)2 * l.dv * kmin + l.du - 1,
-                                                   (cg_wide)2 * l.du)
-                           : 0;
+    long long j = l.du > 0
+                      ? (long long)floor_div((cg_wide)2 * l.dv * kmin + l.du - 1, (cg_wide)2 * l.du)
+                      : 0;
     long long f = (long long)((cg_wide)2 * l.dv * (kmin + 1) - (cg_wide)l.du * (2 * j + 1));
     long long de = 2 * l.dv, dne = 2 * (l.dv - l.du);
     long long u = l.u0 + kmin, v = l.v0 + l.sv * j, n = kmax - kmin;
@@ -147,7 +150,6 @@ cg_status cg_draw_polyline(cg_image *image, const int *xy, int count, cg_rgba8 c
         return CG_OK;
     }
     for (int i = 1; i < count; i++)
-        draw_line_clipped(&painter, xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1],
-                             i > 1);
+        draw_line_clipped(&painter, xy[2 * i - 2], xy[2 * i - 1], xy[2 * i], xy[2 * i + 1], i > 1);
     return CG_OK;
 }

@@ -2,8 +2,8 @@
 #include "internal.h"
 
 cg_status cg_line_trace(int x0, int y0, int x1, int y1,
-                        int (*step)(void *user, const cg_line_step *s), void *user,
-                        long long *dx, long long *dy, long long *de, long long *dne)
+                        int (*step)(void *user, const cg_line_step *s), void *user, long long *dx,
+                        long long *dy, long long *de, long long *dne)
 {
     cg_line_frame l;
     draw_line_frame_make(x0, y0, x1, y1, &l);

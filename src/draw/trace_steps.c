@@ -140,8 +140,8 @@ typedef struct circle_relay {
  * the centre: 1, 4 or 8 pixels. */
 static int circle_mirrors(int cx, int cy, long long x, long long y, int xy[16])
 {
-    long long offsets[8][2] = {{x, y},   {y, x},   {-x, y},  {-y, x},
-                               {x, -y},  {y, -x},  {-x, -y}, {-y, -x}};
+    long long offsets[8][2] = {{x, y},  {y, x},  {-x, y},  {-y, x},
+                               {x, -y}, {y, -x}, {-x, -y}, {-y, -x}};
     int n = 0;
     for (int i = 0; i < 8; i++) {
         int seen = 0;
@@ -346,8 +346,10 @@ cg_status cg_ellipse_steps(int cx, int cy, int rx, int ry, cg_step_fn step, void
         /* d2 = 4F(x + 1/2, y) at the previous column: >= 0 keeps it (S). */
         cg_wide d = four_f_column_midpoint(&e, x, y);
         long long next = ellipse_column(&e, y, x);
-        const char *move = y == ys ? (same ? "switch (region 1's last pixel)" : "switch")
-                           : next == x ? "S" : next == x + 1 ? "SE" : "SE (several columns)";
+        const char *move = y == ys         ? (same ? "switch (region 1's last pixel)" : "switch")
+                           : next == x     ? "S"
+                           : next == x + 1 ? "SE"
+                                           : "SE (several columns)";
         x = next;
         if (y == ys && same)
             continue;

@@ -147,19 +147,58 @@ static void blend_colors(cg_blend_mode mode, const float *cb, const float *cs, f
 static void operator_factors(cg_composite_operator op, float as, float ab, float *fa, float *fb)
 {
     switch (op) {
-    case CG_OPERATOR_CLEAR: *fa = 0; *fb = 0; break;
-    case CG_OPERATOR_SOURCE: *fa = 1; *fb = 0; break;
-    case CG_OPERATOR_DESTINATION: *fa = 0; *fb = 1; break;
-    case CG_OPERATOR_DESTINATION_OVER: *fa = 1 - ab; *fb = 1; break;
-    case CG_OPERATOR_IN: *fa = ab; *fb = 0; break;
-    case CG_OPERATOR_DESTINATION_IN: *fa = 0; *fb = as; break;
-    case CG_OPERATOR_OUT: *fa = 1 - ab; *fb = 0; break;
-    case CG_OPERATOR_DESTINATION_OUT: *fa = 0; *fb = 1 - as; break;
-    case CG_OPERATOR_ATOP: *fa = ab; *fb = 1 - as; break;
-    case CG_OPERATOR_DESTINATION_ATOP: *fa = 1 - ab; *fb = as; break;
-    case CG_OPERATOR_XOR: *fa = 1 - ab; *fb = 1 - as; break;
-    case CG_OPERATOR_PLUS: *fa = 1; *fb = 1; break;
-    default: *fa = 1; *fb = 1 - as; break; /* over */
+    case CG_OPERATOR_CLEAR:
+        *fa = 0;
+        *fb = 0;
+        break;
+    case CG_OPERATOR_SOURCE:
+        *fa = 1;
+        *fb = 0;
+        break;
+    case CG_OPERATOR_DESTINATION:
+        *fa = 0;
+        *fb = 1;
+        break;
+    case CG_OPERATOR_DESTINATION_OVER:
+        *fa = 1 - ab;
+        *fb = 1;
+        break;
+    case CG_OPERATOR_IN:
+        *fa = ab;
+        *fb = 0;
+        break;
+    case CG_OPERATOR_DESTINATION_IN:
+        *fa = 0;
+        *fb = as;
+        break;
+    case CG_OPERATOR_OUT:
+        *fa = 1 - ab;
+        *fb = 0;
+        break;
+    case CG_OPERATOR_DESTINATION_OUT:
+        *fa = 0;
+        *fb = 1 - as;
+        break;
+    case CG_OPERATOR_ATOP:
+        *fa = ab;
+        *fb = 1 - as;
+        break;
+    case CG_OPERATOR_DESTINATION_ATOP:
+        *fa = 1 - ab;
+        *fb = as;
+        break;
+    case CG_OPERATOR_XOR:
+        *fa = 1 - ab;
+        *fb = 1 - as;
+        break;
+    case CG_OPERATOR_PLUS:
+        *fa = 1;
+        *fb = 1;
+        break;
+    default:
+        *fa = 1;
+        *fb = 1 - as;
+        break; /* over */
     }
 }
 
@@ -196,14 +235,24 @@ cg_rgbaf cg_composite(cg_rgbaf source, cg_rgbaf backdrop, cg_composite_operator 
 
 /* ---- names ------------------------------------------------------------------------ */
 
-static const char *const operator_names[CG_OPERATOR_COUNT] = {
-    "over", "clear", "source", "destination", "destination-over", "in", "destination-in",
-    "out", "destination-out", "atop", "destination-atop", "xor", "plus"};
+static const char *const operator_names[CG_OPERATOR_COUNT] = {"over",
+                                                              "clear",
+                                                              "source",
+                                                              "destination",
+                                                              "destination-over",
+                                                              "in",
+                                                              "destination-in",
+                                                              "out",
+                                                              "destination-out",
+                                                              "atop",
+                                                              "destination-atop",
+                                                              "xor",
+                                                              "plus"};
 
 static const char *const blend_names[CG_BLEND_COUNT] = {
-    "normal", "multiply", "screen", "overlay", "darken", "lighten", "color-dodge",
-    "color-burn", "hard-light", "soft-light", "difference", "exclusion", "hue", "saturation",
-    "color", "luminosity"};
+    "normal",      "multiply",   "screen",     "overlay",    "darken",     "lighten",
+    "color-dodge", "color-burn", "hard-light", "soft-light", "difference", "exclusion",
+    "hue",         "saturation", "color",      "luminosity"};
 
 const char *cg_composite_operator_name(cg_composite_operator op)
 {
@@ -267,8 +316,8 @@ cg_status cg_rasterizer_set_compositing(cg_rasterizer *r, cg_compositing_space s
 
 /* k * composite(source, backdrop) + (1 - k) * backdrop: the operator within
  * the shape's coverage k. */
-cg_rgbaf fill_composite_covered(cg_rgbaf source, cg_rgbaf backdrop,
-                                         cg_composite_operator op, cg_blend_mode mode, float k)
+cg_rgbaf fill_composite_covered(cg_rgbaf source, cg_rgbaf backdrop, cg_composite_operator op,
+                                cg_blend_mode mode, float k)
 {
     if (op == CG_OPERATOR_OVER && mode == CG_BLEND_NORMAL) {
         /* the same, with k folded into the source */

@@ -34,18 +34,27 @@ static cg_status push_line(struct cg_rasterizer *r, double x0, double y0, double
     if (y0 == y1)
         return CG_OK;
     if (core_array_reserve((void **)&r->lines, &r->line_capacity, r->line_count + 1,
-                           sizeof *r->lines) != CG_OK)
+                           sizeof *r->lines)
+        != CG_OK)
         return CG_ENOMEM;
     fill_line l = {x0, y0, x1, y1};
     r->lines[r->line_count++] = l;
-    if (x0 < r->min_x) r->min_x = x0;
-    if (x1 < r->min_x) r->min_x = x1;
-    if (x0 > r->max_x) r->max_x = x0;
-    if (x1 > r->max_x) r->max_x = x1;
-    if (y0 < r->min_y) r->min_y = y0;
-    if (y1 < r->min_y) r->min_y = y1;
-    if (y0 > r->max_y) r->max_y = y0;
-    if (y1 > r->max_y) r->max_y = y1;
+    if (x0 < r->min_x)
+        r->min_x = x0;
+    if (x1 < r->min_x)
+        r->min_x = x1;
+    if (x0 > r->max_x)
+        r->max_x = x0;
+    if (x1 > r->max_x)
+        r->max_x = x1;
+    if (y0 < r->min_y)
+        r->min_y = y0;
+    if (y1 < r->min_y)
+        r->min_y = y1;
+    if (y0 > r->max_y)
+        r->max_y = y0;
+    if (y1 > r->max_y)
+        r->max_y = y1;
     return CG_OK;
 }
 
@@ -258,8 +267,7 @@ static inline int ceil_clipped(double v)
  * round), and asks for the pixels under its first cell (blended when the
  * band is painted: asking now hides the wait for memory). */
 static inline void deposit_step(float *cells, uint64_t *bits, double xa, double xb, double d,
-                                double s, const cg_image *image,
-                                const unsigned char **pixel_row)
+                                double s, const cg_image *image, const unsigned char **pixel_row)
 {
     int first = xa <= xb ? deposit_row(cells, bits, xa, xb, d, s)
                          : deposit_row(cells, bits, xb, xa, d, s);
@@ -280,8 +288,12 @@ static void deposit_line(float *accumulation, uint64_t *touched, size_t stride, 
 {
     double x0 = l->x0 - origin_x, y0 = l->y0, x1 = l->x1 - origin_x, y1 = l->y1, sign = 1;
     if (y0 > y1) {
-        double t = x0; x0 = x1; x1 = t;
-        t = y0; y0 = y1; y1 = t;
+        double t = x0;
+        x0 = x1;
+        x1 = t;
+        t = y0;
+        y0 = y1;
+        y1 = t;
         sign = -1;
     }
     double ys = y0 > band_top ? y0 : band_top, ye = y1 < band_bottom ? y1 : band_bottom;
@@ -369,8 +381,7 @@ static inline float sum_cells(float *row, int n, float acc, cg_fill_rule rule, u
 }
 
 /* Paints x0 .. x1 - 1 of row y with constant coverage c. */
-static void constant_span(const fill_painter *painter, int y, int x0, int x1, int c,
-                          uint8_t *cover)
+static void constant_span(const fill_painter *painter, int y, int x0, int x1, int c, uint8_t *cover)
 {
     if (x1 <= x0 || c == 0)
         return;
@@ -388,8 +399,8 @@ static void constant_span(const fill_painter *painter, int y, int x0, int x1, in
  * each pixel blended as its cell is summed; the pixels between touched
  * cells (a gap) have the coverage of the sum after the cell before. */
 static inline void render_row_solid(cg_image *image, const fill_blend_state *blend, float *row,
-                                    uint64_t *touched, int width, size_t words, int y,
-                                    int origin_x, cg_fill_rule rule)
+                                    uint64_t *touched, int width, size_t words, int y, int origin_x,
+                                    cg_fill_rule rule)
 {
     float acc = 0;
     int done = 0; /* pixels before done are painted */
@@ -435,8 +446,8 @@ static inline void render_row_solid(cg_image *image, const fill_blend_state *ble
  * word of bits) is summed into cover[] and painted; the gaps between runs
  * are spans of the coverage left by the run before. */
 static inline void render_row_paint(const fill_painter *painter, float *row, uint64_t *touched,
-                                    int width, size_t words, int y, int origin_x,
-                                    cg_fill_rule rule, uint8_t *cover)
+                                    int width, size_t words, int y, int origin_x, cg_fill_rule rule,
+                                    uint8_t *cover)
 {
     float acc = 0;
     int c = 0, done = 0; /* pixels before done are painted; c: the coverage there */
@@ -479,11 +490,11 @@ static void render_rows(const fill_painter *painter, const fill_blend_state *sta
         fill_blend_state blend = *state;
         for (int y = y0; y < y1; y++, cells += row_floats, touched += words) {
             if (rule == CG_FILL_NONZERO)
-                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
-                                 origin_x, CG_FILL_NONZERO);
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y, origin_x,
+                                 CG_FILL_NONZERO);
             else
-                render_row_solid(painter->image, &blend, cells, touched, width, words, y,
-                                 origin_x, CG_FILL_EVEN_ODD);
+                render_row_solid(painter->image, &blend, cells, touched, width, words, y, origin_x,
+                                 CG_FILL_EVEN_ODD);
         }
         return;
     }
@@ -529,14 +540,18 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
      * rendering clears what it reads.  Only new memory needs clearing. */
     size_t cells_before = r->accumulation_capacity, flags_before = r->touched_capacity;
     if (core_array_reserve((void **)&r->accumulation, &r->accumulation_capacity,
-                           2 * stride * (size_t)band, sizeof *r->accumulation) != CG_OK
+                           2 * stride * (size_t)band, sizeof *r->accumulation)
+            != CG_OK
         || core_array_reserve((void **)&r->touched, &r->touched_capacity, blocks * (size_t)band,
-                              sizeof *r->touched) != CG_OK
+                              sizeof *r->touched)
+               != CG_OK
         || core_array_reserve((void **)&r->cover, &r->cover_capacity, stride, 1) != CG_OK
         || core_array_reserve((void **)&r->order, &r->order_capacity,
-                              r->line_count + (size_t)band_count + 1, sizeof *r->order) != CG_OK
+                              r->line_count + (size_t)band_count + 1, sizeof *r->order)
+               != CG_OK
         || core_array_reserve((void **)&r->active, &r->active_capacity, r->line_count,
-                              sizeof *r->active) != CG_OK)
+                              sizeof *r->active)
+               != CG_OK)
         return CG_ENOMEM;
     if (r->accumulation_capacity != cells_before)
         memset(r->accumulation, 0, r->accumulation_capacity * sizeof *r->accumulation);
@@ -564,7 +579,8 @@ cg_status fill_aa_render(struct cg_rasterizer *r, cg_image *image, cg_fill_rule 
         int b = (floor_clipped(ymin) - top) / band;
         r->order[first[b < 0 ? 0 : b]++] = i;
     }
-    int solid = painter.type == CG_PAINT_SOLID && image->format == CG_PIXEL_RGBA8 && !painter.general;
+    int solid = painter.type == CG_PAINT_SOLID && image->format == CG_PIXEL_RGBA8
+                && !painter.general;
     fill_blend_state blend = fill_blend_begin(&painter);
     size_t next = 0, active_count = 0;
     for (int b = 0; b < band_count; b++) {

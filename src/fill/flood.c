@@ -45,8 +45,8 @@ static uint32_t pack(cg_rgba8 c)
 
 static int near_color(cg_rgba8 a, cg_rgba8 b, int tolerance)
 {
-    return abs(a.r - b.r) <= tolerance && abs(a.g - b.g) <= tolerance
-           && abs(a.b - b.b) <= tolerance && abs(a.a - b.a) <= tolerance;
+    return abs(a.r - b.r) <= tolerance && abs(a.g - b.g) <= tolerance && abs(a.b - b.b) <= tolerance
+           && abs(a.a - b.a) <= tolerance;
 }
 
 static inline uint32_t *row_of(const flood *f, int y)
@@ -64,7 +64,8 @@ static inline int inside(const flood *f, const uint32_t *row, int x, int y)
     } else {
         cg_rgba8 c;
         memcpy(&c, &p, sizeof c);
-        int like = f->tolerance == 0 ? p == f->reference_bits : near_color(c, f->reference, f->tolerance);
+        int like = f->tolerance == 0 ? p == f->reference_bits
+                                     : near_color(c, f->reference, f->tolerance);
         if (like != (f->mode != MODE_BOUNDARY))
             return 0;
     }
@@ -271,8 +272,8 @@ static cg_status fill_common(cg_image *image, int x, int y, cg_rgba8 color, int 
     return status;
 }
 
-cg_status cg_flood_fill(cg_image *image, int x, int y, cg_rgba8 color,
-                        cg_connectivity connectivity, int tolerance, size_t *filled)
+cg_status cg_flood_fill(cg_image *image, int x, int y, cg_rgba8 color, cg_connectivity connectivity,
+                        int tolerance, size_t *filled)
 {
     cg_rgba8 none = {0, 0, 0, 0};
     return fill_common(image, x, y, color, MODE_SEED_EXACT, none, connectivity, tolerance, filled);

@@ -81,8 +81,9 @@ cg_status fill_stroke_polylines(const fill_polylines *in, const cg_stroke_style 
 /* wmemset stores a 32-bit value n times with the widest stores the C library
  * has for the machine (AVX2, AVX-512, "rep stos"); usable for pixels where
  * wchar_t is int and uint32_t unsigned int, which may alias each other. */
-#define FILL_WMEMSET_PIXELS (_Generic((wchar_t)0, int: 1, default: 0) \
-                             && _Generic((uint32_t)0, unsigned int: 1, default: 0))
+#define FILL_WMEMSET_PIXELS                     \
+    (_Generic((wchar_t)0, int : 1, default : 0) \
+     && _Generic((uint32_t)0, unsigned int : 1, default : 0))
 
 /* d[0..n-1] = v: the solid interior of a shape.  Long runs go to wmemset
  * (32 bytes and more per store: 5 to 10% off anti-aliased 1024 px shapes),
@@ -132,11 +133,11 @@ typedef struct fill_painter {
     uint8_t encoded_rgba[4];
     /* gradients */
     double gx, gy, gc;         /* linear: t = gx * x + gy * y + gc */
-    double cx, cy, inv_radius;   /* radial */
+    double cx, cy, inv_radius; /* radial */
     int spread;                /* cg_gradient_spread */
     int focal;                 /* radial from a focal point (fx, fy) */
     double fx, fy, radius;
-    int transformed;           /* pixels reach gradient space through inverse */
+    int transformed; /* pixels reach gradient space through inverse */
     cg_mat3 inverse;
     cg_rgbaf ramp[256];
     /* compositing: general is set unless the drawing is linear-light
@@ -337,11 +338,11 @@ struct cg_rasterizer {
 };
 
 /* Source-over of a straight linear colour with alpha as onto an encoded pixel. */
-static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b,
-                          float as)
+static inline void fill_blend8(cg_rgba8 *d, float r, float g, float b, float as)
 {
     if (d->a == 255) {
-        float dr = color_srgb_decode_table[d->r], dg = color_srgb_decode_table[d->g], db = color_srgb_decode_table[d->b];
+        float dr = color_srgb_decode_table[d->r], dg = color_srgb_decode_table[d->g],
+              db = color_srgb_decode_table[d->b];
         d->r = cg_srgb_encode_unit(dr + (r - dr) * as);
         d->g = cg_srgb_encode_unit(dg + (g - dg) * as);
         d->b = cg_srgb_encode_unit(db + (b - db) * as);
@@ -485,7 +486,7 @@ typedef struct fill_blend_state {
     uint32_t alpha_mask; /* the alpha byte of a pixel's 32 bits */
     uint32_t full;
     int opaque;
-    int keep_same; /* opaque paint over pixels of its own colour changes only alpha */
+    int keep_same;     /* opaque paint over pixels of its own colour changes only alpha */
     uint32_t rgb_mask; /* the bytes of r, g and b in a pixel's 32 bits */
 } fill_blend_state;
 
@@ -509,8 +510,7 @@ static inline fill_blend_state fill_blend_begin(const fill_painter *p)
 
 /* A miss of the cache: blends and records the result (out of line, so that
  * the hit path below stays small enough to inline). */
-uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t key,
-                         uint32_t slot);
+uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t key, uint32_t slot);
 
 #if defined(__GNUC__)
 #define FILL_INLINE __attribute__((always_inline)) inline

@@ -75,12 +75,12 @@ cg_status cg_rasterizer_composite_layer(cg_rasterizer *r, cg_image *image, const
                                         const cg_layer_style *style)
 {
     if (!r || !image || !layer || !style || !same_size(layer, image) || !same_size(image, layer)
-        || !(style->opacity >= 0 && style->opacity <= 1)
-        || (unsigned)style->op >= CG_OPERATOR_COUNT || (unsigned)style->mode >= CG_BLEND_COUNT
+        || !(style->opacity >= 0 && style->opacity <= 1) || (unsigned)style->op >= CG_OPERATOR_COUNT
+        || (unsigned)style->mode >= CG_BLEND_COUNT
         || (style->clip_rule != CG_FILL_NONZERO && style->clip_rule != CG_FILL_EVEN_ODD)
-        || (style->mask && (!same_size(layer, style->mask)
-                            || (style->mask_type != CG_MASK_ALPHA
-                                && style->mask_type != CG_MASK_LUMINANCE))))
+        || (style->mask
+            && (!same_size(layer, style->mask)
+                || (style->mask_type != CG_MASK_ALPHA && style->mask_type != CG_MASK_LUMINANCE))))
         return CG_EINVAL;
     cg_compositing_space space = (cg_compositing_space)r->space;
     cg_image *clip = NULL;

@@ -207,8 +207,7 @@ cg_status fill_painter_init(fill_painter *p, struct cg_rasterizer *r, cg_image *
     return CG_EINVAL;
 }
 
-uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t key,
-                         uint32_t slot)
+uint32_t fill_solid_miss(const fill_blend_state *s, uint32_t v, int c, uint64_t key, uint32_t slot)
 {
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);

@@ -22,7 +22,7 @@ struct cg_path {
     cg_vec2 current, start;
     int has_current; /* a current point exists (after any segment or move) */
     int after_close; /* the next segment must start a new subpath at start */
-    size_t drawing; /* verbs other than moves */
+    size_t drawing;  /* verbs other than moves */
 };
 
 /* ---- polyline sets ---------------------------------------------------------- */
@@ -43,7 +43,8 @@ void fill_polylines_free(fill_polylines *set)
 cg_status fill_polylines_begin(fill_polylines *set)
 {
     if (core_array_reserve((void **)&set->lines, &set->line_capacity, set->line_count + 1,
-                           sizeof *set->lines) != CG_OK)
+                           sizeof *set->lines)
+        != CG_OK)
         return CG_ENOMEM;
     fill_polyline l = {set->point_count, 0, 0};
     set->lines[set->line_count++] = l;
@@ -53,7 +54,8 @@ cg_status fill_polylines_begin(fill_polylines *set)
 cg_status fill_polylines_add(fill_polylines *set, cg_vec2 p)
 {
     if (core_array_reserve((void **)&set->points, &set->point_capacity, set->point_count + 1,
-                           sizeof *set->points) != CG_OK)
+                           sizeof *set->points)
+        != CG_OK)
         return CG_ENOMEM;
     set->points[set->point_count++] = p;
     set->lines[set->line_count - 1].count++;
@@ -111,7 +113,8 @@ static cg_status append(cg_path *path, int verb, const double *coords)
     if (core_array_reserve((void **)&path->verbs, &path->verb_capacity, path->verb_count + 1, 1)
             != CG_OK
         || core_array_reserve((void **)&path->coords, &path->coord_capacity,
-                              path->coord_count + (size_t)n, sizeof *path->coords) != CG_OK)
+                              path->coord_count + (size_t)n, sizeof *path->coords)
+               != CG_OK)
         return CG_ENOMEM;
     path->verbs[path->verb_count++] = (unsigned char)verb;
     if (n)
@@ -243,8 +246,8 @@ static double vector_angle(double ux, double uy, double vx, double vy)
 cg_status cg_path_svg_arc_to(cg_path *path, double rx, double ry, double rotation_degrees,
                              int large_arc, int sweep, double x, double y)
 {
-    if (!path || !isfinite(rx) || !isfinite(ry) || !isfinite(rotation_degrees)
-        || !valid_coord(x) || !valid_coord(y))
+    if (!path || !isfinite(rx) || !isfinite(ry) || !isfinite(rotation_degrees) || !valid_coord(x)
+        || !valid_coord(y))
         return CG_EINVAL;
     cg_vec2 p1 = path->has_current ? path->current : cg_vec2_make(0, 0);
     if (p1.x == x && p1.y == y)
@@ -409,7 +412,8 @@ static int uniform_bezier(fill_polylines *set, const cg_vec2 *c, int count, doub
     *status = CG_OK;
     for (long i = 1; i < m && *status == CG_OK; i++) {
         double t = (double)i / (double)m;
-        cg_vec2 p = {((a.x * t + b.x) * t + d.x) * t + c[0].x, ((a.y * t + b.y) * t + d.y) * t + c[0].y};
+        cg_vec2 p = {((a.x * t + b.x) * t + d.x) * t + c[0].x,
+                     ((a.y * t + b.y) * t + d.y) * t + c[0].y};
         *status = fill_polylines_add(set, p);
     }
     if (*status == CG_OK)
@@ -433,7 +437,8 @@ static cg_status bezier_piece(fill_polylines *set, const cg_vec2 *c, int n, doub
             cg_status status = cg_bezier_split(c, n, 0.5, left, right);
             if (status == CG_OK)
                 status = bezier_piece(set, left, n, tolerance, box, depth + 1);
-            return status != CG_OK ? status : bezier_piece(set, right, n, tolerance, box, depth + 1);
+            return status != CG_OK ? status
+                                   : bezier_piece(set, right, n, tolerance, box, depth + 1);
         }
     }
     cg_status status;
@@ -448,7 +453,8 @@ cg_status fill_arc_points(fill_polylines *set, cg_vec2 c, double r, double a0, d
     long n = fill_arc_steps(r, a1 - a0, tolerance);
     for (long i = 1; i < n; i++) {
         double t = a0 + (a1 - a0) * (double)i / (double)n;
-        cg_status status = fill_polylines_add(set, cg_vec2_make(c.x + r * cos(t), c.y + r * sin(t)));
+        cg_status status = fill_polylines_add(set,
+                                              cg_vec2_make(c.x + r * cos(t), c.y + r * sin(t)));
         if (status != CG_OK)
             return status;
     }
@@ -470,9 +476,7 @@ cg_status fill_path_flatten(const cg_path *path, double tolerance, const fill_cl
             if (status == CG_OK)
                 status = fill_polylines_add(out, cg_vec2_make(c[0], c[1]));
             break;
-        case VERB_LINE:
-            status = fill_polylines_add(out, cg_vec2_make(c[0], c[1]));
-            break;
+        case VERB_LINE: status = fill_polylines_add(out, cg_vec2_make(c[0], c[1])); break;
         case VERB_QUAD:
         case VERB_CUBIC: {
             /* a quad has four coordinates: read c[4], c[5] for cubics only */
@@ -612,14 +616,16 @@ static cg_status arc_as_cubics(const double *a, const cg_mat3 *m, cg_path *out)
     double cp = cos(a[4]), sp = sin(a[4]);
     for (int i = 0; i < pieces; i++) {
         double t0 = a[5] + step * i, t1 = t0 + step;
-        double e0x = a[2] * cos(t0), e0y = a[3] * sin(t0), e1x = a[2] * cos(t1), e1y = a[3] * sin(t1);
-        double d0x = -a[2] * sin(t0), d0y = a[3] * cos(t0), d1x = -a[2] * sin(t1), d1y = a[3] * cos(t1);
+        double e0x = a[2] * cos(t0), e0y = a[3] * sin(t0), e1x = a[2] * cos(t1),
+               e1y = a[3] * sin(t1);
+        double d0x = -a[2] * sin(t0), d0y = a[3] * cos(t0), d1x = -a[2] * sin(t1),
+               d1y = a[3] * cos(t1);
         double p1x = e0x + k * d0x, p1y = e0y + k * d0y, p2x = e1x - k * d1x, p2y = e1y - k * d1y;
         cg_vec2 c1 = affine_point(m, a[0] + cp * p1x - sp * p1y, a[1] + sp * p1x + cp * p1y);
         cg_vec2 c2 = affine_point(m, a[0] + cp * p2x - sp * p2y, a[1] + sp * p2x + cp * p2y);
-        cg_vec2 end = i == pieces - 1 ? affine_point(m, a[7], a[8])
-                                      : affine_point(m, a[0] + cp * e1x - sp * e1y,
-                                                     a[1] + sp * e1x + cp * e1y);
+        cg_vec2 end = i == pieces - 1
+                          ? affine_point(m, a[7], a[8])
+                          : affine_point(m, a[0] + cp * e1x - sp * e1y, a[1] + sp * e1x + cp * e1y);
         cg_status status = cg_path_cubic_to(out, c1.x, c1.y, c2.x, c2.y, end.x, end.y);
         if (status != CG_OK)
             return status;

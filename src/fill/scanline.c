@@ -91,7 +91,8 @@ static cg_status add_edge(cg_rasterizer *r, cg_vec2 a, cg_vec2 b, int height)
     if (first > last)
         return CG_OK;
     if (core_array_reserve((void **)&r->edges, &r->edge_capacity, r->edge_count + 1,
-                           sizeof *r->edges) != CG_OK)
+                           sizeof *r->edges)
+        != CG_OK)
         return CG_ENOMEM;
     fill_edge *e = &r->edges[r->edge_count++];
     e->x0 = top.x;
@@ -141,8 +142,8 @@ static void sort_edges(fill_edge *edges, size_t n)
 }
 
 cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg_vec2 *points,
-                                     const int *contour_sizes, int contour_count,
-                                     cg_fill_rule rule, cg_rgba8 color)
+                                     const int *contour_sizes, int contour_count, cg_fill_rule rule,
+                                     cg_rgba8 color)
 {
     if (!r || !image || !image->data || (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO))
         return CG_EINVAL;
@@ -170,8 +171,9 @@ cg_status cg_rasterizer_fill_polygon(cg_rasterizer *r, cg_image *image, const cg
      * records. */
     if (core_array_reserve((void **)&r->crossings, &r->crossing_capacity,
                            (r->edge_count * sizeof(active_edge) + sizeof(fill_crossing) - 1)
-                           / sizeof(fill_crossing),
-                           sizeof *r->crossings) != CG_OK)
+                               / sizeof(fill_crossing),
+                           sizeof *r->crossings)
+        != CG_OK)
         return CG_ENOMEM;
     cg_paint paint = cg_paint_solid(color);
     fill_painter painter;
@@ -244,7 +246,8 @@ cg_status cg_fill_polygon(cg_image *image, const cg_vec2 *points, const int *con
     cg_status status = cg_rasterizer_create(&r);
     if (status != CG_OK)
         return status;
-    status = cg_rasterizer_fill_polygon(r, image, points, contour_sizes, contour_count, rule, color);
+    status = cg_rasterizer_fill_polygon(r, image, points, contour_sizes, contour_count, rule,
+                                        color);
     cg_rasterizer_free(r);
     return status;
 }

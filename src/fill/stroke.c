@@ -86,8 +86,7 @@ static cg_status join(stroker *s, cg_vec2 v, cg_vec2 u0, cg_vec2 u1, double len0
         status = fill_arc_points(s->out, v, s->half, a0, a0 - turn, s->tolerance);
         break;
     }
-    default:
-        break;
+    default: break;
     }
     return status != CG_OK ? status : add(s, cg_vec2_add(v, n1));
 }
@@ -101,10 +100,8 @@ static cg_status cap(stroker *s, cg_vec2 p, cg_vec2 u)
         cg_status status = add(s, cg_vec2_add(cg_vec2_add(p, n), forward));
         return status != CG_OK ? status : add(s, cg_vec2_add(cg_vec2_sub(p, n), forward));
     }
-    case CG_CAP_ROUND:
-        return half_turn(s, p, n);
-    default:
-        return CG_OK;
+    case CG_CAP_ROUND: return half_turn(s, p, n);
+    default: return CG_OK;
     }
 }
 
@@ -140,7 +137,9 @@ static cg_status stroke_dot(stroker *s, cg_vec2 p)
             status = fill_arc_points(s->out, p, s->half, 0, 2 * CG_PI, s->tolerance);
     } else {
         double h = s->half;
-        cg_vec2 corners[4] = {{p.x - h, p.y - h}, {p.x + h, p.y - h}, {p.x + h, p.y + h},
+        cg_vec2 corners[4] = {{p.x - h, p.y - h},
+                              {p.x + h, p.y - h},
+                              {p.x + h, p.y + h},
                               {p.x - h, p.y + h}};
         for (int i = 0; status == CG_OK && i < 4; i++)
             status = add(s, corners[i]);

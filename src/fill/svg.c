@@ -29,7 +29,8 @@ static cg_status fail(parser *p, const char *what, char command)
                             (long)(p->at - p->text), p->too_large, p->at, command);
     const char *found = *p->at ? p->at : "end of data";
     int len = *p->at ? 1 : (int)strlen(found);
-    return cg_error_set(p->err, CG_EFORMAT, "path data, offset %ld: expected %s after '%c', got '%.*s'",
+    return cg_error_set(p->err, CG_EFORMAT,
+                        "path data, offset %ld: expected %s after '%c', got '%.*s'",
                         (long)(p->at - p->text), what, command, len, found);
 }
 
@@ -130,9 +131,7 @@ static cg_status parse(parser *p, cg_path *path)
             int flags[2];
             cg_status status = CG_OK;
             switch (upper) {
-            case 'Z':
-                status = cg_path_close(path);
-                break;
+            case 'Z': status = cg_path_close(path); break;
             case 'M':
             case 'L':
             case 'T':

@@ -22,9 +22,9 @@
 enum { MAX_TRACE_COORD = 4096, TEXT_SIZE = 2048 };
 
 typedef struct traced_edge {
-    int number;            /* edge k leaves vertex k (counted over all contours) */
+    int number; /* edge k leaves vertex k (counted over all contours) */
     cg_vec2 top, bottom;
-    double x0, y0, slope;  /* as scanline.c: x = x0 + (y - y0) slope, from the top */
+    double x0, y0, slope; /* as scanline.c: x = x0 + (y - y0) slope, from the top */
     int first_row, last_row, dir;
 } traced_edge;
 
@@ -45,7 +45,8 @@ static int by_first_row(const void *a, const void *b)
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static void append(char *text, const char *format, ...)
+static void
+append(char *text, const char *format, ...)
 {
     size_t used = strlen(text);
     if (used + 4 >= TEXT_SIZE)
@@ -161,7 +162,8 @@ static int sweep(const traced_edge *edges, size_t count, cg_fill_rule rule, cg_s
         active_count = kept;
         while (next < count && edges[next].first_row == y) {
             const traced_edge *e = &edges[next];
-            active[active_count++] = (active_crossing){e->x0 + (yc - e->y0) * e->slope, e->dir, (int)next};
+            active[active_count++] = (active_crossing){e->x0 + (yc - e->y0) * e->slope, e->dir,
+                                                       (int)next};
             append(added, "%se%d", added[0] ? " " : "", e->number);
             next++;
         }
@@ -187,9 +189,8 @@ static int sweep(const traced_edge *edges, size_t count, cg_fill_rule rule, cg_s
     return outcome;
 }
 
-cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes,
-                                 int contour_count, cg_fill_rule rule, cg_step_fn step,
-                                 void *user)
+cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes, int contour_count,
+                                 cg_fill_rule rule, cg_step_fn step, void *user)
 {
     size_t total;
     if (!step || (rule != CG_FILL_EVEN_ODD && rule != CG_FILL_NONZERO))
@@ -209,7 +210,8 @@ cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes
             if (a.y == b.y)
                 continue; /* horizontal: never active */
             int dir = b.y > a.y ? 1 : -1;
-            traced_edge e = {(int)(start + i), dir > 0 ? a : b, dir > 0 ? b : a, 0, 0, 0, 0, 0, dir};
+            traced_edge e = {
+                (int)(start + i), dir > 0 ? a : b, dir > 0 ? b : a, 0, 0, 0, 0, 0, dir};
             e.first_row = (int)ceil(e.top.y - 0.5);
             e.last_row = (int)ceil(e.bottom.y - 0.5) - 1;
             if (e.first_row > e.last_row)

@@ -34,8 +34,8 @@ typedef struct seed_fill {
 
 static int near_color(cg_rgba8 a, cg_rgba8 b, int tolerance)
 {
-    return abs(a.r - b.r) <= tolerance && abs(a.g - b.g) <= tolerance
-           && abs(a.b - b.b) <= tolerance && abs(a.a - b.a) <= tolerance;
+    return abs(a.r - b.r) <= tolerance && abs(a.g - b.g) <= tolerance && abs(a.b - b.b) <= tolerance
+           && abs(a.a - b.a) <= tolerance;
 }
 
 /* In the region and not yet filled. */
@@ -117,15 +117,16 @@ static cg_status seed_fill_steps(const cg_image *image, int x, int y, int bounda
                                  cg_rgba8 reference, cg_connectivity connectivity, int tolerance,
                                  cg_step_fn step, void *user)
 {
-    if (!image || !image->data || !step || (connectivity != CG_CONNECT_4 && connectivity != CG_CONNECT_8)
-        || tolerance < 0 || tolerance > 255)
+    if (!image || !image->data || !step
+        || (connectivity != CG_CONNECT_4 && connectivity != CG_CONNECT_8) || tolerance < 0
+        || tolerance > 255)
         return CG_EINVAL;
     if (image->format != CG_PIXEL_RGBA8)
         return CG_EUNSUPPORTED;
     if (!cg_image_contains(image, x, y))
         return CG_ERANGE;
-    seed_fill f = {image, connectivity == CG_CONNECT_8, boundary, tolerance, reference, NULL,
-                   {0}, step, user};
+    seed_fill f = {
+        image, connectivity == CG_CONNECT_8, boundary, tolerance, reference, NULL, {0}, step, user};
     if (!boundary)
         f.reference = cg_image_get_rgba8(image, x, y);
     f.filled = calloc((size_t)image->height, (size_t)image->width);

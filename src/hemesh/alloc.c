@@ -152,7 +152,8 @@ void hm_shrink_to_fit(cg_hemesh *m)
     size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
     void *p;
     if (V && V < m->vertex_capacity) {
-        p = m->vertex_halfedge, shrink_array(&p, sizeof *m->vertex_halfedge, V), m->vertex_halfedge = p;
+        p = m->vertex_halfedge, shrink_array(&p, sizeof *m->vertex_halfedge, V),
+        m->vertex_halfedge = p;
         p = m->positions, shrink_array(&p, sizeof *m->positions, V), m->positions = p;
         p = m->normals, shrink_array(&p, sizeof *m->normals, V), m->normals = p;
         p = m->texcoords, shrink_array(&p, sizeof *m->texcoords, V), m->texcoords = p;
@@ -297,10 +298,11 @@ void cg_hemesh_compact(cg_hemesh *m)
     for (size_t v = 0; v < m->vertex_count; v++)
         vmap[v] = m->vertex_halfedge[v] == CG_HEMESH_DELETED ? CG_HEMESH_DELETED : (uint32_t)nv++;
     for (size_t e = 0; e < m->halfedge_count / 2; e++)
-        emap[e] = m->halfedges[2 * e].origin == CG_HEMESH_DELETED ? CG_HEMESH_DELETED : (uint32_t)ne++;
+        emap[e] = m->halfedges[2 * e].origin == CG_HEMESH_DELETED ? CG_HEMESH_DELETED
+                                                                  : (uint32_t)ne++;
     for (size_t f = 0; f < m->face_count; f++)
         fmap[f] = m->face_halfedge[f] == CG_HEMESH_DELETED ? CG_HEMESH_DELETED : (uint32_t)nf++;
-#define HM_MAP_H(h) ((h) >= CG_HEMESH_DELETED ? (h) : (emap[(h) >> 1] << 1 | ((h) & 1u)))
+#define HM_MAP_H(h) ((h) >= CG_HEMESH_DELETED ? (h) : (emap[(h) >> 1] << 1 | ((h)&1u)))
     for (size_t h = 0; h < m->halfedge_count; h++) {
         if (emap[h >> 1] == CG_HEMESH_DELETED)
             continue;

@@ -52,7 +52,7 @@ typedef struct matching {
     uint32_t *start;  /* V + 1: bucket v ends at start[v] once the sides are sorted */
     uint64_t *bucket; /* corners: other vertex << 32 | corner << 1 | (larger to smaller) */
     uint32_t *stamp, *current, *uses, *same_way;
-    uint8_t *occupied;       /* which half-edges of the current edge are taken */
+    uint8_t *occupied;        /* which half-edges of the current edge are taken */
     uint32_t *first, *second; /* the group's first two corners, only when orienting */
     cg_hemesh_report *report; /* NULL: this pass records nothing */
     matching_counts counts;
@@ -161,8 +161,8 @@ static int match_bucket(hm_builder *b, matching *mt, uint32_t a, size_t begin, s
             }
             if (mt->occupied[other] & (1u << dir)) {
                 size_t listed = mt->counts.cut;
-                hm_list_push(&b->cut_edges, &listed, &b->cut_capacity,
-                             (uint32_t)mt->counts.edges, &mt->failed);
+                hm_list_push(&b->cut_edges, &listed, &b->cut_capacity, (uint32_t)mt->counts.edges,
+                             &mt->failed);
                 mt->counts.cut++;
                 mt->occupied[other] = 0;
                 open_edge(b, mt, a, other);
@@ -190,8 +190,8 @@ static cg_status sort_crowded_bucket(hm_builder *b, matching *mt, uint32_t a, si
         }
         mt->uses[other]++;
     }
-    return hm_radial_sort_bucket(b->mesh, b->offsets, b->indices, b->faces, a,
-                                 mt->bucket + begin, end - begin, mt->uses);
+    return hm_radial_sort_bucket(b->mesh, b->offsets, b->indices, b->faces, a, mt->bucket + begin,
+                                 end - begin, mt->uses);
 }
 
 static void matching_free(matching *mt)
@@ -347,7 +347,8 @@ cg_status cg_hemesh_build(const cg_mesh *mesh, unsigned flags, cg_hemesh **out,
         *out = NULL;
     if (!mesh || !out)
         return cg_error_set(err, CG_EINVAL, "hemesh: no mesh given");
-    if (!mesh->face_offsets || (mesh->face_count && (!mesh->face_indices || mesh->face_offsets[0] != 0))
+    if (!mesh->face_offsets
+        || (mesh->face_count && (!mesh->face_indices || mesh->face_offsets[0] != 0))
         || (mesh->vertex_count && !mesh->positions))
         return cg_error_set(err, CG_EFORMAT, "hemesh: the mesh arrays are inconsistent");
     if (mesh->face_count == 0)

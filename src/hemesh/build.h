@@ -32,14 +32,13 @@ typedef struct hm_builder {
     uint32_t first_nonmanifold[2], first_misoriented[2];
     uint32_t *partner; /* corners, only when orienting */
     /* the room of the growing lists: cut_edges and the report's three */
-    size_t cut_capacity, bad_face_capacity, nonmanifold_edge_capacity,
-        nonmanifold_vertex_capacity;
+    size_t cut_capacity, bad_face_capacity, nonmanifold_edge_capacity, nonmanifold_vertex_capacity;
 } hm_builder;
 
 /* Appends value to *list (count items in room for *capacity); sets *failed
  * when memory runs out. */
-static inline void hm_list_push(uint32_t **list, size_t *count, size_t *capacity,
-                                uint32_t value, int *failed)
+static inline void hm_list_push(uint32_t **list, size_t *count, size_t *capacity, uint32_t value,
+                                int *failed)
 {
     if (core_array_reserve((void **)list, capacity, *count + 1, sizeof **list) != CG_OK) {
         *failed = 1;

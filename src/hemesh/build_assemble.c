@@ -15,21 +15,25 @@ static cg_status create_structure(const hm_builder *b, cg_hemesh **out)
 {
     const cg_mesh *mesh = b->mesh;
     size_t V = mesh->vertex_count, F = b->faces, H = 2 * b->edges;
-    unsigned flags = (mesh->normals ? CG_MESH_NORMALS : 0u) | (mesh->texcoords ? CG_MESH_TEXCOORDS : 0u)
+    unsigned flags = (mesh->normals ? CG_MESH_NORMALS : 0u)
+                     | (mesh->texcoords ? CG_MESH_TEXCOORDS : 0u)
                      | (mesh->colors ? CG_MESH_COLORS : 0u)
                      | (mesh->face_colors ? CG_MESH_FACE_COLORS : 0u);
     cg_hemesh *m;
     /* room for the midpoint splits that cut edges may need (about one per
      * cut: 3 edges and 2 faces each), so that they do not grow the arrays;
      * what is left over is given back at the end of the build */
-    size_t room = b->cut && H + 6 * b->cut < 0x7fffffffu && F + 2 * b->cut < 0x7fffffffu ? b->cut : 0;
+    size_t room = b->cut && H + 6 * b->cut < 0x7fffffffu && F + 2 * b->cut < 0x7fffffffu ? b->cut
+                                                                                         : 0;
     cg_status s = hm_create(&m, V, H + 6 * room, F + 2 * room, flags);
     if (s != CG_OK)
-        return cg_error_set(b->err, s, "hemesh: %s", s == CG_ERANGE ? "too many elements" : "out of memory");
+        return cg_error_set(b->err, s, "hemesh: %s",
+                            s == CG_ERANGE ? "too many elements" : "out of memory");
     m->halfedge_count = H;
     m->face_count = F;
     for (size_t e = 0; e < b->edges; e++) {
-        cg_hemesh_halfedge x = {CG_HEMESH_NONE, CG_HEMESH_NONE, b->edge_vertices[2 * e], CG_HEMESH_NONE};
+        cg_hemesh_halfedge x = {CG_HEMESH_NONE, CG_HEMESH_NONE, b->edge_vertices[2 * e],
+                                CG_HEMESH_NONE};
         m->halfedges[2 * e] = x;
         x.origin = b->edge_vertices[2 * e + 1];
         m->halfedges[2 * e + 1] = x;
@@ -205,8 +209,8 @@ cg_status hm_build_assemble(hm_builder *b, cg_hemesh **out)
               &failed);
     free(seen);
     if (extra_count)
-        count_fan_vertices(b, m, extra_fans, extra_count, &nonmanifold_vertices,
-                           &first_bad_vertex, &failed);
+        count_fan_vertices(b, m, extra_fans, extra_count, &nonmanifold_vertices, &first_bad_vertex,
+                           &failed);
     if (failed)
         s = cg_error_set(b->err, CG_ENOMEM, "hemesh: out of memory");
     else if (nonmanifold_vertices && !(b->flags & CG_HEMESH_SPLIT_NONMANIFOLD))

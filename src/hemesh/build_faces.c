@@ -95,7 +95,8 @@ static cg_status copy_kept_faces(hm_builder *b, const uint32_t *bad, size_t bad_
             continue;
         }
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
-        memcpy(b->own_indices + k, mesh->face_indices + begin, (end - begin) * sizeof *b->own_indices);
+        memcpy(b->own_indices + k, mesh->face_indices + begin,
+               (end - begin) * sizeof *b->own_indices);
         k += end - begin;
         b->face_map[nf++] = (uint32_t)f;
         b->own_offsets[nf] = (uint32_t)k;

@@ -39,7 +39,8 @@ static size_t counts_distinct_pairs(const cg_mesh *mesh, const uint8_t *polygon,
                 continue;
             uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
             for (uint32_t k = begin; k < end; k++) {
-                uint32_t a = mesh->face_indices[k], c = mesh->face_indices[k + 1 < end ? k + 1 : begin];
+                uint32_t a = mesh->face_indices[k],
+                         c = mesh->face_indices[k + 1 < end ? k + 1 : begin];
                 uint32_t lo = a < c ? a : c, hi = a < c ? c : a;
                 if (pass == 0)
                     start[lo + 1]++;

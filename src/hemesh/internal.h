@@ -45,9 +45,9 @@ void hm_fix_vertex_halfedge(cg_hemesh *m, uint32_t v);
  * holds each group's size), by angle about the edge, so that pairing them
  * in turn pairs neighbours across a solid (see radial.c); offsets and
  * indices are the faces' (faces of them).  CG_ENOMEM. */
-cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
-                                size_t faces, uint32_t lo, uint64_t *entries, size_t n,
-                                const uint32_t *uses);
+cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets,
+                                const uint32_t *indices, size_t faces, uint32_t lo,
+                                uint64_t *entries, size_t n, const uint32_t *uses);
 
 /* Splits at its midpoint every edge that joins the same two vertices as
  * another, until no two do (see separate.c).  Such a pair always holds an

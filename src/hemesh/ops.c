@@ -191,7 +191,7 @@ cg_status cg_hemesh_split_face(cg_hemesh *m, uint32_t f, cg_vec3 position, uint3
         hm_add_edge(m, c, corner[i]);
     for (size_t i = 0; i < k; i++) {
         uint32_t s_in = first + 2 * (uint32_t)((i + 1) % k) + 1; /* corner i+1 -> c */
-        uint32_t s_out = first + 2 * (uint32_t)i;                 /* c -> corner i */
+        uint32_t s_out = first + 2 * (uint32_t)i;                /* c -> corner i */
         uint32_t face = i == 0 ? f : hm_add_face(m, side[i], f);
         link(m, side[i], s_in);
         link(m, s_in, s_out);
@@ -216,7 +216,8 @@ cg_status cg_hemesh_split_face_between(cg_hemesh *m, uint32_t p, uint32_t q, uin
     uint32_t f = m->halfedges[p].face;
     if (f == CG_HEMESH_NONE || m->halfedges[q].face != f || m->halfedges[p].next == q
         || m->halfedges[q].next == p
-        || cg_hemesh_find_halfedge(m, m->halfedges[p].origin, m->halfedges[q].origin) != CG_HEMESH_NONE)
+        || cg_hemesh_find_halfedge(m, m->halfedges[p].origin, m->halfedges[q].origin)
+               != CG_HEMESH_NONE)
         return CG_EINVAL;
     if (hm_reserve(m, 0, 1, 1) != CG_OK)
         return CG_ENOMEM;
@@ -256,7 +257,8 @@ static int apex_ok(const cg_hemesh *m, uint32_t h)
     if (c == CG_HEMESH_NONE)
         return 1;
     uint32_t hn = m->halfedges[h].next, hp = m->halfedges[h].prev;
-    if (m->halfedges[hn ^ 1u].face == CG_HEMESH_NONE && m->halfedges[hp ^ 1u].face == CG_HEMESH_NONE)
+    if (m->halfedges[hn ^ 1u].face == CG_HEMESH_NONE
+        && m->halfedges[hp ^ 1u].face == CG_HEMESH_NONE)
         return 0;
     if (!cg_hemesh_vertex_is_boundary(m, c) && cg_hemesh_valence(m, c) <= 3)
         return 0;
@@ -292,7 +294,8 @@ int cg_hemesh_collapse_ok(const cg_hemesh *m, uint32_t h)
     uint32_t t = h ^ 1u, u = m->halfedges[h].origin, v = m->halfedges[t].origin;
     if (boundary_gaps(m, u) > 1 || boundary_gaps(m, v) > 1)
         return 0;
-    int edge_boundary = m->halfedges[h].face == CG_HEMESH_NONE || m->halfedges[t].face == CG_HEMESH_NONE;
+    int edge_boundary = m->halfedges[h].face == CG_HEMESH_NONE
+                        || m->halfedges[t].face == CG_HEMESH_NONE;
     if (!edge_boundary && cg_hemesh_vertex_is_boundary(m, u) && cg_hemesh_vertex_is_boundary(m, v))
         return 0;
     if (!apex_ok(m, h) || !apex_ok(m, t) || other_face_joins(m, h))

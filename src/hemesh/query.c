@@ -75,7 +75,7 @@ size_t cg_hemesh_face_size(const cg_hemesh *m, uint32_t f)
 /* what: 0 outgoing half-edges, 1 neighbours, 2 faces (holes have none) of
  * vertex v, turning in the given direction. */
 static size_t around_vertex(const cg_hemesh *m, uint32_t v, int direction, int what, uint32_t *out,
-                     size_t capacity)
+                            size_t capacity)
 {
     if (!vertex_ok(m, v))
         return 0;
@@ -468,8 +468,8 @@ static cg_status check_halfedges(validation *check)
             continue;
         uint32_t h = (uint32_t)i;
         if (x->origin >= V || m->vertex_halfedge[x->origin] >= CG_HEMESH_DELETED)
-            FAIL("half-edge %u starts at vertex %u, which is out of range, deleted or isolated",
-                 h, x->origin);
+            FAIL("half-edge %u starts at vertex %u, which is out of range, deleted or isolated", h,
+                 x->origin);
         if (x->next >= H || x->prev >= H || m->halfedges[x->next].origin == CG_HEMESH_DELETED
             || m->halfedges[x->prev].origin == CG_HEMESH_DELETED)
             FAIL("half-edge %u has next %u / prev %u out of range or deleted", h, x->next, x->prev);
@@ -588,9 +588,14 @@ cg_status cg_hemesh_validate(const cg_hemesh *m, cg_error *err)
     size_t V = m->vertex_count, H = m->halfedge_count, F = m->face_count;
     if (H % 2 || V > m->vertex_capacity || H > m->halfedge_capacity || F > m->face_capacity)
         return cg_error_set(err, CG_EFORMAT, "hemesh: array sizes are inconsistent");
-    validation check = {m, err, calloc(V ? V : 1, sizeof *check.out_count),
+    validation check = {m,
+                        err,
+                        calloc(V ? V : 1, sizeof *check.out_count),
                         calloc(F ? F : 1, sizeof *check.face_sides),
-                        malloc((V ? V : 1) * sizeof *check.stamp), 0, 0, 0};
+                        malloc((V ? V : 1) * sizeof *check.stamp),
+                        0,
+                        0,
+                        0};
     cg_status status;
     if (!check.out_count || !check.face_sides || !check.stamp) {
         status = cg_error_set(err, CG_ENOMEM, "hemesh: out of memory");

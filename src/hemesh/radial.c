@@ -79,9 +79,9 @@ static uint32_t radial_corner_before(const uint32_t *offsets, size_t faces, uint
     return k > offsets[lo] ? k - 1 : offsets[lo + 1] - 1;
 }
 
-cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, const uint32_t *indices,
-                                size_t faces, uint32_t lo, uint64_t *entries, size_t n,
-                                const uint32_t *uses)
+cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets,
+                                const uint32_t *indices, size_t faces, uint32_t lo,
+                                uint64_t *entries, size_t n, const uint32_t *uses)
 {
     radial_side *sides = malloc(n * sizeof *sides);
     if (!sides)
@@ -90,9 +90,12 @@ cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets, co
         uint32_t other = (uint32_t)(entries[i] >> 32);
         uint32_t corner = (uint32_t)(entries[i] & 0xffffffffu) >> 1;
         sides[i].entry = entries[i];
-        sides[i].angle = uses[other] < 3 ? 0.0
-                                         : radial_angle(mesh->positions[lo], mesh->positions[other],
-                                                        mesh->positions[indices[radial_corner_before(offsets, faces, corner)]]);
+        sides[i].angle =
+            uses[other] < 3
+                ? 0.0
+                : radial_angle(
+                    mesh->positions[lo], mesh->positions[other],
+                    mesh->positions[indices[radial_corner_before(offsets, faces, corner)]]);
     }
     if (n <= 24) { /* buckets are about as long as a valence: insertion sort */
         for (size_t i = 1; i < n; i++) {

@@ -24,7 +24,8 @@ static cg_status separate_find_among(const cg_hemesh *m, const uint32_t *candida
 {
     CORE_ARRAY(uint32_t) found = {0};
     for (size_t i = 0; i < count; i++) {
-        uint32_t e = candidates[i], u = m->halfedges[2 * e].origin, v = m->halfedges[2 * e + 1].origin;
+        uint32_t e = candidates[i], u = m->halfedges[2 * e].origin,
+                 v = m->halfedges[2 * e + 1].origin;
         uint32_t h0 = m->vertex_halfedge[u], h = h0;
         int twice = 0;
         do {
@@ -105,7 +106,8 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, const uint32_t *candidates, size
         s = hm_reserve(m, n, 3 * n, 2 * n);
         if (s == CG_OK)
             s = core_array_reserve((void **)face_origin, &face_origin_capacity,
-                                   m->face_count + 2 * n - first_new_face + 1, sizeof **face_origin);
+                                   m->face_count + 2 * n - first_new_face + 1,
+                                   sizeof **face_origin);
         if (s != CG_OK) {
             free(list);
             return s;
@@ -113,7 +115,8 @@ cg_status hm_split_multiple_edges(cg_hemesh *m, const uint32_t *candidates, size
         for (size_t i = 0; i < n; i++) {
             uint32_t e = list[i], h = 2 * e;
             uint32_t sides[2] = {m->halfedges[h].face, m->halfedges[h + 1].face};
-            cg_vec3 p = m->positions[m->halfedges[h].origin], q = m->positions[m->halfedges[h + 1].origin];
+            cg_vec3 p = m->positions[m->halfedges[h].origin],
+                    q = m->positions[m->halfedges[h + 1].origin];
             cg_vec3 mid = {0.5 * (p.x + q.x), 0.5 * (p.y + q.y), 0.5 * (p.z + q.z)};
             size_t before = m->face_count;
             int triangle[2];

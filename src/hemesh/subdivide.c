@@ -16,8 +16,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-static inline uint32_t first_half(uint32_t h) { return 4 * (h >> 1) + 3 * (h & 1u); }
-static inline uint32_t second_half(uint32_t h) { return 4 * (h >> 1) + 2 - (h & 1u); }
+static inline uint32_t first_half(uint32_t h)
+{
+    return 4 * (h >> 1) + 3 * (h & 1u);
+}
+static inline uint32_t second_half(uint32_t h)
+{
+    return 4 * (h >> 1) + 2 - (h & 1u);
+}
 
 static void link(cg_hemesh *m, uint32_t a, uint32_t b)
 {
@@ -58,7 +64,7 @@ static void split_edges(const cg_hemesh *m, cg_hemesh *r)
         rh[4 * e + 3].origin = b;
         for (int k = 0; k < 4; k++)
             rh[4 * e + k].face = CG_HEMESH_NONE;
-        uint32_t pick = he[2 * e].face == CG_HEMESH_NONE ? (uint32_t)(4 * e + 2)
+        uint32_t pick = he[2 * e].face == CG_HEMESH_NONE       ? (uint32_t)(4 * e + 2)
                         : he[2 * e + 1].face == CG_HEMESH_NONE ? (uint32_t)(4 * e + 1)
                                                                : (uint32_t)(4 * e + 2);
         r->vertex_halfedge[mid] = pick;
@@ -81,7 +87,8 @@ static void split_edges(const cg_hemesh *m, cg_hemesh *r)
 static cg_status make_result(const cg_hemesh *m, size_t vertices, size_t edges, size_t faces,
                              cg_hemesh **out)
 {
-    if (vertices >= CG_HEMESH_DELETED || 2 * edges >= CG_HEMESH_DELETED || faces >= CG_HEMESH_DELETED)
+    if (vertices >= CG_HEMESH_DELETED || 2 * edges >= CG_HEMESH_DELETED
+        || faces >= CG_HEMESH_DELETED)
         return CG_ERANGE;
     cg_hemesh *r;
     cg_status s = hm_create(&r, vertices, 2 * edges, faces, hm_attribute_flags(m));
@@ -217,7 +224,8 @@ cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
             h = he[h ^ 1u].next;
         } while (h != h0);
         double beta = n < 16 ? table[n] : loop_beta(n);
-        r->positions[v] = cg_vec3_add(cg_vec3_scale(p, 1.0 - (double)n * beta), cg_vec3_scale(sum, beta));
+        r->positions[v] = cg_vec3_add(cg_vec3_scale(p, 1.0 - (double)n * beta),
+                                      cg_vec3_scale(sum, beta));
     }
     /* edge points */
     for (size_t e = 0; e < E; e++) {
@@ -229,7 +237,8 @@ cg_status cg_hemesh_subdivide_loop(const cg_hemesh *input, cg_hemesh **out)
         } else {
             cg_vec3 c = m->positions[he[he[h].prev].origin];
             cg_vec3 d = m->positions[he[he[h + 1].prev].origin];
-            p = cg_vec3_add(cg_vec3_scale(cg_vec3_add(a, b), 0.375), cg_vec3_scale(cg_vec3_add(c, d), 0.125));
+            p = cg_vec3_add(cg_vec3_scale(cg_vec3_add(a, b), 0.375),
+                            cg_vec3_scale(cg_vec3_add(c, d), 0.125));
         }
         r->positions[V + e] = p;
     }
@@ -357,7 +366,8 @@ static void catmull_clark_vertex_points(const cg_hemesh *m, cg_hemesh *r)
         cg_vec3 favg = cg_vec3_scale(fsum, 1.0 / dn);
         cg_vec3 ravg = cg_vec3_scale(cg_vec3_add(cg_vec3_scale(p, dn), rsum), 0.5 / dn);
         r->positions[v] = cg_vec3_scale(
-            cg_vec3_add(cg_vec3_add(favg, cg_vec3_scale(ravg, 2.0)), cg_vec3_scale(p, dn - 3.0)), 1.0 / dn);
+            cg_vec3_add(cg_vec3_add(favg, cg_vec3_scale(ravg, 2.0)), cg_vec3_scale(p, dn - 3.0)),
+            1.0 / dn);
     }
 }
 

@@ -38,8 +38,8 @@ cg_status cg_hemesh_face_loop_steps(const cg_hemesh *m, uint32_t f, cg_step_fn s
         core_step_integer(&s, "next", e->next);
         core_step_integer(&s, "twin", cg_hemesh_twin(h));
         core_step_integer(&s, "neighbour_face", index_or_none(m->halfedges[h ^ 1u].face));
-        core_step_text(&s, "note", e->next == h0 ? "next is the first half-edge: the loop closes"
-                                                 : "");
+        core_step_text(&s, "note",
+                       e->next == h0 ? "next is the first half-edge: the loop closes" : "");
         s.step.geometry = edge;
         s.step.geometry_count = 2;
         s.step.kept = edge;
@@ -69,9 +69,10 @@ cg_status cg_hemesh_one_ring_steps(const cg_hemesh *m, uint32_t v, cg_step_fn st
         core_step_integer(&s, "face", index_or_none(m->halfedges[h].face));
         core_step_integer(&s, "prev", previous);
         core_step_integer(&s, "twin_of_prev", after);
-        core_step_text(&s, "note", after == h0 ? "back at the first half-edge: the ring closes"
-                                   : m->halfedges[h].face == CG_HEMESH_NONE ? "a boundary half-edge"
-                                                                            : "");
+        core_step_text(&s, "note",
+                       after == h0 ? "back at the first half-edge: the ring closes"
+                       : m->halfedges[h].face == CG_HEMESH_NONE ? "a boundary half-edge"
+                                                                : "");
         s.step.geometry = spoke;
         s.step.geometry_count = 2;
         s.step.kept = spoke;

@@ -24,7 +24,6 @@ cg_status pnm_decode(const unsigned char *bytes, size_t size, const char *name, 
 
 /* Encoders take an RGBA8 image. */
 cg_status png_encode(const cg_image *image, byte_buffer *out, cg_error *err);
-cg_status pnm_encode(const cg_image *image, cg_file_format format, byte_buffer *out,
-                     cg_error *err);
+cg_status pnm_encode(const cg_image *image, cg_file_format format, byte_buffer *out, cg_error *err);
 
 #endif

@@ -43,8 +43,8 @@ cg_status png_encode(const cg_image *image, byte_buffer *out, cg_error *err)
     png.height = (png_uint_32)image->height;
     png.format = PNG_FORMAT_RGBA;
     png_alloc_size_t size = 0;
-    if (!png_image_write_to_memory(&png, NULL, &size, 0, image->data,
-                                   (png_int_32)image->stride, NULL))
+    if (!png_image_write_to_memory(&png, NULL, &size, 0, image->data, (png_int_32)image->stride,
+                                   NULL))
         return cg_error_set(err, CG_EIO, "PNG encoding failed: %s", png.message);
     unsigned char *bytes = malloc(size);
     if (!bytes)

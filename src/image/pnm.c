@@ -35,14 +35,14 @@ static cg_status read_number(pnm_reader *r, const char *what, unsigned long limi
         return cg_error_set(err, CG_EFORMAT, "%s: truncated: expected %s at byte %zu", r->name,
                             what, r->at);
     if (!isdigit(r->bytes[r->at]))
-        return cg_error_set(err, CG_EFORMAT, "%s: byte %zu: expected %s, got '%c'", r->name,
-                            r->at, what, isprint(r->bytes[r->at]) ? r->bytes[r->at] : '?');
+        return cg_error_set(err, CG_EFORMAT, "%s: byte %zu: expected %s, got '%c'", r->name, r->at,
+                            what, isprint(r->bytes[r->at]) ? r->bytes[r->at] : '?');
     unsigned long v = 0;
     while (r->at < r->size && isdigit(r->bytes[r->at])) {
         v = v * 10 + (unsigned long)(r->bytes[r->at] - '0');
         if (v > limit)
-            return cg_error_set(err, CG_ERANGE, "%s: byte %zu: %s larger than %lu", r->name,
-                                r->at, what, limit);
+            return cg_error_set(err, CG_ERANGE, "%s: byte %zu: %s larger than %lu", r->name, r->at,
+                                what, limit);
         r->at++;
     }
     *value = v;
@@ -120,12 +120,11 @@ cg_status pnm_decode(const unsigned char *bytes, size_t size, const char *name, 
 static uint8_t gray_of(cg_rgba8 px)
 {
     float y = 0.2126f * cg_srgb8_to_linear(px.r) + 0.7152f * cg_srgb8_to_linear(px.g)
-            + 0.0722f * cg_srgb8_to_linear(px.b);
+              + 0.0722f * cg_srgb8_to_linear(px.b);
     return cg_linear_to_srgb8(y);
 }
 
-cg_status pnm_encode(const cg_image *image, cg_file_format format, byte_buffer *out,
-                     cg_error *err)
+cg_status pnm_encode(const cg_image *image, cg_file_format format, byte_buffer *out, cg_error *err)
 {
     int gray = format == CG_FILE_PGM || format == CG_FILE_PGM_ASCII;
     int ascii = format == CG_FILE_PPM_ASCII || format == CG_FILE_PGM_ASCII;

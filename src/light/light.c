@@ -127,12 +127,11 @@ cg_status cg_material_check(const cg_material *m, cg_error *err)
                             "material: colour must be finite and >= 0, got (%g, %g, %g)",
                             m->color.x, m->color.y, m->color.z);
     if (!color_ok(m->specular_color))
-        return cg_error_set(err, CG_EINVAL,
-                            "material: specular colour must be finite and >= 0");
-    const double k[7] = {m->ka, m->kd, m->ks, m->shininess, m->reflectance, m->transmittance,
-                         m->refractive_index};
-    static const char *names[7] = {"ka", "kd", "ks", "shininess", "reflectance",
-                                   "transmittance", "refractive index"};
+        return cg_error_set(err, CG_EINVAL, "material: specular colour must be finite and >= 0");
+    const double k[7] = {
+        m->ka, m->kd, m->ks, m->shininess, m->reflectance, m->transmittance, m->refractive_index};
+    static const char *names[7] = {
+        "ka", "kd", "ks", "shininess", "reflectance", "transmittance", "refractive index"};
     for (int i = 0; i < 7; i++)
         if (!isfinite(k[i]) || k[i] < 0)
             return cg_error_set(err, CG_EINVAL, "material: %s must be finite and >= 0, got %g",
@@ -143,8 +142,7 @@ cg_status cg_material_check(const cg_material *m, cg_error *err)
     return CG_OK;
 }
 
-int cg_light_vector(const cg_light *light, cg_vec3 position, cg_vec3 *to_light,
-                    double *distance)
+int cg_light_vector(const cg_light *light, cg_vec3 position, cg_vec3 *to_light, double *distance)
 {
     if (light->kind == CG_LIGHT_AMBIENT)
         return 0;
@@ -248,6 +246,5 @@ cg_shade_terms cg_light_shade_terms(cg_vec3 position, cg_vec3 normal, cg_vec3 vi
 cg_vec3 cg_light_shade(cg_vec3 position, cg_vec3 normal, cg_vec3 view, const cg_material *m,
                        const cg_light *lights, size_t count)
 {
-    return cg_shade_terms_sum(
-        cg_light_shade_terms(position, normal, view, m, lights, count, NULL));
+    return cg_shade_terms_sum(cg_light_shade_terms(position, normal, view, m, lights, count, NULL));
 }

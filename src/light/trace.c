@@ -44,7 +44,9 @@ static void light_factors(const cg_light *l, cg_vec3 position, cg_vec3 normal, c
     }
     if (l->kind == CG_LIGHT_SPOT) {
         double c = -cg_vec3_dot(to_light, l->direction);
-        spot = c >= l->spot_cos_cutoff ? (l->spot_exponent != 0 ? (c > 0 ? pow(c, l->spot_exponent) : 0) : 1) : 0;
+        spot = c >= l->spot_cos_cutoff
+                   ? (l->spot_exponent != 0 ? (c > 0 ? pow(c, l->spot_exponent) : 0) : 1)
+                   : 0;
     }
     double nl = cg_vec3_dot(normal, to_light), base;
     vector_field(s, "L", to_light, store[0]);
@@ -66,8 +68,9 @@ static void light_factors(const cg_light *l, cg_vec3 position, cg_vec3 normal, c
     }
     double spec = nl > 0 && base > 0 ? pow(base > 1 ? 1 : base, m->shininess) : 0;
     core_step_real(s, "spec", spec);
-    core_step_text(s, "note", nl > 0 ? (spot > 0 ? "lit" : "outside the spot's cone")
-                                     : "N.L <= 0: the light is behind the surface");
+    core_step_text(s, "note",
+                   nl > 0 ? (spot > 0 ? "lit" : "outside the spot's cone")
+                          : "N.L <= 0: the light is behind the surface");
 }
 
 cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
@@ -96,7 +99,8 @@ cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
         if (core_step_emit(&s, step, user))
             return CG_OK;
     }
-    cg_shade_terms all = cg_light_shade_terms(position, normal, view, material, lights, count, NULL);
+    cg_shade_terms all = cg_light_shade_terms(position, normal, view, material, lights, count,
+                                              NULL);
     cg_vec3 total = cg_vec3_add(all.ambient, cg_vec3_add(all.diffuse, all.specular));
     double store[4][3];
     core_step s;

@@ -217,9 +217,9 @@ cg_status mesh_nonfinite_error(cg_error *err, const char *name, size_t line, siz
     else
         snprintf(where, sizeof where, ": byte %zu", byte);
     return cg_error_set(err, CG_EFORMAT,
-                        "%s%s: expected a finite vertex coordinate, got %c = %g%s%s%s", name,
-                        where, "xyz"[axis < 0 ? 0 : axis], value, item ? " (" : "",
-                        item ? item : "", item ? ")" : "");
+                        "%s%s: expected a finite vertex coordinate, got %c = %g%s%s%s", name, where,
+                        "xyz"[axis < 0 ? 0 : axis], value, item ? " (" : "", item ? item : "",
+                        item ? ")" : "");
 }
 
 cg_status mesh_note(char **notes, const char *format, ...)

@@ -55,39 +55,72 @@ typedef struct foreign_extension {
 } foreign_extension;
 
 static const foreign_extension extensions[] = {
-    {".fbx", "an FBX file (.fbx)"},             {".3ds", "a 3D Studio file (.3ds)"},
-    {".dae", "a COLLADA file (.dae)"},          {".blend", "a Blender file (.blend)"},
-    {".usd", "a USD file (.usd)"},              {".usda", "a USD file (.usda)"},
-    {".usdc", "a USD file (.usdc)"},            {".usdz", "a USD file (.usdz)"},
-    {".abc", "an Alembic file (.abc)"},         {".3mf", "a 3MF file (.3mf)"},
-    {".amf", "an AMF file (.amf)"},             {".x3d", "an X3D file (.x3d)"},
-    {".wrl", "a VRML file (.wrl)"},             {".vtk", "a VTK file (.vtk)"},
-    {".vtp", "a VTK file (.vtp)"},              {".vtu", "a VTK file (.vtu)"},
-    {".step", "a STEP file (.step)"},           {".stp", "a STEP file (.stp)"},
-    {".iges", "an IGES file (.iges)"},          {".igs", "an IGES file (.igs)"},
-    {".ifc", "an IFC file (.ifc)"},             {".dxf", "a DXF file (.dxf)"},
-    {".lwo", "a LightWave file (.lwo)"},        {".x", "a DirectX file (.x)"},
-    {".ma", "a Maya ASCII file (.ma)"},         {".mb", "a Maya binary file (.mb)"},
-    {".max", "a 3ds Max file (.max)"},          {".3dm", "a Rhino file (.3dm)"},
-    {".skp", "a SketchUp file (.skp)"},         {".ms3d", "a MilkShape 3D file (.ms3d)"},
-    {".md2", "a Quake II model (.md2)"},        {".md3", "a Quake III model (.md3)"},
-    {".md5mesh", "a Doom 3 model (.md5mesh)"},  {".ase", "an ASCII Scene Export file (.ase)"},
-    {".smd", "a Source model (.smd)"},          {".b3d", "a Blitz3D file (.b3d)"},
-    {".mdl", "a Quake or Half-Life model (.mdl)"}, {".mdc", "an MDC model (.mdc)"},
-    {".hmp", "a 3D GameStudio terrain (.hmp)"}, {".lws", "a LightWave scene (.lws)"},
-    {".lxo", "a Modo file (.lxo)"},             {".nff", "a Neutral File Format file (.nff)"},
-    {".irr", "an Irrlicht scene (.irr)"},       {".irrmesh", "an Irrlicht mesh (.irrmesh)"},
-    {".ac", "an AC3D file (.ac)"},              {".acc", "an AC3D file (.acc)"},
-    {".ac3d", "an AC3D file (.ac3d)"},          {".cob", "a Caligari trueSpace file (.cob)"},
-    {".scn", "a Caligari trueSpace scene (.scn)"}, {".m3d", "a Model 3D file (.m3d)"},
-    {".a3d", "a Model 3D file (.a3d)"},         {".zgl", "a zipped XGL file (.zgl)"},
-    {".xgl", "an XGL file (.xgl)"},             {".ogex", "an OpenGEX file (.ogex)"},
-    {".q3o", "a Quick3D object (.q3o)"},        {".q3s", "a Quick3D scene (.q3s)"},
-    {".bvh", "a BioVision motion file (.bvh)"}, {".ter", "a Terragen terrain (.ter)"},
-    {".3d", "an Unreal mesh (.3d)"},            {".uc", "an Unreal script (.uc)"},
-    {".csm", "a CharacterStudio motion file (.csm)"}, {".sib", "a Silo file (.sib)"},
-    {".iqm", "an Inter-Quake model (.iqm)"},    {".jt", "a JT file (.jt)"},
-    {".md5anim", "a Doom 3 animation (.md5anim)"}, {".mot", "a motion file (.mot)"},
+    {".fbx", "an FBX file (.fbx)"},
+    {".3ds", "a 3D Studio file (.3ds)"},
+    {".dae", "a COLLADA file (.dae)"},
+    {".blend", "a Blender file (.blend)"},
+    {".usd", "a USD file (.usd)"},
+    {".usda", "a USD file (.usda)"},
+    {".usdc", "a USD file (.usdc)"},
+    {".usdz", "a USD file (.usdz)"},
+    {".abc", "an Alembic file (.abc)"},
+    {".3mf", "a 3MF file (.3mf)"},
+    {".amf", "an AMF file (.amf)"},
+    {".x3d", "an X3D file (.x3d)"},
+    {".wrl", "a VRML file (.wrl)"},
+    {".vtk", "a VTK file (.vtk)"},
+    {".vtp", "a VTK file (.vtp)"},
+    {".vtu", "a VTK file (.vtu)"},
+    {".step", "a STEP file (.step)"},
+    {".stp", "a STEP file (.stp)"},
+    {".iges", "an IGES file (.iges)"},
+    {".igs", "an IGES file (.igs)"},
+    {".ifc", "an IFC file (.ifc)"},
+    {".dxf", "a DXF file (.dxf)"},
+    {".lwo", "a LightWave file (.lwo)"},
+    {".x", "a DirectX file (.x)"},
+    {".ma", "a Maya ASCII file (.ma)"},
+    {".mb", "a Maya binary file (.mb)"},
+    {".max", "a 3ds Max file (.max)"},
+    {".3dm", "a Rhino file (.3dm)"},
+    {".skp", "a SketchUp file (.skp)"},
+    {".ms3d", "a MilkShape 3D file (.ms3d)"},
+    {".md2", "a Quake II model (.md2)"},
+    {".md3", "a Quake III model (.md3)"},
+    {".md5mesh", "a Doom 3 model (.md5mesh)"},
+    {".ase", "an ASCII Scene Export file (.ase)"},
+    {".smd", "a Source model (.smd)"},
+    {".b3d", "a Blitz3D file (.b3d)"},
+    {".mdl", "a Quake or Half-Life model (.mdl)"},
+    {".mdc", "an MDC model (.mdc)"},
+    {".hmp", "a 3D GameStudio terrain (.hmp)"},
+    {".lws", "a LightWave scene (.lws)"},
+    {".lxo", "a Modo file (.lxo)"},
+    {".nff", "a Neutral File Format file (.nff)"},
+    {".irr", "an Irrlicht scene (.irr)"},
+    {".irrmesh", "an Irrlicht mesh (.irrmesh)"},
+    {".ac", "an AC3D file (.ac)"},
+    {".acc", "an AC3D file (.acc)"},
+    {".ac3d", "an AC3D file (.ac3d)"},
+    {".cob", "a Caligari trueSpace file (.cob)"},
+    {".scn", "a Caligari trueSpace scene (.scn)"},
+    {".m3d", "a Model 3D file (.m3d)"},
+    {".a3d", "a Model 3D file (.a3d)"},
+    {".zgl", "a zipped XGL file (.zgl)"},
+    {".xgl", "an XGL file (.xgl)"},
+    {".ogex", "an OpenGEX file (.ogex)"},
+    {".q3o", "a Quick3D object (.q3o)"},
+    {".q3s", "a Quick3D scene (.q3s)"},
+    {".bvh", "a BioVision motion file (.bvh)"},
+    {".ter", "a Terragen terrain (.ter)"},
+    {".3d", "an Unreal mesh (.3d)"},
+    {".uc", "an Unreal script (.uc)"},
+    {".csm", "a CharacterStudio motion file (.csm)"},
+    {".sib", "a Silo file (.sib)"},
+    {".iqm", "an Inter-Quake model (.iqm)"},
+    {".jt", "a JT file (.jt)"},
+    {".md5anim", "a Doom 3 animation (.md5anim)"},
+    {".mot", "a motion file (.mot)"},
 };
 
 /* Searches the first `limit` bytes for a word (XML root elements). */
@@ -105,8 +138,9 @@ int mesh_looks_like_gltf_json(const unsigned char *bytes, size_t size)
     size_t first = 0;
     if (size >= 3 && memcmp(bytes, "\xEF\xBB\xBF", 3) == 0)
         first = 3;
-    while (first < size && first < 64 && (bytes[first] == ' ' || bytes[first] == '\t'
-                                           || bytes[first] == '\n' || bytes[first] == '\r'))
+    while (first < size && first < 64
+           && (bytes[first] == ' ' || bytes[first] == '\t' || bytes[first] == '\n'
+               || bytes[first] == '\r'))
         first++;
     return first < size && bytes[first] == '{' && contains(bytes, size, 4096, "\"asset\"");
 }
@@ -139,8 +173,8 @@ const char *mesh_foreign_by_content(const unsigned char *bytes, size_t size)
         return "a LightWave scene (.lws)";
     /* 3D Studio: main chunk 0x4d4d whose 32-bit length is the file's size */
     if (size >= 6 && bytes[0] == 0x4d && bytes[1] == 0x4d) {
-        uint32_t length = (uint32_t)bytes[2] | (uint32_t)bytes[3] << 8
-                          | (uint32_t)bytes[4] << 16 | (uint32_t)bytes[5] << 24;
+        uint32_t length = (uint32_t)bytes[2] | (uint32_t)bytes[3] << 8 | (uint32_t)bytes[4] << 16
+                          | (uint32_t)bytes[5] << 24;
         if (length == size)
             return "a 3D Studio file (.3ds)";
     }

@@ -32,8 +32,8 @@ static cg_status read_container(gltf_document *doc, const unsigned char *bytes, 
                             doc->name, size);
     uint32_t version = u32_at(bytes + 4), length = u32_at(bytes + 8);
     if (version != 2)
-        return cg_error_set(doc->err, CG_EUNSUPPORTED,
-                            "%s: byte 4: expected GLB version 2, got %u", doc->name, version);
+        return cg_error_set(doc->err, CG_EUNSUPPORTED, "%s: byte 4: expected GLB version 2, got %u",
+                            doc->name, version);
     if (length != size)
         return cg_error_set(doc->err, CG_EFORMAT,
                             "%s: byte 8: expected the GLB length to be the file size %zu, got %u",
@@ -99,8 +99,9 @@ static cg_status parse_json(gltf_document *doc, const char *json, size_t size)
 static int extension_supported(const char *name)
 {
     static const char *const supported[] = {
-        "KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_lights_punctual",
-        "KHR_mesh_quantization", "KHR_materials_unlit",
+        "KHR_texture_transform", "KHR_materials_emissive_strength",
+        "KHR_lights_punctual",   "KHR_mesh_quantization",
+        "KHR_materials_unlit",
     };
     for (size_t i = 0; i < sizeof supported / sizeof supported[0]; i++)
         if (strcmp(name, supported[i]) == 0)
@@ -194,7 +195,8 @@ static cg_status read_lists(gltf_document *doc)
                                  &doc->lights);
     const char *extension_names[] = {"extensionsUsed"};
     gltf_list used;
-    if (s == CG_OK && (s = gltf_get_list(doc, doc->root, "", extension_names[0], 1, &used)) == CG_OK) {
+    if (s == CG_OK
+        && (s = gltf_get_list(doc, doc->root, "", extension_names[0], 1, &used)) == CG_OK) {
         for (size_t i = 0; i < used.count; i++)
             if (cJSON_IsString(used.items[i])
                 && strcmp(used.items[i]->valuestring, "KHR_mesh_quantization") == 0)
@@ -239,9 +241,9 @@ static char *write_notes(const gltf_document *doc)
 static void free_document(gltf_document *doc)
 {
     gltf_free_buffers(doc);
-    gltf_list *lists[] = {&doc->accessors, &doc->buffer_views, &doc->buffers,  &doc->meshes,
+    gltf_list *lists[] = {&doc->accessors, &doc->buffer_views, &doc->buffers,   &doc->meshes,
                           &doc->nodes,     &doc->scenes,       &doc->materials, &doc->textures,
-                          &doc->images,    &doc->cameras,      &doc->skins,    &doc->animations,
+                          &doc->images,    &doc->cameras,      &doc->skins,     &doc->animations,
                           &doc->lights,    &doc->samplers};
     for (size_t i = 0; i < sizeof lists / sizeof lists[0]; i++)
         gltf_list_free(lists[i]);

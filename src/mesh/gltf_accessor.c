@@ -19,14 +19,11 @@ static size_t component_size(int type)
 {
     switch (type) {
     case GLTF_BYTE:
-    case GLTF_UNSIGNED_BYTE:
-        return 1;
+    case GLTF_UNSIGNED_BYTE: return 1;
     case GLTF_SHORT:
-    case GLTF_UNSIGNED_SHORT:
-        return 2;
+    case GLTF_UNSIGNED_SHORT: return 2;
     case GLTF_UNSIGNED_INT:
-    case GLTF_FLOAT:
-        return 4;
+    case GLTF_FLOAT: return 4;
     }
     return 0;
 }
@@ -86,7 +83,8 @@ static cg_status check_sparse(gltf_document *doc, const cJSON *sparse, const cha
         return s;
     /* indices */
     snprintf(sub, sizeof sub, "%s.indices", path);
-    s = gltf_get_index(doc, indices, sub, "bufferView", 1, &doc->buffer_views, "bufferViews", &view);
+    s = gltf_get_index(doc, indices, sub, "bufferView", 1, &doc->buffer_views, "bufferViews",
+                       &view);
     if (s == CG_OK)
         s = gltf_get_integer(doc, indices, sub, "byteOffset", 0, 0, 0, INT64_MAX / 4, &offset);
     if (s == CG_OK)
@@ -144,8 +142,8 @@ cg_status gltf_accessor_describe(gltf_document *doc, size_t index, gltf_accessor
     if (s == CG_OK)
         s = gltf_get_bool(doc, accessor, path, "normalized", 0, &normalized);
     if (s == CG_OK)
-        s = gltf_get_index(doc, accessor, path, "bufferView", 0, &doc->buffer_views,
-                           "bufferViews", &view);
+        s = gltf_get_index(doc, accessor, path, "bufferView", 0, &doc->buffer_views, "bufferViews",
+                           &view);
     if (s == CG_OK)
         s = gltf_get_integer(doc, accessor, path, "byteOffset", 0, 0, 0, INT64_MAX / 4, &offset);
     if (s != CG_OK)
@@ -234,8 +232,7 @@ static double read_component(const unsigned char *p, int type, int normalized)
         double v = (int8_t)p[0];
         return normalized ? fmax(v / 127.0, -1.0) : v;
     }
-    case GLTF_UNSIGNED_BYTE:
-        return normalized ? p[0] / 255.0 : p[0];
+    case GLTF_UNSIGNED_BYTE: return normalized ? p[0] / 255.0 : p[0];
     case GLTF_SHORT: {
         double v = (int16_t)(uint16_t)(p[0] | p[1] << 8);
         return normalized ? fmax(v / 32767.0, -1.0) : v;
@@ -244,8 +241,7 @@ static double read_component(const unsigned char *p, int type, int normalized)
         double v = (uint16_t)(p[0] | p[1] << 8);
         return normalized ? v / 65535.0 : v;
     }
-    case GLTF_UNSIGNED_INT:
-        return read_u32(p);
+    case GLTF_UNSIGNED_INT: return read_u32(p);
     default: {
         uint32_t bits = read_u32(p);
         float f;
@@ -281,8 +277,8 @@ static void read_elements(const gltf_accessor *a, const unsigned char *bytes, si
     for (size_t i = 0; i < count; i++) {
         const unsigned char *element = bytes + i * stride;
         for (int c = 0; c < a->components; c++)
-            values[i * (size_t)a->components + (size_t)c]
-                = read_component(element + offsets[c], a->component_type, a->normalized);
+            values[i * (size_t)a->components + (size_t)c] = read_component(
+                element + offsets[c], a->component_type, a->normalized);
     }
 }
 

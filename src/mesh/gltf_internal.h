@@ -31,7 +31,7 @@ typedef struct gltf_list {
 typedef struct gltf_buffer {
     const unsigned char *bytes; /* byte_length bytes */
     size_t byte_length;
-    unsigned char *owned;       /* what bytes points into when the reader allocated it */
+    unsigned char *owned; /* what bytes points into when the reader allocated it */
 } gltf_buffer;
 
 /* What the reader met but the mesh does not carry: counted for the notes. */
@@ -46,14 +46,14 @@ typedef struct gltf_document {
     const char *directory; /* where relative URIs are read, NULL when reading from memory */
     cg_error *err;
     cJSON *root;
-    gltf_list accessors, buffer_views, buffers, meshes, nodes, scenes, materials, textures,
-        images, cameras, skins, animations, samplers;
-    gltf_list lights; /* KHR_lights_punctual */
-    gltf_buffer *loaded; /* buffers.count entries */
+    gltf_list accessors, buffer_views, buffers, meshes, nodes, scenes, materials, textures, images,
+        cameras, skins, animations, samplers;
+    gltf_list lights;                /* KHR_lights_punctual */
+    gltf_buffer *loaded;             /* buffers.count entries */
     const unsigned char *glb_binary; /* the GLB BIN chunk, or NULL */
     size_t glb_binary_size;
     gltf_skipped skipped;
-    int quantized; /* KHR_mesh_quantization used: integer positions, normals, texcoords */
+    int quantized;      /* KHR_mesh_quantization used: integer positions, normals, texcoords */
     size_t input_bytes; /* the file's size plus its external buffers' */
 } gltf_document;
 
@@ -83,13 +83,12 @@ cg_status gltf_get_integer(gltf_document *doc, const cJSON *object, const char *
                            const char *key, int required, int64_t fallback, int64_t minimum,
                            int64_t maximum, int64_t *out);
 /* An index into list (named list_name in messages). */
-cg_status gltf_get_index(gltf_document *doc, const cJSON *object, const char *path,
-                         const char *key, int required, const gltf_list *list,
-                         const char *list_name, size_t *out);
+cg_status gltf_get_index(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                         int required, const gltf_list *list, const char *list_name, size_t *out);
 cg_status gltf_get_number(gltf_document *doc, const cJSON *object, const char *path,
                           const char *key, double fallback, double *out);
-cg_status gltf_get_bool(gltf_document *doc, const cJSON *object, const char *path,
-                        const char *key, int fallback, int *out);
+cg_status gltf_get_bool(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                        int fallback, int *out);
 /* A string member (NULL when absent and not required). */
 cg_status gltf_get_string(gltf_document *doc, const cJSON *object, const char *path,
                           const char *key, int required, const char **out);
@@ -102,8 +101,8 @@ cg_status gltf_get_numbers(gltf_document *doc, const cJSON *object, const char *
                            const char *key, size_t count, double *values, int *present);
 /* An array member as a table; an empty table when absent.  minimum: the
  * fewest items allowed when present (glTF arrays are never empty). */
-cg_status gltf_get_list(gltf_document *doc, const cJSON *object, const char *path,
-                        const char *key, size_t minimum, gltf_list *out);
+cg_status gltf_get_list(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                        size_t minimum, gltf_list *out);
 void gltf_list_free(gltf_list *list);
 /* Checks that every item of list is a JSON object (path "name[i]"). */
 cg_status gltf_check_objects(gltf_document *doc, const gltf_list *list, const char *name);
@@ -146,10 +145,10 @@ enum {
 typedef struct gltf_accessor {
     size_t index;
     size_t count;
-    int component_type;  /* GLTF_* */
-    int components;      /* 1 SCALAR ... 16 MAT4 */
+    int component_type; /* GLTF_* */
+    int components;     /* 1 SCALAR ... 16 MAT4 */
     int normalized;
-    const char *type;    /* "SCALAR", "VEC3", ... */
+    const char *type; /* "SCALAR", "VEC3", ... */
 } gltf_accessor;
 
 /* Reads accessor `index`'s description; checks the rules that need no data
@@ -191,8 +190,7 @@ cg_status gltf_count_primitives(gltf_document *doc, const gltf_instance_array *i
                                 gltf_totals *totals);
 /* Fills mesh (made with the totals) with the instances' triangles in world
  * space. */
-cg_status gltf_fill_mesh(gltf_document *doc, const gltf_instance_array *instances,
-                         cg_mesh *mesh);
+cg_status gltf_fill_mesh(gltf_document *doc, const gltf_instance_array *instances, cg_mesh *mesh);
 
 /* ---- cameras and lights (gltf_camera.c) ------------------------------------ */
 /* Checks every camera and KHR_lights_punctual light. */

@@ -78,9 +78,8 @@ cg_status gltf_get_integer(gltf_document *doc, const cJSON *object, const char *
     return CG_OK;
 }
 
-cg_status gltf_get_index(gltf_document *doc, const cJSON *object, const char *path,
-                         const char *key, int required, const gltf_list *list,
-                         const char *list_name, size_t *out)
+cg_status gltf_get_index(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                         int required, const gltf_list *list, const char *list_name, size_t *out)
 {
     const cJSON *value = member(object, key);
     if (!value && !required) {
@@ -116,8 +115,8 @@ cg_status gltf_get_number(gltf_document *doc, const cJSON *object, const char *p
     return CG_OK;
 }
 
-cg_status gltf_get_bool(gltf_document *doc, const cJSON *object, const char *path,
-                        const char *key, int fallback, int *out)
+cg_status gltf_get_bool(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                        int fallback, int *out)
 {
     const cJSON *value = member(object, key);
     if (!value) {
@@ -193,8 +192,8 @@ void gltf_list_free(gltf_list *list)
     list->count = 0;
 }
 
-cg_status gltf_get_list(gltf_document *doc, const cJSON *object, const char *path,
-                        const char *key, size_t minimum, gltf_list *out)
+cg_status gltf_get_list(gltf_document *doc, const cJSON *object, const char *path, const char *key,
+                        size_t minimum, gltf_list *out)
 {
     out->items = NULL;
     out->count = 0;

@@ -53,9 +53,9 @@ static cg_status unit_numbers(gltf_document *doc, const cJSON *object, const cha
         if (read[i] < 0 || read[i] > 1) {
             char item[128];
             snprintf(item, sizeof item, "%s.%s[%zu]", path, key, i);
-            return gltf_fail(doc, item, NULL, "a number in [0, 1]",
-                             cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(object, key),
-                                                (int)i));
+            return gltf_fail(
+                doc, item, NULL, "a number in [0, 1]",
+                cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(object, key), (int)i));
         }
         values[i] = read[i];
     }
@@ -89,10 +89,12 @@ static cg_status read_sampler(gltf_document *doc, size_t index, cg_mesh_texture_
                              "33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT)",
                              cJSON_GetObjectItemCaseSensitive(sampler, keys[k]));
     }
-    t->wrap_u = wrap[0] == 33071 ? CG_TEXTURE_CLAMP
-                : wrap[0] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT : CG_TEXTURE_REPEAT;
-    t->wrap_v = wrap[1] == 33071 ? CG_TEXTURE_CLAMP
-                : wrap[1] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT : CG_TEXTURE_REPEAT;
+    t->wrap_u = wrap[0] == 33071   ? CG_TEXTURE_CLAMP
+                : wrap[0] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT
+                                   : CG_TEXTURE_REPEAT;
+    t->wrap_v = wrap[1] == 33071   ? CG_TEXTURE_CLAMP
+                : wrap[1] == 33648 ? CG_TEXTURE_MIRRORED_REPEAT
+                                   : CG_TEXTURE_REPEAT;
     t->magnify_nearest = mag == 9728;
     return CG_OK;
 }
@@ -143,8 +145,8 @@ static cg_status read_image(gltf_document *doc, size_t index, cg_mesh_texture_re
         if (ok < 0)
             return gltf_out_of_memory(doc);
         if (!ok)
-            return cg_error_set(doc->err, CG_EFORMAT, "%s: %s.uri: expected base64 text",
-                                doc->name, path);
+            return cg_error_set(doc->err, CG_EFORMAT, "%s: %s.uri: expected base64 text", doc->name,
+                                path);
         return CG_OK;
     }
     /* a file beside the model; percent escapes decoded as for buffers */
@@ -281,10 +283,8 @@ static cg_status read_material(gltf_document *doc, size_t index, cg_mesh_materia
         s = gltf_get_object(doc, extensions, ext_path, "KHR_materials_emissive_strength", 0,
                             &strength);
     if (s == CG_OK && strength) {
-        snprintf(ext_path, sizeof ext_path, "%s.extensions.KHR_materials_emissive_strength",
-                 path);
-        s = number_in(doc, strength, ext_path, "emissiveStrength", 1, 0, 1e308,
-                      &emissive_strength);
+        snprintf(ext_path, sizeof ext_path, "%s.extensions.KHR_materials_emissive_strength", path);
+        s = number_in(doc, strength, ext_path, "emissiveStrength", 1, 0, 1e308, &emissive_strength);
         snprintf(ext_path, sizeof ext_path, "%s.extensions", path);
     }
     if (s == CG_OK)

@@ -18,8 +18,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-enum { MODE_POINTS = 0, MODE_LINES = 1, MODE_LINE_LOOP = 2, MODE_LINE_STRIP = 3,
-       MODE_TRIANGLES = 4, MODE_TRIANGLE_STRIP = 5, MODE_TRIANGLE_FAN = 6 };
+enum {
+    MODE_POINTS = 0,
+    MODE_LINES = 1,
+    MODE_LINE_LOOP = 2,
+    MODE_LINE_STRIP = 3,
+    MODE_TRIANGLES = 4,
+    MODE_TRIANGLE_STRIP = 5,
+    MODE_TRIANGLE_FAN = 6
+};
 
 /* A primitive's checked description. */
 typedef struct primitive {
@@ -125,8 +132,7 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
     if (s == CG_OK)
         s = gltf_get_index(doc, item, path, "indices", 0, &doc->accessors, "accessors", &indices);
     if (s == CG_OK)
-        s = gltf_get_index(doc, item, path, "material", 0, &doc->materials, "materials",
-                           &material);
+        s = gltf_get_index(doc, item, path, "material", 0, &doc->materials, "materials", &material);
     if (s != CG_OK)
         return s;
     p->mode = (int)mode;
@@ -150,8 +156,8 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
             return cg_error_set(doc->err, CG_EFORMAT,
                                 "%s: %s: expected %s_0, %s_1, ... without a gap, got %s_%d without "
                                 "%s_%d",
-                                doc->name, attributes_path, families[k], families[k],
-                                families[k], 63 - __builtin_clzll(sets[k]), families[k],
+                                doc->name, attributes_path, families[k], families[k], families[k],
+                                63 - __builtin_clzll(sets[k]), families[k],
                                 __builtin_ctzll(~sets[k]));
     s = attribute(doc, attributes, attributes_path, "POSITION", 1, "VEC3", SIZE_MAX, &p->position,
                   &p->has_position);
@@ -163,8 +169,8 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
         s = attribute(doc, attributes, attributes_path, "TEXCOORD_0", 0, "VEC2", count,
                       &p->texcoord, &p->has_texcoord);
     if (s == CG_OK)
-        s = attribute(doc, attributes, attributes_path, "COLOR_0", 0, "VEC3 VEC4", count,
-                      &p->color, &p->has_color);
+        s = attribute(doc, attributes, attributes_path, "COLOR_0", 0, "VEC3 VEC4", count, &p->color,
+                      &p->has_color);
     if (s != CG_OK)
         return s;
     if (indices != SIZE_MAX) {
@@ -196,8 +202,7 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
 typedef cg_status (*primitive_visit)(gltf_document *doc, const primitive *p, size_t mesh,
                                      size_t index, void *context);
 
-static cg_status each_primitive(gltf_document *doc, size_t m, primitive_visit visit,
-                                void *context)
+static cg_status each_primitive(gltf_document *doc, size_t m, primitive_visit visit, void *context)
 {
     char path[64];
     snprintf(path, sizeof path, "meshes[%zu]", m);
@@ -277,7 +282,7 @@ cg_status gltf_count_primitives(gltf_document *doc, const gltf_instance_array *i
         if (s != CG_OK)
             return s;
         const cJSON *primitives = cJSON_GetObjectItemCaseSensitive(doc->meshes.items[m],
-                                                                    "primitives");
+                                                                   "primitives");
         for (const cJSON *p = primitives->child; p; p = p->next) {
             if ((s = gltf_get_list(doc, p, path, "targets", 1, &targets)) != CG_OK)
                 return s;
@@ -302,7 +307,7 @@ typedef struct filling {
     const gltf_instance *instance;
     cg_mat4 normal_matrix;
     int mirrored;
-    int identity; /* the world matrix is the identity: nothing to move */
+    int identity;            /* the world matrix is the identity: nothing to move */
     size_t vertex, triangle; /* next free */
 } filling;
 
@@ -377,8 +382,7 @@ static cg_status fill_vertices(gltf_document *doc, const primitive *p, filling *
         }
     }
     if (s == CG_OK && mesh->texcoords && p->has_texcoord
-        && (s = gltf_accessor_read_doubles(doc, &p->texcoord, &mesh->texcoords[base].x))
-               == CG_OK)
+        && (s = gltf_accessor_read_doubles(doc, &p->texcoord, &mesh->texcoords[base].x)) == CG_OK)
         for (size_t i = 0; i < n; i++)
             mesh->texcoords[base + i].y = 1.0 - mesh->texcoords[base + i].y;
     double *values;
@@ -443,8 +447,8 @@ static void put_triangles(const primitive *p, const uint32_t *indices, filling *
     }
 }
 
-static cg_status fill_visit(gltf_document *doc, const primitive *p, size_t mesh_index,
-                            size_t index, void *context)
+static cg_status fill_visit(gltf_document *doc, const primitive *p, size_t mesh_index, size_t index,
+                            void *context)
 {
     filling *f = context;
     if (!p->has_position || p->mode < MODE_TRIANGLES)

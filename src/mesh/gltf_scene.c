@@ -14,11 +14,9 @@
 #include <stdlib.h>
 
 /* A node's local matrix from its matrix (column-major) or TRS. */
-static cg_status local_matrix(gltf_document *doc, const cJSON *node, const char *path,
-                              cg_mat4 *out)
+static cg_status local_matrix(gltf_document *doc, const cJSON *node, const char *path, cg_mat4 *out)
 {
-    double matrix[16], translation[3] = {0, 0, 0}, rotation[4] = {0, 0, 0, 1},
-                       scale[3] = {1, 1, 1};
+    double matrix[16], translation[3] = {0, 0, 0}, rotation[4] = {0, 0, 0, 1}, scale[3] = {1, 1, 1};
     int has_matrix, has_t, has_r, has_s;
     cg_status s = gltf_get_numbers(doc, node, path, "matrix", 16, matrix, &has_matrix);
     if (s == CG_OK)
@@ -166,8 +164,9 @@ static cg_status scene_roots(gltf_document *doc, const size_t *parent, size_t **
         snprintf(item_path, sizeof item_path, "%s.nodes[%zu]", path, i);
         if (d != floor(d) || d < 0 || d >= (double)n) {
             char expected[64];
-            snprintf(expected, sizeof expected, n ? "an index into nodes (0 to %zu)"
-                                                  : "an index into nodes, but the file has none",
+            snprintf(expected, sizeof expected,
+                     n ? "an index into nodes (0 to %zu)"
+                       : "an index into nodes, but the file has none",
                      n ? n - 1 : 0);
             s = gltf_fail(doc, item_path, NULL, expected, item);
         } else if (parent[(size_t)d] != SIZE_MAX) {
@@ -270,7 +269,7 @@ cg_status gltf_collect_instances(gltf_document *doc, gltf_instance_array *out)
                 }
             }
             const cJSON *children = cJSON_GetObjectItemCaseSensitive(doc->nodes.items[e.node],
-                                                                      "children");
+                                                                     "children");
             size_t count = (size_t)cJSON_GetArraySize(children);
             if (core_array_reserve_for(&stack, stack.count + count) != CG_OK) {
                 s = gltf_out_of_memory(doc);

@@ -133,7 +133,9 @@ static cJSON *material_json(const cg_mesh_material *m)
                            : m->roughness;
     cJSON_AddNumberToObject(pbr, "metallicFactor", metallic < 0 ? 0 : metallic > 1 ? 1 : metallic);
     cJSON_AddNumberToObject(pbr, "roughnessFactor",
-                            roughness < 0 ? 0 : roughness > 1 ? 1 : roughness);
+                            roughness < 0   ? 0
+                            : roughness > 1 ? 1
+                                            : roughness);
     cJSON_AddItemToObject(j, "pbrMetallicRoughness", pbr);
     double emissive[3] = {m->emissive.r, m->emissive.g, m->emissive.b}, strength = 1;
     for (int k = 0; k < 3; k++)
@@ -171,9 +173,8 @@ static int in_group(const cg_mesh *m, size_t f, uint32_t wanted)
 /* One primitive per material (faces without one last), each with the
  * vertices its triangles use (renumbered from 0, in order of first use),
  * so that no vertex is written twice for one primitive. */
-static cg_status write_primitives(const cg_mesh *m, const uint32_t (*triangles)[3],
-                                  byte_array *bin, cJSON *views, cJSON *accessors,
-                                  cJSON *primitives)
+static cg_status write_primitives(const cg_mesh *m, const uint32_t (*triangles)[3], byte_array *bin,
+                                  cJSON *views, cJSON *accessors, cJSON *primitives)
 {
     size_t groups = m->face_materials ? m->material_count + 1 : 1;
     size_t *first_triangle = malloc((m->face_count + 1) * sizeof *first_triangle);
@@ -259,7 +260,7 @@ static cg_status write_file(const char *path, const char *json, const byte_array
 cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
 {
     size_t n = cg_mesh_triangle_count(m);
-    uint32_t (*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
+    uint32_t(*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
     if (!triangles)
         return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
     cg_status s = cg_mesh_triangulate(m, triangles);
@@ -275,7 +276,7 @@ cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
     cJSON *views = cJSON_AddArrayToObject(root, "bufferViews");
     cJSON *accessors = cJSON_AddArrayToObject(root, "accessors");
     cJSON *primitives = cJSON_CreateArray();
-    s = write_primitives(m, (const uint32_t (*)[3])triangles, &bin, views, accessors, primitives);
+    s = write_primitives(m, (const uint32_t(*)[3])triangles, &bin, views, accessors, primitives);
     free(triangles);
     if (s == CG_OK && m->material_count) {
         cJSON *materials = cJSON_AddArrayToObject(root, "materials");

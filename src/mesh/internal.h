@@ -15,9 +15,9 @@
 typedef struct mesh_builder {
     size_t vertex_count, vertex_capacity;
     cg_vec3 *positions;
-    cg_vec3 *normals;    /* allocated when CG_MESH_NORMALS is in flags */
-    cg_vec2 *texcoords;  /* CG_MESH_TEXCOORDS */
-    cg_rgbaf *colors;    /* CG_MESH_COLORS */
+    cg_vec3 *normals;   /* allocated when CG_MESH_NORMALS is in flags */
+    cg_vec2 *texcoords; /* CG_MESH_TEXCOORDS */
+    cg_rgbaf *colors;   /* CG_MESH_COLORS */
     size_t face_count, face_capacity;
     uint32_t *face_offsets; /* face_count + 1 entries once a face is added */
     cg_rgbaf *face_colors;  /* CG_MESH_FACE_COLORS */
@@ -93,9 +93,18 @@ cg_status builder_finish(mesh_builder *b, cg_mesh **out);
 int parse_double(const char **p, const char *end, double *out);
 int parse_int64(const char **p, const char *end, int64_t *out);
 
-static inline int is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-static inline int is_line_end(char c) { return c == '\n' || c == '\r'; }
-static inline int is_space(char c) { return is_blank(c) || is_line_end(c); }
+static inline int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+static inline int is_line_end(char c)
+{
+    return c == '\n' || c == '\r';
+}
+static inline int is_space(char c)
+{
+    return is_blank(c) || is_line_end(c);
+}
 
 /* ---- a cursor over text ------------------------------------------------ */
 typedef struct text_cursor {
@@ -194,8 +203,7 @@ cg_status obj_read(const char *bytes, size_t size, const char *name, const char 
                    cg_mesh **out, cg_error *err);
 cg_status ply_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
-cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **out,
-                   cg_error *err);
+cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **out, cg_error *err);
 cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg_mesh **out,
                    cg_error *err);
 

@@ -219,8 +219,7 @@ static char *directory_of(const char *path)
     return dir;
 }
 
-static cg_status unsupported(const char *name, const char *format, const char *how,
-                             cg_error *err)
+static cg_status unsupported(const char *name, const char *format, const char *how, cg_error *err)
 {
     return cg_error_set(err, CG_EUNSUPPORTED,
                         "%s: %s %s, which cg does not read (yet); cg reads OBJ, OFF, PLY, STL and "
@@ -230,8 +229,8 @@ static cg_status unsupported(const char *name, const char *format, const char *h
 
 /* gzip is looked through once: a .gz inside a .gz (or a gzip quine) is not opened. */
 static cg_status load(const unsigned char *bytes, size_t size, const char *name,
-                      cg_mesh_format format, const char *directory, int gzip_allowed,
-                      cg_mesh **out, cg_error *err)
+                      cg_mesh_format format, const char *directory, int gzip_allowed, cg_mesh **out,
+                      cg_error *err)
 {
     if (!out)
         return cg_error_set(err, CG_EINVAL, "%s: no output mesh given", name ? name : "mesh");
@@ -263,29 +262,25 @@ static cg_status load(const unsigned char *bytes, size_t size, const char *name,
     if (format == CG_MESH_FORMAT_AUTO && (foreign = mesh_foreign_by_name(name)))
         return unsupported(name, foreign, "the name says this is", err);
     switch (format) {
-    case CG_MESH_FORMAT_OBJ:
-        return obj_read((const char *)bytes, size, name, directory, out, err);
-    case CG_MESH_FORMAT_OFF:
-        return off_read((const char *)bytes, size, name, out, err);
+    case CG_MESH_FORMAT_OBJ: return obj_read((const char *)bytes, size, name, directory, out, err);
+    case CG_MESH_FORMAT_OFF: return off_read((const char *)bytes, size, name, out, err);
     case CG_MESH_FORMAT_PLY:
     case CG_MESH_FORMAT_PLY_ASCII:
-    case CG_MESH_FORMAT_PLY_BINARY:
-        return ply_read(bytes, size, name, out, err);
-    case CG_MESH_FORMAT_STL:
-        return stl_read(bytes, size, name, out, err);
-    case CG_MESH_FORMAT_GLTF:
-        return gltf_read(bytes, size, name, directory, out, err);
-    case CG_MESH_FORMAT_AUTO:
-        break;
+    case CG_MESH_FORMAT_PLY_BINARY: return ply_read(bytes, size, name, out, err);
+    case CG_MESH_FORMAT_STL: return stl_read(bytes, size, name, out, err);
+    case CG_MESH_FORMAT_GLTF: return gltf_read(bytes, size, name, directory, out, err);
+    case CG_MESH_FORMAT_AUTO: break;
     }
     /* no magic and no known extension: OBJ is the only format without a header */
-    if (size >= 2 && (bytes[0] == 'v' || bytes[0] == '#' || bytes[0] == 'o' || bytes[0] == 'g'
-                      || bytes[0] == 'm'))
+    if (size >= 2
+        && (bytes[0] == 'v' || bytes[0] == '#' || bytes[0] == 'o' || bytes[0] == 'g'
+            || bytes[0] == 'm'))
         return obj_read((const char *)bytes, size, name, directory, out, err);
-    return cg_error_set(err, CG_EFORMAT,
-                        "%s: unknown mesh format (expected OBJ, OFF, PLY, STL or glTF, by content or "
-                        "by extension)",
-                        name);
+    return cg_error_set(
+        err, CG_EFORMAT,
+        "%s: unknown mesh format (expected OBJ, OFF, PLY, STL or glTF, by content or "
+        "by extension)",
+        name);
 }
 
 cg_status cg_mesh_load_memory(const void *bytes, size_t size, const char *name,

@@ -9,8 +9,8 @@ static void *zeroed(size_t count, size_t size)
     return calloc(count ? count : 1, size);
 }
 
-cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count,
-                         size_t index_count, unsigned flags)
+cg_status cg_mesh_create(cg_mesh **out, size_t vertex_count, size_t face_count, size_t index_count,
+                         unsigned flags)
 {
     if (!out)
         return CG_EINVAL;
@@ -119,7 +119,10 @@ cg_status cg_mesh_validate(const cg_mesh *mesh, cg_error *err)
         if (axis >= 0)
             return cg_error_set(err, CG_EFORMAT,
                                 "mesh: vertex %zu: expected finite coordinates, got %c = %g", v,
-                                "xyz"[axis], axis == 0 ? p.x : axis == 1 ? p.y : p.z);
+                                "xyz"[axis],
+                                axis == 0   ? p.x
+                                : axis == 1 ? p.y
+                                            : p.z);
     }
     return cg_mesh_validate_topology(mesh, err);
 }
@@ -133,8 +136,9 @@ cg_status cg_mesh_validate_topology(const cg_mesh *mesh, cg_error *err)
     for (size_t f = 0; f < mesh->face_count; f++) {
         uint32_t begin = mesh->face_offsets[f], end = mesh->face_offsets[f + 1];
         if (end < begin || end - begin < 3)
-            return cg_error_set(err, CG_EFORMAT, "mesh: face %zu has %ld corners, expected 3 or more",
-                                f, (long)end - (long)begin);
+            return cg_error_set(err, CG_EFORMAT,
+                                "mesh: face %zu has %ld corners, expected 3 or more", f,
+                                (long)end - (long)begin);
         for (uint32_t k = begin; k < end; k++)
             if (mesh->face_indices[k] >= mesh->vertex_count)
                 return cg_error_set(err, CG_EFORMAT,

@@ -159,8 +159,9 @@ static cg_status read_map(mtl_reader *r, size_t m, const char *key, cg_mesh_text
     if (!path)
         return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->t.name);
     if (access(path, R_OK) != 0) {
-        cg_status s = mesh_note(r->notes, "%s:%zu: %s file %s not found; material '%s' keeps its "
-                                          "colour",
+        cg_status s = mesh_note(r->notes,
+                                "%s:%zu: %s file %s not found; material '%s' keeps its "
+                                "colour",
                                 r->t.name, r->t.line, key, path, r->names[m]);
         free(path);
         return s == CG_OK ? CG_OK : cg_error_set(r->err, s, "%s: out of memory", r->t.name);
@@ -275,7 +276,13 @@ cg_status mtl_read_library(const char *path, char **names, size_t count,
         directory[n] = '\0';
     }
     mtl_reader r = {{(const char *)bytes, (const char *)bytes + size, path, 1},
-                    directory ? directory : ".", materials, has_kd, names, count, notes, err};
+                    directory ? directory : ".",
+                    materials,
+                    has_kd,
+                    names,
+                    count,
+                    notes,
+                    err};
     cg_status s = parse(&r);
     free(directory);
     free(bytes);

@@ -331,8 +331,8 @@ static cg_status read_library(obj_reader *r, const char *directory, const char *
     char *path = library_path(directory, file);
     if (!path)
         return out_of_memory(r);
-    cg_status s = mtl_read_library(path, r->materials, r->material_count, r->mesh_materials,
-                                   has_kd, &r->notes, r->err, found);
+    cg_status s = mtl_read_library(path, r->materials, r->material_count, r->mesh_materials, has_kd,
+                                   &r->notes, r->err, found);
     free(path);
     return s;
 }
@@ -366,10 +366,12 @@ static cg_status read_libraries(obj_reader *r, const char *directory, unsigned c
             }
             found = any;
         }
-        if (s == CG_OK && !found && mesh_note(&r->notes, "%s: material library %s not found; "
-                                                         "its materials keep no colour",
-                                              r->t.name, r->libraries[l])
-                                        != CG_OK)
+        if (s == CG_OK && !found
+            && mesh_note(&r->notes,
+                         "%s: material library %s not found; "
+                         "its materials keep no colour",
+                         r->t.name, r->libraries[l])
+                   != CG_OK)
             s = out_of_memory(r);
     }
     return s;
@@ -595,9 +597,9 @@ static cg_status read_lines(obj_reader *r)
     for (int k = 0; k < 3; k++)
         if (r->max_index[k] > counts[k])
             return cg_error_set(r->err, CG_EFORMAT,
-                                "%s:%zu: face refers to %s %llu, but the file has %zu %s",
-                                t->name, r->max_line[k], noun[k],
-                                (unsigned long long)r->max_index[k], counts[k], plural[k]);
+                                "%s:%zu: face refers to %s %llu, but the file has %zu %s", t->name,
+                                r->max_line[k], noun[k], (unsigned long long)r->max_index[k],
+                                counts[k], plural[k]);
     return CG_OK;
 }
 
@@ -620,8 +622,8 @@ cg_status obj_read(const char *bytes, size_t size, const char *name, const char 
     if (s == CG_OK)
         s = read_lines(&r);
     if (s == CG_OK && r.b.vertex_count == 0)
-        s = cg_error_set(err, CG_EFORMAT, "%s:%zu: expected vertices ('v x y z'), found none",
-                         name, r.t.line);
+        s = cg_error_set(err, CG_EFORMAT, "%s:%zu: expected vertices ('v x y z'), found none", name,
+                         r.t.line);
     if (s == CG_OK && r.corner_tex)
         s = unify_indices(&r);
     if (s == CG_OK)

@@ -112,8 +112,7 @@ static cg_status read_vertices(off_reader *r, int64_t count)
             return mesh_nonfinite_error(r->err, r->t.name, r->t.line, 0, NULL, position);
         size_t k;
         if (builder_push_vertex(&r->b, position, &k) != CG_OK)
-            return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name,
-                                r->t.line);
+            return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name, r->t.line);
         int at = 3;
         if (r->normals) {
             r->b.normals[k] = cg_vec3_make(v[3], v[4], v[5]);
@@ -135,8 +134,8 @@ static cg_status read_faces(off_reader *r, int64_t count)
         text_skip_space_and_comments(&r->t);
         if (r->t.p >= r->t.end)
             return cg_error_set(r->err, CG_EFORMAT,
-                                "%s:%zu: expected %lld faces, the file ends after %lld",
-                                r->t.name, r->t.line, (long long)count, (long long)i);
+                                "%s:%zu: expected %lld faces, the file ends after %lld", r->t.name,
+                                r->t.line, (long long)count, (long long)i);
         int64_t n;
         if (!parse_int64(&r->t.p, r->t.end, &n) || n < 3)
             return off_fail(r, "a face's vertex count (3 or more)");
@@ -152,21 +151,18 @@ static cg_status read_faces(off_reader *r, int64_t count)
                                     r->t.name, r->t.line, (long long)i, (long long)v,
                                     r->b.vertex_count);
             if (builder_push_index(&r->b, (uint32_t)v) != CG_OK)
-                return cg_error_set(r->err, CG_ERANGE,
-                                    "%s:%zu: too many face corners for cg_mesh", r->t.name,
-                                    r->t.line);
+                return cg_error_set(r->err, CG_ERANGE, "%s:%zu: too many face corners for cg_mesh",
+                                    r->t.name, r->t.line);
         }
         double c[4];
         int k = line_numbers(r, c, 4);
         if (k < 0 || k == 2)
             return off_fail(r, "the end of the face, or a colour (r g b [a]) after it");
         if (builder_reserve_faces(&r->b, 1) != CG_OK || builder_end_face(&r->b) != CG_OK)
-            return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name,
-                                r->t.line);
+            return cg_error_set(r->err, CG_ENOMEM, "%s:%zu: out of memory", r->t.name, r->t.line);
         if (k >= 3) {
             cg_rgbaf white = {1, 1, 1, 1};
-            if (!r->b.face_colors
-                && builder_add_arrays(&r->b, CG_MESH_FACE_COLORS, white) != CG_OK)
+            if (!r->b.face_colors && builder_add_arrays(&r->b, CG_MESH_FACE_COLORS, white) != CG_OK)
                 return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->t.name);
             r->b.face_colors[r->b.face_count - 1] = color_from(c, k);
         } else if (r->b.face_colors) {
@@ -177,8 +173,7 @@ static cg_status read_faces(off_reader *r, int64_t count)
     return CG_OK;
 }
 
-cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **out,
-                   cg_error *err)
+cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **out, cg_error *err)
 {
     off_reader r;
     memset(&r, 0, sizeof r);

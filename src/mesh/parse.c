@@ -58,10 +58,10 @@ static int wide_path(uint64_t m, int e, double *out)
 {
 #if LDBL_MANT_DIG == 64
     /* exact: 10^27 = 5^27 2^27 and 5^27 < 2^64 */
-    static const long double powers[28] = {
-        1e0L,  1e1L,  1e2L,  1e3L,  1e4L,  1e5L,  1e6L,  1e7L,  1e8L,  1e9L,
-        1e10L, 1e11L, 1e12L, 1e13L, 1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L,
-        1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
+    static const long double powers[28] = {1e0L,  1e1L,  1e2L,  1e3L,  1e4L,  1e5L,  1e6L,
+                                           1e7L,  1e8L,  1e9L,  1e10L, 1e11L, 1e12L, 1e13L,
+                                           1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L, 1e20L,
+                                           1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
     long double r = (long double)m; /* exact: m < 2^64 */
     r = e < 0 ? r / powers[-e] : r * powers[e];
     uint64_t significand;

@@ -13,12 +13,35 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-enum ply_type { PLY_NONE, PLY_INT8, PLY_UINT8, PLY_INT16, PLY_UINT16, PLY_INT32, PLY_UINT32,
-                PLY_FLOAT32, PLY_FLOAT64 };
+enum ply_type {
+    PLY_NONE,
+    PLY_INT8,
+    PLY_UINT8,
+    PLY_INT16,
+    PLY_UINT16,
+    PLY_INT32,
+    PLY_UINT32,
+    PLY_FLOAT32,
+    PLY_FLOAT64
+};
 static const unsigned char type_size[] = {0, 1, 1, 2, 2, 4, 4, 4, 8};
 
-enum ply_target { T_SKIP, T_X, T_Y, T_Z, T_NX, T_NY, T_NZ, T_U, T_V, T_R, T_G, T_B, T_A,
-                  T_CORNERS };
+enum ply_target {
+    T_SKIP,
+    T_X,
+    T_Y,
+    T_Z,
+    T_NX,
+    T_NY,
+    T_NZ,
+    T_U,
+    T_V,
+    T_R,
+    T_G,
+    T_B,
+    T_A,
+    T_CORNERS
+};
 
 typedef struct ply_property {
     enum ply_type type;       /* value type, or the list's index type */
@@ -55,13 +78,15 @@ typedef struct ply_reader {
 
 static enum ply_type parse_type(const char *word, size_t length)
 {
-    static const struct { const char *name; enum ply_type type; } names[] = {
-        {"char", PLY_INT8},     {"int8", PLY_INT8},       {"uchar", PLY_UINT8},
-        {"uint8", PLY_UINT8},   {"short", PLY_INT16},     {"int16", PLY_INT16},
-        {"ushort", PLY_UINT16}, {"uint16", PLY_UINT16},   {"int", PLY_INT32},
-        {"int32", PLY_INT32},   {"uint", PLY_UINT32},     {"uint32", PLY_UINT32},
-        {"float", PLY_FLOAT32}, {"float32", PLY_FLOAT32}, {"double", PLY_FLOAT64},
-        {"float64", PLY_FLOAT64}};
+    static const struct {
+        const char *name;
+        enum ply_type type;
+    } names[] = {{"char", PLY_INT8},      {"int8", PLY_INT8},       {"uchar", PLY_UINT8},
+                 {"uint8", PLY_UINT8},    {"short", PLY_INT16},     {"int16", PLY_INT16},
+                 {"ushort", PLY_UINT16},  {"uint16", PLY_UINT16},   {"int", PLY_INT32},
+                 {"int32", PLY_INT32},    {"uint", PLY_UINT32},     {"uint32", PLY_UINT32},
+                 {"float", PLY_FLOAT32},  {"float32", PLY_FLOAT32}, {"double", PLY_FLOAT64},
+                 {"float64", PLY_FLOAT64}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (strlen(names[i].name) == length && memcmp(names[i].name, word, length) == 0)
             return names[i].type;
@@ -70,15 +95,33 @@ static enum ply_type parse_type(const char *word, size_t length)
 
 static enum ply_target vertex_target(const char *word, size_t length)
 {
-    static const struct { const char *name; enum ply_target target; } names[] = {
-        {"x", T_X},           {"y", T_Y},           {"z", T_Z},
-        {"nx", T_NX},         {"ny", T_NY},         {"nz", T_NZ},
-        {"u", T_U},           {"v", T_V},           {"s", T_U},
-        {"t", T_V},           {"texture_u", T_U},   {"texture_v", T_V},
-        {"texture_s", T_U},   {"texture_t", T_V},   {"red", T_R},
-        {"green", T_G},       {"blue", T_B},        {"alpha", T_A},
-        {"diffuse_red", T_R}, {"diffuse_green", T_G}, {"diffuse_blue", T_B},
-        {"r", T_R},           {"g", T_G},           {"b", T_B}};
+    static const struct {
+        const char *name;
+        enum ply_target target;
+    } names[] = {{"x", T_X},
+                 {"y", T_Y},
+                 {"z", T_Z},
+                 {"nx", T_NX},
+                 {"ny", T_NY},
+                 {"nz", T_NZ},
+                 {"u", T_U},
+                 {"v", T_V},
+                 {"s", T_U},
+                 {"t", T_V},
+                 {"texture_u", T_U},
+                 {"texture_v", T_V},
+                 {"texture_s", T_U},
+                 {"texture_t", T_V},
+                 {"red", T_R},
+                 {"green", T_G},
+                 {"blue", T_B},
+                 {"alpha", T_A},
+                 {"diffuse_red", T_R},
+                 {"diffuse_green", T_G},
+                 {"diffuse_blue", T_B},
+                 {"r", T_R},
+                 {"g", T_G},
+                 {"b", T_B}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (strlen(names[i].name) == length && memcmp(names[i].name, word, length) == 0)
             return names[i].target;
@@ -106,15 +149,14 @@ static cg_status header_fail(ply_reader *r, text_cursor *t, const char *what)
 }
 
 /* Parses the header; *body is where the data starts. */
-static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t size,
-                             size_t *body, size_t *body_line)
+static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t size, size_t *body,
+                             size_t *body_line)
 {
     text_cursor t = {(const char *)bytes, (const char *)bytes + size, r->name, 1};
     const char *word;
     size_t length = next_word(&t, &word);
     if (!word_is(word, length, "ply"))
-        return cg_error_set(r->err, CG_EFORMAT, "%s:1: expected 'ply' as the first line",
-                            r->name);
+        return cg_error_set(r->err, CG_EFORMAT, "%s:1: expected 'ply' as the first line", r->name);
     int have_format = 0;
     for (;;) {
         if (!text_at_line_end(&t))
@@ -140,8 +182,7 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
                 r->format = PLY_BIG;
             else {
                 t.p = word;
-                return header_fail(r, &t,
-                                   "ascii, binary_little_endian or binary_big_endian");
+                return header_fail(r, &t, "ascii, binary_little_endian or binary_big_endian");
             }
             length = next_word(&t, &word);
             if (!word_is(word, length, "1.0")) {
@@ -151,8 +192,8 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
             have_format = 1;
         } else if (word_is(word, length, "element")) {
             if (r->element_count == PLY_MAX_ELEMENTS)
-                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d elements",
-                                    r->name, t.line, PLY_MAX_ELEMENTS);
+                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d elements", r->name,
+                                    t.line, PLY_MAX_ELEMENTS);
             ply_element *e = &r->elements[r->element_count];
             length = next_word(&t, &word);
             if (length == 0)
@@ -163,12 +204,11 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
             e->name[kept] = '\0';
             e->kind = word_is(word, length, "vertex") ? E_VERTEX
                       : word_is(word, length, "face") ? E_FACE
-                                                     : E_OTHER;
+                                                      : E_OTHER;
             for (size_t i = 0; i < r->element_count; i++)
                 if (e->kind != E_OTHER && r->elements[i].kind == e->kind)
-                    return cg_error_set(r->err, CG_EFORMAT,
-                                        "%s:%zu: a second '%s' element", r->name, t.line,
-                                        e->kind == E_VERTEX ? "vertex" : "face");
+                    return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: a second '%s' element",
+                                        r->name, t.line, e->kind == E_VERTEX ? "vertex" : "face");
             text_skip_blanks(&t);
             int64_t count;
             if (!parse_int64(&t.p, t.end, &count) || count < 0)
@@ -184,8 +224,8 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
                                     "%s:%zu: expected 'element' before 'property'", r->name,
                                     t.line);
             if (r->property_count == PLY_MAX_PROPERTIES)
-                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d properties",
-                                    r->name, t.line, PLY_MAX_PROPERTIES);
+                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d properties", r->name,
+                                    t.line, PLY_MAX_PROPERTIES);
             ply_element *e = &r->elements[r->element_count - 1];
             ply_property *p = &r->properties[r->property_count];
             memset(p, 0, sizeof *p);
@@ -202,8 +242,9 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
             p->type = parse_type(word, length);
             if (p->type == PLY_NONE) {
                 t.p = word;
-                return header_fail(r, &t, "a property type (char, uchar, short, ushort, int, "
-                                          "uint, float, double or int8 ... float64)");
+                return header_fail(r, &t,
+                                   "a property type (char, uchar, short, ushort, int, "
+                                   "uint, float, double or int8 ... float64)");
             }
             length = next_word(&t, &word);
             if (length == 0)
@@ -216,7 +257,7 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
                 p->target = p->type >= PLY_FLOAT32 ? T_SKIP : T_CORNERS;
             else if (e->kind == E_FACE && !p->count_type)
                 p->target = vertex_target(word, length) >= T_R ? vertex_target(word, length)
-                                                              : T_SKIP;
+                                                               : T_SKIP;
             for (size_t i = e->first_property; i < r->property_count; i++)
                 if (p->target != T_SKIP && r->properties[i].target == p->target)
                     p->target = T_SKIP; /* a repeated name: the first one counts */
@@ -237,8 +278,9 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
             continue; /* blank line */
         } else {
             t.p = word;
-            return header_fail(r, &t, "a header keyword (format, element, property, comment, "
-                                      "end_header)");
+            return header_fail(r, &t,
+                               "a header keyword (format, element, property, comment, "
+                               "end_header)");
         }
     }
     if (!have_format)
@@ -256,8 +298,7 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
     }
     if (!has_xyz[0] || !has_xyz[1] || !has_xyz[2])
         return cg_error_set(r->err, CG_EFORMAT,
-                            "%s: expected a 'vertex' element with properties x, y and z",
-                            r->name);
+                            "%s: expected a 'vertex' element with properties x, y and z", r->name);
     return CG_OK;
 }
 
@@ -285,8 +326,8 @@ static unsigned wanted_arrays(const ply_reader *r)
 }
 
 /* Stores one scalar value of a vertex (or face colour) property. */
-static void store(ply_reader *r, enum ply_target target, enum ply_type type, double value,
-                  size_t i, int face)
+static void store(ply_reader *r, enum ply_target target, enum ply_type type, double value, size_t i,
+                  int face)
 {
     mesh_builder *b = &r->b;
     int is_float = type >= PLY_FLOAT32;
@@ -312,10 +353,22 @@ static void store(ply_reader *r, enum ply_target target, enum ply_type type, dou
     case T_NZ: b->normals[i].z = value; break;
     case T_U: b->texcoords[i].x = value; break;
     case T_V: b->texcoords[i].y = value; break;
-    case T_R: if (b->colors) b->colors[i].r = mesh_color_component(value, is_float, 0); break;
-    case T_G: if (b->colors) b->colors[i].g = mesh_color_component(value, is_float, 0); break;
-    case T_B: if (b->colors) b->colors[i].b = mesh_color_component(value, is_float, 0); break;
-    case T_A: if (b->colors) b->colors[i].a = mesh_color_component(value, is_float, 1); break;
+    case T_R:
+        if (b->colors)
+            b->colors[i].r = mesh_color_component(value, is_float, 0);
+        break;
+    case T_G:
+        if (b->colors)
+            b->colors[i].g = mesh_color_component(value, is_float, 0);
+        break;
+    case T_B:
+        if (b->colors)
+            b->colors[i].b = mesh_color_component(value, is_float, 0);
+        break;
+    case T_A:
+        if (b->colors)
+            b->colors[i].a = mesh_color_component(value, is_float, 1);
+        break;
     default: break;
     }
 }
@@ -378,8 +431,7 @@ static cg_status ascii_fail(ply_reader *r, text_cursor *t, const char *what, uin
 {
     char buffer[40];
     return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: expected %s of %s %llu, got %s", r->name,
-                        t->line, what, element, (unsigned long long)item,
-                        text_describe(t, buffer));
+                        t->line, what, element, (unsigned long long)item, text_describe(t, buffer));
 }
 
 /* Reads one number of the given type, skipping blanks and line ends. */
@@ -424,9 +476,9 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                             size_t line)
 {
     text_cursor t = {(const char *)bytes + body, (const char *)bytes + size, r->name, line};
-    static const char *const type_word[] = {"", "an integer", "an integer", "an integer",
+    static const char *const type_word[] = {"",           "an integer", "an integer",
                                             "an integer", "an integer", "an integer",
-                                            "a number", "a number"};
+                                            "an integer", "a number",   "a number"};
     for (size_t ei = 0; ei < r->element_count; ei++) {
         ply_element *e = &r->elements[ei];
         const ply_property *props = &r->properties[e->first_property];
@@ -445,8 +497,9 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
         size_t guess = e->count < room ? (size_t)e->count : room;
         if (e->kind == E_VERTEX && builder_reserve_vertices(&r->b, guess) != CG_OK)
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
-        if (e->kind == E_FACE && (builder_reserve_faces(&r->b, guess) != CG_OK
-                                  || builder_reserve_indices(&r->b, guess * 3) != CG_OK))
+        if (e->kind == E_FACE
+            && (builder_reserve_faces(&r->b, guess) != CG_OK
+                || builder_reserve_indices(&r->b, guess * 3) != CG_OK))
             return cg_error_set(r->err, CG_ENOMEM, "%s: out of memory", r->name);
         for (uint64_t item = 0; item < e->count; item++) {
             if (e->kind != E_OTHER && begin_item(r, e->kind) != CG_OK)
@@ -482,10 +535,9 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                                         (unsigned long long)n);
                 for (uint64_t j = 0; j < n; j++) {
                     if (!ascii_value(&t, p->type, &value))
-                        return ascii_fail(r, &t,
-                                          p->target == T_CORNERS ? "a vertex index"
-                                                                 : type_word[p->type],
-                                          item, kind_name(e));
+                        return ascii_fail(
+                            r, &t, p->target == T_CORNERS ? "a vertex index" : type_word[p->type],
+                            item, kind_name(e));
                     if (p->target != T_CORNERS)
                         continue;
                     if (value < 0 || (r->vertices_read && value >= (double)r->b.vertex_count))
@@ -494,8 +546,8 @@ static cg_status read_ascii(ply_reader *r, const unsigned char *bytes, size_t si
                                             "are %zu vertices",
                                             r->name, t.line, (unsigned long long)item, value,
                                             r->b.vertex_count);
-                    if (value > CG_MESH_MAX_VERTICES || builder_push_index(&r->b, (uint32_t)value)
-                                                            != CG_OK)
+                    if (value > CG_MESH_MAX_VERTICES
+                        || builder_push_index(&r->b, (uint32_t)value) != CG_OK)
                         return cg_error_set(r->err, CG_ERANGE,
                                             "%s:%zu: too many face corners for cg_mesh", r->name,
                                             t.line);
@@ -557,8 +609,7 @@ static inline double binary_value(const unsigned char *p, enum ply_type type, in
     }
 }
 
-static cg_status binary_truncated(ply_reader *r, size_t offset, const ply_element *e,
-                                  uint64_t item)
+static cg_status binary_truncated(ply_reader *r, size_t offset, const ply_element *e, uint64_t item)
 {
     return cg_error_set(r->err, CG_EFORMAT,
                         "%s: byte %zu: the file ends inside %s %llu of %llu (header line %zu)",
@@ -585,8 +636,8 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
             return cg_error_set(r->err, CG_EFORMAT,
                                 "%s: byte %zu: the header says %llu items of element '%s' (line "
                                 "%zu) but only %zu bytes remain, room for at most %llu",
-                                r->name, at, (unsigned long long)e->count, e->name,
-                                e->header_line, left, (unsigned long long)fits);
+                                r->name, at, (unsigned long long)e->count, e->name, e->header_line,
+                                left, (unsigned long long)fits);
         }
         if (e->kind == E_OTHER && !has_list) {
             at += (size_t)e->count * fixed;
@@ -616,8 +667,8 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                     if (size - at < n)
                         return binary_truncated(r, at, e, item);
                     if (p->target != T_SKIP)
-                        store(r, p->target, p->type, binary_value(bytes + at, p->type, big),
-                              index, e->kind == E_FACE);
+                        store(r, p->target, p->type, binary_value(bytes + at, p->type, big), index,
+                              e->kind == E_FACE);
                     at += n;
                     continue;
                 }
@@ -629,8 +680,7 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                     return cg_error_set(r->err, CG_EFORMAT,
                                         "%s: byte %zu: expected a list length of 0 or more in %s "
                                         "%llu, got %.0f",
-                                        r->name, at, kind_name(e), (unsigned long long)item,
-                                        count);
+                                        r->name, at, kind_name(e), (unsigned long long)item, count);
                 at += cn;
                 uint64_t n = (uint64_t)count;
                 size_t vn = type_size[p->type];
@@ -648,8 +698,8 @@ static cg_status read_binary(ply_reader *r, const unsigned char *bytes, size_t s
                                         (unsigned long long)n);
                 if (builder_reserve_indices(&r->b, (size_t)n) != CG_OK)
                     return cg_error_set(r->err, CG_ERANGE,
-                                        "%s: byte %zu: too many face corners for cg_mesh",
-                                        r->name, at);
+                                        "%s: byte %zu: too many face corners for cg_mesh", r->name,
+                                        at);
                 for (uint64_t j = 0; j < n; j++, at += vn) {
                     double v = binary_value(bytes + at, p->type, big);
                     if (v < 0 || (r->vertices_read && v >= (double)r->b.vertex_count))

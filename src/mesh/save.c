@@ -326,8 +326,7 @@ static cg_status save_ply(const cg_mesh *m, const char *path, int binary, cg_err
     return safe_file_close(&o, CG_OK, err);
 }
 
-cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format,
-                       cg_error *err)
+cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format format, cg_error *err)
 {
     if (!mesh || !path)
         return cg_error_set(err, CG_EINVAL, "mesh save: no mesh or path given");
@@ -337,17 +336,12 @@ cg_status cg_mesh_save(const cg_mesh *mesh, const char *path, cg_mesh_format for
     if (format == CG_MESH_FORMAT_AUTO)
         format = cg_mesh_format_from_path(path);
     switch (format) {
-    case CG_MESH_FORMAT_OBJ:
-        return save_obj(mesh, path, err);
+    case CG_MESH_FORMAT_OBJ: return save_obj(mesh, path, err);
     case CG_MESH_FORMAT_PLY:
-    case CG_MESH_FORMAT_PLY_BINARY:
-        return save_ply(mesh, path, 1, err);
-    case CG_MESH_FORMAT_PLY_ASCII:
-        return save_ply(mesh, path, 0, err);
-    case CG_MESH_FORMAT_OFF:
-        return off_write(mesh, path, err);
-    case CG_MESH_FORMAT_STL:
-        return stl_write(mesh, path, err);
+    case CG_MESH_FORMAT_PLY_BINARY: return save_ply(mesh, path, 1, err);
+    case CG_MESH_FORMAT_PLY_ASCII: return save_ply(mesh, path, 0, err);
+    case CG_MESH_FORMAT_OFF: return off_write(mesh, path, err);
+    case CG_MESH_FORMAT_STL: return stl_write(mesh, path, err);
     case CG_MESH_FORMAT_GLTF: {
         size_t n = strlen(path);
         if (n >= 5 && strcmp(path + n - 5, ".gltf") == 0)

@@ -88,7 +88,7 @@ cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err)
     size_t n = cg_mesh_triangle_count(m);
     if (n > UINT32_MAX)
         return cg_error_set(err, CG_ERANGE, "%s: %zu triangles, more than STL counts", path, n);
-    uint32_t (*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
+    uint32_t(*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
     if (!triangles)
         return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
     cg_status s = cg_mesh_triangulate(m, triangles);

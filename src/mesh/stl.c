@@ -196,9 +196,8 @@ static cg_status read_ascii(const char *bytes, size_t size, const char *name, me
                 corners++;
             }
             if (corners < 3)
-                return text_expected(&t, corners ? "another 'vertex' (a facet has 3 or more)"
-                                              : "'vertex'",
-                                  err);
+                return text_expected(
+                    &t, corners ? "another 'vertex' (a facet has 3 or more)" : "'vertex'", err);
             if (!expect_word(&t, "endloop"))
                 return text_expected(&t, "'vertex' or 'endloop'", err);
             if (!expect_word(&t, "endfacet"))

@@ -40,14 +40,14 @@
 #define TRIANGULATE_WORK_MIN (1 << 20)
 
 typedef struct ring {
-    double (*p)[2];   /* projected corners */
+    double (*p)[2]; /* projected corners */
     uint32_t *prev, *next;
     /* the grid (large faces only): corners by cell, in cell_items from
      * cell_start[cell] to cell_start[cell + 1]; cut corners are marked */
     uint32_t *cell_start, *cell_items;
     unsigned char *cut;
     int use_grid;
-    uint64_t work;    /* corners that ear tests may still look at */
+    uint64_t work; /* corners that ear tests may still look at */
     uint32_t cells_x, cells_y;
     double x0, y0, scale_x, scale_y;
 } ring;
@@ -64,8 +64,7 @@ static int same_point(const double a[2], const double b[2])
 
 /* Projects the n corners of a face; 0 when the face has no usable normal
  * (all corners on a line, or a coordinate that is not finite). */
-static int project(const cg_vec3 *positions, const uint32_t *indices, uint32_t n,
-                   double (*out)[2])
+static int project(const cg_vec3 *positions, const uint32_t *indices, uint32_t n, double (*out)[2])
 {
     double nx = 0, ny = 0, nz = 0;
     for (uint32_t k = 0; k < n; k++) {
@@ -187,10 +186,9 @@ static int is_ear(ring *g, uint32_t i)
         return 1; /* no turn: cutting it changes no area */
     if (!(o > 0))
         return 0;
-    const double box[4] = {fmin(fmin(t[0][0], t[1][0]), t[2][0]),
-                           fmin(fmin(t[0][1], t[1][1]), t[2][1]),
-                           fmax(fmax(t[0][0], t[1][0]), t[2][0]),
-                           fmax(fmax(t[0][1], t[1][1]), t[2][1])};
+    const double box[4] = {
+        fmin(fmin(t[0][0], t[1][0]), t[2][0]), fmin(fmin(t[0][1], t[1][1]), t[2][1]),
+        fmax(fmax(t[0][0], t[1][0]), t[2][0]), fmax(fmax(t[0][1], t[1][1]), t[2][1])};
     if (!g->use_grid) {
         for (uint32_t q = g->next[c]; q != a; q = g->next[q]) {
             g->work -= g->work > 0;
@@ -287,7 +285,7 @@ static void triangulate(const cg_mesh *mesh, size_t f, ring *g, uint32_t (*out)[
 {
     uint32_t base = mesh->face_offsets[f], n = mesh->face_offsets[f + 1] - base;
     if (n < 4 || !project(mesh->positions, mesh->face_indices + base, n, g->p)
-        || fan_is_exact((const double (*)[2])g->p, n))
+        || fan_is_exact((const double(*)[2])g->p, n))
         fan(n, base, out);
     else
         clip_ears(g, n, base, out);

@@ -18,8 +18,8 @@ typedef struct tile_range {
 static inline tile_range tiles_under(const render_frame *f, const render_chunk *c, size_t i)
 {
     const setup_triangle *t = (const setup_triangle *)(c->setups + i * f->stride);
-    tile_range r = {t->box[0] / RENDER_TILE, t->box[1] / RENDER_TILE,
-                    (t->box[2] - 1) / RENDER_TILE, (t->box[3] - 1) / RENDER_TILE};
+    tile_range r = {t->box[0] / RENDER_TILE, t->box[1] / RENDER_TILE, (t->box[2] - 1) / RENDER_TILE,
+                    (t->box[3] - 1) / RENDER_TILE};
     return r;
 }
 
@@ -29,9 +29,11 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
         return;
     size_t tiles = (size_t)f->tile_count;
     if (core_array_reserve((void **)&c->bin_start, &c->bin_start_capacity, tiles + 1,
-                           sizeof *c->bin_start) != CG_OK
+                           sizeof *c->bin_start)
+            != CG_OK
         || core_array_reserve((void **)&c->bin_fill, &c->bin_fill_capacity, tiles,
-                              sizeof *c->bin_fill) != CG_OK) {
+                              sizeof *c->bin_fill)
+               != CG_OK) {
         c->failed = 1;
         return;
     }
@@ -43,8 +45,7 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
         for (int ty = tiles_of.y0; ty <= tiles_of.y1; ty++)
             for (int tx = tiles_of.x0; tx <= tiles_of.x1; tx++)
                 start[ty * f->tiles_x + tx + 1]++;
-        total += (size_t)(tiles_of.x1 - tiles_of.x0 + 1)
-                 * (size_t)(tiles_of.y1 - tiles_of.y0 + 1);
+        total += (size_t)(tiles_of.x1 - tiles_of.x0 + 1) * (size_t)(tiles_of.y1 - tiles_of.y0 + 1);
     }
     if (total > UINT32_MAX) {
         c->failed = 1;
@@ -53,7 +54,8 @@ void render_bin_chunk(render_frame *f, render_chunk *c)
     for (size_t t = 0; t < tiles; t++)
         start[t + 1] += start[t];
     if (core_array_reserve((void **)&c->bin_list, &c->bin_capacity, total ? total : 1,
-                           sizeof *c->bin_list) != CG_OK) {
+                           sizeof *c->bin_list)
+        != CG_OK) {
         c->failed = 1;
         return;
     }

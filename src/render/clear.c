@@ -52,8 +52,8 @@ void render_clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
         fill_rows((unsigned char *)(f->depth + (size_t)y0 * f->width + x0),
                   (size_t)f->width * sizeof(float), y1 - y0, width * sizeof(float),
                   _mm_castps_si128(_mm_set1_ps(INFINITY)), stream);
-    fill_rows(f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel,
-              f->image->stride, y1 - y0, width * pixel, color, stream);
+    fill_rows(f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel, f->image->stride,
+              y1 - y0, width * pixel, color, stream);
 #else
     (void)stream;
     const cg_rgbaf background = {f->background[0], f->background[1], f->background[2],
@@ -72,7 +72,8 @@ void render_clear_tile(render_frame *f, int x0, int y0, int x1, int y1, int stre
         for (size_t x = 0; x < width; x++)
             row[x] = background;
     }
-    const unsigned char *first = f->image->data + (size_t)y0 * f->image->stride + (size_t)x0 * pixel;
+    const unsigned char *first = f->image->data + (size_t)y0 * f->image->stride
+                                 + (size_t)x0 * pixel;
     for (int y = y0 + 1; y < y1; y++) {
         if (depth)
             memcpy(f->depth + (size_t)y * f->width + x0, z0, width * sizeof *z0);

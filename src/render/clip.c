@@ -47,9 +47,11 @@ int render_clip_polygon(const clip_vertex *in, int n, unsigned mask, int attribu
             if (current_in != next_in && produced <= RENDER_MAX_POLYGON) {
                 /* Always from the inside end, so a shared edge is cut alike. */
                 if (current_in)
-                    interpolate(current, next, dc / (dc - dn), attribute_count, &target[produced++]);
+                    interpolate(current, next, dc / (dc - dn), attribute_count,
+                                &target[produced++]);
                 else
-                    interpolate(next, current, dn / (dn - dc), attribute_count, &target[produced++]);
+                    interpolate(next, current, dn / (dn - dc), attribute_count,
+                                &target[produced++]);
             }
         }
         source = target;

@@ -43,8 +43,7 @@ static void setup_lighting(render_frame *f, const cg_camera *camera, const cg_ma
     const cg_render_options *o = f->o;
     render_lighting *l = &f->lighting;
     /* White lights; ka, kd = 1 and ks of the options; Blinn-Phong. */
-    l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular,
-                                   o->shininess);
+    l->material = cg_material_make(cg_vec3_make(1, 1, 1), o->ambient, 1, o->specular, o->shininess);
     l->material.specular = CG_SPECULAR_BLINN;
     if (o->specular == 0)
         l->material.shininess = 1; /* the term is zero anyway: spare its power */
@@ -108,11 +107,14 @@ static cg_status frame_vertex_buffers(render_frame *f)
     /* The vertex count is the mesh's: these grow at the first frame only
      * (and the attributes when the shading needs more of them). */
     if (core_array_reserve((void **)&r->frame_vertices, &r->frame_vertex_capacity, count,
-                           sizeof *r->frame_vertices) != CG_OK
+                           sizeof *r->frame_vertices)
+            != CG_OK
         || core_array_reserve((void **)&r->frame_attributes, &r->frame_attribute_capacity, floats,
-                              sizeof *r->frame_attributes) != CG_OK
+                              sizeof *r->frame_attributes)
+               != CG_OK
         || core_array_reserve((void **)&r->frame_states, &r->frame_state_capacity, count,
-                              sizeof *r->frame_states) != CG_OK)
+                              sizeof *r->frame_states)
+               != CG_OK)
         return CG_ENOMEM;
     f->vertices = r->frame_vertices;
     f->attributes = r->frame_attributes;
@@ -130,7 +132,8 @@ static cg_status frame_chunks(render_frame *f)
     f->chunk_count = wanted < 1 ? 1 : wanted > MAX_CHUNKS ? MAX_CHUNKS : (int)wanted;
     if (r->chunk_count < f->chunk_count) {
         if (core_array_reserve((void **)&r->chunks, &r->chunk_capacity, (size_t)f->chunk_count,
-                               sizeof *r->chunks) != CG_OK)
+                               sizeof *r->chunks)
+            != CG_OK)
             return CG_ENOMEM;
         memset(r->chunks + r->chunk_count, 0,
                (size_t)(f->chunk_count - r->chunk_count) * sizeof *r->chunks);
@@ -142,7 +145,8 @@ static cg_status frame_chunks(render_frame *f)
         c->end = r->triangle_count * (size_t)(i + 1) / (size_t)f->chunk_count;
         /* The capacity counts set-ups of the last frame's size. */
         if (c->setup_stride != f->stride) {
-            c->setup_capacity = c->setup_stride ? c->setup_capacity * c->setup_stride / f->stride : 0;
+            c->setup_capacity = c->setup_stride ? c->setup_capacity * c->setup_stride / f->stride
+                                                : 0;
             c->setup_stride = f->stride;
         }
         c->setup_count = c->polygon_count = 0;
@@ -181,8 +185,10 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
     setup_lighting(f, &camera, &view);
     f->fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
     f->shading = f->fill_background ? MODE_FLAT : (int)o->shading;
-    f->attribute_count = f->shading == MODE_FLAT ? 0 : f->shading == MODE_GOURAUD ? 3
-                         : r->varying_color ? 9 : 6;
+    f->attribute_count = f->shading == MODE_FLAT      ? 0
+                         : f->shading == MODE_GOURAUD ? 3
+                         : r->varying_color           ? 9
+                                                      : 6;
     f->cull = o->cull == CG_CULL_BACK;
     f->background[0] = o->background.r;
     f->background[1] = o->background.g;
@@ -211,7 +217,8 @@ static cg_status frame_depth_buffers(render_frame *f)
     int same_layout = r->depth_width == f->width && r->depth_height == f->height;
     if (r->clean_tile_capacity < (size_t)f->tile_count) {
         if (core_array_reserve((void **)&r->clean_tiles, &r->clean_tile_capacity,
-                               (size_t)f->tile_count, 1) != CG_OK)
+                               (size_t)f->tile_count, 1)
+            != CG_OK)
             return CG_ENOMEM;
         same_layout = 0;
     }

@@ -19,17 +19,17 @@
 /* ---- shading: the one place that computes the colour of a point --------- */
 
 typedef struct render_lighting {
-    int count;                  /* lights[0] is the ambient light */
+    int count; /* lights[0] is the ambient light */
     cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
-    cg_material material;       /* colour replaced per point */
+    cg_material material; /* colour replaced per point */
     int orthographic;
-    float eye[3];       /* perspective: viewer position */
-    float view_dir[3];  /* orthographic: unit direction toward the viewer */
+    float eye[3];      /* perspective: viewer position */
+    float view_dir[3]; /* orthographic: unit direction toward the viewer */
     /* The same in float for render_shade (render_lighting_prepare). */
-    int directional;                          /* directional lights */
-    float to_light[CG_RENDER_MAX_LIGHTS][3];  /* unit, toward each light */
+    int directional;                         /* directional lights */
+    float to_light[CG_RENDER_MAX_LIGHTS][3]; /* unit, toward each light */
     float light_color[CG_RENDER_MAX_LIGHTS][3];
-    float ambient[3];                         /* ka times the ambient lights */
+    float ambient[3]; /* ka times the ambient lights */
     float kd, ks, shininess;
     float specular_color[3];
     int blinn;
@@ -63,9 +63,9 @@ static inline unsigned render_outcode(const double c[4])
     if (!((c[0] - c[0]) + (c[1] - c[1]) + (c[2] - c[2]) + (c[3] - c[3]) == 0))
         return 0x40;
     double w = c[3];
-    return (unsigned)(w + c[0] < 0) | (unsigned)(w - c[0] < 0) << 1
-           | (unsigned)(w + c[1] < 0) << 2 | (unsigned)(w - c[1] < 0) << 3
-           | (unsigned)(w + c[2] < 0) << 4 | (unsigned)(w - c[2] < 0) << 5;
+    return (unsigned)(w + c[0] < 0) | (unsigned)(w - c[0] < 0) << 1 | (unsigned)(w + c[1] < 0) << 2
+           | (unsigned)(w - c[1] < 0) << 3 | (unsigned)(w + c[2] < 0) << 4
+           | (unsigned)(w - c[2] < 0) << 5;
 }
 /* Sutherland-Hodgman against the planes in mask, in homogeneous coordinates;
  * in[] (n vertices) is clipped into out (room for RENDER_MAX_POLYGON); returns
@@ -81,17 +81,17 @@ int render_clip_segment(clip_vertex *a, clip_vertex *b, int attribute_count);
 /* ---- screen-space vertices and triangle setup --------------------------- */
 
 typedef struct screen_vertex {
-    double x, y;  /* continuous pixel coordinates */
-    double z;     /* window depth in [0, 1] */
-    double iw;    /* 1 / w */
+    double x, y;                    /* continuous pixel coordinates */
+    double z;                       /* window depth in [0, 1] */
+    double iw;                      /* 1 / w */
     float a[RENDER_MAX_ATTRIBUTES]; /* attributes (not divided by w) */
 } screen_vertex;
 
 /* Maps a clipped vertex to the screen of a width x height image.  Inline
  * (like render_snap) because the vertex stage projects every vertex of
  * every frame. */
-static inline void render_project(const clip_vertex *v, int width, int height,
-                                  int attribute_count, screen_vertex *out)
+static inline void render_project(const clip_vertex *v, int width, int height, int attribute_count,
+                                  screen_vertex *out)
 {
     double iw = 1.0 / v->c[3];
     out->x = (v->c[0] * iw + 1.0) * 0.5 * width;
@@ -106,12 +106,12 @@ static inline void render_project(const clip_vertex *v, int width, int height,
  * seen on the screen (positive edge functions inside), the
  * pixel box it may cover, and the values to interpolate. */
 typedef struct setup_triangle {
-    int32_t x[3], y[3];  /* 1/256 pixel */
-    int32_t box[4];      /* pixels x0, y0, x1, y1 (exclusive) */
+    int32_t x[3], y[3]; /* 1/256 pixel */
+    int32_t box[4];     /* pixels x0, y0, x1, y1 (exclusive) */
     float z[3], iw[3];
-    float color[3];      /* flat colour, or the base colour for Phong */
-    cg_rgba8 color8;     /* the flat colour encoded */
-    float inverse_area;  /* 1 / (twice the area in fixed-point units squared) */
+    float color[3];     /* flat colour, or the base colour for Phong */
+    cg_rgba8 color8;    /* the flat colour encoded */
+    float inverse_area; /* 1 / (twice the area in fixed-point units squared) */
     /* attributes of vertex k at a[k * attribute_count + j]; only the first
      * 3 * attribute_count floats are stored in the binned copies */
     float a[3 * RENDER_MAX_ATTRIBUTES];
@@ -145,16 +145,15 @@ static inline int32_t render_snap(double value, int size)
     int32_t t = (int32_t)s; /* toward zero */
     return t - ((double)t > s);
 }
-void render_corner_from_screen(const screen_vertex *s, int width, int height,
-                               render_corner *out);
+void render_corner_from_screen(const screen_vertex *s, int width, int height, render_corner *out);
 /* Orients the triangle for the rasterizer; returns 0 when it covers no pixel
  * centre (zero area after snapping, or box empty), -1 when it is back-facing
  * (seen clockwise) and cull is set, 1 when out is ready. */
-int render_setup_fixed(const render_corner *const v[3], int width, int height,
-                       int attribute_count, int cull, setup_triangle *out);
+int render_setup_fixed(const render_corner *const v[3], int width, int height, int attribute_count,
+                       int cull, setup_triangle *out);
 /* The same from screen vertices (snapped here). */
-int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
-                 int width, int height, int attribute_count, int cull, setup_triangle *out);
+int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c, int width,
+                 int height, int attribute_count, int cull, setup_triangle *out);
 
 /* Edge functions of a set-up triangle at the centre of pixel (x, y), with
  * the top-left bias folded in (a pixel is covered when all three are >= 0),
@@ -212,8 +211,8 @@ static inline void render_edges_at(const setup_triangle *t, int x, int y, raster
  * edge that is neither a top nor a left edge, so a centre exactly on the
  * right edge above (e = 0 - 1) is not covered, and one exactly on the left
  * edge (e = 0) is: two triangles sharing an edge never both draw a pixel. */
-static inline void render_row_span(const int64_t w[3], const int64_t step[3], int width,
-                                   int *begin, int *end)
+static inline void render_row_span(const int64_t w[3], const int64_t step[3], int width, int *begin,
+                                   int *end)
 {
     int64_t lo = 0, hi = width; /* exclusive */
     for (int k = 0; k < 3; k++) {
@@ -256,19 +255,19 @@ struct cg_renderer {
     prepared_vertex *vertices;
     size_t triangle_count;
     uint32_t (*triangles)[3];
-    uint32_t *triangle_face;  /* face each triangle comes from */
-    uint32_t *face_triangle;  /* per face, its triangle of largest area, whose
+    uint32_t *triangle_face; /* face each triangle comes from */
+    uint32_t *face_triangle; /* per face, its triangle of largest area, whose
                                  turn is the face's (culling its edges) */
     size_t edge_count;
-    uint32_t (*edges)[3];     /* prepared vertex a, b, face */
+    uint32_t (*edges)[3]; /* prepared vertex a, b, face */
     size_t face_count;
-    int varying_color;        /* vertices differ in base colour */
+    int varying_color; /* vertices differ in base colour */
     int has_bounds;
-    cg_vec3 lo, hi;           /* bounds of the finite positions */
+    cg_vec3 lo, hi; /* bounds of the finite positions */
     /* frame state */
     cg_camera camera;
     float *depth;
-    size_t depth_capacity;    /* floats */
+    size_t depth_capacity; /* floats */
     int depth_valid;
     int depth_width, depth_height;
     cg_render_stats stats;
@@ -279,14 +278,14 @@ struct cg_renderer {
     atomic_uchar *frame_states;
     size_t frame_vertex_capacity, frame_attribute_capacity, frame_state_capacity;
     struct render_chunk *chunks;
-    int chunk_count;          /* chunks initialized */
+    int chunk_count; /* chunks initialized */
     size_t chunk_capacity;
     unsigned char *clean_tiles; /* per tile of the last frame's size: its depth
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
     struct core_worker_pool *pool; /* worker threads kept between frames */
-    int pool_threads;           /* the thread count it was started for */
+    int pool_threads;              /* the thread count it was started for */
 };
 
 /* A mesh vertex after the vertex stage: where it lies against the view
@@ -312,19 +311,19 @@ typedef struct painter_polygon {
  * thread takes it; the ranges depend on the mesh only and are concatenated
  * in order, so that results do not depend on the number of threads. */
 typedef struct render_chunk {
-    size_t begin, end;          /* triangle range */
-    unsigned char *setups;      /* setup triangles, frame->stride bytes each */
+    size_t begin, end;     /* triangle range */
+    unsigned char *setups; /* setup triangles, frame->stride bytes each */
     size_t setup_count, setup_capacity;
-    size_t setup_stride;        /* the frame->stride the capacity counts */
-    uint32_t *bin_start;        /* tile_count + 1 */
-    uint32_t *bin_fill;         /* tile_count */
+    size_t setup_stride; /* the frame->stride the capacity counts */
+    uint32_t *bin_start; /* tile_count + 1 */
+    uint32_t *bin_fill;  /* tile_count */
     size_t bin_start_capacity, bin_fill_capacity;
-    uint32_t *bin_list;         /* setup indices by tile */
+    uint32_t *bin_list; /* setup indices by tile */
     size_t bin_capacity;
-    painter_polygon *polygons;  /* painter's only */
+    painter_polygon *polygons; /* painter's only */
     size_t polygon_count, polygon_capacity;
     size_t culled, clipped, rejected, rasterized;
-    int failed;                 /* out of memory */
+    int failed; /* out of memory */
 } render_chunk;
 
 /* Frame context shared by the pipeline stages. */
@@ -337,19 +336,19 @@ typedef struct render_frame {
     float normal_matrix[3][3];
     render_lighting lighting;
     int shading, attribute_count, cull;
-    int fill_background;        /* hidden-line: faces drawn in the background colour */
+    int fill_background; /* hidden-line: faces drawn in the background colour */
     float background[4];
     cg_rgba8 background8;
     float *depth;
     frame_vertex *vertices;
-    float *attributes;          /* attribute_count per vertex, valid where */
-    atomic_uchar *states;       /* ... the vertex's state is 2 (see
+    float *attributes;    /* attribute_count per vertex, valid where */
+    atomic_uchar *states; /* ... the vertex's state is 2 (see
                                    vertex_attributes in pipeline.h) */
     int thread_count;
-    render_chunk *chunks;       /* chunk_count triangle ranges, in mesh order */
+    render_chunk *chunks; /* chunk_count triangle ranges, in mesh order */
     int chunk_count;
     size_t stride;
-    size_t setup_slack;         /* setups of room kept after the last one */
+    size_t setup_slack; /* setups of room kept after the last one */
     int tiles_x, tiles_y, tile_count;
     unsigned char *clean_tiles; /* the renderer's */
     size_t splits;

@@ -31,8 +31,14 @@ typedef struct painter {
     double depth_scale;
 } painter;
 
-static double vx(const screen_vertex *v) { return v->x; }
-static double vy(const screen_vertex *v) { return v->y; }
+static double vx(const screen_vertex *v)
+{
+    return v->x;
+}
+static double vy(const screen_vertex *v)
+{
+    return v->y;
+}
 
 static void describe(painter *pt, int i)
 {
@@ -134,9 +140,11 @@ static int may_precede(const painter *pt, int p, int q)
 static int add_polygon(painter *pt, const painter_polygon *p)
 {
     if (core_array_reserve((void **)&pt->polygons, &pt->polygon_capacity, pt->count + 1,
-                           sizeof *pt->polygons) != CG_OK
+                           sizeof *pt->polygons)
+            != CG_OK
         || core_array_reserve((void **)&pt->nodes, &pt->node_capacity, pt->count + 1,
-                              sizeof *pt->nodes) != CG_OK)
+                              sizeof *pt->nodes)
+               != CG_OK)
         return -1;
     pt->polygons[pt->count] = *p;
     memset(&pt->nodes[pt->count], 0, sizeof(node));
@@ -245,8 +253,9 @@ static void paint(painter *pt, int i)
     const painter_polygon *p = &pt->polygons[i];
     for (int k = 1; k + 1 < p->n; k++) {
         setup_triangle t;
-        if (render_setup(&p->v[0], &p->v[k], &p->v[k + 1], f->width, f->height,
-                         f->attribute_count, 0, &t) != 1)
+        if (render_setup(&p->v[0], &p->v[k], &p->v[k + 1], f->width, f->height, f->attribute_count,
+                         0, &t)
+            != 1)
             continue;
         render_finish_setup(f, &t, p->color);
         f->r->stats.rasterized++;

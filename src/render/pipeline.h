@@ -69,9 +69,9 @@ static inline const float *vertex_attributes(const render_frame *f, uint32_t i, 
     unsigned char state = atomic_load_explicit(&f->states[i], memory_order_acquire);
     if (state == 2)
         return a;
-    if (state == 0 && atomic_compare_exchange_strong_explicit(&f->states[i], &state, 1,
-                                                              memory_order_acquire,
-                                                              memory_order_acquire)) {
+    if (state == 0
+        && atomic_compare_exchange_strong_explicit(&f->states[i], &state, 1, memory_order_acquire,
+                                                   memory_order_acquire)) {
         render_compute_attributes(f, i, a);
         atomic_store_explicit(&f->states[i], 2, memory_order_release);
         return a;

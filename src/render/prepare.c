@@ -104,8 +104,7 @@ static void corner_normals(const cg_mesh *mesh, const incidence *in, const cg_ve
     }
 }
 
-static cg_status compute_corner_normals(const cg_mesh *mesh, double crease_angle,
-                                        cg_vec3 *out)
+static cg_status compute_corner_normals(const cg_mesh *mesh, double crease_angle, cg_vec3 *out)
 {
     size_t corners = mesh->face_offsets[mesh->face_count];
     incidence in;
@@ -186,15 +185,15 @@ static int same_vertex(const prepared_vertex *a, const float normal[3], const fl
 static cg_status check_options(const cg_render_options *o)
 {
     if (!o || o->threads < 1 || o->threads > 64 || o->light_count < 0
-        || o->light_count > CG_RENDER_MAX_LIGHTS || !(o->crease_angle >= 0)
-        || !isfinite(o->ambient) || !isfinite(o->specular) || !isfinite(o->shininess)
+        || o->light_count > CG_RENDER_MAX_LIGHTS || !(o->crease_angle >= 0) || !isfinite(o->ambient)
+        || !isfinite(o->specular) || !isfinite(o->shininess)
         || (unsigned)o->algorithm > CG_RENDER_DEPTH_SORT || (unsigned)o->shading > CG_SHADING_PHONG
         || (unsigned)o->cull > CG_CULL_BACK || (unsigned)o->edges > CG_EDGES_OVERLAY)
         return CG_EINVAL;
     for (int i = 0; i < o->light_count; i++)
         if (!(cg_vec3_length(o->lights[i].direction) > 0)
-            || !isfinite(cg_vec3_length(o->lights[i].direction))
-            || !(o->lights[i].intensity >= 0) || !isfinite(o->lights[i].intensity))
+            || !isfinite(cg_vec3_length(o->lights[i].direction)) || !(o->lights[i].intensity >= 0)
+            || !isfinite(o->lights[i].intensity))
             return CG_EINVAL;
     return CG_OK;
 }

@@ -45,10 +45,10 @@ static inline void store(unsigned char *row, int x, const float c[3], const int 
  * stretches start at fixed offsets from the run's start, so the result does
  * not depend on the number of threads. */
 typedef struct gouraud_plane {
-    float ia, z0, dz1, dz2;        /* depth, as in raster_mode */
-    float q[3], c[3][3];           /* 1 / w and colour / w: vertex 0, d1, d2 */
-    float q_step, c_step[3];       /* their change per pixel to the right */
-    int64_t step1, step2;          /* edge functions 1 and 2 per pixel */
+    float ia, z0, dz1, dz2;  /* depth, as in raster_mode */
+    float q[3], c[3][3];     /* 1 / w and colour / w: vertex 0, d1, d2 */
+    float q_step, c_step[3]; /* their change per pixel to the right */
+    int64_t step1, step2;    /* edge functions 1 and 2 per pixel */
 } gouraud_plane;
 
 #if defined(__SSE2__)
@@ -63,8 +63,8 @@ static inline void encode_store(cg_rgba8 *p, __m128 v)
 #endif
 
 static inline void gouraud_run(const gouraud_plane *g, int64_t w1, int64_t w2, float *zrow,
-                               unsigned char *row, int x0, int begin, int end,
-                               const int depth_test, const int rgba8)
+                               unsigned char *row, int x0, int begin, int end, const int depth_test,
+                               const int rgba8)
 {
 #if defined(__SSE2__)
     if (rgba8) {
@@ -176,14 +176,18 @@ static void gouraud_setup(const setup_triangle *t, const raster_edges *e, float 
 #define RENDER_SPECIALIZE inline
 #endif
 
-static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0, int y0,
-                                 int x1, int y1, const int mode, const int depth_test,
-                                 const int rgba8)
+static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_triangle *t, int x0,
+                                            int y0, int x1, int y1, const int mode,
+                                            const int depth_test, const int rgba8)
 {
-    if (t->box[0] > x0) x0 = t->box[0];
-    if (t->box[1] > y0) y0 = t->box[1];
-    if (t->box[2] < x1) x1 = t->box[2];
-    if (t->box[3] < y1) y1 = t->box[3];
+    if (t->box[0] > x0)
+        x0 = t->box[0];
+    if (t->box[1] > y0)
+        y0 = t->box[1];
+    if (t->box[2] < x1)
+        x1 = t->box[2];
+    if (t->box[3] < y1)
+        y1 = t->box[3];
     if (x0 >= x1 || y0 >= y1)
         return 0;
     raster_edges e;
@@ -205,8 +209,8 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
     if (mode != MODE_PHONG && x1 - x0 <= TINY && y1 - y0 <= TINY) {
         /* A few pixels (most triangles of a finely tessellated mesh): each
          * tested and shaded on its own, without the runs' setup. */
-        for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
-                 e.w[2] += e.step_y[2]) {
+        for (int y = y0; y < y1;
+             y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1], e.w[2] += e.step_y[2]) {
             int64_t a = e.w[0], b = e.w[1], c = e.w[2];
             float *zrow = f->depth + (size_t)y * f->width;
             unsigned char *row = f->image->data + (size_t)y * f->image->stride;
@@ -229,8 +233,8 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
         }
         return fragments;
     }
-    for (int y = y0; y < y1; y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1],
-             e.w[2] += e.step_y[2]) {
+    for (int y = y0; y < y1;
+         y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1], e.w[2] += e.step_y[2]) {
         int begin, end;
         if (x1 - x0 <= 8) {
             /* Narrow: test the few pixels instead of dividing. */
@@ -286,22 +290,19 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
     return fragments;
 }
 
-#define RASTER_CASE(mode)                                                                  \
-    (rgba8 ? (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 1)                     \
-                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 1))                    \
-           : (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 0)                     \
+#define RASTER_CASE(mode)                                                 \
+    (rgba8 ? (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 1)  \
+                         : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 1)) \
+           : (depth_test ? raster_mode(f, t, x0, y0, x1, y1, mode, 1, 0)  \
                          : raster_mode(f, t, x0, y0, x1, y1, mode, 0, 0)))
 
-size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int y0, int x1,
-                     int y1, int depth_test)
+size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int y0, int x1, int y1,
+                     int depth_test)
 {
     int rgba8 = f->image->format == CG_PIXEL_RGBA8;
     switch (f->shading) {
-    case MODE_FLAT:
-        return RASTER_CASE(MODE_FLAT);
-    case MODE_GOURAUD:
-        return RASTER_CASE(MODE_GOURAUD);
-    default:
-        return RASTER_CASE(MODE_PHONG);
+    case MODE_FLAT: return RASTER_CASE(MODE_FLAT);
+    case MODE_GOURAUD: return RASTER_CASE(MODE_GOURAUD);
+    default: return RASTER_CASE(MODE_PHONG);
     }
 }

@@ -41,8 +41,8 @@ static int covers_a_centre(const setup_triangle *t, int x0, int y0, int x1, int 
     return 0;
 }
 
-int render_setup_fixed(const render_corner *const v[3], int width, int height,
-                       int attribute_count, int cull, setup_triangle *out)
+int render_setup_fixed(const render_corner *const v[3], int width, int height, int attribute_count,
+                       int cull, setup_triangle *out)
 {
     int32_t x[3] = {v[0]->x, v[1]->x, v[2]->x}, y[3] = {v[0]->y, v[1]->y, v[2]->y};
     int64_t area = (int64_t)(x[1] - x[0]) * (y[2] - y[0]) - (int64_t)(y[1] - y[0]) * (x[2] - x[0]);
@@ -62,20 +62,28 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
     }
     int32_t min_x = x[0], max_x = x[0], min_y = y[0], max_y = y[0];
     for (int k = 1; k < 3; k++) {
-        if (x[k] < min_x) min_x = x[k];
-        if (x[k] > max_x) max_x = x[k];
-        if (y[k] < min_y) min_y = y[k];
-        if (y[k] > max_y) max_y = y[k];
+        if (x[k] < min_x)
+            min_x = x[k];
+        if (x[k] > max_x)
+            max_x = x[k];
+        if (y[k] < min_y)
+            min_y = y[k];
+        if (y[k] > max_y)
+            max_y = y[k];
     }
     /* Pixels whose centres p * 256 + 128 lie within the box. */
     int64_t x0 = floor_subpixel((int64_t)min_x - HALF + SUBPIXEL - 1);
     int64_t x1 = floor_subpixel((int64_t)max_x - HALF) + 1;
     int64_t y0 = floor_subpixel((int64_t)min_y - HALF + SUBPIXEL - 1);
     int64_t y1 = floor_subpixel((int64_t)max_y - HALF) + 1;
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 > width) x1 = width;
-    if (y1 > height) y1 = height;
+    if (x0 < 0)
+        x0 = 0;
+    if (y0 < 0)
+        y0 = 0;
+    if (x1 > width)
+        x1 = width;
+    if (y1 > height)
+        y1 = height;
     if (x0 >= x1 || y0 >= y1)
         return 0;
     for (int k = 0; k < 3; k++) {
@@ -100,8 +108,7 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height,
     return 1;
 }
 
-void render_corner_from_screen(const screen_vertex *s, int width, int height,
-                               render_corner *out)
+void render_corner_from_screen(const screen_vertex *s, int width, int height, render_corner *out)
 {
     out->x = render_snap(s->x, width);
     out->y = render_snap(s->y, height);
@@ -110,8 +117,8 @@ void render_corner_from_screen(const screen_vertex *s, int width, int height,
     out->a = s->a;
 }
 
-int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c,
-                 int width, int height, int attribute_count, int cull, setup_triangle *out)
+int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_vertex *c, int width,
+                 int height, int attribute_count, int cull, setup_triangle *out)
 {
     render_corner corners[3];
     render_corner_from_screen(a, width, height, &corners[0]);
@@ -121,8 +128,7 @@ int render_setup(const screen_vertex *a, const screen_vertex *b, const screen_ve
     return render_setup_fixed(v, width, height, attribute_count, cull, out);
 }
 
-cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_fn span,
-                             void *user)
+cg_status cg_raster_triangle(const cg_vec2 v[3], int width, int height, cg_span_fn span, void *user)
 {
     if (!v || !span || width < 0 || height < 0)
         return CG_EINVAL;

@@ -8,8 +8,8 @@ static uint32_t grid_index(int i, int j, int columns)
 
 cg_status cg_mesh_sphere(int slices, int stacks, double radius, cg_mesh **out)
 {
-    if (!out || slices < 3 || stacks < 2 || slices > 32768 || stacks > 32768
-        || !(radius > 0) || !isfinite(radius))
+    if (!out || slices < 3 || stacks < 2 || slices > 32768 || stacks > 32768 || !(radius > 0)
+        || !isfinite(radius))
         return CG_EINVAL;
     size_t vertices = 2 + (size_t)slices * (size_t)(stacks - 1);
     size_t faces = (size_t)slices * (size_t)stacks;
@@ -23,9 +23,8 @@ cg_status cg_mesh_sphere(int slices, int stacks, double radius, cg_mesh **out)
         double phi = CG_PI * i / stacks;
         for (int j = 0; j < slices; j++) {
             double theta = 2 * CG_PI * j / slices;
-            m->positions[grid_index(i - 1, j, slices)] =
-                cg_vec3_make(radius * sin(phi) * cos(theta), radius * cos(phi),
-                             -radius * sin(phi) * sin(theta));
+            m->positions[grid_index(i - 1, j, slices)] = cg_vec3_make(
+                radius * sin(phi) * cos(theta), radius * cos(phi), -radius * sin(phi) * sin(theta));
         }
     }
     m->positions[top] = cg_vec3_make(0, radius, 0);
@@ -72,8 +71,8 @@ cg_status cg_mesh_torus(int major_segments, int minor_segments, double major_rad
         for (int j = 0; j < minor_segments; j++) {
             double v = 2 * CG_PI * j / minor_segments;
             double ring = major_radius + minor_radius * cos(v);
-            m->positions[grid_index(i, j, minor_segments)] =
-                cg_vec3_make(ring * cos(u), minor_radius * sin(v), -ring * sin(u));
+            m->positions[grid_index(i, j, minor_segments)] = cg_vec3_make(
+                ring * cos(u), minor_radius * sin(v), -ring * sin(u));
         }
     }
     size_t f = 0;

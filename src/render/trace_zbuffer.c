@@ -47,9 +47,9 @@ static int barycentric(const screen_triangle *t, double x, double y, double out[
 }
 
 typedef struct zbuffer_pixel {
-    double x, y;       /* the pixel centre */
-    double buffer;     /* the depth so far (INFINITY: the background) */
-    long winner;       /* the triangle that set it, or -1 */
+    double x, y;   /* the pixel centre */
+    double buffer; /* the depth so far (INFINITY: the background) */
+    long winner;   /* the triangle that set it, or -1 */
     cg_step_fn fn;
     void *user;
 } zbuffer_pixel;
@@ -92,14 +92,17 @@ static int test_triangle(zbuffer_pixel *z, size_t triangle, size_t face, const c
                          cg_mat4 whole, int cull, const cg_camera *camera)
 {
     screen_triangle t = project(whole, world);
-    double lo_x = fmin(t.v[0].x, fmin(t.v[1].x, t.v[2].x)), hi_x = fmax(t.v[0].x, fmax(t.v[1].x, t.v[2].x));
-    double lo_y = fmin(t.v[0].y, fmin(t.v[1].y, t.v[2].y)), hi_y = fmax(t.v[0].y, fmax(t.v[1].y, t.v[2].y));
+    double lo_x = fmin(t.v[0].x, fmin(t.v[1].x, t.v[2].x)),
+           hi_x = fmax(t.v[0].x, fmax(t.v[1].x, t.v[2].x));
+    double lo_y = fmin(t.v[0].y, fmin(t.v[1].y, t.v[2].y)),
+           hi_y = fmax(t.v[0].y, fmax(t.v[1].y, t.v[2].y));
     if (!t.behind && !(z->x >= lo_x && z->x <= hi_x && z->y >= lo_y && z->y <= hi_y))
         return 0; /* nowhere near the pixel: not listed */
     if (t.behind)
         return emit_fragment(z, triangle, face, &t, NULL, INFINITY,
                              "a vertex behind the camera: left to the clipper (not traced)");
-    cg_vec3 normal = cg_vec3_cross(cg_vec3_sub(world[1], world[0]), cg_vec3_sub(world[2], world[0]));
+    cg_vec3 normal = cg_vec3_cross(cg_vec3_sub(world[1], world[0]),
+                                   cg_vec3_sub(world[2], world[0]));
     cg_vec3 to_eye = camera->orthographic ? cg_vec3_sub(camera->eye, camera->target)
                                           : cg_vec3_sub(camera->eye, world[0]);
     if (cull && !(cg_vec3_dot(normal, to_eye) > 0))
@@ -150,8 +153,8 @@ cg_status cg_zbuffer_pixel_steps(const cg_mesh *mesh, cg_mat4 model, const cg_ca
         for (size_t k = 0; k + 2 < n && !stopped; k++, t++) {
             cg_vec3 world[3];
             for (int c = 0; c < 3; c++)
-                world[c] = cg_mat4_transform_point(model,
-                                                   mesh->positions[mesh->face_indices[corners[t][c]]]);
+                world[c] = cg_mat4_transform_point(
+                    model, mesh->positions[mesh->face_indices[corners[t][c]]]);
             stopped = test_triangle(&z, t, f, world, whole, cull, camera);
         }
     }

@@ -44,7 +44,8 @@ static void emit_polygon(render_chunk *c, const screen_vertex *v, int n, const f
     if (c->failed)
         return;
     if (core_array_reserve((void **)&c->polygons, &c->polygon_capacity, c->polygon_count + 1,
-                           sizeof *c->polygons) != CG_OK) {
+                           sizeof *c->polygons)
+        != CG_OK) {
         c->failed = 1;
         return;
     }
@@ -200,8 +201,7 @@ static void keep_polygon(render_frame *f, render_chunk *c, size_t i, const scree
 }
 
 /* The z-buffer sets up the clipped polygon as a fan of triangles. */
-static void setup_fan(render_frame *f, render_chunk *c, size_t i, const screen_vertex *s,
-                      int count)
+static void setup_fan(render_frame *f, render_chunk *c, size_t i, const screen_vertex *s, int count)
 {
     const int n = f->attribute_count;
     float color[3];

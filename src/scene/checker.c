@@ -24,17 +24,19 @@
 #define CHECKER_MAX_PIECES ((size_t)1 << 22)
 
 typedef struct polygon_list {
-    cg_vec3 *points;    /* the corners of every polygon, one after another */
-    size_t *starts;     /* polygon i is points[starts[i] .. starts[i + 1]) */
+    cg_vec3 *points; /* the corners of every polygon, one after another */
+    size_t *starts;  /* polygon i is points[starts[i] .. starts[i + 1]) */
     size_t count, point_count, point_capacity, start_capacity;
 } polygon_list;
 
 static int list_reserve(polygon_list *l, size_t points)
 {
     return core_array_reserve((void **)&l->points, &l->point_capacity, l->point_count + points,
-                              sizeof *l->points) == CG_OK
+                              sizeof *l->points)
+               == CG_OK
            && core_array_reserve((void **)&l->starts, &l->start_capacity, l->count + 2,
-                                 sizeof *l->starts) == CG_OK;
+                                 sizeof *l->starts)
+                  == CG_OK;
 }
 
 /* Appends the polygon p[0..n) when it has at least three corners. */
@@ -170,8 +172,8 @@ static int compare_points(const void *a, const void *b)
 
 /* The pieces as a mesh: corners merged by position, repeated neighbours
  * dropped, faces of fewer than three corners left out. */
-static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pieces,
-                             cg_rgbaf even, cg_rgbaf odd, cg_mesh **out)
+static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pieces, cg_rgbaf even,
+                             cg_rgbaf odd, cg_mesh **out)
 {
     size_t n = pieces->point_count;
     keyed_point *keys = malloc((n ? n : 1) * sizeof *keys);
@@ -209,7 +211,8 @@ static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pie
                 corners = first;
                 continue;
             }
-            m->face_colors[faces] = odd_cell(frame, pieces->points + begin, end - begin) ? odd : even;
+            m->face_colors[faces] = odd_cell(frame, pieces->points + begin, end - begin) ? odd
+                                                                                         : even;
             m->face_offsets[++faces] = (uint32_t)corners;
         }
         m->face_count = faces;

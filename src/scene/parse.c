@@ -10,7 +10,7 @@
 #include <string.h>
 
 typedef cg_status (*item_parser)(const scene_parser *p, const char *path, const cJSON *v,
-                                  cg_scene *s);
+                                 cg_scene *s);
 
 /* Reads the array root[key] (when present) of at most limit items, each with
  * parse_item, naming them key[0], key[1], ... in messages. */
@@ -23,7 +23,8 @@ static cg_status parse_array(const scene_parser *p, const cJSON *root, const cha
     if (!cJSON_IsArray(v))
         return scene_expected(p, key, "an array", v);
     if (cJSON_GetArraySize(v) > limit)
-        return scene_fail(p, key, "%d entries, more than the limit of %d", cJSON_GetArraySize(v), limit);
+        return scene_fail(p, key, "%d entries, more than the limit of %d", cJSON_GetArraySize(v),
+                          limit);
     int i = 0;
     for (const cJSON *item = v->child; item; item = item->next, i++) {
         char path[SCENE_PATH_SIZE];
@@ -37,21 +38,25 @@ static cg_status parse_array(const scene_parser *p, const cJSON *root, const cha
 
 static cg_status parse_scene(const scene_parser *p, const cJSON *root, cg_scene *s)
 {
-    static const char *const keys[] = {"comment", "image", "camera", "render", "lights",
+    static const char *const keys[] = {"comment",   "image",   "camera",   "render", "lights",
                                        "materials", "objects", "overlays", NULL};
     cg_status st;
     if (!cJSON_IsObject(root))
-        return cg_error_set(p->err, CG_EFORMAT, "%s: expected a JSON object at the top level", p->name);
+        return cg_error_set(p->err, CG_EFORMAT, "%s: expected a JSON object at the top level",
+                            p->name);
     if ((st = scene_check_keys(p, "", root, keys)))
         return st;
     const cJSON *v;
     if ((v = cJSON_GetObjectItemCaseSensitive(root, "image")) && (st = scene_parse_image(p, v, s)))
         return st;
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "camera")) && (st = scene_parse_camera(p, v, s)))
+    if ((v = cJSON_GetObjectItemCaseSensitive(root, "camera"))
+        && (st = scene_parse_camera(p, v, s)))
         return st;
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "render")) && (st = scene_parse_render(p, v, s)))
+    if ((v = cJSON_GetObjectItemCaseSensitive(root, "render"))
+        && (st = scene_parse_render(p, v, s)))
         return st;
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "materials")) && (st = scene_parse_materials(p, v, s)))
+    if ((v = cJSON_GetObjectItemCaseSensitive(root, "materials"))
+        && (st = scene_parse_materials(p, v, s)))
         return st;
     if ((st = parse_array(p, root, "lights", CG_SCENE_MAX_LIGHTS, scene_parse_light, s))
         || (st = parse_array(p, root, "objects", CG_SCENE_MAX_OBJECTS, scene_parse_object, s))
@@ -74,7 +79,8 @@ cg_status cg_scene_parse(const char *text, size_t size, const char *name, const 
     cJSON *root = cJSON_ParseWithLengthOpts(text, size, &end, 0);
     if (!root) {
         /* cJSON reports where it stopped: turn that into a line and column. */
-        size_t offset = end && end >= text && (size_t)(end - text) <= size ? (size_t)(end - text) : 0;
+        size_t offset = end && end >= text && (size_t)(end - text) <= size ? (size_t)(end - text)
+                                                                           : 0;
         int line = 1, column = 1;
         for (size_t i = 0; i < offset; i++) {
             if (text[i] == '\n') {
@@ -122,7 +128,8 @@ cg_status cg_scene_load(const char *path, cg_scene **out, cg_error *err)
         fclose(f);
         return cg_error_set(err, size > limit ? CG_ERANGE : CG_EIO,
                             size > limit ? "%s: larger than the 64 MiB limit for scene files"
-                                         : "%s: cannot read", path);
+                                         : "%s: cannot read",
+                            path);
     }
     char *text = malloc((size_t)size + 1);
     size_t got = text ? fread(text, 1, (size_t)size, f) : 0;

@@ -27,7 +27,7 @@ typedef struct scene_capacities {
 
 /* Everything a parsing function needs to report an error and grow the scene. */
 typedef struct scene_parser {
-    const char *name;     /* file name for messages */
+    const char *name; /* file name for messages */
     cg_error *err;
     const char *base_dir; /* mesh paths are relative to it (NULL: current folder) */
     int load_meshes;      /* 0: check mesh entries but read no files */
@@ -48,8 +48,7 @@ typedef struct scene_parser {
 cg_status scene_fail(const scene_parser *p, const char *path, const char *format, ...)
     SCENE_PRINTF(3, 4);
 /* CG_EFORMAT with "name: path: expected what, got <a description of v>". */
-cg_status scene_expected(const scene_parser *p, const char *path, const char *what,
-                         const cJSON *v);
+cg_status scene_expected(const scene_parser *p, const char *path, const char *what, const cJSON *v);
 
 /* Writes a JSON path into out (SCENE_PATH_SIZE bytes), cut short if too long. */
 void scene_path_format(char *out, const char *format, ...) SCENE_PRINTF(2, 3);
@@ -67,13 +66,13 @@ cg_status scene_need_object(const scene_parser *p, const char *path, const cJSON
 cg_status scene_get_number(const scene_parser *p, const char *path, const cJSON *obj,
                            const char *key, double min, double max, double *out);
 /* A whole number in [min, max]. */
-cg_status scene_get_int(const scene_parser *p, const char *path, const cJSON *obj,
-                        const char *key, int min, int max, int *out);
-cg_status scene_get_bool(const scene_parser *p, const char *path, const cJSON *obj,
-                         const char *key, int *out);
+cg_status scene_get_int(const scene_parser *p, const char *path, const cJSON *obj, const char *key,
+                        int min, int max, int *out);
+cg_status scene_get_bool(const scene_parser *p, const char *path, const cJSON *obj, const char *key,
+                         int *out);
 /* Three finite numbers. */
-cg_status scene_get_vec3(const scene_parser *p, const char *path, const cJSON *obj,
-                         const char *key, cg_vec3 *out);
+cg_status scene_get_vec3(const scene_parser *p, const char *path, const cJSON *obj, const char *key,
+                         cg_vec3 *out);
 /* A colour: "#rrggbb" or a name (sRGB, decoded to linear light), or an
  * array [r, g, b] of linear values >= 0. */
 cg_status scene_get_color(const scene_parser *p, const char *path, const cJSON *obj,
@@ -96,13 +95,10 @@ cg_status scene_parse_image(const scene_parser *p, const cJSON *v, cg_scene *s);
 cg_status scene_parse_render(const scene_parser *p, const cJSON *v, cg_scene *s);
 cg_status scene_parse_camera(const scene_parser *p, const cJSON *v, cg_scene *s);
 cg_status scene_parse_materials(const scene_parser *p, const cJSON *v, cg_scene *s);
-cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON *v,
-                            cg_scene *s);
-cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSON *v,
-                             cg_scene *s);
+cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s);
+cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s);
 /* One line of a cg draw script. */
-cg_status scene_parse_overlay(const scene_parser *p, const char *path, const cJSON *v,
-                              cg_scene *s);
+cg_status scene_parse_overlay(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s);
 /* A transform list, composed into *out. */
 cg_status scene_parse_transform(const scene_parser *p, const char *path, const cJSON *v,
                                 cg_mat4 *out);

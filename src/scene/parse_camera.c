@@ -7,11 +7,12 @@
 
 cg_status scene_parse_camera(const scene_parser *p, const cJSON *v, cg_scene *s)
 {
-    static const char *const keys[] = {"eye", "target", "up", "projection", "fov", "height",
-                                       "near", "far", "frame", "angles", "ratio", "angle", NULL};
+    static const char *const keys[] = {"eye",    "target", "up",  "projection", "fov",
+                                       "height", "near",   "far", "frame",      "angles",
+                                       "ratio",  "angle",  NULL};
     static const char *const projections[] = {"perspective", "orthographic", "isometric",
-                                              "dimetric", "trimetric", "cavalier", "cabinet",
-                                              "oblique", NULL};
+                                              "dimetric",    "trimetric",    "cavalier",
+                                              "cabinet",     "oblique",      NULL};
     cg_status st;
     if ((st = scene_need_object(p, "camera", v)) || (st = scene_check_keys(p, "camera", v, keys)))
         return st;
@@ -19,7 +20,8 @@ cg_status scene_parse_camera(const scene_parser *p, const cJSON *v, cg_scene *s)
     int projection = (int)s->projection;
     double fov = cg_degrees(c->fovy), angle = cg_degrees(s->projection_angle);
     s->frame_camera = cJSON_GetObjectItemCaseSensitive(v, "eye") == NULL;
-    if ((st = scene_get_vec3(p, "camera", v, "eye", &c->eye)) || (st = scene_get_vec3(p, "camera", v, "target", &c->target))
+    if ((st = scene_get_vec3(p, "camera", v, "eye", &c->eye))
+        || (st = scene_get_vec3(p, "camera", v, "target", &c->target))
         || (st = scene_get_vec3(p, "camera", v, "up", &c->up))
         || (st = scene_get_choice(p, "camera", v, "projection", projections, &projection))
         || (st = scene_get_number(p, "camera", v, "fov", 1, 179, &fov))
@@ -41,7 +43,8 @@ cg_status scene_parse_camera(const scene_parser *p, const cJSON *v, cg_scene *s)
         s->projection_angle = cg_radians(angle);
     }
     if (projection == CG_SCENE_DIMETRIC && !(s->projection_ratio < 1))
-        return scene_fail(p, "camera.ratio", "expected a number between 0.001 and 1 (exclusive) for a dimetric view");
+        return scene_fail(p, "camera.ratio",
+                          "expected a number between 0.001 and 1 (exclusive) for a dimetric view");
     s->near_given = cJSON_GetObjectItemCaseSensitive(v, "near") != NULL;
     s->far_given = cJSON_GetObjectItemCaseSensitive(v, "far") != NULL;
     if (s->near_given && s->far_given && !(c->far > c->near))

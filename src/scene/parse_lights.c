@@ -7,9 +7,9 @@
 cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s)
 {
     static const char *const kinds[] = {"ambient", "point", "directional", "spot", "area", NULL};
-    static const char *const keys[] = {"type", "color", "intensity", "position", "direction",
-                                       "attenuation", "cutoff", "exponent", "corner", "edge_u",
-                                       "edge_v", "samples", NULL};
+    static const char *const keys[] = {
+        "type",     "color",  "intensity", "position", "direction", "attenuation", "cutoff",
+        "exponent", "corner", "edge_u",    "edge_v",   "samples",   NULL};
     cg_status st;
     if ((st = scene_need_object(p, path, v)) || (st = scene_check_keys(p, path, v, keys)))
         return st;
@@ -19,20 +19,24 @@ cg_status scene_parse_light(const scene_parser *p, const char *path, const cJSON
     if (kind < 0) {
         char type_path[SCENE_PATH_SIZE];
         scene_path_join(type_path, path, "type");
-        return scene_expected(p, type_path, "one of \"ambient\", \"point\", \"directional\", \"spot\", \"area\"",
-                        NULL);
+        return scene_expected(p, type_path,
+                              "one of \"ambient\", \"point\", \"directional\", \"spot\", \"area\"",
+                              NULL);
     }
     cg_vec3 color = {1, 1, 1}, position = {0, 10, 0}, direction = {0, -1, 0};
     double intensity = 1, cutoff = 30, exponent = 0;
-    if ((st = scene_get_color(p, path, v, "color", &color)) || (st = scene_get_number(p, path, v, "intensity", 0, 1e9, &intensity))
-        || (st = scene_get_vec3(p, path, v, "position", &position)) || (st = scene_get_vec3(p, path, v, "direction", &direction))
+    if ((st = scene_get_color(p, path, v, "color", &color))
+        || (st = scene_get_number(p, path, v, "intensity", 0, 1e9, &intensity))
+        || (st = scene_get_vec3(p, path, v, "position", &position))
+        || (st = scene_get_vec3(p, path, v, "direction", &direction))
         || (st = scene_get_number(p, path, v, "cutoff", 1e-6, 180, &cutoff))
         || (st = scene_get_number(p, path, v, "exponent", 0, 1e4, &exponent)))
         return st;
     color = cg_vec3_scale(color, intensity);
     if (kind == 4) { /* area */
         cg_scene_area_light a = {{0, 10, 0}, {1, 0, 0}, {0, 0, 1}, color, 4};
-        if ((st = scene_get_vec3(p, path, v, "corner", &a.corner)) || (st = scene_get_vec3(p, path, v, "edge_u", &a.edge_u))
+        if ((st = scene_get_vec3(p, path, v, "corner", &a.corner))
+            || (st = scene_get_vec3(p, path, v, "edge_u", &a.edge_u))
             || (st = scene_get_vec3(p, path, v, "edge_v", &a.edge_v))
             || (st = scene_get_int(p, path, v, "samples", 1, 64, &a.samples)))
             return st;

@@ -9,9 +9,9 @@
 static cg_status parse_material(const scene_parser *p, const char *path, const cJSON *v,
                                 cg_scene_material *m)
 {
-    static const char *const keys[] = {"color", "specular_color", "ka", "kd", "ks", "shininess",
-                                       "specular", "reflectance", "transmittance", "ior",
-                                       "checker", NULL};
+    static const char *const keys[] = {
+        "color",       "specular_color", "ka",  "kd",      "ks", "shininess", "specular",
+        "reflectance", "transmittance",  "ior", "checker", NULL};
     static const char *const models[] = {"phong", "blinn", NULL};
     cg_material *s = &m->surface;
     int model = (int)s->specular;
@@ -19,7 +19,8 @@ static cg_status parse_material(const scene_parser *p, const char *path, const c
     if ((st = scene_need_object(p, path, v)) || (st = scene_check_keys(p, path, v, keys))
         || (st = scene_get_color(p, path, v, "color", &s->color))
         || (st = scene_get_color(p, path, v, "specular_color", &s->specular_color))
-        || (st = scene_get_number(p, path, v, "ka", 0, 1e3, &s->ka)) || (st = scene_get_number(p, path, v, "kd", 0, 1e3, &s->kd))
+        || (st = scene_get_number(p, path, v, "ka", 0, 1e3, &s->ka))
+        || (st = scene_get_number(p, path, v, "kd", 0, 1e3, &s->kd))
         || (st = scene_get_number(p, path, v, "ks", 0, 1e3, &s->ks))
         || (st = scene_get_number(p, path, v, "shininess", 0, 1e5, &s->shininess))
         || (st = scene_get_choice(p, path, v, "specular", models, &model))
@@ -35,9 +36,11 @@ static cg_status parse_material(const scene_parser *p, const char *path, const c
         scene_path_join(checker_path, path, "checker");
         m->checker_size = 1;
         m->checker_color = cg_vec3_make(0.1, 0.1, 0.1);
-        if ((st = scene_need_object(p, checker_path, checker)) || (st = scene_check_keys(p, checker_path, checker, checker_keys))
+        if ((st = scene_need_object(p, checker_path, checker))
+            || (st = scene_check_keys(p, checker_path, checker, checker_keys))
             || (st = scene_get_color(p, checker_path, checker, "color", &m->checker_color))
-            || (st = scene_get_number(p, checker_path, checker, "size", 1e-9, 1e12, &m->checker_size)))
+            || (st = scene_get_number(p, checker_path, checker, "size", 1e-9, 1e12,
+                                      &m->checker_size)))
             return st;
     }
     return CG_OK;

@@ -23,12 +23,12 @@ static char *resolve_path(const char *base_dir, const char *file)
 cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s)
 {
     static const char *const kinds[] = {"mesh", "sphere", "plane", "box", NULL};
-    static const char *const keys[] = {"type", "file", "center", "radius", "point", "normal",
-                                       "lo", "hi", "material", "transform", NULL};
+    static const char *const keys[] = {"type", "file", "center",   "radius",    "point", "normal",
+                                       "lo",   "hi",   "material", "transform", NULL};
     cg_status st;
     if ((st = scene_need_object(p, path, v)) || (st = scene_check_keys(p, path, v, keys))
         || (st = scene_reserve(p, (void **)&s->objects, &p->capacity->objects, s->object_count,
-                                 sizeof *s->objects)))
+                               sizeof *s->objects)))
         return st;
     /* Counted before it is read so that cg_scene_free releases a half-read
      * object too. */
@@ -48,9 +48,12 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
     o->normal = cg_vec3_make(0, 1, 0);
     o->lo = cg_vec3_make(-0.5, -0.5, -0.5);
     o->hi = cg_vec3_make(0.5, 0.5, 0.5);
-    if ((st = scene_get_vec3(p, path, v, "center", &o->center)) || (st = scene_get_number(p, path, v, "radius", 0, 1e15, &o->radius))
-        || (st = scene_get_vec3(p, path, v, "point", &o->point)) || (st = scene_get_vec3(p, path, v, "normal", &o->normal))
-        || (st = scene_get_vec3(p, path, v, "lo", &o->lo)) || (st = scene_get_vec3(p, path, v, "hi", &o->hi)))
+    if ((st = scene_get_vec3(p, path, v, "center", &o->center))
+        || (st = scene_get_number(p, path, v, "radius", 0, 1e15, &o->radius))
+        || (st = scene_get_vec3(p, path, v, "point", &o->point))
+        || (st = scene_get_vec3(p, path, v, "normal", &o->normal))
+        || (st = scene_get_vec3(p, path, v, "lo", &o->lo))
+        || (st = scene_get_vec3(p, path, v, "hi", &o->hi)))
         return st;
     if (o->kind == CG_SCENE_PLANE && !(cg_vec3_length(o->normal) > 0)) {
         scene_path_join(key_path, path, "normal");
@@ -59,8 +62,9 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
     /* A box of zero size on an axis has no inside (and no mesh to rasterize). */
     if (o->kind == CG_SCENE_BOX && !(o->lo.x < o->hi.x && o->lo.y < o->hi.y && o->lo.z < o->hi.z)) {
         scene_path_join(key_path, path, "hi");
-        return scene_fail(p, key_path, "expected every coordinate of hi to be greater than that of lo "
-                                 "(a box of non-zero size on each axis)");
+        return scene_fail(p, key_path,
+                          "expected every coordinate of hi to be greater than that of lo "
+                          "(a box of non-zero size on each axis)");
     }
     const cJSON *transform = cJSON_GetObjectItemCaseSensitive(v, "transform");
     if (transform) {
@@ -77,7 +81,8 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
         while (i < s->material_count && strcmp(s->materials[i].name, material->valuestring) != 0)
             i++;
         if (i == s->material_count)
-            return scene_expected(p, key_path, "the name of a material defined in \"materials\"", material);
+            return scene_expected(p, key_path, "the name of a material defined in \"materials\"",
+                                  material);
         o->material = i;
     }
     const cJSON *file = cJSON_GetObjectItemCaseSensitive(v, "file");
@@ -91,7 +96,8 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
             cg_error mesh_error;
             cg_status ms = cg_mesh_load(o->file, &o->mesh, &mesh_error);
             if (ms != CG_OK)
-                return cg_error_set(p->err, ms, "%s: %s: %s", p->name, key_path, mesh_error.message);
+                return cg_error_set(p->err, ms, "%s: %s: %s", p->name, key_path,
+                                    mesh_error.message);
         }
     } else if (file) {
         scene_path_join(key_path, path, "file");
@@ -104,8 +110,8 @@ cg_status scene_parse_overlay(const scene_parser *p, const char *path, const cJS
 {
     if (!cJSON_IsString(v) || strchr(v->valuestring, '\n'))
         return scene_expected(p, path, "one line of a cg draw script", v);
-    cg_status st = scene_reserve(p, (void **)&s->overlays, &p->capacity->overlays,
-                                 s->overlay_count, sizeof *s->overlays);
+    cg_status st = scene_reserve(p, (void **)&s->overlays, &p->capacity->overlays, s->overlay_count,
+                                 sizeof *s->overlays);
     if (st)
         return st;
     size_t length = strlen(v->valuestring) + 1;

@@ -21,8 +21,8 @@ cg_status scene_parse_image(const scene_parser *p, const cJSON *v, cg_scene *s)
 
 cg_status scene_parse_render(const scene_parser *p, const cJSON *v, cg_scene *s)
 {
-    static const char *const keys[] = {"algorithm", "shading", "cull", "edges", "threads",
-                                       "samples", "depth", "shadows", NULL};
+    static const char *const keys[] = {"algorithm", "shading", "cull",    "edges", "threads",
+                                       "samples",   "depth",   "shadows", NULL};
     static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", NULL};
     static const char *const shadings[] = {"flat", "gouraud", "phong", NULL};
     static const char *const culls[] = {"none", "back", NULL};

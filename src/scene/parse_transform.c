@@ -25,12 +25,14 @@ static cg_status parse_step(const scene_parser *p, const char *path, const cJSON
     const cJSON *x;
     if ((x = cJSON_GetObjectItemCaseSensitive(v, "translate"))) {
         cg_vec3 t = {0, 0, 0};
-        if ((st = scene_check_keys(p, path, v, translate_keys)) || (st = scene_get_vec3(p, path, v, "translate", &t)))
+        if ((st = scene_check_keys(p, path, v, translate_keys))
+            || (st = scene_get_vec3(p, path, v, "translate", &t)))
             return st;
         *out = cg_xform3_translate(t.x, t.y, t.z);
     } else if ((x = cJSON_GetObjectItemCaseSensitive(v, "scale"))) {
         cg_vec3 factors;
-        if ((st = scene_check_keys(p, path, v, scale_keys)) || (st = scene_get_vec3(p, path, v, "center", &center)))
+        if ((st = scene_check_keys(p, path, v, scale_keys))
+            || (st = scene_get_vec3(p, path, v, "center", &center)))
             return st;
         scene_path_join(key_path, path, "scale");
         if (cJSON_IsNumber(x) && isfinite(x->valuedouble))
@@ -43,14 +45,17 @@ static cg_status parse_step(const scene_parser *p, const char *path, const cJSON
     } else if ((x = cJSON_GetObjectItemCaseSensitive(v, "rotate"))) {
         cg_vec3 axis = {0, 1, 0};
         double degrees = 0;
-        if ((st = scene_check_keys(p, path, v, rotate_keys)) || (st = scene_get_number(p, path, v, "rotate", -1e6, 1e6, &degrees))
-            || (st = scene_get_vec3(p, path, v, "axis", &axis)) || (st = scene_get_vec3(p, path, v, "point", &center)))
+        if ((st = scene_check_keys(p, path, v, rotate_keys))
+            || (st = scene_get_number(p, path, v, "rotate", -1e6, 1e6, &degrees))
+            || (st = scene_get_vec3(p, path, v, "axis", &axis))
+            || (st = scene_get_vec3(p, path, v, "point", &center)))
             return st;
         if (cg_xform3_rotate_axis(axis, cg_radians(degrees), center, out) != CG_OK)
             return scene_fail(p, path, "expected a non-zero rotation axis");
     } else if ((x = cJSON_GetObjectItemCaseSensitive(v, "reflect"))) {
         cg_vec3 normal = {0, 1, 0};
-        if ((st = scene_check_keys(p, path, v, reflect_keys)) || (st = scene_get_vec3(p, path, v, "reflect", &normal))
+        if ((st = scene_check_keys(p, path, v, reflect_keys))
+            || (st = scene_get_vec3(p, path, v, "reflect", &normal))
             || (st = scene_get_vec3(p, path, v, "point", &center)))
             return st;
         if (cg_xform3_reflect(center, normal, out) != CG_OK)
@@ -58,13 +63,15 @@ static cg_status parse_step(const scene_parser *p, const char *path, const cJSON
     } else if ((x = cJSON_GetObjectItemCaseSensitive(v, "shear"))) {
         double k[6];
         scene_path_join(key_path, path, "shear");
-        if ((st = scene_check_keys(p, path, v, shear_keys)) || (st = scene_read_numbers(p, key_path, x, 6, k)))
+        if ((st = scene_check_keys(p, path, v, shear_keys))
+            || (st = scene_read_numbers(p, key_path, x, 6, k)))
             return st;
         *out = cg_xform3_shear(k[0], k[1], k[2], k[3], k[4], k[5]);
     } else if ((x = cJSON_GetObjectItemCaseSensitive(v, "matrix"))) {
         double m[16];
         scene_path_join(key_path, path, "matrix");
-        if ((st = scene_check_keys(p, path, v, matrix_keys)) || (st = scene_read_numbers(p, key_path, x, 16, m)))
+        if ((st = scene_check_keys(p, path, v, matrix_keys))
+            || (st = scene_read_numbers(p, key_path, x, 16, m)))
             return st;
         for (int i = 0; i < 16; i++)
             out->m[i / 4][i % 4] = m[i];
@@ -72,7 +79,8 @@ static cg_status parse_step(const scene_parser *p, const char *path, const cJSON
         if (cg_mat4_inverse(*out, &inverse) != CG_OK)
             return scene_fail(p, key_path, "expected an invertible matrix");
     } else {
-        return scene_expected(p, path, "a step with one of translate, scale, rotate, reflect, shear, matrix", v);
+        return scene_expected(
+            p, path, "a step with one of translate, scale, rotate, reflect, shear, matrix", v);
     }
     return CG_OK;
 }
@@ -84,7 +92,8 @@ cg_status scene_parse_transform(const scene_parser *p, const char *path, const c
         return scene_expected(p, path, "an array of transformation steps", v);
     int n = cJSON_GetArraySize(v);
     if (n > CG_SCENE_MAX_TRANSFORMS)
-        return scene_fail(p, path, "%d steps, more than the limit of %d", n, CG_SCENE_MAX_TRANSFORMS);
+        return scene_fail(p, path, "%d steps, more than the limit of %d", n,
+                          CG_SCENE_MAX_TRANSFORMS);
     *out = cg_mat4_identity();
     int i = 0;
     for (const cJSON *item = v->child; item; item = item->next, i++) {

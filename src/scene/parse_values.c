@@ -27,7 +27,8 @@ static void describe(const cJSON *v, char *out, size_t size)
     if (!v)
         snprintf(out, size, "nothing");
     else if (cJSON_IsString(v))
-        snprintf(out, size, "\"%.40s%s\"", v->valuestring, strlen(v->valuestring) > 40 ? "..." : "");
+        snprintf(out, size, "\"%.40s%s\"", v->valuestring,
+                 strlen(v->valuestring) > 40 ? "..." : "");
     else if (cJSON_IsNumber(v))
         snprintf(out, size, "%.17g", v->valuedouble);
     else if (cJSON_IsBool(v))
@@ -194,7 +195,8 @@ cg_status scene_get_color(const scene_parser *p, const char *path, const cJSON *
     }
     double rgb[3];
     if (!cJSON_IsArray(v))
-        return scene_expected(p, key_path, "a colour (\"#rrggbb\", a name, or [r, g, b] in linear light)", v);
+        return scene_expected(p, key_path,
+                              "a colour (\"#rrggbb\", a name, or [r, g, b] in linear light)", v);
     cg_status s = scene_read_numbers(p, key_path, v, 3, rgb);
     if (s != CG_OK)
         return s;

@@ -1,8 +1,8 @@
 /* Rendering a scene with the algorithm it asks for. */
 #include "internal.h"
 
-cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorithm,
-                               cg_image **out, cg_error *err)
+cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorithm, cg_image **out,
+                               cg_error *err)
 {
     if (!scene || !out)
         return cg_error_set(err, CG_EINVAL, "scene render: no scene or output given");

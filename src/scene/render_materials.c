@@ -23,8 +23,8 @@
  * term it adds is under 1e-6 of the light. */
 #define MIN_KD 1e-6
 
-cg_status scene_material_options(const cg_scene *scene, const cg_material *m,
-                                 cg_render_options *o, cg_error *err)
+cg_status scene_material_options(const cg_scene *scene, const cg_material *m, cg_render_options *o,
+                                 cg_error *err)
 {
     double ambient = 0;
     for (size_t i = 0; i < scene->light_count; i++) {
@@ -72,17 +72,25 @@ static cg_status check_material(const cg_scene *scene, size_t i, cg_error *err)
     const char *name = material_name(scene, i);
     const char *hint = "render this scene with raytrace";
     if (m->reflectance > 0)
-        return cg_error_set(err, CG_EUNSUPPORTED, "scene: materials.%s.reflectance: the z-buffer "
-                            "and the painter's algorithm draw no reflections (%s)", name, hint);
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: materials.%s.reflectance: the z-buffer "
+                            "and the painter's algorithm draw no reflections (%s)",
+                            name, hint);
     if (m->transmittance > 0)
-        return cg_error_set(err, CG_EUNSUPPORTED, "scene: materials.%s.transmittance: the z-buffer "
-                            "and the painter's algorithm draw no refraction (%s)", name, hint);
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: materials.%s.transmittance: the z-buffer "
+                            "and the painter's algorithm draw no refraction (%s)",
+                            name, hint);
     if (m->ks > 0 && m->specular != CG_SPECULAR_BLINN)
-        return cg_error_set(err, CG_EUNSUPPORTED, "scene: materials.%s.specular: the rasterizer's "
-                            "highlights are Blinn-Phong (use \"blinn\", or %s)", name, hint);
-    if (m->ks > 0 && (m->specular_color.x != m->specular_color.y
-                      || m->specular_color.x != m->specular_color.z))
-        return cg_error_set(err, CG_EUNSUPPORTED, "scene: materials.%s.specular_color: the "
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: materials.%s.specular: the rasterizer's "
+                            "highlights are Blinn-Phong (use \"blinn\", or %s)",
+                            name, hint);
+    if (m->ks > 0
+        && (m->specular_color.x != m->specular_color.y
+            || m->specular_color.x != m->specular_color.z))
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: materials.%s.specular_color: the "
                             "rasterizer's highlights are grey (use equal components, or %s)",
                             name, hint);
     return CG_OK;
@@ -214,8 +222,8 @@ cg_status scene_render_raster(const cg_scene *scene, cg_scene_algorithm algorith
         s = scene_world_mesh(scene, &world, &face_material, err);
     /* One material, or a wireframe or hidden-line picture (which shade
      * nothing): one pass. */
-    if (s == CG_OK && (kinds < 2 || o.edges == CG_EDGES_WIREFRAME
-                       || o.edges == CG_EDGES_HIDDEN_LINE)) {
+    if (s == CG_OK
+        && (kinds < 2 || o.edges == CG_EDGES_WIREFRAME || o.edges == CG_EDGES_HIDDEN_LINE)) {
         size_t m = scene->object_count ? scene->objects[0].material : 0;
         s = scene_material_options(scene, &scene->materials[m].surface, &o, err);
         if (s == CG_OK)

@@ -39,9 +39,7 @@ static cg_status object_mesh(const cg_scene_object *o, cg_vec3 center, double ra
     *owned = NULL;
     cg_status s = CG_OK;
     switch (o->kind) {
-    case CG_SCENE_MESH:
-        *mesh = o->mesh;
-        return o->mesh ? CG_OK : CG_EINVAL;
+    case CG_SCENE_MESH: *mesh = o->mesh; return o->mesh ? CG_OK : CG_EINVAL;
     case CG_SCENE_SPHERE:
         if (o->radius <= 0) { /* an invisible sphere */
             *mesh = NULL;
@@ -52,12 +50,8 @@ static cg_status object_mesh(const cg_scene_object *o, cg_vec3 center, double ra
             for (size_t i = 0; i < (*owned)->vertex_count; i++)
                 (*owned)->positions[i] = cg_vec3_add((*owned)->positions[i], o->center);
         break;
-    case CG_SCENE_BOX:
-        s = cg_mesh_box(o->lo, o->hi, owned);
-        break;
-    case CG_SCENE_PLANE:
-        s = plane_mesh(o, center, radius, owned);
-        break;
+    case CG_SCENE_BOX: s = cg_mesh_box(o->lo, o->hi, owned); break;
+    case CG_SCENE_PLANE: s = plane_mesh(o, center, radius, owned); break;
     }
     *mesh = *owned;
     return s;
@@ -77,8 +71,8 @@ static void append(cg_mesh *all, const cg_mesh *part, cg_mat4 transform, cg_rgba
             all->face_indices[*corners + (k - begin)] = base + part->face_indices[k];
         *corners += end - begin;
         all->face_offsets[*faces + f + 1] = (uint32_t)*corners;
-        all->face_colors[*faces + f] =
-            keep_face_colors && part->face_colors ? part->face_colors[f] : color;
+        all->face_colors[*faces + f] = keep_face_colors && part->face_colors ? part->face_colors[f]
+                                                                             : color;
     }
     *vertices += part->vertex_count;
     *faces += part->face_count;
@@ -174,7 +168,7 @@ static cg_status raster_part(const cg_scene *scene, size_t i, cg_vec3 center, do
 }
 
 cg_status scene_world_mesh(const cg_scene *scene, cg_mesh **out, uint32_t **face_material,
-                            cg_error *err)
+                           cg_error *err)
 {
     cg_vec3 center;
     double radius;
@@ -188,8 +182,10 @@ cg_status scene_world_mesh(const cg_scene *scene, cg_mesh **out, uint32_t **face
     for (size_t i = 0; i < n && s == CG_OK; i++) {
         s = raster_part(scene, i, center, radius, &parts[i], &owned[i], &transforms[i]);
         if (s == CG_ERANGE)
-            cg_error_set(err, s, "scene: objects[%zu]: the checker's cells are too small for the "
-                                 "rasterizer to cut the object into (over 4 million pieces)", i);
+            cg_error_set(err, s,
+                         "scene: objects[%zu]: the checker's cells are too small for the "
+                         "rasterizer to cut the object into (over 4 million pieces)",
+                         i);
         if (s == CG_OK && parts[i]) {
             vertex_total += parts[i]->vertex_count;
             face_total += parts[i]->face_count;
@@ -198,8 +194,8 @@ cg_status scene_world_mesh(const cg_scene *scene, cg_mesh **out, uint32_t **face
     }
     if (s == CG_OK)
         s = cg_mesh_create(out, vertex_total, face_total, corner_total, CG_MESH_FACE_COLORS);
-    if (s == CG_OK && face_material && !(*face_material = malloc((face_total ? face_total : 1)
-                                                                 * sizeof **face_material))) {
+    if (s == CG_OK && face_material
+        && !(*face_material = malloc((face_total ? face_total : 1) * sizeof **face_material))) {
         cg_mesh_free(*out);
         *out = NULL;
         s = CG_ENOMEM;
@@ -266,7 +262,8 @@ static void renderer_lights(const cg_scene *scene, cg_render_options *o)
     }
     for (size_t i = 0; i < scene->area_light_count && o->light_count < CG_RENDER_MAX_LIGHTS; i++) {
         const cg_scene_area_light *a = &scene->area_lights[i];
-        cg_vec3 middle = cg_vec3_add(a->corner, cg_vec3_scale(cg_vec3_add(a->edge_u, a->edge_v), 0.5));
+        cg_vec3 middle = cg_vec3_add(a->corner,
+                                     cg_vec3_scale(cg_vec3_add(a->edge_u, a->edge_v), 0.5));
         cg_vec3 toward = cg_vec3_sub(middle, center);
         if (cg_vec3_length(toward) > 0) {
             cg_render_light r = {toward, fmax(a->color.x, fmax(a->color.y, a->color.z))};
@@ -281,12 +278,14 @@ cg_status scene_raster_base_options(const cg_scene *scene, cg_scene_algorithm al
     cg_render_options_default(o);
     cg_status s = scene_view(scene, &o->camera, &o->model);
     if (s != CG_OK)
-        return cg_error_set(err, s, "scene: the camera cannot see the scene (eye, target and up "
-                                    "must not be degenerate)");
+        return cg_error_set(err, s,
+                            "scene: the camera cannot see the scene (eye, target and up "
+                            "must not be degenerate)");
     o->frame_camera = 0;
     o->algorithm = algorithm == CG_SCENE_PAINTER ? CG_RENDER_PAINTER : CG_RENDER_ZBUFFER;
-    o->shading = scene->shading == CG_SCENE_FLAT ? CG_SHADING_FLAT
-               : scene->shading == CG_SCENE_PHONG ? CG_SHADING_PHONG : CG_SHADING_GOURAUD;
+    o->shading = scene->shading == CG_SCENE_FLAT    ? CG_SHADING_FLAT
+                 : scene->shading == CG_SCENE_PHONG ? CG_SHADING_PHONG
+                                                    : CG_SHADING_GOURAUD;
     o->cull = scene->cull_back ? CG_CULL_BACK : CG_CULL_NONE;
     o->edges = (cg_edge_mode)scene->edges;
     o->threads = scene->threads;

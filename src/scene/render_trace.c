@@ -68,9 +68,10 @@ static void open_depth_for_planes(const cg_scene *scene, cg_camera *camera)
 cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *err)
 {
     if (scene_is_oblique(scene))
-        return cg_error_set(err, CG_EUNSUPPORTED,
-                            "scene: the ray tracer draws perspective and orthogonal views only; "
-                            "render cavalier, cabinet and oblique projections with zbuffer or painter");
+        return cg_error_set(
+            err, CG_EUNSUPPORTED,
+            "scene: the ray tracer draws perspective and orthogonal views only; "
+            "render cavalier, cabinet and oblique projections with zbuffer or painter");
     cg_camera camera;
     cg_mat4 model;
     cg_status s = scene_view(scene, &camera, &model);

@@ -36,11 +36,8 @@ void scene_bounds(const cg_scene *scene, cg_vec3 *lo, cg_vec3 *hi)
         case CG_SCENE_SPHERE:
             grow_box(&a, &b, cg_vec3_sub(o->center, r), cg_vec3_add(o->center, r), o->transform);
             break;
-        case CG_SCENE_BOX:
-            grow_box(&a, &b, o->lo, o->hi, o->transform);
-            break;
-        case CG_SCENE_PLANE:
-            break; /* unbounded: it does not decide the framing */
+        case CG_SCENE_BOX: grow_box(&a, &b, o->lo, o->hi, o->transform); break;
+        case CG_SCENE_PLANE: break; /* unbounded: it does not decide the framing */
         }
     }
     if (!(a.x <= b.x)) { /* nothing finite: the unit cube */
@@ -62,11 +59,11 @@ void scene_plane_extent(const cg_scene *scene, cg_vec3 *center, double *radius)
     *radius = fmax(0.5 * cg_vec3_length(cg_vec3_sub(hi, lo)), 1e-6);
 }
 
-void scene_plane_square(const cg_scene_object *o, cg_vec3 center, double radius,
-                        cg_vec3 corners[4])
+void scene_plane_square(const cg_scene_object *o, cg_vec3 center, double radius, cg_vec3 corners[4])
 {
     cg_vec3 n = cg_vec3_normalize(o->normal);
-    cg_vec3 c = cg_vec3_sub(center, cg_vec3_scale(n, cg_vec3_dot(cg_vec3_sub(center, o->point), n)));
+    cg_vec3 c = cg_vec3_sub(center,
+                            cg_vec3_scale(n, cg_vec3_dot(cg_vec3_sub(center, o->point), n)));
     cg_vec3 helper = fabs(n.x) < 0.9 ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);
     cg_vec3 u = cg_vec3_scale(cg_vec3_normalize(cg_vec3_cross(n, helper)), PLANE_EXTENT * radius);
     cg_vec3 v = cg_vec3_cross(n, u);
@@ -102,14 +99,12 @@ static cg_mat4 axonometric_rotation(const cg_scene *scene)
 {
     cg_mat4 r;
     switch (scene->projection) {
-    case CG_SCENE_ISOMETRIC:
-        return cg_proj_isometric();
+    case CG_SCENE_ISOMETRIC: return cg_proj_isometric();
     case CG_SCENE_DIMETRIC:
         if (cg_proj_dimetric(scene->projection_ratio, &r) == CG_OK)
             return r;
         return cg_proj_isometric();
-    default:
-        return cg_proj_axonometric(scene->projection_angle, scene->projection_angle2);
+    default: return cg_proj_axonometric(scene->projection_angle, scene->projection_angle2);
     }
 }
 
@@ -134,8 +129,7 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
         c.orthographic = 1;
         break;
     }
-    default:
-        break;
+    default: break;
     }
     if (scene->frame_camera) {
         cg_status s = cg_camera_frame(&c, lo, hi, aspect);
@@ -150,8 +144,9 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
         /* An oblique view is an orthographic one after a shear in view space:
          * a point d units farther away than the target moves by ratio d along
          * the projection angle. */
-        double ratio = scene->projection == CG_SCENE_CAVALIER ? 1
-                     : scene->projection == CG_SCENE_CABINET ? 0.5 : scene->projection_ratio;
+        double ratio = scene->projection == CG_SCENE_CAVALIER  ? 1
+                       : scene->projection == CG_SCENE_CABINET ? 0.5
+                                                               : scene->projection_ratio;
         cg_mat4 view, inverse_view;
         cg_status s = cg_camera_view(&c, &view);
         if (s == CG_OK)
@@ -186,5 +181,5 @@ cg_status scene_view(const cg_scene *scene, cg_camera *camera, cg_mat4 *model)
 int scene_is_oblique(const cg_scene *scene)
 {
     return scene->projection == CG_SCENE_CAVALIER || scene->projection == CG_SCENE_CABINET
-        || scene->projection == CG_SCENE_OBLIQUE;
+           || scene->projection == CG_SCENE_OBLIQUE;
 }

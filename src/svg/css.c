@@ -14,12 +14,32 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const property_names[SVG_PROPERTY_COUNT] = {
-    "fill", "fill-opacity", "fill-rule", "stroke", "stroke-width", "stroke-opacity",
-    "stroke-linecap", "stroke-linejoin", "stroke-miterlimit", "stroke-dasharray",
-    "stroke-dashoffset", "opacity", "color", "display", "visibility", "clip-path", "clip-rule",
-    "mask", "stop-color", "stop-opacity", "paint-order", "mix-blend-mode", "filter",
-    "marker-start", "marker-mid", "marker-end"};
+static const char *const property_names[SVG_PROPERTY_COUNT] = {"fill",
+                                                               "fill-opacity",
+                                                               "fill-rule",
+                                                               "stroke",
+                                                               "stroke-width",
+                                                               "stroke-opacity",
+                                                               "stroke-linecap",
+                                                               "stroke-linejoin",
+                                                               "stroke-miterlimit",
+                                                               "stroke-dasharray",
+                                                               "stroke-dashoffset",
+                                                               "opacity",
+                                                               "color",
+                                                               "display",
+                                                               "visibility",
+                                                               "clip-path",
+                                                               "clip-rule",
+                                                               "mask",
+                                                               "stop-color",
+                                                               "stop-opacity",
+                                                               "paint-order",
+                                                               "mix-blend-mode",
+                                                               "filter",
+                                                               "marker-start",
+                                                               "marker-mid",
+                                                               "marker-end"};
 
 #define RANK_ATTRIBUTE 1ULL
 #define RANK_SHEET (2ULL << 48)
@@ -428,8 +448,10 @@ cg_status svg_apply_styles(cg_svg *svg, cg_error *err)
     if (status == CG_ERANGE)
         cg_error_set(err, status, "%s: more than %d style sheet rules", svg->name, CSS_MAX_RULES);
     else if (status == CG_OK && (status = cascade(svg, svg->root, &sheet)) == CG_ERANGE)
-        cg_error_set(err, status, "%s: the style sheets take more than %.0f selector steps on "
-                     "this document", svg->name, CSS_MAX_STEPS);
+        cg_error_set(err, status,
+                     "%s: the style sheets take more than %.0f selector steps on "
+                     "this document",
+                     svg->name, CSS_MAX_STEPS);
     free(sheet.rules.data);
     free(sheet.declarations.data);
     return status;

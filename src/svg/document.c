@@ -42,10 +42,30 @@ const char *cg_svg_warning(const cg_svg *svg, int index)
 }
 
 /* Elements drawn or used by reference; anything else is skipped. */
-static const char *const known[] = {
-    "svg", "g", "defs", "use", "symbol", "switch", "a", "path", "rect", "circle", "ellipse",
-    "line", "polyline", "polygon", "linearGradient", "radialGradient", "stop", "clipPath",
-    "mask", "image", "style", "title", "desc", "metadata"};
+static const char *const known[] = {"svg",
+                                    "g",
+                                    "defs",
+                                    "use",
+                                    "symbol",
+                                    "switch",
+                                    "a",
+                                    "path",
+                                    "rect",
+                                    "circle",
+                                    "ellipse",
+                                    "line",
+                                    "polyline",
+                                    "polygon",
+                                    "linearGradient",
+                                    "radialGradient",
+                                    "stop",
+                                    "clipPath",
+                                    "mask",
+                                    "image",
+                                    "style",
+                                    "title",
+                                    "desc",
+                                    "metadata"};
 
 static const char *reason_for(const char *name)
 {
@@ -109,15 +129,13 @@ static void review(cg_svg *svg, const svg_node *node)
         const char *href = svg_href(node);
         if (href && (strcmp(node->name, "use") == 0 || strcmp(node->name, "image") == 0)
             && *svg_skip(href, 0) != '#' && strncmp(svg_skip(href, 0), "data:", 5) != 0)
-            svg_warn(svg, "skipped <%s> of '%.60s': other files are never read", node->name,
-                     href);
+            svg_warn(svg, "skipped <%s> of '%.60s': other files are never read", node->name, href);
         if (strcmp(node->name, "path") == 0 && svg_attribute_value(node, "d")) {
             cg_path *path;
             cg_error err;
             if (cg_path_create(&path) == CG_OK) {
                 if (cg_path_append_svg(path, svg_attribute_value(node, "d"), &err) != CG_OK)
-                    svg_warn(svg, "line %d: %s (drawn up to the error)", node->line,
-                             err.message);
+                    svg_warn(svg, "line %d: %s (drawn up to the error)", node->line, err.message);
                 cg_path_free(path);
             }
         }

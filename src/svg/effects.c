@@ -357,11 +357,16 @@ cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
 
 static int base64_value(int c)
 {
-    if (c >= 'A' && c <= 'Z') return c - 'A';
-    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-    if (c >= '0' && c <= '9') return c - '0' + 52;
-    if (c == '+' || c == '-') return 62;
-    if (c == '/' || c == '_') return 63;
+    if (c >= 'A' && c <= 'Z')
+        return c - 'A';
+    if (c >= 'a' && c <= 'z')
+        return c - 'a' + 26;
+    if (c >= '0' && c <= '9')
+        return c - '0' + 52;
+    if (c == '+' || c == '-')
+        return 62;
+    if (c == '/' || c == '_')
+        return 63;
     return -1;
 }
 
@@ -465,8 +470,9 @@ void svg_draw_image(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_
     if (!(w > 0 && h > 0))
         goto done;
     double box[4] = {0, 0, iw, ih};
-    m = cg_mat3_mul(cg_mat3_mul(ctm, svg_mat3_affine(1, 0, 0, 1, x, y)),
-                    svg_view_box_matrix(box, w, h, svg_attribute_value(node, "preserveAspectRatio")));
+    m = cg_mat3_mul(
+        cg_mat3_mul(ctm, svg_mat3_affine(1, 0, 0, 1, x, y)),
+        svg_view_box_matrix(box, w, h, svg_attribute_value(node, "preserveAspectRatio")));
     if (cg_mat3_inverse(m, &inverse) != CG_OK || cg_path_create(&rect) != CG_OK
         || cg_path_create(&device) != CG_OK
         || cg_image_create(&layer, target->width, target->height, CG_PIXEL_RGBA8) != CG_OK)

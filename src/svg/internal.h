@@ -16,12 +16,32 @@
 /* The properties cg reads, from presentation attributes, style sheets and
  * style attributes alike. */
 typedef enum svg_property {
-    SVG_FILL, SVG_FILL_OPACITY, SVG_FILL_RULE,
-    SVG_STROKE, SVG_STROKE_WIDTH, SVG_STROKE_OPACITY, SVG_STROKE_LINECAP,
-    SVG_STROKE_LINEJOIN, SVG_STROKE_MITERLIMIT, SVG_STROKE_DASHARRAY, SVG_STROKE_DASHOFFSET,
-    SVG_OPACITY, SVG_COLOR, SVG_DISPLAY, SVG_VISIBILITY, SVG_CLIP_PATH, SVG_CLIP_RULE,
-    SVG_MASK, SVG_STOP_COLOR, SVG_STOP_OPACITY, SVG_PAINT_ORDER, SVG_MIX_BLEND_MODE,
-    SVG_FILTER, SVG_MARKER_START, SVG_MARKER_MID, SVG_MARKER_END,
+    SVG_FILL,
+    SVG_FILL_OPACITY,
+    SVG_FILL_RULE,
+    SVG_STROKE,
+    SVG_STROKE_WIDTH,
+    SVG_STROKE_OPACITY,
+    SVG_STROKE_LINECAP,
+    SVG_STROKE_LINEJOIN,
+    SVG_STROKE_MITERLIMIT,
+    SVG_STROKE_DASHARRAY,
+    SVG_STROKE_DASHOFFSET,
+    SVG_OPACITY,
+    SVG_COLOR,
+    SVG_DISPLAY,
+    SVG_VISIBILITY,
+    SVG_CLIP_PATH,
+    SVG_CLIP_RULE,
+    SVG_MASK,
+    SVG_STOP_COLOR,
+    SVG_STOP_OPACITY,
+    SVG_PAINT_ORDER,
+    SVG_MIX_BLEND_MODE,
+    SVG_FILTER,
+    SVG_MARKER_START,
+    SVG_MARKER_MID,
+    SVG_MARKER_END,
     SVG_PROPERTY_COUNT
 } svg_property;
 
@@ -34,7 +54,7 @@ typedef struct svg_declared {
 } svg_declared;
 
 typedef struct svg_attribute {
-    char *name;  /* local name; "xlink:href" for XLink's href */
+    char *name; /* local name; "xlink:href" for XLink's href */
     char *value;
 } svg_attribute;
 
@@ -43,9 +63,9 @@ typedef struct svg_node {
     svg_attribute *attributes;
     int attribute_count;
     struct svg_node *parent, *first_child, *last_child, *next;
-    char *text;       /* character data (for <style>), may be NULL */
+    char *text; /* character data (for <style>), may be NULL */
     size_t text_length;
-    int line;         /* in the file, for messages */
+    int line; /* in the file, for messages */
     svg_declared declared[SVG_PROPERTY_COUNT];
 } svg_node;
 
@@ -55,12 +75,12 @@ const char *svg_attribute_value(const svg_node *node, const char *name);
 const char *svg_href(const svg_node *node);
 
 struct cg_svg {
-    char name[128];      /* for messages */
-    svg_node *root;      /* the <svg> element */
+    char name[128];             /* for messages */
+    svg_node *root;             /* the <svg> element */
     CORE_ARRAY(svg_node *) ids; /* elements with an id, sorted by id after loading */
     CORE_ARRAY(char *) warnings;
     CORE_ARRAY(char *) strings; /* style sheet text the declarations point into */
-    double width, height; /* the document's size in px */
+    double width, height;       /* the document's size in px */
 };
 
 /* The element with this id ("#id" references drop the '#'), or NULL. */
@@ -116,29 +136,30 @@ int svg_transform(const char *text, cg_mat3 *out);
 int svg_view_box(const char *text, double *box);
 /* The matrix mapping a viewBox into a viewport width x height under a
  * preserveAspectRatio value (NULL: xMidYMid meet). */
-cg_mat3 svg_view_box_matrix(const double *box, double width, double height,
-                            const char *aspect);
+cg_mat3 svg_view_box_matrix(const double *box, double width, double height, const char *aspect);
 cg_mat3 svg_mat3_affine(double a, double b, double c, double d, double e, double f);
 
 /* ---- geometry (shapes.c) ----------------------------------------------------- */
 
 /* The path of a basic shape or path element in user space, appended to
  * out: 1 when the element has geometry, 0 when not (or it is malformed). */
-int svg_shape_path(const svg_node *node, const svg_viewport *viewport,
-                   cg_path *out);
+int svg_shape_path(const svg_node *node, const svg_viewport *viewport, cg_path *out);
 /* Whether an element name is a shape (path, rect, circle ...). */
 int svg_is_shape(const char *name);
 
 /* ---- drawing (render.c, paint.c, effects.c) ---------------------------------- */
 
 typedef enum svg_paint_kind {
-    SVG_PAINT_NONE, SVG_PAINT_COLOR, SVG_PAINT_CURRENT_COLOR, SVG_PAINT_SERVER
+    SVG_PAINT_NONE,
+    SVG_PAINT_COLOR,
+    SVG_PAINT_CURRENT_COLOR,
+    SVG_PAINT_SERVER
 } svg_paint_kind;
 
 typedef struct svg_paint_spec {
     svg_paint_kind kind;
-    cg_rgba8 color;           /* SVG_PAINT_COLOR */
-    const svg_node *server;   /* SVG_PAINT_SERVER: a gradient */
+    cg_rgba8 color;         /* SVG_PAINT_COLOR */
+    const svg_node *server; /* SVG_PAINT_SERVER: a gradient */
 } svg_paint_spec;
 
 #define SVG_MAX_DASHES 64
@@ -177,14 +198,14 @@ typedef struct svg_render {
     cg_rasterizer *raster;   /* compositing in sRGB */
     cg_rasterizer *coverage; /* default compositing: clip coverage */
     cg_error *err;
-    long rendered;           /* elements drawn so far (the budget) */
+    long rendered; /* elements drawn so far (the budget) */
     const svg_node *use_stack[SVG_MAX_USE_DEPTH];
     int use_depth;
-    int effect_depth;        /* clip paths and masks being built */
+    int effect_depth; /* clip paths and masks being built */
     cg_status failure;
-    int width, height;       /* of the target image */
-    svg_box dirty;           /* where drawing calls drew since it was reset */
-    double work;             /* pixels composited so far */
+    int width, height; /* of the target image */
+    svg_box dirty;     /* where drawing calls drew since it was reset */
+    double work;       /* pixels composited so far */
 } svg_render;
 
 /* Grows r->dirty by box (clamped to the image). */

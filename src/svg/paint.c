@@ -38,8 +38,8 @@ static const char *inherited(const svg_node *const *chain, int n, const char *na
 
 /* A coordinate: in bounding-box units a number or a fraction ("50%" is
  * 0.5), in user space a length of the viewport. */
-static double coordinate(const char *text, int bbox_units, svg_axis axis,
-                         const svg_viewport *vp, double fallback)
+static double coordinate(const char *text, int bbox_units, svg_axis axis, const svg_viewport *vp,
+                         double fallback)
 {
     if (!text)
         return fallback;
@@ -135,9 +135,9 @@ int svg_gradient_paint(const svg_render *r, const svg_node *server, const cg_vec
                                bbox_units ? 0.5 : vp->width / 2);
         double cy = coordinate(inherited(chain, n, "cy"), bbox_units, SVG_AXIS_Y, vp,
                                bbox_units ? 0.5 : vp->height / 2);
-        double radius = coordinate(inherited(chain, n, "r"), bbox_units, SVG_AXIS_DIAGONAL, vp,
-                                   bbox_units ? 0.5 : 0.5 * sqrt((vp->width * vp->width
-                                                                  + vp->height * vp->height) / 2));
+        double radius = coordinate(
+            inherited(chain, n, "r"), bbox_units, SVG_AXIS_DIAGONAL, vp,
+            bbox_units ? 0.5 : 0.5 * sqrt((vp->width * vp->width + vp->height * vp->height) / 2));
         double fx = coordinate(inherited(chain, n, "fx"), bbox_units, SVG_AXIS_X, vp, cx);
         double fy = coordinate(inherited(chain, n, "fy"), bbox_units, SVG_AXIS_Y, vp, cy);
         if (!(radius > 0)) { /* the last stop's colour */

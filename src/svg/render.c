@@ -97,8 +97,8 @@ static int resolve_paint(svg_render *r, const svg_paint_spec *spec, double opaci
     if (spec->kind == SVG_PAINT_NONE || !(opacity > 0))
         return 0;
     if (spec->kind == SVG_PAINT_SERVER)
-        return svg_gradient_paint(r, spec->server, bbox, has_bbox, ctm, vp, opacity,
-                                  style->color, paint, stops);
+        return svg_gradient_paint(r, spec->server, bbox, has_bbox, ctm, vp, opacity, style->color,
+                                  paint, stops);
     cg_rgba8 c = spec->kind == SVG_PAINT_COLOR ? spec->color : style->color;
     c.a = (uint8_t)(c.a * opacity + 0.5);
     if (c.a == 0)
@@ -185,12 +185,12 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
         cg_paint paint;
         if (stroke) {
             if (s->stroke_width > 0
-                && resolve_paint(r, &s->stroke, s->stroke_opacity * opacity, s, bbox, has_bbox,
-                                 ctm, vp, &paint, stops))
+                && resolve_paint(r, &s->stroke, s->stroke_opacity * opacity, s, bbox, has_bbox, ctm,
+                                 vp, &paint, stops))
                 stroke_shape(r, user, device, s, ctm, &paint, target);
         } else if (strcmp(node->name, "line") != 0
-                   && resolve_paint(r, &s->fill, s->fill_opacity * opacity, s, bbox, has_bbox,
-                                    ctm, vp, &paint, stops)) {
+                   && resolve_paint(r, &s->fill, s->fill_opacity * opacity, s, bbox, has_bbox, ctm,
+                                    vp, &paint, stops)) {
             fill_shape(r, device, &paint, s->fill_rule, target);
         }
     }
@@ -216,8 +216,8 @@ static void viewport_transform(const svg_node *node, const svg_viewport *vp, dou
     inner->height = h;
     double box[4];
     if (svg_view_box(svg_attribute_value(node, "viewBox"), box) == 0) {
-        *ctm = cg_mat3_mul(*ctm, svg_view_box_matrix(box, w, h,
-                                                     svg_attribute_value(node, "preserveAspectRatio")));
+        *ctm = cg_mat3_mul(
+            *ctm, svg_view_box_matrix(box, w, h, svg_attribute_value(node, "preserveAspectRatio")));
         inner->width = box[2];
         inner->height = box[3];
     }
@@ -266,16 +266,15 @@ static void render_use(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
             }
         }
     } else {
-        svg_render_node(r, target_node, cg_mat3_mul(ctm, svg_mat3_affine(1, 0, 0, 1, x, y)), vp,
-                        s, target);
+        svg_render_node(r, target_node, cg_mat3_mul(ctm, svg_mat3_affine(1, 0, 0, 1, x, y)), vp, s,
+                        target);
     }
     r->use_depth--;
 }
 
 /* What an element draws, once its group effects are taken care of. */
-static void render_content(svg_render *r, const svg_node *node, cg_mat3 ctm,
-                           const svg_viewport *vp, const svg_style *s, double opacity,
-                           cg_image *target)
+static void render_content(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,
+                           const svg_style *s, double opacity, cg_image *target)
 {
     const char *name = node->name;
     if (svg_is_shape(name)) {
@@ -424,9 +423,9 @@ cg_status cg_svg_render(const cg_svg *svg, cg_image *image, cg_mat3 transform, c
     svg_viewport vp = {svg->width, svg->height};
     double box[4];
     if (svg_view_box(svg_attribute_value(svg->root, "viewBox"), box) == 0) {
-        ctm = cg_mat3_mul(ctm, svg_view_box_matrix(box, svg->width, svg->height,
-                                                   svg_attribute_value(svg->root,
-                                                                       "preserveAspectRatio")));
+        ctm = cg_mat3_mul(
+            ctm, svg_view_box_matrix(box, svg->width, svg->height,
+                                     svg_attribute_value(svg->root, "preserveAspectRatio")));
         vp.width = box[2];
         vp.height = box[3];
     }

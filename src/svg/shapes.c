@@ -8,8 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const shapes[] = {"path", "rect", "circle", "ellipse", "line", "polyline",
-                                     "polygon"};
+static const char *const shapes[] = {"path", "rect",     "circle", "ellipse",
+                                     "line", "polyline", "polygon"};
 
 int svg_is_shape(const char *name)
 {
@@ -83,19 +83,30 @@ static int rect_path(const svg_node *node, const svg_viewport *vp, cg_path *out)
     cg_status s;
     if (rx > 0 && ry > 0) {
         s = cg_path_move_to(out, x + rx, y);
-        if (s == CG_OK) s = cg_path_line_to(out, x + w - rx, y);
-        if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + w, y + ry);
-        if (s == CG_OK) s = cg_path_line_to(out, x + w, y + h - ry);
-        if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + w - rx, y + h);
-        if (s == CG_OK) s = cg_path_line_to(out, x + rx, y + h);
-        if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x, y + h - ry);
-        if (s == CG_OK) s = cg_path_line_to(out, x, y + ry);
-        if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + rx, y);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x + w - rx, y);
+        if (s == CG_OK)
+            s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + w, y + ry);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x + w, y + h - ry);
+        if (s == CG_OK)
+            s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + w - rx, y + h);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x + rx, y + h);
+        if (s == CG_OK)
+            s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x, y + h - ry);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x, y + ry);
+        if (s == CG_OK)
+            s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, x + rx, y);
     } else {
         s = cg_path_move_to(out, x, y);
-        if (s == CG_OK) s = cg_path_line_to(out, x + w, y);
-        if (s == CG_OK) s = cg_path_line_to(out, x + w, y + h);
-        if (s == CG_OK) s = cg_path_line_to(out, x, y + h);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x + w, y);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x + w, y + h);
+        if (s == CG_OK)
+            s = cg_path_line_to(out, x, y + h);
     }
     if (s == CG_OK)
         s = cg_path_close(out);
@@ -109,10 +120,14 @@ static int ellipse_path(double cx, double cy, double rx, double ry, cg_path *out
     if (!(rx > 0 && ry > 0))
         return 0;
     cg_status s = cg_path_move_to(out, cx + rx, cy);
-    if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx, cy + ry);
-    if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx - rx, cy);
-    if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx, cy - ry);
-    if (s == CG_OK) s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx + rx, cy);
+    if (s == CG_OK)
+        s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx, cy + ry);
+    if (s == CG_OK)
+        s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx - rx, cy);
+    if (s == CG_OK)
+        s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx, cy - ry);
+    if (s == CG_OK)
+        s = cg_path_svg_arc_to(out, rx, ry, 0, 0, 1, cx + rx, cy);
     if (s == CG_OK)
         s = cg_path_close(out);
     return s == CG_OK;

@@ -41,8 +41,9 @@ static void paint_value(const svg_render *r, const char *value, svg_paint_spec *
         const svg_node *server = svg_find_reference(r->svg, value);
         const char *close = strchr(value, ')');
         const char *fallback = close ? svg_skip(close + 1, 0) : "";
-        if (server && (strcmp(server->name, "linearGradient") == 0
-                       || strcmp(server->name, "radialGradient") == 0)) {
+        if (server
+            && (strcmp(server->name, "linearGradient") == 0
+                || strcmp(server->name, "radialGradient") == 0)) {
             paint->kind = SVG_PAINT_SERVER;
             paint->server = server;
             return;
@@ -139,15 +140,20 @@ void svg_compute_style(const svg_render *r, const svg_node *node, const svg_view
         && w >= 0)
         s->stroke_width = w;
     if ((v = VALUE(SVG_STROKE_LINECAP)) != NULL) {
-        if (keyword(v, "butt")) s->cap = CG_CAP_BUTT;
-        else if (keyword(v, "round")) s->cap = CG_CAP_ROUND;
-        else if (keyword(v, "square")) s->cap = CG_CAP_SQUARE;
+        if (keyword(v, "butt"))
+            s->cap = CG_CAP_BUTT;
+        else if (keyword(v, "round"))
+            s->cap = CG_CAP_ROUND;
+        else if (keyword(v, "square"))
+            s->cap = CG_CAP_SQUARE;
     }
     if ((v = VALUE(SVG_STROKE_LINEJOIN)) != NULL) {
         if (keyword(v, "miter") || keyword(v, "miter-clip") || keyword(v, "arcs"))
             s->join = CG_JOIN_MITER;
-        else if (keyword(v, "round")) s->join = CG_JOIN_ROUND;
-        else if (keyword(v, "bevel")) s->join = CG_JOIN_BEVEL;
+        else if (keyword(v, "round"))
+            s->join = CG_JOIN_ROUND;
+        else if (keyword(v, "bevel"))
+            s->join = CG_JOIN_BEVEL;
     }
     if ((v = VALUE(SVG_STROKE_MITERLIMIT)) != NULL) {
         double m;

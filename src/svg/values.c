@@ -66,13 +66,14 @@ int svg_length(const char *text, svg_axis axis, const svg_viewport *viewport, do
     static const struct {
         const char *unit;
         double px;
-    } units[] = {{"px", 1}, {"pt", 4.0 / 3.0}, {"pc", 16}, {"mm", 96 / 25.4},
-                 {"cm", 96 / 2.54}, {"in", 96}, {"em", 16}, {"ex", 8}};
+    } units[] = {{"px", 1},         {"pt", 4.0 / 3.0}, {"pc", 16}, {"mm", 96 / 25.4},
+                 {"cm", 96 / 2.54}, {"in", 96},        {"em", 16}, {"ex", 8}};
     if (*s == '%') {
         double base = axis == SVG_AXIS_X   ? viewport->width
                       : axis == SVG_AXIS_Y ? viewport->height
                                            : sqrt((viewport->width * viewport->width
-                                                   + viewport->height * viewport->height) / 2);
+                                                   + viewport->height * viewport->height)
+                                                  / 2);
         v = v / 100 * base;
         s++;
     } else {
@@ -192,8 +193,8 @@ int svg_transform(const char *text, cg_mat3 *out)
     cg_mat3 m = cg_mat3_identity();
     const char *s = svg_skip(text ? text : "", 1);
     while (*s) {
-        static const char *const names[] = {"matrix", "translate", "scale", "rotate", "skewX",
-                                            "skewY"};
+        static const char *const names[] = {"matrix", "translate", "scale",
+                                            "rotate", "skewX",     "skewY"};
         int which = -1;
         size_t len = 0;
         for (int i = 0; i < 6; i++) {
@@ -220,8 +221,8 @@ int svg_transform(const char *text, cg_mat3 *out)
             count++;
         }
         s++;
-        static const int ok_counts[6][3] = {{6, 6, 6}, {1, 2, 2}, {1, 2, 2}, {1, 3, 3},
-                                            {1, 1, 1}, {1, 1, 1}};
+        static const int ok_counts[6][3] = {{6, 6, 6}, {1, 2, 2}, {1, 2, 2},
+                                            {1, 3, 3}, {1, 1, 1}, {1, 1, 1}};
         if (count != ok_counts[which][0] && count != ok_counts[which][1]
             && count != ok_counts[which][2])
             return -1;

@@ -22,11 +22,11 @@
 typedef struct xml_reader {
     cg_svg *svg;
     XML_Parser parser;
-    svg_node *current;  /* the open element, NULL before the root */
-    int depth;          /* of open elements, the dropped ones included */
-    int foreign_depth;  /* > 0: inside an element of another namespace */
+    svg_node *current; /* the open element, NULL before the root */
+    int depth;         /* of open elements, the dropped ones included */
+    int foreign_depth; /* > 0: inside an element of another namespace */
     long elements;
-    cg_status failure;  /* set when a handler stops the parser */
+    cg_status failure; /* set when a handler stops the parser */
     char message[256];
 } xml_reader;
 
@@ -191,8 +191,7 @@ static void XMLCALL on_entity(void *user, const XML_Char *name, int parameter,
                               const XML_Char *system_id, const XML_Char *public_id,
                               const XML_Char *notation)
 {
-    (void)parameter, (void)value, (void)value_length, (void)base, (void)public_id,
-        (void)notation;
+    (void)parameter, (void)value, (void)value_length, (void)base, (void)public_id, (void)notation;
     char m[200];
     snprintf(m, sizeof m, "entity declaration '%.40s' refused: %s", name,
              system_id ? "external entities are never read"

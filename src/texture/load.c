@@ -36,8 +36,7 @@ cg_status cg_texture_load_memory(const void *bytes, size_t size, const char *nam
                                     (size_t)CG_TEXTURE_MAX_TEXELS);
         }
         s = cg_image_read_memory(bytes, size, name, &image, err);
-    }
-    else
+    } else
         return cg_error_set(err, CG_EFORMAT, "%s: expected a PNG or JPEG image%s", name,
                             size == 0 ? ", the file is empty" : "");
     if (s != CG_OK)
@@ -46,8 +45,8 @@ cg_status cg_texture_load_memory(const void *bytes, size_t size, const char *nam
     int width = image->width, height = image->height;
     cg_image_free(image);
     if (s == CG_ERANGE)
-        return cg_error_set(err, s, "%s: %d x %d pixels, over the %zu texels cg reads", name,
-                            width, height, (size_t)CG_TEXTURE_MAX_TEXELS);
+        return cg_error_set(err, s, "%s: %d x %d pixels, over the %zu texels cg reads", name, width,
+                            height, (size_t)CG_TEXTURE_MAX_TEXELS);
     if (s != CG_OK)
         return cg_error_set(err, s, "%s: out of memory for %d x %d texels", name, width, height);
     return CG_OK;

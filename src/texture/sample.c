@@ -68,8 +68,8 @@ static cg_rgbaf bilinear(const cg_texture_level *level, const cg_texture_sampler
     return r;
 }
 
-cg_rgbaf cg_texture_sample(const cg_texture *texture, const cg_texture_sampler *sampler,
-                           double u, double v, double lod)
+cg_rgbaf cg_texture_sample(const cg_texture *texture, const cg_texture_sampler *sampler, double u,
+                           double v, double lod)
 {
     cg_rgbaf r = {0, 0, 0, 0};
     if (!texture || !sampler || texture->level_count < 1)

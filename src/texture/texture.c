@@ -150,8 +150,8 @@ cg_status cg_texture_from_image(const cg_image *image, cg_texture_encoding encod
     }
     for (int y = 0; y < image->height; y++)
         for (int x = 0; x < image->width; x++)
-            base->texels[(size_t)y * (size_t)image->width + (size_t)x]
-                = texel_of(image, x, y, encoding);
+            base->texels[(size_t)y * (size_t)image->width + (size_t)x] = texel_of(image, x, y,
+                                                                                  encoding);
     for (int k = 1; k < levels; k++) {
         cg_status s = halve(&t->levels[k - 1], &t->levels[k]);
         t->level_count = k + 1; /* so that free sees what was made */

@@ -98,8 +98,7 @@ cg_status cg_bvh_build_threads(const cg_vec3 *positions, size_t vertex_count,
     /* Two workers at most take part (the root's two subtrees); without the
      * second (out of memory, no thread) the caller builds alone. */
     core_worker_pool *pool = NULL;
-    if (threads > 1 && triangle_count >= PARALLEL_MIN
-        && core_worker_pool_create(2, &pool) != CG_OK)
+    if (threads > 1 && triangle_count >= PARALLEL_MIN && core_worker_pool_create(2, &pool) != CG_OK)
         pool = NULL;
     cg_status status = trace_bvh_build(positions, vertex_count, indices, triangle_count, pool, out);
     core_worker_pool_free(pool);
@@ -144,8 +143,10 @@ cg_status trace_bvh_build(const cg_vec3 *positions, size_t vertex_count, const u
     }
     if (!joined)
         second = alloc_block(n, sizeof *refs, 0);
-    bvh_builder b = {{refs, second}, alloc_block(n, sizeof(uint32_t), 0),
-                 alloc_block(2 * n - 1, sizeof(bvh_node), 0), 0};
+    bvh_builder b = {{refs, second},
+                     alloc_block(n, sizeof(uint32_t), 0),
+                     alloc_block(2 * n - 1, sizeof(bvh_node), 0),
+                     0};
     bvh_collapser c = {b.nodes, b.ids, positions, indices, NULL, NULL, 0, NULL, 0, 1};
     cg_status status = CG_ENOMEM;
     if (!b.buf[1] || !b.ids || !b.nodes || !bvh_build_tree(&b, n, pool))

@@ -119,7 +119,7 @@ static void sah_sweep(const bin_set *s, int nb, const float *sc, int *best_axis,
     /* From the right: the area and count right of each plane. */
     v4 right_area[BINS];
     i4 right_count[BINS];
-    v4 acc[6] = {v4_set(FLT_MAX), v4_set(FLT_MAX), v4_set(FLT_MAX),
+    v4 acc[6] = {v4_set(FLT_MAX),  v4_set(FLT_MAX),  v4_set(FLT_MAX),
                  v4_set(-FLT_MAX), v4_set(-FLT_MAX), v4_set(-FLT_MAX)};
     const v4 zero = v4_set(0);
     i4 n = i4_set(0);
@@ -282,7 +282,7 @@ static int sah_split(const prim_ref *src, prim_ref *dst, size_t begin, size_t en
     }
     for (; i < end; i += stride)
         bins_add(&set[0], &src[i], origin, scale, last);
-    bbox (*bins)[BINS] = set[0].box;
+    bbox(*bins)[BINS] = set[0].box;
     int best_axis, best_bin;
     float best_cost;
     sah_sweep(&set[0], nb, sc, &best_axis, &best_bin, &best_cost);

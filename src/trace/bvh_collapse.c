@@ -106,7 +106,7 @@ uint32_t bvh_collapse(bvh_collapser *c, uint32_t index, int depth)
         uint32_t ref = BVH_NONE;
         if (k < n)
             ref = bin[kids[k]].count ? bvh_emit_leaf(c, &bin[kids[k]])
-                                  : bvh_collapse(c, kids[k], depth + 1);
+                                     : bvh_collapse(c, kids[k], depth + 1);
         c->nodes[me].child[k] = ref;
     }
     return me;

@@ -15,10 +15,10 @@
 #include <string.h>
 
 enum {
-    BINS = 32,        /* most bins per axis for the SAH sweep */
-    MAX_LEAF = 8,     /* a node with more triangles is always split (a leaf
+    BINS = 32,      /* most bins per axis for the SAH sweep */
+    MAX_LEAF = 8,   /* a node with more triangles is always split (a leaf
                          reference holds counts 1 to 8) */
-    SAH_DEPTH = 48,   /* deeper than this, split at the object median */
+    SAH_DEPTH = 48, /* deeper than this, split at the object median */
     /* The 4-wide tree is at most as deep as the binary one (SAH_DEPTH + 32
      * inner levels), and each level pushes at most three children. */
     STACK_SIZE = 3 * (SAH_DEPTH + 33) + 16,

@@ -71,8 +71,7 @@ int bvh_ray_setup(bvh_ray *ray, cg_vec3 origin, cg_vec3 direction, double t_min)
 
 /* The slab test for rays with a zero direction component: on such an axis
  * the slab holds the whole ray or none of it, boundaries included. */
-static int hit_box_flat(const bvh_ray *ray, const bvh_node *node, float t_far_limit,
-                        float *t_near)
+static int hit_box_flat(const bvh_ray *ray, const bvh_node *node, float t_far_limit, float *t_near)
 {
     float tn = ray->t_min, tf = FLT_MAX;
     for (int a = 0; a < 3; a++) {
@@ -161,8 +160,8 @@ static void ray4_setup(ray4 *r, const bvh_ray *ray)
  * Bit k of the result says child k is entered, t_near[k] where.  Lane by lane the very operations of hit_box, so
  * each decision is the one hit_box would make; an empty slot's box gives
  * t_near +inf and t_far -inf and is never entered. */
-static inline int hit_node4(const bvh_ray *ray, const ray4 *r, const bvh4_node *node,
-                            v4 limit4, float t_far_limit, float t_near[4])
+static inline int hit_node4(const bvh_ray *ray, const ray4 *r, const bvh4_node *node, v4 limit4,
+                            float t_far_limit, float t_near[4])
 {
     if (ray->flat_axes) {
         int mask = 0;

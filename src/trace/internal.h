@@ -53,7 +53,7 @@ struct cg_bvh {
     bvh_tri4 *blocks;
     size_t block_count;
     size_t triangle_count;
-    uint32_t root;  /* reference of the root (BVH_NONE when empty) */
+    uint32_t root;   /* reference of the root (BVH_NONE when empty) */
     bvh_node bounds; /* the root's box */
     int depth;       /* of the 4-wide tree, root = 1 */
 };
@@ -131,10 +131,10 @@ typedef struct trace_hit {
     double scale;          /* largest coordinate magnitude involved */
 } trace_hit;
 
-int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
-                    double t_min, double t_max, trace_hit *hit);
-int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
-                   double t_min, double t_max);
+int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction, double t_min,
+                    double t_max, trace_hit *hit);
+int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction, double t_min,
+                   double t_max);
 /* The hit point moved off the surface along normal (unit) by an amount
  * relative to the magnitude of the coordinates. */
 cg_vec3 trace_offset(const trace_hit *hit, cg_vec3 normal);

@@ -112,9 +112,8 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
             ctx->visibility[i] = visible(ctx, hit, n_geometric, to_light, distance);
         }
     }
-    cg_vec3 sum = cg_shade_terms_sum(cg_light_shade_terms(hit->point, n, to_viewer, material,
-                                                          scene->lights, scene->light_count,
-                                                          ctx->visibility));
+    cg_vec3 sum = cg_shade_terms_sum(cg_light_shade_terms(
+        hit->point, n, to_viewer, material, scene->lights, scene->light_count, ctx->visibility));
     for (size_t i = 0; lit && i < scene->area_light_count; i++) {
         const cg_trace_area_light *l = &scene->area_lights[i];
         int side = l->samples;
@@ -132,7 +131,8 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
                     || cg_vec3_dot(n_geometric, to_light) <= 0 || cg_vec3_dot(n, to_light) <= 0)
                     continue;
                 if (visible(ctx, hit, n_geometric, to_light, distance))
-                    sum = cg_vec3_add(sum, cg_light_shade(hit->point, n, to_viewer, material, &point, 1));
+                    sum = cg_vec3_add(
+                        sum, cg_light_shade(hit->point, n, to_viewer, material, &point, 1));
             }
     }
     return sum;
@@ -140,8 +140,8 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
 
 /* Radiance along the ray (direction unit) between t_min and t_max (the
  * camera's near and far for a primary ray); *hit_any set when it hits. */
-static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_min,
-                     double t_max, int depth, double weight, sampler *rng, int *hit_any)
+static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_min, double t_max,
+                     int depth, double weight, sampler *rng, int *hit_any)
 {
     const cg_trace_options *opt = ctx->options;
     trace_hit hit;
@@ -181,8 +181,8 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_m
             reflect_weight += transmit * fresnel;
             double w = transmit * (1 - fresnel);
             if (w * weight >= MIN_WEIGHT) {
-                cg_vec3 c = trace(ctx, trace_offset(&hit, cg_vec3_scale(ng, -1)), refracted,
-                                  0, INFINITY, depth + 1, weight * w, rng, NULL);
+                cg_vec3 c = trace(ctx, trace_offset(&hit, cg_vec3_scale(ng, -1)), refracted, 0,
+                                  INFINITY, depth + 1, weight * w, rng, NULL);
                 color = cg_vec3_add(color, cg_vec3_scale(c, w));
             }
         } else {
@@ -265,8 +265,7 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
 static void render_tiles(void *job_context, int worker)
 {
     job *j = job_context;
-    context ctx = {j->scene, j->options, 0,
-                   j->visibility + (size_t)worker * j->scene->light_count};
+    context ctx = {j->scene, j->options, 0, j->visibility + (size_t)worker * j->scene->light_count};
     size_t claimed;
     while (core_worker_pool_claim(&j->tiles, &claimed)) {
         int tile = (int)claimed;
@@ -331,8 +330,7 @@ static double seconds_since(const struct timespec *a)
 }
 
 cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
-                          const cg_trace_options *options, cg_image *image,
-                          cg_trace_stats *stats)
+                          const cg_trace_options *options, cg_image *image, cg_trace_stats *stats)
 {
     if (!scene || !camera || !image || image->width <= 0 || image->height <= 0)
         return CG_EINVAL;

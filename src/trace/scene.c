@@ -86,7 +86,8 @@ static trace_object object_of(trace_kind kind, const cg_trace_material *material
 static cg_status add_object(cg_trace_scene *scene, const trace_object *object)
 {
     if (core_array_reserve((void **)&scene->objects, &scene->object_capacity,
-                           scene->object_count + 1, sizeof *scene->objects) != CG_OK)
+                           scene->object_count + 1, sizeof *scene->objects)
+        != CG_OK)
         return CG_ENOMEM;
     scene->objects[scene->object_count++] = *object;
     cg_bvh_free(scene->bvh);
@@ -122,8 +123,7 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         return CG_EINVAL;
     cg_mat4 model = transform ? *transform : cg_mat4_identity();
     cg_mat3 normal_matrix;
-    if (!affine(&model)
-        || cg_mat3_inverse(linear_part(&model), &normal_matrix) != CG_OK)
+    if (!affine(&model) || cg_mat3_inverse(linear_part(&model), &normal_matrix) != CG_OK)
         return CG_EINVAL;
     normal_matrix = cg_mat3_transpose(normal_matrix);
     cg_status status = cg_mesh_validate_topology(mesh, NULL);
@@ -134,14 +134,17 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
     if (mesh->vertex_count > UINT32_MAX - v0 || triangles > 0x7fffffff - t0)
         return CG_ERANGE;
     if (core_array_reserve((void **)&scene->positions, &scene->vertex_capacity,
-                           v0 + mesh->vertex_count, sizeof *scene->positions) != CG_OK
+                           v0 + mesh->vertex_count, sizeof *scene->positions)
+            != CG_OK
         || core_array_reserve((void **)&scene->normals, &scene->normal_capacity,
-                              3 * (t0 + triangles), sizeof *scene->normals) != CG_OK
+                              3 * (t0 + triangles), sizeof *scene->normals)
+               != CG_OK
         || core_array_reserve((void **)&scene->indices, &scene->index_capacity,
-                              3 * (t0 + triangles), sizeof *scene->indices) != CG_OK
-        || core_array_reserve((void **)&scene->triangle_object,
-                              &scene->triangle_object_capacity, t0 + triangles,
-                              sizeof *scene->triangle_object) != CG_OK)
+                              3 * (t0 + triangles), sizeof *scene->indices)
+               != CG_OK
+        || core_array_reserve((void **)&scene->triangle_object, &scene->triangle_object_capacity,
+                              t0 + triangles, sizeof *scene->triangle_object)
+               != CG_OK)
         return CG_ENOMEM;
     /* Normals at face corners: the file's vertex normals, or the
      * renderer's crease-angle normals (cg/render.h) when it has none. */
@@ -156,7 +159,7 @@ cg_status cg_trace_scene_add_mesh(cg_trace_scene *scene, const cg_mesh *mesh,
         }
     }
 
-    uint32_t (*corners)[3] = malloc((triangles ? triangles : 1) * sizeof *corners);
+    uint32_t(*corners)[3] = malloc((triangles ? triangles : 1) * sizeof *corners);
     if (!corners || cg_mesh_triangulate(mesh, corners) != CG_OK) {
         free(corners);
         free(corner);
@@ -225,8 +228,9 @@ cg_status cg_trace_scene_add_light(cg_trace_scene *scene, const cg_light *light)
 {
     if (!scene || !light || cg_light_check(light, NULL) != CG_OK)
         return CG_EINVAL;
-    if (core_array_reserve((void **)&scene->lights, &scene->light_capacity,
-                           scene->light_count + 1, sizeof *scene->lights) != CG_OK)
+    if (core_array_reserve((void **)&scene->lights, &scene->light_capacity, scene->light_count + 1,
+                           sizeof *scene->lights)
+        != CG_OK)
         return CG_ENOMEM;
     scene->lights[scene->light_count++] = *light;
     return CG_OK;
@@ -239,7 +243,8 @@ cg_status cg_trace_scene_add_area_light(cg_trace_scene *scene, const cg_trace_ar
         || light->color.y < 0 || light->color.z < 0 || light->samples < 1 || light->samples > 64)
         return CG_EINVAL;
     if (core_array_reserve((void **)&scene->area_lights, &scene->area_light_capacity,
-                           scene->area_light_count + 1, sizeof *scene->area_lights) != CG_OK)
+                           scene->area_light_count + 1, sizeof *scene->area_lights)
+        != CG_OK)
         return CG_ENOMEM;
     scene->area_lights[scene->area_light_count++] = *light;
     return CG_OK;
@@ -254,9 +259,9 @@ cg_status cg_trace_scene_build(cg_trace_scene *scene, int threads, double *secon
     if (!scene->built) {
         cg_bvh_free(scene->bvh);
         scene->bvh = NULL;
-        cg_status status = trace_bvh_build(scene->positions, scene->vertex_count,
-                                           scene->indices, scene->triangle_count,
-                                           trace_scene_pool(scene, threads), &scene->bvh);
+        cg_status status = trace_bvh_build(scene->positions, scene->vertex_count, scene->indices,
+                                           scene->triangle_count, trace_scene_pool(scene, threads),
+                                           &scene->bvh);
         if (status != CG_OK)
             return status;
         scene->built = 1;
@@ -371,8 +376,8 @@ static double max_abs(cg_vec3 v)
     return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
 }
 
-int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
-                    double t_min, double t_max, trace_hit *hit)
+int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction, double t_min,
+                    double t_max, trace_hit *hit)
 {
     if (!finite3(origin) || !finite3(direction))
         return 0;
@@ -420,8 +425,9 @@ int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 directi
         hit->normal = cg_vec3_normalize(
             cg_vec3_cross(cg_vec3_sub(p[1], p[0]), cg_vec3_sub(p[2], p[0])));
         const cg_vec3 *cn = scene->normals + 3 * (size_t)hit->triangle;
-        cg_vec3 sn = cg_vec3_add(cg_vec3_add(cg_vec3_scale(cn[0], w0), cg_vec3_scale(cn[1], hit->u)),
-                                 cg_vec3_scale(cn[2], hit->v));
+        cg_vec3 sn = cg_vec3_add(
+            cg_vec3_add(cg_vec3_scale(cn[0], w0), cg_vec3_scale(cn[1], hit->u)),
+            cg_vec3_scale(cn[2], hit->v));
         sn = cg_vec3_normalize(sn);
         hit->smooth_normal = cg_vec3_length(sn) > 0 ? sn : hit->normal;
         hit->scale = fmax(max_abs(p[0]), fmax(max_abs(p[1]), max_abs(p[2])));
@@ -450,8 +456,8 @@ int trace_intersect(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 directi
     return 1;
 }
 
-int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction,
-                   double t_min, double t_max)
+int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 direction, double t_min,
+                   double t_max)
 {
     for (size_t i = 0; i < scene->object_count; i++) {
         const trace_object *o = &scene->objects[i];

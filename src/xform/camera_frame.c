@@ -20,7 +20,7 @@ static void box_corners(cg_vec3 lo, cg_vec3 hi, cg_vec3 corners[8])
 static int box_is_valid(cg_vec3 lo, cg_vec3 hi)
 {
     return hi.x >= lo.x && hi.y >= lo.y && hi.z >= lo.z && isfinite(lo.x) && isfinite(lo.y)
-        && isfinite(lo.z) && isfinite(hi.x) && isfinite(hi.y) && isfinite(hi.z);
+           && isfinite(lo.z) && isfinite(hi.x) && isfinite(hi.y) && isfinite(hi.z);
 }
 
 cg_vec3 cg_camera_up_for(cg_vec3 direction, cg_vec3 up)
@@ -37,7 +37,8 @@ cg_vec3 cg_camera_up_for(cg_vec3 direction, cg_vec3 up)
     cg_vec3 reference = u > 0 ? up : cg_vec3_make(0, 1, 0);
     double ax = fabs(reference.x), ay = fabs(reference.y), az = fabs(reference.z);
     cg_vec3 axis = az <= ax && az <= ay ? cg_vec3_make(0, 0, 1)
-                 : ax <= ay ? cg_vec3_make(1, 0, 0) : cg_vec3_make(0, 1, 0);
+                   : ax <= ay           ? cg_vec3_make(1, 0, 0)
+                                        : cg_vec3_make(0, 1, 0);
     double sign = cg_vec3_dot(direction, reference) >= 0 ? 1 : -1;
     cg_vec3 f = cg_vec3_scale(direction, 1 / d);
     cg_vec3 tilted = cg_vec3_sub(axis, cg_vec3_scale(f, cg_vec3_dot(axis, f)));
@@ -85,8 +86,7 @@ cg_status cg_camera_fit_depth(cg_camera *camera, cg_vec3 lo, cg_vec3 hi)
 /* The tightest eye position across one image axis: the eye at lateral
  * offset *offset and depth *depth (both along the camera's axes) sees every
  * point (x[i], z[i]) within the half-angle whose tangent is slope. */
-static void fit_axis(const double *x, const double *z, double slope, double *offset,
-                     double *depth)
+static void fit_axis(const double *x, const double *z, double slope, double *offset, double *depth)
 {
     double a = -INFINITY, b = INFINITY;
     for (int i = 0; i < 8; i++) {

@@ -28,8 +28,8 @@ cg_status cg_proj_perspective(double fovy, double aspect, double near, double fa
     return cg_proj_frustum(-top * aspect, top * aspect, -top, top, near, far, out);
 }
 
-cg_status cg_proj_orthographic(double left, double right, double bottom, double top,
-                               double near, double far, cg_mat4 *out)
+cg_status cg_proj_orthographic(double left, double right, double bottom, double top, double near,
+                               double far, cg_mat4 *out)
 {
     if (!out || !finite6(left, right, bottom, top, near, far) || !(right != left)
         || !(top != bottom) || !(far != near))
@@ -52,8 +52,7 @@ cg_mat4 cg_proj_view_rotation(cg_ortho_view view)
         /* Looking from +x toward the origin: +x must come toward the viewer. */
         return cg_xform3_rotate_y(-CG_PI / 2);
     case CG_VIEW_FRONT:
-    default:
-        return cg_mat4_identity();
+    default: return cg_mat4_identity();
     }
 }
 

@@ -41,12 +41,15 @@ static void fail(int line)
 }
 
 #define MAX_RINGS 4
-#define SMALL_MAX 25     /* points of a ring read byte by byte */
-#define BIG_MIN 200      /* a generated ring: 200 .. 2000 points */
+#define SMALL_MAX 25 /* points of a ring read byte by byte */
+#define BIG_MIN 200  /* a generated ring: 200 .. 2000 points */
 #define BIG_MAX 2000
-#define TOTAL_MAX 2500   /* points of one operand */
+#define TOTAL_MAX 2500 /* points of one operand */
 
-typedef struct reader { const unsigned char *p; size_t n; } reader;
+typedef struct reader {
+    const unsigned char *p;
+    size_t n;
+} reader;
 
 static unsigned get(reader *r)
 {
@@ -58,10 +61,9 @@ static unsigned get(reader *r)
 
 static int64_t special(unsigned k)
 {
-    static const int64_t v[8] = {CG_CLIP_MAX_COORD,      -CG_CLIP_MAX_COORD,
-                                 CG_CLIP_MAX_COORD + 1,  -CG_CLIP_MAX_COORD - 1,
-                                 INT64_MAX,              INT64_MIN,
-                                 ((int64_t)1 << 39) + 7, -3};
+    static const int64_t v[8] = {
+        CG_CLIP_MAX_COORD, -CG_CLIP_MAX_COORD, CG_CLIP_MAX_COORD + 1,  -CG_CLIP_MAX_COORD - 1,
+        INT64_MAX,         INT64_MIN,          ((int64_t)1 << 39) + 7, -3};
     return v[k & 7];
 }
 
@@ -105,8 +107,8 @@ static void big_ring(cg_point64 *pts, size_t n, unsigned kind, uint64_t seed)
 
 /* Reads one operand; *out_of_range is set when a coordinate is beyond the
  * documented range. */
-static void read_set(reader *r, unsigned rings, unsigned shift, int specials,
-                     cg_polygon_set64 *set, int *out_of_range)
+static void read_set(reader *r, unsigned rings, unsigned shift, int specials, cg_polygon_set64 *set,
+                     int *out_of_range)
 {
     cg_point64 pts[BIG_MAX];
     for (unsigned k = 0; k < rings; k++) {
@@ -130,8 +132,8 @@ static void read_set(reader *r, unsigned rings, unsigned shift, int specials,
             }
         }
         for (size_t i = 0; i < n; i++)
-            if (pts[i].x > CG_CLIP_MAX_COORD || pts[i].x < -CG_CLIP_MAX_COORD ||
-                pts[i].y > CG_CLIP_MAX_COORD || pts[i].y < -CG_CLIP_MAX_COORD)
+            if (pts[i].x > CG_CLIP_MAX_COORD || pts[i].x < -CG_CLIP_MAX_COORD
+                || pts[i].y > CG_CLIP_MAX_COORD || pts[i].y < -CG_CLIP_MAX_COORD)
                 *out_of_range = 1;
         if (cg_polygon_set64_add_ring(set, pts, n, 1) != CG_OK)
             FAIL();
@@ -175,16 +177,22 @@ static double slack(const cg_polygon_set64 *s)
     return t;
 }
 
-typedef struct box { int64_t x0, y0, x1, y1; } box;
+typedef struct box {
+    int64_t x0, y0, x1, y1;
+} box;
 
 static void grow(box *b, const cg_polygon_set64 *s)
 {
     for (size_t i = 0; i < s->point_count; i++) {
         cg_point64 p = s->points[i];
-        if (p.x < b->x0) b->x0 = p.x;
-        if (p.y < b->y0) b->y0 = p.y;
-        if (p.x > b->x1) b->x1 = p.x;
-        if (p.y > b->y1) b->y1 = p.y;
+        if (p.x < b->x0)
+            b->x0 = p.x;
+        if (p.y < b->y0)
+            b->y0 = p.y;
+        if (p.x > b->x1)
+            b->x1 = p.x;
+        if (p.y > b->y1)
+            b->y1 = p.y;
     }
 }
 
@@ -196,9 +204,9 @@ static void check_result(const cg_polygon_set64 *s, box bb)
             FAIL();
         return;
     }
-    if (!s->ring_start || !s->polygon_start || !s->points || s->ring_start[0] != 0 ||
-        s->ring_start[s->ring_count] != s->point_count || s->polygon_start[0] != 0 ||
-        s->polygon_start[s->polygon_count] != s->ring_count)
+    if (!s->ring_start || !s->polygon_start || !s->points || s->ring_start[0] != 0
+        || s->ring_start[s->ring_count] != s->point_count || s->polygon_start[0] != 0
+        || s->polygon_start[s->polygon_count] != s->ring_count)
         FAIL();
     for (size_t p = 0; p < s->polygon_count; p++) {
         if (s->polygon_start[p + 1] <= s->polygon_start[p])
@@ -224,13 +232,13 @@ static void check_result(const cg_polygon_set64 *s, box bb)
 
 static int same64(const cg_polygon_set64 *a, const cg_polygon_set64 *b)
 {
-    return a->point_count == b->point_count && a->ring_count == b->ring_count &&
-           a->polygon_count == b->polygon_count &&
-           (!a->point_count || !memcmp(a->points, b->points, a->point_count * sizeof *a->points)) &&
-           (!a->ring_count ||
-            (!memcmp(a->ring_start, b->ring_start, (a->ring_count + 1) * sizeof(size_t)) &&
-             !memcmp(a->polygon_start, b->polygon_start,
-                     (a->polygon_count + 1) * sizeof(size_t))));
+    return a->point_count == b->point_count && a->ring_count == b->ring_count
+           && a->polygon_count == b->polygon_count
+           && (!a->point_count || !memcmp(a->points, b->points, a->point_count * sizeof *a->points))
+           && (!a->ring_count
+               || (!memcmp(a->ring_start, b->ring_start, (a->ring_count + 1) * sizeof(size_t))
+                   && !memcmp(a->polygon_start, b->polygon_start,
+                              (a->polygon_count + 1) * sizeof(size_t))));
 }
 
 static int rule(cg_clip_fill f, long w)
@@ -339,12 +347,11 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     cg_status sb = cg_clip_boolean64(CG_CLIP_UNION, &B, fb, NULL, fa, &UB);
     cg_status s2 = cg_clip_boolean64(op, &A, fa, &B, fb, &R2);
     if (s2 != st[op] || !same64(&R2, &R[op]))
-        FAIL(); /* not deterministic */
+        FAIL();                   /* not deterministic */
     static cg_clip_workspace *ws; /* (kept over the inputs; freed at exit) */
     if (!ws)
         ws = cg_clip_workspace_create();
-    if (!ws || cg_clip_boolean64_ws(ws, op, &A, fa, &B, fb, &R2) != st[op] ||
-        !same64(&R2, &R[op]))
+    if (!ws || cg_clip_boolean64_ws(ws, op, &A, fa, &B, fb, &R2) != st[op] || !same64(&R2, &R[op]))
         FAIL(); /* a workspace's blocks changed the result */
     if (!bad) {
         if (sa != CG_OK || sb != CG_OK)
@@ -378,13 +385,13 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             to_double(&A, &DA);
             to_double(&B, &DB);
             /* scale 1: the integer result exactly */
-            if (cg_clip_boolean(op, &DA, fa, &DB, fb, 1.0, &DR) != CG_OK ||
-                DR.point_count != R[op].point_count || DR.ring_count != R[op].ring_count ||
-                DR.polygon_count != R[op].polygon_count)
+            if (cg_clip_boolean(op, &DA, fa, &DB, fb, 1.0, &DR) != CG_OK
+                || DR.point_count != R[op].point_count || DR.ring_count != R[op].ring_count
+                || DR.polygon_count != R[op].polygon_count)
                 FAIL();
             for (size_t k = 0; k < DR.point_count; k++)
-                if (DR.points[k].x != (double)R[op].points[k].x ||
-                    DR.points[k].y != (double)R[op].points[k].y)
+                if (DR.points[k].x != (double)R[op].points[k].x
+                    || DR.points[k].y != (double)R[op].points[k].y)
                     FAIL();
             /* automatic scale: a finer grid, the same area within the
              * tolerance */
@@ -395,8 +402,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                     FAIL();
             double want = set_area(&R[op]), got = cg_polygon_set_area(&DR2);
             double largest = (double)(bb.x1 > -bb.x0 ? bb.x1 : -bb.x0);
-            if ((double)bb.y1 > largest) largest = (double)bb.y1;
-            if (-(double)bb.y0 > largest) largest = -(double)bb.y0;
+            if ((double)bb.y1 > largest)
+                largest = (double)bb.y1;
+            if (-(double)bb.y0 > largest)
+                largest = -(double)bb.y0;
             int e = 0;
             frexp(largest, &e);
             double unit = e > 36 ? ldexp(1, e - 36) : 1; /* the automatic grid's step */
@@ -405,9 +414,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             /* NaN or infinity anywhere: CG_EINVAL and an empty result */
             if (DA.point_count) {
                 DA.points[h2 % DA.point_count].y = (h2 & 1) ? NAN : -INFINITY;
-                if (cg_clip_boolean(op, &DA, fa, &DB, fb, (h2 & 2) ? 1.0 : 0, &DR) !=
-                        CG_EINVAL ||
-                    DR.point_count || DR.ring_count)
+                if (cg_clip_boolean(op, &DA, fa, &DB, fb, (h2 & 2) ? 1.0 : 0, &DR) != CG_EINVAL
+                    || DR.point_count || DR.ring_count)
                     FAIL();
             }
             cg_polygon_set_clear(&DA);

@@ -61,10 +61,22 @@ static double coord(reader *r)
         return (double)(b % 112) - 8.0;
     if (b < 0xF0)
         return (double)(b - 0xB0) * 0.25 - 2.0 + (double)(byte(r) % 100);
-    static const double special[16] = {
-        NAN, INFINITY, -INFINITY, 1e300, -1e300, CG_FILL_MAX_COORD, -CG_FILL_MAX_COORD,
-        CG_FILL_MAX_COORD * 1.000001, 1e12, -1e12, 1e6, -1e6, 0.5, 1e-300, 96.0000001,
-        4.9e-324};
+    static const double special[16] = {NAN,
+                                       INFINITY,
+                                       -INFINITY,
+                                       1e300,
+                                       -1e300,
+                                       CG_FILL_MAX_COORD,
+                                       -CG_FILL_MAX_COORD,
+                                       CG_FILL_MAX_COORD * 1.000001,
+                                       1e12,
+                                       -1e12,
+                                       1e6,
+                                       -1e6,
+                                       0.5,
+                                       1e-300,
+                                       96.0000001,
+                                       4.9e-324};
     return special[b - 0xF0];
 }
 
@@ -180,8 +192,7 @@ static void read_paint(reader *r, paint_input *pi)
 /* Checks common to every drawing call: a status of the enum, nothing
  * written outside, nothing drawn when refused or when the paint is
  * transparent, and a refusal when the input holds a bad number. */
-static void check_draw(cg_status s, const canvas *c, const canvas *before, int bad,
-                       int transparent)
+static void check_draw(cg_status s, const canvas *c, const canvas *before, int bad, int transparent)
 {
     check_status(s);
     canvas_check_outside(c);
@@ -214,8 +225,8 @@ static cg_status draw(int op, cg_rasterizer *ras, cg_image *im, const draw_args 
                                                    a->rule, a->paint)
                    : cg_fill_polygon_aa(im, a->points, a->sizes, a->contours, a->rule, a->paint);
     case OP_POLYGON:
-        return ras ? cg_rasterizer_fill_polygon(ras, im, a->points, a->sizes, a->contours,
-                                                a->rule, a->color)
+        return ras ? cg_rasterizer_fill_polygon(ras, im, a->points, a->sizes, a->contours, a->rule,
+                                                a->color)
                    : cg_fill_polygon(im, a->points, a->sizes, a->contours, a->rule, a->color);
     case OP_FILL_PATH:
         return ras ? cg_rasterizer_fill_path(ras, im, a->path, a->rule, a->paint)
@@ -347,8 +358,8 @@ static int read_style(reader *r, cg_stroke_style *st, double dashes[5])
         st->dash_offset = (double)(int)(byte(r) % 64) - 16.0;
     }
     if (trace) {
-        fprintf(stderr, "style width %.17g join %d cap %d miter %.17g dashes", st->width,
-                st->join, st->cap, st->miter_limit);
+        fprintf(stderr, "style width %.17g join %d cap %d miter %.17g dashes", st->width, st->join,
+                st->cap, st->miter_limit);
         for (int i = 0; i < st->dash_count; i++)
             fprintf(stderr, " %.17g", dashes[i]);
         fprintf(stderr, " offset %.17g\n", st->dash_offset);
@@ -492,8 +503,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         case 6: { /* flood and boundary fill */
             int x = (int)(byte(&r) % (MAX_SIDE + 8)) - 4, y = (int)(byte(&r) % (MAX_SIDE + 8)) - 4;
             unsigned f = byte(&r);
-            cg_connectivity conn = f % 3 == 0 ? CG_CONNECT_4 : f % 3 == 1 ? CG_CONNECT_8
-                                                                           : (cg_connectivity)5;
+            cg_connectivity conn = f % 3 == 0   ? CG_CONNECT_4
+                                   : f % 3 == 1 ? CG_CONNECT_8
+                                                : (cg_connectivity)5;
             int tol = (int)(byte(&r) % 40) - 4;
             if (tol > 30)
                 tol = 255;

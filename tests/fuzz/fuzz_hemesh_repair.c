@@ -64,7 +64,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     if (!m)
         return 0;
     cg_hemesh_input_counts counts;
-    if (cg_hemesh_input_counts_compute(m, &counts) != CG_OK || counts.faces + counts.bad_faces != m->face_count)
+    if (cg_hemesh_input_counts_compute(m, &counts) != CG_OK
+        || counts.faces + counts.bad_faces != m->face_count)
         abort();
     cg_mesh *once = repaired(m);
     if (once) {
@@ -74,8 +75,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         cg_hemesh_free(strict);
         cg_mesh *twice = repaired(once);
         size_t corners = once->face_offsets[once->face_count];
-        if (!twice || twice->vertex_count != once->vertex_count || twice->face_count != once->face_count
-            || memcmp(twice->face_offsets, once->face_offsets, (once->face_count + 1) * sizeof(uint32_t))
+        if (!twice || twice->vertex_count != once->vertex_count
+            || twice->face_count != once->face_count
+            || memcmp(twice->face_offsets, once->face_offsets,
+                      (once->face_count + 1) * sizeof(uint32_t))
             || memcmp(twice->face_indices, once->face_indices, corners * sizeof(uint32_t)))
             abort();
         cg_mesh_free(twice);

@@ -31,7 +31,10 @@ static void fail(int line)
     abort();
 }
 
-typedef struct reader { const unsigned char *p; size_t n; } reader;
+typedef struct reader {
+    const unsigned char *p;
+    size_t n;
+} reader;
 
 static unsigned get(reader *r)
 {
@@ -45,8 +48,8 @@ static i128 twice_area(const cg_point64 *p, size_t n)
 {
     i128 s = 0;
     for (size_t i = 1; i + 1 < n; i++)
-        s += (i128)(p[i].x - p[0].x) * (p[i + 1].y - p[0].y) -
-             (i128)(p[i + 1].x - p[0].x) * (p[i].y - p[0].y);
+        s += (i128)(p[i].x - p[0].x) * (p[i + 1].y - p[0].y)
+             - (i128)(p[i + 1].x - p[0].x) * (p[i].y - p[0].y);
     return s;
 }
 
@@ -130,14 +133,15 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
                        : cg_rect_clip64(&in, fill, rect, &out);
         check_status(st, in_range);
         for (size_t i = 0; i < out.point_count; i++)
-            if (out.points[i].x < rect.xmin || out.points[i].x > rect.xmax ||
-                out.points[i].y < rect.ymin || out.points[i].y > rect.ymax)
+            if (out.points[i].x < rect.xmin || out.points[i].x > rect.xmax
+                || out.points[i].y < rect.ymin || out.points[i].y > rect.ymax)
                 FAIL();
         if (!(head & 64)) {
             check_well_formed(&out);
             /* each crossing rounded moves an edge by half a unit */
-            double slack = (double)(in.point_count + 4) * 2 *
-                           ((double)(rect.xmax - rect.xmin) + (double)(rect.ymax - rect.ymin) + 2);
+            double slack = (double)(in.point_count + 4) * 2
+                           * ((double)(rect.xmax - rect.xmin) + (double)(rect.ymax - rect.ymin)
+                              + 2);
             if ((double)set_twice_area(&out) > (double)area + slack)
                 FAIL();
         }
@@ -147,15 +151,16 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         st = cg_triangulate64(&in, fill, &out);
         check_status(st, in_range);
         for (size_t t = 0; t < out.ring_count; t++)
-            if (out.ring_start[t + 1] - out.ring_start[t] != 3 ||
-                twice_area(out.points + out.ring_start[t], 3) <= 0)
+            if (out.ring_start[t + 1] - out.ring_start[t] != 3
+                || twice_area(out.points + out.ring_start[t], 3) <= 0)
                 FAIL();
         if (set_twice_area(&out) != area)
             FAIL();
         break;
     default: { /* simplification */
         cg_simplify_algorithm a = head & 16 ? CG_SIMPLIFY_VISVALINGAM : CG_SIMPLIFY_RDP;
-        double tolerance = (double)(get(&r) % 8) * scale * (a == CG_SIMPLIFY_VISVALINGAM ? scale : 1);
+        double tolerance = (double)(get(&r) % 8) * scale
+                           * (a == CG_SIMPLIFY_VISVALINGAM ? scale : 1);
         st = cg_simplify64(&in, 0, fill, a, tolerance, &out);
         check_status(st, in_range);
         check_well_formed(&out);

@@ -74,8 +74,8 @@ int cli_parse_long(const char *command, const char *what, const char *text, long
     errno = 0;
     long v = strtol(text, &end, 10);
     if (end == text || *end != '\0' || errno == ERANGE || v < min || v > max) {
-        cli_usage_error(command, "%s: expected a whole number from %ld to %ld, got '%s'", what,
-                        min, max, text);
+        cli_usage_error(command, "%s: expected a whole number from %ld to %ld, got '%s'", what, min,
+                        max, text);
         return -1;
     }
     *out = v;
@@ -95,8 +95,7 @@ int cli_parse_double(const char *command, const char *what, const char *text, do
     return 0;
 }
 
-int cli_parse_size(const char *command, const char *what, const char *text, int *width,
-                   int *height)
+int cli_parse_size(const char *command, const char *what, const char *text, int *width, int *height)
 {
     char *end;
     errno = 0;

@@ -55,8 +55,7 @@ static int in_range(const cli_option *option, double value)
     return low_ok && high_ok;
 }
 
-int cli_read_double(const char *command, const cli_option *option, const char *text,
-                    double *out)
+int cli_read_double(const char *command, const cli_option *option, const char *text, double *out)
 {
     const char *what = option->what ? option->what : option->name;
     double value;
@@ -84,21 +83,16 @@ static int store_value(const char *command, const cli_option *option, const char
         *MEMBER(int, arguments, at) = (int)value;
         return 0;
     }
-    case CLI_DOUBLE:
-        return cli_read_double(command, option, text, MEMBER(double, arguments, at));
-    case CLI_STRING:
-        *MEMBER(const char *, arguments, at) = text;
-        return 0;
+    case CLI_DOUBLE: return cli_read_double(command, option, text, MEMBER(double, arguments, at));
+    case CLI_STRING: *MEMBER(const char *, arguments, at) = text; return 0;
     case CLI_CHOICE:
         return parse_choice(command, what, option->choices, text, MEMBER(int, arguments, at));
-    case CLI_VEC3:
-        return cli_parse_vec3(command, what, text, MEMBER(cg_vec3, arguments, at));
+    case CLI_VEC3: return cli_parse_vec3(command, what, text, MEMBER(cg_vec3, arguments, at));
     case CLI_SIZE: {
         cli_size *size = MEMBER(cli_size, arguments, at);
         return cli_parse_size(command, what, text, &size->width, &size->height);
     }
-    case CLI_COLOR:
-        return cli_parse_color(command, what, text, MEMBER(cg_rgba8, arguments, at));
+    case CLI_COLOR: return cli_parse_color(command, what, text, MEMBER(cg_rgba8, arguments, at));
     case CLI_LINEAR_COLOR: {
         cg_rgba8 color;
         if (cli_parse_color(command, what, text, &color))
@@ -106,10 +100,8 @@ static int store_value(const char *command, const cli_option *option, const char
         *MEMBER(cg_rgbaf, arguments, at) = cg_rgba8_to_linear(color);
         return 0;
     }
-    case CLI_CUSTOM:
-        return option->parse(command, option, text, arguments);
-    case CLI_FLAG:
-        break;
+    case CLI_CUSTOM: return option->parse(command, option, text, arguments);
+    case CLI_FLAG: break;
     }
     return 0;
 }
@@ -148,8 +140,7 @@ int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
         if (cli_is_option(argument)) {
             const cli_option *option = find_option(syntax, argument);
             if (!option)
-                return cli_usage_error(command, "%s%sunknown option '%s'", action, colon,
-                                       argument);
+                return cli_usage_error(command, "%s%sunknown option '%s'", action, colon, argument);
             if (parse_option(syntax, option, argc, argv, &i, arguments))
                 return CLI_USAGE;
         } else if (syntax->positional) {
@@ -158,14 +149,14 @@ int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
         } else if (positional_count < syntax->max_positionals) {
             positionals[positional_count++] = argument;
         } else {
-            return cli_usage_error(command, syntax->too_many ? syntax->too_many
-                                                             : "unexpected argument '%s'",
+            return cli_usage_error(command,
+                                   syntax->too_many ? syntax->too_many : "unexpected argument '%s'",
                                    argument);
         }
     }
     if (positional_count < syntax->min_positionals)
-        return cli_usage_error(command, "%s", syntax->too_few ? syntax->too_few
-                                                              : "too few arguments");
+        return cli_usage_error(command, "%s",
+                               syntax->too_few ? syntax->too_few : "too few arguments");
     if (count)
         *count = positional_count;
     return CLI_OK;

@@ -62,8 +62,8 @@ enum { CLI_OPEN_LOW = 1, CLI_OPEN_HIGH = 2 };
 
 typedef struct cli_option cli_option;
 struct cli_option {
-    const char *name;       /* "--size" */
-    const char *alias;      /* another spelling ("--output" beside "-o"), or NULL */
+    const char *name;  /* "--size" */
+    const char *alias; /* another spelling ("--output" beside "-o"), or NULL */
     cli_option_kind kind;
     size_t offset;          /* the member of the arguments struct the value goes to */
     const char *value_name; /* in the help: "WxH", "N" (a choice lists its choices) */
@@ -72,16 +72,15 @@ struct cli_option {
     /* A counter in the arguments struct (CLI_GIVEN) raised each time the
      * option is given; 0 for none. */
     size_t given;
-    long min, max;                /* CLI_INT: the accepted range */
-    double low, high;             /* CLI_DOUBLE with range_text: the accepted range, */
-    int open;                     /* with CLI_OPEN_LOW / CLI_OPEN_HIGH ends excluded */
-    const char *range_text;       /* "a number >= 0": "WHAT: expected a number >= 0, got 'x'" */
-    const char *const *choices;   /* CLI_CHOICE: NULL-terminated */
-    int flag_value;               /* CLI_FLAG: the value stored */
+    long min, max;              /* CLI_INT: the accepted range */
+    double low, high;           /* CLI_DOUBLE with range_text: the accepted range, */
+    int open;                   /* with CLI_OPEN_LOW / CLI_OPEN_HIGH ends excluded */
+    const char *range_text;     /* "a number >= 0": "WHAT: expected a number >= 0, got 'x'" */
+    const char *const *choices; /* CLI_CHOICE: NULL-terminated */
+    int flag_value;             /* CLI_FLAG: the value stored */
     /* CLI_CUSTOM: parses text into the arguments struct; 0, or -1 after
      * printing a usage error for command. */
-    int (*parse)(const char *command, const cli_option *option, const char *text,
-                 void *arguments);
+    int (*parse)(const char *command, const cli_option *option, const char *text, void *arguments);
 };
 
 /* The options of a command under one heading of its help. */
@@ -91,14 +90,17 @@ typedef struct cli_option_group {
     size_t count;
 } cli_option_group;
 
-#define CLI_GROUP(heading, array) {(heading), (array), sizeof(array) / sizeof((array)[0])}
+#define CLI_GROUP(heading, array)                              \
+    {                                                          \
+        (heading), (array), sizeof(array) / sizeof((array)[0]) \
+    }
 /* The given counter of an option: an int member of the arguments struct. */
 #define CLI_GIVEN(type, member) (offsetof(type, member) + 1)
 
 /* The command line of one command (or one action of it, "clip line"). */
 typedef struct cli_syntax {
-    const char *command;  /* for messages: "clip" */
-    const char *action;   /* "line": messages say "line: unknown option ..."; or NULL */
+    const char *command;            /* for messages: "clip" */
+    const char *action;             /* "line": messages say "line: unknown option ..."; or NULL */
     const cli_option_group *groups; /* ended by a group with no options */
     /* Positional arguments: up to max_positionals are collected in order;
      * one more is refused with too_many (a format taking the argument). */
@@ -124,8 +126,7 @@ int cli_parse(const cli_syntax *syntax, int argc, char **argv, void *arguments,
 /* A CLI_DOUBLE's reading, for a CLI_CUSTOM parse that does more with the
  * number: text as a finite number in the option's range (when range_text is
  * set).  0, or -1 after printing the usage error. */
-int cli_read_double(const char *command, const cli_option *option, const char *text,
-                    double *out);
+int cli_read_double(const char *command, const cli_option *option, const char *text, double *out);
 
 /* True when the option (a pointer into one of syntax's tables) was given,
  * for an option that has a given counter. */
@@ -153,22 +154,30 @@ void cli_print_options(FILE *out, const cli_syntax *const *syntaxes);
 /* ---- the options the commands share: spelled, checked and documented once */
 
 /* -o FILE, also --output FILE: where the result goes. */
-#define CLI_OPTION_OUTPUT(type, member, value, help_text) \
-    {.name = "-o", .alias = "--output", .kind = CLI_STRING, \
-     .offset = offsetof(type, member), .value_name = (value), .help = (help_text)}
+#define CLI_OPTION_OUTPUT(type, member, value, help_text)                                        \
+    {                                                                                            \
+        .name = "-o", .alias = "--output", .kind = CLI_STRING, .offset = offsetof(type, member), \
+        .value_name = (value), .help = (help_text)                                               \
+    }
 /* --size WxH: each side from 1 to CG_IMAGE_MAX_SIDE, at most
  * CG_IMAGE_MAX_PIXELS in all; into a cli_size. */
-#define CLI_OPTION_SIZE(type, member, given_counter, help_text) \
-    {.name = "--size", .kind = CLI_SIZE, .offset = offsetof(type, member), \
-     .value_name = "WxH", .help = (help_text), .given = (given_counter)}
+#define CLI_OPTION_SIZE(type, member, given_counter, help_text)                                    \
+    {                                                                                              \
+        .name = "--size", .kind = CLI_SIZE, .offset = offsetof(type, member), .value_name = "WxH", \
+        .help = (help_text), .given = (given_counter)                                              \
+    }
 /* --threads N: worker threads, 1 to 64; into an int. */
-#define CLI_OPTION_THREADS(type, member, given_counter, help_text) \
-    {.name = "--threads", .kind = CLI_INT, .offset = offsetof(type, member), \
-     .value_name = "N", .help = (help_text), .given = (given_counter), .min = 1, .max = 64}
+#define CLI_OPTION_THREADS(type, member, given_counter, help_text)                                 \
+    {                                                                                              \
+        .name = "--threads", .kind = CLI_INT, .offset = offsetof(type, member), .value_name = "N", \
+        .help = (help_text), .given = (given_counter), .min = 1, .max = 64                         \
+    }
 /* --repeat N: run the timed part N times (1 to most) and print the median
  * time on stderr; into an int. */
-#define CLI_OPTION_REPEAT(type, member, most, help_text) \
-    {.name = "--repeat", .kind = CLI_INT, .offset = offsetof(type, member), \
-     .value_name = "N", .help = (help_text), .min = 1, .max = (most)}
+#define CLI_OPTION_REPEAT(type, member, most, help_text)                                          \
+    {                                                                                             \
+        .name = "--repeat", .kind = CLI_INT, .offset = offsetof(type, member), .value_name = "N", \
+        .help = (help_text), .min = 1, .max = (most)                                              \
+    }
 
 #endif

@@ -53,8 +53,8 @@ int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, 
             return 1;
         if (!room_for_horizontal(g))
             return 0;
-        g->horizontals[g->horizontal_count++] =
-            (horizontal_edge){y0, x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0};
+        g->horizontals[g->horizontal_count++] = (horizontal_edge){y0, x0 < x1 ? x0 : x1,
+                                                                  x0 < x1 ? x1 : x0};
         return 1;
     }
     if (!room_for_edges(g, 1))
@@ -128,13 +128,13 @@ static int dense_crossings(const engine *g)
 /* What the passes hand on to each other. */
 typedef struct passes {
     engine *g;
-    sweep s; /* the sweep of the current pass */
-    carry c; /* the last pass's orders and where its edges went */
-    ck_log logs[2]; /* this pass's checkpoints, the last pass's */
-    int current_log; /* this pass's, in logs[] */
-    int can_resume; /* the next pass may resume from logs[current_log] */
-    int snapped; /* a pass snapped completely (once is enough) */
-    size_t visits; /* active edges looked at by the last full sweep */
+    sweep s;            /* the sweep of the current pass */
+    carry c;            /* the last pass's orders and where its edges went */
+    ck_log logs[2];     /* this pass's checkpoints, the last pass's */
+    int current_log;    /* this pass's, in logs[] */
+    int can_resume;     /* the next pass may resume from logs[current_log] */
+    int snapped;        /* a pass snapped completely (once is enough) */
+    size_t visits;      /* active edges looked at by the last full sweep */
     size_t swept_edges; /* its edges */
     /* the y ranges of the edges split by the last pass (merged) */
     int64_t (*bands)[2];
@@ -375,8 +375,9 @@ static int full_pass(passes *p, int pass, int light, cg_polygon_set64 *result, c
                                                                                      : CG_ENOMEM;
         return PASS_DONE;
     }
-    int snap_now = !p->snapped && (s->visits >= DENSE_VISITS * p->swept_edges ||
-                                   (pass == 0 && dense_crossings(g)));
+    int snap_now = !p->snapped
+                   && (s->visits >= DENSE_VISITS * p->swept_edges
+                       || (pass == 0 && dense_crossings(g)));
     if (pass >= 1 && !snap_now && !boolean_add_hot_pixel_splits(g, 0))
         return PASS_FAILED;
     free(p->bands);
@@ -392,9 +393,9 @@ static int full_pass(passes *p, int pass, int light, cg_polygon_set64 *result, c
         return PASS_FAILED;
     p->current_log ^= 1;
     carry *c = &p->c;
-    if (!boolean_carry_keep(c, s) ||
-        !(snap_now ? boolean_snap_complete(g, c->map, &c->kept, s->block, s->block_size)
-                   : boolean_apply_splits(g, c->map, &c->kept, s->block, s->block_size)))
+    if (!boolean_carry_keep(c, s)
+        || !(snap_now ? boolean_snap_complete(g, c->map, &c->kept, s->block, s->block_size)
+                      : boolean_apply_splits(g, c->map, &c->kept, s->block, s->block_size)))
         return PASS_FAILED;
     if (snap_now) {
         c->horizontals_sorted = 0; /* (its horizontal edges are put in order again) */
@@ -418,8 +419,8 @@ static cg_status run_passes(engine *g, cg_polygon_set64 *result)
     if (paired) {
         uint32_t map[PAIRS_MAX_EDGES];
         size_t kept;
-        if (!boolean_add_pair_splits(g) ||
-            !boolean_apply_splits(g, map, &kept, s->block, s->block_size))
+        if (!boolean_add_pair_splits(g)
+            || !boolean_apply_splits(g, map, &kept, s->block, s->block_size))
             return CG_ENOMEM;
     }
     if (g->workspace && g->workspace->block_size > s->block_size) {
@@ -464,8 +465,8 @@ static cg_status load(engine *g, const cg_polygon_set64 *set, int op)
             return CG_EINVAL;
         for (size_t i = a; i < b; i++) {
             cg_point64 p = set->points[i];
-            if (p.x > CG_CLIP_MAX_COORD || p.x < -CG_CLIP_MAX_COORD ||
-                p.y > CG_CLIP_MAX_COORD || p.y < -CG_CLIP_MAX_COORD)
+            if (p.x > CG_CLIP_MAX_COORD || p.x < -CG_CLIP_MAX_COORD || p.y > CG_CLIP_MAX_COORD
+                || p.y < -CG_CLIP_MAX_COORD)
                 return CG_ERANGE;
         }
         if (b - a < 2)
@@ -543,8 +544,8 @@ cg_status cg_clip_boolean64_ws(cg_clip_workspace *ws, cg_clip_op op,
     /* emptied, its arrays kept: a result passed call after call is not
      * allocated again */
     result->point_count = result->ring_count = result->polygon_count = 0;
-    if ((unsigned)op > CG_CLIP_XOR || (unsigned)subject_fill > CG_CLIP_NEGATIVE ||
-        (unsigned)clip_fill > CG_CLIP_NEGATIVE)
+    if ((unsigned)op > CG_CLIP_XOR || (unsigned)subject_fill > CG_CLIP_NEGATIVE
+        || (unsigned)clip_fill > CG_CLIP_NEGATIVE)
         return CG_EINVAL;
     engine g;
     memset(&g, 0, sizeof g);

@@ -30,7 +30,10 @@ static int cw_before(i128 rx, i128 ry, const piece *a, const piece *b)
     return c < 0; /* b is clockwise of a */
 }
 
-typedef struct ring_by_area { double area; size_t ring; } ring_by_area;
+typedef struct ring_by_area {
+    double area;
+    size_t ring;
+} ring_by_area;
 static int cmp_area(const void *a, const void *b)
 {
     const ring_by_area *x = a, *y = b;
@@ -39,7 +42,10 @@ static int cmp_area(const void *a, const void *b)
     return (x->ring > y->ring) - (x->ring < y->ring);
 }
 
-typedef struct hole_point { int64_t x, y; size_t ring, parent; } hole_point;
+typedef struct hole_point {
+    int64_t x, y;
+    size_t ring, parent;
+} hole_point;
 static int cmp_hole_x(const void *a, const void *b)
 {
     const hole_point *p = a, *q = b;
@@ -201,15 +207,15 @@ typedef struct assembly {
     size_t hash_bits;
     uint32_t *first_leaving;
     cg_polygon_set64 rings; /* the rings walked (their arrays in the block) */
-    double *area; /* twice each ring's signed area */
-    int64_t (*boxes)[4]; /* each ring's bounds: x0, y0, x1, y1 */
-    size_t *parent; /* each hole's outer ring, or SIZE_MAX */
-    size_t *outers; /* the outer rings (counter-clockwise) */
+    double *area;           /* twice each ring's signed area */
+    int64_t (*boxes)[4];    /* each ring's bounds: x0, y0, x1, y1 */
+    size_t *parent;         /* each hole's outer ring, or SIZE_MAX */
+    size_t *outers;         /* the outer rings (counter-clockwise) */
     size_t outer_count;
     ring_by_area *outers_by_area;
-    hole_point *hole_points; /* a point of each hole, in quadrupled coordinates */
-    hole_point *candidates; /* the holes one outer ring may hold */
-    unsigned char *inside; /* of the candidates, those it holds */
+    hole_point *hole_points;        /* a point of each hole, in quadrupled coordinates */
+    hole_point *candidates;         /* the holes one outer ring may hold */
+    unsigned char *inside;          /* of the candidates, those it holds */
     size_t *first_hole, *next_hole; /* each outer ring's holes, as lists */
 } assembly;
 
@@ -233,8 +239,8 @@ static ALWAYS_INLINE void take_assembly_arrays(core_arena *arena, assembly *a)
     a->candidates = core_arena_take(arena, rings, sizeof *a->candidates);
     a->first_hole = core_arena_take(arena, rings + 1, sizeof *a->first_hole);
     a->next_hole = core_arena_take(arena, rings + 1, sizeof *a->next_hole);
-    a->first_leaving =
-        core_arena_take(arena, a->hashed ? (size_t)1 << a->hash_bits : 0, sizeof *a->first_leaving);
+    a->first_leaving = core_arena_take(arena, a->hashed ? (size_t)1 << a->hash_bits : 0,
+                                       sizeof *a->first_leaving);
     a->inside = core_arena_take(arena, rings, 1);
 }
 
@@ -256,8 +262,8 @@ static int sort_pieces(assembly *a, const piece *pieces)
     size_t hash_mask = ((size_t)1 << hash_bits) - 1;
     memset(first, 0, (hash_mask + 1) * sizeof *first);
     for (size_t i = 0; i < n; i++) {
-        if (i && sorted[i].x_start == sorted[i - 1].x_start &&
-            sorted[i].y_start == sorted[i - 1].y_start)
+        if (i && sorted[i].x_start == sorted[i - 1].x_start
+            && sorted[i].y_start == sorted[i - 1].y_start)
             continue;
         size_t h = point_hash(sorted[i].x_start, sorted[i].y_start, hash_bits);
         while (first[h])
@@ -368,8 +374,8 @@ static int walk_rings(assembly *a)
         ringbuf walk = {a->rings.points + a->rings.point_count, 0,
                         a->piece_count - a->rings.point_count};
         size_t branch_at[ASM_BRANCHES], branches;
-        if (!walk_ring(a, start, &walk, branch_at, &branches) ||
-            !add_walked_ring(a, &walk, branch_at, branches))
+        if (!walk_ring(a, start, &walk, branch_at, &branches)
+            || !add_walked_ring(a, &walk, branch_at, branches))
             return 0;
     }
     return 1;
@@ -406,8 +412,8 @@ static void measure_rings(assembly *a)
          * to fit, that is when each of the n terms (taken from the box's
          * corner: the sum is the same) is within w h and n w h < 2^63 */
         uint64_t w = (uint64_t)x1 - (uint64_t)x0, hgt = (uint64_t)y1 - (uint64_t)y0;
-        i128 twice = w < ((uint64_t)1 << 31) && hgt < ((uint64_t)1 << 31) &&
-                             w * hgt <= (uint64_t)INT64_MAX / (end - first)
+        i128 twice = w < ((uint64_t)1 << 31) && hgt < ((uint64_t)1 << 31)
+                             && w * hgt <= (uint64_t)INT64_MAX / (end - first)
                          ? (i128)(int64_t)area_mod64
                          : clip_ring_twice_area(points + first, end - first);
         area[r] = (double)twice;
@@ -562,22 +568,25 @@ static int write_result(assembly *a, cg_polygon_set64 *result)
             kept_rings++;
         }
     }
-    if (a->outer_count &&
-        clip_polygon_set64_reserve(result, result->point_count + point_count,
-                                   result->ring_count + kept_rings,
-                                   result->polygon_count + a->outer_count) != CG_OK)
+    if (a->outer_count
+        && clip_polygon_set64_reserve(result, result->point_count + point_count,
+                                      result->ring_count + kept_rings,
+                                      result->polygon_count + a->outer_count)
+               != CG_OK)
         return 0;
     for (size_t r = 0; r < ring_count; r++) {
         if (a->area[r] <= 0)
             continue;
         size_t first = rings->ring_start[r];
         if (cg_polygon_set64_add_ring(result, rings->points + first,
-                                      rings->ring_start[r + 1] - first, 1) != CG_OK)
+                                      rings->ring_start[r + 1] - first, 1)
+            != CG_OK)
             return 0;
         for (size_t h = first_hole[r]; h != (size_t)-1; h = next_hole[h]) {
             size_t hole_first = rings->ring_start[h];
             if (cg_polygon_set64_add_ring(result, rings->points + hole_first,
-                                          rings->ring_start[h + 1] - hole_first, 0) != CG_OK)
+                                          rings->ring_start[h + 1] - hole_first, 0)
+                != CG_OK)
                 return 0;
         }
     }

@@ -6,8 +6,8 @@
 /* an active edge's run flags, as ck_edge.flags */
 static inline unsigned ck_flags(const sweep *s, uint32_t e)
 {
-    return (unsigned)s->run_break_next[e] | (unsigned)s->run_open[e] << 1 |
-           (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
+    return (unsigned)s->run_break_next[e] | (unsigned)s->run_open[e] << 1
+           | (unsigned)(s->run_open[e] && s->run_up[e]) << 2;
 }
 
 /* Notes the state at the start of scanline y (before its events): 0 when
@@ -19,12 +19,12 @@ int boolean_ck_record(sweep *s, int64_t y)
     if (log->edge_count + n > log->budget)
         return 0;
     if (!boolean_room((void **)&log->checkpoints, &log->checkpoint_capacity, log->checkpoint_count,
-                      1, sizeof *log->checkpoints, NULL) ||
-        !boolean_room((void **)&log->edges, &log->edge_capacity, log->edge_count, n,
-                      sizeof *log->edges, NULL))
+                      1, sizeof *log->checkpoints, NULL)
+        || !boolean_room((void **)&log->edges, &log->edge_capacity, log->edge_count, n,
+                         sizeof *log->edges, NULL))
         return 0;
-    log->checkpoints[log->checkpoint_count++] =
-        (ck_point){y, s->engine->piece_count, log->edge_count, n};
+    log->checkpoints[log->checkpoint_count++] = (ck_point){y, s->engine->piece_count,
+                                                           log->edge_count, n};
     for (size_t k = 0; k < n; k++) {
         uint32_t e = s->active[k];
         log->edges[log->edge_count++] = (ck_edge){
@@ -44,12 +44,12 @@ int boolean_ck_same(const sweep *s, const ck_point *c)
     const ck_edge *records = s->prev_log->edges + c->first_edge;
     for (size_t k = 0; k < c->edge_count; k++) {
         uint32_t e = s->active[k];
-        if (records[k].edge >= s->prev_edge_count || s->prev_map[records[k].edge] != e ||
-            records[k].flags != ck_flags(s, e) || records[k].x_at_scanline != s->x_next[e] ||
-            records[k].winding_subject != s->winding_subject[e] ||
-            records[k].winding_clip != s->winding_clip[e] ||
-            (s->run_open[e] &&
-             (records[k].run_x != s->run_x[e] || records[k].run_y != s->run_y[e])))
+        if (records[k].edge >= s->prev_edge_count || s->prev_map[records[k].edge] != e
+            || records[k].flags != ck_flags(s, e) || records[k].x_at_scanline != s->x_next[e]
+            || records[k].winding_subject != s->winding_subject[e]
+            || records[k].winding_clip != s->winding_clip[e]
+            || (s->run_open[e]
+                && (records[k].run_x != s->run_x[e] || records[k].run_y != s->run_y[e])))
             return 0;
     }
     return 1;
@@ -95,8 +95,8 @@ size_t boolean_ck_load(sweep *s, const ck_log *log, size_t j0, int64_t y)
     const ck_edge *records = c->edge_count ? log->edges + c->first_edge : NULL;
     for (size_t k = 0; k < c->edge_count; k++)
         /* no active edge there was split */
-        if (!CG_INVARIANT(records[k].edge < s->prev_edge_count &&
-                          s->prev_map[records[k].edge] != UINT32_MAX))
+        if (!CG_INVARIANT(records[k].edge < s->prev_edge_count
+                          && s->prev_map[records[k].edge] != UINT32_MAX))
             return 0;
     s->break_queue_count = 0;
     s->break_queue_full = 0;
@@ -116,9 +116,9 @@ size_t boolean_ck_load(sweep *s, const ck_log *log, size_t j0, int64_t y)
     }
     s->active_count = c->edge_count;
     s->start_scanline = lo;
-    s->start_bottom =
-        first_edge_at(s->engine->edges, s->by_bottom, s->engine->edge_count, c->scanline_y, 0);
-    s->start_top =
-        first_edge_at(s->engine->edges, s->by_top, s->engine->edge_count, c->scanline_y, 1);
+    s->start_bottom = first_edge_at(s->engine->edges, s->by_bottom, s->engine->edge_count,
+                                    c->scanline_y, 0);
+    s->start_top = first_edge_at(s->engine->edges, s->by_top, s->engine->edge_count, c->scanline_y,
+                                 1);
     return j;
 }

@@ -7,7 +7,10 @@
 
 /* The grid of the double API: multiply by an explicit scale, or (automatic)
  * by 2^exponent with ldexp, which reaches every double's range exactly. */
-typedef struct grid { double scale; int exponent; } grid;
+typedef struct grid {
+    double scale;
+    int exponent;
+} grid;
 
 static double max_abs(const cg_polygon_set *set)
 {
@@ -37,7 +40,10 @@ static grid pick_grid(double scale, double largest)
     return g;
 }
 
-static double to_grid(grid g, double v) { return g.scale > 0 ? v * g.scale : ldexp(v, g.exponent); }
+static double to_grid(grid g, double v)
+{
+    return g.scale > 0 ? v * g.scale : ldexp(v, g.exponent);
+}
 static double from_grid(grid g, int64_t v)
 {
     return g.scale > 0 ? (double)v / g.scale : ldexp((double)v, -g.exponent);
@@ -67,8 +73,8 @@ static cg_status grid_points(const cg_polygon_set *in, grid g, cg_polygon_set64 
                                                                               : CG_EINVAL;
             if (fabs(x) > (double)CG_CLIP_MAX_COORD || fabs(y) > (double)CG_CLIP_MAX_COORD)
                 return CG_ERANGE;
-            out->points[out->point_count++] =
-                (cg_point64){(int64_t)llround(x), (int64_t)llround(y)};
+            out->points[out->point_count++] = (cg_point64){(int64_t)llround(x),
+                                                           (int64_t)llround(y)};
         }
         out->ring_count++;
         out->ring_start[out->ring_count] = out->point_count;
@@ -91,8 +97,8 @@ static cg_status ungrid_points(const cg_polygon_set64 *in, grid g, cg_polygon_se
                 return st;
             out->ring_count--;
             for (size_t i = a; i < b; i++) {
-                out->points[out->point_count++] =
-                    cg_vec2_make(from_grid(g, in->points[i].x), from_grid(g, in->points[i].y));
+                out->points[out->point_count++] = cg_vec2_make(from_grid(g, in->points[i].x),
+                                                               from_grid(g, in->points[i].y));
             }
             out->ring_count++;
             out->ring_start[out->ring_count] = out->point_count;
@@ -117,8 +123,8 @@ cg_status cg_clip_boolean_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_poly
     if (result == subject || result == clip) {
         /* the result replaces an operand: computed beside it first */
         cg_polygon_set own = {0};
-        cg_status st =
-            cg_clip_boolean_ws(ws, op, subject, subject_fill, clip, clip_fill, scale, &own);
+        cg_status st = cg_clip_boolean_ws(ws, op, subject, subject_fill, clip, clip_fill, scale,
+                                          &own);
         cg_polygon_set_clear(result);
         *result = own;
         return st;

@@ -68,12 +68,12 @@ typedef clip_i128 i128;
 /* An edge of the sweep, bottom to top (y_bottom < y_top). */
 typedef struct edge {
     int64_t x_bottom, y_bottom; /* its lower end */
-    int64_t x_top, y_top; /* its upper end */
-    double slope; /* dx / dy */
-    uint32_t input_edge; /* the input edge it is a part of (in the engine's
+    int64_t x_top, y_top;       /* its upper end */
+    double slope;               /* dx / dy */
+    uint32_t input_edge;        /* the input edge it is a part of (in the engine's
                                  * input_edges), or NO_ORIG: itself */
-    int8_t winding; /* winding added when crossed from left to right */
-    uint8_t operand; /* 0 subject, 1 clip */
+    int8_t winding;             /* winding added when crossed from left to right */
+    uint8_t operand;            /* 0 subject, 1 clip */
 } edge;
 #define NO_ORIG UINT32_MAX
 
@@ -117,9 +117,9 @@ typedef struct engine {
     split_point *splits_small;
     piece *pieces_small;
     cg_clip_op operation;
-    cg_clip_fill fill[2]; /* the subject's and the clip's fill rule */
-    cg_clip_workspace *workspace; /* the blocks kept between calls, or NULL */
-    unsigned char in_result[4]; /* in the result, by (in subject, in clip) */
+    cg_clip_fill fill[2];               /* the subject's and the clip's fill rule */
+    cg_clip_workspace *workspace;       /* the blocks kept between calls, or NULL */
+    unsigned char in_result[4];         /* in the result, by (in subject, in clip) */
     unsigned char in_result_near[5][5]; /* inside() for windings -2..2 */
 } engine;
 
@@ -141,8 +141,9 @@ struct cg_clip_workspace {
 static inline int boolean_room(void **data, size_t *capacity, size_t count, size_t more,
                                size_t element_size, const void *initial)
 {
-    return count + more <= *capacity || core_array_reserve_from(data, capacity, count, count + more,
-                                                                element_size, initial) == CG_OK;
+    return count + more <= *capacity
+           || core_array_reserve_from(data, capacity, count, count + more, element_size, initial)
+                  == CG_OK;
 }
 
 /* Room for more edges, horizontal edges, split points, meets. */
@@ -202,11 +203,14 @@ static inline int64_t round_div64(int64_t n, int64_t d)
 /* x of edge e at scanline y as num / den, den > 0 */
 static inline i128 x_num(const edge *e, int64_t y)
 {
-    return (i128)e->x_bottom * (e->y_top - e->y_bottom) +
-           (i128)(y - e->y_bottom) * (e->x_top - e->x_bottom);
+    return (i128)e->x_bottom * (e->y_top - e->y_bottom)
+           + (i128)(y - e->y_bottom) * (e->x_top - e->x_bottom);
 }
 
-static inline int64_t x_den(const edge *e) { return e->y_top - e->y_bottom; }
+static inline int64_t x_den(const edge *e)
+{
+    return e->y_top - e->y_bottom;
+}
 
 static inline double x_at(const edge *e, int64_t y)
 {
@@ -251,14 +255,10 @@ int boolean_line_intersection(int64_t ax0, int64_t ay0, int64_t ax1, int64_t ay1
 static inline int fill_in(cg_clip_fill f, int64_t w)
 {
     switch (f) {
-    case CG_CLIP_EVEN_ODD:
-        return (int)(w & 1);
-    case CG_CLIP_NON_ZERO:
-        return w != 0;
-    case CG_CLIP_POSITIVE:
-        return w > 0;
-    default:
-        return w < 0;
+    case CG_CLIP_EVEN_ODD: return (int)(w & 1);
+    case CG_CLIP_NON_ZERO: return w != 0;
+    case CG_CLIP_POSITIVE: return w > 0;
+    default: return w < 0;
     }
 }
 
@@ -277,7 +277,10 @@ static inline int inside(const engine *g, int64_t wa, int64_t wb)
 
 /* ---- sorting (boolean_sort.c) ----------------------------------------- */
 
-typedef struct keyval { uint64_t key; uint32_t val; } keyval;
+typedef struct keyval {
+    uint64_t key;
+    uint32_t val;
+} keyval;
 
 /* idx[0..n) = 0..n-1 ordered by (k1, k2), ties by index: k1 and k2 point at
  * int64_t fields of record 0, records are `stride` bytes apart; scratch
@@ -293,12 +296,12 @@ typedef struct sweep {
     engine *engine;
     int64_t *scanlines; /* the distinct y of the edges' ends, in order */
     size_t scanline_count;
-    uint32_t *by_bottom; /* edge numbers sorted by (y_bottom, x_bottom) */
-    uint32_t *by_top; /* edge numbers sorted by (y_top, x_top) */
+    uint32_t *by_bottom;            /* edge numbers sorted by (y_bottom, x_bottom) */
+    uint32_t *by_top;               /* edge numbers sorted by (y_top, x_top) */
     uint32_t *active, *next_active; /* the active list below the scanline, and the
                                      * room for the one above it */
-    uint32_t *starting; /* the edges starting at this scanline, by x */
-    uint32_t *dirty; /* dirty positions in the active list */
+    uint32_t *starting;             /* the edges starting at this scanline, by x */
+    uint32_t *dirty;                /* dirty positions in the active list */
     /* the light sweep's: the edges through one point; where new
      * neighbours meet */
     uint32_t *point_edges, *seams;
@@ -318,17 +321,17 @@ typedef struct sweep {
     unsigned char *run_open, *run_up;
     unsigned char *run_break, *run_break_next;
     int64_t *run_x, *run_y;
-    int classify; /* the pass classifies and emits pieces */
-    int changed; /* the pass found split points */
+    int classify;  /* the pass classifies and emits pieces */
+    int changed;   /* the pass found split points */
     size_t visits; /* active edges summed over the scanlines (full sweep) */
     /* the edges of run_break, of run_break_next (full sweep); when full,
      * every position is looked at */
     uint32_t *break_queue, *break_queue_next;
     size_t break_queue_count, break_queue_capacity;
     int break_queue_full;
-    int use_input_lines; /* round on the input edges (early passes) */
-    int record_meets; /* note the grid points where runs break (g->meets) */
-    struct ck_log *log; /* checkpoints of this pass, or NULL */
+    int use_input_lines;      /* round on the input edges (early passes) */
+    int record_meets;         /* note the grid points where runs break (g->meets) */
+    struct ck_log *log;       /* checkpoints of this pass, or NULL */
     size_t checkpoint_visits; /* the next checkpoint once visits reach this */
     /* where the sweep starts (resumed): its scanline, and the next edges
      * of by_bottom and by_top */
@@ -336,12 +339,12 @@ typedef struct sweep {
     int64_t y_span; /* from the first scanline to the last */
     /* the hand-over to the last pass's results (boolean_ck_same) */
     const struct ck_log *prev_log; /* or NULL */
-    const uint32_t *prev_map; /* its edge numbers to ours */
-    size_t prev_edge_count; /* its edges */
-    size_t prev_checkpoint; /* its next checkpoint to compare */
-    const int64_t (*bands)[2]; /* the y ranges of the edges it split, merged */
-    size_t band_count, band; /* how many; the next one */
-    size_t (*taken_ranges)[2]; /* the ranges of its pieces taken */
+    const uint32_t *prev_map;      /* its edge numbers to ours */
+    size_t prev_edge_count;        /* its edges */
+    size_t prev_checkpoint;        /* its next checkpoint to compare */
+    const int64_t (*bands)[2];     /* the y ranges of the edges it split, merged */
+    size_t band_count, band;       /* how many; the next one */
+    size_t (*taken_ranges)[2];     /* the ranges of its pieces taken */
     size_t taken_count;
 } sweep;
 
@@ -351,10 +354,10 @@ typedef struct sweep {
  * edges went (boolean_apply_splits). */
 typedef struct carry {
     uint32_t *by_bottom, *by_top, *map;
-    uint32_t *block_small; /* the caller's block of 3 * 64 they start in */
+    uint32_t *block_small;       /* the caller's block of 3 * 64 they start in */
     size_t edge_count, capacity; /* edges of the last pass (room for cap) */
-    size_t kept; /* of them, not split: now g->edges[0..kept) */
-    size_t horizontals_sorted; /* g->horizontals[0..horizontals_sorted) is in order */
+    size_t kept;                 /* of them, not split: now g->edges[0..kept) */
+    size_t horizontals_sorted;   /* g->horizontals[0..horizontals_sorted) is in order */
     int valid;
     /* the last pass's scanlines and the distinct y of its split points
      * (sorted), when they were few: the next pass's scanlines are the two
@@ -390,11 +393,11 @@ int boolean_carry_keep(carry *c, const sweep *s);
  * emitted below it. */
 /* an active edge at a checkpoint */
 typedef struct ck_edge {
-    uint32_t edge; /* its number in that pass */
-    unsigned flags; /* 1 run break here, 2 run open, 4 run goes up */
+    uint32_t edge;                         /* its number in that pass */
+    unsigned flags;                        /* 1 run break here, 2 run open, 4 run goes up */
     int32_t winding_subject, winding_clip; /* the windings right of it */
-    double x_at_scanline; /* its x at the checkpoint's scanline */
-    int64_t run_x, run_y; /* where its open run started */
+    double x_at_scanline;                  /* its x at the checkpoint's scanline */
+    int64_t run_x, run_y;                  /* where its open run started */
 } ck_edge;
 /* a checkpoint: its scanline, the pieces emitted by then, and its active
  * edges, ck_log.edges[first_edge..first_edge + edge_count) */
@@ -408,7 +411,7 @@ typedef struct ck_log {
     size_t checkpoint_count, checkpoint_capacity;
     ck_edge *edges; /* the active edges of all of them */
     size_t edge_count, edge_capacity;
-    size_t budget; /* most edge records kept */
+    size_t budget;          /* most edge records kept */
     size_t end_piece_count; /* pieces at the end of the pass */
 } ck_log;
 
@@ -483,8 +486,8 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
     /* (coordinates are within 2^40 + 1: doubled, they fit 64 bits) */
     int64_t x0 = 2 * px - 1, x1 = 2 * px + 1, y0 = 2 * py - 1, y1 = 2 * py + 1;
     int64_t Ax = 2 * ax, Ay = 2 * ay, Bx = 2 * bx, By = 2 * by;
-    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0) ||
-        (Ay > y1 && By > y1))
+    if ((Ax < x0 && Bx < x0) || (Ax > x1 && Bx > x1) || (Ay < y0 && By < y0)
+        || (Ay > y1 && By > y1))
         return 0;
     /* (the half-open pixel leaves out its right and top sides) */
     if (half_open && ((Ax >= x1 && Bx >= x1) || (Ay >= y1 && By >= y1)))
@@ -500,8 +503,8 @@ static inline int boolean_meets_pixel(int64_t ax, int64_t ay, int64_t bx, int64_
      * every difference is below 2^30 */
     int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
     int64_t ex = Bx - Ax, ey = By - Ay, far = (int64_t)1 << 30;
-    int narrow = ex < far && ex > -far && ey < far && ey > -far && x1 - Ax < far &&
-                 Ax - x0 < far && y1 - Ay < far && Ay - y0 < far;
+    int narrow = ex < far && ex > -far && ey < far && ey > -far && x1 - Ax < far && Ax - x0 < far
+                 && y1 - Ay < far && Ay - y0 < far;
     /* the half-open pixel as the closed one moved by (-d, -d), d tending to
      * 0: a corner on the line moves to the side of sign(ey - ex) (the
      * other corners, an integer from it, stay where they are) */
@@ -542,11 +545,11 @@ static inline int boolean_each_hot_point(const engine *g, int (*add)(void *, int
     for (size_t k = 0; k < g->split_count; k++)
         ok &= add(ctx, g->splits[k].x, g->splits[k].y);
     for (size_t i = 0; i < g->edge_count; i++)
-        ok &= add(ctx, g->edges[i].x_bottom, g->edges[i].y_bottom) &
-              add(ctx, g->edges[i].x_top, g->edges[i].y_top);
+        ok &= add(ctx, g->edges[i].x_bottom, g->edges[i].y_bottom)
+              & add(ctx, g->edges[i].x_top, g->edges[i].y_top);
     for (size_t i = 0; i < g->horizontal_count; i++)
-        ok &= add(ctx, g->horizontals[i].x_left, g->horizontals[i].y) &
-              add(ctx, g->horizontals[i].x_right, g->horizontals[i].y);
+        ok &= add(ctx, g->horizontals[i].x_left, g->horizontals[i].y)
+              & add(ctx, g->horizontals[i].x_right, g->horizontals[i].y);
     for (size_t i = 0; i < g->meet_count; i++)
         ok &= add(ctx, g->meets[i].x, g->meets[i].y);
     return ok;

@@ -47,8 +47,8 @@ int boolean_light_sweep(sweep *s)
         while (next_start < edge_count && edges[s->by_bottom[next_start]].y_bottom == y) {
             uint32_t e = s->by_bottom[next_start++];
             size_t m = starting_count;
-            while (m > 0 && edges[starting[m - 1]].x_bottom == edges[e].x_bottom &&
-                   cmp_dir(&edges[starting[m - 1]], &edges[e]) > 0) {
+            while (m > 0 && edges[starting[m - 1]].x_bottom == edges[e].x_bottom
+                   && cmp_dir(&edges[starting[m - 1]], &edges[e]) > 0) {
                 starting[m] = starting[m - 1];
                 m--;
             }
@@ -71,8 +71,9 @@ int boolean_light_sweep(sweep *s)
             copy_ids(above + above_count, below + below_at, lo - below_at);
             above_count += lo - below_at;
             size_t point_edge_count = 0, point_end = lo;
-            while (point_end < below_count &&
-                   cmp_xi(&edges[below[point_end]], y, X, x_at(&edges[below[point_end]], y)) == 0) {
+            while (point_end < below_count
+                   && cmp_xi(&edges[below[point_end]], y, X, x_at(&edges[below[point_end]], y))
+                          == 0) {
                 uint32_t e = below[point_end++];
                 if (ends_at(&edges[e], y)) {
                     ended++;

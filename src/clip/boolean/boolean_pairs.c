@@ -24,13 +24,13 @@ static inline int orientation(int64_t ax, int64_t ay, int64_t bx, int64_t by, in
  * (neither end of either on the other)? */
 static int cross_inside(const edge *a, const edge *b, int narrow)
 {
-    int s1 =
-        orientation(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom, b->y_bottom, narrow);
+    int s1 = orientation(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom, b->y_bottom,
+                         narrow);
     int s2 = orientation(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_top, b->y_top, narrow);
     if (s1 * s2 >= 0)
         return 0;
-    int s3 =
-        orientation(b->x_bottom, b->y_bottom, b->x_top, b->y_top, a->x_bottom, a->y_bottom, narrow);
+    int s3 = orientation(b->x_bottom, b->y_bottom, b->x_top, b->y_top, a->x_bottom, a->y_bottom,
+                         narrow);
     int s4 = orientation(b->x_bottom, b->y_bottom, b->x_top, b->y_top, a->x_top, a->y_top, narrow);
     return s3 * s4 < 0;
 }
@@ -83,9 +83,9 @@ int boolean_add_pair_splits(engine *g)
     }
     for (size_t k = 0; k < n; k++) {
         const edge *e = &edges[key[k] & 127];
-        boxes[k] =
-            (edge_box){e->y_bottom, e->y_top, e->x_bottom < e->x_top ? e->x_bottom : e->x_top,
-                       e->x_bottom < e->x_top ? e->x_top : e->x_bottom, (uint32_t)(key[k] & 127)};
+        boxes[k] = (edge_box){
+            e->y_bottom, e->y_top, e->x_bottom < e->x_top ? e->x_bottom : e->x_top,
+            e->x_bottom < e->x_top ? e->x_top : e->x_bottom, (uint32_t)(key[k] & 127)};
     }
     int narrow = n && xmax - xmin < (INT64_C(1) << 31) && ymax - ymin < (INT64_C(1) << 31);
     for (size_t i = 0; i < n; i++) {
@@ -99,8 +99,8 @@ int boolean_add_pair_splits(engine *g)
             int64_t px, py;
             boolean_line_intersection(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom,
                                       b->y_bottom, b->x_top, b->y_top, &px, &py);
-            if (!add_split_point(g, boxes[i].edge, px, py) ||
-                !add_split_point(g, boxes[j].edge, px, py))
+            if (!add_split_point(g, boxes[i].edge, px, py)
+                || !add_split_point(g, boxes[j].edge, px, py))
                 return 0;
         }
     }
@@ -109,12 +109,12 @@ int boolean_add_pair_splits(engine *g)
         for (size_t i = 0; i < n && boxes[i].y_bottom < horizontal->y; i++) {
             const edge *e = &edges[boxes[i].edge];
             int64_t x;
-            if (horizontal->y >= e->y_top || boxes[i].x_low > horizontal->x_right ||
-                boxes[i].x_high < horizontal->x_left || x_is_integer(e, horizontal->y, &x))
+            if (horizontal->y >= e->y_top || boxes[i].x_low > horizontal->x_right
+                || boxes[i].x_high < horizontal->x_left || x_is_integer(e, horizontal->y, &x))
                 continue;
             i128 num = x_num(e, horizontal->y), d = x_den(e);
-            if ((i128)horizontal->x_left * d <= num && num <= (i128)horizontal->x_right * d &&
-                !add_split_point(g, boxes[i].edge, x, horizontal->y))
+            if ((i128)horizontal->x_left * d <= num && num <= (i128)horizontal->x_right * d
+                && !add_split_point(g, boxes[i].edge, x, horizontal->y))
                 return 0;
         }
     }

@@ -47,14 +47,13 @@ int boolean_split_pinches(cg_point64 *pts, size_t n, const size_t *at, size_t br
     /* one block: the ring's copy, each point's group of equal points, each
      * group's place on the stack, the stack, the ends, and the points
      * sorted (unless few) */
-    size_t bytes = n * (sizeof(cg_point64) + 4 * sizeof(size_t)) +
-                   (few ? 0 : n * sizeof(pinch_point));
+    size_t bytes = n * (sizeof(cg_point64) + 4 * sizeof(size_t))
+                   + (few ? 0 : n * sizeof(pinch_point));
     char *mem = malloc(bytes);
     if (!mem)
         return 0;
     cg_point64 *copy = (cg_point64 *)mem;
-    size_t *group = (size_t *)(copy + n), *place = group + n, *stack = place + n,
-           *end = stack + n;
+    size_t *group = (size_t *)(copy + n), *place = group + n, *stack = place + n, *end = stack + n;
     memcpy(copy, pts, n * sizeof *pts);
     if (few) {
         /* a group for each point with several ways out: the first of the

@@ -62,8 +62,9 @@ int boolean_sweep_alloc(sweep *s, int light)
         return 0;
     size_t need = measure.used;
     /* (the next pass usually has a few more edges) */
-    if (need > s->block_size && core_arena_block(&s->block, &s->block_size, need + need / 8 + 2048,
-                                                 s->block_small) != CG_OK)
+    if (need > s->block_size
+        && core_arena_block(&s->block, &s->block_size, need + need / 8 + 2048, s->block_small)
+               != CG_OK)
         return 0;
     core_arena carve = core_arena_on(s->block, s->block_size);
     sweep_take_arrays(s, &carve, light);
@@ -141,10 +142,10 @@ static int merge_order(sweep *s, const carry *c, uint32_t *old, uint32_t *out, u
         return 1;
     }
     while (i < kept_count || j < part_count)
-        out[k++] =
-            j >= part_count || (i < kept_count && edge_before(&edges[old[i]], &edges[tmp[j]], top))
-                ? old[i++]
-                : tmp[j++];
+        out[k++] = j >= part_count
+                           || (i < kept_count && edge_before(&edges[old[i]], &edges[tmp[j]], top))
+                       ? old[i++]
+                       : tmp[j++];
     return 1;
 }
 
@@ -157,16 +158,16 @@ int boolean_sweep_sort(sweep *s, carry *c)
     size_t edge_count = g->edge_count;
     keyval *scratch = s->sort_scratch, *tmp = s->sort_tmp;
     /* edges by bottom and by top; the scanlines are both merged */
-    int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->starting, 0) &&
-                 merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
-    int from_last = sorted && c->scanlines_valid &&
-                    c->scanline_count + c->split_y_count <= 2 * (edge_count ? edge_count : 1);
+    int sorted = c->valid && merge_order(s, c, c->by_bottom, s->by_bottom, s->starting, 0)
+                 && merge_order(s, c, c->by_top, s->by_top, s->dirty, 1);
+    int from_last = sorted && c->scanlines_valid
+                    && c->scanline_count + c->split_y_count <= 2 * (edge_count ? edge_count : 1);
     if (!sorted)
-        sorted = !edge_count ||
-                 (boolean_sort_two_keys(&g->edges[0].y_bottom, &g->edges[0].x_bottom, sizeof(edge),
-                                        edge_count, s->by_bottom, scratch, tmp) &&
-                  boolean_sort_two_keys(&g->edges[0].y_top, &g->edges[0].x_top, sizeof(edge),
-                                        edge_count, s->by_top, scratch, tmp));
+        sorted = !edge_count
+                 || (boolean_sort_two_keys(&g->edges[0].y_bottom, &g->edges[0].x_bottom,
+                                           sizeof(edge), edge_count, s->by_bottom, scratch, tmp)
+                     && boolean_sort_two_keys(&g->edges[0].y_top, &g->edges[0].x_top, sizeof(edge),
+                                              edge_count, s->by_top, scratch, tmp));
     /* the scanlines: the two orders merged, each with its next distinct y
      * at hand (INT64_MAX past its end; no y reaches it) */
     const edge *edges = g->edges;
@@ -174,8 +175,8 @@ int boolean_sweep_sort(sweep *s, carry *c)
     if (from_last) {
         /* the last pass's scanlines merged with its split points' y */
         while (i < c->scanline_count || j < c->split_y_count) {
-            int64_t y = j == c->split_y_count ||
-                                (i < c->scanline_count && c->scanlines[i] <= c->split_ys[j])
+            int64_t y = j == c->split_y_count
+                                || (i < c->scanline_count && c->scanlines[i] <= c->split_ys[j])
                             ? c->scanlines[i++]
                             : c->split_ys[j++];
             if (u == 0 || s->scanlines[u - 1] != y)
@@ -218,8 +219,8 @@ int boolean_sweep_sort(sweep *s, carry *c)
         free(all);
     }
 #endif
-    if (sorted && g->horizontal_count > 1 &&
-        !(c->valid && c->horizontals_sorted == g->horizontal_count)) {
+    if (sorted && g->horizontal_count > 1
+        && !(c->valid && c->horizontals_sorted == g->horizontal_count)) {
         sorted = boolean_sort_two_keys(&g->horizontals[0].y, &g->horizontals[0].x_left,
                                        sizeof(horizontal_edge), g->horizontal_count,
                                        s->horizontal_order, scratch, tmp);

@@ -33,7 +33,10 @@ int boolean_meet_at_next(sweep *s, uint32_t u, uint32_t v, int64_t y_next);
 /* ---- exact comparisons and lookups ------------------------------------- */
 
 /* whether edge e ends at scanline y */
-static inline int ends_at(const edge *e, int64_t y) { return e->y_top == y; }
+static inline int ends_at(const edge *e, int64_t y)
+{
+    return e->y_top == y;
+}
 
 /* the input edge e is a piece of */
 static inline void edge_orig(const engine *g, const edge *e, int64_t o[4])
@@ -136,9 +139,10 @@ static inline int64_t next_event(const edge *edges, const uint32_t *starting, si
                                  size_t *starting_at, const uint32_t *top, size_t next_end,
                                  size_t *ending_at, size_t *f0)
 {
-    int64_t X = *ending_at >= next_end ||
-                        (*starting_at < starting_count &&
-                         edges[starting[*starting_at]].x_bottom <= edges[top[*ending_at]].x_top)
+    int64_t X = *ending_at >= next_end
+                        || (*starting_at < starting_count
+                            && edges[starting[*starting_at]].x_bottom
+                                   <= edges[top[*ending_at]].x_top)
                     ? edges[starting[*starting_at]].x_bottom
                     : edges[top[*ending_at]].x_top;
     *f0 = *starting_at;
@@ -156,8 +160,8 @@ static inline int coincident(const edge *a, const edge *b)
     if (a->slope != b->slope) /* dx / dy rounded once: equal when collinear */
         return 0;
     i128 dx = a->x_top - a->x_bottom, dy = a->y_top - a->y_bottom;
-    return dx * (b->y_bottom - a->y_bottom) == dy * (b->x_bottom - a->x_bottom) &&
-           dx * (b->y_top - a->y_bottom) == dy * (b->x_top - a->x_bottom);
+    return dx * (b->y_bottom - a->y_bottom) == dy * (b->x_bottom - a->x_bottom)
+           && dx * (b->y_top - a->y_bottom) == dy * (b->x_top - a->x_bottom);
 }
 
 /* Classification of the beam above y: no crossing inside it, so the order

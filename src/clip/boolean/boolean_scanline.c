@@ -117,7 +117,8 @@ NOINLINE static int grow_pieces(engine *g)
     if (needed < g->edge_count)
         needed = g->edge_count;
     return core_array_reserve_from((void **)&g->pieces, &g->piece_capacity, g->piece_count, needed,
-                                   sizeof *g->pieces, g->pieces_small) == CG_OK;
+                                   sizeof *g->pieces, g->pieces_small)
+           == CG_OK;
 }
 
 static int emit(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
@@ -165,13 +166,15 @@ int boolean_horizontal_pieces(sweep *s, int64_t y, const uint32_t *below, size_t
             winding_above[edges[above[j]].operand] += edges[above[j]].winding;
         int have_prev = 0;
         int64_t prev_x = 0;
-        while ((i < below_count && x_current[below[i]] <= end) ||
-               (j < above_count && x_current[above[j]] <= end)) {
+        while ((i < below_count && x_current[below[i]] <= end)
+               || (j < above_count && x_current[above[j]] <= end)) {
             /* the leftmost next position */
             uint32_t idx;
-            if (j >= above_count ||
-                (i < below_count && cmp_x(&edges[below[i]], &edges[above[j]], y,
-                                          x_current[below[i]], x_current[above[j]]) <= 0))
+            if (j >= above_count
+                || (i < below_count
+                    && cmp_x(&edges[below[i]], &edges[above[j]], y, x_current[below[i]],
+                             x_current[above[j]])
+                           <= 0))
                 idx = below[i];
             else
                 idx = above[j];

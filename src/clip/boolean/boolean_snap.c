@@ -249,8 +249,8 @@ static int add_merged_pieces(engine *g, const edge *e, const split_sort *pts, si
         uint32_t r;
         for (; (r = pieces->slots[h]); h = (h + 1) & pieces->mask) {
             const edge *o = &g->edges[r - 1];
-            if (o->x_bottom == lo.x && o->y_bottom == lo.y && o->x_top == hi.x &&
-                o->y_top == hi.y && o->operand == e->operand)
+            if (o->x_bottom == lo.x && o->y_bottom == lo.y && o->x_top == hi.x && o->y_top == hi.y
+                && o->operand == e->operand)
                 break;
         }
         if (r) {
@@ -266,9 +266,9 @@ static int add_merged_pieces(engine *g, const edge *e, const split_sort *pts, si
         }
         if (!room_for_edges(g, 1))
             return 0;
-        g->edges[g->edge_count] =
-            (edge){lo.x, lo.y, hi.x,      hi.y, (double)(hi.x - lo.x) / (double)(hi.y - lo.y),
-                   orig, w,    e->operand};
+        g->edges[g->edge_count] = (edge){
+            lo.x, lo.y, hi.x,      hi.y, (double)(hi.x - lo.x) / (double)(hi.y - lo.y),
+            orig, w,    e->operand};
         g->edge_count++;
         if (!r) {
             pieces->slots[h] = (uint32_t)g->edge_count;
@@ -353,8 +353,10 @@ static size_t walk_pixels(const edge *e, const hot_set *h, split_sort **buf, siz
         uint64_t row = (uint64_t)(py - h->y_low) * h->width - (uint64_t)h->x_low;
         for (int64_t k = 0; k <= q1 - q0; k++) {
             int64_t px = right ? q0 + k : q1 - k;
-            if (!hot_at(h, row, px, py) || (end_row && ((px == e->x_bottom && py == e->y_bottom) ||
-                                                        (px == e->x_top && py == e->y_top))))
+            if (!hot_at(h, row, px, py)
+                || (end_row
+                    && ((px == e->x_bottom && py == e->y_bottom)
+                        || (px == e->x_top && py == e->y_top))))
                 continue;
             /* between p0 and p1, the edge's x over the row overlaps the
              * pixel's by a clear margin: some of the edge is inside; at
@@ -362,8 +364,9 @@ static size_t walk_pixels(const edge *e, const hot_set *h, split_sort **buf, siz
             if (px == p0 || px == p1) {
                 double in_lo = (double)px - 0.5 > lo ? (double)px - 0.5 : lo;
                 double in_hi = (double)px + 0.5 < hi ? (double)px + 0.5 : hi;
-                if (!(in_hi - in_lo > 4 * eps) &&
-                    !boolean_meets_pixel(e->x_bottom, e->y_bottom, e->x_top, e->y_top, px, py, 1))
+                if (!(in_hi - in_lo > 4 * eps)
+                    && !boolean_meets_pixel(e->x_bottom, e->y_bottom, e->x_top, e->y_top, px, py,
+                                            1))
                     continue;
             }
             if (!boolean_room((void **)buf, cap, m, 2, sizeof **buf, small))
@@ -454,8 +457,8 @@ int boolean_snap_complete(engine *g, uint32_t *map, size_t *kept, void *mem, siz
 {
     hot_set h;
     double length = edge_bounds(g, &h);
-    if (length <= PIXEL_WALK * (double)boolean_hot_point_count(g) &&
-        h.x_high - h.x_low < INT64_C(1) << 32 && h.y_high - h.y_low < INT64_C(1) << 32) {
+    if (length <= PIXEL_WALK * (double)boolean_hot_point_count(g)
+        && h.x_high - h.x_low < INT64_C(1) << 32 && h.y_high - h.y_low < INT64_C(1) << 32) {
         if (!hot_set_build(&h, g)) {
             free(h.bits);
             free(h.slots);

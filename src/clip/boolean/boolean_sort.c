@@ -182,8 +182,7 @@ static int radix_sort(keyval *a, size_t n, keyval *tmp)
  * written).  The runs are merged all at once, straight from the records
  * (each run's next key at hand, the least of them taken). */
 #define MAX_RUNS 8
-static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
-                     uint32_t *idx)
+static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t n, uint32_t *idx)
 {
     /* run r: positions at[r], at[r] + step[r], ... up to (excluding) end[r] */
     ptrdiff_t at[MAX_RUNS], end[MAX_RUNS], step[MAX_RUNS];
@@ -222,8 +221,8 @@ static int sort_runs(const int64_t *k1, const int64_t *k2, size_t stride, size_t
     for (size_t o = 0; o < n; o++) {
         size_t b = 0;
         for (size_t r = 1; r < nr; r++)
-            if (h1[r] < h1[b] ||
-                (h1[r] == h1[b] && (h2[r] < h2[b] || (h2[r] == h2[b] && at[r] < at[b]))))
+            if (h1[r] < h1[b]
+                || (h1[r] == h1[b] && (h2[r] < h2[b] || (h2[r] == h2[b] && at[r] < at[b]))))
                 b = r;
         idx[o] = (uint32_t)at[b];
         at[b] += step[b];
@@ -285,8 +284,7 @@ static ALWAYS_INLINE int insert_by_k2(const int64_t *k2, size_t stride, keyval *
 /* boolean_sort_two_keys through one 63-bit key per record when n <= 64:
  * k1 and k2, each relative to record 0's, in 29 and 28 bits, then the index
  * in 6.  1 when the keys' spreads allow, else 0 (idx not written). */
-static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size_t n,
-                       uint32_t *idx)
+static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size_t n, uint32_t *idx)
 {
     uint64_t key[64], tmp[64];
     const char *r1 = (const char *)k1, *r2 = (const char *)k2;
@@ -294,8 +292,8 @@ static int sort_packed(const int64_t *k1, const int64_t *k2, size_t stride, size
              base2 = (uint64_t)*k2 - ((uint64_t)1 << 27);
     uint64_t out = 0; /* bits beyond the fields */
     for (size_t i = 0; i < n; i++, r1 += stride, r2 += stride) {
-        uint64_t d1 = (uint64_t)*(const int64_t *)r1 - base1,
-                 d2 = (uint64_t)*(const int64_t *)r2 - base2;
+        uint64_t d1 = (uint64_t) * (const int64_t *)r1 - base1,
+                 d2 = (uint64_t) * (const int64_t *)r2 - base2;
         out |= d1 >> 29 | d2 >> 28;
         key[i] = d1 << 34 | d2 << 6 | i;
     }
@@ -366,9 +364,10 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
         for (size_t i = 0; i < n; i++) {
             int64_t a1 = key_at(k1, i, stride), a2 = key_at(k2, i, stride);
             size_t j = i;
-            for (; j > 0 &&
-                   (key_at(k1, idx[j - 1], stride) > a1 ||
-                    (key_at(k1, idx[j - 1], stride) == a1 && key_at(k2, idx[j - 1], stride) > a2));
+            for (; j > 0
+                   && (key_at(k1, idx[j - 1], stride) > a1
+                       || (key_at(k1, idx[j - 1], stride) == a1
+                           && key_at(k2, idx[j - 1], stride) > a2));
                  j--)
                 idx[j] = idx[j - 1];
             idx[j] = (uint32_t)i;
@@ -394,7 +393,8 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
     /* (tried when k1 leaves k2 six bits or more: else the look at k2's
      * spread is mostly wasted) */
     int combined = all < ((uint64_t)1 << (COMBINED_BITS - 6))
-                       ? sort_combined(k2, stride, n, scratch, tmp, all) : -1;
+                       ? sort_combined(k2, stride, n, scratch, tmp, all)
+                       : -1;
     if (combined >= 0) {
         for (size_t i = 0; combined && i < n; i++)
             idx[i] = scratch[i].val;
@@ -410,8 +410,8 @@ int boolean_sort_two_keys(const int64_t *k1, const int64_t *k2, size_t stride, s
          * pieces in no order on one scanline) is radix sorted instead, while
          * one in order or nearly (a grid of squares) stays cheap */
         if (j - i > RADIX_RUN) {
-            if (!insert_by_k2(k2, stride, scratch + i, j - i, j - i) &&
-                !radix_by_k2(k2, stride, scratch + i, j - i, tmp ? tmp + i : NULL))
+            if (!insert_by_k2(k2, stride, scratch + i, j - i, j - i)
+                && !radix_by_k2(k2, stride, scratch + i, j - i, tmp ? tmp + i : NULL))
                 return 0;
         } else if (j - i > 1) {
             insert_by_k2(k2, stride, scratch + i, j - i, SIZE_MAX);

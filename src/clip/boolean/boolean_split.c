@@ -107,8 +107,8 @@ static int hot_grid_build(hot_grid *h, const split_point *S, size_t split_count)
             boolean_sort_few(h->points + a, b - a, sizeof *h->points, cmp_point_yx);
         h->start[c] = kept;
         for (size_t q = a; q < b; q++)
-            if (q == a || h->points[q].x != h->points[q - 1].x ||
-                h->points[q].y != h->points[q - 1].y)
+            if (q == a || h->points[q].x != h->points[q - 1].x
+                || h->points[q].y != h->points[q - 1].y)
                 h->points[kept++] = h->points[q];
     }
     h->start[cells] = kept;
@@ -187,11 +187,11 @@ int boolean_add_hot_pixel_splits(engine *g, int vertices)
                 size_t cell = r * h.cols + c;
                 for (size_t q = h.start[cell]; q < h.start[cell + 1]; q++) {
                     int64_t px = h.points[q].x, py = h.points[q].y;
-                    if (py < e.y_bottom - 1 || py > e.y_top + 1 || px < xlo - 1 || px > xhi + 1 ||
-                        (px == e.x_bottom && py == e.y_bottom) ||
-                        (px == e.x_top && py == e.y_top) ||
-                        !boolean_meets_pixel(e.x_bottom, e.y_bottom, e.x_top, e.y_top, px, py,
-                                             vertices))
+                    if (py < e.y_bottom - 1 || py > e.y_top + 1 || px < xlo - 1 || px > xhi + 1
+                        || (px == e.x_bottom && py == e.y_bottom)
+                        || (px == e.x_top && py == e.y_top)
+                        || !boolean_meets_pixel(e.x_bottom, e.y_bottom, e.x_top, e.y_top, px, py,
+                                                vertices))
                         continue;
                     ok = room_for_split(g);
                     if (!ok)
@@ -249,13 +249,16 @@ static ALWAYS_INLINE int add_pieces_along(engine *g, const edge *e, const split_
         if (!ok)
             return 0;
         if (g->edge_count > ne) /* (a merged edge counts more than once) */
-            g->edges[ne].winding =
-                (int8_t)(g->edges[ne].winding * (e->winding < 0 ? -e->winding : e->winding));
+            g->edges[ne].winding = (int8_t)(g->edges[ne].winding
+                                            * (e->winding < 0 ? -e->winding : e->winding));
     }
     return 1;
 }
 
-uint32_t boolean_orig_of(engine *g, const edge *e) { return orig_of(g, e); }
+uint32_t boolean_orig_of(engine *g, const edge *e)
+{
+    return orig_of(g, e);
+}
 
 /* (for complete snap rounding; inlined here) */
 void boolean_sort_along(split_sort *a, size_t n)
@@ -302,8 +305,8 @@ int boolean_apply_splits(engine *g, uint32_t *map, size_t *kept, void *mem, size
     uint32_t *first = (uint32_t *)(void *)(dead + at), *order = first + old_edge_count + 1;
     /* room for the pieces at once: at most one per split point and split
      * edge */
-    if (!room_for_edges(g, split_count +
-                               (split_count < old_edge_count ? split_count : old_edge_count))) {
+    if (!room_for_edges(g, split_count
+                               + (split_count < old_edge_count ? split_count : old_edge_count))) {
         free(own);
         return 0;
     }

@@ -43,7 +43,7 @@ static inline size_t take_in_order(uint32_t *above, size_t above_count, uint32_t
 
 /* One scanline of the full sweep: where it is, and the lists it builds. */
 typedef struct scanline_state {
-    int64_t y, y_next; /* this scanline, the next (y itself at the last) */
+    int64_t y, y_next;       /* this scanline, the next (y itself at the last) */
     uint32_t *below, *above; /* the active list below y; above it (being built) */
     size_t below_count, above_count;
     size_t starting_count; /* the edges starting at y: s->starting[0..starting_count) */
@@ -56,7 +56,7 @@ typedef struct scanline_state {
      * `last` (x at y_next of above[check_from - 1], or -INFINITY) */
     double last;
     size_t check_from;
-    size_t queued; /* run breaks queued for y, in s->break_queue */
+    size_t queued;  /* run breaks queued for y, in s->break_queue */
     int queue_full; /* more were: every position is looked at */
 } scanline_state;
 
@@ -75,12 +75,12 @@ static ALWAYS_INLINE int take_last_pass(sweep *s, int64_t y, size_t *scanline, s
     if (s->band == 0 || s->changed || (s->band < s->band_count && y > s->bands[s->band][0]))
         return 0;
     const struct ck_log *last = s->prev_log;
-    while (s->prev_checkpoint < last->checkpoint_count &&
-           last->checkpoints[s->prev_checkpoint].scanline_y < y)
+    while (s->prev_checkpoint < last->checkpoint_count
+           && last->checkpoints[s->prev_checkpoint].scanline_y < y)
         s->prev_checkpoint++;
-    if (s->prev_checkpoint == last->checkpoint_count ||
-        last->checkpoints[s->prev_checkpoint].scanline_y != y ||
-        !boolean_ck_same(s, &last->checkpoints[s->prev_checkpoint]))
+    if (s->prev_checkpoint == last->checkpoint_count
+        || last->checkpoints[s->prev_checkpoint].scanline_y != y
+        || !boolean_ck_same(s, &last->checkpoints[s->prev_checkpoint]))
         return 0;
     size_t from = last->checkpoints[s->prev_checkpoint].piece_count, to = last->end_piece_count,
            j = 0;
@@ -117,9 +117,10 @@ static ALWAYS_INLINE void gather_starting(sweep *s, scanline_state *line, size_t
         x_current[e] = (double)edges[e].x_bottom;
         x_next[e] = x_at(&edges[e], line->y_next);
         size_t m = starting_count;
-        while (m > 0 && edges[starting[m - 1]].x_bottom == edges[e].x_bottom &&
-               cmp_x(&edges[starting[m - 1]], &edges[e], line->y_next, x_next[starting[m - 1]],
-                     x_next[e]) > 0) {
+        while (m > 0 && edges[starting[m - 1]].x_bottom == edges[e].x_bottom
+               && cmp_x(&edges[starting[m - 1]], &edges[e], line->y_next, x_next[starting[m - 1]],
+                        x_next[e])
+                      > 0) {
             starting[m] = starting[m - 1];
             m--;
         }
@@ -252,8 +253,8 @@ static ALWAYS_INLINE int above_by_events(sweep *s, scanline_state *line)
         copy_ids(above + above_count, below + below_at, lo - below_at);
         above_count += lo - below_at;
         below_at = lo;
-        while (below_at < below_count &&
-               cmp_xi(&edges[below[below_at]], y, X, x_current[below[below_at]]) == 0) {
+        while (below_at < below_count
+               && cmp_xi(&edges[below[below_at]], y, X, x_current[below[below_at]]) == 0) {
             uint32_t e = below[below_at++];
             if (ends_at(&edges[e], y)) {
                 ended++;
@@ -298,11 +299,11 @@ static int split_crossing(sweep *s, int64_t y, int64_t y_next, uint32_t u, uint3
     int64_t px, py, oa[4], ob[4];
     edge_orig(g, a, oa);
     edge_orig(g, b, ob);
-    if (!s->use_input_lines ||
-        !boolean_line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2], ob[3], &px,
-                                   &py) ||
-        py < y || py > y_next || !near_span((double)px, x_current[u], x_next[u]) ||
-        !near_span((double)px, x_current[v], x_next[v])) {
+    if (!s->use_input_lines
+        || !boolean_line_intersection(oa[0], oa[1], oa[2], oa[3], ob[0], ob[1], ob[2], ob[3], &px,
+                                      &py)
+        || py < y || py > y_next || !near_span((double)px, x_current[u], x_next[u])
+        || !near_span((double)px, x_current[v], x_next[v])) {
         boolean_line_intersection(a->x_bottom, a->y_bottom, a->x_top, a->y_top, b->x_bottom,
                                   b->y_bottom, b->x_top, b->y_top, &px, &py);
     }
@@ -328,8 +329,8 @@ NOINLINE static int settle_inversion(sweep *s, uint32_t *above, size_t k, int64_
     while (m > 0) {
         uint32_t u = above[m - 1];
         int c = cmp_x(&edges[u], &edges[v], y_next, x_next[u], x_next[v]);
-        if (c == 0 && (edges[u].y_top > y_next || edges[v].y_top > y_next) &&
-            !boolean_meet_at_next(s, u, v, y_next))
+        if (c == 0 && (edges[u].y_top > y_next || edges[v].y_top > y_next)
+            && !boolean_meet_at_next(s, u, v, y_next))
             return 0;
         if (c <= 0)
             break;
@@ -435,8 +436,8 @@ int boolean_run_sweep(sweep *s)
              * not be as fine) */
             if (!boolean_ck_record(s, line.y))
                 s->log = NULL;
-            s->checkpoint_visits =
-                s->visits + 8 * s->active_count + (s->engine->edge_count >= 1024 ? 64 : 16);
+            s->checkpoint_visits = s->visits + 8 * s->active_count
+                                   + (s->engine->edge_count >= 1024 ? 64 : 16);
         }
         line.below = s->active;
         line.below_count = s->active_count;
@@ -491,9 +492,9 @@ int boolean_run_sweep(sweep *s)
                 return 0;
             line.dirty_count = dirty_count;
             line.dirty_sorted = 0;
-            if (s->classify &&
-                !boolean_horizontal_pieces(s, line.y, line.below, line.below_count, line.above,
-                                           line.above_count, h0, next_horizontal))
+            if (s->classify
+                && !boolean_horizontal_pieces(s, line.y, line.below, line.below_count, line.above,
+                                              line.above_count, h0, next_horizontal))
                 return 0;
         }
         s->visits += line.above_count;

@@ -47,7 +47,8 @@ static int draw(const char *path, const cg_polygon_set *input, int input_open,
         st = clip_view_polyline(image, &v, result->points + result->ring_start[r],
                                 result->ring_start[r + 1] - result->ring_start[r], !result_open,
                                 result_open ? 3 : 1.5, RESULT_LINE);
-    int status = st == CG_OK ? cli_write_image(image, path) : cli_fail("clip: %s", cg_status_str(st));
+    int status = st == CG_OK ? cli_write_image(image, path)
+                             : cli_fail("clip: %s", cg_status_str(st));
     cg_image_free(image);
     return status;
 }
@@ -128,9 +129,9 @@ static int offset(int argc, char **argv)
         if (taken)
             continue;
         const char *value = NULL;
-        if (cli_option_is(argv[i], "--join") || cli_option_is(argv[i], "--end") ||
-            cli_option_is(argv[i], "--fill") || cli_option_is(argv[i], "--miter-limit") ||
-            cli_option_is(argv[i], "--arc-tolerance")) {
+        if (cli_option_is(argv[i], "--join") || cli_option_is(argv[i], "--end")
+            || cli_option_is(argv[i], "--fill") || cli_option_is(argv[i], "--miter-limit")
+            || cli_option_is(argv[i], "--arc-tolerance")) {
             const char *option = argv[i];
             value = cli_option_value("clip", argc, argv, &i);
             if (!value)
@@ -138,32 +139,42 @@ static int offset(int argc, char **argv)
             if (cli_option_is(option, "--join")) {
                 int k = pick_name(value, joins, 4);
                 if (k < 0)
-                    return cli_usage_error("clip", "offset: --join: expected miter, round, square "
-                                                   "or bevel, got '%s'", value);
+                    return cli_usage_error("clip",
+                                           "offset: --join: expected miter, round, square "
+                                           "or bevel, got '%s'",
+                                           value);
                 options.join = (cg_offset_join)k;
             } else if (cli_option_is(option, "--end")) {
                 end = pick_name(value, ends, 5);
                 if (end < 1)
-                    return cli_usage_error("clip", "offset: --end: expected butt, square, round "
-                                                   "or joined, got '%s'", value);
+                    return cli_usage_error("clip",
+                                           "offset: --end: expected butt, square, round "
+                                           "or joined, got '%s'",
+                                           value);
             } else if (cli_option_is(option, "--fill")) {
                 int k = pick_name(value, fill_names, 4);
                 if (k < 0)
-                    return cli_usage_error("clip", "offset: --fill: expected evenodd, nonzero, "
-                                                   "positive or negative, got '%s'", value);
+                    return cli_usage_error("clip",
+                                           "offset: --fill: expected evenodd, nonzero, "
+                                           "positive or negative, got '%s'",
+                                           value);
                 options.fill = (cg_clip_fill)k;
             } else if (cli_option_is(option, "--miter-limit")) {
                 if (cli_parse_double("clip", "--miter-limit", value, &options.miter_limit) != 0)
                     return CLI_USAGE;
                 if (!(options.miter_limit >= 1 && isfinite(options.miter_limit)))
-                    return cli_usage_error("clip", "offset: --miter-limit: expected a number "
-                                                   ">= 1, got '%s'", value);
+                    return cli_usage_error("clip",
+                                           "offset: --miter-limit: expected a number "
+                                           ">= 1, got '%s'",
+                                           value);
             } else {
                 if (cli_parse_double("clip", "--arc-tolerance", value, &options.arc_tolerance) != 0)
                     return CLI_USAGE;
                 if (!(options.arc_tolerance > 0 && isfinite(options.arc_tolerance)))
-                    return cli_usage_error("clip", "offset: --arc-tolerance: expected a positive "
-                                                   "number, got '%s'", value);
+                    return cli_usage_error("clip",
+                                           "offset: --arc-tolerance: expected a positive "
+                                           "number, got '%s'",
+                                           value);
             }
         } else if (cli_is_option(argv[i])) {
             return cli_usage_error("clip", "offset: unknown option '%s'", argv[i]);
@@ -194,7 +205,9 @@ static int offset(int argc, char **argv)
                                  ends[end], file);
         goto done;
     }
-    options.end = end >= 0 ? (cg_offset_end)end : open ? CG_OFFSET_END_ROUND : CG_OFFSET_END_POLYGON;
+    options.end = end >= 0 ? (cg_offset_end)end
+                  : open   ? CG_OFFSET_END_ROUND
+                           : CG_OFFSET_END_POLYGON;
     long runs = common.repeat > 0 ? common.repeat : 1;
     double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
     cg_clip_workspace *ws = runs > 1 ? cg_clip_workspace_create() : NULL;
@@ -229,8 +242,10 @@ static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fi
         return -1;
     int k = pick_name(value, fill_names, 4);
     if (k < 0) {
-        cli_usage_error("clip", "%s: --fill: expected evenodd, nonzero, positive or negative, "
-                                "got '%s'", name, value);
+        cli_usage_error("clip",
+                        "%s: --fill: expected evenodd, nonzero, positive or negative, "
+                        "got '%s'",
+                        name, value);
         return -1;
     }
     *fill = (cg_clip_fill)k;
@@ -388,8 +403,10 @@ static int simplify(int argc, char **argv)
             else if (strcmp(a, "visvalingam") == 0)
                 algorithm = CG_SIMPLIFY_VISVALINGAM;
             else
-                return cli_usage_error("clip", "simplify: --algorithm: expected rdp or "
-                                               "visvalingam, got '%s'", a);
+                return cli_usage_error("clip",
+                                       "simplify: --algorithm: expected rdp or "
+                                       "visvalingam, got '%s'",
+                                       a);
         } else if (cli_is_option(argv[i])) {
             return cli_usage_error("clip", "simplify: unknown option '%s'", argv[i]);
         } else if (!tolerance_text) {
@@ -439,8 +456,8 @@ done:
 
 int clip_geometry_handles(const char *name)
 {
-    return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0 ||
-           strcmp(name, "triangulate") == 0 || strcmp(name, "simplify") == 0;
+    return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0
+           || strcmp(name, "triangulate") == 0 || strcmp(name, "simplify") == 0;
 }
 
 int clip_geometry_run(int argc, char **argv)

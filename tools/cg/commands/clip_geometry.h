@@ -9,17 +9,17 @@ int clip_geometry_handles(const char *name);
 int clip_geometry_run(int argc, char **argv);
 
 /* Their lines of `cg help clip`. */
-#define CLIP_GEOMETRY_USAGE_LINES                                                          \
-    "       cg clip offset DELTA IN [--join miter|round|square|bevel] [--miter-limit M]\n" \
-    "                    [--end butt|square|round|joined] [--arc-tolerance T]\n"           \
+#define CLIP_GEOMETRY_USAGE_LINES                                                                \
+    "       cg clip offset DELTA IN [--join miter|round|square|bevel] [--miter-limit M]\n"       \
+    "                    [--end butt|square|round|joined] [--arc-tolerance T]\n"                 \
     "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n" \
-    "       cg clip rect XMIN YMIN XMAX YMAX IN [--fill evenodd|nonzero|positive|negative]\n" \
-    "                    [-o OUT.png] [--repeat N]\n"                                  \
-    "       cg clip triangulate IN [--fill evenodd|nonzero|positive|negative] [-o OUT.png]\n" \
-    "                    [--repeat N]\n"                                               \
-    "       cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam]\n"                 \
+    "       cg clip rect XMIN YMIN XMAX YMAX IN [--fill evenodd|nonzero|positive|negative]\n"    \
+    "                    [-o OUT.png] [--repeat N]\n"                                            \
+    "       cg clip triangulate IN [--fill evenodd|nonzero|positive|negative] [-o OUT.png]\n"    \
+    "                    [--repeat N]\n"                                                         \
+    "       cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam]\n"                       \
     "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n"
-#define CLIP_GEOMETRY_USAGE_TEXT                                                            \
+#define CLIP_GEOMETRY_USAGE_TEXT                                                         \
     "offset: inflates (DELTA > 0) or deflates (DELTA < 0) the polygons of IN (WKT\n"     \
     "POLYGON or MULTIPOLYGON), or widens its line strings (LINESTRING or\n"              \
     "MULTILINESTRING) by |DELTA| on each side; prints a WKT MULTIPOLYGON.  --join\n"     \
@@ -28,11 +28,11 @@ int clip_geometry_run(int argc, char **argv);
     "into a loop and keeps its band); --arc-tolerance bounds the gap between a round\n"  \
     "join and its chords (default |DELTA|/500).\n\n"                                     \
     "rect: the part of IN inside the rectangle: polygons (under --fill) as a WKT\n"      \
-    "MULTIPOLYGON, line strings as a MULTILINESTRING of their pieces in order; a fast\n"  \
-    "path for small rectangles on large inputs (tiles of a map).\n\n"                   \
+    "MULTIPOLYGON, line strings as a MULTILINESTRING of their pieces in order; a fast\n" \
+    "path for small rectangles on large inputs (tiles of a map).\n\n"                    \
     "triangulate: the constrained Delaunay triangulation of the polygons of IN (made\n"  \
-    "simple first), with no point added, as a MULTIPOLYGON of triangles.\n\n"          \
-    "simplify: removes vertices of IN's polygons (or line strings) while the shape\n"   \
-    "stays within TOLERANCE (a distance for rdp, the default; a triangle's area for\n"  \
+    "simple first), with no point added, as a MULTIPOLYGON of triangles.\n\n"            \
+    "simplify: removes vertices of IN's polygons (or line strings) while the shape\n"    \
+    "stays within TOLERANCE (a distance for rdp, the default; a triangle's area for\n"   \
     "visvalingam), never making edges cross or touch and keeping every ring.\n"
 #endif

@@ -174,8 +174,10 @@ cg_status clip_paths_read(const char *path, cg_polygon_set *set, int *open, cg_e
     } else {
         st = clip_wkt_parse(text, name, set, err);
         if (st == CG_EFORMAT && err && strstr(err->message, "POLYGON or MULTIPOLYGON"))
-            st = cg_error_set(err, CG_EFORMAT, "%s: offset 0: expected POLYGON, MULTIPOLYGON, "
-                                               "LINESTRING or MULTILINESTRING", name);
+            st = cg_error_set(err, CG_EFORMAT,
+                              "%s: offset 0: expected POLYGON, MULTIPOLYGON, "
+                              "LINESTRING or MULTILINESTRING",
+                              name);
     }
     free(text);
     return st;

@@ -177,7 +177,8 @@ cg_status clip_wkt_read(const char *path, cg_polygon_set *set, cg_error *err)
     if (st == CG_OK) {
         buf[n] = 0;
         if (strlen(buf) != n)
-            st = cg_error_set(err, CG_EFORMAT, "%s: offset %zu: unexpected NUL byte", path, strlen(buf));
+            st = cg_error_set(err, CG_EFORMAT, "%s: offset %zu: unexpected NUL byte", path,
+                              strlen(buf));
         else
             st = clip_wkt_parse(buf, strcmp(path, "-") == 0 ? "stdin" : path, set, err);
     }

@@ -19,7 +19,10 @@ cg_status clip_wkt_read(const char *path, cg_polygon_set *set, cg_error *err);
 void clip_wkt_write(FILE *out, const cg_polygon_set *set);
 
 /* World (y up) to pixels (y down), fitting a box with a margin. */
-typedef struct clip_view { double scale, ox, oy; int height; } clip_view;
+typedef struct clip_view {
+    double scale, ox, oy;
+    int height;
+} clip_view;
 
 clip_view clip_view_fit(cg_vec2 lo, cg_vec2 hi, int width, int height, int margin);
 /* Grows [lo, hi] to hold the set's points. */

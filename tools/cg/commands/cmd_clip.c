@@ -33,7 +33,7 @@ static void print_trace(void *user, cg_vec2 p0, unsigned c0, cg_vec2 p1, unsigne
 /* cg clip line: the window and the segment as eight numbers, the options. */
 typedef struct line_arguments {
     double numbers[8]; /* XMIN YMIN XMAX YMAX X0 Y0 X1 Y1 */
-    int liang_barsky; /* --algorithm liang-barsky */
+    int liang_barsky;  /* --algorithm liang-barsky */
     int trace;
 } line_arguments;
 
@@ -50,15 +50,25 @@ static int line_number(const char *command, int index, const char *text, void *a
 
 static const char *const line_algorithms[] = {"cohen-sutherland", "liang-barsky", NULL};
 static const cli_option line_options[] = {
-    {.name = "--algorithm", .kind = CLI_CHOICE, .offset = offsetof(line_arguments, liang_barsky),
-     .choices = line_algorithms, .help = "the clipping algorithm (default cohen-sutherland)"},
-    {.name = "--trace", .kind = CLI_FLAG, .offset = offsetof(line_arguments, trace),
-     .flag_value = 1, .help = "print each step of Cohen-Sutherland with the region codes"},
+    {.name = "--algorithm",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(line_arguments, liang_barsky),
+     .choices = line_algorithms,
+     .help = "the clipping algorithm (default cohen-sutherland)"},
+    {.name = "--trace",
+     .kind = CLI_FLAG,
+     .offset = offsetof(line_arguments, trace),
+     .flag_value = 1,
+     .help = "print each step of Cohen-Sutherland with the region codes"},
 };
 static const cli_option_group line_groups[] = {CLI_GROUP(NULL, line_options), {0}};
 static const cli_syntax line_syntax = {
-    .command = "clip", .action = "line", .groups = line_groups, .positional = line_number,
-    .min_positionals = 8, .too_few = "line: expected XMIN YMIN XMAX YMAX X0 Y0 X1 Y1",
+    .command = "clip",
+    .action = "line",
+    .groups = line_groups,
+    .positional = line_number,
+    .min_positionals = 8,
+    .too_few = "line: expected XMIN YMIN XMAX YMAX X0 Y0 X1 Y1",
 };
 
 static int line(int argc, char **argv)
@@ -120,7 +130,8 @@ static int draw(const char *path, const cg_polygon_set *a, const cg_polygon_set 
         st = clip_view_stroke(image, &v, b, 1.5, CLIP_LINE);
     if (st == CG_OK)
         st = clip_view_stroke(image, &v, result, 2.5, RESULT_LINE);
-    int status = st == CG_OK ? cli_write_image(image, path) : cli_fail("clip: %s", cg_status_str(st));
+    int status = st == CG_OK ? cli_write_image(image, path)
+                             : cli_fail("clip: %s", cg_status_str(st));
     cg_image_free(image);
     return status;
 }
@@ -134,8 +145,11 @@ typedef struct boolean_arguments {
 
 static const char *const fill_rules[] = {"evenodd", "nonzero", "positive", "negative", NULL};
 static const cli_option boolean_options[] = {
-    {.name = "--fill", .kind = CLI_CHOICE, .offset = offsetof(boolean_arguments, fill),
-     .choices = fill_rules, .help = "the fill rule of A and B (default evenodd)"},
+    {.name = "--fill",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(boolean_arguments, fill),
+     .choices = fill_rules,
+     .help = "the fill rule of A and B (default evenodd)"},
     CLI_OPTION_OUTPUT(boolean_arguments, output, "OUT.png",
                       "draw A, B and the result instead of printing the result"),
     CLI_OPTION_REPEAT(boolean_arguments, repeat, 100000,
@@ -143,9 +157,13 @@ static const cli_option boolean_options[] = {
 };
 static const cli_option_group boolean_groups[] = {CLI_GROUP(NULL, boolean_options), {0}};
 static const cli_syntax boolean_syntax = {
-    .command = "clip", .action = "boolean", .groups = boolean_groups,
-    .max_positionals = 3, .too_many = "boolean: unexpected argument '%s'",
-    .min_positionals = 3, .too_few = "boolean: expected OPERATION A B",
+    .command = "clip",
+    .action = "boolean",
+    .groups = boolean_groups,
+    .max_positionals = 3,
+    .too_many = "boolean: unexpected argument '%s'",
+    .min_positionals = 3,
+    .too_few = "boolean: expected OPERATION A B",
 };
 
 static int boolean(int argc, char **argv)
@@ -164,8 +182,10 @@ static int boolean(int argc, char **argv)
         if (strcmp(opname, ops[i]) == 0)
             op = i;
     if (op < 0)
-        return cli_usage_error("clip", "boolean: expected intersection, union, difference or xor, "
-                                       "got '%s'", opname);
+        return cli_usage_error("clip",
+                               "boolean: expected intersection, union, difference or xor, "
+                               "got '%s'",
+                               opname);
     if (strcmp(files[0], "-") == 0 && strcmp(files[1], "-") == 0)
         return cli_usage_error("clip", "boolean: only one of A and B can be '-' (stdin)");
     if (out && cg_file_format_from_path(out) == CG_FILE_UNKNOWN)
@@ -220,17 +240,23 @@ typedef struct polygon_arguments {
 
 static const char *const polygon_algorithms[] = {"sutherland-hodgman", "weiler-atherton", NULL};
 static const cli_option polygon_options[] = {
-    {.name = "--algorithm", .kind = CLI_CHOICE,
-     .offset = offsetof(polygon_arguments, weiler_atherton), .choices = polygon_algorithms,
+    {.name = "--algorithm",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(polygon_arguments, weiler_atherton),
+     .choices = polygon_algorithms,
      .help = "the clipping algorithm (default sutherland-hodgman)"},
     CLI_OPTION_OUTPUT(polygon_arguments, output, "OUT.png",
                       "draw WINDOW, SUBJECT and the result instead of printing the result"),
 };
 static const cli_option_group polygon_groups[] = {CLI_GROUP(NULL, polygon_options), {0}};
 static const cli_syntax polygon_syntax = {
-    .command = "clip", .action = "polygon", .groups = polygon_groups,
-    .max_positionals = 2, .too_many = "polygon: unexpected argument '%s'",
-    .min_positionals = 2, .too_few = "polygon: expected WINDOW SUBJECT",
+    .command = "clip",
+    .action = "polygon",
+    .groups = polygon_groups,
+    .max_positionals = 2,
+    .too_many = "polygon: unexpected argument '%s'",
+    .min_positionals = 2,
+    .too_few = "polygon: expected WINDOW SUBJECT",
 };
 
 static int polygon(int argc, char **argv)
@@ -289,7 +315,9 @@ static int run(int argc, char **argv)
 {
     if (argc >= 2 && clip_geometry_handles(argv[1]))
         return clip_geometry_run(argc - 1, argv + 1);
-    static const cli_action actions[] = {{"line", line}, {"polygon", polygon}, {"boolean", boolean}};
+    static const cli_action actions[] = {{"line", line},
+                                         {"polygon", polygon},
+                                         {"boolean", boolean}};
     return cli_run_action("clip", argc, argv, actions, 3, NULL,
                           "unknown clip command '%s' (expected line, polygon or boolean)");
 }
@@ -305,8 +333,8 @@ const cg_command cg_command_clip = {
     "       cg clip polygon WINDOW SUBJECT [--algorithm sutherland-hodgman|weiler-atherton]\n"
     "                    [-o OUT.png]\n"
     "       cg clip boolean intersection|union|difference|xor A B\n"
-    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n"
-    CLIP_GEOMETRY_USAGE_LINES "\n"
+    "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat "
+    "N]\n" CLIP_GEOMETRY_USAGE_LINES "\n"
     "line: clips the segment (X0,Y0)-(X1,Y1) against the window and prints the\n"
     "visible part as 'X0 Y0 X1 Y1', or 'rejected'.  --trace prints each step of\n"
     "Cohen-Sutherland with the endpoints' 4-bit region codes (TBRL, as in the notes).\n\n"
@@ -321,8 +349,7 @@ const cg_command cg_command_clip = {
     "performs the operation N times after reading (through one workspace, which\n"
     "keeps the engine's memory from run to run) and prints the median time on\n"
     "stderr as 'boolean: 1.23 ms'.  Coordinates are rounded to a grid 2^36 times\n"
-    "finer than the largest |coordinate| (see docs/clip.md).\n\n"
-    CLIP_GEOMETRY_USAGE_TEXT,
+    "finer than the largest |coordinate| (see docs/clip.md).\n\n" CLIP_GEOMETRY_USAGE_TEXT,
     run,
     clip_syntaxes,
 };

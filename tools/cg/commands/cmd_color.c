@@ -72,8 +72,8 @@ static int run(int argc, char **argv)
         in[2] = c.b / 255.0;
     } else {
         if (given != need)
-            return cli_usage_error("color", "%s takes %d values, got %d",
-                                   cg_color_model_name(from), need, given);
+            return cli_usage_error("color", "%s takes %d values, got %d", cg_color_model_name(from),
+                                   need, given);
         for (int i = 0; i < need; i++) {
             char what[32];
             snprintf(what, sizeof what, "value %d", i + 1);

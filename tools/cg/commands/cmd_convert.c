@@ -5,9 +5,11 @@
 #include <stdio.h>
 
 static const cli_syntax convert_syntax = {
-    .command = "convert", .max_positionals = 2,
+    .command = "convert",
+    .max_positionals = 2,
     .too_many = "expected two files, got '%s' as a third",
-    .min_positionals = 2, .too_few = "expected IN and OUT files",
+    .min_positionals = 2,
+    .too_few = "expected IN and OUT files",
 };
 
 static int run(int argc, char **argv)

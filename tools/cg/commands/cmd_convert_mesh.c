@@ -10,23 +10,25 @@ typedef struct convert_mesh_arguments {
     int format; /* index into format_names, 0: by OUT's extension */
 } convert_mesh_arguments;
 
-static const char *const format_names[] = {"auto", "obj", "ply", "ply-ascii", "off", "stl",
-                                           "glb", NULL};
-static const cg_mesh_format formats[] = {CG_MESH_FORMAT_AUTO, CG_MESH_FORMAT_OBJ,
-                                         CG_MESH_FORMAT_PLY_BINARY, CG_MESH_FORMAT_PLY_ASCII,
-                                         CG_MESH_FORMAT_OFF, CG_MESH_FORMAT_STL,
-                                         CG_MESH_FORMAT_GLTF};
+static const char *const format_names[] = {"auto", "obj", "ply", "ply-ascii",
+                                           "off",  "stl", "glb", NULL};
+static const cg_mesh_format formats[] = {
+    CG_MESH_FORMAT_AUTO, CG_MESH_FORMAT_OBJ, CG_MESH_FORMAT_PLY_BINARY, CG_MESH_FORMAT_PLY_ASCII,
+    CG_MESH_FORMAT_OFF,  CG_MESH_FORMAT_STL, CG_MESH_FORMAT_GLTF};
 
 static const cli_option convert_mesh_options[] = {
-    {.name = "--format", .kind = CLI_CHOICE, .offset = offsetof(convert_mesh_arguments, format),
+    {.name = "--format",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(convert_mesh_arguments, format),
      .choices = format_names,
      .help = "the format to write; auto (the default): by OUT's extension (.obj, .ply =\n"
              "binary, .off, .stl = binary, .glb)"},
 };
-static const cli_option_group convert_mesh_groups[] = {CLI_GROUP(NULL, convert_mesh_options),
-                                                       {0}};
+static const cli_option_group convert_mesh_groups[] = {CLI_GROUP(NULL, convert_mesh_options), {0}};
 static const cli_syntax convert_mesh_syntax = {
-    .command = "convert-mesh", .groups = convert_mesh_groups, .max_positionals = 2,
+    .command = "convert-mesh",
+    .groups = convert_mesh_groups,
+    .max_positionals = 2,
     .too_many = "expected two files, got '%s' as a third",
 };
 static const cli_syntax *const convert_mesh_syntaxes[] = {&convert_mesh_syntax, NULL};

@@ -19,9 +19,12 @@ static const cli_option draw_options[] = {
 };
 static const cli_option_group draw_groups[] = {CLI_GROUP(NULL, draw_options), {0}};
 static const cli_syntax draw_syntax = {
-    .command = "draw", .groups = draw_groups, .max_positionals = 1,
+    .command = "draw",
+    .groups = draw_groups,
+    .max_positionals = 1,
     .too_many = "expected one script, got '%s' as a second",
-    .min_positionals = 1, .too_few = "expected a script FILE (or - for stdin)",
+    .min_positionals = 1,
+    .too_few = "expected a script FILE (or - for stdin)",
 };
 static const cli_syntax *const draw_syntaxes[] = {&draw_syntax, NULL};
 

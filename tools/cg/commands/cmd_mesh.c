@@ -48,8 +48,10 @@ static void print_list(FILE *f, const char *key, const uint32_t *list, size_t co
 static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r)
 {
     if (r->bad_face_count) {
-        fprintf(f, "%sdropped %zu face%s with fewer than 3 corners, a vertex out of range or a "
-                   "repeated vertex; ", prefix, r->bad_face_count, r->bad_face_count == 1 ? "" : "s");
+        fprintf(f,
+                "%sdropped %zu face%s with fewer than 3 corners, a vertex out of range or a "
+                "repeated vertex; ",
+                prefix, r->bad_face_count, r->bad_face_count == 1 ? "" : "s");
         print_list(f, "faces (counted from 0)", r->bad_faces, r->bad_face_count, 1);
     }
     if (r->flipped_face_count)
@@ -61,17 +63,20 @@ static void print_changes(FILE *f, const char *prefix, const cg_hemesh_report *r
     if (r->nonmanifold_edge_count) {
         fprintf(f, "%sseparated the extra faces of %zu edge%s with more than two faces; ", prefix,
                 r->nonmanifold_edge_count, r->nonmanifold_edge_count == 1 ? "" : "s");
-        print_list(f, "edges (vertices counted from 0)", r->nonmanifold_edges, r->nonmanifold_edge_count, 2);
+        print_list(f, "edges (vertices counted from 0)", r->nonmanifold_edges,
+                   r->nonmanifold_edge_count, 2);
     }
     if (r->split_edge_count)
-        fprintf(f, "%ssplit %zu edge%s at the midpoint where, once separated, two edges joined "
-                   "the same two vertices\n", prefix,
-                r->split_edge_count, r->split_edge_count == 1 ? "" : "s");
+        fprintf(f,
+                "%ssplit %zu edge%s at the midpoint where, once separated, two edges joined "
+                "the same two vertices\n",
+                prefix, r->split_edge_count, r->split_edge_count == 1 ? "" : "s");
     if (r->added_vertex_count) {
-        fprintf(f, "%ssplit %zu non-manifold %s into one per fan (%zu vertices added); ",
-                prefix, r->nonmanifold_vertex_count, r->nonmanifold_vertex_count == 1 ? "vertex" : "vertices",
-                r->added_vertex_count);
-        print_list(f, "vertices (counted from 0)", r->nonmanifold_vertices, r->nonmanifold_vertex_count, 1);
+        fprintf(f, "%ssplit %zu non-manifold %s into one per fan (%zu vertices added); ", prefix,
+                r->nonmanifold_vertex_count,
+                r->nonmanifold_vertex_count == 1 ? "vertex" : "vertices", r->added_vertex_count);
+        print_list(f, "vertices (counted from 0)", r->nonmanifold_vertices,
+                   r->nonmanifold_vertex_count, 1);
     }
 }
 
@@ -97,9 +102,9 @@ static void print_genus(const cg_hemesh_stats *st, const long *genus, size_t gen
 /* ---- info -------------------------------------------------------------------- */
 
 /* The `key: value` lines of cg mesh info. */
-static void print_info(const char *path, const cg_mesh *mesh,
-                       const cg_hemesh_input_counts *input, const cg_hemesh_stats *st,
-                       const long *genus, size_t genus_count, const cg_hemesh_report *rep)
+static void print_info(const char *path, const cg_mesh *mesh, const cg_hemesh_input_counts *input,
+                       const cg_hemesh_stats *st, const long *genus, size_t genus_count,
+                       const cg_hemesh_report *rep)
 {
     printf("file: %s\n", path);
     printf("vertices: %zu\n", input->vertices);
@@ -122,7 +127,9 @@ static void print_info(const char *path, const cg_mesh *mesh,
     printf("nonmanifold_vertices: %zu\n", rep->nonmanifold_vertex_count);
     printf("misoriented_edges: %zu\n", rep->misoriented_edge_count);
     printf("bad_faces: %zu\n", rep->bad_face_count);
-    printf("face_kind: %s\n", st->all_triangles ? "triangles" : st->all_quads ? "quads" : "polygons");
+    printf("face_kind: %s\n", st->all_triangles ? "triangles"
+                              : st->all_quads   ? "quads"
+                                                : "polygons");
     cg_vec3 lo, hi;
     if (cg_mesh_bounds(mesh, &lo, &hi) == CG_OK) {
         printf("bounding_box_min: %.9g %.9g %.9g\n", lo.x, lo.y, lo.z);
@@ -186,9 +193,13 @@ static const cli_option info_options[] = {
 };
 static const cli_option_group info_groups[] = {CLI_GROUP(NULL, info_options), {0}};
 static const cli_syntax info_syntax = {
-    .command = "mesh", .action = "info", .groups = info_groups, .max_positionals = 1,
+    .command = "mesh",
+    .action = "info",
+    .groups = info_groups,
+    .max_positionals = 1,
     .too_many = "info: expected one FILE, got '%s' as a second",
-    .min_positionals = 1, .too_few = "info: expected a mesh FILE",
+    .min_positionals = 1,
+    .too_few = "info: expected a mesh FILE",
 };
 
 static int info(int argc, char **argv)
@@ -289,19 +300,31 @@ typedef struct subdivide_arguments {
 } subdivide_arguments;
 
 static const cli_option subdivide_options[] = {
-    {.name = "--loop", .kind = CLI_INT, .offset = offsetof(subdivide_arguments, loop_levels),
-     .value_name = "N", .what = "subdivision levels", .min = 0, .max = 12,
+    {.name = "--loop",
+     .kind = CLI_INT,
+     .offset = offsetof(subdivide_arguments, loop_levels),
+     .value_name = "N",
+     .what = "subdivision levels",
+     .min = 0,
+     .max = 12,
      .given = CLI_GIVEN(subdivide_arguments, loop_given),
      .help = "N levels of Loop subdivision (triangle meshes)"},
-    {.name = "--catmull-clark", .kind = CLI_INT,
-     .offset = offsetof(subdivide_arguments, catmull_clark_levels), .value_name = "N",
-     .what = "subdivision levels", .min = 0, .max = 12,
+    {.name = "--catmull-clark",
+     .kind = CLI_INT,
+     .offset = offsetof(subdivide_arguments, catmull_clark_levels),
+     .value_name = "N",
+     .what = "subdivision levels",
+     .min = 0,
+     .max = 12,
      .given = CLI_GIVEN(subdivide_arguments, catmull_clark_given),
      .help = "N levels of Catmull-Clark subdivision (any polygons)"},
 };
 static const cli_option_group subdivide_groups[] = {CLI_GROUP(NULL, subdivide_options), {0}};
 static const cli_syntax subdivide_syntax = {
-    .command = "mesh", .action = "subdivide", .groups = subdivide_groups, .max_positionals = 2,
+    .command = "mesh",
+    .action = "subdivide",
+    .groups = subdivide_groups,
+    .max_positionals = 2,
     .too_many = "subdivide: expected IN and OUT, got '%s' as a third",
 };
 
@@ -314,7 +337,9 @@ static int subdivide(int argc, char **argv)
         return CLI_USAGE;
     if (arguments.loop_given + arguments.catmull_clark_given > 1)
         return cli_usage_error("mesh", "subdivide: give one of --loop and --catmull-clark");
-    int scheme = arguments.loop_given ? 1 : arguments.catmull_clark_given ? 2 : 0; /* 1 Loop, 2 Catmull-Clark */
+    int scheme = arguments.loop_given            ? 1
+                 : arguments.catmull_clark_given ? 2
+                                                 : 0; /* 1 Loop, 2 Catmull-Clark */
     long levels = scheme == 1 ? arguments.loop_levels : arguments.catmull_clark_levels;
     if (!scheme)
         return cli_usage_error("mesh", "subdivide: expected --loop N or --catmull-clark N");
@@ -336,7 +361,8 @@ static int subdivide(int argc, char **argv)
     if (levels > 0 && predicted * 4 > 2.0e9) {
         cg_hemesh_free(h);
         return cli_fail("mesh subdivide: %ld levels would make about %.3g faces; at most 5e8 "
-                        "are supported", levels, predicted);
+                        "are supported",
+                        levels, predicted);
     }
     for (long l = 0; l < levels; l++) {
         cg_hemesh *next = NULL;
@@ -346,7 +372,8 @@ static int subdivide(int argc, char **argv)
         h = next;
         if (s == CG_EUNSUPPORTED)
             return cli_fail("mesh subdivide: %s: Loop subdivision needs a triangle mesh; use "
-                            "--catmull-clark for other polygons", paths[0]);
+                            "--catmull-clark for other polygons",
+                            paths[0]);
         if (s != CG_OK)
             return cli_fail("mesh subdivide: %s", cg_status_str(s));
     }
@@ -354,9 +381,12 @@ static int subdivide(int argc, char **argv)
 }
 
 static const cli_syntax repair_syntax = {
-    .command = "mesh", .action = "repair", .max_positionals = 2,
+    .command = "mesh",
+    .action = "repair",
+    .max_positionals = 2,
     .too_many = "repair: expected IN and OUT, got '%s' as a third",
-    .min_positionals = 2, .too_few = "repair: expected IN and OUT files",
+    .min_positionals = 2,
+    .too_few = "repair: expected IN and OUT files",
 };
 
 static int repair(int argc, char **argv)
@@ -376,8 +406,9 @@ static int repair(int argc, char **argv)
 
 static int run(int argc, char **argv)
 {
-    static const cli_action actions[] = {
-        {"info", info}, {"subdivide", subdivide}, {"repair", repair}};
+    static const cli_action actions[] = {{"info", info},
+                                         {"subdivide", subdivide},
+                                         {"repair", repair}};
     return cli_run_action("mesh", argc, argv, actions, 3, NULL, NULL);
 }
 

@@ -14,8 +14,8 @@
  * or --height keeping the aspect, rounded to whole pixels (as resvg and
  * rsvg-convert round: 16 x 16.007 at 64 px wide is 64 x 64); at least one
  * pixel. */
-static int output_size(double doc_w, double doc_h, double width, double height, double zoom,
-                       int *w, int *h, double *scale_out)
+static int output_size(double doc_w, double doc_h, double width, double height, double zoom, int *w,
+                       int *h, double *scale_out)
 {
     double scale = zoom;
     if (width > 0)
@@ -46,27 +46,48 @@ typedef struct svg_arguments {
 static const cli_option svg_options[] = {
     CLI_OPTION_OUTPUT(svg_arguments, output, "OUT",
                       "the image to write (required): .png, .ppm or .pgm"),
-    {.name = "--width", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, width),
-     .value_name = "W", .given = CLI_GIVEN(svg_arguments, width_given), .low = 0,
-     .high = CG_IMAGE_MAX_SIDE, .open = CLI_OPEN_LOW,
+    {.name = "--width",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(svg_arguments, width),
+     .value_name = "W",
+     .given = CLI_GIVEN(svg_arguments, width_given),
+     .low = 0,
+     .high = CG_IMAGE_MAX_SIDE,
+     .open = CLI_OPEN_LOW,
      .range_text = "a number > 0 and at most 16777216",
      .help = "W pixels wide, the height keeping the aspect"},
-    {.name = "--height", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, height),
-     .value_name = "H", .given = CLI_GIVEN(svg_arguments, height_given), .low = 0,
-     .high = CG_IMAGE_MAX_SIDE, .open = CLI_OPEN_LOW,
+    {.name = "--height",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(svg_arguments, height),
+     .value_name = "H",
+     .given = CLI_GIVEN(svg_arguments, height_given),
+     .low = 0,
+     .high = CG_IMAGE_MAX_SIDE,
+     .open = CLI_OPEN_LOW,
      .range_text = "a number > 0 and at most 16777216",
      .help = "H pixels high, the width keeping the aspect"},
-    {.name = "--zoom", .kind = CLI_DOUBLE, .offset = offsetof(svg_arguments, zoom),
-     .value_name = "Z", .given = CLI_GIVEN(svg_arguments, zoom_given), .low = 0, .high = 1e6,
-     .open = CLI_OPEN_LOW, .range_text = "a number > 0",
+    {.name = "--zoom",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(svg_arguments, zoom),
+     .value_name = "Z",
+     .given = CLI_GIVEN(svg_arguments, zoom_given),
+     .low = 0,
+     .high = 1e6,
+     .open = CLI_OPEN_LOW,
+     .range_text = "a number > 0",
      .help = "Z times the document's size (default 1)"},
-    {.name = "--background", .kind = CLI_COLOR, .offset = offsetof(svg_arguments, background),
-     .value_name = "COLOR", .given = CLI_GIVEN(svg_arguments, background_given),
+    {.name = "--background",
+     .kind = CLI_COLOR,
+     .offset = offsetof(svg_arguments, background),
+     .value_name = "COLOR",
+     .given = CLI_GIVEN(svg_arguments, background_given),
      .help = "the colour under the picture (default transparent)"},
 };
 static const cli_option_group svg_groups[] = {CLI_GROUP(NULL, svg_options), {0}};
 static const cli_syntax svg_syntax = {
-    .command = "svg", .groups = svg_groups, .max_positionals = 1,
+    .command = "svg",
+    .groups = svg_groups,
+    .max_positionals = 1,
     .too_many = "expected one input file, got '%s' as a second",
 };
 static const cli_syntax *const svg_syntaxes[] = {&svg_syntax, NULL};
@@ -89,8 +110,7 @@ static int run(int argc, char **argv)
     if (!out)
         return cli_usage_error("svg", "expected -o OUT.png");
     if (cg_file_format_from_path(out) == CG_FILE_UNKNOWN)
-        return cli_usage_error("svg", "%s: unknown output format (expected .png, .ppm, .pgm)",
-                               out);
+        return cli_usage_error("svg", "%s: unknown output format (expected .png, .ppm, .pgm)", out);
     cg_svg *svg;
     cg_error err;
     if (cg_svg_load(in, &svg, &err) != CG_OK)
@@ -104,9 +124,9 @@ static int run(int argc, char **argv)
     if (output_size(doc_w, doc_h, width, height, zoom > 0 ? zoom : 1, &w, &h, &scale) != 0) {
         cg_svg_free(svg);
         return cli_fail("%s: the picture would be %.0f x %.0f px, over the limit of %d px a side "
-                        "and %lld pixels", in, doc_w * (zoom > 0 ? zoom : 1),
-                        doc_h * (zoom > 0 ? zoom : 1), CG_IMAGE_MAX_SIDE,
-                        (long long)CG_IMAGE_MAX_PIXELS);
+                        "and %lld pixels",
+                        in, doc_w * (zoom > 0 ? zoom : 1), doc_h * (zoom > 0 ? zoom : 1),
+                        CG_IMAGE_MAX_SIDE, (long long)CG_IMAGE_MAX_PIXELS);
     }
     cg_image *image;
     cg_status status = cg_image_create(&image, w, h, CG_PIXEL_RGBA8);

@@ -8,8 +8,8 @@
 
 #include <string.h>
 
-static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms, trace_fill_algorithms,
-                                                trace_clip_algorithms};
+static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms,
+                                                trace_fill_algorithms, trace_clip_algorithms};
 
 static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
 

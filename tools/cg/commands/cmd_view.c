@@ -20,15 +20,20 @@ typedef struct view_arguments {
 static const cli_option view_options[] = {
     CLI_OPTION_SIZE(view_arguments, size, 0, "window size (default 1280x720)"),
     CLI_OPTION_THREADS(view_arguments, threads, 0, "rendering threads (default: all cores)"),
-    {.name = "--screenshot-dir", .kind = CLI_STRING,
-     .offset = offsetof(view_arguments, screenshot_dir), .value_name = "DIR",
+    {.name = "--screenshot-dir",
+     .kind = CLI_STRING,
+     .offset = offsetof(view_arguments, screenshot_dir),
+     .value_name = "DIR",
      .help = "where s saves cg-view-N.png (default .)"},
 };
 static const cli_option_group view_groups[] = {CLI_GROUP(NULL, view_options), {0}};
 static const cli_syntax view_syntax = {
-    .command = "view", .groups = view_groups, .max_positionals = 1,
+    .command = "view",
+    .groups = view_groups,
+    .max_positionals = 1,
     .too_many = "expected one MESH or SCENE file, got '%s' as well",
-    .min_positionals = 1, .too_few = "expected a MESH or SCENE file",
+    .min_positionals = 1,
+    .too_few = "expected a MESH or SCENE file",
 };
 static const cli_syntax *const view_syntaxes[] = {&view_syntax, NULL};
 
@@ -63,7 +68,8 @@ typedef struct viewer {
 static void place_camera(viewer *v)
 {
     cg_camera *c = &v->options.camera;
-    cg_vec3 offset = cg_vec3_make(cos(v->pitch) * sin(v->yaw), sin(v->pitch), cos(v->pitch) * cos(v->yaw));
+    cg_vec3 offset = cg_vec3_make(cos(v->pitch) * sin(v->yaw), sin(v->pitch),
+                                  cos(v->pitch) * cos(v->yaw));
     c->target = v->target;
     c->eye = cg_vec3_add(v->target, cg_vec3_scale(offset, v->distance));
     c->up = cg_vec3_make(0, 1, 0);
@@ -83,8 +89,10 @@ static const char *shading_name(cg_shading s)
 
 static const char *edges_name(cg_edge_mode e)
 {
-    return e == CG_EDGES_WIREFRAME ? "wireframe" : e == CG_EDGES_HIDDEN_LINE ? "hidden lines"
-         : e == CG_EDGES_OVERLAY ? "edges" : "faces";
+    return e == CG_EDGES_WIREFRAME     ? "wireframe"
+           : e == CG_EDGES_HIDDEN_LINE ? "hidden lines"
+           : e == CG_EDGES_OVERLAY     ? "edges"
+                                       : "faces";
 }
 
 static int draw_frame(viewer *v)
@@ -132,17 +140,28 @@ static int key(viewer *v, SDL_Keycode k)
     case SDLK_f: o->shading = CG_SHADING_FLAT; return 1;
     case SDLK_g: o->shading = CG_SHADING_GOURAUD; return 1;
     case SDLK_p: o->shading = CG_SHADING_PHONG; return 1;
-    case SDLK_w: o->edges = o->edges == CG_EDGES_WIREFRAME ? CG_EDGES_NONE : CG_EDGES_WIREFRAME; return 1;
-    case SDLK_e: o->edges = o->edges == CG_EDGES_OVERLAY ? CG_EDGES_NONE : CG_EDGES_OVERLAY; return 1;
-    case SDLK_h: o->edges = o->edges == CG_EDGES_HIDDEN_LINE ? CG_EDGES_NONE : CG_EDGES_HIDDEN_LINE; return 1;
+    case SDLK_w:
+        o->edges = o->edges == CG_EDGES_WIREFRAME ? CG_EDGES_NONE : CG_EDGES_WIREFRAME;
+        return 1;
+    case SDLK_e:
+        o->edges = o->edges == CG_EDGES_OVERLAY ? CG_EDGES_NONE : CG_EDGES_OVERLAY;
+        return 1;
+    case SDLK_h:
+        o->edges = o->edges == CG_EDGES_HIDDEN_LINE ? CG_EDGES_NONE : CG_EDGES_HIDDEN_LINE;
+        return 1;
     case SDLK_b: o->cull = o->cull == CG_CULL_BACK ? CG_CULL_NONE : CG_CULL_BACK; return 1;
-    case SDLK_z: o->algorithm = o->algorithm == CG_RENDER_PAINTER ? CG_RENDER_ZBUFFER : CG_RENDER_PAINTER; return 1;
+    case SDLK_z:
+        o->algorithm = o->algorithm == CG_RENDER_PAINTER ? CG_RENDER_ZBUFFER : CG_RENDER_PAINTER;
+        return 1;
     case SDLK_LEFT: v->yaw -= 0.2; return 1;
     case SDLK_RIGHT: v->yaw += 0.2; return 1;
     case SDLK_UP: v->pitch = fmin(v->pitch + 0.2, 1.5); return 1;
     case SDLK_DOWN: v->pitch = fmax(v->pitch - 0.2, -1.5); return 1;
-    case SDLK_PLUS: case SDLK_EQUALS: case SDLK_KP_PLUS: v->distance *= 0.8; return 1;
-    case SDLK_MINUS: case SDLK_KP_MINUS: v->distance /= 0.8; return 1;
+    case SDLK_PLUS:
+    case SDLK_EQUALS:
+    case SDLK_KP_PLUS: v->distance *= 0.8; return 1;
+    case SDLK_MINUS:
+    case SDLK_KP_MINUS: v->distance /= 0.8; return 1;
     case SDLK_s: save_screenshot(v); return 0;
     default: return 0;
     }
@@ -169,8 +188,9 @@ static int load(const char *path, int threads, cg_mesh **mesh, cg_render_options
         cg_scene *scene;
         if (cg_scene_load(path, &scene, &err) != CG_OK)
             return cli_fail("%s", err.message);
-        cg_status s = cg_scene_raster_options(scene, scene->algorithm == CG_SCENE_PAINTER
-                                                         ? CG_SCENE_PAINTER : CG_SCENE_ZBUFFER, o, &err);
+        cg_status s = cg_scene_raster_options(
+            scene, scene->algorithm == CG_SCENE_PAINTER ? CG_SCENE_PAINTER : CG_SCENE_ZBUFFER, o,
+            &err);
         if (s == CG_OK)
             s = cg_scene_world_mesh(scene, mesh, &err);
         cg_scene_free(scene);
@@ -263,11 +283,12 @@ static int window_open(window *w, const char *path, int width, int height)
         w->screen = SDL_CreateRenderer(w->window, -1, SDL_RENDERER_SOFTWARE);
     /* ABGR8888 is R, G, B, A in memory order on little-endian machines, and
      * RGBA8888 on big-endian ones: cg's byte order either way. */
-    w->texture = w->screen ? SDL_CreateTexture(w->screen,
-                                               SDL_BYTEORDER == SDL_LIL_ENDIAN ? SDL_PIXELFORMAT_ABGR8888
-                                                                               : SDL_PIXELFORMAT_RGBA8888,
-                                               SDL_TEXTUREACCESS_STREAMING, width, height)
-                           : NULL;
+    w->texture = w->screen
+                     ? SDL_CreateTexture(w->screen,
+                                         SDL_BYTEORDER == SDL_LIL_ENDIAN ? SDL_PIXELFORMAT_ABGR8888
+                                                                         : SDL_PIXELFORMAT_RGBA8888,
+                                         SDL_TEXTUREACCESS_STREAMING, width, height)
+                     : NULL;
     if (!w->texture)
         return cli_fail("view: cannot open a window: %s", SDL_GetError());
     return CLI_OK;
@@ -289,16 +310,10 @@ static void window_close(window *w)
 static int handle_event(viewer *v, const SDL_Event *e, int *dragging)
 {
     switch (e->type) {
-    case SDL_QUIT:
-        return -1;
-    case SDL_KEYDOWN:
-        return key(v, e->key.keysym.sym);
-    case SDL_MOUSEBUTTONDOWN:
-        *dragging = e->button.button;
-        return 0;
-    case SDL_MOUSEBUTTONUP:
-        *dragging = 0;
-        return 0;
+    case SDL_QUIT: return -1;
+    case SDL_KEYDOWN: return key(v, e->key.keysym.sym);
+    case SDL_MOUSEBUTTONDOWN: *dragging = e->button.button; return 0;
+    case SDL_MOUSEBUTTONUP: *dragging = 0; return 0;
     case SDL_MOUSEMOTION:
         if (*dragging == SDL_BUTTON_LEFT) {
             v->yaw -= e->motion.xrel * 0.01;
@@ -310,13 +325,9 @@ static int handle_event(viewer *v, const SDL_Event *e, int *dragging)
             return 1;
         }
         return 0;
-    case SDL_MOUSEWHEEL:
-        v->distance *= pow(0.9, e->wheel.y);
-        return 1;
-    case SDL_WINDOWEVENT:
-        return e->window.event == SDL_WINDOWEVENT_EXPOSED;
-    default:
-        return 0;
+    case SDL_MOUSEWHEEL: v->distance *= pow(0.9, e->wheel.y); return 1;
+    case SDL_WINDOWEVENT: return e->window.event == SDL_WINDOWEVENT_EXPOSED;
+    default: return 0;
     }
 }
 

@@ -86,7 +86,8 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
             size_t n = mesh->vertex_count;
             cg_mesh_free(mesh);
             return cli_fail("%s: %s: nothing to draw: the file has %zu vertices and no faces (a "
-                            "point cloud, lines only, or a truncated file)", command, s->input, n);
+                            "point cloud, lines only, or a truncated file)",
+                            command, s->input, n);
         }
         bounded = cg_mesh_bounds(mesh, &lo, &hi) == CG_OK;
     }
@@ -122,9 +123,11 @@ int raytrace_render(const char *command, const raytrace_settings *s, cg_image **
     if (status != CLI_OK)
         return status;
     cg_image *image;
-    if (cg_image_create(&image, s->common.size.width, s->common.size.height, CG_PIXEL_RGBA8) != CG_OK) {
+    if (cg_image_create(&image, s->common.size.width, s->common.size.height, CG_PIXEL_RGBA8)
+        != CG_OK) {
         render_raytrace_free(tracer);
-        return cli_fail("%s: cannot make a %dx%d image", command, s->common.size.width, s->common.size.height);
+        return cli_fail("%s: cannot make a %dx%d image", command, s->common.size.width,
+                        s->common.size.height);
     }
     int runs = s->common.repeat > 0 ? s->common.repeat : 1;
     double *times = malloc((size_t)runs * sizeof *times);

@@ -15,9 +15,10 @@ int render_command_run(const char *command, int argc, char **argv, int trace_onl
         return status;
     const raytrace_settings *s = &r.trace;
     if (!s->input && !s->extra.classic_scene)
-        return cli_usage_error(command, r.algorithm == RENDER_RAYTRACE
-                                            ? "expected a MESH file or --scene spheres (one of them)"
-                                            : "expected a MESH file");
+        return cli_usage_error(command,
+                               r.algorithm == RENDER_RAYTRACE
+                                   ? "expected a MESH file or --scene spheres (one of them)"
+                                   : "expected a MESH file");
     if (render_cli_check_output(command, s->common.output) != CLI_OK)
         return CLI_USAGE;
     if (s->input && !s->extra.classic_scene && render_scene_is_scene(s->input))

@@ -63,15 +63,18 @@ static void warn_if_nothing_drawn(const char *command, const char *path,
     if (o->edges == CG_EDGES_WIREFRAME || st.triangles == 0 || st.fragments > 0)
         return;
     if (st.culled == st.triangles)
-        fprintf(stderr, "cg: %s: warning: %s: every face was culled as a back face, nothing "
-                        "drawn (faces must be counter-clockwise seen from outside; try "
-                        "--cull none)\n", command, path);
+        fprintf(stderr,
+                "cg: %s: warning: %s: every face was culled as a back face, nothing "
+                "drawn (faces must be counter-clockwise seen from outside; try "
+                "--cull none)\n",
+                command, path);
     else if (st.object_culled)
         fprintf(stderr, "cg: %s: warning: %s: the mesh is outside the view, nothing drawn\n",
                 command, path);
     else
-        fprintf(stderr, "cg: %s: warning: %s: no face covers a pixel centre (%zu of %zu culled "
-                        "as back faces, the others degenerate, too small or outside the view)\n",
+        fprintf(stderr,
+                "cg: %s: warning: %s: no face covers a pixel centre (%zu of %zu culled "
+                "as back faces, the others degenerate, too small or outside the view)\n",
                 command, path, st.culled, st.triangles);
 }
 
@@ -118,7 +121,8 @@ int render_mesh_raster(const char *command, const render_request *r)
         size_t n = mesh->vertex_count;
         cg_mesh_free(mesh);
         return cli_fail("%s: %s: nothing to draw: the file has %zu vertices and no faces (a point "
-                        "cloud, lines only, or a truncated file)", command, path, n);
+                        "cloud, lines only, or a truncated file)",
+                        command, path, n);
     }
     cli_print_notes(mesh->notes);
     cg_render_options o = c->render;
@@ -129,8 +133,9 @@ int render_mesh_raster(const char *command, const render_request *r)
         cg_mesh_free(mesh);
         return status;
     }
-    o.algorithm = r->algorithm == RENDER_ZBUFFER ? CG_RENDER_ZBUFFER
-                  : r->algorithm == RENDER_PAINTER ? CG_RENDER_PAINTER : CG_RENDER_DEPTH_SORT;
+    o.algorithm = r->algorithm == RENDER_ZBUFFER   ? CG_RENDER_ZBUFFER
+                  : r->algorithm == RENDER_PAINTER ? CG_RENDER_PAINTER
+                                                   : CG_RENDER_DEPTH_SORT;
     render_progress progress;
     render_progress_start(&progress, command);
     if (!r->trace.quiet) {
@@ -142,7 +147,8 @@ int render_mesh_raster(const char *command, const render_request *r)
     if (cg_renderer_create(mesh, &o, &renderer, &err) != CG_OK)
         status = cli_fail("%s: %s", path, err.message);
     cg_mesh_free(mesh);
-    if (status == CLI_OK && cg_image_create(&image, c->size.width, c->size.height, CG_PIXEL_RGBA8) != CG_OK)
+    if (status == CLI_OK
+        && cg_image_create(&image, c->size.width, c->size.height, CG_PIXEL_RGBA8) != CG_OK)
         status = cli_fail("%s: cannot make a %dx%d image", command, c->size.width, c->size.height);
     if (status == CLI_OK)
         status = draw_and_write(command, r, renderer, &progress, image);

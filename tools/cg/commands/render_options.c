@@ -29,8 +29,8 @@ int render_cli_check_output(const char *command, const char *output)
     return CLI_OK;
 }
 
-int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded,
-                         cg_vec3 lo, cg_vec3 hi, cg_camera *camera)
+int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded, cg_vec3 lo,
+                         cg_vec3 hi, cg_camera *camera)
 {
     if (bounded)
         cg_camera_fit_depth(camera, lo, hi); /* the camera was checked: it cannot fail */
@@ -39,8 +39,10 @@ int render_cli_set_depth(const char *command, const render_cli_options *o, int b
     if (o->have_far)
         camera->far = o->far;
     if (!camera->orthographic && !(camera->near > 0))
-        return cli_usage_error(command, "--near: expected a distance > 0 for a perspective view, "
-                                        "got %g", camera->near);
+        return cli_usage_error(command,
+                               "--near: expected a distance > 0 for a perspective view, "
+                               "got %g",
+                               camera->near);
     if (!(camera->far > camera->near))
         return cli_usage_error(command, "--far: expected a distance greater than near (%g), got %g",
                                camera->near, camera->far);

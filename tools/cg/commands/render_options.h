@@ -35,8 +35,8 @@ void render_cli_options_default(render_cli_options *o);
  * then --near and --far where given.  CLI_OK, or the usage error for
  * command when the two do not make a range (far <= near, or a perspective
  * near <= 0). */
-int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded,
-                         cg_vec3 lo, cg_vec3 hi, cg_camera *camera);
+int render_cli_set_depth(const char *command, const render_cli_options *o, int bounded, cg_vec3 lo,
+                         cg_vec3 hi, cg_camera *camera);
 
 /* CLI_OK when output names a file of a known image format, otherwise the
  * usage error (missing -o, unknown extension). */

@@ -20,11 +20,39 @@ typedef enum render_algorithm {
  * algorithms use, or one that overrides a scene file's setting): index of
  * render_request.given. */
 typedef enum render_option {
-    OPT_ALGORITHM, OPT_EYE, OPT_TARGET, OPT_UP, OPT_FOV, OPT_ORTHO, OPT_VIEW_FROM,
-    OPT_LIGHT_DIR, OPT_AMBIENT, OPT_SPECULAR, OPT_SHININESS, OPT_COLOR, OPT_BACKGROUND,
-    OPT_EDGE_COLOR, OPT_CREASE, OPT_CULL, OPT_WIREFRAME, OPT_HIDDEN_LINE, OPT_EDGES,
-    OPT_OUTPUT_DEPTH, OPT_SPP, OPT_DEPTH, OPT_STATS, OPT_NO_SHADOWS, OPT_FLOOR, OPT_SCENE,
-    OPT_QUIET, OPT_SIZE, OPT_NEAR, OPT_FAR, OPT_SHADING, OPT_THREADS, OPT_COUNT
+    OPT_ALGORITHM,
+    OPT_EYE,
+    OPT_TARGET,
+    OPT_UP,
+    OPT_FOV,
+    OPT_ORTHO,
+    OPT_VIEW_FROM,
+    OPT_LIGHT_DIR,
+    OPT_AMBIENT,
+    OPT_SPECULAR,
+    OPT_SHININESS,
+    OPT_COLOR,
+    OPT_BACKGROUND,
+    OPT_EDGE_COLOR,
+    OPT_CREASE,
+    OPT_CULL,
+    OPT_WIREFRAME,
+    OPT_HIDDEN_LINE,
+    OPT_EDGES,
+    OPT_OUTPUT_DEPTH,
+    OPT_SPP,
+    OPT_DEPTH,
+    OPT_STATS,
+    OPT_NO_SHADOWS,
+    OPT_FLOOR,
+    OPT_SCENE,
+    OPT_QUIET,
+    OPT_SIZE,
+    OPT_NEAR,
+    OPT_FAR,
+    OPT_SHADING,
+    OPT_THREADS,
+    OPT_COUNT
 } render_option;
 
 typedef struct render_request {
@@ -33,9 +61,9 @@ typedef struct render_request {
      * --scene, --quiet). */
     raytrace_settings trace;
     render_algorithm algorithm;
-    double crease_degrees;  /* --crease (default 60) */
-    int output_depth;       /* --output-depth */
-    int given[OPT_COUNT];   /* how often each option was on the command line */
+    double crease_degrees; /* --crease (default 60) */
+    int output_depth;      /* --output-depth */
+    int given[OPT_COUNT];  /* how often each option was on the command line */
 } render_request;
 
 /* The command line of `cg render` and `cg trace-render`, for the help. */

@@ -45,8 +45,9 @@ static void apply_camera(const render_request *r, cg_scene *scene)
     const render_cli_options *c = &r->trace.common;
     cg_camera *camera = &scene->camera;
     int turned = c->have_eye || r->trace.have_view_from;
-    if (turned && (scene->projection == CG_SCENE_ISOMETRIC || scene->projection == CG_SCENE_DIMETRIC
-                   || scene->projection == CG_SCENE_TRIMETRIC))
+    if (turned
+        && (scene->projection == CG_SCENE_ISOMETRIC || scene->projection == CG_SCENE_DIMETRIC
+            || scene->projection == CG_SCENE_TRIMETRIC))
         scene->projection = CG_SCENE_ORTHOGRAPHIC;
     if (c->have_target)
         camera->target = c->target;
@@ -106,16 +107,18 @@ int render_scene_apply(const char *command, const render_request *r, cg_scene *s
         if (r->algorithm == RENDER_DEPTH_SORT)
             return cli_usage_error(command, "--algorithm depth-sort: not available with a scene "
                                             "file (expected zbuffer, painter or raytrace)");
-        scene->algorithm = r->algorithm == RENDER_RAYTRACE ? CG_SCENE_RAYTRACE
-                           : r->algorithm == RENDER_PAINTER ? CG_SCENE_PAINTER : CG_SCENE_ZBUFFER;
+        scene->algorithm = r->algorithm == RENDER_RAYTRACE  ? CG_SCENE_RAYTRACE
+                           : r->algorithm == RENDER_PAINTER ? CG_SCENE_PAINTER
+                                                            : CG_SCENE_ZBUFFER;
     }
     if (c->have_size) {
         scene->width = c->size.width;
         scene->height = c->size.height;
     }
     if (c->have_shading)
-        scene->shading = o->shading == CG_SHADING_FLAT ? CG_SCENE_FLAT
-                         : o->shading == CG_SHADING_GOURAUD ? CG_SCENE_GOURAUD : CG_SCENE_PHONG;
+        scene->shading = o->shading == CG_SHADING_FLAT      ? CG_SCENE_FLAT
+                         : o->shading == CG_SHADING_GOURAUD ? CG_SCENE_GOURAUD
+                                                            : CG_SCENE_PHONG;
     if (c->have_threads)
         scene->threads = o->threads;
     if (c->have_background)

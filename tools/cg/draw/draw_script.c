@@ -144,8 +144,7 @@ int draw_arg_double(const draw_state *state, const char *text, const char *what,
     return 0;
 }
 
-int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what,
-                         double *out)
+int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what, double *out)
 {
     if (draw_arg_double(state, text, what, out))
         return 1;
@@ -169,7 +168,9 @@ int draw_arg_points(const draw_state *state, int argc, char **argv, int first, i
     int numbers = argc - first;
     if (numbers < 2 * min_points || numbers % 2)
         return draw_error(state, "'%s' expects %s X Y pairs (%s), got %d number%s", argv[0],
-                          min_points == 2 ? "two or more" : min_points == 4 ? "four or more" : "more",
+                          min_points == 2   ? "two or more"
+                          : min_points == 4 ? "four or more"
+                                            : "more",
                           usage, numbers, numbers == 1 ? "" : "s");
     cg_vec2 *points = malloc((size_t)(numbers / 2) * sizeof *points);
     if (!points)
@@ -390,15 +391,17 @@ static int parse(draw_script *script, size_t size)
         where.line = number;
         const draw_command *command = find_command(argv[0]);
         if (!command) {
-            draw_error(&where, "unknown command '%s' (expected a command such as size, color, "
-                               "line, circle, bezier; see docs/draw-script.md)",
+            draw_error(&where,
+                       "unknown command '%s' (expected a command such as size, color, "
+                       "line, circle, bezier; see docs/draw-script.md)",
                        argv[0]);
             free(argv);
             draw_script_free(script);
             return 1;
         }
         if (core_array_reserve((void **)&script->lines, &capacity, (size_t)script->count + 1,
-                               sizeof *script->lines) != CG_OK) {
+                               sizeof *script->lines)
+            != CG_OK) {
             free(argv);
             goto out_of_memory;
         }

@@ -23,8 +23,8 @@ struct draw_line;
 
 typedef struct draw_state {
     /* where we are, for messages */
-    const char *file; /* script name as given ("-" shows as "<stdin>") */
-    int line;         /* line number of the command being run */
+    const char *file;       /* script name as given ("-" shows as "<stdin>") */
+    int line;               /* line number of the command being run */
     const char *json_array; /* non-NULL: the lines are this array of a JSON file */
 
     /* the canvas: NULL until `size W H` */
@@ -45,11 +45,11 @@ typedef struct draw_state {
     int consumed;
 
     /* filling (tools/cg/drawcmds_fill.c) */
-    int fill_rule;       /* cg_fill_rule of polygon, aapolygon, fill; default non-zero */
-    double line_width;   /* `width W` of stroke, default 1 */
-    int line_join;       /* cg_line_join, default miter */
-    int line_cap;        /* cg_line_cap, default butt */
-    double dashes[32];   /* `dash ON OFF ...`, dash_count 0: solid */
+    int fill_rule;     /* cg_fill_rule of polygon, aapolygon, fill; default non-zero */
+    double line_width; /* `width W` of stroke, default 1 */
+    int line_join;     /* cg_line_join, default miter */
+    int line_cap;      /* cg_line_cap, default butt */
+    double dashes[32]; /* `dash ON OFF ...`, dash_count 0: solid */
     int dash_count;
     struct draw_fill *fill; /* polygon being built, current path, scratch */
 } draw_state;
@@ -87,8 +87,7 @@ int draw_arg_int(const draw_state *state, const char *text, const char *what, in
 /* A finite decimal number. */
 int draw_arg_double(const draw_state *state, const char *text, const char *what, double *out);
 /* A finite decimal number >= 0. */
-int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what,
-                         double *out);
+int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what, double *out);
 /* A colour: #rgb, #rrggbb, #rrggbbaa or a name. */
 int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out);
 /* Points given as X Y pairs from argv[first] to argv[argc - 1]: at least

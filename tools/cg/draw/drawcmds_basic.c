@@ -17,8 +17,9 @@ static int run_size(draw_state *s, int argc, char **argv)
         return draw_error(s, "the canvas size is already set: 'size' may appear only once");
     if (w < 1 || h < 1 || w > CG_IMAGE_MAX_SIDE || h > CG_IMAGE_MAX_SIDE
         || (size_t)w * (size_t)h > CG_IMAGE_MAX_PIXELS)
-        return draw_error(s, "expected a canvas size from 1 x 1 to %d x %d with at most %zu pixels, "
-                             "got %s x %s",
+        return draw_error(s,
+                          "expected a canvas size from 1 x 1 to %d x %d with at most %zu pixels, "
+                          "got %s x %s",
                           CG_IMAGE_MAX_SIDE, CG_IMAGE_MAX_SIDE, (size_t)CG_IMAGE_MAX_PIXELS,
                           argv[1], argv[2]);
     cg_status status = cg_image_create(&s->canvas, w, h, CG_PIXEL_RGBA8);
@@ -118,7 +119,8 @@ static int run_polyline(draw_state *s, int argc, char **argv)
     cg_image *canvas;
     int n = argc - 1;
     if (n < 2 || n % 2)
-        return draw_error(s, "'polyline' expects one or more X Y pairs of integers, got %d number%s",
+        return draw_error(s,
+                          "'polyline' expects one or more X Y pairs of integers, got %d number%s",
                           n, n == 1 ? "" : "s");
     if (!(canvas = draw_canvas(s)))
         return 1;
@@ -183,13 +185,15 @@ static int run_ellipse(draw_state *s, int argc, char **argv)
 {
     int v[4];
     cg_image *canvas;
-    if (ints(s, argc, argv, "ellipse CX CY RX RY", 4, ellipse_names, v)
-        || radius_ok(s, v[2], "RX") || radius_ok(s, v[3], "RY") || !(canvas = draw_canvas(s)))
+    if (ints(s, argc, argv, "ellipse CX CY RX RY", 4, ellipse_names, v) || radius_ok(s, v[2], "RX")
+        || radius_ok(s, v[3], "RY") || !(canvas = draw_canvas(s)))
         return 1;
     cg_status status = cg_draw_ellipse(canvas, v[0], v[1], v[2], v[3], s->color);
     if (status == CG_ERANGE)
-        return draw_error(s, "radii %d and %d are out of range: ellipses take radii up to 2^30 = "
-                          "1073741824", v[2], v[3]);
+        return draw_error(s,
+                          "radii %d and %d are out of range: ellipses take radii up to 2^30 = "
+                          "1073741824",
+                          v[2], v[3]);
     return draw_check(s, status);
 }
 
@@ -205,8 +209,10 @@ static int run_aaellipse(draw_state *s, int argc, char **argv)
         return 1;
     cg_status status = cg_draw_ellipse_aa(canvas, v[0], v[1], v[2], v[3], s->color);
     if (status == CG_ERANGE)
-        return draw_error(s, "radii %s and %s are out of range: anti-aliased ellipses take radii "
-                          "up to 1e9", argv[3], argv[4]);
+        return draw_error(s,
+                          "radii %s and %s are out of range: anti-aliased ellipses take radii "
+                          "up to 1e9",
+                          argv[3], argv[4]);
     return draw_check(s, status);
 }
 
@@ -250,8 +256,9 @@ static int curve_status(draw_state *s, cg_status status)
     if (status == CG_EEMPTY)
         return draw_error(s, "zero-length curve: every control point is the same point");
     if (status == CG_ERANGE)
-        return draw_error(s, "curve out of range: coordinates beyond 1e9 in magnitude (with "
-                             "antialias off), or tolerance %g too small for its size",
+        return draw_error(s,
+                          "curve out of range: coordinates beyond 1e9 in magnitude (with "
+                          "antialias off), or tolerance %g too small for its size",
                           s->tolerance);
     return draw_check(s, status);
 }
@@ -288,10 +295,10 @@ static int run_hermite(draw_state *s, int argc, char **argv)
     if (doubles(s, argc, argv, "hermite P1X P1Y P4X P4Y R1X R1Y R4X R4Y", 8, names, v)
         || !(canvas = draw_canvas(s)))
         return 1;
-    return curve_status(s, cg_draw_hermite(canvas, cg_vec2_make(v[0], v[1]),
-                                           cg_vec2_make(v[2], v[3]), cg_vec2_make(v[4], v[5]),
-                                           cg_vec2_make(v[6], v[7]), s->tolerance, mode(s),
-                                           s->color));
+    return curve_status(s,
+                        cg_draw_hermite(canvas, cg_vec2_make(v[0], v[1]), cg_vec2_make(v[2], v[3]),
+                                        cg_vec2_make(v[4], v[5]), cg_vec2_make(v[6], v[7]),
+                                        s->tolerance, mode(s), s->color));
 }
 
 static int run_spline(draw_state *s, int argc, char **argv, int catmull_rom)
@@ -344,5 +351,5 @@ static const draw_command commands[] = {
     {"catmullrom", "catmullrom X0 Y0 X1 Y1 X2 Y2 X3 Y3 ...", run_catmullrom},
 };
 
-const draw_command_table draw_commands_basic = {
-    "basic", commands, (int)(sizeof commands / sizeof commands[0])};
+const draw_command_table draw_commands_basic = {"basic", commands,
+                                                (int)(sizeof commands / sizeof commands[0])};

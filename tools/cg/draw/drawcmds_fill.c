@@ -13,7 +13,7 @@
 /* What the fill commands keep between lines. */
 typedef struct draw_fill {
     cg_rasterizer *rasterizer;
-    cg_path *path;       /* the current path (`path`), for fill and stroke */
+    cg_path *path; /* the current path (`path`), for fill and stroke */
     /* the polygon being drawn: a polygon line's points, then each contour's */
     cg_vec2 *points;
     int *sizes;
@@ -106,16 +106,20 @@ static int run_compositing(draw_state *s, int argc, char **argv)
     cg_composite_operator op = CG_OPERATOR_OVER;
     cg_blend_mode mode = CG_BLEND_NORMAL;
     if (argc > 2 && cg_composite_operator_parse(argv[2], &op) != CG_OK)
-        return draw_error(s, "expected an operator (over, source, in, out, atop, xor, plus, "
-                          "clear, destination-over, ...) after '%s', got '%s'", argv[1], argv[2]);
+        return draw_error(s,
+                          "expected an operator (over, source, in, out, atop, xor, plus, "
+                          "clear, destination-over, ...) after '%s', got '%s'",
+                          argv[1], argv[2]);
     if (argc > 3 && cg_blend_mode_parse(argv[3], &mode) != CG_OK)
-        return draw_error(s, "expected a blend mode (normal, multiply, screen, overlay, ..., "
-                          "luminosity) after '%s', got '%s'", argv[2], argv[3]);
+        return draw_error(s,
+                          "expected a blend mode (normal, multiply, screen, overlay, ..., "
+                          "luminosity) after '%s', got '%s'",
+                          argv[2], argv[3]);
     draw_fill *f = fill_of(s);
     if (!f)
         return out_of_memory(s);
-    return draw_check(s, cg_rasterizer_set_compositing(f->rasterizer, (cg_compositing_space)space,
-                                                       op, mode));
+    return draw_check(
+        s, cg_rasterizer_set_compositing(f->rasterizer, (cg_compositing_space)space, op, mode));
 }
 
 static int run_width(draw_state *s, int argc, char **argv)
@@ -124,8 +128,10 @@ static int run_width(draw_state *s, int argc, char **argv)
     if (draw_arg_count(s, argc, argv, 1, "width W") || draw_arg_double(s, argv[1], "W", &w))
         return 1;
     if (!(w > 0) || w > CG_FILL_MAX_COORD)
-        return draw_error(s, "expected a stroke width W > 0 and at most 2^40 = 1099511627776, "
-                          "got '%s'", argv[1]);
+        return draw_error(s,
+                          "expected a stroke width W > 0 and at most 2^40 = 1099511627776, "
+                          "got '%s'",
+                          argv[1]);
     s->line_width = w;
     return 0;
 }
@@ -182,21 +188,25 @@ static int add_contour(draw_state *s, draw_fill *f, int argc, char **argv, const
 {
     int numbers = argc - 1;
     if (numbers < 6 || numbers % 2)
-        return draw_error(s, "'%s' expects three or more X Y pairs (%s), got %d number%s",
-                          argv[0], usage, numbers, numbers == 1 ? "" : "s");
+        return draw_error(s, "'%s' expects three or more X Y pairs (%s), got %d number%s", argv[0],
+                          usage, numbers, numbers == 1 ? "" : "s");
     int n = numbers / 2;
     if (core_array_reserve((void **)&f->points, &f->point_capacity,
-                           (size_t)f->point_count + (size_t)n, sizeof *f->points) != CG_OK
+                           (size_t)f->point_count + (size_t)n, sizeof *f->points)
+            != CG_OK
         || core_array_reserve((void **)&f->sizes, &f->contour_capacity,
-                              (size_t)f->contour_count + 1, sizeof *f->sizes) != CG_OK)
+                              (size_t)f->contour_count + 1, sizeof *f->sizes)
+               != CG_OK)
         return out_of_memory(s);
     cg_vec2 *points = f->points + f->point_count;
     if (draw_arg_point_pairs(s, argv + 1, n, points))
         return 1;
     for (int i = 0; i < 2 * n; i++) {
         if (!(fabs(i % 2 ? points[i / 2].y : points[i / 2].x) <= CG_FILL_MAX_COORD))
-            return draw_error(s, "%c%d = %s is out of range: coordinates are at most 2^40 = "
-                              "1099511627776 in magnitude", i % 2 ? 'Y' : 'X', i / 2, argv[1 + i]);
+            return draw_error(s,
+                              "%c%d = %s is out of range: coordinates are at most 2^40 = "
+                              "1099511627776 in magnitude",
+                              i % 2 ? 'Y' : 'X', i / 2, argv[1 + i]);
     }
     f->point_count += n;
     f->sizes[f->contour_count++] = n;

@@ -25,9 +25,18 @@ enum { SECTION_COUNT = sizeof sections / sizeof sections[0] };
 static const char *chapter_title(int chapter)
 {
     static const char *titles[] = {
-        NULL, "Introduction", "2D drawing", "Projection", "Geometrical transformations",
-        "Visible-surface determination", "Illumination", "Color models", "Shading",
-        "Mesh processing", "Filling", "Clipping",
+        NULL,
+        "Introduction",
+        "2D drawing",
+        "Projection",
+        "Geometrical transformations",
+        "Visible-surface determination",
+        "Illumination",
+        "Color models",
+        "Shading",
+        "Mesh processing",
+        "Filling",
+        "Clipping",
     };
     if (chapter >= 1 && chapter <= 11)
         return titles[chapter];
@@ -75,7 +84,8 @@ int demo_add(demo_context *context, const char *file, const cg_image *image, con
     if (status != CLI_OK)
         return status;
     if (core_array_reserve((void **)&context->entries, &context->capacity, context->count + 1,
-                           sizeof *context->entries) != CG_OK)
+                           sizeof *context->entries)
+        != CG_OK)
         return cli_fail("demo: out of memory");
     demo_entry *entry = &context->entries[context->count++];
     entry->section = context->current;
@@ -178,19 +188,20 @@ static int write_page(const demo_context *context, const demo_section **ordered)
         free(temporary);
         return status;
     }
-    fprintf(out, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                 "<title>cg gallery</title>\n<style>\n"
-                 "body{font-family:sans-serif;margin:2em;background:#fafafa;color:#222}\n"
-                 "h2{border-bottom:1px solid #ccc;margin-top:2em}\n"
-                 ".grid{display:flex;flex-wrap:wrap;gap:1.5em}\n"
-                 "figure{margin:0;max-width:420px}\n"
-                 "figure img{max-width:100%%;border:1px solid #ddd;background:#fff;"
-                 "image-rendering:pixelated}\n"
-                 "figcaption{font-size:0.9em;margin-top:0.3em}\n"
-                 "code{display:block;font-size:0.8em;color:#555;margin-top:0.2em;"
-                 "white-space:pre-wrap}\n</style>\n</head>\n<body>\n"
-                 "<h1>cg gallery</h1>\n<p>Every picture below was rendered by cg %s; the "
-                 "command under each one, run in this folder, makes it again.</p>\n",
+    fprintf(out,
+            "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            "<title>cg gallery</title>\n<style>\n"
+            "body{font-family:sans-serif;margin:2em;background:#fafafa;color:#222}\n"
+            "h2{border-bottom:1px solid #ccc;margin-top:2em}\n"
+            ".grid{display:flex;flex-wrap:wrap;gap:1.5em}\n"
+            "figure{margin:0;max-width:420px}\n"
+            "figure img{max-width:100%%;border:1px solid #ddd;background:#fff;"
+            "image-rendering:pixelated}\n"
+            "figcaption{font-size:0.9em;margin-top:0.3em}\n"
+            "code{display:block;font-size:0.8em;color:#555;margin-top:0.2em;"
+            "white-space:pre-wrap}\n</style>\n</head>\n<body>\n"
+            "<h1>cg gallery</h1>\n<p>Every picture below was rendered by cg %s; the "
+            "command under each one, run in this folder, makes it again.</p>\n",
             CG_VERSION_STRING);
     int chapter = -1;
     for (int s = 0; s < SECTION_COUNT; s++) {
@@ -277,7 +288,8 @@ static const char *section_titles(const demo_section *const *ordered, char *list
     size_t used = 0;
     list[0] = '\0';
     for (int s = 0; s < SECTION_COUNT && used < room; s++)
-        used += (size_t)snprintf(list + used, room - used, "%s%s", s ? "; " : "", ordered[s]->title);
+        used += (size_t)snprintf(list + used, room - used, "%s%s", s ? "; " : "",
+                                 ordered[s]->title);
     return list;
 }
 
@@ -287,8 +299,11 @@ typedef struct demo_arguments {
 
 static const cli_option demo_options[] = {
     CLI_OPTION_OUTPUT(demo_arguments, directory, "DIR", "the gallery's folder (default out)"),
-    {.name = "--only", .kind = CLI_STRING, .offset = offsetof(demo_arguments, only),
-     .value_name = "TEXT", .help = "only the sections whose title contains TEXT"},
+    {.name = "--only",
+     .kind = CLI_STRING,
+     .offset = offsetof(demo_arguments, only),
+     .value_name = "TEXT",
+     .help = "only the sections whose title contains TEXT"},
 };
 static const cli_option_group demo_groups[] = {CLI_GROUP(NULL, demo_options), {0}};
 static const cli_syntax demo_syntax = {.command = "demo", .groups = demo_groups};

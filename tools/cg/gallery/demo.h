@@ -11,8 +11,8 @@
 typedef struct demo_context demo_context;
 
 typedef struct demo_section {
-    int chapter;        /* chapter of the lecture notes, 2 to 11 */
-    const char *title;  /* heading of this group of pictures */
+    int chapter;       /* chapter of the lecture notes, 2 to 11 */
+    const char *title; /* heading of this group of pictures */
     /* Renders the pictures with demo_add; returns 0, or non-zero on failure. */
     int (*render)(demo_context *context);
 } demo_section;

@@ -28,11 +28,11 @@ static double unit(uint64_t *s)
  * script, as clip_view_polyline strokes it: round joins and caps.  Pixel
  * coordinates with 4 decimals: the script defines the picture, and this
  * keeps the mesh pictures' scripts small. */
-static void script_polyline(sketch *t, const clip_view *v, const cg_vec2 *p, size_t n,
-                            int closed, double width, cg_rgba8 color)
+static void script_polyline(sketch *t, const clip_view *v, const cg_vec2 *p, size_t n, int closed,
+                            double width, cg_rgba8 color)
 {
-    sketch_add(t, "color #%02x%02x%02x%02x\nwidth %.17g\npath", color.r, color.g, color.b,
-               color.a, width);
+    sketch_add(t, "color #%02x%02x%02x%02x\nwidth %.17g\npath", color.r, color.g, color.b, color.a,
+               width);
     for (size_t i = 0; i < n; i++) {
         cg_vec2 q = clip_view_map(v, p[i]);
         sketch_add(t, " %c %.4f %.4f", i ? 'L' : 'M', q.x, q.y);
@@ -99,14 +99,18 @@ static int lines(demo_context *c, int liang)
     cg_rect w = {-1.5, -1, 1.5, 1};
     clip_view v = clip_view_fit(cg_vec2_make(-3, -2.2), cg_vec2_make(3, 2.2), 480, 360, 10);
     /* the window's lines extended: the nine regions of the rCodes */
-    cg_vec2 ext[4][2] = {{{-1.5, -3}, {-1.5, 3}}, {{1.5, -3}, {1.5, 3}}, {{-4, -1}, {4, -1}}, {{-4, 1}, {4, 1}}};
+    cg_vec2 ext[4][2] = {{{-1.5, -3}, {-1.5, 3}},
+                         {{1.5, -3}, {1.5, 3}},
+                         {{-4, -1}, {4, -1}},
+                         {{-4, 1}, {4, 1}}};
     for (int i = 0; i < 4; i++)
         script_polyline(k, &v, ext[i], 2, 0, 1, (cg_rgba8){220, 220, 220, 255});
     cg_vec2 box[4] = {{-1.5, -1}, {1.5, -1}, {1.5, 1}, {-1.5, 1}};
     script_polyline(k, &v, box, 4, 1, 2.5, WINDOW);
     uint64_t s = liang ? 99 : 7;
     for (int i = 0; i < 40; i++) {
-        cg_vec2 a = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2}, b = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2};
+        cg_vec2 a = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2},
+                b = {unit(&s) * 6 - 3, unit(&s) * 4.4 - 2.2};
         cg_vec2 seg[2] = {a, b};
         script_polyline(k, &v, seg, 2, 0, 1.2, GREY);
         int acc = 0;
@@ -161,7 +165,8 @@ static void save_wkt(demo_context *c, const char *name, const cg_polygon_set *s)
             fputs(r ? ", ((" : "((", f);
             for (size_t i = s->ring_start[r]; i <= s->ring_start[r + 1]; i++) {
                 size_t k = i < s->ring_start[r + 1] ? i : s->ring_start[r];
-                fprintf(f, "%s%.9g %.9g", i > s->ring_start[r] ? ", " : "", s->points[k].x, s->points[k].y);
+                fprintf(f, "%s%.9g %.9g", i > s->ring_start[r] ? ", " : "", s->points[k].x,
+                        s->points[k].y);
             }
             fputs("))", f);
         }
@@ -190,7 +195,8 @@ static void panel(sketch *im, int col, int row, int pw, int ph, const cg_polygon
 static int polygons(demo_context *c)
 {
     /* Sutherland-Hodgman: a concave 'W' against a convex pentagon (Fig. 11.4) */
-    cg_vec2 W[] = {{0, 4}, {1, 0}, {2, 3}, {3, 0}, {4, 4}, {3.3, 4}, {3, 1.6}, {2, 4.6}, {1, 1.6}, {0.7, 4}};
+    cg_vec2 W[] = {{0, 4},   {1, 0},   {2, 3},   {3, 0},   {4, 4},
+                   {3.3, 4}, {3, 1.6}, {2, 4.6}, {1, 1.6}, {0.7, 4}};
     cg_vec2 pent[] = {{0.3, 0.8}, {3.7, 0.8}, {4.2, 3}, {2, 4.3}, {-0.2, 3}};
     cg_vec2 *out = NULL;
     size_t n = 0;
@@ -207,14 +213,15 @@ static int polygons(demo_context *c)
     save_wkt(c, "clip-pentagon.wkt", &sp);
     int r = add(c, "clip-sutherland-hodgman", im,
                 "Sutherland-Hodgman: the concave W (blue) clipped edge by edge against a convex "
-                "pentagon (red); one output polygon, joined along the window's edge as the notes warn (the clipped polygon as WKT: cg clip "
+                "pentagon (red); one output polygon, joined along the window's edge as the notes "
+                "warn (the clipped polygon as WKT: cg clip "
                 "polygon clip-pentagon.wkt clip-w.wkt)");
     cg_polygon_set wr = {0};
     if (!r) {
         /* Weiler-Atherton: a comb-shaped window splits a disc into pieces */
-        cg_vec2 comb[] = {{-1.4, -1.6}, {1.4, -1.6}, {1.4, 1.3}, {0.9, 1.3}, {0.9, -1.2}, {0.45, -1.2},
-                          {0.45, 1.3}, {-0.05, 1.3}, {-0.05, -1.2}, {-0.5, -1.2}, {-0.5, 1.3}, {-0.95, 1.3},
-                          {-0.95, -1.2}, {-1.4, -1.2}};
+        cg_vec2 comb[] = {{-1.4, -1.6}, {1.4, -1.6},  {1.4, 1.3},    {0.9, 1.3},    {0.9, -1.2},
+                          {0.45, -1.2}, {0.45, 1.3},  {-0.05, 1.3},  {-0.05, -1.2}, {-0.5, -1.2},
+                          {-0.5, 1.3},  {-0.95, 1.3}, {-0.95, -1.2}, {-1.4, -1.2}};
         cg_polygon_set disc = {0}, cs = {0};
         circle(&disc, 0, 0.25, 1.15, 64, 0, 1);
         ring_set(&cs, comb, 14, 1);
@@ -222,12 +229,13 @@ static int polygons(demo_context *c)
         cg_clip_weiler_atherton(disc.points, disc.point_count, comb, 14, &wr);
         im = canvas(480, 420);
         if (im) {
-            clip_view v = clip_view_fit(cg_vec2_make(-1.6, -1.7), cg_vec2_make(1.6, 1.5), 480, 420, 14);
+            clip_view v = clip_view_fit(cg_vec2_make(-1.6, -1.7), cg_vec2_make(1.6, 1.5), 480, 420,
+                                        14);
             for (size_t p = 0; p < wr.polygon_count; p++) {
                 cg_polygon_set one = {0};
                 for (size_t k = wr.polygon_start[p]; k < wr.polygon_start[p + 1]; k++)
-                    ring_set(&one, wr.points + wr.ring_start[k], wr.ring_start[k + 1] - wr.ring_start[k],
-                             k == wr.polygon_start[p]);
+                    ring_set(&one, wr.points + wr.ring_start[k],
+                             wr.ring_start[k + 1] - wr.ring_start[k], k == wr.polygon_start[p]);
                 script_fill(im, &v, &one, p % 2 ? RESULT2 : RESULT);
                 cg_polygon_set_clear(&one);
             }
@@ -238,10 +246,12 @@ static int polygons(demo_context *c)
         save_wkt(c, "clip-comb.wkt", &cs);
         save_wkt(c, "clip-disc.wkt", &disc);
         char caption[300];
-        snprintf(caption, sizeof caption,
-                 "Weiler-Atherton: a disc (blue) clipped by a concave comb (red) gives %zu separate "
-                 "polygons (as WKT: cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm "
-                 "weiler-atherton)", wr.polygon_count);
+        snprintf(
+            caption, sizeof caption,
+            "Weiler-Atherton: a disc (blue) clipped by a concave comb (red) gives %zu separate "
+            "polygons (as WKT: cg clip polygon clip-comb.wkt clip-disc.wkt --algorithm "
+            "weiler-atherton)",
+            wr.polygon_count);
         r = add(c, "clip-weiler-atherton", im, caption);
         cg_polygon_set_clear(&disc);
         cg_polygon_set_clear(&cs);
@@ -273,9 +283,14 @@ static int booleans(demo_context *c)
         return 1;
     cg_vec2 lo = {-1.15, -1.3}, hi = {2.25, 1.55};
     panel(im, 0, 0, pw, ph, &a, &b, NULL, lo, hi);
-    struct { cg_clip_op op; int swap; } cases[5] = {{CG_CLIP_DIFFERENCE, 0}, {CG_CLIP_DIFFERENCE, 1},
-                                                    {CG_CLIP_UNION, 0}, {CG_CLIP_INTERSECTION, 0},
-                                                    {CG_CLIP_XOR, 0}};
+    struct {
+        cg_clip_op op;
+        int swap;
+    } cases[5] = {{CG_CLIP_DIFFERENCE, 0},
+                  {CG_CLIP_DIFFERENCE, 1},
+                  {CG_CLIP_UNION, 0},
+                  {CG_CLIP_INTERSECTION, 0},
+                  {CG_CLIP_XOR, 0}};
     int status = 0;
     for (int k = 0; k < 5; k++) {
         const cg_polygon_set *x = cases[k].swap ? &b : &a, *y = cases[k].swap ? &a : &b;
@@ -283,10 +298,11 @@ static int booleans(demo_context *c)
             status = 1;
         panel(im, (k + 1) % 3, (k + 1) / 3, pw, ph, &a, &b, &r, lo, hi);
     }
-    status |= add(c, "clip-boolean", im,
-                  "Figure 11.6 by the scanbeam (Vatti-style) boolean operations: A (blue, a disc with a "
-                  "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B (one of them: "
-                  "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o xor.png)");
+    status |= add(
+        c, "clip-boolean", im,
+        "Figure 11.6 by the scanbeam (Vatti-style) boolean operations: A (blue, a disc with a "
+        "hole) and B (red); then A-B, B-A, A union B, A intersection B, A xor B (one of them: "
+        "cg clip boolean xor clip-a.wkt clip-b.wkt --fill nonzero -o xor.png)");
     cg_polygon_set_clear(&a);
     cg_polygon_set_clear(&b);
     cg_polygon_set_clear(&r);
@@ -313,14 +329,18 @@ static int fill_rules(demo_context *c)
         return 1;
     int status = 0;
     for (int k = 0; k < 4; k++) {
-        if (cg_clip_boolean(CG_CLIP_UNION, &s, (cg_clip_fill)k, NULL, CG_CLIP_NON_ZERO, 0, &r) != CG_OK)
+        if (cg_clip_boolean(CG_CLIP_UNION, &s, (cg_clip_fill)k, NULL, CG_CLIP_NON_ZERO, 0, &r)
+            != CG_OK)
             status = 1;
         panel(im, k, 0, pw, ph, &s, NULL, &r, cg_vec2_make(-1.05, -1.0), cg_vec2_make(1.05, 1.05));
     }
-    status |= add(c, "clip-fill-rules", im,
-                  "One self-intersecting set of paths (a pentagram and a clockwise square) under the four fill "
-                  "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes "
-                  "(one rule: cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o positive.png)");
+    status |= add(
+        c, "clip-fill-rules", im,
+        "One self-intersecting set of paths (a pentagram and a clockwise square) under the four "
+        "fill "
+        "rules: even-odd, non-zero, positive, negative; each result is simple polygons with holes "
+        "(one rule: cg clip boolean union clip-star.wkt clip-star.wkt --fill positive -o "
+        "positive.png)");
     cg_polygon_set_clear(&s);
     cg_polygon_set_clear(&r);
     return status;
@@ -330,7 +350,9 @@ static int fill_rules(demo_context *c)
 static cg_mesh *torus(int nu, int nv)
 {
     cg_mesh *m = NULL;
-    if (cg_mesh_create(&m, (size_t)nu * nv, (size_t)nu * nv * 2, (size_t)nu * nv * 6, CG_MESH_NORMALS) != CG_OK)
+    if (cg_mesh_create(&m, (size_t)nu * nv, (size_t)nu * nv * 2, (size_t)nu * nv * 6,
+                       CG_MESH_NORMALS)
+        != CG_OK)
         return NULL;
     for (int i = 0; i < nu; i++)
         for (int j = 0; j < nv; j++) {
@@ -344,7 +366,8 @@ static cg_mesh *torus(int nu, int nv)
     for (int i = 0; i < nu; i++)
         for (int j = 0; j < nv; j++) {
             uint32_t a = (uint32_t)(i * nv + j), b = (uint32_t)(((i + 1) % nu) * nv + j);
-            uint32_t cc = (uint32_t)(((i + 1) % nu) * nv + (j + 1) % nv), d = (uint32_t)(i * nv + (j + 1) % nv);
+            uint32_t cc = (uint32_t)(((i + 1) % nu) * nv + (j + 1) % nv),
+                     d = (uint32_t)(i * nv + (j + 1) % nv);
             uint32_t t[6] = {a, b, cc, a, cc, d};
             for (int q = 0; q < 6; q++) {
                 m->face_indices[k++] = t[q];
@@ -368,14 +391,16 @@ static void draw_mesh(sketch *im, const clip_view *v, const cg_mesh *m, cg_mat4 
         }
         if (lit) {
             /* flat shade facing triangles by the projected normal */
-            cg_vec3 nrm = cg_vec3_normalize(cg_vec3_cross(cg_vec3_sub(q[1], q[0]), cg_vec3_sub(q[2], q[0])));
+            cg_vec3 nrm = cg_vec3_normalize(
+                cg_vec3_cross(cg_vec3_sub(q[1], q[0]), cg_vec3_sub(q[2], q[0])));
             if (nrm.z <= 0)
                 continue;
             double shade = 0.35 + 0.65 * nrm.z;
             cg_polygon_set t = {0};
             cg_polygon_set_add_ring(&t, p, 3, 1);
-            script_fill(im, v, &t, (cg_rgba8){(uint8_t)(60 * shade + 40), (uint8_t)(140 * shade + 40),
-                                                  (uint8_t)(230 * shade + 20), 255});
+            script_fill(im, v, &t,
+                        (cg_rgba8){(uint8_t)(60 * shade + 40), (uint8_t)(140 * shade + 40),
+                                   (uint8_t)(230 * shade + 20), 255});
             cg_polygon_set_clear(&t);
         } else {
             script_polyline(im, v, p, 3, 1, width, col);
@@ -429,10 +454,11 @@ static int mesh_cut(demo_context *c)
         free(im);
         return 1;
     }
-    return add(c, "clip-mesh-box", im,
-               "3D clipping of a torus (4,032 triangles) against an axis-aligned box moved along x in "
-               "steps, as in Fig. 11.9: triangles cut at the box faces with interpolated normals, the "
-               "cut closed (shared edges give the same new vertex)");
+    return add(
+        c, "clip-mesh-box", im,
+        "3D clipping of a torus (4,032 triangles) against an axis-aligned box moved along x in "
+        "steps, as in Fig. 11.9: triangles cut at the box faces with interpolated normals, the "
+        "cut closed (shared edges give the same new vertex)");
 }
 
 static int culling(demo_context *c)
@@ -458,7 +484,9 @@ static int culling(demo_context *c)
         cg_polygon_set sq = {0};
         cg_vec2 p[4] = {{b.lo.x, -b.hi.z}, {b.hi.x, -b.hi.z}, {b.hi.x, -b.lo.z}, {b.lo.x, -b.lo.z}};
         cg_polygon_set_add_ring(&sq, p, 4, 1);
-        static const cg_rgba8 col[3] = {{200, 200, 200, 255}, {251, 188, 5, 255}, {52, 168, 83, 255}};
+        static const cg_rgba8 col[3] = {{200, 200, 200, 255},
+                                        {251, 188, 5, 255},
+                                        {52, 168, 83, 255}};
         script_fill(im, &v, &sq, col[cull]);
         script_stroke(im, &v, &sq, 0.8, INK);
         cg_polygon_set_clear(&sq);
@@ -467,10 +495,11 @@ static int culling(demo_context *c)
     cg_vec2 fr[4] = {{-t * 1, 1}, {t * 1, 1}, {t * 30, 30}, {-t * 30, 30}};
     script_polyline(im, &v, fr, 4, 1, 2, WINDOW);
     char caption[256];
-    snprintf(caption, sizeof caption,
-             "Frustum culling by bounding boxes (top view, camera at the bottom looking up): %d outside "
-             "(grey), %d crossing a plane (yellow), %d inside (green)",
-             counts[0], counts[1], counts[2]);
+    snprintf(
+        caption, sizeof caption,
+        "Frustum culling by bounding boxes (top view, camera at the bottom looking up): %d outside "
+        "(grey), %d crossing a plane (yellow), %d inside (green)",
+        counts[0], counts[1], counts[2]);
     return add(c, "clip-frustum-culling", im, caption);
 }
 

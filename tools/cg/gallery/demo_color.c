@@ -163,9 +163,10 @@ static int primaries(demo_context *context, int subtractive)
         }
     }
     return add(context, subtractive ? "color-cmy.png" : "color-rgb.png", image,
-               subtractive ? "CMY: cyan, magenta and yellow inks subtract from white paper "
-                             "(C = 1 - R ...); all three give black; as numbers: cg color rgb-cmy 1 0 0"
-                           : "RGB: red, green and blue lights add; all three give white",
+               subtractive
+                   ? "CMY: cyan, magenta and yellow inks subtract from white paper "
+                     "(C = 1 - R ...); all three give black; as numbers: cg color rgb-cmy 1 0 0"
+                   : "RGB: red, green and blue lights add; all three give white",
                "cg demo --only 'Colour models'");
 }
 
@@ -175,8 +176,7 @@ static int tints(demo_context *context)
     enum { STEPS = 11, CELL = 24 };
     const int kinds = 3, hues = 6;
     cg_image *image;
-    if (cg_image_create(&image, STEPS * CELL, kinds * hues * CELL + (kinds - 1) * 8,
-                        CG_PIXEL_RGBA8)
+    if (cg_image_create(&image, STEPS * CELL, kinds * hues * CELL + (kinds - 1) * 8, CG_PIXEL_RGBA8)
         != CG_OK)
         return 1;
     cg_image_clear_rgba8(image, (cg_rgba8){255, 255, 255, 255});
@@ -185,7 +185,7 @@ static int tints(demo_context *context)
             cg_vec3 base = cg_hsv_to_rgb(cg_vec3_make(h * 60.0, 1, 1));
             for (int s = 0; s < STEPS; s++) {
                 double amount = s / (STEPS - 1.0);
-                cg_vec3 c = k == 0 ? cg_color_tint(base, amount)
+                cg_vec3 c = k == 0   ? cg_color_tint(base, amount)
                             : k == 1 ? cg_color_shade(base, amount)
                                      : cg_color_tone(base, amount, 0.5);
                 cg_rgba8 px = byte_color(c);

@@ -107,7 +107,11 @@ static int casteljau(demo_context *context)
                             "(subdivision: red and dark)");
 }
 
-typedef struct dots { script_text *script; cg_vec2 last; int count; } dots;
+typedef struct dots {
+    script_text *script;
+    cg_vec2 last;
+    int count;
+} dots;
 
 static cg_status add_dot(void *user, cg_vec2 p)
 {
@@ -155,7 +159,8 @@ static int continuity(demo_context *context)
     for (int k = 0; k < 3; k++) {
         double ox = 20 + 240 * k;
         cg_cubic2 a = {CG_BASIS_BEZIER, {{ox, 180}, {ox + 20, 60}, {ox + 80, 40}, {ox + 110, 110}}};
-        cg_cubic2 b = {CG_BASIS_BEZIER, {{ox + 110, 110}, {ox + 170, 200}, {ox + 190, 40}, {ox + 210, 60}}};
+        cg_cubic2 b = {CG_BASIS_BEZIER,
+                       {{ox + 110, 110}, {ox + 170, 200}, {ox + 190, 40}, {ox + 210, 60}}};
         if (k == 1)
             cg_cubic2_join_g1(&a, &b);
         if (k == 2)
@@ -173,20 +178,22 @@ static int continuity(demo_context *context)
         set_color(&s, c == CG_CONTINUITY_C1 ? green : c == CG_CONTINUITY_G1 ? orange : red);
         disc(&s, b.g[0], 5);
     }
-    return draw_demo_script(context, "curve-continuity", s.text,
-                            "Two Bezier segments joined at a knot: G0 only (left, red), a G1 join "
-                            "built by cg_cubic2_join_g1 (middle: P3, P4, P5 collinear) and a C1 join "
-                            "built by cg_cubic2_join_c1 (right: P4 - P3 = P5 - P4), as "
-                            "cg_cubic2_continuity reports");
+    return draw_demo_script(
+        context, "curve-continuity", s.text,
+        "Two Bezier segments joined at a knot: G0 only (left, red), a G1 join "
+        "built by cg_cubic2_join_g1 (middle: P3, P4, P5 collinear) and a C1 join "
+        "built by cg_cubic2_join_c1 (right: P4 - P3 = P5 - P4), as "
+        "cg_cubic2_continuity reports");
 }
 
 static int render(demo_context *context)
 {
-    return draw_demo_script(context, "curve-kinds", curves_script,
-                            "Curves flattened within 0.2 pixels and drawn anti-aliased, with control "
-                            "polygons: a cubic and a degree-6 Bezier, a Hermite segment with its "
-                            "tangents, and a uniform B-spline (purple, approximating) and a "
-                            "Catmull-Rom spline (teal, interpolating) on the same five points")
+    return draw_demo_script(
+               context, "curve-kinds", curves_script,
+               "Curves flattened within 0.2 pixels and drawn anti-aliased, with control "
+               "polygons: a cubic and a degree-6 Bezier, a Hermite segment with its "
+               "tangents, and a uniform B-spline (purple, approximating) and a "
+               "Catmull-Rom spline (teal, interpolating) on the same five points")
            || casteljau(context) || flattening(context) || continuity(context);
 }
 

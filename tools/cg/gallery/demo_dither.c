@@ -75,9 +75,10 @@ static int halftone(demo_context *context)
             uint8_t g = cells[(y / SCALE) * W * CELL + x / SCALE];
             cg_image_set_rgba8(image, x, y, (cg_rgba8){g, g, g, 255});
         }
-    return add(context, "halftone-3x3.png", image,
-               "Halftoning with 3x3 cells (10 intensity levels from two) on a ramp, each pixel drawn 3x3",
-               "cg demo --only 'Intensity to pixel'");
+    return add(
+        context, "halftone-3x3.png", image,
+        "Halftoning with 3x3 cells (10 intensity levels from two) on a ramp, each pixel drawn 3x3",
+        "cg demo --only 'Intensity to pixel'");
 }
 
 static int render_intensity(demo_context *context)
@@ -90,5 +91,5 @@ static int render_intensity(demo_context *context)
     return failed;
 }
 
-const demo_section demo_section_dither = {6, "Intensity to pixel: quantization, dithering, halftones",
-                                         render_intensity};
+const demo_section demo_section_dither = {
+    6, "Intensity to pixel: quantization, dithering, halftones", render_intensity};

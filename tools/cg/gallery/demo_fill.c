@@ -41,8 +41,9 @@ static int fill_rules(demo_context *context)
         script_add(&t, "fillrule %s\n", rules[half]);
         script_add(&t, "path M %d 20 l 60 195 l -165 -120 l 210 0 l -165 120 Z\n", 130 + dx);
         script_add(&t, "color #d65c3e\nfill\ncolor #282830\nstroke\n");
-        script_add(&t, "path M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z "
-                       "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z\n",
+        script_add(&t,
+                   "path M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z "
+                   "M %d 180 a 34 34 0 1 1 68 0 a 34 34 0 1 1 -68 0 Z\n",
                    62 + dx, 100 + dx);
         script_add(&t, "color #3a76be\nfill\ncolor #282830\nstroke\n");
     }
@@ -64,17 +65,18 @@ static int joins_and_caps(demo_context *context)
     for (int j = 0; j < 3; j++) {
         double x = 30 + 175 * j;
         char zig[160], segment[96];
-        snprintf(zig, sizeof zig, "M %g 150 L %g 50 L %g 150 L %g 70 L %g 140", x, x + 35,
-                 x + 70, x + 105, x + 140);
+        snprintf(zig, sizeof zig, "M %g 150 L %g 50 L %g 150 L %g 70 L %g 140", x, x + 35, x + 70,
+                 x + 105, x + 140);
         snprintf(segment, sizeof segment, "M %g 215 L %g 215", x + 25, x + 115);
-        script_add(&t, "color %s\nwidth 22\njoin %s\ncap butt\ndash\npath %s\nstroke\n",
-                   colors[j], joins[j], zig);
+        script_add(&t, "color %s\nwidth 22\njoin %s\ncap butt\ndash\npath %s\nstroke\n", colors[j],
+                   joins[j], zig);
         script_add(&t, "color #dc2828\nwidth 1.5\njoin round\nstroke\n");
         script_add(&t, "color %s\nwidth 26\ncap %s\npath %s\nstroke\n", colors[j], caps[j],
                    segment);
         script_add(&t, "color #dc2828\nwidth 1.5\ncap butt\nstroke\n");
-        script_add(&t, "color %s\nwidth 9\ncap %s\ndash 14 12\n"
-                       "path M %g 290 A 70 30 0 0 1 %g 290\nstroke\n",
+        script_add(&t,
+                   "color %s\nwidth 9\ncap %s\ndash 14 12\n"
+                   "path M %g 290 A 70 30 0 0 1 %g 290\nstroke\n",
                    colors[j], caps[j], x + 5, x + 135);
     }
     return draw_demo_script(context, "fill-joins-caps", t.text,
@@ -90,7 +92,8 @@ static int gradients(demo_context *context, cg_rasterizer *r)
     cg_image *image = canvas(540, 175);
     if (!image)
         return 1;
-    cg_gradient_stop warm[3] = {{0, {250, 200, 60, 255}}, {0.5, {230, 80, 60, 255}},
+    cg_gradient_stop warm[3] = {{0, {250, 200, 60, 255}},
+                                {0.5, {230, 80, 60, 255}},
                                 {1, {120, 30, 110, 255}}};
     cg_gradient_stop cool[2] = {{0, {255, 255, 255, 255}}, {1, {30, 90, 170, 255}}};
     /* the same ring with a notch, three times */
@@ -149,9 +152,9 @@ static int maze(demo_context *context)
                            (y + 1) * SCALE);
             x = end > x ? end : x + 1;
         }
-    static const cg_rgba8 palette[] = {{230, 90, 70, 255},  {70, 150, 220, 255}, {90, 180, 100, 255},
-                                       {240, 180, 50, 255}, {160, 100, 200, 255}, {60, 190, 180, 255},
-                                       {220, 120, 170, 255}, {150, 150, 60, 255}};
+    static const cg_rgba8 palette[] = {
+        {230, 90, 70, 255},   {70, 150, 220, 255}, {90, 180, 100, 255},  {240, 180, 50, 255},
+        {160, 100, 200, 255}, {60, 190, 180, 255}, {220, 120, 170, 255}, {150, 150, 60, 255}};
     int regions = 0;
     for (int y = 1; y < side; y += 2)
         for (int x = 1; x < side; x += 2) {
@@ -165,9 +168,9 @@ static int maze(demo_context *context)
         }
     cg_image_free(small);
     return draw_demo_sketch(context, &k, "fill-maze",
-                           "Flood fill: a random maze with some passages walled up; each region "
-                           "filled from one seed by the scan-line span algorithm (4-connected), "
-                           "in its own colour");
+                            "Flood fill: a random maze with some passages walled up; each region "
+                            "filled from one seed by the scan-line span algorithm (4-connected), "
+                            "in its own colour");
 }
 
 /* One wall cell of the magnified grid: CELL x CELL pixels from its top-left
@@ -258,16 +261,17 @@ static int pixel_view(demo_context *context, cg_rasterizer *r)
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 double cx = (x + 0.5) * CELL + 0.5, cy = (y + 0.5) * CELL + 0.5, d = 1.6;
-                sketch_add(&k, "path M %.17g %.17g A %g %g 0 1 1 %.17g %.17g A %g %g 0 1 1 %.17g "
-                               "%.17g Z\nfill\n",
+                sketch_add(&k,
+                           "path M %.17g %.17g A %g %g 0 1 1 %.17g %.17g A %g %g 0 1 1 %.17g "
+                           "%.17g Z\nfill\n",
                            cx + d, cy, d, d, cx - d, cy, d, d, cx + d, cy);
             }
         failed |= draw_demo_sketch(context, &k, aa ? "fill-pixels-aa" : "fill-pixels-aliased",
-                                  aa ? "Anti-aliased fill, magnified: each pixel shaded by the "
-                                       "exact area of it inside the triangle (signed-area "
-                                       "accumulation)"
-                                     : "Scan-line fill, magnified: a pixel is painted when its "
-                                       "centre (dot) is inside the triangle (red)");
+                                   aa ? "Anti-aliased fill, magnified: each pixel shaded by the "
+                                        "exact area of it inside the triangle (signed-area "
+                                        "accumulation)"
+                                      : "Scan-line fill, magnified: a pixel is painted when its "
+                                        "centre (dot) is inside the triangle (red)");
     }
     return failed;
 }

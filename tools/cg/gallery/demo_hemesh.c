@@ -131,10 +131,10 @@ static cg_vec2 face_centre(const cg_hemesh *h, uint32_t f, double scale, double 
 
 static int render_halfedges(demo_context *context)
 {
-    static const double points[][3] = {{0, 0, 0}, {2, 0, 0},     {4, 0, 0},   {0, 2, 0},
-                                       {2, 2.2, 0}, {4, 2, 0},   {1, 3.7, 0}, {3, 3.7, 0}};
-    static const uint32_t faces[] = {4, 0, 1, 4, 3, 4, 1, 2, 5, 4, 3, 3, 4, 6,
-                                     3, 4, 7, 6, 3, 4, 5, 7};
+    static const double points[][3] = {{0, 0, 0},   {2, 0, 0}, {4, 0, 0},   {0, 2, 0},
+                                       {2, 2.2, 0}, {4, 2, 0}, {1, 3.7, 0}, {3, 3.7, 0}};
+    static const uint32_t faces[] = {4, 0, 1, 4, 3, 4, 1, 2, 5, 4, 3,
+                                     3, 4, 6, 3, 4, 7, 6, 3, 4, 5, 7};
     cg_hemesh *h = make_mesh(points, 8, faces, 5);
     sketch *image = blank(640, 560);
     if (!h || !image) {
@@ -143,8 +143,11 @@ static int render_halfedges(demo_context *context)
         return 1;
     }
     double scale = 130, ox = 60, oy = 520;
-    static const cg_rgba8 face_colour[5] = {
-        {40, 110, 200, 255}, {30, 150, 90, 255}, {150, 80, 190, 255}, {200, 130, 20, 255}, {20, 150, 160, 255}};
+    static const cg_rgba8 face_colour[5] = {{40, 110, 200, 255},
+                                            {30, 150, 90, 255},
+                                            {150, 80, 190, 255},
+                                            {200, 130, 20, 255},
+                                            {20, 150, 160, 255}};
     /* the edges, faint */
     for (uint32_t e = 0; e < h->halfedge_count / 2; e++) {
         cg_vec2 a = to_pixel(h->positions[cg_hemesh_origin(h, 2 * e)], scale, ox, oy);
@@ -226,7 +229,8 @@ static view make_view(double about_y, double about_x, double scale, double ox, d
 
 static int render_one_ring(demo_context *context)
 {
-    static const double points[][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const double points[][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                       {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     static const uint32_t faces[] = {3, 0, 2, 4, 3, 2, 1, 4, 3, 1, 3, 4, 3, 3, 0, 4,
                                      3, 2, 0, 5, 3, 1, 2, 5, 3, 3, 1, 5, 3, 0, 3, 5};
     cg_hemesh *h = make_mesh(points, 6, faces, 8);
@@ -306,7 +310,8 @@ static int render_levels(demo_context *context, cg_hemesh *h, int loop, const ch
         if (level == 3)
             break;
         cg_hemesh *next = NULL;
-        cg_status s = loop ? cg_hemesh_subdivide_loop(h, &next) : cg_hemesh_subdivide_catmull_clark(h, &next);
+        cg_status s = loop ? cg_hemesh_subdivide_loop(h, &next)
+                           : cg_hemesh_subdivide_catmull_clark(h, &next);
         cg_hemesh_free(h);
         h = next;
         if (s != CG_OK)
@@ -321,9 +326,10 @@ static int render(demo_context *context)
         return 1;
     static const double tetra[][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     static const uint32_t tetra_faces[] = {3, 0, 1, 2, 3, 0, 2, 3, 3, 0, 3, 1, 3, 1, 3, 2};
-    if (render_levels(context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop",
-                      "Loop subdivision of a tetrahedron, levels 0 to 3: 4, 16, 64 and 256 "
-                      "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)"))
+    if (render_levels(
+            context, make_mesh(tetra, 4, tetra_faces, 4), 1, "hemesh-loop",
+            "Loop subdivision of a tetrahedron, levels 0 to 3: 4, 16, 64 and 256 "
+            "triangles (F' = 4F), each level scaled to fit (the limit surface is much smaller)"))
         return 1;
     static const double box[][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};

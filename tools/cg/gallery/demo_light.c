@@ -107,9 +107,10 @@ static int render(demo_context *context)
                       cg_vec3_make(2.4, 2.2, 1.8)),
     };
     cg_light_set_attenuation(&spot[1], 1, 0.1, 0.05);
-    failed |= sphere(context, "light-spot.png",
-                     "A spot light (Warn model: cutoff 12 deg, exponent 20) with distance attenuation", &white,
-                     spot, 2, TERM_ALL);
+    failed |= sphere(
+        context, "light-spot.png",
+        "A spot light (Warn model: cutoff 12 deg, exponent 20) with distance attenuation", &white,
+        spot, 2, TERM_ALL);
     return failed;
 }
 

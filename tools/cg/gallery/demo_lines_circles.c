@@ -39,14 +39,17 @@ static int zoomed_line(demo_context *context)
     sketch_add(&k, "color #141414\naaline %.17g %.17g %.17g %.17g\n", zoom_x(&z, x0 + 0.5),
                zoom_x(&z, y0 + 0.5), zoom_x(&z, x1 + 0.5), zoom_x(&z, y1 + 0.5));
     return draw_demo_sketch(context, &k, "draw-line-zoom",
-                           "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the "
-                           "real line through the pixel centres, and the midpoints tested at each "
-                           "step (red: below the line, NE chosen; orange: above or on it, E); the "
-                           "steps as text: cg trace line 1 1 22 9");
+                            "Bresenham's line (Algorithm 1) from (1, 1) to (22, 9), magnified: the "
+                            "real line through the pixel centres, and the midpoints tested at each "
+                            "step (red: below the line, NE chosen; orange: above or on it, E); the "
+                            "steps as text: cg trace line 1 1 22 9");
 }
 
 /* Colours the cells of the first octant as Algorithm 2 selects them. */
-typedef struct octant_cells { zoom *z; int c; } octant_cells;
+typedef struct octant_cells {
+    zoom *z;
+    int c;
+} octant_cells;
 static int octant_cell(void *user, const cg_circle_step *s)
 {
     octant_cells *o = user;
@@ -73,8 +76,7 @@ static int zoomed_circle(demo_context *context)
     double cx = zoom_x(&z, c + 0.5);
     sketch k = {0};
     zoom_to_script(&z, &k);
-    sketch_add(&k, "color #141414\naacircle %.17g %.17g %d\ncolor #787878a0\n", cx, cx,
-               r * z.cell);
+    sketch_add(&k, "color #141414\naacircle %.17g %.17g %d\ncolor #787878a0\n", cx, cx, r * z.cell);
     /* the lines of symmetry */
     for (int i = 0; i < 4; i++) {
         double a = i * CG_PI / 4, len = (r + 2) * z.cell;
@@ -82,10 +84,10 @@ static int zoomed_circle(demo_context *context)
                    cx + len * cos(a), cx + len * sin(a));
     }
     return draw_demo_sketch(context, &k, "draw-circle-zoom",
-                           "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: "
-                           "octant 1 (orange, 0 <= x <= y) is computed and mirrored about the "
-                           "four lines of symmetry; each pixel is drawn once; the steps as text: "
-                           "cg trace circle 11");
+                            "Bresenham's midpoint circle (Algorithm 2) of radius 11, magnified: "
+                            "octant 1 (orange, 0 <= x <= y) is computed and mirrored about the "
+                            "four lines of symmetry; each pixel is drawn once; the steps as text: "
+                            "cg trace circle 11");
 }
 
 static int lines(demo_context *context)
@@ -99,19 +101,22 @@ static int lines(demo_context *context)
         const char *colors[3] = {"#1f4e9c", "#c0392b", "#27ae60"};
         script_add(&s, "color %s\nline 160 160 %d %d\n", colors[k % 3],
                    160 + (int)lround(145 * cos(a)), 160 - (int)lround(145 * sin(a)));
-        script_add(&s, "aaline 480.5 160.5 %.3f %.3f\n", 480.5 + 145 * cos(a), 160.5 - 145 * sin(a));
+        script_add(&s, "aaline 480.5 160.5 %.3f %.3f\n", 480.5 + 145 * cos(a),
+                   160.5 - 145 * sin(a));
     }
-    return draw_demo_script(context, "draw-lines", s.text,
-                            "48 lines from a centre: Bresenham (left; drawing a to b or b to a gives the "
-                            "same pixels) and anti-aliased with exact coverage per column, blended in "
-                            "linear light, so every direction is equally bright (right)");
+    return draw_demo_script(
+        context, "draw-lines", s.text,
+        "48 lines from a centre: Bresenham (left; drawing a to b or b to a gives the "
+        "same pixels) and anti-aliased with exact coverage per column, blended in "
+        "linear light, so every direction is equally bright (right)");
 }
 
 static int circles(demo_context *context)
 {
     script_text s;
     s.length = 0;
-    script_add(&s, "# Bresenham circles, discs, ellipses and arcs\nsize 640 320\nbackground white\n");
+    script_add(&s,
+               "# Bresenham circles, discs, ellipses and arcs\nsize 640 320\nbackground white\n");
     for (int r = 4; r <= 140; r += 8)
         script_add(&s, "color #%02x%02x%02x\ncircle 160 160 %d\n", 40 + r, 80, 220 - r, r);
     script_add(&s, "color #f39c12\ndisc 430 80 50\ncolor #2980b9c0\ndisc 480 110 40\n"
@@ -132,14 +137,16 @@ static int antialiased(demo_context *context)
                    "size 640 240\nbackground #101820\n");
     for (int k = 0; k < 7; k++) {
         double r = 6 + k * 15.3;
-        script_add(&s, "color #ffd166\ncircle 120 120 %d\ncolor #06d6a0\naacircle 360.5 120.5 %.1f\n",
+        script_add(&s,
+                   "color #ffd166\ncircle 120 120 %d\ncolor #06d6a0\naacircle 360.5 120.5 %.1f\n",
                    (int)r, r);
     }
     script_add(&s, "color #ef476f\naaellipse 555 120 75 30.5\naaellipse 555 120 30 100\n"
                    "aaellipse 555 120 55 55\n");
-    return draw_demo_script(context, "draw-aa-circles", s.text,
-                            "Bresenham circles (left) and anti-aliased circles and ellipses (right): "
-                            "each pixel's coverage is 1 - |distance to the curve|, blended in linear light");
+    return draw_demo_script(
+        context, "draw-aa-circles", s.text,
+        "Bresenham circles (left) and anti-aliased circles and ellipses (right): "
+        "each pixel's coverage is 1 - |distance to the curve|, blended in linear light");
 }
 
 static int render(demo_context *context)

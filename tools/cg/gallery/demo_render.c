@@ -59,7 +59,8 @@ static cg_mesh *join(cg_mesh *a, cg_mesh *b, cg_rgbaf color_a, cg_rgbaf color_b)
     size_t corners_a = a->face_offsets[a->face_count], corners_b = b->face_offsets[b->face_count];
     cg_mesh *m;
     if (cg_mesh_create(&m, a->vertex_count + b->vertex_count, a->face_count + b->face_count,
-                       corners_a + corners_b, CG_MESH_FACE_COLORS) != CG_OK)
+                       corners_a + corners_b, CG_MESH_FACE_COLORS)
+        != CG_OK)
         return NULL;
     memcpy(m->positions, a->positions, sizeof *a->positions * a->vertex_count);
     memcpy(m->positions + a->vertex_count, b->positions, sizeof *b->positions * b->vertex_count);
@@ -84,14 +85,17 @@ static cg_mesh *sticks(void)
     cg_mesh *m;
     if (cg_mesh_create(&m, 12, 3, 12, CG_MESH_FACE_COLORS) != CG_OK)
         return NULL;
-    static const cg_rgbaf colors[3] = {{0.8f, 0.12f, 0.08f, 1}, {0.1f, 0.55f, 0.12f, 1},
+    static const cg_rgbaf colors[3] = {{0.8f, 0.12f, 0.08f, 1},
+                                       {0.1f, 0.55f, 0.12f, 1},
                                        {0.1f, 0.2f, 0.8f, 1}};
     for (int i = 0; i < 3; i++) {
         double angle = 2 * CG_PI * i / 3;
         double c = cos(angle), s = sin(angle);
         /* Along x from -1.1 to 1.1 at y = -0.45, width 0.35, z falling
          * from 0.5 to -0.5; then rotated by angle about z. */
-        const double local[4][3] = {{-1.1, -0.62, 0.5}, {1.1, -0.62, -0.5}, {1.1, -0.28, -0.5},
+        const double local[4][3] = {{-1.1, -0.62, 0.5},
+                                    {1.1, -0.62, -0.5},
+                                    {1.1, -0.28, -0.5},
                                     {-1.1, -0.28, 0.5}};
         for (int k = 0; k < 4; k++) {
             double x = local[k][0], y = local[k][1];
@@ -126,7 +130,8 @@ static int bunny_variants(demo_context *context, const cg_mesh *bunny)
          CG_RENDER_ZBUFFER, CG_EDGES_NONE, CG_CULL_BACK, CG_SHADING_GOURAUD},
         {"render-painter.png",
          "Painter's algorithm (5.2): depth sort with Newell's overlap tests, far to near",
-         " --algorithm painter", CG_RENDER_PAINTER, CG_EDGES_NONE, CG_CULL_BACK, CG_SHADING_GOURAUD},
+         " --algorithm painter", CG_RENDER_PAINTER, CG_EDGES_NONE, CG_CULL_BACK,
+         CG_SHADING_GOURAUD},
         {"render-wireframe.png",
          "Wireframe: every edge, clipped in homogeneous coordinates, Bresenham lines",
          " --wireframe --cull none", CG_RENDER_ZBUFFER, CG_EDGES_WIREFRAME, CG_CULL_NONE,
@@ -134,8 +139,9 @@ static int bunny_variants(demo_context *context, const cg_mesh *bunny)
         {"render-wireframe-culled.png",
          "Back-face culling (5.1): only faces the camera sees counter-clockwise", " --wireframe",
          CG_RENDER_ZBUFFER, CG_EDGES_WIREFRAME, CG_CULL_BACK, CG_SHADING_GOURAUD},
-        {"render-hidden-line.png", "Hidden-line removal: edges tested against the z-buffer of the faces",
-         " --hidden-line", CG_RENDER_ZBUFFER, CG_EDGES_HIDDEN_LINE, CG_CULL_BACK, CG_SHADING_GOURAUD},
+        {"render-hidden-line.png",
+         "Hidden-line removal: edges tested against the z-buffer of the faces", " --hidden-line",
+         CG_RENDER_ZBUFFER, CG_EDGES_HIDDEN_LINE, CG_CULL_BACK, CG_SHADING_GOURAUD},
         {"render-edges.png", "Flat-shaded faces with their visible edges",
          " --edges --edge-color '#1b1b1c' --shading flat", CG_RENDER_ZBUFFER, CG_EDGES_OVERLAY,
          CG_CULL_BACK, CG_SHADING_FLAT},
@@ -151,8 +157,8 @@ static int bunny_variants(demo_context *context, const cg_mesh *bunny)
         if (v->edges == CG_EDGES_OVERLAY)
             o.edge_color = cg_rgba8_to_linear((cg_rgba8){0x1b, 0x1b, 0x1c, 255});
         char command[256];
-        snprintf(command, sizeof command, "cg render " BUNNY " --size 320x240%s -o %s", v->arguments,
-                 v->file);
+        snprintf(command, sizeof command, "cg render " BUNNY " --size 320x240%s -o %s",
+                 v->arguments, v->file);
         status |= shot(context, bunny, &o, v->file, v->caption, command);
     }
     return status;
@@ -178,7 +184,8 @@ static int bunny_orthographic(demo_context *context, const cg_mesh *bunny)
     }
     o.frame_camera = 1;
     snprintf(command, sizeof command,
-             "cg render " BUNNY " --size 320x240 --view-from 1,0.6,1 --ortho %.9g -o render-ortho.png",
+             "cg render " BUNNY
+             " --size 320x240 --view-from 1,0.6,1 --ortho %.9g -o render-ortho.png",
              height);
     return shot(context, bunny, &o, "render-ortho.png",
                 "Orthographic (parallel) camera from the front right, framed to the mesh", command);
@@ -194,9 +201,10 @@ static int bunny_depth(demo_context *context, const cg_mesh *bunny)
     if (cg_renderer_create(bunny, &o, &r, NULL) == CG_OK) {
         if (cg_image_create(&image, W, H, CG_PIXEL_RGBA8) == CG_OK
             && cg_renderer_draw(r, image) == CG_OK && cg_renderer_depth_image(r, image) == CG_OK)
-            status |= demo_add(context, "render-depth.png", image,
-                               "The z-buffer after the frame: near is light (window depth, 32-bit float)",
-                               "cg render " BUNNY " --size 320x240 --output-depth -o render-depth.png");
+            status |= demo_add(
+                context, "render-depth.png", image,
+                "The z-buffer after the frame: near is light (window depth, 32-bit float)",
+                "cg render " BUNNY " --size 320x240 --output-depth -o render-depth.png");
         cg_image_free(image);
         cg_renderer_free(r);
     }
@@ -220,10 +228,12 @@ static int depth_sort_cycle(demo_context *context)
     } sorts[] = {
         {CG_RENDER_DEPTH_SORT, "render-sort-naive.png",
          "Plain depth sort: each stick lies over the next, so any order of whole polygons is "
-         "wrong somewhere", " --algorithm depth-sort"},
+         "wrong somewhere",
+         " --algorithm depth-sort"},
         {CG_RENDER_PAINTER, "render-sort-painter.png",
          "Painter's with Newell's tests: the cycle is found and broken by splitting a polygon "
-         "along another's plane", " --algorithm painter"},
+         "along another's plane",
+         " --algorithm painter"},
         {CG_RENDER_ZBUFFER, "render-sort-zbuffer.png",
          "The z-buffer on the same sticks: per-pixel depth needs no ordering", ""},
     };
@@ -249,7 +259,8 @@ static int camera_inside_room(demo_context *context)
         && cg_mesh_torus(48, 24, 0.6, 0.25, &ball) == CG_OK) {
         for (size_t i = 0; i < ball->vertex_count; i++)
             ball->positions[i].y -= 0.3;
-        scene = join(room, ball, (cg_rgbaf){0.5f, 0.45f, 0.35f, 1}, (cg_rgbaf){0.7f, 0.25f, 0.1f, 1});
+        scene = join(room, ball, (cg_rgbaf){0.5f, 0.45f, 0.35f, 1},
+                     (cg_rgbaf){0.7f, 0.25f, 0.1f, 1});
     }
     if (scene) {
         save(context, scene, "room.obj");
@@ -262,11 +273,12 @@ static int camera_inside_room(demo_context *context)
         o.camera.fovy = cg_radians(80);
         o.camera.near = 0.05;
         o.camera.far = 20;
-        status |= shot(context, scene, &o, "render-inside.png",
-                       "Camera inside a closed room: walls behind the eye (w <= 0) clipped against "
-                       "all six planes before the divide",
-                       "cg render room.obj --size 320x240 --eye 1.6,0.9,1.7 --target 0,-0.3,0 --fov 80 "
-                       "--cull none --shading phong -o render-inside.png");
+        status |= shot(
+            context, scene, &o, "render-inside.png",
+            "Camera inside a closed room: walls behind the eye (w <= 0) clipped against "
+            "all six planes before the divide",
+            "cg render room.obj --size 320x240 --eye 1.6,0.9,1.7 --target 0,-0.3,0 --fov 80 "
+            "--cull none --shading phong -o render-inside.png");
     }
     cg_mesh_free(room);
     cg_mesh_free(ball);
@@ -309,8 +321,7 @@ int demo_render_shading(demo_context *context)
     save(context, sphere, "sphere.obj");
     static const char *const names[3] = {"flat", "gouraud", "phong"};
     static const char *const captions[3][2] = {
-        {"Flat shading: one colour per face from its normal",
-         "Flat shading of the bunny"},
+        {"Flat shading: one colour per face from its normal", "Flat shading of the bunny"},
         {"Gouraud shading: lit at the vertices, colours interpolated (the highlight breaks up)",
          "Gouraud shading of the bunny"},
         {"Phong shading: normals interpolated and lit at every pixel",
@@ -323,9 +334,11 @@ int demo_render_shading(demo_context *context)
         o.camera.eye = cg_vec3_make(0, 0.5, 2);
         char file[64], command[256];
         snprintf(file, sizeof file, "shading-sphere-%s.png", names[s]);
-        snprintf(command, sizeof command,
-                 "cg render sphere.obj --size 320x240 --view-from 0,0.5,2 --specular 0.5 --shininess 40 "
-                 "--shading %s -o %s", names[s], file);
+        snprintf(
+            command, sizeof command,
+            "cg render sphere.obj --size 320x240 --view-from 0,0.5,2 --specular 0.5 --shininess 40 "
+            "--shading %s -o %s",
+            names[s], file);
         status |= shot(context, sphere, &o, file, captions[s][0], command);
         if (!bunny)
             continue;
@@ -345,12 +358,14 @@ int demo_render_shading(demo_context *context)
         o.shading = CG_SHADING_PHONG;
         status |= shot(context, box, &o, "shading-crease-60.png",
                        "Vertex normals with a 60 degree crease angle: the cube's edges stay sharp",
-                       "cg render box.obj --size 320x240 --view-from 1.3,1,2 --shading phong -o shading-crease-60.png");
+                       "cg render box.obj --size 320x240 --view-from 1.3,1,2 --shading phong -o "
+                       "shading-crease-60.png");
         o.crease_angle = cg_radians(100);
-        status |= shot(context, box, &o, "shading-crease-100.png",
-                       "The same with a 100 degree crease: normals averaged across the edges",
-                       "cg render box.obj --size 320x240 --view-from 1.3,1,2 --shading phong --crease 100 "
-                       "-o shading-crease-100.png");
+        status |= shot(
+            context, box, &o, "shading-crease-100.png",
+            "The same with a 100 degree crease: normals averaged across the edges",
+            "cg render box.obj --size 320x240 --view-from 1.3,1,2 --shading phong --crease 100 "
+            "-o shading-crease-100.png");
         cg_mesh_free(box);
     }
     cg_mesh_free(sphere);
@@ -358,5 +373,5 @@ int demo_render_shading(demo_context *context)
     return status;
 }
 
-const demo_section demo_section_render = {5, "Rendering pipeline: culling, clipping, z-buffer, painter's",
-                                          render_pipeline};
+const demo_section demo_section_render = {
+    5, "Rendering pipeline: culling, clipping, z-buffer, painter's", render_pipeline};

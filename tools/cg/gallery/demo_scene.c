@@ -31,8 +31,8 @@ static int render(demo_context *context)
         {"bunny", "scene-bunny-zbuffer.png",
          "Scene file, z-buffer: Phong shading, three lights (ambient, directional, point)",
          CG_SCENE_ZBUFFER, 320, 240},
-        {"bunny", "scene-bunny-painter.png",
-         "The same scene file with the painter's algorithm", CG_SCENE_PAINTER, 320, 240},
+        {"bunny", "scene-bunny-painter.png", "The same scene file with the painter's algorithm",
+         CG_SCENE_PAINTER, 320, 240},
         {"bunny", "scene-bunny-raytrace.png",
          "The same scene file ray traced: shadows and the checkered floor material",
          CG_SCENE_RAYTRACE, 320, 240},
@@ -41,9 +41,10 @@ static int render(demo_context *context)
          CG_SCENE_RAYTRACE, 360, 225},
         {"transforms", "scene-transforms.png",
          "One teapot placed three times by transform lists: translate, rotate about a point, "
-         "scale and reflect", CG_SCENE_ZBUFFER, 360, 203},
-        {"projections", "scene-isometric.png", "A scene in an isometric camera",
-         CG_SCENE_ZBUFFER, 320, 240},
+         "scale and reflect",
+         CG_SCENE_ZBUFFER, 360, 203},
+        {"projections", "scene-isometric.png", "A scene in an isometric camera", CG_SCENE_ZBUFFER,
+         320, 240},
     };
     static const char *const algorithm_names[] = {"zbuffer", "painter", "raytrace"};
     for (size_t i = 0; i < sizeof pictures / sizeof pictures[0]; i++) {

@@ -55,8 +55,7 @@ static int render(demo_context *context)
                       cg_xform2_scale(1.5, 0.5, 1, 0));
     failed |= picture(context, "transform-reflect", "Reflection about the line y = x/2 + 1",
                       reflect);
-    failed |= picture(context, "transform-shear", "Shear x' = x + 0.8 y",
-                      cg_xform2_shear(0.8, 0));
+    failed |= picture(context, "transform-shear", "Shear x' = x + 0.8 y", cg_xform2_shear(0.8, 0));
     failed |= picture(context, "transform-compose-rt",
                       "Composition: rotate 90 deg, then translate by (3, 0)",
                       cg_mat3_compose(rotate_then_move, 2));

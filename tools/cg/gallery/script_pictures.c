@@ -39,8 +39,7 @@ void sketch_add(sketch *k, const char *format, ...)
     k->length += (size_t)n;
 }
 
-int draw_demo_script(demo_context *context, const char *name, const char *text,
-                     const char *caption)
+int draw_demo_script(demo_context *context, const char *name, const char *text, const char *caption)
 {
     char path[4096], file[256], command[512];
     snprintf(path, sizeof path, "%s/%s.draw", demo_directory(context), name);

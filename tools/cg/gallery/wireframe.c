@@ -17,13 +17,12 @@ static const int box_edges[12][2] = {
 /* The house stands behind the cube (z from -2.25 to -0.75) so that no
  * principal view shows one on top of the other. */
 static const cg_vec3 house_vertices[10] = {
-    {0.5, 0, -2.25}, {1.5, 0, -2.25}, {1.5, 1, -2.25}, {0.5, 1, -2.25},
-    {0.5, 0, -0.75}, {1.5, 0, -0.75}, {1.5, 1, -0.75}, {0.5, 1, -0.75},
-    {1.0, 1.6, -2.25}, {1.0, 1.6, -0.75},
+    {0.5, 0, -2.25}, {1.5, 0, -2.25}, {1.5, 1, -2.25}, {0.5, 1, -2.25},   {0.5, 0, -0.75},
+    {1.5, 0, -0.75}, {1.5, 1, -0.75}, {0.5, 1, -0.75}, {1.0, 1.6, -2.25}, {1.0, 1.6, -0.75},
 };
 static const int house_edges[17][2] = {
-    {0, 1}, {1, 2}, {3, 0}, {4, 5}, {5, 6}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
-    {3, 8}, {8, 2}, {7, 9}, {9, 6}, {8, 9}, {2, 3}, {6, 7},
+    {0, 1}, {1, 2}, {3, 0}, {4, 5}, {5, 6}, {7, 4}, {0, 4}, {1, 5}, {2, 6},
+    {3, 7}, {3, 8}, {8, 2}, {7, 9}, {9, 6}, {8, 9}, {2, 3}, {6, 7},
 };
 
 wire_model wire_cube(void)
@@ -80,10 +79,13 @@ static cg_status wire_edges(int width, int height, const wire_model *models, int
         for (int e = 0; e < models[m].edge_count; e++) {
             cg_vec3 a = models[m].vertices[models[m].edges[e][0]];
             cg_vec3 b = models[m].vertices[models[m].edges[e][1]];
-            cg_vec3 pa = cg_project_point(transform, a, NULL), pb = cg_project_point(transform, b, NULL);
+            cg_vec3 pa = cg_project_point(transform, a, NULL),
+                    pb = cg_project_point(transform, b, NULL);
             /* Image y grows downward, projected y upward. */
-            int x0 = (int)lround(ox + s * (pa.x - min_x)), y0 = (int)lround(oy + s * (max_y - pa.y));
-            int x1 = (int)lround(ox + s * (pb.x - min_x)), y1 = (int)lround(oy + s * (max_y - pb.y));
+            int x0 = (int)lround(ox + s * (pa.x - min_x)),
+                y0 = (int)lround(oy + s * (max_y - pa.y));
+            int x1 = (int)lround(ox + s * (pb.x - min_x)),
+                y1 = (int)lround(oy + s * (max_y - pb.y));
             emit(user, x0, y0, x1, y1, edge_color(a, b));
         }
     }
@@ -97,7 +99,8 @@ static void draw_edge(void *user, int x0, int y0, int x1, int y1, cg_rgba8 color
 
 cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, cg_mat4 transform)
 {
-    return wire_edges(image->width, image->height, models, model_count, transform, draw_edge, image);
+    return wire_edges(image->width, image->height, models, model_count, transform, draw_edge,
+                      image);
 }
 
 #include "script_pictures.h"
@@ -106,8 +109,8 @@ cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, 
 
 static void script_edge(void *user, int x0, int y0, int x1, int y1, cg_rgba8 color)
 {
-    script_add(user, "color #%02x%02x%02x\nline %d %d %d %d\n", color.r, color.g, color.b, x0,
-               y0, x1, y1);
+    script_add(user, "color #%02x%02x%02x\nline %d %d %d %d\n", color.r, color.g, color.b, x0, y0,
+               x1, y1);
 }
 
 /* The projection is computed in C; each picture is the draw script of its

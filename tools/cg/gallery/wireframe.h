@@ -21,8 +21,7 @@ wire_model wire_house(void);
 /* Projects the models with transform (divided by w) and draws them scaled to
  * fit the image with a margin, edges coloured by direction: x red, y green,
  * z blue, others grey.  Returns CG_EINVAL when a vertex is behind the camera. */
-cg_status wire_draw(cg_image *image, const wire_model *models, int model_count,
-                    cg_mat4 transform);
+cg_status wire_draw(cg_image *image, const wire_model *models, int model_count, cg_mat4 transform);
 
 #endif
 

@@ -32,7 +32,8 @@ int trace_parse_point(const char *what, const char *text, cg_vec2 *out)
     }
     memcpy(x, text, n);
     x[n] = 0;
-    if (cli_parse_double("trace", what, x, &out->x) || cli_parse_double("trace", what, comma + 1, &out->y))
+    if (cli_parse_double("trace", what, x, &out->x)
+        || cli_parse_double("trace", what, comma + 1, &out->y))
         return -1;
     if (!isfinite(out->x) || !isfinite(out->y)) {
         cli_usage_error("trace", "%s: the point '%s' is not finite", what, text);

@@ -42,20 +42,22 @@ static int run_line(int argc, char **argv, const trace_outputs *out)
     int bad = parse_line("line", argc, argv, v);
     if (bad)
         return bad;
-    trace_run *run = trace_run_create("line", argc - 1, argv + 1,
-                                      "Bresenham's line (Algorithm 1) from (%ld, %ld) to (%ld, %ld)",
-                                      v[0], v[1], v[2], v[3]);
+    trace_run *run = trace_run_create(
+        "line", argc - 1, argv + 1, "Bresenham's line (Algorithm 1) from (%ld, %ld) to (%ld, %ld)",
+        v[0], v[1], v[2], v[3]);
     if (!run)
         return cli_fail("trace: out of memory");
     cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
     trace_scene_add(run, real_line, 2, 0);
-    cg_status status = cg_line_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
-                                     cg_step_log_record, run->log);
+    cg_status status = cg_line_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3], cg_step_log_record,
+                                     run->log);
     if (status == CG_OK && cg_step_log_count(run->log) > 0) {
         const cg_step *octant = cg_step_log_get(run->log, 0);
         long long dx = field_integer(run, 0, "dx"), dy = field_integer(run, 0, "dy");
-        trace_note(run, "octant %lld (1 to 8 counter-clockwise from +x with y as given: 1 is 0 <= dy < dx)",
-                   field_integer(run, 0, "octant"));
+        trace_note(
+            run,
+            "octant %lld (1 to 8 counter-clockwise from +x with y as given: 1 is 0 <= dy < dx)",
+            field_integer(run, 0, "octant"));
         if (strcmp(cg_step_find(octant, "swap")->text, "no") != 0)
             trace_note(run, "walked from (%ld, %ld), the end with the smaller major coordinate",
                        v[2], v[3]);
@@ -139,7 +141,8 @@ static int run_circle(int argc, char **argv, const trace_outputs *out)
         return CLI_USAGE;
     trace_run *run = trace_run_create("circle", argc - 1, argv + 1,
                                       "Bresenham's circle (Algorithm 2), radius %ld: first octant "
-                                      "0 <= x <= y from (0, %ld)", r, r);
+                                      "0 <= x <= y from (0, %ld)",
+                                      r, r);
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "f = 1 - r = %ld, dE = 3, dSE = -2r + 5 = %ld", 1 - r, 5 - 2 * r);
@@ -166,11 +169,14 @@ static int run_ellipse(int argc, char **argv, const trace_outputs *out)
         || trace_parse_int("RY", argv[2], 0, MAX_ELLIPSE_RADIUS, &ry))
         return CLI_USAGE;
     if (rx == ry)
-        return cli_usage_error("trace", "ellipse: equal radii draw the circle: use "
-                                        "'cg trace circle %ld'", rx);
+        return cli_usage_error("trace",
+                               "ellipse: equal radii draw the circle: use "
+                               "'cg trace circle %ld'",
+                               rx);
     trace_run *run = trace_run_create("ellipse", argc - 1, argv + 1,
                                       "Midpoint ellipse, radii rx = %ld, ry = %ld, centred on "
-                                      "(0, 0)", rx, ry);
+                                      "(0, 0)",
+                                      rx, ry);
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "F(x, y) = ry^2 x^2 + rx^2 y^2 - rx^2 ry^2 (negative inside); d is 4F at "
@@ -208,13 +214,11 @@ static int parse_points(char **argv, int count, cg_vec2 *points)
 static int run_cubic(cg_curve_basis basis, int argc, char **argv, const trace_outputs *out)
 {
     static const char *const forms[] = {"hermite P1 P4 R1 R4 [N]", "bezier P1 P2 P3 P4 [N]",
-                                        "bspline P0 P1 P2 P3 [N]",
-                                        "catmull-rom P0 P1 P2 P3 [N]"};
+                                        "bspline P0 P1 P2 P3 [N]", "catmull-rom P0 P1 P2 P3 [N]"};
     long n = 8;
     cg_cubic2 curve = {basis, {{0, 0}, {0, 0}, {0, 0}, {0, 0}}};
     if (argc != 5 && argc != 6)
-        return cli_usage_error("trace", "%s: expected '%s' (points as X,Y)", argv[0],
-                               forms[basis]);
+        return cli_usage_error("trace", "%s: expected '%s' (points as X,Y)", argv[0], forms[basis]);
     if (parse_points(argv + 1, 4, curve.g) != CLI_OK)
         return CLI_USAGE;
     if (argc == 6 && trace_parse_int("N", argv[5], 1, 1000, &n))
@@ -230,8 +234,8 @@ static int run_cubic(cg_curve_basis basis, int argc, char **argv, const trace_ou
                                            "G = [P0 P1 P2 P3]"};
     trace_note(run, "T = [t^3 t^2 t 1]; %s", geometry[basis]);
     for (int i = 0; i < 4; i++)
-        trace_note(run, "M row %d: %8.4g %8.4g %8.4g %8.4g", i + 1, m.m[i][0], m.m[i][1],
-                   m.m[i][2], m.m[i][3]);
+        trace_note(run, "M row %d: %8.4g %8.4g %8.4g %8.4g", i + 1, m.m[i][0], m.m[i][1], m.m[i][2],
+                   m.m[i][3]);
     for (int i = 0; i < 4; i++)
         trace_note(run, "G%d = (%g, %g)", i + 1, curve.g[i].x, curve.g[i].y);
     trace_note(run, "b1..b4 = T M, the blending weights: Q = b1 G1 + b2 G2 + b3 G3 + b4 G4");
@@ -271,8 +275,10 @@ static int run_casteljau(int argc, char **argv, const trace_outputs *out)
     cg_vec2 control[MAX_CONTROL];
     int count = argc - 2;
     if (argc < 4 || count > MAX_CONTROL)
-        return cli_usage_error("trace", "casteljau: expected 'casteljau T P0 P1 [P2 ...]' with 2 "
-                                        "to %d points X,Y", MAX_CONTROL);
+        return cli_usage_error("trace",
+                               "casteljau: expected 'casteljau T P0 P1 [P2 ...]' with 2 "
+                               "to %d points X,Y",
+                               MAX_CONTROL);
     if (trace_parse_real("T", argv[1], &t) || parse_points(argv + 2, count, control) != CLI_OK)
         return CLI_USAGE;
     trace_run *run = trace_run_create("casteljau", argc - 1, argv + 1,
@@ -297,8 +303,10 @@ static int run_flatten(int argc, char **argv, const trace_outputs *out)
     cg_vec2 control[MAX_CONTROL];
     int count = argc - 2;
     if (argc < 4 || count > MAX_CONTROL)
-        return cli_usage_error("trace", "flatten: expected 'flatten TOLERANCE P0 P1 [P2 ...]' "
-                                        "with 2 to %d points X,Y", MAX_CONTROL);
+        return cli_usage_error("trace",
+                               "flatten: expected 'flatten TOLERANCE P0 P1 [P2 ...]' "
+                               "with 2 to %d points X,Y",
+                               MAX_CONTROL);
     if (trace_parse_real("TOLERANCE", argv[1], &tolerance)
         || parse_points(argv + 2, count, control) != CLI_OK)
         return CLI_USAGE;

@@ -29,15 +29,17 @@ static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
         return cli_usage_error("trace", "cohen-sutherland: the window needs XMIN <= XMAX and "
                                         "YMIN <= YMAX");
     cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
-    trace_run *run = trace_run_create("cohen-sutherland", argc - 1, argv + 1,
-                                      "Cohen-Sutherland: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",
-                                      p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax,
-                                      window.ymin, window.ymax);
+    trace_run *run = trace_run_create(
+        "cohen-sutherland", argc - 1, argv + 1,
+        "Cohen-Sutherland: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]", p0.x, p0.y, p1.x, p1.y,
+        window.xmin, window.xmax, window.ymin, window.ymax);
     if (!run)
         return cli_fail("trace: out of memory");
     run->y_up = 1;
-    cg_vec2 frame[4] = {{window.xmin, window.ymin}, {window.xmax, window.ymin},
-                        {window.xmax, window.ymax}, {window.xmin, window.ymax}};
+    cg_vec2 frame[4] = {{window.xmin, window.ymin},
+                        {window.xmax, window.ymin},
+                        {window.xmax, window.ymax},
+                        {window.xmin, window.ymax}};
     trace_scene_add(run, frame, 4, 1);
     trace_note(run, "region codes TBRL: T y > ymax, B y < ymin, R x > xmax, L x < xmin (a "
                     "point on the boundary is inside)");
@@ -70,13 +72,15 @@ static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
     cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
     trace_run *run = trace_run_create("liang-barsky", argc - 1, argv + 1,
                                       "Liang-Barsky: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",
-                                      p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax,
-                                      window.ymin, window.ymax);
+                                      p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax, window.ymin,
+                                      window.ymax);
     if (!run)
         return cli_fail("trace: out of memory");
     run->y_up = 1;
-    cg_vec2 frame[4] = {{window.xmin, window.ymin}, {window.xmax, window.ymin},
-                        {window.xmax, window.ymax}, {window.xmin, window.ymax}};
+    cg_vec2 frame[4] = {{window.xmin, window.ymin},
+                        {window.xmax, window.ymin},
+                        {window.xmax, window.ymax},
+                        {window.xmin, window.ymax}};
     trace_scene_add(run, frame, 4, 1);
     trace_note(run, "P(t) = P0 + t (P1 - P0), 0 <= t <= 1, is inside where p_k t <= q_k:");
     trace_note(run, "  left p = -dx, q = x0 - xmin; right p = dx, q = xmax - x0;");
@@ -105,8 +109,8 @@ static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *ou
         return cli_usage_error("trace", "sutherland-hodgman: the window needs at least 3 "
                                         "points");
     trace_run *run = trace_run_create("sutherland-hodgman", argc - 1, argv + 1,
-                                      "Sutherland-Hodgman: a %d-gon clipped by a convex %d-gon",
-                                      n, m);
+                                      "Sutherland-Hodgman: a %d-gon clipped by a convex %d-gon", n,
+                                      m);
     if (!run)
         return cli_fail("trace: out of memory");
     run->y_up = 1;
@@ -120,8 +124,10 @@ static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *ou
                     "input");
     cg_status status = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m,
                                                    cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the window must be convex with non-zero area, and "
-                                         "every point finite", out);
+    int code = trace_finish(run, status,
+                            "the window must be convex with non-zero area, and "
+                            "every point finite",
+                            out);
     trace_run_free(run);
     return code;
 }
@@ -203,8 +209,10 @@ static int run_frustum(int argc, char **argv, const trace_outputs *out)
     if (n < 3)
         return cli_usage_error("trace", "frustum: the polygon needs at least 3 points");
     cg_mat4 view, projection;
-    if (!(fovy > 0 && fovy < 180) || cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
-        || cg_proj_perspective(fovy * 3.14159265358979323846 / 180, 4.0 / 3.0, 1, 20, &projection) != CG_OK)
+    if (!(fovy > 0 && fovy < 180)
+        || cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
+        || cg_proj_perspective(fovy * 3.14159265358979323846 / 180, 4.0 / 3.0, 1, 20, &projection)
+               != CG_OK)
         return cli_usage_error("trace", "frustum: EYE and TARGET must differ (not along +y) and "
                                         "FOVY lie in (0, 180)");
     cg_plane planes[6];
@@ -212,12 +220,14 @@ static int run_frustum(int argc, char **argv, const trace_outputs *out)
     static const char *const names[6] = {"left", "right", "bottom", "top", "near", "far"};
     trace_run *run = trace_run_create("frustum", argc - 1, argv + 1,
                                       "A %d-gon clipped against the view volume of a camera at "
-                                      "(%g, %g, %g) looking at (%g, %g, %g)", n, eye.x, eye.y,
-                                      eye.z, target.x, target.y, target.z);
+                                      "(%g, %g, %g) looking at (%g, %g, %g)",
+                                      n, eye.x, eye.y, eye.z, target.x, target.y, target.z);
     if (!run)
         return cli_fail("trace: out of memory");
-    trace_note(run, "%g degrees, aspect 4:3, near 1, far 20; the six planes in world space, "
-                    "normals inward: d(p) = N.p + offset >= 0 inside", fovy);
+    trace_note(run,
+               "%g degrees, aspect 4:3, near 1, far 20; the six planes in world space, "
+               "normals inward: d(p) = N.p + offset >= 0 inside",
+               fovy);
     for (int k = 0; k < 6; k++)
         trace_note(run, "  %-6s N = (%.6g, %.6g, %.6g), offset %.6g", names[k], planes[k].normal.x,
                    planes[k].normal.y, planes[k].normal.z, planes[k].offset);

@@ -18,8 +18,10 @@ static int parse_contours(const char *text, cg_vec2 *points, int *sizes, int *co
     for (;;) {
         size_t n = strcspn(at, ";");
         if (n >= sizeof part || count >= MAX_CONTOURS)
-            return cli_usage_error("trace", "scanline: at most %d contours of at most %zu "
-                                            "characters", MAX_CONTOURS, sizeof part - 1);
+            return cli_usage_error("trace",
+                                   "scanline: at most %d contours of at most %zu "
+                                   "characters",
+                                   MAX_CONTOURS, sizeof part - 1);
         memcpy(part, at, n);
         part[n] = 0;
         int got = trace_parse_polygon("POLYGON", part, points + total, MAX_POINTS - total);
@@ -58,10 +60,9 @@ static int run_scanline(int argc, char **argv, const trace_outputs *out)
     }
     if (parse_contours(argv[1], points, sizes, &contours) != CLI_OK)
         return CLI_USAGE;
-    trace_run *run = trace_run_create("scanline", argc - 1, argv + 1,
-                                      "Scan-line polygon fill, %d contour%s, %s rule", contours,
-                                      contours == 1 ? "" : "s",
-                                      rule == CG_FILL_NONZERO ? "non-zero" : "even-odd");
+    trace_run *run = trace_run_create(
+        "scanline", argc - 1, argv + 1, "Scan-line polygon fill, %d contour%s, %s rule", contours,
+        contours == 1 ? "" : "s", rule == CG_FILL_NONZERO ? "non-zero" : "even-odd");
     if (!run)
         return cli_fail("trace: out of memory");
     int start = 0;
@@ -75,10 +76,10 @@ static int run_scanline(int argc, char **argv, const trace_outputs *out)
                     "first row");
     trace_note(run, "each scan-line: drop finished edges, add starting ones, sort the active "
                     "list by crossing x");
-    trace_note(run, "spans: between crossings where the %s; a span [xl, xr) takes the "
-                    "pixels ceil(xl - 0.5) .. ceil(xr - 0.5) - 1 (centre x in [xl, xr))",
-               rule == CG_FILL_NONZERO ? "winding number is not zero"
-                                       : "crossing count is odd");
+    trace_note(run,
+               "spans: between crossings where the %s; a span [xl, xr) takes the "
+               "pixels ceil(xl - 0.5) .. ceil(xr - 0.5) - 1 (centre x in [xl, xr))",
+               rule == CG_FILL_NONZERO ? "winding number is not zero" : "crossing count is odd");
     cg_status status = cg_scanline_fill_steps(points, sizes, contours, rule, cg_step_log_record,
                                               run->log);
     long pixels = trace_pixel_total(run);
@@ -118,22 +119,27 @@ static int run_seed_fill(int boundary, int argc, char **argv, const trace_output
         return cli_fail("trace: %s: %s", argv[1], cg_status_str(status));
     trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1,
                                       "%s fill of %s from (%ld, %ld), %ld-connected",
-                                      boundary ? "Boundary" : "Flood", argv[1], x, y,
-                                      connectivity);
+                                      boundary ? "Boundary" : "Flood", argv[1], x, y, connectivity);
     if (!run) {
         cg_image_free(image);
         return cli_fail("trace: out of memory");
     }
     if (boundary)
-        trace_note(run, "the region: pixels not of the boundary colour %s (each channel within "
-                        "%ld), connected to the seed", argv[4], tolerance);
+        trace_note(run,
+                   "the region: pixels not of the boundary colour %s (each channel within "
+                   "%ld), connected to the seed",
+                   argv[4], tolerance);
     else
-        trace_note(run, "the region: pixels like the seed's colour (each channel within %ld), "
-                        "connected to the seed", tolerance);
+        trace_note(run,
+                   "the region: pixels like the seed's colour (each channel within %ld), "
+                   "connected to the seed",
+                   tolerance);
     trace_note(run, "pop a seed; extend it left and right to its whole run [left, right] and "
                     "fill it;");
-    trace_note(run, "push the rightmost pixel of each run of region pixels next to it on the "
-                    "rows above and below%s", connectivity == 8 ? " (diagonals included)" : "");
+    trace_note(run,
+               "push the rightmost pixel of each run of region pixels next to it on the "
+               "rows above and below%s",
+               connectivity == 8 ? " (diagonals included)" : "");
     cg_connectivity c = connectivity == 8 ? CG_CONNECT_8 : CG_CONNECT_4;
     status = boundary ? cg_boundary_fill_steps(image, (int)x, (int)y, wall, c, (int)tolerance,
                                                cg_step_log_record, run->log)

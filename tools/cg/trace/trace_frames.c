@@ -195,8 +195,8 @@ static void draw_frame(cg_image *image, const trace_run *run, const frame_view *
     }
     /* the fixed input over the pixels (the real line), under the results */
     for (int i = 0; i < run->scene_count; i++)
-        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed,
-                  scene, 0);
+        draw_path(image, v, run->scene[i].points, run->scene[i].count, run->scene[i].closed, scene,
+                  0);
     for (size_t i = 0; i <= upto; i++) {
         const cg_step *s = cg_step_log_get(run->log, i);
         /* a list of results (Sutherland-Hodgman's) replaces the one before it */
@@ -230,7 +230,8 @@ int trace_write_frames(const trace_run *run, const char *dir, int *frame_count)
     size_t count = cg_step_log_count(run->log);
     if (count > TRACE_MAX_FRAMES)
         return cli_fail("trace: %zu steps: pictures are drawn for at most %d; trace a smaller "
-                        "input", count, TRACE_MAX_FRAMES);
+                        "input",
+                        count, TRACE_MAX_FRAMES);
     if (make_directory(dir) != CLI_OK)
         return CLI_FAILED;
     frame_view v = make_view(run);

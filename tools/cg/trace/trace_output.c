@@ -111,14 +111,23 @@ static int parse_path(const char *command, const cli_option *option, const char 
 }
 
 static const cli_option output_options[] = {
-    {.name = "--json", .kind = CLI_FLAG, .offset = offsetof(trace_outputs, json),
-     .flag_value = 1, .help = "one JSON object instead of the table (docs/teaching.md)"},
-    {.name = "--frames", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, frames_dir),
-     .value_name = "DIR", .parse = parse_path,
+    {.name = "--json",
+     .kind = CLI_FLAG,
+     .offset = offsetof(trace_outputs, json),
+     .flag_value = 1,
+     .help = "one JSON object instead of the table (docs/teaching.md)"},
+    {.name = "--frames",
+     .kind = CLI_CUSTOM,
+     .offset = offsetof(trace_outputs, frames_dir),
+     .value_name = "DIR",
+     .parse = parse_path,
      .help = "a PNG per step (DIR/step_0000.png ...): the picture so\n"
              "far, the step's pixels orange, its geometry red"},
-    {.name = "--html", .kind = CLI_CUSTOM, .offset = offsetof(trace_outputs, html),
-     .value_name = "OUT.html", .parse = parse_path,
+    {.name = "--html",
+     .kind = CLI_CUSTOM,
+     .offset = offsetof(trace_outputs, html),
+     .value_name = "OUT.html",
+     .parse = parse_path,
      .help = "one self-contained page stepping through those pictures\n"
              "(buttons, slider, arrow keys; works offline)"},
 };
@@ -126,7 +135,9 @@ static const cli_option output_options[] = {
 static const cli_option_group output_groups[] = {CLI_GROUP(NULL, output_options), {0}};
 
 const cli_syntax trace_output_syntax = {
-    .command = "trace", .groups = output_groups, .max_positionals = MAX_ARGUMENTS,
+    .command = "trace",
+    .groups = output_groups,
+    .max_positionals = MAX_ARGUMENTS,
     .too_many = "too many arguments (at most 256), from '%s' on",
 };
 
@@ -258,9 +269,8 @@ static void print_block(const cg_step_log *log, size_t from, size_t to)
     char line[MAX_COLUMNS * (CELL + 2) + 16];
     size_t used = (size_t)snprintf(line, sizeof line, " step");
     for (int c = 0; c < columns; c++)
-        used += (size_t)snprintf(line + used, sizeof line - used,
-                                 numeric[c] ? "  %*s" : "  %-*s", width[c],
-                                 first->fields[c].name);
+        used += (size_t)snprintf(line + used, sizeof line - used, numeric[c] ? "  %*s" : "  %-*s",
+                                 width[c], first->fields[c].name);
     while (used > 0 && line[used - 1] == ' ')
         line[--used] = 0;
     puts(line);
@@ -270,8 +280,7 @@ static void print_block(const cg_step_log *log, size_t from, size_t to)
         for (int c = 0; c < columns; c++) {
             cell_text(&s->fields[c], numeric[c], text, sizeof text);
             used += (size_t)snprintf(line + used, sizeof line - used,
-                                     numeric[c] ? "  %*s" : "  %-*s", width[c],
-                                     text);
+                                     numeric[c] ? "  %*s" : "  %-*s", width[c], text);
             if (used >= sizeof line)
                 used = sizeof line - 1;
         }

@@ -27,9 +27,9 @@ typedef struct trace_run {
     char *title;
     char *notes[TRACE_MAX_NOTES];
     int note_count;
-    char *summary;         /* the closing line, or NULL */
+    char *summary; /* the closing line, or NULL */
     cg_step_log *log;
-    int y_up;              /* geometry is y-up (clipping), not image rows */
+    int y_up; /* geometry is y-up (clipping), not image rows */
     trace_scene_path scene[TRACE_MAX_SCENE];
     int scene_count;
     cg_image *background; /* the image a fill works on, owned (or NULL) */

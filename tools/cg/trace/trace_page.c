@@ -45,8 +45,7 @@ static void put_js_string(FILE *out, const char *s)
 
 static int put_base64_file(FILE *out, const char *path)
 {
-    static const char digits[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     FILE *in = fopen(path, "rb");
     if (!in)
         return -1;
@@ -165,8 +164,10 @@ static int write_page(FILE *out, const trace_run *run, const char *dir, int fram
     fputs("];\nvar steps=[\n", out);
     size_t in_phase = 0;
     for (size_t i = 0; i < cg_step_log_count(run->log); i++) {
-        const cg_step *s = cg_step_log_get(run->log, i), *p = i ? cg_step_log_get(run->log, i - 1) : NULL;
-        if (p && !((!p->phase && !s->phase) || (p->phase && s->phase && !strcmp(p->phase, s->phase))))
+        const cg_step *s = cg_step_log_get(run->log, i),
+                      *p = i ? cg_step_log_get(run->log, i - 1) : NULL;
+        if (p
+            && !((!p->phase && !s->phase) || (p->phase && s->phase && !strcmp(p->phase, s->phase))))
             in_phase = 0;
         fputs("{\"phase\":", out);
         put_js_string(out, s->phase ? s->phase : "");

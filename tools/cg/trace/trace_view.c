@@ -82,9 +82,9 @@ static int run_vanishing(int argc, char **argv, const trace_outputs *out)
         return cli_usage_error("trace", "vanishing: the projection cannot be made");
     trace_run *run = trace_run_create("vanishing", argc - 1, argv + 1,
                                       "The vanishing point of direction (%g, %g, %g), camera at "
-                                      "(%g, %g, %g) looking at (%g, %g, %g)", direction.x,
-                                      direction.y, direction.z, eye.x, eye.y, eye.z, target.x,
-                                      target.y, target.z);
+                                      "(%g, %g, %g) looking at (%g, %g, %g)",
+                                      direction.x, direction.y, direction.z, eye.x, eye.y, eye.z,
+                                      target.x, target.y, target.z);
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "parallel lines of direction d meet at the point at infinity (d, 0); its "
@@ -106,8 +106,8 @@ static int run_color(int lightness, int argc, char **argv, const trace_outputs *
     for (int i = 0; i < 3; i++)
         if (trace_parse_real(names[i], argv[i + 1], &rgb[i]))
             return CLI_USAGE;
-    trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1, "RGB (%g, %g, %g) to %s",
-                                      rgb[0], rgb[1], rgb[2], lightness ? "HSL" : "HSV");
+    trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1, "RGB (%g, %g, %g) to %s", rgb[0],
+                                      rgb[1], rgb[2], lightness ? "HSL" : "HSV");
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "hue H in degrees [0, 360), saturation S and %s in [0, 1] (section 7.3)",
@@ -138,8 +138,10 @@ static int parse_light(const char *text, cg_light *light)
     const char *colon = strchr(text, ':');
     size_t n = colon ? (size_t)(colon - text) : 0;
     if (!colon || n >= sizeof kind)
-        return cli_usage_error("trace", "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
-                                        "directional:X,Y,Z:R,G,B", text);
+        return cli_usage_error("trace",
+                               "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
+                               "directional:X,Y,Z:R,G,B",
+                               text);
     memcpy(kind, text, n);
     kind[n] = 0;
     const char *rest = colon + 1, *second = strchr(rest, ':');
@@ -160,8 +162,10 @@ static int parse_light(const char *text, cg_light *light)
             return cli_usage_error("trace", "light: a direction must not be zero");
         *light = kind[0] == 'p' ? cg_light_point(where, color) : cg_light_directional(where, color);
     } else {
-        return cli_usage_error("trace", "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
-                                        "directional:X,Y,Z:R,G,B", text);
+        return cli_usage_error("trace",
+                               "light: '%s' is not ambient:R,G,B, point:X,Y,Z:R,G,B or "
+                               "directional:X,Y,Z:R,G,B",
+                               text);
     }
     if (cg_light_check(light, NULL) != CG_OK)
         return cli_usage_error("trace", "light: '%s': colours must not be negative", text);
@@ -174,8 +178,10 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
     cg_light lights[MAX_LIGHTS];
     size_t count = 0;
     if (argc < 4 || argc > 4 + MAX_LIGHTS)
-        return cli_usage_error("trace", "light: expected 'light POINT NORMAL EYE [LIGHT ...]' "
-                                        "(at most %d lights)", MAX_LIGHTS);
+        return cli_usage_error("trace",
+                               "light: expected 'light POINT NORMAL EYE [LIGHT ...]' "
+                               "(at most %d lights)",
+                               MAX_LIGHTS);
     if (cli_parse_vec3("trace", "POINT", argv[1], &point)
         || cli_parse_vec3("trace", "NORMAL", argv[2], &normal)
         || cli_parse_vec3("trace", "EYE", argv[3], &eye))
@@ -195,12 +201,15 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
     cg_vec3 view = cg_vec3_normalize(cg_vec3_sub(eye, point));
     trace_run *run = trace_run_create("light", argc - 1, argv + 1,
                                       "Illumination at (%g, %g, %g), normal (%g, %g, %g), seen "
-                                      "from (%g, %g, %g)", point.x, point.y, point.z, normal.x,
-                                      normal.y, normal.z, eye.x, eye.y, eye.z);
+                                      "from (%g, %g, %g)",
+                                      point.x, point.y, point.z, normal.x, normal.y, normal.z,
+                                      eye.x, eye.y, eye.z);
     if (!run)
         return cli_fail("trace: out of memory");
-    trace_note(run, "material: Od = (0.8, 0.4, 0.2), ka = 0.2, kd = 0.7, ks = 0.5, n = 20, "
-                    "Phong specular, Os white; V = (%g, %g, %g)", view.x, view.y, view.z);
+    trace_note(run,
+               "material: Od = (0.8, 0.4, 0.2), ka = 0.2, kd = 0.7, ks = 0.5, n = 20, "
+               "Phong specular, Os white; V = (%g, %g, %g)",
+               view.x, view.y, view.z);
     trace_note(run, "I = sum ka Od Ia + sum f_att spot Il (kd Od max(N.L, 0) + ks Os spec), "
                     "spec = max(R.V, 0)^n, R = 2 (N.L) N - L");
     trace_note(run, "f_att = min(1, 1 / (c0 + c1 d + c2 d^2)) (no attenuation here: c = 1, 0, "
@@ -228,13 +237,15 @@ static int frame_mesh(const char *path, double about_y, double about_x, double a
     cg_status status = cg_mesh_bounds(*mesh, &lo, &hi);
     if (status == CG_OK) { /* frame the turned box */
         for (int i = 0; i < 8; i++)
-            corner[i] = cg_mat4_transform_point(*model, cg_vec3_make(i & 1 ? hi.x : lo.x,
-                                                                     i & 2 ? hi.y : lo.y,
-                                                                     i & 4 ? hi.z : lo.z));
+            corner[i] = cg_mat4_transform_point(
+                *model,
+                cg_vec3_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z));
         lo = hi = corner[0];
         for (int i = 1; i < 8; i++) {
-            lo = cg_vec3_make(fmin(lo.x, corner[i].x), fmin(lo.y, corner[i].y), fmin(lo.z, corner[i].z));
-            hi = cg_vec3_make(fmax(hi.x, corner[i].x), fmax(hi.y, corner[i].y), fmax(hi.z, corner[i].z));
+            lo = cg_vec3_make(fmin(lo.x, corner[i].x), fmin(lo.y, corner[i].y),
+                              fmin(lo.z, corner[i].z));
+            hi = cg_vec3_make(fmax(hi.x, corner[i].x), fmax(hi.y, corner[i].y),
+                              fmax(hi.z, corner[i].z));
         }
         status = cg_camera_frame(camera, lo, hi, aspect);
     }
@@ -262,8 +273,9 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
         return CLI_FAILED;
     trace_run *run = trace_run_create("backface", argc - 1, argv + 1,
                                       "Back-face culling of %s turned %g degrees about y and %g "
-                                      "about x, camera at (%g, %g, %g)", argv[1], about_y, about_x,
-                                      camera.eye.x, camera.eye.y, camera.eye.z);
+                                      "about x, camera at (%g, %g, %g)",
+                                      argv[1], about_y, about_x, camera.eye.x, camera.eye.y,
+                                      camera.eye.z);
     if (!run) {
         cg_mesh_free(mesh);
         return cli_fail("trace: out of memory");
@@ -278,7 +290,9 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
     cg_mesh_free(mesh);
     long culled = 0;
     for (size_t i = 0; i < cg_step_log_count(run->log); i++)
-        culled += strcmp(cg_step_find(cg_step_log_get(run->log, i), "decision")->text, "front: kept") != 0;
+        culled += strcmp(cg_step_find(cg_step_log_get(run->log, i), "decision")->text,
+                         "front: kept")
+                  != 0;
     trace_summary(run, "%ld of %zu triangles culled", culled, cg_step_log_count(run->log));
     int code = trace_finish(run, status, "the mesh is not valid", out);
     trace_run_free(run);
@@ -303,16 +317,18 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
     if (frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
         return CLI_FAILED;
     trace_run *run = trace_run_create("zbuffer", argc - 1, argv + 1,
-                                      "The z-buffer at pixel (%ld, %ld) of a %dx%d frame of %s",
-                                      x, y, width, height, argv[1]);
+                                      "The z-buffer at pixel (%ld, %ld) of a %dx%d frame of %s", x,
+                                      y, width, height, argv[1]);
     if (!run) {
         cg_mesh_free(mesh);
         return cli_fail("trace: out of memory");
     }
     trace_note(run, "the mesh turned 30 degrees about y and 20 about x, framed as cg render "
                     "frames it; back faces culled");
-    trace_note(run, "each triangle whose screen box holds the centre (%ld.5, %ld.5): its "
-                    "window x, y, depth, the centre's barycentric coordinates", x, y);
+    trace_note(run,
+               "each triangle whose screen box holds the centre (%ld.5, %ld.5): its "
+               "window x, y, depth, the centre's barycentric coordinates",
+               x, y);
     trace_note(run, "a fragment when all three are >= 0; depth = the weighted vertex depths; "
                     "accepted when nearer than the buffer (initially the background)");
     cg_status status = cg_zbuffer_pixel_steps(mesh, model, &camera, width, height, (int)x, (int)y,
@@ -353,14 +369,17 @@ static int run_hemesh(int ring, int argc, char **argv, const trace_outputs *out)
     trace_note(run, "half-edges come in twins: twin(h) = h xor 1; each knows its origin, next, "
                     "prev and face");
     if (ring)
-        trace_note(run, "around vertex %ld counter-clockwise: from an outgoing h, the next one "
-                        "is twin(prev(h))", index);
+        trace_note(run,
+                   "around vertex %ld counter-clockwise: from an outgoing h, the next one "
+                   "is twin(prev(h))",
+                   index);
     else
         trace_note(run, "around face %ld: from its half-edge, follow next until it comes back",
                    index);
     trace_note(run, "the frames show x and y of the positions");
-    status = ring ? cg_hemesh_one_ring_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log)
-                  : cg_hemesh_face_loop_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log);
+    status = ring
+                 ? cg_hemesh_one_ring_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log)
+                 : cg_hemesh_face_loop_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log);
     cg_hemesh_free(hemesh);
     int code = trace_finish(run, status, ring ? "no such vertex" : "no such face", out);
     trace_run_free(run);

@@ -500,7 +500,8 @@ static cg_status insert_all(mesh *m, size_t count)
             round++;
         order.data[i].key = round << 56 | morton(x, y); /* rounds below 2^8 */
     }
-    qsort(order.data, count, sizeof *order.data, compare_keyed);
+    if (count > 1) /* qsort wants a non-null array even when empty */
+        qsort(order.data, count, sizeof *order.data, compare_keyed);
     cg_status st = CG_OK;
     for (size_t i = 0; i < count && st == CG_OK; i++)
         st = insert(m, order.data[i].vertex);

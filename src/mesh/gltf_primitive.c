@@ -137,7 +137,7 @@ static cg_status describe_primitive(gltf_document *doc, const cJSON *item, const
         return s;
     p->mode = (int)mode;
     p->material = material;
-    char attributes_path[96];
+    char attributes_path[128];
     snprintf(attributes_path, sizeof attributes_path, "%s.attributes", path);
     /* every attribute is an accessor index with a known name */
     unsigned long long sets[4] = {0, 0, 0, 0}; /* TEXCOORD_n, COLOR_n, JOINTS_n, WEIGHTS_n */

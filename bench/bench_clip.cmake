@@ -6,19 +6,17 @@ target_compile_options(bench_clip PRIVATE $<$<COMPILE_LANGUAGE:C>:${CG_WARNINGS}
 target_link_libraries(bench_clip PRIVATE cg_static)
 find_path(CG_CLIPPER_INCLUDE NAMES polyclipping/clipper.hpp)
 find_library(CG_CLIPPER_LIBRARY NAMES polyclipping)
-if(CG_CLIPPER_INCLUDE AND CG_CLIPPER_LIBRARY)
-  target_compile_definitions(bench_clip PRIVATE CG_HAVE_CLIPPER)
-  target_include_directories(bench_clip PRIVATE ${CG_CLIPPER_INCLUDE})
-  target_link_libraries(bench_clip PRIVATE ${CG_CLIPPER_LIBRARY})
-else()
-  message(STATUS "Clipper (libpolyclipping-dev) not found: bench_clip runs without it")
-endif()
+cg_bench_peer(bench_clip
+              WHEN CG_CLIPPER_INCLUDE AND CG_CLIPPER_LIBRARY
+              DEFINE CG_HAVE_CLIPPER
+              INCLUDE ${CG_CLIPPER_INCLUDE}
+              LINK ${CG_CLIPPER_LIBRARY}
+              MESSAGE "Clipper (libpolyclipping-dev) not found: bench_clip runs without it")
 find_path(CG_GEOS_INCLUDE_BENCH NAMES geos_c.h)
 find_library(CG_GEOS_LIBRARY_BENCH NAMES geos_c)
-if(CG_GEOS_INCLUDE_BENCH AND CG_GEOS_LIBRARY_BENCH)
-  target_compile_definitions(bench_clip PRIVATE CG_HAVE_GEOS)
-  target_include_directories(bench_clip PRIVATE ${CG_GEOS_INCLUDE_BENCH})
-  target_link_libraries(bench_clip PRIVATE ${CG_GEOS_LIBRARY_BENCH})
-else()
-  message(STATUS "GEOS (libgeos-dev) not found: bench_clip runs without it")
-endif()
+cg_bench_peer(bench_clip
+              WHEN CG_GEOS_INCLUDE_BENCH AND CG_GEOS_LIBRARY_BENCH
+              DEFINE CG_HAVE_GEOS
+              INCLUDE ${CG_GEOS_INCLUDE_BENCH}
+              LINK ${CG_GEOS_LIBRARY_BENCH}
+              MESSAGE "GEOS (libgeos-dev) not found: bench_clip runs without it")

@@ -12,22 +12,19 @@ target_compile_definitions(bench_draw_script PRIVATE CG_TOOL="$<TARGET_FILE:cg>"
                                                      _POSIX_C_SOURCE=200809L _DEFAULT_SOURCE)
 target_link_libraries(bench_draw_script PRIVATE cg_static m)
 add_dependencies(bench_draw_script cg)
-if(DRAW_SCRIPT_CAIRO_FOUND)
-  target_compile_definitions(bench_draw_script PRIVATE CG_BENCH_HAVE_CAIRO)
-  target_link_libraries(bench_draw_script PRIVATE PkgConfig::DRAW_SCRIPT_CAIRO)
-else()
-  message(STATUS "bench_draw_script: Cairo not found, its rows are skipped")
-endif()
-if(DRAW_SCRIPT_AGG_FOUND)
-  target_compile_definitions(bench_draw_script PRIVATE CG_BENCH_HAVE_AGG)
-  target_link_libraries(bench_draw_script PRIVATE PkgConfig::DRAW_SCRIPT_AGG)
-else()
-  message(STATUS "bench_draw_script: AGG (libagg-dev) not found, its rows are skipped")
-endif()
-if(OpenCV_FOUND)
-  target_compile_definitions(bench_draw_script PRIVATE CG_BENCH_HAVE_OPENCV)
-  target_include_directories(bench_draw_script PRIVATE ${OpenCV_INCLUDE_DIRS})
-  target_link_libraries(bench_draw_script PRIVATE opencv_core opencv_imgproc)
-else()
-  message(STATUS "bench_draw_script: OpenCV not found, its rows are skipped")
-endif()
+cg_bench_peer(bench_draw_script
+              WHEN DRAW_SCRIPT_CAIRO_FOUND
+              DEFINE CG_BENCH_HAVE_CAIRO
+              LINK PkgConfig::DRAW_SCRIPT_CAIRO
+              MESSAGE "bench_draw_script: Cairo not found, its rows are skipped")
+cg_bench_peer(bench_draw_script
+              WHEN DRAW_SCRIPT_AGG_FOUND
+              DEFINE CG_BENCH_HAVE_AGG
+              LINK PkgConfig::DRAW_SCRIPT_AGG
+              MESSAGE "bench_draw_script: AGG (libagg-dev) not found, its rows are skipped")
+cg_bench_peer(bench_draw_script
+              WHEN OpenCV_FOUND
+              DEFINE CG_BENCH_HAVE_OPENCV
+              INCLUDE ${OpenCV_INCLUDE_DIRS}
+              LINK opencv_core opencv_imgproc
+              MESSAGE "bench_draw_script: OpenCV not found, its rows are skipped")

@@ -7,22 +7,19 @@ add_executable(bench_fill ${CMAKE_CURRENT_SOURCE_DIR}/bench_fill.c
                           ${CMAKE_CURRENT_SOURCE_DIR}/bench_fill_peers.cpp)
 target_compile_options(bench_fill PRIVATE $<$<COMPILE_LANGUAGE:C>:${CG_WARNINGS}>)
 target_link_libraries(bench_fill PRIVATE cg_static)
-if(BENCH_FILL_CAIRO_FOUND)
-  target_compile_definitions(bench_fill PRIVATE CG_BENCH_HAVE_CAIRO)
-  target_link_libraries(bench_fill PRIVATE PkgConfig::BENCH_FILL_CAIRO)
-else()
-  message(STATUS "bench_fill: Cairo not found, its rows are skipped")
-endif()
-if(BENCH_FILL_AGG_FOUND)
-  target_compile_definitions(bench_fill PRIVATE CG_BENCH_HAVE_AGG)
-  target_link_libraries(bench_fill PRIVATE PkgConfig::BENCH_FILL_AGG)
-else()
-  message(STATUS "bench_fill: AGG (libagg-dev) not found, its rows are skipped")
-endif()
-if(OpenCV_FOUND)
-  target_compile_definitions(bench_fill PRIVATE CG_BENCH_HAVE_OPENCV)
-  target_include_directories(bench_fill PRIVATE ${OpenCV_INCLUDE_DIRS})
-  target_link_libraries(bench_fill PRIVATE opencv_core opencv_imgproc)
-else()
-  message(STATUS "bench_fill: OpenCV not found, its rows are skipped")
-endif()
+cg_bench_peer(bench_fill
+              WHEN BENCH_FILL_CAIRO_FOUND
+              DEFINE CG_BENCH_HAVE_CAIRO
+              LINK PkgConfig::BENCH_FILL_CAIRO
+              MESSAGE "bench_fill: Cairo not found, its rows are skipped")
+cg_bench_peer(bench_fill
+              WHEN BENCH_FILL_AGG_FOUND
+              DEFINE CG_BENCH_HAVE_AGG
+              LINK PkgConfig::BENCH_FILL_AGG
+              MESSAGE "bench_fill: AGG (libagg-dev) not found, its rows are skipped")
+cg_bench_peer(bench_fill
+              WHEN OpenCV_FOUND
+              DEFINE CG_BENCH_HAVE_OPENCV
+              INCLUDE ${OpenCV_INCLUDE_DIRS}
+              LINK opencv_core opencv_imgproc
+              MESSAGE "bench_fill: OpenCV not found, its rows are skipped")

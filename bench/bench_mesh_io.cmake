@@ -7,19 +7,17 @@ target_compile_definitions(bench_mesh_io PRIVATE CG_SOURCE_DIR="${PROJECT_SOURCE
 target_link_libraries(bench_mesh_io PRIVATE cg_static)
 
 pkg_check_modules(TINYOBJ IMPORTED_TARGET tinyobjloader)
-if(TINYOBJ_FOUND)
-  target_compile_definitions(bench_mesh_io PRIVATE CG_HAVE_TINYOBJ)
-  target_link_libraries(bench_mesh_io PRIVATE PkgConfig::TINYOBJ)
-else()
-  message(STATUS "bench_mesh_io: tinyobjloader not found (libtinyobjloader-dev); OBJ rows without a peer")
-endif()
+cg_bench_peer(bench_mesh_io
+              WHEN TINYOBJ_FOUND
+              DEFINE CG_HAVE_TINYOBJ
+              LINK PkgConfig::TINYOBJ
+              MESSAGE "bench_mesh_io: tinyobjloader not found (libtinyobjloader-dev); OBJ rows without a peer")
 
 find_path(OPENMESH_INCLUDE OpenMesh/Core/IO/MeshIO.hh)
 find_library(OPENMESH_CORE OpenMeshCore)
-if(OPENMESH_INCLUDE AND OPENMESH_CORE)
-  target_compile_definitions(bench_mesh_io PRIVATE CG_HAVE_OPENMESH _USE_MATH_DEFINES)
-  target_include_directories(bench_mesh_io PRIVATE ${OPENMESH_INCLUDE})
-  target_link_libraries(bench_mesh_io PRIVATE ${OPENMESH_CORE})
-else()
-  message(STATUS "bench_mesh_io: OpenMesh not found (libopenmesh-dev); PLY rows without a peer")
-endif()
+cg_bench_peer(bench_mesh_io
+              WHEN OPENMESH_INCLUDE AND OPENMESH_CORE
+              DEFINE CG_HAVE_OPENMESH _USE_MATH_DEFINES
+              INCLUDE ${OPENMESH_INCLUDE}
+              LINK ${OPENMESH_CORE}
+              MESSAGE "bench_mesh_io: OpenMesh not found (libopenmesh-dev); PLY rows without a peer")

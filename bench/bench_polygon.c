@@ -138,6 +138,29 @@ static int runs_for(size_t n)
     return n >= 100000 ? 3 : n >= 10000 ? 5 : 15;
 }
 
+/* Times run on the Clipper2 copy of j's input and prints its row beside
+ * cg's time t_cg; the note compares cg's value v_cg with the peer's (areas,
+ * or triangle counts when counts).  Without Clipper2 a row says so when
+ * say_missing. */
+static void clipper2_row(const char *name, double t_cg, double v_cg, int counts,
+                         void (*run)(void *), job *j, int runs, int say_missing)
+{
+    char note[160];
+    if (!peer_clipper2_available()) {
+        if (say_missing)
+            bench_row(name, t_cg, "-", 0, "Clipper2 not found (../shared/peers/clipper2)");
+        return;
+    }
+    j->peer = peer_clipper2_prepare(&j->input->peer);
+    double t = bench_median(run, j, runs);
+    if (counts)
+        snprintf(note, sizeof note, "triangles cg %.0f, Clipper2 %.0f", v_cg, j->area);
+    else
+        snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", v_cg, j->area);
+    bench_row(name, t_cg, "Clipper2", t, note);
+    peer_clipper2_free(j->peer);
+}
+
 static void offsets(void)
 {
     static const size_t sizes[] = {1000, 10000, 100000};
@@ -159,15 +182,7 @@ static void offsets(void)
             double t_cg = bench_median(cg_offset_job, &j, runs), a_cg = j.area;
             char name[64], note[160];
             snprintf(name, sizeof name, "offset %s star %zu", join ? "round" : "miter", sizes[k]);
-            if (peer_clipper2_available()) {
-                j.peer = peer_clipper2_prepare(&s.peer);
-                double t = bench_median(clipper2_offset_job, &j, runs);
-                snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", a_cg, j.area);
-                bench_row(name, t_cg, "Clipper2", t, note);
-                peer_clipper2_free(j.peer);
-            } else {
-                bench_row(name, t_cg, "-", 0, "Clipper2 not found (../shared/peers/clipper2)");
-            }
+            clipper2_row(name, t_cg, a_cg, 0, clipper2_offset_job, &j, runs, 1);
             if (peer_geos_available()) {
                 j.peer = peer_geos_prepare(&s.peer);
                 double t = bench_median(geos_offset_job, &j, runs < 5 ? runs : 5);
@@ -202,13 +217,7 @@ static void rectangles(void)
             double t_bool = bench_median(cg_boolean_rect_job, &j, runs);
             snprintf(note, sizeof note, "areas rect %.6g, boolean %.6g", a_cg, j.area);
             bench_row(name, t_cg, "cg boolean", t_bool, note);
-            if (peer_clipper2_available()) {
-                j.peer = peer_clipper2_prepare(&s.peer);
-                double t = bench_median(clipper2_rect_job, &j, runs);
-                snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", a_cg, j.area);
-                bench_row(name, t_cg, "Clipper2", t, note);
-                peer_clipper2_free(j.peer);
-            }
+            clipper2_row(name, t_cg, a_cg, 0, clipper2_rect_job, &j, runs, 0);
             cg_polygon_set64_clear(&j.result);
             cg_clip_workspace_free(j.ws);
         }
@@ -227,17 +236,9 @@ static void triangulations(void)
         job j = {&s, {0}, cg_clip_workspace_create(), 0, 0, 0, 0, {0, 0, 0, 0}, NULL};
         int runs = runs_for(sizes[k]);
         double t_cg = bench_median(cg_triangulate_job, &j, runs), n_cg = j.area;
-        char name[64], note[160];
+        char name[64];
         snprintf(name, sizeof name, "triangulate star+hole %zu", sizes[k] + sizes[k] / 10);
-        if (peer_clipper2_available()) {
-            j.peer = peer_clipper2_prepare(&s.peer);
-            double t = bench_median(clipper2_triangulate_job, &j, runs);
-            snprintf(note, sizeof note, "triangles cg %.0f, Clipper2 %.0f", n_cg, j.area);
-            bench_row(name, t_cg, "Clipper2", t, note);
-            peer_clipper2_free(j.peer);
-        } else {
-            bench_row(name, t_cg, "-", 0, "Clipper2 not found (../shared/peers/clipper2)");
-        }
+        clipper2_row(name, t_cg, n_cg, 1, clipper2_triangulate_job, &j, runs, 1);
         cg_polygon_set64_clear(&j.result);
         cg_clip_workspace_free(j.ws);
         shape_free(&s);

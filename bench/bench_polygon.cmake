@@ -25,10 +25,9 @@ else()
 endif()
 find_path(CG_POLYGON_GEOS_INCLUDE_BENCH NAMES geos_c.h)
 find_library(CG_POLYGON_GEOS_LIBRARY_BENCH NAMES geos_c)
-if(CG_POLYGON_GEOS_INCLUDE_BENCH AND CG_POLYGON_GEOS_LIBRARY_BENCH)
-  target_compile_definitions(bench_polygon PRIVATE CG_HAVE_GEOS)
-  target_include_directories(bench_polygon PRIVATE ${CG_POLYGON_GEOS_INCLUDE_BENCH})
-  target_link_libraries(bench_polygon PRIVATE ${CG_POLYGON_GEOS_LIBRARY_BENCH})
-else()
-  message(STATUS "GEOS (libgeos-dev) not found: bench_polygon runs without it")
-endif()
+cg_bench_peer(bench_polygon
+              WHEN CG_POLYGON_GEOS_INCLUDE_BENCH AND CG_POLYGON_GEOS_LIBRARY_BENCH
+              DEFINE CG_HAVE_GEOS
+              INCLUDE ${CG_POLYGON_GEOS_INCLUDE_BENCH}
+              LINK ${CG_POLYGON_GEOS_LIBRARY_BENCH}
+              MESSAGE "GEOS (libgeos-dev) not found: bench_polygon runs without it")

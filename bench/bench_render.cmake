@@ -6,9 +6,8 @@ add_executable(bench_render ${CMAKE_CURRENT_SOURCE_DIR}/bench_render.c)
 target_compile_options(bench_render PRIVATE ${CG_WARNINGS})
 target_compile_definitions(bench_render PRIVATE CG_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_link_libraries(bench_render PRIVATE cg_static)
-if(OSMESA_BENCH_FOUND)
-  target_compile_definitions(bench_render PRIVATE CG_HAVE_OSMESA=1)
-  target_link_libraries(bench_render PRIVATE PkgConfig::OSMESA_BENCH)
-else()
-  message(STATUS "OSMesa (libosmesa6-dev) not found: bench_render runs without its peer")
-endif()
+cg_bench_peer(bench_render
+              WHEN OSMESA_BENCH_FOUND
+              DEFINE CG_HAVE_OSMESA=1
+              LINK PkgConfig::OSMESA_BENCH
+              MESSAGE "OSMesa (libosmesa6-dev) not found: bench_render runs without its peer")

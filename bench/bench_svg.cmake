@@ -5,9 +5,8 @@ add_executable(bench_svg ${CMAKE_CURRENT_SOURCE_DIR}/bench_svg.c)
 target_compile_options(bench_svg PRIVATE ${CG_WARNINGS})
 target_compile_definitions(bench_svg PRIVATE CG_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_link_libraries(bench_svg PRIVATE cg_static)
-if(BENCH_SVG_RSVG_FOUND)
-  target_compile_definitions(bench_svg PRIVATE CG_BENCH_HAVE_RSVG)
-  target_link_libraries(bench_svg PRIVATE PkgConfig::BENCH_SVG_RSVG)
-else()
-  message(STATUS "bench_svg: librsvg (librsvg2-dev) not found, its row is skipped")
-endif()
+cg_bench_peer(bench_svg
+              WHEN BENCH_SVG_RSVG_FOUND
+              DEFINE CG_BENCH_HAVE_RSVG
+              LINK PkgConfig::BENCH_SVG_RSVG
+              MESSAGE "bench_svg: librsvg (librsvg2-dev) not found, its row is skipped")

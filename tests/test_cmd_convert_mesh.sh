@@ -13,25 +13,8 @@ trap 'rm -rf "$tmp"' EXIT
 # says DESCRIPTION TEXT: the last command's stderr holds TEXT
 says() { grep -qF -- "$2" "$work/err" && pass || fail "$1: stderr lacks '$2': $(cat "$work/err")"; }
 
-value() { sed -n "s/^$1: //p" "$2" | head -1; }
-
 # A cube of 6 quads, 12 triangles once triangulated.
-cat > "$tmp/cube.obj" <<'EOT'
-v -1 -1 -1
-v 1 -1 -1
-v -1 1 -1
-v 1 1 -1
-v -1 -1 1
-v 1 -1 1
-v -1 1 1
-v 1 1 1
-f 1 3 4 2
-f 5 6 8 7
-f 1 2 6 5
-f 3 7 8 4
-f 1 5 7 3
-f 2 4 8 6
-EOT
+write_cube_obj "$tmp/cube.obj"
 "$cg" mesh info "$tmp/cube.obj" > "$tmp/info.obj" 2>&1 || fail "mesh info cube.obj"
 
 # every format into every other; the shape (vertices, closed, genus) stays

@@ -9,30 +9,13 @@ work="$tmp"
 trap 'rm -rf "$tmp"' EXIT
 . "$src/tests/cli_checks.sh"
 
-# value KEY FILE: the value of "KEY: value" in FILE
-value() { sed -n "s/^$1: //p" "$2" | head -1; }
 expect_key() { # expect_key FILE KEY VALUE
   local got
   got=$(value "$2" "$1")
   [ "$got" = "$3" ] && pass || fail "$1: $2 is '$got', expected '$3'"
 }
 
-cat > "$tmp/cube.obj" <<'EOF'
-v -1 -1 -1
-v 1 -1 -1
-v -1 1 -1
-v 1 1 -1
-v -1 -1 1
-v 1 -1 1
-v -1 1 1
-v 1 1 1
-f 1 3 4 2
-f 5 6 8 7
-f 1 2 6 5
-f 3 7 8 4
-f 1 5 7 3
-f 2 4 8 6
-EOF
+write_cube_obj "$tmp/cube.obj"
 cat > "$tmp/tetra.obj" <<'EOF'
 v 1 1 1
 v 1 -1 -1

@@ -78,37 +78,26 @@ static int cmp_c(const void *a, const void *b)
     return ((*x)->u > (*y)->u) - ((*x)->u < (*y)->u);
 }
 
-cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window, size_t m,
-                                  cg_polygon_set *result)
+/* Phase 1: every coordinate finite; the largest magnitude goes to *ext. */
+static cg_status check_input(const cg_vec2 *subject, size_t n, const cg_vec2 *window, size_t m,
+                             double *ext)
 {
-    if (!result)
-        return CG_EINVAL;
-    cg_polygon_set_clear(result);
-    if (!subject || !window || n < 3 || m < 3 || n > ((size_t)1 << 24) || m > ((size_t)1 << 24))
-        return CG_EINVAL;
-    double ext = 0;
+    *ext = 0;
     for (size_t i = 0; i < n + m; i++) {
         cg_vec2 p = i < n ? subject[i] : window[i - n];
         if (!isfinite(p.x) || !isfinite(p.y))
             return CG_EINVAL;
-        ext = fmax(ext, fmax(fabs(p.x), fabs(p.y)));
+        *ext = fmax(*ext, fmax(fabs(p.x), fabs(p.y)));
     }
-    cg_status st = CG_ENOMEM;
-    cg_vec2 *S = malloc(n * sizeof *S), *C = malloc(m * sizeof *C), *ring = NULL;
-    xing *X = NULL, **XC = NULL;
-    wnode *sn = NULL, *cn = NULL;
-    size_t nx = 0, capx = 0;
-    if (!S || !C)
-        goto done;
-    /* the window moved off every degenerate contact (an irrational-looking
-     * direction, 1e-9 of the extent) */
-    double delta = (ext > 0 ? ext : 1) * 1e-9;
-    n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), S);
-    m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
-    if (n < 3 || m < 3 || clip_weiler_twice_area(S, n) == 0 || clip_weiler_twice_area(C, m) == 0) {
-        st = CG_OK; /* nothing with an area */
-        goto done;
-    }
+    return CG_OK;
+}
+
+/* Phase 2: every proper crossing of a subject edge with a window edge,
+ * appended to *X in subject-edge order. */
+static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing **X,
+                                size_t *nx)
+{
+    size_t capx = 0;
     for (size_t i = 0; i < n; i++) {
         cg_vec2 a = S[i], b = S[(i + 1) % n], d = cg_vec2_sub(b, a);
         for (size_t j = 0; j < m; j++) {
@@ -120,29 +109,27 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
             double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
             if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
                 continue;
-            if (core_array_reserve((void **)&X, &capx, nx + 1, sizeof *X) != CG_OK)
-                goto done;
-            X[nx++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+            if (core_array_reserve((void **)X, &capx, *nx + 1, sizeof **X) != CG_OK)
+                return CG_ENOMEM;
+            (*X)[(*nx)++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
         }
     }
-    if (nx == 0 || nx % 2) {
-        /* no crossing: one inside the other, or apart */
-        st = CG_OK;
-        if (point_in(C, m, S[0]))
-            st = cg_polygon_set_add_ring(result, S, n, 1);
-        else if (point_in(S, n, C[0]))
-            st = cg_polygon_set_add_ring(result, C, m, 1);
-        goto done;
-    }
-    /* subject list: vertices with the crossings in order */
+    return CG_OK;
+}
+
+/* Phase 3: the two boundary lists, vertices with the crossings inserted in
+ * order along each edge, every crossing linked to its twin.  X (nx > 0) is
+ * sorted here; sn holds n + nx nodes and cn m + nx. */
+static cg_status build_lists(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing *X,
+                             size_t nx, wnode *sn, wnode *cn)
+{
     qsort(X, nx, sizeof *X, cmp_s);
-    sn = calloc(n + nx, sizeof *sn);
-    cn = calloc(m + nx, sizeof *cn);
-    XC = malloc(nx * sizeof *XC);
+    xing **XC = malloc(nx * sizeof *XC);
     size_t *sidx = malloc(nx * sizeof *sidx);
-    if (!sn || !cn || !XC || !sidx) {
+    if (!XC || !sidx) {
+        free(XC);
         free(sidx);
-        goto done;
+        return CG_ENOMEM;
     }
     size_t k = 0, ns = 0;
     for (size_t i = 0; i < n; i++) {
@@ -172,13 +159,20 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
             k++;
         }
     }
-    free(sidx);
     for (size_t i = 0; i < nc; i++)
         cn[i].next = (i + 1) % nc;
-    ring = malloc((ns + nc) * sizeof *ring);
-    if (!ring)
-        goto done;
-    st = CG_OK;
+    free(sidx);
+    free(XC);
+    return CG_OK;
+}
+
+/* Phase 4: one loop from each unvisited entering crossing, following the
+ * subject to the next crossing, then the window, and so on back to the
+ * start.  ring has room for ns + nc points. */
+static cg_status trace_loops(wnode *sn, size_t ns, wnode *cn, size_t nc, cg_vec2 *ring,
+                             cg_polygon_set *result)
+{
+    cg_status st = CG_OK;
     for (size_t start = 0; start < ns && st == CG_OK; start++) {
         if (sn[start].twin == (size_t)-1 || !sn[start].entering || sn[start].visited)
             continue;
@@ -204,48 +198,103 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
         if (len >= 3)
             st = cg_polygon_set_add_ring(result, ring, len, 1);
     }
-    /* loops turning clockwise are holes: move each into the smallest
-     * counter-clockwise loop around it */
-    if (st == CG_OK && result->ring_count > 1) {
-        cg_polygon_set sorted = {0};
-        size_t nr = result->ring_count;
-        for (size_t r = 0; r < nr && st == CG_OK; r++) {
-            if (cg_polygon_set_ring_area(result, r) <= 0)
-                continue;
-            st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[r],
-                                         result->ring_start[r + 1] - result->ring_start[r], 1);
-            for (size_t h = 0; h < nr && st == CG_OK; h++) {
-                if (cg_polygon_set_ring_area(result, h) >= 0)
-                    continue;
-                cg_vec2 q = result->points[result->ring_start[h]];
-                /* smallest containing outer */
-                size_t best = (size_t)-1;
-                double best_area = INFINITY;
-                for (size_t o = 0; o < nr; o++) {
-                    double a = cg_polygon_set_ring_area(result, o);
-                    if (a > 0 && a < best_area
-                        && point_in(result->points + result->ring_start[o],
-                                    result->ring_start[o + 1] - result->ring_start[o], q)) {
-                        best = o;
-                        best_area = a;
-                    }
-                }
-                if (best == r)
-                    st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[h],
-                                                 result->ring_start[h + 1] - result->ring_start[h],
-                                                 0);
-            }
+    return st;
+}
+
+/* The smallest counter-clockwise ring of rs that contains q, or -1. */
+static size_t smallest_outer(const cg_polygon_set *rs, cg_vec2 q)
+{
+    size_t best = (size_t)-1;
+    double best_area = INFINITY;
+    for (size_t o = 0; o < rs->ring_count; o++) {
+        double a = cg_polygon_set_ring_area(rs, o);
+        if (a > 0 && a < best_area
+            && point_in(rs->points + rs->ring_start[o], rs->ring_start[o + 1] - rs->ring_start[o],
+                        q)) {
+            best = o;
+            best_area = a;
         }
-        cg_polygon_set_clear(result);
-        *result = sorted;
     }
+    return best;
+}
+
+/* Phase 5: loops turning clockwise are holes: move each after the smallest
+ * counter-clockwise loop around it. */
+static cg_status nest_holes(cg_polygon_set *result)
+{
+    cg_status st = CG_OK;
+    cg_polygon_set sorted = {0};
+    size_t nr = result->ring_count;
+    for (size_t r = 0; r < nr && st == CG_OK; r++) {
+        if (cg_polygon_set_ring_area(result, r) <= 0)
+            continue;
+        st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[r],
+                                     result->ring_start[r + 1] - result->ring_start[r], 1);
+        for (size_t h = 0; h < nr && st == CG_OK; h++) {
+            if (cg_polygon_set_ring_area(result, h) >= 0)
+                continue;
+            if (smallest_outer(result, result->points[result->ring_start[h]]) == r)
+                st = cg_polygon_set_add_ring(&sorted, result->points + result->ring_start[h],
+                                             result->ring_start[h + 1] - result->ring_start[h], 0);
+        }
+    }
+    cg_polygon_set_clear(result);
+    *result = sorted;
+    return st;
+}
+
+cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec2 *window, size_t m,
+                                  cg_polygon_set *result)
+{
+    if (!result)
+        return CG_EINVAL;
+    cg_polygon_set_clear(result);
+    if (!subject || !window || n < 3 || m < 3 || n > ((size_t)1 << 24) || m > ((size_t)1 << 24))
+        return CG_EINVAL;
+    double ext;
+    if (check_input(subject, n, window, m, &ext) != CG_OK)
+        return CG_EINVAL;
+    cg_status st = CG_ENOMEM;
+    cg_vec2 *S = malloc(n * sizeof *S), *C = malloc(m * sizeof *C), *ring = NULL;
+    xing *X = NULL;
+    wnode *sn = NULL, *cn = NULL;
+    size_t nx = 0;
+    if (!S || !C)
+        goto done;
+    /* the window moved off every degenerate contact (an irrational-looking
+     * direction, 1e-9 of the extent) */
+    double delta = (ext > 0 ? ext : 1) * 1e-9;
+    n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), S);
+    m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
+    if (n < 3 || m < 3 || clip_weiler_twice_area(S, n) == 0 || clip_weiler_twice_area(C, m) == 0) {
+        st = CG_OK; /* nothing with an area */
+        goto done;
+    }
+    if (find_crossings(S, n, C, m, &X, &nx) != CG_OK)
+        goto done;
+    if (nx == 0 || nx % 2) {
+        /* no crossing: one inside the other, or apart */
+        st = CG_OK;
+        if (point_in(C, m, S[0]))
+            st = cg_polygon_set_add_ring(result, S, n, 1);
+        else if (point_in(S, n, C[0]))
+            st = cg_polygon_set_add_ring(result, C, m, 1);
+        goto done;
+    }
+    sn = calloc(n + nx, sizeof *sn);
+    cn = calloc(m + nx, sizeof *cn);
+    ring = malloc((n + m + 2 * nx) * sizeof *ring);
+    if (!sn || !cn || !ring || build_lists(S, n, C, m, X, nx, sn, cn) != CG_OK)
+        goto done;
+    st = trace_loops(sn, n + nx, cn, m + nx, ring, result);
+    if (st == CG_OK && result->ring_count > 1)
+        st = nest_holes(result);
 done:
     if (st != CG_OK)
         cg_polygon_set_clear(result);
     free(S);
     free(C);
     free(X);
-    free(XC);
     free(sn);
     free(cn);
     free(ring);

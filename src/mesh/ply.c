@@ -149,143 +149,122 @@ static cg_status header_fail(ply_reader *r, text_cursor *t, const char *what)
 }
 
 /* Parses the header; *body is where the data starts. */
-static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t size, size_t *body,
-                             size_t *body_line)
+/* The header's 'format' line, after the keyword. */
+static cg_status read_format_line(ply_reader *r, text_cursor *t)
 {
-    text_cursor t = {(const char *)bytes, (const char *)bytes + size, r->name, 1};
     const char *word;
-    size_t length = next_word(&t, &word);
-    if (!word_is(word, length, "ply"))
-        return cg_error_set(r->err, CG_EFORMAT, "%s:1: expected 'ply' as the first line", r->name);
-    int have_format = 0;
-    for (;;) {
-        if (!text_at_line_end(&t))
-            return header_fail(r, &t, "the end of the line");
-        if (t.p >= t.end)
-            return cg_error_set(r->err, CG_EFORMAT,
-                                "%s:%zu: expected 'end_header', the file ends first", r->name,
-                                t.line);
-        text_next_line(&t);
-        length = next_word(&t, &word);
-        if (length == 0 && t.p >= t.end)
-            continue;
-        if (word_is(word, length, "comment") || word_is(word, length, "obj_info")) {
-            while (t.p < t.end && !is_line_end(*t.p))
-                t.p++;
-        } else if (word_is(word, length, "format")) {
-            length = next_word(&t, &word);
-            if (word_is(word, length, "ascii"))
-                r->format = PLY_ASCII;
-            else if (word_is(word, length, "binary_little_endian"))
-                r->format = PLY_LITTLE;
-            else if (word_is(word, length, "binary_big_endian"))
-                r->format = PLY_BIG;
-            else {
-                t.p = word;
-                return header_fail(r, &t, "ascii, binary_little_endian or binary_big_endian");
-            }
-            length = next_word(&t, &word);
-            if (!word_is(word, length, "1.0")) {
-                t.p = word;
-                return header_fail(r, &t, "version 1.0");
-            }
-            have_format = 1;
-        } else if (word_is(word, length, "element")) {
-            if (r->element_count == PLY_MAX_ELEMENTS)
-                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d elements", r->name,
-                                    t.line, PLY_MAX_ELEMENTS);
-            ply_element *e = &r->elements[r->element_count];
-            length = next_word(&t, &word);
-            if (length == 0)
-                return header_fail(r, &t, "an element name");
-            size_t kept = length < sizeof e->name - 1 ? length : sizeof e->name - 1;
-            for (size_t i = 0; i < kept; i++)
-                e->name[i] = word[i] >= 0x20 && word[i] < 0x7f ? word[i] : '?';
-            e->name[kept] = '\0';
-            e->kind = word_is(word, length, "vertex") ? E_VERTEX
-                      : word_is(word, length, "face") ? E_FACE
-                                                      : E_OTHER;
-            for (size_t i = 0; i < r->element_count; i++)
-                if (e->kind != E_OTHER && r->elements[i].kind == e->kind)
-                    return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: a second '%s' element",
-                                        r->name, t.line, e->kind == E_VERTEX ? "vertex" : "face");
-            text_skip_blanks(&t);
-            int64_t count;
-            if (!parse_int64(&t.p, t.end, &count) || count < 0)
-                return header_fail(r, &t, "an element count (a whole number, 0 or more)");
-            e->count = (uint64_t)count;
-            e->first_property = r->property_count;
-            e->property_count = 0;
-            e->header_line = t.line;
-            r->element_count++;
-        } else if (word_is(word, length, "property")) {
-            if (r->element_count == 0)
-                return cg_error_set(r->err, CG_EFORMAT,
-                                    "%s:%zu: expected 'element' before 'property'", r->name,
-                                    t.line);
-            if (r->property_count == PLY_MAX_PROPERTIES)
-                return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d properties", r->name,
-                                    t.line, PLY_MAX_PROPERTIES);
-            ply_element *e = &r->elements[r->element_count - 1];
-            ply_property *p = &r->properties[r->property_count];
-            memset(p, 0, sizeof *p);
-            length = next_word(&t, &word);
-            if (word_is(word, length, "list")) {
-                length = next_word(&t, &word);
-                p->count_type = parse_type(word, length);
-                if (p->count_type == PLY_NONE || p->count_type >= PLY_FLOAT32) {
-                    t.p = word;
-                    return header_fail(r, &t, "an integer type for the list count");
-                }
-                length = next_word(&t, &word);
-            }
-            p->type = parse_type(word, length);
-            if (p->type == PLY_NONE) {
-                t.p = word;
-                return header_fail(r, &t,
-                                   "a property type (char, uchar, short, ushort, int, "
-                                   "uint, float, double or int8 ... float64)");
-            }
-            length = next_word(&t, &word);
-            if (length == 0)
-                return header_fail(r, &t, "a property name");
-            if (e->kind == E_VERTEX && !p->count_type)
-                p->target = vertex_target(word, length);
-            else if (e->kind == E_FACE && p->count_type
-                     && (word_is(word, length, "vertex_indices")
-                         || word_is(word, length, "vertex_index")))
-                p->target = p->type >= PLY_FLOAT32 ? T_SKIP : T_CORNERS;
-            else if (e->kind == E_FACE && !p->count_type)
-                p->target = vertex_target(word, length) >= T_R ? vertex_target(word, length)
-                                                               : T_SKIP;
-            for (size_t i = e->first_property; i < r->property_count; i++)
-                if (p->target != T_SKIP && r->properties[i].target == p->target)
-                    p->target = T_SKIP; /* a repeated name: the first one counts */
-            r->property_count++;
-            e->property_count++;
-        } else if (word_is(word, length, "end_header")) {
-            if (!text_at_line_end(&t) || (t.p < t.end && *t.p == '#'))
-                return header_fail(r, &t, "the end of the line after 'end_header'");
-            /* the body starts after exactly one line end */
-            if (t.p < t.end && *t.p == '\r')
-                t.p++;
-            if (t.p < t.end && *t.p == '\n')
-                t.p++;
-            *body = (size_t)(t.p - (const char *)bytes);
-            *body_line = t.line + 1;
-            break;
-        } else if (length == 0) {
-            continue; /* blank line */
-        } else {
-            t.p = word;
-            return header_fail(r, &t,
-                               "a header keyword (format, element, property, comment, "
-                               "end_header)");
-        }
+    size_t length = next_word(t, &word);
+    if (word_is(word, length, "ascii"))
+        r->format = PLY_ASCII;
+    else if (word_is(word, length, "binary_little_endian"))
+        r->format = PLY_LITTLE;
+    else if (word_is(word, length, "binary_big_endian"))
+        r->format = PLY_BIG;
+    else {
+        t->p = word;
+        return header_fail(r, t, "ascii, binary_little_endian or binary_big_endian");
     }
-    if (!have_format)
-        return cg_error_set(r->err, CG_EFORMAT, "%s: expected a 'format' line in the header",
-                            r->name);
+    length = next_word(t, &word);
+    if (!word_is(word, length, "1.0")) {
+        t->p = word;
+        return header_fail(r, t, "version 1.0");
+    }
+    return CG_OK;
+}
+
+/* An 'element' line, after the keyword: name and count. */
+static cg_status read_element_line(ply_reader *r, text_cursor *t)
+{
+    if (r->element_count == PLY_MAX_ELEMENTS)
+        return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d elements", r->name, t->line,
+                            PLY_MAX_ELEMENTS);
+    ply_element *e = &r->elements[r->element_count];
+    const char *word;
+    size_t length = next_word(t, &word);
+    if (length == 0)
+        return header_fail(r, t, "an element name");
+    size_t kept = length < sizeof e->name - 1 ? length : sizeof e->name - 1;
+    for (size_t i = 0; i < kept; i++)
+        e->name[i] = word[i] >= 0x20 && word[i] < 0x7f ? word[i] : '?';
+    e->name[kept] = '\0';
+    e->kind = word_is(word, length, "vertex") ? E_VERTEX
+              : word_is(word, length, "face") ? E_FACE
+                                              : E_OTHER;
+    for (size_t i = 0; i < r->element_count; i++)
+        if (e->kind != E_OTHER && r->elements[i].kind == e->kind)
+            return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: a second '%s' element", r->name,
+                                t->line, e->kind == E_VERTEX ? "vertex" : "face");
+    text_skip_blanks(t);
+    int64_t count;
+    if (!parse_int64(&t->p, t->end, &count) || count < 0)
+        return header_fail(r, t, "an element count (a whole number, 0 or more)");
+    e->count = (uint64_t)count;
+    e->first_property = r->property_count;
+    e->property_count = 0;
+    e->header_line = t->line;
+    r->element_count++;
+    return CG_OK;
+}
+
+/* What a property named word feeds, in an element of the given kind. */
+static enum ply_target property_target(enum ply_kind kind, const ply_property *p, const char *word,
+                                       size_t length)
+{
+    if (kind == E_VERTEX && !p->count_type)
+        return vertex_target(word, length);
+    if (kind == E_FACE && p->count_type
+        && (word_is(word, length, "vertex_indices") || word_is(word, length, "vertex_index")))
+        return p->type >= PLY_FLOAT32 ? T_SKIP : T_CORNERS;
+    if (kind == E_FACE && !p->count_type)
+        return vertex_target(word, length) >= T_R ? vertex_target(word, length) : T_SKIP;
+    return T_SKIP;
+}
+
+/* A 'property' line, after the keyword: [list count-type] type name. */
+static cg_status read_property_line(ply_reader *r, text_cursor *t)
+{
+    if (r->element_count == 0)
+        return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: expected 'element' before 'property'",
+                            r->name, t->line);
+    if (r->property_count == PLY_MAX_PROPERTIES)
+        return cg_error_set(r->err, CG_EFORMAT, "%s:%zu: more than %d properties", r->name, t->line,
+                            PLY_MAX_PROPERTIES);
+    ply_element *e = &r->elements[r->element_count - 1];
+    ply_property *p = &r->properties[r->property_count];
+    memset(p, 0, sizeof *p);
+    const char *word;
+    size_t length = next_word(t, &word);
+    if (word_is(word, length, "list")) {
+        length = next_word(t, &word);
+        p->count_type = parse_type(word, length);
+        if (p->count_type == PLY_NONE || p->count_type >= PLY_FLOAT32) {
+            t->p = word;
+            return header_fail(r, t, "an integer type for the list count");
+        }
+        length = next_word(t, &word);
+    }
+    p->type = parse_type(word, length);
+    if (p->type == PLY_NONE) {
+        t->p = word;
+        return header_fail(r, t,
+                           "a property type (char, uchar, short, ushort, int, "
+                           "uint, float, double or int8 ... float64)");
+    }
+    length = next_word(t, &word);
+    if (length == 0)
+        return header_fail(r, t, "a property name");
+    p->target = property_target(e->kind, p, word, length);
+    for (size_t i = e->first_property; i < r->property_count; i++)
+        if (p->target != T_SKIP && r->properties[i].target == p->target)
+            p->target = T_SKIP; /* a repeated name: the first one counts */
+    r->property_count++;
+    e->property_count++;
+    return CG_OK;
+}
+
+/* After the header: some 'vertex' element has x, y and z. */
+static cg_status check_vertex_xyz(ply_reader *r)
+{
     int has_xyz[3] = {0, 0, 0};
     for (size_t i = 0; i < r->element_count; i++) {
         if (r->elements[i].kind != E_VERTEX)
@@ -300,6 +279,63 @@ static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t s
         return cg_error_set(r->err, CG_EFORMAT,
                             "%s: expected a 'vertex' element with properties x, y and z", r->name);
     return CG_OK;
+}
+
+static cg_status read_header(ply_reader *r, const unsigned char *bytes, size_t size, size_t *body,
+                             size_t *body_line)
+{
+    text_cursor t = {(const char *)bytes, (const char *)bytes + size, r->name, 1};
+    const char *word;
+    size_t length = next_word(&t, &word);
+    if (!word_is(word, length, "ply"))
+        return cg_error_set(r->err, CG_EFORMAT, "%s:1: expected 'ply' as the first line", r->name);
+    int have_format = 0;
+    cg_status s = CG_OK;
+    for (;;) {
+        if (!text_at_line_end(&t))
+            return header_fail(r, &t, "the end of the line");
+        if (t.p >= t.end)
+            return cg_error_set(r->err, CG_EFORMAT,
+                                "%s:%zu: expected 'end_header', the file ends first", r->name,
+                                t.line);
+        text_next_line(&t);
+        length = next_word(&t, &word);
+        if (length == 0)
+            continue; /* blank line, or the end of the file */
+        if (word_is(word, length, "comment") || word_is(word, length, "obj_info")) {
+            while (t.p < t.end && !is_line_end(*t.p))
+                t.p++;
+        } else if (word_is(word, length, "format")) {
+            s = read_format_line(r, &t);
+            have_format = 1;
+        } else if (word_is(word, length, "element")) {
+            s = read_element_line(r, &t);
+        } else if (word_is(word, length, "property")) {
+            s = read_property_line(r, &t);
+        } else if (word_is(word, length, "end_header")) {
+            if (!text_at_line_end(&t) || (t.p < t.end && *t.p == '#'))
+                return header_fail(r, &t, "the end of the line after 'end_header'");
+            /* the body starts after exactly one line end */
+            if (t.p < t.end && *t.p == '\r')
+                t.p++;
+            if (t.p < t.end && *t.p == '\n')
+                t.p++;
+            *body = (size_t)(t.p - (const char *)bytes);
+            *body_line = t.line + 1;
+            break;
+        } else {
+            t.p = word;
+            return header_fail(r, &t,
+                               "a header keyword (format, element, property, comment, "
+                               "end_header)");
+        }
+        if (s != CG_OK)
+            return s;
+    }
+    if (!have_format)
+        return cg_error_set(r->err, CG_EFORMAT, "%s: expected a 'format' line in the header",
+                            r->name);
+    return check_vertex_xyz(r);
 }
 
 /* ---- destinations -------------------------------------------------------- */

@@ -114,6 +114,63 @@ static int finish(const common_options *common, const cg_polygon_set *input, int
 
 static const char *const fill_names[] = {"evenodd", "nonzero", "positive", "negative"};
 
+/* One run of a command's operation on the input, with a workspace or NULL. */
+typedef cg_status (*geometry_step)(const void *args, cg_clip_workspace *ws,
+                                   const cg_polygon_set *input, int open, cg_polygon_set *result);
+
+/* Runs step once, or --repeat times timing each (with a workspace when
+ * want_workspace), reports the median, then writes or draws the result. */
+static int run_timed(const char *name, const common_options *common, int want_workspace,
+                     geometry_step step, const void *args, const cg_polygon_set *input, int open,
+                     cg_polygon_set *result, int result_open)
+{
+    long runs = common->repeat > 0 ? common->repeat : 1;
+    double *times = common->repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
+    cg_clip_workspace *ws = runs > 1 && want_workspace ? cg_clip_workspace_create() : NULL;
+    cg_status st = CG_OK;
+    for (long k = 0; k < runs && st == CG_OK; k++) {
+        double t0 = cli_now();
+        st = step(args, ws, input, open, result);
+        if (times)
+            times[k] = cli_now() - t0;
+    }
+    cg_clip_workspace_free(ws);
+    if (st == CG_OK)
+        report_time(name, times, runs);
+    free(times);
+    if (st != CG_OK)
+        return cli_fail("clip: %s: %s", name, cg_status_str(st));
+    return finish(common, input, open, result, result_open);
+}
+
+/* The positional argument after the first ones: IN, then nothing more.
+ * 0, or CLI_USAGE after a message. */
+static int take_operand(const char *name, const char *arg, const char **first, const char **file)
+{
+    if (cli_is_option(arg))
+        return cli_usage_error("clip", "%s: unknown option '%s'", name, arg);
+    if (first && !*first)
+        *first = arg;
+    else if (!*file)
+        *file = arg;
+    else
+        return cli_usage_error("clip", "%s: unexpected argument '%s'", name, arg);
+    return 0;
+}
+
+typedef struct offset_args {
+    double delta;
+    const cg_offset_options *options;
+} offset_args;
+
+static cg_status offset_step(const void *args, cg_clip_workspace *ws, const cg_polygon_set *input,
+                             int open, cg_polygon_set *result)
+{
+    const offset_args *a = args;
+    (void)open;
+    return cg_offset_ws(ws, input, a->delta, a->options, 0, result);
+}
+
 static int offset(int argc, char **argv)
 {
     static const char *const joins[] = {"miter", "round", "square", "bevel"};
@@ -176,14 +233,8 @@ static int offset(int argc, char **argv)
                                            "number, got '%s'",
                                            value);
             }
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("clip", "offset: unknown option '%s'", argv[i]);
-        } else if (!delta_text) {
-            delta_text = argv[i];
-        } else if (!file) {
-            file = argv[i];
-        } else {
-            return cli_usage_error("clip", "offset: unexpected argument '%s'", argv[i]);
+        } else if (take_operand("offset", argv[i], &delta_text, &file) != 0) {
+            return CLI_USAGE;
         }
     }
     if (!file)
@@ -208,24 +259,8 @@ static int offset(int argc, char **argv)
     options.end = end >= 0 ? (cg_offset_end)end
                   : open   ? CG_OFFSET_END_ROUND
                            : CG_OFFSET_END_POLYGON;
-    long runs = common.repeat > 0 ? common.repeat : 1;
-    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
-    cg_clip_workspace *ws = runs > 1 ? cg_clip_workspace_create() : NULL;
-    cg_status st = CG_OK;
-    for (long k = 0; k < runs && st == CG_OK; k++) {
-        double t0 = cli_now();
-        st = cg_offset_ws(ws, &input, delta, &options, 0, &result);
-        if (times)
-            times[k] = cli_now() - t0;
-    }
-    cg_clip_workspace_free(ws);
-    if (st == CG_OK)
-        report_time("offset", times, runs);
-    free(times);
-    if (st != CG_OK)
-        cli_fail("clip: offset: %s", cg_status_str(st));
-    else
-        status = finish(&common, &input, open, &result, 0);
+    offset_args args = {delta, &options};
+    status = run_timed("offset", &common, 1, offset_step, &args, &input, open, &result, 0);
 done:
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);
@@ -252,6 +287,19 @@ static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fi
     return 1;
 }
 
+typedef struct rect_args {
+    cg_rect window;
+    cg_clip_fill fill;
+} rect_args;
+
+static cg_status rect_step(const void *args, cg_clip_workspace *ws, const cg_polygon_set *input,
+                           int open, cg_polygon_set *result)
+{
+    const rect_args *a = args;
+    return open ? cg_rect_clip_lines(input, a->window, 0, result)
+                : cg_rect_clip_ws(ws, input, a->fill, a->window, 0, result);
+}
+
 /* cg clip rect XMIN YMIN XMAX YMAX IN */
 static int rect(int argc, char **argv)
 {
@@ -269,19 +317,15 @@ static int rect(int argc, char **argv)
             return CLI_USAGE;
         if (taken)
             continue;
-        if (cli_is_option(argv[i]))
-            return cli_usage_error("clip", "rect: unknown option '%s'", argv[i]);
-        if (count < 4) {
+        if (count < 4 && !cli_is_option(argv[i])) {
             if (cli_parse_double("clip", names[count], argv[i], &v[count]) != 0)
                 return CLI_USAGE;
             if (!isfinite(v[count]))
                 return cli_usage_error("clip", "%s: expected a finite number, got '%s'",
                                        names[count], argv[i]);
             count++;
-        } else if (!file) {
-            file = argv[i];
-        } else {
-            return cli_usage_error("clip", "rect: unexpected argument '%s'", argv[i]);
+        } else if (take_operand("rect", argv[i], NULL, &file) != 0) {
+            return CLI_USAGE;
         }
     }
     if (!file)
@@ -296,29 +340,19 @@ static int rect(int argc, char **argv)
         cli_fail("clip: %s", err.message);
         goto done;
     }
-    long runs = common.repeat > 0 ? common.repeat : 1;
-    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
-    cg_clip_workspace *ws = runs > 1 && !open ? cg_clip_workspace_create() : NULL;
-    cg_status st = CG_OK;
-    for (long k = 0; k < runs && st == CG_OK; k++) {
-        double t0 = cli_now();
-        st = open ? cg_rect_clip_lines(&input, window, 0, &result)
-                  : cg_rect_clip_ws(ws, &input, fill, window, 0, &result);
-        if (times)
-            times[k] = cli_now() - t0;
-    }
-    cg_clip_workspace_free(ws);
-    if (st == CG_OK)
-        report_time("rect", times, runs);
-    free(times);
-    if (st != CG_OK)
-        cli_fail("clip: rect: %s", cg_status_str(st));
-    else
-        status = finish(&common, &input, open, &result, open);
+    rect_args args = {window, fill};
+    status = run_timed("rect", &common, !open, rect_step, &args, &input, open, &result, open);
 done:
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);
     return status;
+}
+
+static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
+                                  const cg_polygon_set *input, int open, cg_polygon_set *result)
+{
+    (void)open;
+    return cg_triangulate_ws(ws, input, *(const cg_clip_fill *)args, 0, result);
 }
 
 /* cg clip triangulate IN: the triangles as a MULTIPOLYGON. */
@@ -335,11 +369,8 @@ static int triangulate(int argc, char **argv)
             return CLI_USAGE;
         if (taken)
             continue;
-        if (cli_is_option(argv[i]))
-            return cli_usage_error("clip", "triangulate: unknown option '%s'", argv[i]);
-        if (file)
-            return cli_usage_error("clip", "triangulate: unexpected argument '%s'", argv[i]);
-        file = argv[i];
+        if (take_operand("triangulate", argv[i], NULL, &file) != 0)
+            return CLI_USAGE;
     }
     if (!file)
         return cli_usage_error("clip", "triangulate: expected IN");
@@ -355,28 +386,25 @@ static int triangulate(int argc, char **argv)
                                  file);
         goto done;
     }
-    long runs = common.repeat > 0 ? common.repeat : 1;
-    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
-    cg_clip_workspace *ws = runs > 1 ? cg_clip_workspace_create() : NULL;
-    cg_status st = CG_OK;
-    for (long k = 0; k < runs && st == CG_OK; k++) {
-        double t0 = cli_now();
-        st = cg_triangulate_ws(ws, &input, fill, 0, &result);
-        if (times)
-            times[k] = cli_now() - t0;
-    }
-    cg_clip_workspace_free(ws);
-    if (st == CG_OK)
-        report_time("triangulate", times, runs);
-    free(times);
-    if (st != CG_OK)
-        cli_fail("clip: triangulate: %s", cg_status_str(st));
-    else
-        status = finish(&common, &input, 0, &result, 0);
+    status = run_timed("triangulate", &common, 1, triangulate_step, &fill, &input, 0, &result, 0);
 done:
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);
     return status;
+}
+
+typedef struct simplify_args {
+    cg_clip_fill fill;
+    cg_simplify_algorithm algorithm;
+    double tolerance;
+} simplify_args;
+
+static cg_status simplify_step(const void *args, cg_clip_workspace *ws, const cg_polygon_set *input,
+                               int open, cg_polygon_set *result)
+{
+    const simplify_args *a = args;
+    (void)ws;
+    return cg_simplify(input, open, a->fill, a->algorithm, a->tolerance, 0, result);
 }
 
 /* cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam] */
@@ -407,14 +435,8 @@ static int simplify(int argc, char **argv)
                                        "simplify: --algorithm: expected rdp or "
                                        "visvalingam, got '%s'",
                                        a);
-        } else if (cli_is_option(argv[i])) {
-            return cli_usage_error("clip", "simplify: unknown option '%s'", argv[i]);
-        } else if (!tolerance_text) {
-            tolerance_text = argv[i];
-        } else if (!file) {
-            file = argv[i];
-        } else {
-            return cli_usage_error("clip", "simplify: unexpected argument '%s'", argv[i]);
+        } else if (take_operand("simplify", argv[i], &tolerance_text, &file) != 0) {
+            return CLI_USAGE;
         }
     }
     if (!file)
@@ -432,22 +454,8 @@ static int simplify(int argc, char **argv)
         cli_fail("clip: %s", err.message);
         goto done;
     }
-    long runs = common.repeat > 0 ? common.repeat : 1;
-    double *times = common.repeat > 0 ? malloc((size_t)runs * sizeof *times) : NULL;
-    cg_status st = CG_OK;
-    for (long k = 0; k < runs && st == CG_OK; k++) {
-        double t0 = cli_now();
-        st = cg_simplify(&input, open, fill, algorithm, tolerance, 0, &result);
-        if (times)
-            times[k] = cli_now() - t0;
-    }
-    if (st == CG_OK)
-        report_time("simplify", times, runs);
-    free(times);
-    if (st != CG_OK)
-        cli_fail("clip: simplify: %s", cg_status_str(st));
-    else
-        status = finish(&common, &input, open, &result, open);
+    simplify_args args = {fill, algorithm, tolerance};
+    status = run_timed("simplify", &common, 0, simplify_step, &args, &input, open, &result, open);
 done:
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);

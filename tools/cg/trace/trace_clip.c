@@ -12,23 +12,43 @@
 
 enum { MAX_POLYGON = 256 };
 
-static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
+/* The arguments of the two line clippers, NAME XMIN YMIN XMAX YMAX X0,Y0
+ * X1,Y1: 0, or CLI_USAGE after a message. */
+static int read_window_segment(const char *name, int argc, char **argv, cg_rect *window,
+                               cg_vec2 *p0, cg_vec2 *p1)
 {
     double bounds[4];
-    cg_vec2 p0, p1;
     static const char *const names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
     if (argc != 7)
-        return cli_usage_error("trace", "cohen-sutherland: expected 'cohen-sutherland XMIN YMIN "
-                                        "XMAX YMAX X0,Y0 X1,Y1'");
+        return cli_usage_error("trace", "%s: expected '%s XMIN YMIN XMAX YMAX X0,Y0 X1,Y1'", name,
+                               name);
     for (int i = 0; i < 4; i++)
         if (trace_parse_real(names[i], argv[i + 1], &bounds[i]))
             return CLI_USAGE;
-    if (trace_parse_point("P0", argv[5], &p0) || trace_parse_point("P1", argv[6], &p1))
+    if (trace_parse_point("P0", argv[5], p0) || trace_parse_point("P1", argv[6], p1))
         return CLI_USAGE;
     if (bounds[0] > bounds[2] || bounds[1] > bounds[3])
-        return cli_usage_error("trace", "cohen-sutherland: the window needs XMIN <= XMAX and "
-                                        "YMIN <= YMAX");
-    cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
+        return cli_usage_error("trace", "%s: the window needs XMIN <= XMAX and YMIN <= YMAX", name);
+    *window = (cg_rect){bounds[0], bounds[1], bounds[2], bounds[3]};
+    return 0;
+}
+
+/* The window's outline in the scene. */
+static void add_window_frame(trace_run *run, cg_rect window)
+{
+    cg_vec2 frame[4] = {{window.xmin, window.ymin},
+                        {window.xmax, window.ymin},
+                        {window.xmax, window.ymax},
+                        {window.xmin, window.ymax}};
+    trace_scene_add(run, frame, 4, 1);
+}
+
+static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
+{
+    cg_rect window;
+    cg_vec2 p0, p1;
+    if (read_window_segment("cohen-sutherland", argc, argv, &window, &p0, &p1))
+        return CLI_USAGE;
     trace_run *run = trace_run_create(
         "cohen-sutherland", argc - 1, argv + 1,
         "Cohen-Sutherland: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]", p0.x, p0.y, p1.x, p1.y,
@@ -36,11 +56,7 @@ static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
     if (!run)
         return cli_fail("trace: out of memory");
     run->y_up = 1;
-    cg_vec2 frame[4] = {{window.xmin, window.ymin},
-                        {window.xmax, window.ymin},
-                        {window.xmax, window.ymax},
-                        {window.xmin, window.ymax}};
-    trace_scene_add(run, frame, 4, 1);
+    add_window_frame(run, window);
     trace_note(run, "region codes TBRL: T y > ymax, B y < ymin, R x > xmax, L x < xmin (a "
                     "point on the boundary is inside)");
     trace_note(run, "both codes 0: trivial accept; their AND not 0: trivial reject (both "
@@ -55,21 +71,10 @@ static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
 
 static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
 {
-    double bounds[4];
+    cg_rect window;
     cg_vec2 p0, p1;
-    static const char *const names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
-    if (argc != 7)
-        return cli_usage_error("trace", "liang-barsky: expected 'liang-barsky XMIN YMIN XMAX "
-                                        "YMAX X0,Y0 X1,Y1'");
-    for (int i = 0; i < 4; i++)
-        if (trace_parse_real(names[i], argv[i + 1], &bounds[i]))
-            return CLI_USAGE;
-    if (trace_parse_point("P0", argv[5], &p0) || trace_parse_point("P1", argv[6], &p1))
+    if (read_window_segment("liang-barsky", argc, argv, &window, &p0, &p1))
         return CLI_USAGE;
-    if (bounds[0] > bounds[2] || bounds[1] > bounds[3])
-        return cli_usage_error("trace", "liang-barsky: the window needs XMIN <= XMAX and "
-                                        "YMIN <= YMAX");
-    cg_rect window = {bounds[0], bounds[1], bounds[2], bounds[3]};
     trace_run *run = trace_run_create("liang-barsky", argc - 1, argv + 1,
                                       "Liang-Barsky: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",
                                       p0.x, p0.y, p1.x, p1.y, window.xmin, window.xmax, window.ymin,
@@ -77,11 +82,7 @@ static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
     if (!run)
         return cli_fail("trace: out of memory");
     run->y_up = 1;
-    cg_vec2 frame[4] = {{window.xmin, window.ymin},
-                        {window.xmax, window.ymin},
-                        {window.xmax, window.ymax},
-                        {window.xmin, window.ymax}};
-    trace_scene_add(run, frame, 4, 1);
+    add_window_frame(run, window);
     trace_note(run, "P(t) = P0 + t (P1 - P0), 0 <= t <= 1, is inside where p_k t <= q_k:");
     trace_note(run, "  left p = -dx, q = x0 - xmin; right p = dx, q = xmax - x0;");
     trace_note(run, "  bottom p = -dy, q = y0 - ymin; top p = dy, q = ymax - y0");

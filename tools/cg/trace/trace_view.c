@@ -14,34 +14,54 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The camera arguments after the point, [EYE [TARGET [FOVY [WxH]]]], and
+ * the view and projection they make: 0, or CLI_USAGE after a message. */
+typedef struct camera_args {
+    cg_vec3 eye, target;
+    double fovy;
+    int width, height;
+    cg_mat4 view, projection;
+} camera_args;
+
+static int read_camera(const char *name, int argc, char **argv, camera_args *c)
+{
+    if ((argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &c->eye))
+        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &c->target))
+        || (argc > 4 && trace_parse_real("FOVY", argv[4], &c->fovy))
+        || (argc > 5 && cli_parse_size("trace", "WxH", argv[5], &c->width, &c->height)))
+        return CLI_USAGE;
+    if (!(c->fovy > 0 && c->fovy < 180))
+        return cli_usage_error("trace", "%s: FOVY is in degrees, between 0 and 180", name);
+    if (cg_view_look_at(c->eye, c->target, cg_vec3_make(0, 1, 0), &c->view) != CG_OK
+        && cg_view_look_at(c->eye, c->target, cg_vec3_make(0, 0, -1), &c->view) != CG_OK)
+        return cli_usage_error("trace", "%s: EYE and TARGET must differ", name);
+    if (cg_proj_perspective(c->fovy * M_PI / 180, (double)c->width / c->height, 0.1, 100,
+                            &c->projection)
+        != CG_OK)
+        return cli_usage_error("trace", "%s: the projection cannot be made", name);
+    return 0;
+}
+
 static int run_pipeline(int argc, char **argv, const trace_outputs *out)
 {
-    cg_vec3 point, eye = {0, 0, 5}, target = {0, 0, 0};
-    double fovy = 60;
-    int width = 640, height = 480;
+    cg_vec3 point;
+    camera_args c = {.eye = {0, 0, 5},
+                     .target = {0, 0, 0},
+                     .fovy = 60,
+                     .width = 640,
+                     .height = 480};
     if (argc < 2 || argc > 6)
         return cli_usage_error("trace", "pipeline: expected 'pipeline X,Y,Z [EYE [TARGET [FOVY "
                                         "[WxH]]]]' (points as X,Y,Z)");
     if (cli_parse_vec3("trace", "point", argv[1], &point)
-        || (argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &eye))
-        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &target))
-        || (argc > 4 && trace_parse_real("FOVY", argv[4], &fovy))
-        || (argc > 5 && cli_parse_size("trace", "WxH", argv[5], &width, &height)))
+        || read_camera("pipeline", argc, argv, &c))
         return CLI_USAGE;
-    cg_mat4 view, projection;
-    if (!(fovy > 0 && fovy < 180))
-        return cli_usage_error("trace", "pipeline: FOVY is in degrees, between 0 and 180");
-    if (cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
-        && cg_view_look_at(eye, target, cg_vec3_make(0, 0, -1), &view) != CG_OK)
-        return cli_usage_error("trace", "pipeline: EYE and TARGET must differ");
-    if (cg_proj_perspective(fovy * M_PI / 180, (double)width / height, 0.1, 100, &projection)
-        != CG_OK)
-        return cli_usage_error("trace", "pipeline: the projection cannot be made");
     trace_run *run = trace_run_create("pipeline", argc - 1, argv + 1,
                                       "The viewing pipeline of (%g, %g, %g): camera at (%g, %g, "
                                       "%g) looking at (%g, %g, %g), %g degrees, %dx%d",
-                                      point.x, point.y, point.z, eye.x, eye.y, eye.z, target.x,
-                                      target.y, target.z, fovy, width, height);
+                                      point.x, point.y, point.z, c.eye.x, c.eye.y, c.eye.z,
+                                      c.target.x, c.target.y, c.target.z, c.fovy, c.width,
+                                      c.height);
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "object --M--> world --V--> eye --P--> clip (x, y, z, w) --divide by w--> "
@@ -49,7 +69,7 @@ static int run_pipeline(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "M is the identity here; V from look-at (up +y); P perspective, near 0.1, "
                     "far 100; matrices row by row, rows separated by ';'");
     cg_mat4 model = cg_xform3_translate(0, 0, 0);
-    cg_status status = cg_pipeline_steps(model, view, projection, width, height, point,
+    cg_status status = cg_pipeline_steps(model, c.view, c.projection, c.width, c.height, point,
                                          cg_step_log_record, run->log);
     int code = trace_finish(run, status, "the point must be finite", out);
     trace_run_free(run);
@@ -58,38 +78,30 @@ static int run_pipeline(int argc, char **argv, const trace_outputs *out)
 
 static int run_vanishing(int argc, char **argv, const trace_outputs *out)
 {
-    cg_vec3 direction, eye = {0, 0, 5}, target = {0, 0, 0};
-    double fovy = 60;
-    int width = 640, height = 480;
+    cg_vec3 direction;
+    camera_args c = {.eye = {0, 0, 5},
+                     .target = {0, 0, 0},
+                     .fovy = 60,
+                     .width = 640,
+                     .height = 480};
     if (argc < 2 || argc > 6)
         return cli_usage_error("trace", "vanishing: expected 'vanishing DX,DY,DZ [EYE [TARGET "
                                         "[FOVY [WxH]]]]'");
     if (cli_parse_vec3("trace", "direction", argv[1], &direction)
-        || (argc > 2 && cli_parse_vec3("trace", "EYE", argv[2], &eye))
-        || (argc > 3 && cli_parse_vec3("trace", "TARGET", argv[3], &target))
-        || (argc > 4 && trace_parse_real("FOVY", argv[4], &fovy))
-        || (argc > 5 && cli_parse_size("trace", "WxH", argv[5], &width, &height)))
+        || read_camera("vanishing", argc, argv, &c))
         return CLI_USAGE;
-    cg_mat4 view, projection;
-    if (!(fovy > 0 && fovy < 180) || !(cg_vec3_length(direction) > 0))
-        return cli_usage_error("trace", "vanishing: FOVY is in (0, 180) degrees and the "
-                                        "direction not zero");
-    if (cg_view_look_at(eye, target, cg_vec3_make(0, 1, 0), &view) != CG_OK
-        && cg_view_look_at(eye, target, cg_vec3_make(0, 0, -1), &view) != CG_OK)
-        return cli_usage_error("trace", "vanishing: EYE and TARGET must differ");
-    if (cg_proj_perspective(fovy * M_PI / 180, (double)width / height, 0.1, 100, &projection)
-        != CG_OK)
-        return cli_usage_error("trace", "vanishing: the projection cannot be made");
+    if (!(cg_vec3_length(direction) > 0))
+        return cli_usage_error("trace", "vanishing: the direction must not be zero");
     trace_run *run = trace_run_create("vanishing", argc - 1, argv + 1,
                                       "The vanishing point of direction (%g, %g, %g), camera at "
                                       "(%g, %g, %g) looking at (%g, %g, %g)",
-                                      direction.x, direction.y, direction.z, eye.x, eye.y, eye.z,
-                                      target.x, target.y, target.z);
+                                      direction.x, direction.y, direction.z, c.eye.x, c.eye.y,
+                                      c.eye.z, c.target.x, c.target.y, c.target.z);
     if (!run)
         return cli_fail("trace: out of memory");
     trace_note(run, "parallel lines of direction d meet at the point at infinity (d, 0); its "
                     "image is where their images converge");
-    cg_status status = cg_vanishing_point_steps(view, projection, width, height, direction,
+    cg_status status = cg_vanishing_point_steps(c.view, c.projection, c.width, c.height, direction,
                                                 cg_step_log_record, run->log);
     int code = trace_finish(run, status, "the direction must not be zero", out);
     trace_run_free(run);

@@ -12,6 +12,7 @@
 #include "cg/fill.h"
 #include "cg/texture.h"
 #include "cg/svg.h"
+#include "cg/text.h"
 #include "cg/mesh.h"
 #include "cg/clip.h"
 #include "cg/polygon.h"

@@ -60,7 +60,7 @@ run_user() { # PROGRAM [ENV...]
 }
 link_static() {
   gcc -std=c11 -I "$source_dir/include" "$user" "$work/names.c" "$build_dir/libcg.a" \
-    $(pkg-config --libs libpng zlib libcjson libjpeg expat) -lm -lpthread -o "$work/user-static" 2> "$work/link.txt" ||
+    $(pkg-config --libs libpng zlib libcjson libjpeg expat freetype2 harfbuzz fontconfig) -lm -lpthread -o "$work/user-static" 2> "$work/link.txt" ||
     { head -5 "$work/link.txt" >&2; return 1; }
   run_user "$work/user-static"
 }

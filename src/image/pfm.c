@@ -63,6 +63,9 @@ cg_status pfm_decode(const unsigned char *bytes, size_t size, const char *name, 
     if (!header_token(bytes, size, &at, w, sizeof w) || !header_token(bytes, size, &at, h, sizeof h)
         || !parse_side(w, &width) || !parse_side(h, &height))
         return cg_error_set(err, CG_EFORMAT, "%s: bad PFM header: expected width and height", name);
+    cg_status status = image_check_dimensions(width, height, name, err);
+    if (status != CG_OK)
+        return status;
     if (!header_token(bytes, size, &at, s, sizeof s))
         return cg_error_set(err, CG_EFORMAT, "%s: bad PFM header: no scale", name);
     char *end;
@@ -72,9 +75,6 @@ cg_status pfm_decode(const unsigned char *bytes, size_t size, const char *name, 
     if (at >= size || !is_space(bytes[at]))
         return cg_error_set(err, CG_EFORMAT, "%s: PFM header ends without pixel data", name);
     at++; /* the single whitespace character before the data */
-    cg_status status = image_check_dimensions(width, height, name, err);
-    if (status != CG_OK)
-        return status;
     size_t row_bytes = (size_t)width * (size_t)channels * 4;
     if ((size - at) / row_bytes < height)
         return cg_error_set(err, CG_EFORMAT,

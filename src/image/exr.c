@@ -18,19 +18,19 @@
 
 /* The stream of one context: the bytes read from or written into, and the
  * library's last error message. */
-typedef struct exr_stream {
+typedef struct memory_stream {
     const unsigned char *in;
     size_t in_size;
     byte_buffer *out;
     char message[160];
-} exr_stream;
+} memory_stream;
 
 static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
     void *user = NULL;
     (void)code;
     if (exr_get_user_data(ctxt, &user) == EXR_ERR_SUCCESS && user && msg) {
-        exr_stream *s = user;
+        memory_stream *s = user;
         snprintf(s->message, sizeof s->message, "%s", msg);
     }
 }
@@ -38,7 +38,7 @@ static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *ms
 static int64_t stream_read(exr_const_context_t ctxt, void *user, void *buffer, uint64_t size,
                            uint64_t offset, exr_stream_error_func_ptr_t error_cb)
 {
-    exr_stream *s = user;
+    memory_stream *s = user;
     (void)ctxt;
     (void)error_cb;
     if (offset >= s->in_size)
@@ -51,13 +51,13 @@ static int64_t stream_read(exr_const_context_t ctxt, void *user, void *buffer, u
 static int64_t stream_size(exr_const_context_t ctxt, void *user)
 {
     (void)ctxt;
-    return (int64_t)((exr_stream *)user)->in_size;
+    return (int64_t)((memory_stream *)user)->in_size;
 }
 
 static int64_t stream_write(exr_const_context_t ctxt, void *user, const void *buffer, uint64_t size,
                             uint64_t offset, exr_stream_error_func_ptr_t error_cb)
 {
-    exr_stream *s = user;
+    memory_stream *s = user;
     (void)ctxt;
     (void)error_cb;
     byte_buffer *b = s->out;
@@ -81,8 +81,8 @@ static int64_t stream_write(exr_const_context_t ctxt, void *user, const void *bu
     return (int64_t)(end - (size_t)offset);
 }
 
-static cg_status exr_fail(exr_result_t rv, const exr_stream *s, const char *name, const char *what,
-                          cg_status status, cg_error *err)
+static cg_status fail_exr(exr_result_t rv, const memory_stream *s, const char *name,
+                          const char *what, cg_status status, cg_error *err)
 {
     const char *why = s->message[0] ? s->message : exr_get_default_error_message(rv);
     return cg_error_set(err, status, "%s: %s: %s", name, what, why);
@@ -105,7 +105,7 @@ static int channel_slot(const char *name)
     return -1;
 }
 
-typedef struct exr_reading {
+typedef struct read_state {
     exr_context_t ctx;
     exr_decode_pipeline_t decoder;
     int decoder_ready;
@@ -114,10 +114,10 @@ typedef struct exr_reading {
     int grey;      /* the file has Y and not R, G, B */
     float *planes; /* 5 planes of one chunk: R, G, B, A, Y */
     size_t planes_pixels;
-} exr_reading;
+} read_state;
 
 /* Copies the decoded planes of a w x h chunk at (x0, y0) into the image. */
-static void scatter_chunk(exr_reading *r, int x0, int y0, int w, int h, int present)
+static void scatter_chunk(read_state *r, int x0, int y0, int w, int h, int present)
 {
     size_t n = (size_t)w * (size_t)h;
     for (int y = 0; y < h; y++) {
@@ -138,7 +138,7 @@ static void scatter_chunk(exr_reading *r, int x0, int y0, int w, int h, int pres
 
 /* Decodes one chunk whose top-left pixel is (x0, y0) of the data window;
  * each channel into a plane of its own, then into the image. */
-static exr_result_t decode_chunk(exr_reading *r, const exr_chunk_info_t *chunk, int x0, int y0)
+static exr_result_t decode_chunk(read_state *r, const exr_chunk_info_t *chunk, int x0, int y0)
 {
     int w = chunk->width, h = chunk->height;
     if (w <= 0 || h <= 0 || x0 + (int64_t)w > r->image->width || y0 + (int64_t)h > r->image->height
@@ -179,7 +179,7 @@ static exr_result_t decode_chunk(exr_reading *r, const exr_chunk_info_t *chunk, 
     return rv;
 }
 
-static exr_result_t read_scanlines(exr_reading *r)
+static exr_result_t read_scanlines(read_state *r)
 {
     int32_t lines;
     exr_result_t rv = exr_get_scanlines_per_chunk(r->ctx, 0, &lines);
@@ -192,7 +192,7 @@ static exr_result_t read_scanlines(exr_reading *r)
     return rv;
 }
 
-static exr_result_t read_tiles(exr_reading *r)
+static exr_result_t read_tiles(read_state *r)
 {
     uint32_t tw, th;
     exr_tile_level_mode_t level;
@@ -214,7 +214,7 @@ static exr_result_t read_tiles(exr_reading *r)
 }
 
 /* Checks the part's kind and channels; *grey set when it is a Y image. */
-static cg_status check_part(exr_reading *r, exr_stream *s, const char *name, int *grey,
+static cg_status check_part(read_state *r, memory_stream *s, const char *name, int *grey,
                             cg_error *err)
 {
     exr_storage_t storage;
@@ -225,7 +225,7 @@ static cg_status check_part(exr_reading *r, exr_stream *s, const char *name, int
     if (rv == EXR_ERR_SUCCESS)
         rv = exr_get_data_window(r->ctx, 0, &r->window);
     if (rv != EXR_ERR_SUCCESS)
-        return exr_fail(rv, s, name, "bad OpenEXR header", CG_EFORMAT, err);
+        return fail_exr(rv, s, name, "bad OpenEXR header", CG_EFORMAT, err);
     if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
         return cg_error_set(err, CG_EUNSUPPORTED, "%s: deep OpenEXR images are not supported",
                             name);
@@ -253,7 +253,7 @@ static cg_status check_part(exr_reading *r, exr_stream *s, const char *name, int
     return image_check_dimensions((unsigned long)w, (unsigned long)h, name, err);
 }
 
-static cg_status decode_pixels(exr_reading *r, exr_stream *s, const char *name, cg_error *err)
+static cg_status decode_pixels(read_state *r, memory_stream *s, const char *name, cg_error *err)
 {
     int w = r->window.max.x - r->window.min.x + 1, h = r->window.max.y - r->window.min.y + 1;
     if (cg_image_create(&r->image, w, h, CG_PIXEL_RGBAF) != CG_OK)
@@ -263,15 +263,15 @@ static cg_status decode_pixels(exr_reading *r, exr_stream *s, const char *name, 
     exr_get_storage(r->ctx, 0, &storage);
     exr_result_t rv = storage == EXR_STORAGE_TILED ? read_tiles(r) : read_scanlines(r);
     if (rv != EXR_ERR_SUCCESS)
-        return exr_fail(rv, s, name, "corrupt or truncated OpenEXR data", CG_EFORMAT, err);
+        return fail_exr(rv, s, name, "corrupt or truncated OpenEXR data", CG_EFORMAT, err);
     return CG_OK;
 }
 
-cg_status exr_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
-                     cg_error *err)
+cg_status image_exr_decode(const unsigned char *bytes, size_t size, const char *name,
+                           cg_image **out, cg_error *err)
 {
     *out = NULL;
-    exr_stream s = {bytes, size, NULL, ""};
+    memory_stream s = {bytes, size, NULL, ""};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = &s;
     init.read_fn = stream_read;
@@ -279,11 +279,11 @@ cg_status exr_decode(const unsigned char *bytes, size_t size, const char *name, 
     init.error_handler_fn = on_error;
     init.max_image_width = init.max_image_height = CG_IMAGE_MAX_SIDE;
     init.max_tile_width = init.max_tile_height = 1 << 16;
-    exr_reading r = {0};
+    read_state r = {0};
     exr_result_t rv = exr_start_read(&r.ctx, name, &init);
     if (rv != EXR_ERR_SUCCESS) {
         exr_finish(&r.ctx);
-        return exr_fail(rv, &s, name, "bad OpenEXR header", CG_EFORMAT, err);
+        return fail_exr(rv, &s, name, "bad OpenEXR header", CG_EFORMAT, err);
     }
     cg_status status = check_part(&r, &s, name, &r.grey, err);
     if (status == CG_OK)
@@ -302,18 +302,19 @@ cg_status exr_decode(const unsigned char *bytes, size_t size, const char *name, 
 /* ---- writing ------------------------------------------------------------- */
 
 /* One output channel: its name and where its floats come from. */
-typedef struct exr_source {
+typedef struct channel_source {
     char name[80];
     const cg_image *image;
     int component;
-} exr_source;
+} channel_source;
 
 static cg_status layer_sources(const cg_image *beauty, const cg_image_layer *extra, size_t n,
-                               exr_source *sources, size_t *count, const char *path, cg_error *err)
+                               channel_source *sources, size_t *count, const char *path,
+                               cg_error *err)
 {
     static const char rgba[] = "RGBA";
     for (int k = 0; k < 4; k++)
-        sources[(*count)++] = (exr_source){{rgba[k], '\0'}, beauty, k};
+        sources[(*count)++] = (channel_source){{rgba[k], '\0'}, beauty, k};
     for (size_t i = 0; i < n; i++) {
         const cg_image_layer *l = &extra[i];
         size_t len = l->name ? strlen(l->name) : 0;
@@ -332,7 +333,7 @@ static cg_status layer_sources(const cg_image *beauty, const cg_image_layer *ext
                                 "%s: EXR layer '%s' is not an RGBAF image of %d x %d pixels", path,
                                 l->name, beauty->width, beauty->height);
         for (size_t k = 0; k < m; k++) {
-            exr_source *src = &sources[*count];
+            channel_source *src = &sources[*count];
             snprintf(src->name, sizeof src->name, "%s.%c", l->name, l->suffixes[k]);
             for (size_t j = 0; j < *count; j++)
                 if (strcmp(sources[j].name, src->name) == 0)
@@ -346,7 +347,7 @@ static cg_status layer_sources(const cg_image *beauty, const cg_image_layer *ext
     return CG_OK;
 }
 
-static exr_result_t encode_rows(exr_context_t ctx, const exr_source *sources, size_t count,
+static exr_result_t encode_rows(exr_context_t ctx, const channel_source *sources, size_t count,
                                 int height)
 {
     int32_t lines;
@@ -365,7 +366,7 @@ static exr_result_t encode_rows(exr_context_t ctx, const exr_source *sources, si
         ready = 1;
         for (int c = 0; c < encoder.channel_count; c++) {
             exr_coding_channel_info_t *ch = &encoder.channels[c];
-            const exr_source *src = sources;
+            const channel_source *src = sources;
             for (size_t k = 0; k < count; k++)
                 if (strcmp(sources[k].name, ch->channel_name) == 0)
                     src = &sources[k];
@@ -386,10 +387,10 @@ static exr_result_t encode_rows(exr_context_t ctx, const exr_source *sources, si
     return rv;
 }
 
-static cg_status encode_exr(const exr_source *sources, size_t count, int width, int height,
-                            int full_float, byte_buffer *out, const char *path, cg_error *err)
+static cg_status encode_file(const channel_source *sources, size_t count, int width, int height,
+                             int full_float, byte_buffer *out, const char *path, cg_error *err)
 {
-    exr_stream s = {NULL, 0, out, ""};
+    memory_stream s = {NULL, 0, out, ""};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = &s;
     init.write_fn = stream_write;
@@ -412,7 +413,7 @@ static cg_status encode_exr(const exr_source *sources, size_t count, int width, 
     if (rv == EXR_ERR_SUCCESS)
         rv = done;
     if (rv != EXR_ERR_SUCCESS)
-        return exr_fail(rv, &s, path, "cannot encode OpenEXR", CG_EIO, err);
+        return fail_exr(rv, &s, path, "cannot encode OpenEXR", CG_EIO, err);
     return CG_OK;
 }
 
@@ -429,13 +430,13 @@ cg_status cg_image_write_exr(const char *path, const cg_image *beauty, const cg_
             return cg_error_set(err, CG_ENOMEM, "%s: cannot convert the image for writing", path);
         beauty = linear;
     }
-    exr_source sources[4 + 64 * 4];
+    channel_source sources[4 + 64 * 4];
     size_t count = 0;
     cg_status status = layer_sources(beauty, extra, n, sources, &count, path, err);
     byte_buffer contents = {0};
     if (status == CG_OK)
-        status = encode_exr(sources, count, beauty->width, beauty->height,
-                            options && options->full_float, &contents, path, err);
+        status = encode_file(sources, count, beauty->width, beauty->height,
+                             options && options->full_float, &contents, path, err);
     if (status == CG_OK)
         status = image_replace_file(path, &contents, err);
     byte_buffer_free(&contents);
@@ -450,8 +451,8 @@ int cg_exr_supported(void)
     return 0;
 }
 
-cg_status exr_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
-                     cg_error *err)
+cg_status image_exr_decode(const unsigned char *bytes, size_t size, const char *name,
+                           cg_image **out, cg_error *err)
 {
     (void)bytes;
     (void)size;

@@ -26,8 +26,8 @@ cg_status pfm_decode(const unsigned char *bytes, size_t size, const char *name, 
 cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
                      cg_error *err);
 /* OpenEXR (exr.c); without libopenexr these give CG_EUNSUPPORTED. */
-cg_status exr_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
-                     cg_error *err);
+cg_status image_exr_decode(const unsigned char *bytes, size_t size, const char *name,
+                           cg_image **out, cg_error *err);
 
 /* Replaces path with contents atomically (a temporary file renamed over it). */
 cg_status image_replace_file(const char *path, const byte_buffer *contents, cg_error *err);

@@ -89,7 +89,7 @@ cg_status cg_image_load_memory(const void *bytes, size_t size, const char *name,
     if (size >= 2 && b[0] == '#' && b[1] == '?')
         return hdr_decode(b, size, name, out, err);
     if (size >= 4 && memcmp(b, exr_magic, 4) == 0)
-        return exr_decode(b, size, name, out, err);
+        return image_exr_decode(b, size, name, out, err);
     return cg_error_set(err, CG_EFORMAT,
                         "%s: unknown image format (expected PNG, PPM/PGM, PFM, Radiance HDR or "
                         "OpenEXR)",

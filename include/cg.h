@@ -4,6 +4,7 @@
 
 #include "cg/core.h"
 #include "cg/image.h"
+#include "cg/image_float.h"
 #include "cg/color.h"
 #include "cg/light.h"
 #include "cg/xform.h"

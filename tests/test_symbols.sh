@@ -29,6 +29,9 @@ grep '^/\* [^ ]*include/cg/[a-z0-9_]*\.h:' "$work/aux.txt" | grep -v '\*/ static
   sed 's/^[^(]*[ *]\(cg_[A-Za-z0-9_]*\) (.*/\1/' | sort -u > "$work/declared.txt"
 [ -s "$work/declared.txt" ] || { echo "FAIL: no public declaration found" >&2; exit 1; }
 
+# OpenEXRCore when this build has OpenEXR (libcg.a then calls exr_*).
+exr_libs=
+if nm -u "$build_dir/libcg.a" | grep -q ' exr_start_read$'; then exr_libs=-lOpenEXRCore-3_1; fi
 nm -g --defined-only "$build_dir/libcg.a" | awk 'NF == 3 { print $3 }' | sort -u > "$work/static.txt"
 nm -D --defined-only "$build_dir/libcg.so" | awk 'NF == 3 && $3 !~ /^CG_/ { print $3 }' |
   sed 's/@.*//' | sort -u > "$work/shared.txt"
@@ -60,7 +63,7 @@ run_user() { # PROGRAM [ENV...]
 }
 link_static() {
   gcc -std=c11 -I "$source_dir/include" "$user" "$work/names.c" "$build_dir/libcg.a" \
-    $(pkg-config --libs libpng zlib libcjson libjpeg expat freetype2 harfbuzz fontconfig) -lm -lpthread -o "$work/user-static" 2> "$work/link.txt" ||
+    $(pkg-config --libs libpng zlib libcjson libjpeg expat freetype2 harfbuzz fontconfig) $exr_libs -lm -lpthread -o "$work/user-static" 2> "$work/link.txt" ||
     { head -5 "$work/link.txt" >&2; return 1; }
   run_user "$work/user-static"
 }

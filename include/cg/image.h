@@ -99,14 +99,19 @@ typedef enum cg_file_format {
     CG_FILE_PPM,       /* binary P6 when written */
     CG_FILE_PGM,       /* binary P5 when written */
     CG_FILE_PPM_ASCII, /* P3 */
-    CG_FILE_PGM_ASCII  /* P2 */
+    CG_FILE_PGM_ASCII, /* P2 */
+    CG_FILE_PFM,       /* portable float map, written as PF little-endian */
+    CG_FILE_HDR,       /* Radiance RGBE, run-length encoded when written */
+    CG_FILE_EXR        /* OpenEXR, RGBA half with ZIP compression when written */
 } cg_file_format;
 
-/* The format named by a path's extension (.png, .ppm, .pgm; case-insensitive). */
+/* The format named by a path's extension (.png, .ppm, .pgm, .pfm, .hdr,
+ * .exr; case-insensitive).  The float formats are in cg/image_float.h. */
 cg_file_format cg_file_format_from_path(const char *path);
 
 /* Reads a PNG, PPM (P3, P6) or PGM (P2, P5) file, chosen by its content, into
- * a new RGBA8 image.  CG_EIO when it cannot be opened, CG_EFORMAT with a
+ * a new RGBA8 image (a float file, see cg/image_float.h, is read and encoded
+ * to sRGB, clamped; cg_image_load keeps it in float).  CG_EIO when it cannot be opened, CG_EFORMAT with a
  * message for malformed content, CG_ERANGE for dimensions over the limits. */
 cg_status cg_image_read(const char *path, cg_image **out, cg_error *err);
 /* The same from memory; name is used in messages. */
@@ -116,7 +121,9 @@ cg_status cg_image_read_memory(const void *bytes, size_t size, const char *name,
 /* Writes the image in the given format (CG_FILE_UNKNOWN: from the path's
  * extension).  The file is written to a temporary name beside path and renamed
  * into place, so a failure leaves any existing file untouched.  PGM stores the
- * luminance; PPM and PGM drop alpha; RGBAF images are encoded to sRGB first. */
+ * luminance; PPM and PGM drop alpha; RGBAF images are encoded to sRGB first.
+ * The float formats (PFM, HDR, EXR) take RGBAF images as they are and decode
+ * RGBA8 images from sRGB to linear light first. */
 cg_status cg_image_write(const cg_image *image, const char *path, cg_file_format format,
                          cg_error *err);
 

@@ -21,6 +21,20 @@ cg_status png_decode(const unsigned char *bytes, size_t size, const char *name, 
                      cg_error *err);
 cg_status pnm_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
                      cg_error *err);
+cg_status pfm_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
+                     cg_error *err);
+cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, cg_image **out,
+                     cg_error *err);
+/* OpenEXR (exr.c); without libopenexr these give CG_EUNSUPPORTED. */
+cg_status image_exr_decode(const unsigned char *bytes, size_t size, const char *name,
+                           cg_image **out, cg_error *err);
+
+/* Replaces path with contents atomically (a temporary file renamed over it). */
+cg_status image_replace_file(const char *path, const byte_buffer *contents, cg_error *err);
+
+/* The float encoders take an RGBAF image. */
+cg_status pfm_encode(const cg_image *image, byte_buffer *out, cg_error *err);
+cg_status hdr_encode(const cg_image *image, byte_buffer *out, cg_error *err);
 
 /* Encoders take an RGBA8 image. */
 cg_status png_encode(const cg_image *image, byte_buffer *out, cg_error *err);

@@ -31,8 +31,10 @@ static void warn(cg_renderer *r, const char *format, ...)
 }
 
 /* glTF's transform acts on (s, t) = (u, 1 - v):
- *   (s', t') = offset + R(rotation) diag(scale) (s, t),  R = [c -s; s c];
- * written for (u, v) and v' = 1 - t', an affine map of (u, v). */
+ *   (s', t') = offset + R diag(scale) (s, t),  R = [c s; -s c]
+ * with c, s the cosine and sine of the rotation (the direction the
+ * TextureTransformTest sample model's markers confirm); written for (u, v)
+ * and v' = 1 - t', an affine map of (u, v). */
 static void texture_transform(const cg_mesh_texture_ref *ref, float m[2][3])
 {
     double c = cos(ref->rotation), s = sin(ref->rotation);
@@ -41,10 +43,11 @@ static void texture_transform(const cg_mesh_texture_ref *ref, float m[2][3])
         || !isfinite(oy)) {
         c = 1, s = 0, sx = sy = 1, ox = oy = 0;
     }
+    /* s' = c sx s + s sy t + ox,  t' = -s sx s + c sy t + oy */
     m[0][0] = (float)(c * sx);
-    m[0][1] = (float)(s * sy);
-    m[0][2] = (float)(ox - s * sy);
-    m[1][0] = (float)(-s * sx);
+    m[0][1] = (float)(-s * sy);
+    m[0][2] = (float)(ox + s * sy);
+    m[1][0] = (float)(s * sx);
     m[1][1] = (float)(c * sy);
     m[1][2] = (float)(1 - c * sy - oy);
 }

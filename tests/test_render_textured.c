@@ -7,7 +7,8 @@
  * Nearest samples must be exactly the texel (away from texel borders),
  * bilinear ones the weighted four texels written out here, trilinear ones
  * the mip level the pixel's footprint calls for (levels built here as box
- * averages), for every wrap mode. */
+ * averages), for every wrap mode; glTF's alpha mask drops fragments below
+ * the cutoff, colour and depth alike. */
 #include "cg.h"
 #include "check.h"
 
@@ -336,6 +337,87 @@ static void missing_texture(void)
     CHECK(cg_renderer_create(mesh, &o, &r, NULL) == CG_EINVAL);
 }
 
+/* glTF alphaMode MASK: a textured square whose texels are alpha 0 or 1 in
+ * front of a red one; where the texel under a pixel is transparent the red
+ * square shows, whichever of the two is drawn first (a dropped fragment
+ * writes no depth). */
+static void alpha_mask(void)
+{
+    check_rng rng = {19};
+    cg_image *image;
+    CHECK(cg_image_create(&image, TEX, TEX, CG_PIXEL_RGBA8) == CG_OK);
+    static uint8_t alpha[TEX * TEX];
+    for (int y = 0; y < TEX; y++)
+        for (int x = 0; x < TEX; x++) {
+            uint8_t *t = texels[y * TEX + x];
+            for (int k = 0; k < 3; k++)
+                t[k] = (uint8_t)check_rng_int(&rng, 0, 255);
+            alpha[y * TEX + x] = check_rng_int(&rng, 0, 1) ? 255 : 0;
+            cg_image_set_rgba8(image, x, y, (cg_rgba8){t[0], t[1], t[2], alpha[y * TEX + x]});
+        }
+    cg_error err;
+    CHECK_MSG(cg_image_write(image, "textured_alpha.png", CG_FILE_UNKNOWN, &err) == CG_OK, "%s",
+              err.message);
+    cg_image_free(image);
+    cg_vec3 positions[8] = {{0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5},
+                            {0, 0, 0},   {1, 0, 0},   {1, 1, 0},   {0, 1, 0}};
+    cg_vec2 uvs[8] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    uint32_t offsets[3] = {0, 4, 8};
+    cg_mesh_material materials[2] = {cg_mesh_material_default(), cg_mesh_material_default()};
+    char path[] = "textured_alpha.png";
+    materials[0].base_color_map.image_path = path;
+    materials[0].alpha_mode = CG_MESH_ALPHA_MASK;
+    materials[0].alpha_cutoff = 0.5;
+    materials[1].base_color = (cg_rgbaf){1, 0, 0, 1};
+    cg_camera camera = ortho_camera(1.2);
+    for (int order = 0; order < 2; order++) {
+        /* order 0: the masked square first; 1: the red one first. */
+        uint32_t indices[8] = {0, 1, 2, 3, 4, 5, 6, 7}, face_materials[2] = {0, 1};
+        if (order)
+            for (int k = 0; k < 4; k++) {
+                indices[k] = (uint32_t)(4 + k);
+                indices[4 + k] = (uint32_t)k;
+                face_materials[0] = 1;
+                face_materials[1] = 0;
+            }
+        cg_mesh mesh = {0};
+        mesh.vertex_count = 8;
+        mesh.positions = positions;
+        mesh.texcoords = uvs;
+        mesh.face_count = 2;
+        mesh.face_offsets = offsets;
+        mesh.face_indices = indices;
+        mesh.material_count = 2;
+        mesh.materials = materials;
+        mesh.face_materials = face_materials;
+        cg_image *out = draw(&mesh, &camera, CG_TEXTURE_NEAREST, 120, 120);
+        long checked = 0, wrong = 0, red = 0;
+        quad q = {{0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, {0, 0}, 1, 1};
+        for (int y = 0; y < 120; y++)
+            for (int x = 0; x < 120; x++) {
+                double uv[2];
+                if (!pixel_uv(&q, &camera, 120, 120, x + 0.5, y + 0.5, 1e-3, uv))
+                    continue;
+                double tx = uv[0] * TEX, ty = (1 - uv[1]) * TEX;
+                if (near_integer(tx, 0.02) || near_integer(ty, 0.02))
+                    continue;
+                int i = wrap((long long)floor(ty), TEX, CG_TEXTURE_REPEAT) * TEX
+                        + wrap((long long)floor(tx), TEX, CG_TEXTURE_REPEAT);
+                cg_rgba8 p = cg_image_get_rgba8(out, x, y);
+                cg_rgba8 want = alpha[i] ? (cg_rgba8){texels[i][0], texels[i][1], texels[i][2], 255}
+                                         : (cg_rgba8){255, 0, 0, 255};
+                red += !alpha[i];
+                checked++;
+                if (abs(p.r - want.r) > 1 || abs(p.g - want.g) > 1 || abs(p.b - want.b) > 1)
+                    wrong++;
+            }
+        CHECK_MSG(checked > 5000 && red > 1000, "order %d: %ld checked, %ld red", order, checked,
+                  red);
+        CHECK_MSG(wrong == 0, "order %d: %ld of %ld pixels wrong", order, wrong, checked);
+        cg_image_free(out);
+    }
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -344,5 +426,6 @@ int main(int argc, char **argv)
     CHECK_GROUP(wrap_modes);
     CHECK_GROUP(filtered);
     CHECK_GROUP(missing_texture);
+    CHECK_GROUP(alpha_mask);
     return check_finish();
 }

@@ -253,6 +253,9 @@ typedef struct prepared_vertex {
 /* A material as the textured shading uses it (material.c). */
 typedef struct render_material {
     cg_texture *base_texture; /* NULL: the base colour alone */
+    float alpha;              /* base colour factor's alpha */
+    float alpha_cutoff;       /* alpha mode MASK: fragments below are dropped;
+                                 0 for every other mode (drawn opaque) */
     cg_texture_wrap wrap_u, wrap_v;
     /* KHR_texture_transform taken to cg's texture space (v up):
      * uv' = m * (u, v, 1) */

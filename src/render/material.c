@@ -91,6 +91,8 @@ cg_status render_materials_load(cg_renderer *r, const cg_mesh *mesh)
         out->wrap_u = m->base_color_map.wrap_u;
         out->wrap_v = m->base_color_map.wrap_v;
         texture_transform(&m->base_color_map, out->transform);
+        out->alpha = m->base_color.a;
+        out->alpha_cutoff = m->alpha_mode == CG_MESH_ALPHA_MASK ? (float)m->alpha_cutoff : 0;
         if (mesh->texcoords)
             load_base_texture(r, m, out);
         if (out->base_texture)

@@ -46,9 +46,11 @@ static inline uint32_t render_triangle_material(const cg_renderer *r, size_t i)
 
 /* Colour of a textured fragment: v holds the TEXTURED_ATTRIBUTES
  * interpolated (perspective-correct) at the pixel, duv the derivatives of
- * the texture coordinates along x and y (du/dx, dv/dx, du/dy, dv/dy). */
-void render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
-                              const float duv[4], float out[3]);
+ * the texture coordinates along x and y (du/dx, dv/dx, du/dy, dv/dy).
+ * Returns 0 when the fragment is dropped (alpha mode MASK, alpha below the
+ * cutoff): then nothing of it is written, neither colour nor depth. */
+int render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
+                             const float duv[4], float out[3]);
 
 #define VERTEX_BLOCK 4096   /* vertices taken at a time */
 #define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */

@@ -192,10 +192,11 @@ static void attribute_setup(const setup_triangle *t, const raster_edges *e, floa
     p->l2y = (float)e->step_y[2] * ia;
 }
 
-/* The colour of a Phong or textured pixel with barycentric weights l1, l2. */
-static inline void attribute_pixel(const render_frame *f, const setup_triangle *t,
-                                   const attribute_plane *p, float l1, float l2, const int mode,
-                                   float c[3])
+/* The colour of a Phong or textured pixel with barycentric weights l1, l2;
+ * 0 when a textured fragment is dropped (alpha mask). */
+static inline int attribute_pixel(const render_frame *f, const setup_triangle *t,
+                                  const attribute_plane *p, float l1, float l2, const int mode,
+                                  float c[3])
 {
     /* Perspective-correct: attribute / w and 1 / w are affine on the
      * screen; divide their interpolants. */
@@ -213,13 +214,13 @@ static inline void attribute_pixel(const render_frame *f, const setup_triangle *
             duv[j] = (p->l1x * p->p_d1[k] + p->l2x * p->p_d2[k] - v[k] * qx) * r;
             duv[2 + j] = (p->l1y * p->p_d1[k] + p->l2y * p->p_d2[k] - v[k] * qy) * r;
         }
-        render_textured_fragment(f, t->material, v, duv, c);
-        return;
+        return render_textured_fragment(f, t->material, v, duv, c);
     }
     float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     float inv = len > 0 ? 1 / len : 0;
     float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv};
     render_shade(&f->lighting, v + 3, normal, n > 6 ? v + 6 : t->color, c);
+    return 1;
 }
 
 /* Clipped to the tile, a triangle box at most this many pixels on each side
@@ -319,7 +320,8 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
             float z = z0 + l1 * dz1 + l2 * dz2;
             if (depth_test && !(z < zrow[i]))
                 continue;
-            zrow[i] = z;
+            if (mode != MODE_TEXTURED)
+                zrow[i] = z;
             int x = x0 + i;
             if (mode == MODE_FLAT) {
                 if (rgba8)
@@ -329,7 +331,10 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
                 continue;
             }
             float c[3];
-            attribute_pixel(f, t, &plane, l1, l2, mode, c);
+            if (!attribute_pixel(f, t, &plane, l1, l2, mode, c))
+                continue; /* dropped: neither colour nor depth */
+            if (mode == MODE_TEXTURED)
+                zrow[i] = z;
             store(row, x, c, rgba8);
         }
     }

@@ -16,12 +16,13 @@
 
 #include <math.h>
 
-void render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
-                              const float duv[4], float out[3])
+int render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
+                             const float duv[4], float out[3])
 {
     float base[3] = {v[6], v[7], v[8]};
-    if (material != RENDER_NO_MATERIAL && f->r->materials[material].base_texture) {
-        const render_material *m = &f->r->materials[material];
+    const render_material *m = material != RENDER_NO_MATERIAL ? &f->r->materials[material] : NULL;
+    float alpha = m ? m->alpha : 1;
+    if (m && m->base_texture) {
         const cg_texture *texture = m->base_texture;
         float u0 = v[TEXTURED_UV], v0 = v[TEXTURED_UV + 1];
         double u = m->transform[0][0] * u0 + m->transform[0][1] * v0 + m->transform[0][2];
@@ -39,15 +40,19 @@ void render_textured_fragment(const render_frame *f, uint32_t material, const fl
         base[0] *= texel.r;
         base[1] *= texel.g;
         base[2] *= texel.b;
+        alpha *= texel.a;
     }
+    if (m && alpha < m->alpha_cutoff)
+        return 0; /* glTF alphaMode MASK */
     if (f->o->shading == CG_SHADING_UNLIT) {
         out[0] = base[0];
         out[1] = base[1];
         out[2] = base[2];
-        return;
+        return 1;
     }
     float len = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     float inv = len > 0 ? 1 / len : 0;
     float normal[3] = {v[0] * inv, v[1] * inv, v[2] * inv};
     render_shade(&f->lighting, v + 3, normal, base, out);
+    return 1;
 }

@@ -2,7 +2,7 @@
 # cg render on the textured glTF models of Debian's assimp-testmodels: the
 # base-colour texture shows (the Cesium logo's blue sky, green hills and
 # white ground all present, many distinct colours), the .gltf with a data:
-# URI and the .glb draw the same picture, the filters differ where the
+# URI and the .glb draw the same picture, on any thread count, the filters differ where the
 # texture is minified, a missing texture file is a warning naming it with
 # the material's colour drawn, and bad options are one-line errors that
 # leave an existing output untouched.
@@ -51,6 +51,13 @@ done
 "$cg" render "$models/BoxTextured-glTF-Embedded/BoxTextured.gltf" -o "$work/b.ppm" $view \
   --shading unlit
 cmp -s "$work/a.ppm" "$work/b.ppm" && pass || fail "embedded .gltf and .glb draw differently"
+
+# The same bytes on any thread count.
+for threads in 1 3; do
+  "$cg" render "$models/BoxTextured-glTF-Binary/BoxTextured.glb" -o "$work/t$threads.ppm" \
+    --view-from 1,1,2 --size 300x200 --threads $threads
+done
+cmp -s "$work/t1.ppm" "$work/t3.ppm" && pass || fail "1 and 3 threads draw differently"
 
 # Minified (the 256-texel logo on a few dozen pixels): nearest aliases,
 # trilinear averages; both show the texture.

@@ -106,8 +106,9 @@ static inline void render_project(const clip_vertex *v, int width, int height, i
  * seen on the screen (positive edge functions inside), the
  * pixel box it may cover, and the values to interpolate. */
 typedef struct setup_triangle {
-    int32_t x[3], y[3]; /* 1/256 pixel */
-    int32_t box[4];     /* pixels x0, y0, x1, y1 (exclusive) */
+    /* 8-aligned, so that SETUP_SIZE (rounded up to 8) never exceeds it */
+    _Alignas(8) int32_t x[3], y[3]; /* 1/256 pixel */
+    int32_t box[4];                 /* pixels x0, y0, x1, y1 (exclusive) */
     float z[3], iw[3];
     float color[3];     /* flat colour, or the base colour for Phong */
     cg_rgba8 color8;    /* the flat colour encoded */

@@ -25,6 +25,7 @@
 #include "cg/image.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
+#include "cg/texture.h"
 #include "cg/xform.h"
 
 #ifdef __cplusplus
@@ -66,7 +67,9 @@ typedef enum cg_render_algorithm {
 typedef enum cg_shading {
     CG_SHADING_FLAT = 0,    /* one colour per face from its geometric normal */
     CG_SHADING_GOURAUD = 1, /* colours lit at the vertices, interpolated */
-    CG_SHADING_PHONG = 2    /* normals interpolated, lit at every pixel */
+    CG_SHADING_PHONG = 2,   /* normals interpolated, lit at every pixel */
+    CG_SHADING_UNLIT = 3    /* the base colour (material factor times texture
+                               times vertex colour) as it is, no lighting */
 } cg_shading;
 
 typedef enum cg_cull_mode {
@@ -108,6 +111,10 @@ typedef struct cg_render_options {
     double shininess;    /* specular exponent */
     int light_count;     /* 0: one light from the camera's upper left */
     cg_render_light lights[CG_RENDER_MAX_LIGHTS];
+    /* How base-colour textures are filtered (default CG_TEXTURE_TRILINEAR,
+     * the level of detail from the screen-space derivatives of the texture
+     * coordinates at each pixel). */
+    cg_texture_filter texture_filter;
     double crease_angle; /* radians: when the mesh has no normals, faces meeting at a
                             larger angle keep separate vertex normals (default 60 deg) */
     /* Called now and then from the calling thread with the fraction done
@@ -137,7 +144,14 @@ typedef struct cg_renderer cg_renderer;
 
 /* Prepares a mesh for rendering: validates it, triangulates its faces by
  * fans, computes angle-weighted vertex normals with the crease angle when the
- * mesh has none, and takes the per-vertex or per-face colours.  The renderer
+ * mesh has none, and takes the per-vertex or per-face colours.  Faces with
+ * a material take its base colour (times the vertex colours); when the mesh
+ * has texture coordinates, each material's base-colour texture is read
+ * (cg_texture_load, or the bytes the file embeds) and the z-buffer draws
+ * those faces lit per pixel (any shading but unlit) with the texel the
+ * perspective-correct coordinates map to, times the base colour.  A texture
+ * that cannot be read leaves its material its colour, and
+ * cg_renderer_warnings says so.  The renderer
  * keeps its own copy; the mesh may be freed afterwards.  The options are
  * copied too (cg_renderer_set_options changes them later; changing the crease
  * angle or the colour needs a new renderer).  CG_EFORMAT (with err) for an
@@ -164,6 +178,10 @@ const float *cg_renderer_depth(const cg_renderer *renderer);
  * black where nothing was drawn.  CG_EINVAL without a depth buffer or for a
  * different size. */
 cg_status cg_renderer_depth_image(const cg_renderer *renderer, cg_image *image);
+/* What preparing the mesh could not do, one line each ("texture of
+ * material 'NAME': why; drawn with the material's colour"), or NULL when nothing went
+ * wrong.  Owned by the renderer. */
+const char *cg_renderer_warnings(const cg_renderer *renderer);
 /* The counts of the last frame. */
 cg_render_stats cg_renderer_stats(const cg_renderer *renderer);
 /* The camera the last frame used (after framing). */

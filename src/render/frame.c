@@ -185,10 +185,13 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
     setup_lighting(f, &camera, &view);
     f->fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
     f->shading = f->fill_background ? MODE_FLAT : (int)o->shading;
-    f->attribute_count = f->shading == MODE_FLAT      ? 0
-                         : f->shading == MODE_GOURAUD ? 3
-                         : r->varying_color           ? 9
-                                                      : 6;
+    if (!f->fill_background && (r->textured || o->shading == CG_SHADING_UNLIT))
+        f->shading = MODE_TEXTURED; /* per pixel, textures sampled (textured.c) */
+    f->attribute_count = f->shading == MODE_FLAT       ? 0
+                         : f->shading == MODE_GOURAUD  ? 3
+                         : f->shading == MODE_TEXTURED ? TEXTURED_ATTRIBUTES
+                         : r->varying_color            ? 9
+                                                       : 6;
     f->cull = o->cull == CG_CULL_BACK;
     f->background[0] = o->background.r;
     f->background[1] = o->background.g;

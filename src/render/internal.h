@@ -12,9 +12,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define RENDER_MAX_ATTRIBUTES 9 /* interpolated floats per vertex */
-#define RENDER_MAX_POLYGON 9    /* a triangle clipped by 6 planes */
-#define RENDER_TILE 64          /* tile side in pixels */
+#define RENDER_MAX_ATTRIBUTES 11 /* interpolated floats per vertex */
+#define RENDER_MAX_POLYGON 9     /* a triangle clipped by 6 planes */
+#define RENDER_TILE 64           /* tile side in pixels */
 
 /* ---- shading: the one place that computes the colour of a point --------- */
 
@@ -106,12 +106,15 @@ static inline void render_project(const clip_vertex *v, int width, int height, i
  * seen on the screen (positive edge functions inside), the
  * pixel box it may cover, and the values to interpolate. */
 typedef struct setup_triangle {
-    int32_t x[3], y[3]; /* 1/256 pixel */
-    int32_t box[4];     /* pixels x0, y0, x1, y1 (exclusive) */
+    /* 8-aligned, so that SETUP_SIZE (rounded up to 8) never exceeds it */
+    _Alignas(8) int32_t x[3], y[3]; /* 1/256 pixel */
+    int32_t box[4];                 /* pixels x0, y0, x1, y1 (exclusive) */
     float z[3], iw[3];
     float color[3];     /* flat colour, or the base colour for Phong */
     cg_rgba8 color8;    /* the flat colour encoded */
     float inverse_area; /* 1 / (twice the area in fixed-point units squared) */
+    uint32_t material;  /* textured shading: index into the renderer's
+                           materials, RENDER_NO_MATERIAL for none */
     /* attributes of vertex k at a[k * attribute_count + j]; only the first
      * 3 * attribute_count floats are stored in the binned copies */
     float a[3 * RENDER_MAX_ATTRIBUTES];
@@ -243,8 +246,22 @@ static inline void render_row_span(const int64_t w[3], const int64_t step[3], in
 /* ---- the renderer ------------------------------------------------------- */
 
 typedef struct prepared_vertex {
-    float position[3], normal[3], color[3];
+    float position[3], normal[3], color[3], uv[2];
 } prepared_vertex;
+
+#define RENDER_NO_MATERIAL UINT32_MAX
+
+/* A material as the textured shading uses it (material.c). */
+typedef struct render_material {
+    cg_texture *base_texture; /* NULL: the base colour alone */
+    float alpha;              /* base colour factor's alpha */
+    float alpha_cutoff;       /* alpha mode MASK: fragments below are dropped;
+                                 0 for every other mode (drawn opaque) */
+    cg_texture_wrap wrap_u, wrap_v;
+    /* KHR_texture_transform taken to cg's texture space (v up):
+     * uv' = m * (u, v, 1) */
+    float transform[2][3];
+} render_material;
 
 struct render_chunk;
 struct core_worker_pool;
@@ -256,6 +273,12 @@ struct cg_renderer {
     size_t triangle_count;
     uint32_t (*triangles)[3];
     uint32_t *triangle_face; /* face each triangle comes from */
+    uint32_t *face_material; /* per face, index into materials or
+                                 RENDER_NO_MATERIAL; NULL when no face has one */
+    size_t material_count;
+    render_material *materials;
+    int textured; /* some material has a texture and the mesh coordinates */
+    char *warnings;
     uint32_t *face_triangle; /* per face, its triangle of largest area, whose
                                  turn is the face's (culling its edges) */
     size_t edge_count;

@@ -21,8 +21,36 @@
 
 #include <stdatomic.h>
 
-/* Shading modes (the values of cg_shading). */
-enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG };
+/* Shading modes (the values of cg_shading, but for the textured one: every
+ * frame of a textured mesh, and every unlit frame, of the z-buffer). */
+enum { MODE_FLAT, MODE_GOURAUD, MODE_PHONG, MODE_TEXTURED };
+
+/* The attributes of MODE_TEXTURED: normal, world position, base colour,
+ * texture coordinates. */
+#define TEXTURED_ATTRIBUTES 11
+#define TEXTURED_UV 9
+
+/* ---- materials and textured fragments (material.c, textured.c) ------------ */
+
+/* The renderer's materials of mesh (base-colour textures read when the mesh
+ * has texture coordinates), its face materials and its warnings.
+ * CG_ENOMEM only: a texture that cannot be read is a warning. */
+cg_status render_materials_load(cg_renderer *r, const cg_mesh *mesh);
+void render_materials_free(cg_renderer *r);
+
+/* The renderer's material index of triangle i, or RENDER_NO_MATERIAL. */
+static inline uint32_t render_triangle_material(const cg_renderer *r, size_t i)
+{
+    return r->face_material ? r->face_material[r->triangle_face[i]] : RENDER_NO_MATERIAL;
+}
+
+/* Colour of a textured fragment: v holds the TEXTURED_ATTRIBUTES
+ * interpolated (perspective-correct) at the pixel, duv the derivatives of
+ * the texture coordinates along x and y (du/dx, dv/dx, du/dy, dv/dy).
+ * Returns 0 when the fragment is dropped (alpha mode MASK, alpha below the
+ * cutoff): then nothing of it is written, neither colour nor depth. */
+int render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
+                             const float duv[4], float out[3]);
 
 #define VERTEX_BLOCK 4096   /* vertices taken at a time */
 #define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */

@@ -2,7 +2,7 @@
  * (cg_mesh_triangulate), angle-weighted vertex normals with a crease angle,
  * vertices split where normals or colours differ between the faces around
  * them. */
-#include "internal.h"
+#include "pipeline.h"
 #include "cg/color.h"
 
 #include <stdlib.h>
@@ -167,10 +167,18 @@ static void corner_color(const cg_mesh *mesh, const cg_render_options *options, 
                          uint32_t k, float out[3])
 {
     cg_rgbaf c = options->color;
-    if (mesh->colors)
-        c = mesh->colors[mesh->face_indices[k]];
-    else if (mesh->face_colors && mesh->face_colors[f].a > 0)
+    uint32_t material = mesh->face_materials ? mesh->face_materials[f] : CG_MESH_NO_MATERIAL;
+    if (mesh->face_colors && mesh->face_colors[f].a > 0) {
         c = mesh->face_colors[f]; /* alpha 0: the file gives this face no colour */
+    } else if (material < mesh->material_count && mesh->materials) {
+        c = mesh->materials[material].base_color;
+        if (mesh->colors) {
+            cg_rgbaf v = mesh->colors[mesh->face_indices[k]];
+            c.r *= v.r, c.g *= v.g, c.b *= v.b;
+        }
+    }
+    if (mesh->colors && !(material < mesh->material_count && mesh->materials))
+        c = mesh->colors[mesh->face_indices[k]];
     out[0] = c.r;
     out[1] = c.g;
     out[2] = c.b;
@@ -187,8 +195,9 @@ static cg_status check_options(const cg_render_options *o)
     if (!o || o->threads < 1 || o->threads > 64 || o->light_count < 0
         || o->light_count > CG_RENDER_MAX_LIGHTS || !(o->crease_angle >= 0) || !isfinite(o->ambient)
         || !isfinite(o->specular) || !isfinite(o->shininess)
-        || (unsigned)o->algorithm > CG_RENDER_DEPTH_SORT || (unsigned)o->shading > CG_SHADING_PHONG
-        || (unsigned)o->cull > CG_CULL_BACK || (unsigned)o->edges > CG_EDGES_OVERLAY)
+        || (unsigned)o->algorithm > CG_RENDER_DEPTH_SORT || (unsigned)o->shading > CG_SHADING_UNLIT
+        || (unsigned)o->texture_filter > CG_TEXTURE_TRILINEAR || (unsigned)o->cull > CG_CULL_BACK
+        || (unsigned)o->edges > CG_EDGES_OVERLAY)
         return CG_EINVAL;
     for (int i = 0; i < o->light_count; i++)
         if (!(cg_vec3_length(o->lights[i].direction) > 0)
@@ -219,6 +228,7 @@ void cg_render_options_default(cg_render_options *o)
     o->shininess = 32;
     o->light_count = 0;
     o->crease_angle = cg_radians(60);
+    o->texture_filter = CG_TEXTURE_TRILINEAR;
 }
 
 cg_status cg_renderer_set_options(cg_renderer *renderer, const cg_render_options *options)
@@ -242,6 +252,7 @@ void cg_renderer_free(cg_renderer *r)
     free(r->face_triangle);
     free(r->edges);
     free(r->depth);
+    render_materials_free(r);
     render_buffers_free(r);
     free(r);
 }
@@ -275,6 +286,8 @@ static void split_vertices(const cg_mesh *mesh, const cg_render_options *options
                     break;
                 }
             if (found == count) {
+                r->vertices[count].uv[0] = mesh->texcoords ? (float)mesh->texcoords[v].x : 0;
+                r->vertices[count].uv[1] = mesh->texcoords ? (float)mesh->texcoords[v].y : 0;
                 memcpy(r->vertices[count].position, position, sizeof position);
                 memcpy(r->vertices[count].normal, normal, sizeof normal);
                 memcpy(r->vertices[count].color, color, sizeof color);
@@ -376,6 +389,10 @@ cg_status cg_renderer_create(const cg_mesh *mesh, const cg_render_options *optio
     free(normals);
     free(corner_vertex);
     incidence_free(&in);
+    if (render_materials_load(r, mesh) != CG_OK) {
+        cg_renderer_free(r);
+        return cg_error_set(err, CG_ENOMEM, "render: out of memory reading the materials");
+    }
     *out = r;
     return CG_OK;
 }

@@ -89,6 +89,7 @@ static void triangle_color(const render_frame *f, size_t i, float out[3])
 void render_finish_setup(const render_frame *f, setup_triangle *t, const float color[3])
 {
     memcpy(t->color, color, sizeof t->color);
+    t->material = RENDER_NO_MATERIAL;
     if (f->shading != MODE_FLAT)
         return; /* the encoded colour is for flat shading only */
     t->color8.r = cg_srgb_encode_unit(color[0]);
@@ -145,6 +146,7 @@ static inline void setup_inside(render_frame *f, render_chunk *c, size_t i, cons
     float color[3];
     triangle_color(f, i, color);
     render_finish_setup(f, t, color);
+    t->material = render_triangle_material(f->r, i);
     emit_setup(f, c, t);
 }
 
@@ -219,6 +221,7 @@ static void setup_fan(render_frame *f, render_chunk *c, size_t i, const screen_v
             colored = 1;
         }
         render_finish_setup(f, &t, color);
+        t.material = render_triangle_material(f->r, i);
         emit_setup(f, c, &t);
         emitted++;
     }

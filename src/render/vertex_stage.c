@@ -45,6 +45,8 @@ void render_compute_attributes(const render_frame *f, size_t i, float *out)
         memcpy(out + 3, world, sizeof world);
         if (n > 6)
             memcpy(out + 6, p->color, sizeof p->color);
+        if (n > 9)
+            memcpy(out + 9, p->uv, sizeof p->uv);
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The camera of the request for a mesh with bounding box [lo, hi] (bounded
  * 0: no finite vertex).  CLI_OK, or CLI_USAGE after printing. */
@@ -147,6 +148,12 @@ int render_mesh_raster(const char *command, const render_request *r)
     if (cg_renderer_create(mesh, &o, &renderer, &err) != CG_OK)
         status = cli_fail("%s: %s", path, err.message);
     cg_mesh_free(mesh);
+    for (const char *w = status == CLI_OK ? cg_renderer_warnings(renderer) : NULL; w && *w;) {
+        const char *end = strchr(w, '\n');
+        int n = end ? (int)(end - w) : (int)strlen(w);
+        fprintf(stderr, "cg: %s: warning: %.*s\n", command, n, w);
+        w += n + (end != NULL);
+    }
     if (status == CLI_OK
         && cg_image_create(&image, c->size.width, c->size.height, CG_PIXEL_RGBA8) != CG_OK)
         status = cli_fail("%s: cannot make a %dx%d image", command, c->size.width, c->size.height);

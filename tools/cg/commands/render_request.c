@@ -12,6 +12,7 @@
 
 /* Choices are stored as ints into these enums. */
 _Static_assert(sizeof(cg_shading) == sizeof(int) && sizeof(cg_cull_mode) == sizeof(int)
+                   && sizeof(cg_texture_filter) == sizeof(int)
                    && sizeof(cg_edge_mode) == sizeof(int)
                    && sizeof(render_algorithm) == sizeof(int),
                "choice members are ints");
@@ -90,7 +91,8 @@ static int parse_scene(const char *command, const cli_option *option, const char
 #define EXTRA(member) offsetof(render_request, trace.extra.member)
 #define GIVEN(option) CLI_GIVEN(render_request, given[option])
 
-static const char *const shadings[] = {"flat", "gouraud", "phong", NULL};
+static const char *const shadings[] = {"flat", "gouraud", "phong", "unlit", NULL};
+static const char *const texture_filters[] = {"nearest", "bilinear", "trilinear", NULL};
 static const char *const culls[] = {"none", "back", NULL};
 static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", "depth-sort", NULL};
 
@@ -216,7 +218,8 @@ static const cli_option pipeline_options[] = {
      .offset = RENDER(shading),
      .choices = shadings,
      .given = GIVEN(OPT_SHADING),
-     .help = "shading model (default gouraud)"},
+     .help = "shading model (default gouraud); unlit: the material's\n"
+             "colour and texture as they are, no lighting"},
     {.name = "--crease",
      .kind = CLI_DOUBLE,
      .offset = offsetof(render_request, crease_degrees),
@@ -249,6 +252,13 @@ static const cli_option pipeline_options[] = {
 
 /* The rasterizer's own (the ray tracer sees both faces and draws no edges). */
 static const cli_option raster_options[] = {
+    {.name = "--texture-filter",
+     .kind = CLI_CHOICE,
+     .offset = RENDER(texture_filter),
+     .choices = texture_filters,
+     .given = GIVEN(OPT_TEXTURE_FILTER),
+     .help = "how base-colour textures are sampled (default trilinear:\n"
+             "mip levels chosen from each pixel's footprint)"},
     {.name = "--cull",
      .kind = CLI_CHOICE,
      .offset = RENDER(cull),
@@ -377,14 +387,16 @@ static int first_given(const render_request *r, const render_option *set, int co
 /* Rejects, with one line, an option that means nothing for what was asked. */
 static int check_combinations(const char *command, int trace_only, const render_request *r)
 {
-    static const render_option raster_only[] = {OPT_CULL,  OPT_WIREFRAME,  OPT_HIDDEN_LINE,
-                                                OPT_EDGES, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH};
+    static const render_option raster_only[] = {OPT_CULL,          OPT_WIREFRAME,  OPT_HIDDEN_LINE,
+                                                OPT_EDGES,         OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,
+                                                OPT_TEXTURE_FILTER};
     static const render_option trace_options[] = {OPT_SPP,        OPT_DEPTH, OPT_STATS,
                                                   OPT_NO_SHADOWS, OPT_FLOOR, OPT_SCENE};
     /* A scene file brings its own objects and normals, and is rendered
      * through cg/scene.h, which keeps no ray or depth statistics. */
-    static const render_option not_for_scenes[] = {OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,
-                                                   OPT_FLOOR,  OPT_SCENE,      OPT_STATS};
+    static const render_option not_for_scenes[] = {
+        OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,  OPT_FLOOR,
+        OPT_SCENE,  OPT_STATS,      OPT_TEXTURE_FILTER};
     const raytrace_settings *s = &r->trace;
     int k;
     if (trace_only && r->algorithm != RENDER_RAYTRACE)
@@ -396,12 +408,17 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command, "--eye and --view-from exclude each other");
     if (render_request_has(r, OPT_UP) && !(cg_vec3_length(s->common.up) > 0))
         return cli_usage_error(command, "--up: the up vector must not be zero");
-    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 6)) >= 0)
+    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 7)) >= 0)
         return cli_usage_error(command, "%s: not available with a scene file (%s)",
                                render_option_name((render_option)k),
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
                                                                 : "it applies to mesh files");
-    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 6)) >= 0)
+    if (s->common.render.shading == CG_SHADING_UNLIT
+        && (r->algorithm == RENDER_RAYTRACE || (s->input && render_scene_is_scene(s->input))))
+        return cli_usage_error(command,
+                               "--shading unlit: only the rasterizer draws mesh files unlit "
+                               "(use --algorithm zbuffer or painter on a mesh file)");
+    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 7)) >= 0)
         return cli_usage_error(command,
                                "%s: not available with the ray tracer (use --algorithm "
                                "zbuffer or painter)",

@@ -52,6 +52,7 @@ typedef enum render_option {
     OPT_FAR,
     OPT_SHADING,
     OPT_THREADS,
+    OPT_TEXTURE_FILTER,
     OPT_COUNT
 } render_option;
 

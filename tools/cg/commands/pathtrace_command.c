@@ -93,7 +93,8 @@ static const cli_option pathtrace_options[] = {
      .flag_value = 1},
 };
 
-static const cli_option_group pathtrace_groups[] = {CLI_GROUP(NULL, pathtrace_options), {0}};
+static const cli_option_group pathtrace_groups[] = {
+    CLI_GROUP("Path tracer (--algorithm pathtrace):", pathtrace_options), {0}};
 
 const cli_syntax pathtrace_syntax = {
     .command = "render",

@@ -1,7 +1,6 @@
 /* cg render MESH|SCENE.json -o OUT: the rasterizing pipeline (z-buffer or painter's) or
  * the ray tracer on a mesh or scene file (render_command.c does the work). */
 #include "command.h"
-#include "pathtrace_command.h"
 #include "render_command.h"
 #include "render_request.h"
 
@@ -12,7 +11,7 @@ static int run(int argc, char **argv)
     return render_command_run(NAME, argc, argv, 0);
 }
 
-static const cli_syntax *const render_syntaxes[] = {&render_syntax, &pathtrace_syntax, NULL};
+static const cli_syntax *const render_syntaxes[] = {&render_syntax, NULL};
 
 const cg_command cg_command_render = {
     NAME,
@@ -32,7 +31,7 @@ const cg_command cg_command_render = {
     "--output-depth, --floor, --scene, --stats) are refused, as are the ray\n"
     "tracer's options with another algorithm and the rasterizer's with it.\n"
     "'cg trace-render ...' is 'cg render --algorithm raytrace ...'.\n"
-    "--algorithm pathtrace takes the path tracer's options (listed second,\n"
+    "--algorithm pathtrace takes the path tracer's own options (listed in\n"
     "docs/pathtrace.md); its --tile and --sample-range parts go to cg merge.\n"
     "Frames that take longer than a second show their progress on stderr.\n",
     run,

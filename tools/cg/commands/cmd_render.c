@@ -18,7 +18,8 @@ const cg_command cg_command_render = {
     "render a mesh or scene file: z-buffer, painter's or ray tracing",
     "usage: cg render MESH -o OUT [options]\n"
     "       cg render SCENE.json -o OUT [options]\n"
-    "       cg render --scene spheres --algorithm raytrace -o OUT [options]\n\n"
+    "       cg render --scene spheres --algorithm raytrace -o OUT [options]\n"
+    "       cg render MESH --algorithm pathtrace --spp N -o OUT [path tracer options]\n\n"
     "Renders MESH (OBJ, PLY, OFF or STL, optionally gzip-compressed) and writes\n"
     "OUT in the format of its extension (.png, .ppm, .pgm).  A file with no faces\n"
     "is an error; a frame in which every face was culled gives a warning.\n"
@@ -30,6 +31,8 @@ const cg_command cg_command_render = {
     "--output-depth, --floor, --scene, --stats) are refused, as are the ray\n"
     "tracer's options with another algorithm and the rasterizer's with it.\n"
     "'cg trace-render ...' is 'cg render --algorithm raytrace ...'.\n"
+    "--algorithm pathtrace takes the path tracer's own options (listed in\n"
+    "docs/pathtrace.md); its --tile and --sample-range parts go to cg merge.\n"
     "Frames that take longer than a second show their progress on stderr.\n",
     run,
     render_syntaxes,

@@ -3,12 +3,15 @@
 #include "render_command.h"
 
 #include "cli.h"
+#include "pathtrace_command.h"
 #include "render_mesh.h"
 #include "render_request.h"
 #include "render_scene.h"
 
 int render_command_run(const char *command, int argc, char **argv, int trace_only)
 {
+    if (pathtrace_requested(argc, argv))
+        return pathtrace_command_run(command, argc, argv);
     render_request r;
     int status = render_request_parse(command, argc, argv, trace_only, &r);
     if (status != CLI_OK)

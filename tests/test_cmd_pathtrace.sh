@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# `cg render MESH --algorithm pathtrace` and `cg merge`: outputs, tiles and
+# sample ranges merged byte-identical to the whole render, bad input errors
+# that leave an existing output untouched.
+# usage: test_cmd_pathtrace.sh CG SOURCE_DIR BUILD_DIR
+set -u
+cg="$1"
+src="$2"
+failed=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mesh="$src/examples/teaching/cube.obj"
+common=(--algorithm pathtrace --size 24x16 --spp 6 --seed 5 --max-depth 4 --quiet)
+
+fail() { echo "FAIL: $*"; failed=1; }
+
+run() { "$cg" render "$mesh" "${common[@]}" "$@" 2>"$tmp/err" || fail "render $* exited non-zero: $(cat "$tmp/err")"; }
+
+# expect_error "TEXT" ARGS...: exit status 2 (usage) or 1, the text in one line.
+expect_error() {
+  local text="$1"
+  shift
+  echo keep >"$tmp/kept.png"
+  if "$cg" "$@" -o "$tmp/kept.png" 2>"$tmp/err"; then
+    fail "cg $* succeeded"
+  elif ! grep -q -- "$text" "$tmp/err"; then
+    fail "cg $*: expected '$text', got '$(cat "$tmp/err")'"
+  elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then
+    fail "cg $*: more than one line: $(cat "$tmp/err")"
+  fi
+  [ "$(cat "$tmp/kept.png")" = keep ] || fail "cg $* touched the existing output"
+}
+
+run -o "$tmp/whole.pfm"
+run -o "$tmp/whole.png"
+run -o "$tmp/whole.part"
+head -c 2 "$tmp/whole.pfm" | grep -q PF || fail "whole.pfm is not a PFM"
+[ "$(wc -c <"$tmp/whole.pfm")" -eq $((24 * 16 * 12 + 14)) ] || fail "whole.pfm has the wrong size"
+file "$tmp/whole.png" 2>/dev/null | grep -q "PNG image data, 24 x 16" \
+  || head -c 8 "$tmp/whole.png" | grep -q PNG || fail "whole.png is not a PNG"
+
+# Same bytes on 1 and 2 threads.
+run --threads 2 -o "$tmp/threads.pfm"
+cmp -s "$tmp/whole.pfm" "$tmp/threads.pfm" || fail "2 threads differ from 1"
+
+# Four tiles merged.
+run --tile 0,0,10,7 -o "$tmp/t1.part"
+run --tile 10,0,24,7 -o "$tmp/t2.part"
+run --tile 0,7,10,16 -o "$tmp/t3.part"
+run --tile 10,7,24,16 -o "$tmp/t4.part"
+"$cg" merge "$tmp"/t1.part "$tmp"/t2.part "$tmp"/t3.part "$tmp"/t4.part -o "$tmp/tiles.pfm" \
+  || fail "merge of tiles failed"
+cmp -s "$tmp/whole.pfm" "$tmp/tiles.pfm" || fail "merged tiles differ from the whole render"
+"$cg" merge "$tmp"/t4.part "$tmp"/t2.part "$tmp"/t3.part "$tmp"/t1.part -o "$tmp/tiles.png" \
+  || fail "merge of tiles to png failed"
+cmp -s "$tmp/whole.png" "$tmp/tiles.png" || fail "merged tiles (png) differ from the whole render"
+
+# Sample ranges merged, and a tile of a sample range.
+run --sample-range 0..2 -o "$tmp/r1.part"
+run --sample-range 2..6 -o "$tmp/r2.part"
+"$cg" merge "$tmp/r1.part" "$tmp/r2.part" -o "$tmp/ranges.pfm" || fail "merge of ranges failed"
+cmp -s "$tmp/whole.pfm" "$tmp/ranges.pfm" || fail "merged ranges differ from the whole render"
+"$cg" merge "$tmp/r1.part" "$tmp/r2.part" -o "$tmp/ranges.part" || fail "merge to a part failed"
+cmp -s "$tmp/whole.part" "$tmp/ranges.part" || fail "merged part differs from the whole part"
+
+# A different seed changes the picture.
+"$cg" render "$mesh" --algorithm pathtrace --size 24x16 --spp 6 --seed 6 --max-depth 4 --quiet \
+  -o "$tmp/seed.pfm" || fail "seed 6 render failed"
+cmp -s "$tmp/whole.pfm" "$tmp/seed.pfm" && fail "another seed gave the same picture"
+
+# A time budget stops early and still writes a picture; progress on stderr.
+"$cg" render "$mesh" --algorithm pathtrace --size 24x16 --spp 100000 --time 0.2 \
+  -o "$tmp/timed.png" 2>"$tmp/progress" || fail "--time render failed"
+grep -q "pathtrace: .* samples" "$tmp/progress" || fail "no progress on stderr"
+[ -s "$tmp/timed.png" ] || fail "--time wrote no picture"
+
+# Bad input.
+pt=(render "$mesh" --algorithm pathtrace --size 24x16 --spp 6 --quiet)
+expect_error "--spp" "${pt[@]}" --spp 0
+expect_error "--max-depth" "${pt[@]}" --max-depth 0
+expect_error "--tile" "${pt[@]}" --tile 0,0,30,5
+expect_error "--tile" "${pt[@]}" --tile 5,5,5,8
+expect_error "--tile" "${pt[@]}" --tile 1,2,3
+expect_error "--sample-range" "${pt[@]}" --sample-range 4..9
+expect_error "--sample-range" "${pt[@]}" --sample-range 3..3
+expect_error ".part" "${pt[@]}" --tile 0,0,4,4
+expect_error "--environment-color" "${pt[@]}" --environment-color 1,-1,1
+expect_error "--environment-color" "${pt[@]}" --environment-color 1,1
+expect_error "not supported" "${pt[@]}" --environment sky.hdr
+expect_error "--seed" "${pt[@]}" --seed -1
+expect_error "missing.obj" render "$tmp/missing.obj" --algorithm pathtrace --quiet
+expect_error "not a cg part file" merge "$tmp/whole.pfm"
+expect_error "samples" merge "$tmp/r1.part"
+cp "$tmp/r2.part" "$tmp/short.part"
+truncate -s -5 "$tmp/short.part"
+expect_error "truncated" merge "$tmp/r1.part" "$tmp/short.part"
+"$cg" render "$mesh" --algorithm pathtrace --size 24x16 --spp 6 --seed 9 --quiet \
+  --sample-range 2..6 -o "$tmp/r2seed.part" || fail "seed 9 part failed"
+expect_error "another render" merge "$tmp/r1.part" "$tmp/r2seed.part"
+expect_error "expected PARTS" merge
+
+[ "$failed" -eq 0 ] && echo "test_cmd_pathtrace: all passed"
+exit "$failed"

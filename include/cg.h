@@ -21,6 +21,7 @@
 #include "cg/render.h"
 #include "cg/scene.h"
 #include "cg/trace.h"
+#include "cg/pathtrace.h"
 #include "cg/trace_steps.h"
 
 #endif

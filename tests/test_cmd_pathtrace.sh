@@ -99,5 +99,17 @@ expect_error "truncated" merge "$tmp/r1.part" "$tmp/short.part"
 expect_error "another render" merge "$tmp/r1.part" "$tmp/r2seed.part"
 expect_error "expected PARTS" merge
 
+# Float outputs through the image library: an EXR (when cg has OpenEXR)
+# holds the render, and converting it to PNG with the same filmic curve
+# gives the bytes a direct PNG render gives (half floats round the same).
+run -o "$tmp/whole.png"
+if run -o "$tmp/whole.exr" 2>/dev/null; then
+  [ "$(head -c 4 "$tmp/whole.exr" | od -An -tx1 | tr -d ' ')" = 762f3101 ] \
+    || fail "whole.exr is not an OpenEXR file"
+  "$cg" convert "$tmp/whole.pfm" "$tmp/from-pfm.png" --tonemap filmic \
+    || fail "convert of the PFM failed"
+  cmp -s "$tmp/whole.png" "$tmp/from-pfm.png" || fail "PFM converted to PNG differs from the PNG render"
+fi
+
 [ "$failed" -eq 0 ] && echo "test_cmd_pathtrace: all passed"
 exit "$failed"

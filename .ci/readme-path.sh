@@ -19,8 +19,11 @@ if [ "${1:-}" = --fresh ]; then
   test_only=$(comm -13 <(packages deps/build*.txt) <(packages deps/test*.txt))
   installed=()
   for package in $test_only; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
-      && installed+=("$package")
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || continue
+    # A package others depend on (fonts-dejavu-core, which fontconfig pulls
+    # in with the build packages) is on a new machine anyway: keep it.
+    [ "$(apt-get -s remove "$package" 2>/dev/null | grep -c '^Remv')" -eq 1 ] || continue
+    installed+=("$package")
   done
   if [ ${#installed[@]} -gt 0 ]; then
     echo "readme-path: removing the test-only packages: ${installed[*]}"

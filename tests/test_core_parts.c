@@ -5,10 +5,12 @@
  * carving, its refusals, and its blocks. */
 #include "../src/core/arena.h"
 #include "../src/core/array.h"
+#include "../src/core/base64.h"
 #include "../src/core/worker_pool.h"
 #include "check.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -398,6 +400,40 @@ static void array_from_initial_buffer(void)
     CHECK(data == initial && capacity == 8);
 }
 
+/* Decodes text; 1 when it gives exactly want (a C string), else 0 or -1. */
+static int base64_gives(const char *text, int skip_whitespace, const char *want)
+{
+    unsigned char *out = NULL;
+    size_t size = 0;
+    int ok = core_base64_decode(text, strlen(text), skip_whitespace, &out, &size);
+    if (ok != 1)
+        return ok;
+    ok = size == strlen(want) && memcmp(out, want, size) == 0;
+    free(out);
+    return ok;
+}
+
+/* RFC 4648's test vectors, with and without padding, the URL-safe
+ * alphabet, wrapped text, and what is not base64. */
+static void base64_decoding(void)
+{
+    const char *plain[] = {"", "f", "fo", "foo", "foob", "fooba", "foobar"};
+    const char *padded[] = {"", "Zg==", "Zm8=", "Zm9v", "Zm9vYg==", "Zm9vYmE=", "Zm9vYmFy"};
+    const char *bare[] = {"", "Zg", "Zm8", "Zm9v", "Zm9vYg", "Zm9vYmE", "Zm9vYmFy"};
+    for (int i = 0; i < 7; i++) {
+        CHECK_MSG(base64_gives(padded[i], 0, plain[i]) == 1, "padded '%s'", padded[i]);
+        CHECK_MSG(base64_gives(bare[i], 0, plain[i]) == 1, "unpadded '%s'", bare[i]);
+    }
+    CHECK(base64_gives("-_8=", 0, "\xfb\xff") == 1);
+    CHECK(base64_gives("+/8=", 0, "\xfb\xff") == 1);
+    CHECK(base64_gives(" Zm9v\n YmFy\r\n", 1, "foobar") == 1);
+    CHECK(base64_gives("Zm9v YmFy", 0, "foobar") == 0); /* spaces only when asked */
+    CHECK(base64_gives("Zm9v*mFy", 1, "foobar") == 0);
+    CHECK(base64_gives("Zm9vY", 0, "foo") == 0);   /* a lone trailing character */
+    CHECK(base64_gives("Zg===", 0, "f") == 0);     /* three padding characters */
+    CHECK(base64_gives("Zg==Zg==", 0, "ff") == 0); /* padding in the middle */
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -411,5 +447,6 @@ int main(int argc, char **argv)
     CHECK_GROUP(arena_measure_then_carve);
     CHECK_GROUP(arena_refusals);
     CHECK_GROUP(arena_blocks);
+    CHECK_GROUP(base64_decoding);
     return check_finish();
 }

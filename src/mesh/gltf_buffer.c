@@ -3,59 +3,11 @@
  * from a file named by a relative URI beside the .gltf; each must hold at
  * least its byteLength bytes.  A buffer view is a checked slice of one. */
 #include "gltf_internal.h"
+#include "../core/base64.h"
 
 #include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-static int base64_value(unsigned char c)
-{
-    if (c >= 'A' && c <= 'Z')
-        return c - 'A';
-    if (c >= 'a' && c <= 'z')
-        return c - 'a' + 26;
-    if (c >= '0' && c <= '9')
-        return c - '0' + 52;
-    if (c == '+' || c == '-')
-        return 62;
-    if (c == '/' || c == '_')
-        return 63;
-    return -1;
-}
-
-int gltf_base64_decode(const char *text, size_t length, unsigned char **out, size_t *out_size)
-{
-    /* padding '=' only at the end; at most 2 */
-    size_t end = length;
-    while (end > 0 && text[end - 1] == '=' && length - end < 2)
-        end--;
-    unsigned char *bytes = malloc(end / 4 * 3 + 3);
-    if (!bytes)
-        return -1;
-    size_t n = 0;
-    uint32_t accumulator = 0;
-    int bits = 0;
-    for (size_t i = 0; i < end; i++) {
-        int v = base64_value((unsigned char)text[i]);
-        if (v < 0) {
-            free(bytes);
-            return 0;
-        }
-        accumulator = (accumulator << 6) | (uint32_t)v;
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            bytes[n++] = (unsigned char)(accumulator >> bits);
-        }
-    }
-    if (bits >= 6) { /* a lone trailing character carries no whole byte */
-        free(bytes);
-        return 0;
-    }
-    *out = bytes;
-    *out_size = n;
-    return 1;
-}
 
 /* Percent-decodes a relative URI into a path beside the .gltf (a new string);
  * NULL with *bad set on a malformed escape or a NUL. */
@@ -110,7 +62,7 @@ static cg_status load_uri(gltf_document *doc, const char *uri, const char *path,
             return cg_error_set(doc->err, CG_EFORMAT,
                                 "%s: %s: expected a base64 data: URI (data:...;base64,...)",
                                 doc->name, here);
-        int ok = gltf_base64_decode(comma + 1, strlen(comma + 1), bytes, size);
+        int ok = core_base64_decode(comma + 1, strlen(comma + 1), 0, bytes, size);
         if (ok < 0)
             return gltf_out_of_memory(doc);
         if (ok == 0)

@@ -118,9 +118,6 @@ cg_status gltf_out_of_memory(gltf_document *doc);
  * (relative to doc->directory). */
 cg_status gltf_load_buffers(gltf_document *doc);
 void gltf_free_buffers(gltf_document *doc);
-/* Decodes the base64 of a data: URI (the part after "base64,"); *out is
- * malloc'd.  0 on malformed text. */
-int gltf_base64_decode(const char *text, size_t length, unsigned char **out, size_t *out_size);
 
 /* A checked buffer view: its bytes and stride (0 when not given). */
 typedef struct gltf_view {

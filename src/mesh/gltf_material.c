@@ -10,6 +10,7 @@
  * Image bytes are not decoded here: a file image keeps its path, an
  * embedded one (data: URI or buffer view) its bytes. */
 #include "gltf_internal.h"
+#include "../core/base64.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -140,7 +141,7 @@ static cg_status read_image(gltf_document *doc, size_t index, cg_mesh_texture_re
             return cg_error_set(doc->err, CG_EFORMAT,
                                 "%s: %s.uri: expected a base64 data: URI (data:...;base64,...)",
                                 doc->name, path);
-        int ok = gltf_base64_decode(comma + 1, strlen(comma + 1), &t->image_bytes,
+        int ok = core_base64_decode(comma + 1, strlen(comma + 1), 0, &t->image_bytes,
                                     &t->image_byte_count);
         if (ok < 0)
             return gltf_out_of_memory(doc);

@@ -8,6 +8,7 @@
  * rectangle.  An element with both gets their product as one alpha image,
  * the mask of its layer (cg_rasterizer_composite_layer). */
 #include "internal.h"
+#include "../core/base64.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -355,21 +356,6 @@ cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
 
 /* ---- images ------------------------------------------------------------------- */
 
-static int base64_value(int c)
-{
-    if (c >= 'A' && c <= 'Z')
-        return c - 'A';
-    if (c >= 'a' && c <= 'z')
-        return c - 'a' + 26;
-    if (c >= '0' && c <= '9')
-        return c - '0' + 52;
-    if (c == '+' || c == '-')
-        return 62;
-    if (c == '/' || c == '_')
-        return 63;
-    return -1;
-}
-
 /* The bytes of a base64 data URI's payload (malloc'ed), or NULL. */
 static unsigned char *data_uri(const char *href, size_t *size)
 {
@@ -385,36 +371,9 @@ static unsigned char *data_uri(const char *href, size_t *size)
         base64 |= strncmp(href + i, ";base64", 7) == 0;
     if (!base64)
         return NULL;
-    const char *s = comma + 1;
-    unsigned char *out = malloc(strlen(s) / 4 * 3 + 3);
-    if (!out)
+    unsigned char *out = NULL;
+    if (core_base64_decode(comma + 1, strlen(comma + 1), 1, &out, size) != 1)
         return NULL;
-    size_t n = 0;
-    unsigned bits = 0;
-    int count = 0;
-    for (; *s && *s != '='; s++) {
-        int v = base64_value((unsigned char)*s);
-        if (v < 0) {
-            if (isspace((unsigned char)*s))
-                continue;
-            break;
-        }
-        bits = bits << 6 | (unsigned)v;
-        if (++count == 4) {
-            out[n++] = (unsigned char)(bits >> 16);
-            out[n++] = (unsigned char)(bits >> 8);
-            out[n++] = (unsigned char)bits;
-            bits = 0;
-            count = 0;
-        }
-    }
-    if (count == 2) {
-        out[n++] = (unsigned char)(bits >> 4);
-    } else if (count == 3) {
-        out[n++] = (unsigned char)(bits >> 10);
-        out[n++] = (unsigned char)(bits >> 2);
-    }
-    *size = n;
     return out;
 }
 

@@ -86,7 +86,8 @@ expect_error "--sample-range" "${pt[@]}" --sample-range 3..3
 expect_error ".part" "${pt[@]}" --tile 0,0,4,4
 expect_error "--environment-color" "${pt[@]}" --environment-color 1,-1,1
 expect_error "--environment-color" "${pt[@]}" --environment-color 1,1
-expect_error "not supported" "${pt[@]}" --environment sky.hdr
+expect_error "missing-sky.hdr" "${pt[@]}" --environment "$tmp/missing-sky.hdr"
+expect_error "give one sky" "${pt[@]}" --environment "$tmp/sky1.pfm" --environment-color 1,1,1
 expect_error "--seed" "${pt[@]}" --seed -1
 expect_error "missing.obj" render "$tmp/missing.obj" --algorithm pathtrace --quiet
 expect_error "not a cg part file" merge "$tmp/whole.pfm"
@@ -109,6 +110,25 @@ if run -o "$tmp/whole.exr" 2>/dev/null; then
   "$cg" convert "$tmp/whole.pfm" "$tmp/from-pfm.png" --tonemap filmic \
     || fail "convert of the PFM failed"
   cmp -s "$tmp/whole.png" "$tmp/from-pfm.png" || fail "PFM converted to PNG differs from the PNG render"
+fi
+
+# Environment maps: a one-pixel file is the uniform sky of its colour, to
+# the byte; a sky that is bright only overhead lights the mesh differently.
+pfm() { # FILE WIDTH HEIGHT R G B: a PFM of one colour (little-endian floats)
+  python3 -c 'import struct,sys; f,w,h,r,g,b=sys.argv[1:]; w,h=int(w),int(h)
+open(f,"wb").write(b"PF\n%d %d\n-1.0\n" % (w,h) + struct.pack("<3f",float(r),float(g),float(b))*(w*h))' "$@"
+}
+if command -v python3 >/dev/null; then
+  pfm "$tmp/sky1.pfm" 1 1 0.5 0.25 1
+  run --environment "$tmp/sky1.pfm" -o "$tmp/sky-map.pfm"
+  run --environment-color 0.5,0.25,1 -o "$tmp/sky-color.pfm"
+  cmp -s "$tmp/sky-map.pfm" "$tmp/sky-color.pfm" || fail "a one-pixel sky differs from --environment-color"
+  # 8 x 4 map, top row bright, the rest black
+  python3 -c 'import struct,sys; rows=[(4.0,4.0,4.0)]+[(0.0,0.0,0.0)]*3
+data=b"".join(struct.pack("<3f",*rows[3-y])*8 for y in range(4))
+open(sys.argv[1],"wb").write(b"PF\n8 4\n-1.0\n"+data)' "$tmp/sky-top.pfm"
+  run --environment "$tmp/sky-top.pfm" -o "$tmp/sky-top-render.pfm"
+  cmp -s "$tmp/sky-top-render.pfm" "$tmp/sky-color.pfm" && fail "a map with a bright top renders as a uniform sky"
 fi
 
 [ "$failed" -eq 0 ] && echo "test_cmd_pathtrace: all passed"

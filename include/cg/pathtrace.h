@@ -45,14 +45,21 @@ typedef struct cg_path_options {
     int threads;         /* 1 to 256 */
     uint64_t seed;       /* selects the sample pattern */
     cg_vec3 environment; /* uniform environment radiance, >= 0 */
-    int x0, y0, x1, y1;  /* the tile [x0, x1) x [y0, y1); all 0: the whole image */
+    /* NULL, or an equirectangular RGBAF map of the sky that replaces the
+     * uniform environment: direction d (y up) looks up u = 1/2 +
+     * atan2(d.x, -d.z) / 2 pi, v = acos(d.y) / pi, bilinearly, wrapping in u.
+     * Rays see it when they leave the scene (it is not sampled directly). */
+    const cg_image *environment_map;
+    double environment_intensity; /* multiplies the map, >= 0 (default 1) */
+    int x0, y0, x1, y1;           /* the tile [x0, x1) x [y0, y1); all 0: the whole image */
     /* Called after each finished row of the tile (one call at a time); may
      * be NULL. */
     void (*progress)(void *user, int done, int total);
     void *progress_user;
 } cg_path_options;
 
-/* spp 16, max_depth 8, one thread, seed 0, black environment, whole image. */
+/* spp 16, max_depth 8, one thread, seed 0, black environment, no map
+ * (intensity 1), whole image. */
 cg_path_options cg_path_options_default(void);
 
 /* Renders samples [sample_begin, sample_end) of every pixel of the tile of a

@@ -16,6 +16,7 @@ cg_path_options cg_path_options_default(void)
     o.spp = 16;
     o.max_depth = 8;
     o.threads = 1;
+    o.environment_intensity = 1;
     return o;
 }
 
@@ -88,6 +89,11 @@ static cg_status check_options(const cg_path_options *o, int width, int height)
         return CG_EINVAL;
     cg_vec3 e = o->environment;
     if (!(e.x >= 0 && e.y >= 0 && e.z >= 0) || !isfinite(e.x + e.y + e.z))
+        return CG_EINVAL;
+    const cg_image *map = o->environment_map;
+    if (map && (map->format != CG_PIXEL_RGBAF || map->width < 1 || map->height < 1))
+        return CG_EINVAL;
+    if (!(o->environment_intensity >= 0) || !isfinite(o->environment_intensity))
         return CG_EINVAL;
     int whole = !o->x0 && !o->y0 && !o->x1 && !o->y1;
     if (!whole

@@ -153,6 +153,34 @@ static cg_vec3 glass_direction(cg_vec3 d, cg_vec3 n, int entering, double ior, d
         cg_vec3_add(cg_vec3_scale(d, eta), cg_vec3_scale(n, eta * cos_i - cos_t)));
 }
 
+/* The sky seen along unit direction d: the uniform environment, or the
+ * equirectangular map's bilinear value there (u wraps, v clamps). */
+static cg_vec3 environment_radiance(const cg_path_options *options, cg_vec3 d)
+{
+    const cg_image *map = options->environment_map;
+    if (!map)
+        return options->environment;
+    if (map->width == 1 && map->height == 1) { /* a uniform sky, exactly */
+        cg_rgbaf c = cg_image_get(map, 0, 0);
+        return cg_vec3_scale(cg_vec3_make(c.r, c.g, c.b), options->environment_intensity);
+    }
+    double y = d.y < -1 ? -1 : (d.y > 1 ? 1 : d.y);
+    double u = 0.5 + atan2(d.x, -d.z) / (2 * M_PI), v = acos(y) / M_PI;
+    double fx = u * map->width - 0.5, fy = v * map->height - 0.5;
+    int x0 = (int)floor(fx), y0 = (int)floor(fy);
+    double tx = fx - x0, ty = fy - y0;
+    cg_vec3 sum = cg_vec3_make(0, 0, 0);
+    for (int k = 0; k < 4; k++) {
+        int x = x0 + (k & 1), row = y0 + (k >> 1);
+        x = ((x % map->width) + map->width) % map->width;
+        row = row < 0 ? 0 : (row >= map->height ? map->height - 1 : row);
+        double w = ((k & 1) ? tx : 1 - tx) * ((k >> 1) ? ty : 1 - ty);
+        cg_rgbaf c = cg_image_get(map, x, row);
+        sum = cg_vec3_add(sum, cg_vec3_scale(cg_vec3_make(c.r, c.g, c.b), w));
+    }
+    return cg_vec3_scale(sum, options->environment_intensity);
+}
+
 cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *options, cg_vec3 origin,
                       cg_vec3 direction, path_sampler *rng)
 {
@@ -160,7 +188,7 @@ cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *option
     for (int depth = 0;; depth++) {
         trace_hit hit;
         if (!trace_intersect(scene, origin, direction, 0, INFINITY, &hit))
-            return cg_vec3_add(sum, cg_vec3_mul(weight, options->environment));
+            return cg_vec3_add(sum, cg_vec3_mul(weight, environment_radiance(options, direction)));
         if (depth >= options->max_depth)
             return sum;
         path_surface s = surface_of(&scene->objects[hit.object].material.surface);

@@ -6,6 +6,7 @@
 #include "cli.h"
 #include "pathtrace_output.h"
 #include "render_scene.h"
+#include "cg/image_float.h"
 #include "cg/pathtrace.h"
 
 #include <stdio.h>
@@ -60,7 +61,8 @@ static const cli_option pathtrace_options[] = {
      .kind = CLI_STRING,
      .offset = offsetof(pathtrace_args, environment),
      .value_name = "FILE",
-     .help = "environment map (not available in this build)"},
+     .help = "equirectangular sky (.hdr, .exr, .pfm; 8-bit files are sRGB), replaces "
+             "--environment-color; a one-pixel file is a uniform sky"},
     {.name = "--tile",
      .kind = CLI_STRING,
      .offset = offsetof(pathtrace_args, tile),
@@ -202,6 +204,20 @@ static int render_passes(const char *command, cg_trace_scene *scene, const cg_ca
     return CLI_OK;
 }
 
+/* The environment map as linear-light floats: float files as they are,
+ * 8-bit ones decoded from sRGB. */
+static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
+{
+    cg_status s = cg_image_load(path, sky, err);
+    if (s != CG_OK || (*sky)->format == CG_PIXEL_RGBAF)
+        return s;
+    cg_image *linear = NULL;
+    s = cg_image_decode_srgb(*sky, &linear);
+    cg_image_free(*sky);
+    *sky = linear;
+    return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
+}
+
 static int render(const char *command, const char *input, pathtrace_args *a)
 {
     int tile[4] = {0, 0, a->size.width, a->size.height}, range[2] = {0, a->spp};
@@ -220,7 +236,13 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     cg_camera camera;
     if (build_scene(input, &scene, &camera, (double)a->size.width / a->size.height, &err) != CG_OK)
         return cli_fail("%s: %s", command, err.message);
+    cg_image *sky = NULL;
+    if (a->environment && load_sky(a->environment, &sky, &err) != CG_OK) {
+        cg_trace_scene_free(scene);
+        return cli_fail("%s: --environment: %s", command, err.message);
+    }
     cg_path_options o = cg_path_options_default();
+    o.environment_map = sky;
     o.spp = a->spp;
     o.max_depth = a->max_depth;
     o.threads = a->threads;
@@ -249,6 +271,7 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     if (status == CLI_OK)
         status = pathtrace_write(command, &part, a->output, a->exposure);
     free(part.sums);
+    cg_image_free(sky);
     cg_trace_scene_free(scene);
     return status;
 }
@@ -271,10 +294,8 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
         return cli_usage_error(command, "expected -o OUT");
     if (a.env_given && !(a.env.x >= 0 && a.env.y >= 0 && a.env.z >= 0))
         return cli_usage_error(command, "--environment-color: expected R,G,B >= 0");
-    if (a.environment)
-        return cli_usage_error(command,
-                               "--environment: environment maps are not supported yet; use "
-                               "--environment-color R,G,B");
+    if (a.environment && a.env_given)
+        return cli_usage_error(command, "--environment and --environment-color: give one sky");
     if (render_scene_is_scene(input[0]))
         return cli_usage_error(command,
                                "--algorithm pathtrace renders MESH files; scene files are not "

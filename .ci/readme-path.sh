@@ -49,7 +49,9 @@ tail -5 "$work/test.log"
 expected="$work/expected" registered="$work/registered"
 {
   for file in tests/test_*.c tests/test_*.sh; do basename "${file%.*}"; done
-  sed -n 's/.*add_test(NAME \([A-Za-z0-9_]*\).*/\1/p' tests/*.cmake
+  # (a name built from a variable, as test_${name} in a loop, is not read here;
+  # the skip check below still catches such a test when its peer is missing)
+  sed -n 's/.*add_test(NAME \([A-Za-z0-9_]*\)[ )].*/\1/p' tests/*.cmake
   for file in tests/fuzz/fuzz_*.c; do
     name=$(basename "${file%.c}")
     [ -d "tests/fuzz/corpus/${name#fuzz_}" ] && echo "test_fuzz_replay_${name#fuzz_}"

@@ -98,6 +98,8 @@ expect_error "truncated" merge "$tmp/r1.part" "$tmp/short.part"
 "$cg" render "$mesh" --algorithm pathtrace --size 24x16 --spp 6 --seed 9 --quiet \
   --sample-range 2..6 -o "$tmp/r2seed.part" || fail "seed 9 part failed"
 expect_error "another render" merge "$tmp/r1.part" "$tmp/r2seed.part"
+run --sample-range 2..6 --environment-color 0.5,0.5,0.5 -o "$tmp/r2sky.part"
+expect_error "another render" merge "$tmp/r1.part" "$tmp/r2sky.part"
 expect_error "expected PARTS" merge
 
 # Float outputs through the image library: an EXR (when cg has OpenEXR)

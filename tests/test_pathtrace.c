@@ -330,7 +330,7 @@ static void parts(void)
     o.sample_begin = 2;
     o.sample_end = 6;
     cg_path_render_sums(scene, &cam, W, H, &o, b);
-    cg_path_part pa = {W, H, 0, 0, W, H, 0, 2, 6, 8, 3, a}, pb = pa;
+    cg_path_part pa = {W, H, 0, 0, W, H, 0, 2, 6, 8, 3, 77, a}, pb = pa;
     pb.sample_begin = 2;
     pb.sample_end = 6;
     pb.sums = b;
@@ -348,6 +348,11 @@ static void parts(void)
                  "missing samples refused: %s", err.message);
     loaded[1].seed = 4;
     CHECK_REPORT(cg_path_part_merge(loaded, 2, &merged, &err) == CG_EINVAL, "another seed refused");
+    loaded[1].seed = loaded[0].seed;
+    loaded[1].render_key = 78;
+    CHECK_REPORT(cg_path_part_merge(loaded, 2, &merged, &err) == CG_EINVAL,
+                 "another render key refused");
+    CHECK_REPORT(loaded[0].render_key == 77, "the render key survives save and load");
     free(loaded[0].sums);
     free(loaded[1].sums);
     FILE *f = fopen("pathtrace_a.part", "r+b");

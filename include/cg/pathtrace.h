@@ -89,6 +89,9 @@ cg_status cg_path_render(cg_trace_scene *scene, const cg_camera *camera,
 typedef struct cg_path_part {
     uint32_t width, height, x0, y0, x1, y1, sample_begin, sample_end, spp, max_depth;
     uint64_t seed;
+    /* The caller's digest of everything else the picture depends on (mesh or
+     * scene, camera, sky): parts merge only when their keys are equal. */
+    uint64_t render_key;
     uint64_t *sums; /* 3 per tile pixel */
 } cg_path_part;
 
@@ -98,8 +101,8 @@ cg_status cg_path_part_save(const cg_path_part *part, const char *path, cg_error
  * message for anything but a well-formed part. */
 cg_status cg_path_part_load(const char *path, cg_path_part *out, cg_error *err);
 /* Adds the parts into one whole-image part (sums of width x height pixels,
- * malloc'ed): every part must have the same width, height, spp, max_depth
- * and seed, and every pixel must receive exactly spp samples in all. */
+ * malloc'ed): every part must have the same width, height, spp, max_depth,
+ * seed and render_key, and every pixel must receive exactly spp samples in all. */
 cg_status cg_path_part_merge(const cg_path_part *parts, size_t count, cg_path_part *out,
                              cg_error *err);
 

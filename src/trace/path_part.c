@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char magic[8] = {'C', 'G', 'P', 'A', 'R', 'T', '1', '\n'};
+static const char magic[8] = {'C', 'G', 'P', 'A', 'R', 'T', '2', '\n'};
 
 static void put(unsigned char *p, uint64_t v, int bytes)
 {
@@ -34,7 +34,7 @@ static size_t part_values(const cg_path_part *p)
     return (size_t)(p->x1 - p->x0) * (size_t)(p->y1 - p->y0) * 3;
 }
 
-enum { HEADER = 8 + 10 * 4 + 8 };
+enum { HEADER = 8 + 10 * 4 + 8 + 8 };
 
 cg_status cg_path_part_save(const cg_path_part *part, const char *path, cg_error *err)
 {
@@ -59,6 +59,7 @@ cg_status cg_path_part_save(const cg_path_part *part, const char *path, cg_error
     for (int i = 0; i < 10; i++)
         put(h + 8 + 4 * i, fields[i], 4);
     put(h + 48, part->seed, 8);
+    put(h + 56, part->render_key, 8);
     int ok = fwrite(h, 1, HEADER, f) == HEADER;
     size_t n = part_values(part);
     for (size_t i = 0; i < n && ok; i++) {
@@ -97,6 +98,7 @@ cg_status cg_path_part_load(const char *path, cg_path_part *out, cg_error *err)
     p.width = v[0], p.height = v[1], p.x0 = v[2], p.y0 = v[3], p.x1 = v[4], p.y1 = v[5];
     p.sample_begin = v[6], p.sample_end = v[7], p.spp = v[8], p.max_depth = v[9];
     p.seed = get(h + 48, 8);
+    p.render_key = get(h + 56, 8);
     if (!part_valid(&p)) {
         fclose(f);
         return cg_error_set(err, CG_EFORMAT, "%s: the part's header is inconsistent", path);
@@ -123,7 +125,7 @@ cg_status cg_path_part_load(const char *path, cg_path_part *out, cg_error *err)
 static int same_render(const cg_path_part *a, const cg_path_part *b)
 {
     return a->width == b->width && a->height == b->height && a->spp == b->spp
-           && a->max_depth == b->max_depth && a->seed == b->seed;
+           && a->max_depth == b->max_depth && a->seed == b->seed && a->render_key == b->render_key;
 }
 
 cg_status cg_path_part_merge(const cg_path_part *parts, size_t count, cg_path_part *out,
@@ -134,7 +136,8 @@ cg_status cg_path_part_merge(const cg_path_part *parts, size_t count, cg_path_pa
     for (size_t i = 0; i < count; i++)
         if (!part_valid(&parts[i]) || !same_render(&parts[0], &parts[i]))
             return cg_error_set(err, CG_EINVAL,
-                                "merge: part %zu is of another render (size, spp, depth or seed)",
+                                "merge: part %zu is of another render (size, spp, depth, seed, "
+                                "scene or sky)",
                                 i + 1);
     cg_path_part m = parts[0];
     m.x0 = m.y0 = 0;

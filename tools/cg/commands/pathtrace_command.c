@@ -218,6 +218,46 @@ static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
     return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
 }
 
+/* FNV-1a over n bytes, continuing from hash. */
+static uint64_t digest(uint64_t hash, const void *bytes, size_t n)
+{
+    const unsigned char *p = bytes;
+    for (size_t i = 0; i < n; i++)
+        hash = (hash ^ p[i]) * 0x100000001b3ull;
+    return hash;
+}
+
+/* What a part's picture depends on beyond its header: the mesh file's
+ * bytes, the image size (the camera is framed from both), the sky colour
+ * and the environment map, so that cg merge refuses parts of another render. */
+static uint64_t render_key(const char *input, const pathtrace_args *a, const cg_image *sky)
+{
+    uint64_t hash = 0xcbf29ce484222325ull;
+    FILE *f = fopen(input, "rb");
+    if (f) {
+        unsigned char block[65536];
+        size_t n;
+        while ((n = fread(block, 1, sizeof block, f)) > 0)
+            hash = digest(hash, block, n);
+        fclose(f);
+    }
+    int size[2] = {a->size.width, a->size.height};
+    hash = digest(hash, size, sizeof size);
+    double sky_color[3] = {a->env.x, a->env.y, a->env.z};
+    hash = digest(hash, sky_color, sizeof sky_color);
+    if (sky) {
+        int map_size[2] = {sky->width, sky->height};
+        hash = digest(hash, map_size, sizeof map_size);
+        for (int y = 0; y < sky->height; y++)
+            for (int x = 0; x < sky->width; x++) {
+                cg_rgbaf c = cg_image_get(sky, x, y);
+                float rgb[3] = {c.r, c.g, c.b};
+                hash = digest(hash, rgb, sizeof rgb);
+            }
+    }
+    return hash;
+}
+
 static int render(const char *command, const char *input, pathtrace_args *a)
 {
     int tile[4] = {0, 0, a->size.width, a->size.height}, range[2] = {0, a->spp};
@@ -262,6 +302,7 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                          (uint32_t)a->spp,
                          (uint32_t)a->max_depth,
                          o.seed,
+                         render_key(input, a, sky),
                          NULL};
     part.sums = calloc((size_t)(tile[2] - tile[0]) * (size_t)(tile[3] - tile[1]) * 3, 8);
     int status = part.sums ? render_passes(command, scene, &camera, a, &o, &part)

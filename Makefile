@@ -15,6 +15,7 @@ deps:
 
 test-deps:
 	@scripts/install-deps.sh build test
+	@scripts/install-npm-deps.sh
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)

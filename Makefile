@@ -44,6 +44,7 @@ test: test-deps
 BENCHES ?=
 bench:
 	@scripts/install-deps.sh build bench
+	@scripts/install-npm-deps.sh
 	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 	bench/run.sh $(BUILD) $(BENCHES)

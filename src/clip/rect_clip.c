@@ -122,12 +122,13 @@ static cg_status cut_rings(const cg_polygon_set64 *paths, cg_rect64 rect, cg_pol
     point_array one = {0}, two = {0};
     cg_status st = CG_OK;
     for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
-        const cg_point64 *p = paths->points + paths->ring_start[r];
         size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
+        if (n < 3) /* also: no points at all, where paths->points may be NULL */
+            continue;
+        const cg_point64 *p = paths->points + paths->ring_start[r];
         cg_rect64 b;
         ring_bounds(p, n, &b);
-        if (n < 3 || b.xmax < rect.xmin || b.xmin > rect.xmax || b.ymax < rect.ymin
-            || b.ymin > rect.ymax)
+        if (b.xmax < rect.xmin || b.xmin > rect.xmax || b.ymax < rect.ymin || b.ymin > rect.ymax)
             continue; /* it winds around no point of the rectangle */
         if (b.xmin >= rect.xmin && b.xmax <= rect.xmax && b.ymin >= rect.ymin
             && b.ymax <= rect.ymax) {
@@ -267,9 +268,11 @@ cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
         return st;
     cg_polygon_set64 own = {0};
     pieces out = {&own, {0}};
-    for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++)
-        st = clip_polyline(&out, paths->points + paths->ring_start[r],
-                           paths->ring_start[r + 1] - paths->ring_start[r], rect);
+    for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
+        size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
+        if (n > 0) /* paths->points may be NULL when no path has points */
+            st = clip_polyline(&out, paths->points + paths->ring_start[r], n, rect);
+    }
     core_array_free(&out.open);
     if (st == CG_OK) {
         cg_polygon_set64_clear(result);

@@ -4,6 +4,7 @@
  * PPM drops; a PGM of a grey image as well); a failure must come with a
  * message naming the input. */
 #include "cg/image.h"
+#include "fuzz_image_checks.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,15 +33,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     cg_image *image = NULL;
     cg_error err;
     cg_status status = cg_image_read_memory(data, size, "fuzz", &image, &err);
-    if (status != CG_OK) {
-        if (image || err.status != status || strncmp(err.message, "fuzz", 4) != 0)
-            abort();
+    if (!fuzz_image_loaded(status, image, &err))
         return 0;
-    }
-    if (!image || image->width < 1 || image->height < 1 || image->width > CG_IMAGE_MAX_SIDE
-        || image->height > CG_IMAGE_MAX_SIDE
-        || (size_t)image->width * (size_t)image->height > CG_IMAGE_MAX_PIXELS)
-        abort();
     /* encode as binary PPM by hand and read it back: the same colours */
     size_t pixels = (size_t)image->width * (size_t)image->height;
     char header[64];

@@ -6,6 +6,7 @@
  * claims more than 4 million pixels are skipped: ZIP or DWA can fill them
  * from a few kilobytes, so they only time the decompressor. */
 #include "cg/image_float.h"
+#include "fuzz_image_checks.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -50,15 +51,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
     cg_image *image = NULL;
     cg_error err;
     cg_status status = cg_image_load_memory(data, size, "fuzz", &image, &err);
-    if (status != CG_OK) {
-        if (image || err.status != status || strncmp(err.message, "fuzz", 4) != 0)
-            abort();
+    if (!fuzz_image_loaded(status, image, &err))
         return 0;
-    }
-    if (!image || image->width < 1 || image->height < 1 || image->width > CG_IMAGE_MAX_SIDE
-        || image->height > CG_IMAGE_MAX_SIDE
-        || (size_t)image->width * (size_t)image->height > CG_IMAGE_MAX_PIXELS)
-        abort();
     if (image->format != CG_PIXEL_RGBAF) { /* an 8-bit file: fuzz_image's business */
         cg_image_free(image);
         return 0;

@@ -78,6 +78,12 @@ static void render_rows(void *context, int worker)
     }
 }
 
+/* A tile of all zeros stands for the whole image. */
+static int whole_image(const cg_path_options *o)
+{
+    return !o->x0 && !o->y0 && !o->x1 && !o->y1;
+}
+
 static cg_status check_options(const cg_path_options *o, int width, int height)
 {
     if (width <= 0 || height <= 0 || o->spp < 1 || o->max_depth < 1 || o->threads < 1)
@@ -95,8 +101,7 @@ static cg_status check_options(const cg_path_options *o, int width, int height)
         return CG_EINVAL;
     if (!(o->environment_intensity >= 0) || !isfinite(o->environment_intensity))
         return CG_EINVAL;
-    int whole = !o->x0 && !o->y0 && !o->x1 && !o->y1;
-    if (!whole
+    if (!whole_image(o)
         && (o->x0 < 0 || o->y0 < 0 || o->x1 <= o->x0 || o->y1 <= o->y0 || o->x1 > width
             || o->y1 > height))
         return CG_EINVAL;
@@ -120,7 +125,7 @@ cg_status cg_path_render_sums(cg_trace_scene *scene, const cg_camera *camera, in
     j.options = options;
     j.width = width;
     j.height = height;
-    int whole = !options->x0 && !options->y0 && !options->x1 && !options->y1;
+    int whole = whole_image(options);
     j.x0 = whole ? 0 : options->x0;
     j.y0 = whole ? 0 : options->y0;
     j.x1 = whole ? width : options->x1;

@@ -14,6 +14,14 @@ cg_status clip_polygon_set_reserve(cg_polygon_set *set, size_t points, size_t ri
 cg_status clip_polygon_set64_reserve(cg_polygon_set64 *set, size_t points, size_t rings,
                                      size_t polygons);
 
+/* The first point of ring r of set.  A set whose rings hold no point may
+ * have no point array at all (points == NULL), and NULL + 0 is undefined
+ * in C: the offset is taken only when there is an array. */
+static inline const cg_point64 *clip_ring_points(const cg_polygon_set64 *set, size_t r)
+{
+    return set->points ? set->points + set->ring_start[r] : set->points;
+}
+
 /* Twice the signed area of the ring p[0..n) (counter-clockwise positive),
  * exact (0 below 3 points). */
 clip_i128 clip_ring_twice_area(const cg_point64 *p, size_t n);

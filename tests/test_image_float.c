@@ -261,6 +261,9 @@ static void test_hdr_bad(void)
     expect_bad("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\x88", 27, CG_EFORMAT, "truncated");
     expect_bad("#?RADIANCE\n\n-Y 100000 +X 100000\n", 33, CG_ERANGE, "over cg's limit");
     expect_bad("#?RADIANCE\n\n-Y 0 +X 5\n", 22, CG_EFORMAT, "zero width");
+    /* a few bytes claiming 12 x 12,996,627 pixels: refused before allocating */
+    expect_bad("#?RADIANCE\n\n-Y 12996627 +X 12\n\x02\x02\x00\x0c", 34, CG_EFORMAT,
+               "need at least");
 }
 
 /* The filmic curve of cg/image_float.h, in double. */

@@ -110,6 +110,19 @@ cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, 
     cg_status status = read_header(&r, &width, &height, err);
     if (status != CG_OK)
         return status;
+    /* An image over a million pixels is allocated only when the data can
+     * hold it: a scanline takes at least 4 bytes a pixel flat, or run-length
+     * encoded its 4-byte start and two bytes per 127 pixels of each
+     * component.  So a few bytes claiming a huge image are refused before
+     * any allocation, while the errors of small files still name the exact
+     * defect the decoding meets. */
+    int rle = width >= 8 && width < 32768;
+    size_t row_least = rle ? 4 + 8 * ((width + 126) / 127) : 4 * (size_t)width;
+    if ((double)width * (double)height > 1 << 20 && (size - r.at) / row_least < height)
+        return cg_error_set(err, CG_EFORMAT,
+                            "%s: truncated HDR data: %lu rows of %lu pixels need at least %zu "
+                            "bytes, the file has %zu",
+                            name, height, width, row_least * height, size - r.at);
     unsigned char *scan = malloc((size_t)width * 4);
     if (!scan
         || (status = cg_image_create(out, (int)width, (int)height, CG_PIXEL_RGBAF)) != CG_OK) {
@@ -119,8 +132,7 @@ cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, 
     }
     for (unsigned long y = 0; y < height && status == CG_OK; y++) {
         const unsigned char *p = bytes + r.at;
-        if (width >= 8 && width < 32768 && size - r.at >= 4 && p[0] == 2 && p[1] == 2
-            && !(p[2] & 0x80)) {
+        if (rle && size - r.at >= 4 && p[0] == 2 && p[1] == 2 && !(p[2] & 0x80)) {
             if (((unsigned long)p[2] << 8 | p[3]) != width)
                 status = cg_error_set(err, CG_EFORMAT, "%s: HDR scanline width mismatch", name);
             else {

@@ -131,6 +131,19 @@ data=b"".join(struct.pack("<3f",*rows[3-y])*8 for y in range(4))
 open(sys.argv[1],"wb").write(b"PF\n8 4\n-1.0\n"+data)' "$tmp/sky-top.pfm"
   run --environment "$tmp/sky-top.pfm" -o "$tmp/sky-top-render.pfm"
   cmp -s "$tmp/sky-top-render.pfm" "$tmp/sky-color.pfm" && fail "a map with a bright top renders as a uniform sky"
+  # --environment-intensity scales the map: a 0.25,0.125,0.5 pixel at 2 is
+  # the 0.5,0.25,1 sky, to the byte (powers of two scale exactly)
+  pfm "$tmp/sky-half.pfm" 1 1 0.25 0.125 0.5
+  run --environment "$tmp/sky-half.pfm" --environment-intensity 2 -o "$tmp/sky-scaled.pfm"
+  cmp -s "$tmp/sky-scaled.pfm" "$tmp/sky-color.pfm" || fail "--environment-intensity 2 does not double the map"
+  expect_error "scales an --environment map" "${pt[@]}" --environment-intensity 2
+  expect_error "--environment-intensity" "${pt[@]}" --environment "$tmp/sky1.pfm" --environment-intensity -1
+  # parts under another intensity belong to another render
+  run --sample-range 0..2 --environment "$tmp/sky1.pfm" -o "$tmp/i1.part"
+  run --sample-range 2..6 --environment "$tmp/sky1.pfm" --environment-intensity 3 -o "$tmp/i3.part"
+  expect_error "another render" merge "$tmp/i1.part" "$tmp/i3.part"
+  run --sample-range 2..6 --environment "$tmp/sky1.pfm" -o "$tmp/i1b.part"
+  "$cg" merge "$tmp/i1.part" "$tmp/i1b.part" -o "$tmp/i1.pfm" || fail "merge of parts under one sky failed"
 fi
 
 [ "$failed" -eq 0 ] && echo "test_cmd_pathtrace: all passed"

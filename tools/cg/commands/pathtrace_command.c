@@ -16,9 +16,9 @@
 typedef struct pathtrace_args {
     const char *output, *algorithm, *tile, *range, *environment;
     cli_size size;
-    int spp, max_depth, seed, threads, quiet, env_given;
+    int spp, max_depth, seed, threads, quiet, env_given, env_intensity_given;
     cg_vec3 env;
-    double time, exposure;
+    double time, exposure, env_intensity;
 } pathtrace_args;
 
 static const cli_option pathtrace_options[] = {
@@ -63,6 +63,15 @@ static const cli_option pathtrace_options[] = {
      .value_name = "FILE",
      .help = "equirectangular sky (.hdr, .exr, .pfm; 8-bit files are sRGB), replaces "
              "--environment-color; a one-pixel file is a uniform sky"},
+    {.name = "--environment-intensity",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(pathtrace_args, env_intensity),
+     .value_name = "K",
+     .help = "multiplies the --environment map's radiance (default 1)",
+     .range_text = "a number >= 0",
+     .low = 0,
+     .high = 1e9,
+     .given = CLI_GIVEN(pathtrace_args, env_intensity_given)},
     {.name = "--tile",
      .kind = CLI_STRING,
      .offset = offsetof(pathtrace_args, tile),
@@ -143,13 +152,49 @@ static int parse_range(const char *command, const char *text, int spp, int r[2])
     return CLI_OK;
 }
 
+/* FNV-1a over n bytes, continuing from hash. */
+static uint64_t digest(uint64_t hash, const void *bytes, size_t n)
+{
+    const unsigned char *p = bytes;
+    for (size_t i = 0; i < n; i++)
+        hash = (hash ^ p[i]) * 0x100000001b3ull;
+    return hash;
+}
+
+/* The digest of what the path tracer takes from a mesh: positions,
+ * normals, vertex and face colours, and the faces. */
+static uint64_t mesh_digest(const cg_mesh *m)
+{
+    uint64_t hash = 0xcbf29ce484222325ull;
+    size_t v = m->vertex_count, f = m->face_count;
+    hash = digest(hash, &v, sizeof v);
+    hash = digest(hash, &f, sizeof f);
+    if (v) {
+        hash = digest(hash, m->positions, v * sizeof *m->positions);
+        if (m->normals)
+            hash = digest(hash, m->normals, v * sizeof *m->normals);
+        if (m->colors)
+            hash = digest(hash, m->colors, v * sizeof *m->colors);
+    }
+    if (f) {
+        hash = digest(hash, m->face_offsets, (f + 1) * sizeof *m->face_offsets);
+        hash = digest(hash, m->face_indices, m->face_offsets[f] * sizeof *m->face_indices);
+        if (m->face_colors)
+            hash = digest(hash, m->face_colors, f * sizeof *m->face_colors);
+    }
+    return hash;
+}
+
+/* The scene of one mesh under the default material, the camera framing
+ * it, and the digest of the mesh (for the part's render key). */
 static cg_status build_scene(const char *path, cg_trace_scene **out, cg_camera *camera,
-                             double aspect, cg_error *err)
+                             double aspect, uint64_t *mesh_key, cg_error *err)
 {
     cg_mesh *mesh = NULL;
     cg_status s = cg_mesh_load(path, &mesh, err);
     if (s != CG_OK)
         return s;
+    *mesh_key = mesh_digest(mesh);
     cg_trace_material m = cg_trace_material_default();
     m.surface.color = cg_vec3_make(0.8, 0.8, 0.8);
     m.surface.kd = 1;
@@ -218,29 +263,13 @@ static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
     return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
 }
 
-/* FNV-1a over n bytes, continuing from hash. */
-static uint64_t digest(uint64_t hash, const void *bytes, size_t n)
+/* What a part's picture depends on beyond its header: the mesh (its
+ * digest), the image size (the camera is framed from both), the sky
+ * colour, the environment map and its intensity, so that cg merge refuses
+ * parts of another render. */
+static uint64_t render_key(uint64_t mesh_key, const pathtrace_args *a, const cg_image *sky)
 {
-    const unsigned char *p = bytes;
-    for (size_t i = 0; i < n; i++)
-        hash = (hash ^ p[i]) * 0x100000001b3ull;
-    return hash;
-}
-
-/* What a part's picture depends on beyond its header: the mesh file's
- * bytes, the image size (the camera is framed from both), the sky colour
- * and the environment map, so that cg merge refuses parts of another render. */
-static uint64_t render_key(const char *input, const pathtrace_args *a, const cg_image *sky)
-{
-    uint64_t hash = 0xcbf29ce484222325ull;
-    FILE *f = fopen(input, "rb");
-    if (f) {
-        unsigned char block[65536];
-        size_t n;
-        while ((n = fread(block, 1, sizeof block, f)) > 0)
-            hash = digest(hash, block, n);
-        fclose(f);
-    }
+    uint64_t hash = mesh_key;
     int size[2] = {a->size.width, a->size.height};
     hash = digest(hash, size, sizeof size);
     double sky_color[3] = {a->env.x, a->env.y, a->env.z};
@@ -248,6 +277,7 @@ static uint64_t render_key(const char *input, const pathtrace_args *a, const cg_
     if (sky) {
         int map_size[2] = {sky->width, sky->height};
         hash = digest(hash, map_size, sizeof map_size);
+        hash = digest(hash, &a->env_intensity, sizeof a->env_intensity);
         for (int y = 0; y < sky->height; y++)
             for (int x = 0; x < sky->width; x++) {
                 cg_rgbaf c = cg_image_get(sky, x, y);
@@ -274,7 +304,9 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     cg_error err = {0};
     cg_trace_scene *scene = NULL;
     cg_camera camera;
-    if (build_scene(input, &scene, &camera, (double)a->size.width / a->size.height, &err) != CG_OK)
+    uint64_t mesh_key;
+    if (build_scene(input, &scene, &camera, (double)a->size.width / a->size.height, &mesh_key, &err)
+        != CG_OK)
         return cli_fail("%s: %s", command, err.message);
     cg_image *sky = NULL;
     if (a->environment && load_sky(a->environment, &sky, &err) != CG_OK) {
@@ -283,6 +315,7 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     }
     cg_path_options o = cg_path_options_default();
     o.environment_map = sky;
+    o.environment_intensity = a->env_intensity;
     o.spp = a->spp;
     o.max_depth = a->max_depth;
     o.threads = a->threads;
@@ -302,7 +335,7 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                          (uint32_t)a->spp,
                          (uint32_t)a->max_depth,
                          o.seed,
-                         render_key(input, a, sky),
+                         render_key(mesh_key, a, sky),
                          NULL};
     part.sums = calloc((size_t)(tile[2] - tile[0]) * (size_t)(tile[3] - tile[1]) * 3, 8);
     int status = part.sums ? render_passes(command, scene, &camera, a, &o, &part)
@@ -327,6 +360,7 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
     a.max_depth = 8;
     a.threads = 1;
     a.env = cg_vec3_make(1, 1, 1);
+    a.env_intensity = 1;
     const char *input[1] = {NULL};
     int count = 0;
     if (cli_parse(&pathtrace_syntax, argc, argv, &a, input, &count) != CLI_OK)
@@ -335,6 +369,9 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
         return cli_usage_error(command, "expected -o OUT");
     if (a.env_given && !(a.env.x >= 0 && a.env.y >= 0 && a.env.z >= 0))
         return cli_usage_error(command, "--environment-color: expected R,G,B >= 0");
+    if (a.env_intensity_given && !a.environment)
+        return cli_usage_error(command, "--environment-intensity scales an --environment map; "
+                                        "give one, or scale --environment-color itself");
     if (a.environment && a.env_given)
         return cli_usage_error(command, "--environment and --environment-color: give one sky");
     if (render_scene_is_scene(input[0]))

@@ -4,6 +4,7 @@
 #include "pathtrace_command.h"
 
 #include "cli.h"
+#include "pathtrace_mpi.h"
 #include "pathtrace_output.h"
 #include "render_scene.h"
 #include "cg/image_float.h"
@@ -14,7 +15,7 @@
 #include <string.h>
 
 typedef struct pathtrace_args {
-    const char *output, *algorithm, *tile, *range, *environment;
+    const char *output, *algorithm, *tile, *range, *environment, *checkpoint;
     cli_size size;
     int spp, max_depth, seed, threads, quiet, env_given, env_intensity_given;
     cg_vec3 env;
@@ -82,6 +83,12 @@ static const cli_option pathtrace_options[] = {
      .offset = offsetof(pathtrace_args, range),
      .value_name = "A..B",
      .help = "render only samples A to B-1, to a .part file"},
+    {.name = "--checkpoint",
+     .kind = CLI_STRING,
+     .offset = offsetof(pathtrace_args, checkpoint),
+     .value_name = "DIR",
+     .help = "keep finished units of 32x32 pixels and 16 samples in DIR; a rerun with the "
+             "same arguments renders only the missing ones"},
     {.name = "--time",
      .kind = CLI_DOUBLE,
      .offset = offsetof(pathtrace_args, time),
@@ -301,6 +308,9 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                                a->output);
     if (split && a->time > 0)
         return cli_usage_error(command, "--time renders whole pictures only");
+    int ranks = pathtrace_mpi_ranks();
+    if (a->time > 0 && (a->checkpoint || ranks > 1))
+        return cli_usage_error(command, "--time renders in one process without --checkpoint");
     cg_error err = {0};
     cg_trace_scene *scene = NULL;
     cg_camera camera;
@@ -330,20 +340,30 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                          (uint32_t)tile[1],
                          (uint32_t)tile[2],
                          (uint32_t)tile[3],
-                         0,
-                         0,
+                         (uint32_t)range[0],
+                         (uint32_t)range[1],
                          (uint32_t)a->spp,
                          (uint32_t)a->max_depth,
                          o.seed,
                          render_key(mesh_key, a, sky),
                          NULL};
     part.sums = calloc((size_t)(tile[2] - tile[0]) * (size_t)(tile[3] - tile[1]) * 3, 8);
-    int status = part.sums ? render_passes(command, scene, &camera, a, &o, &part)
-                           : cli_fail("%s: out of memory", command);
+    pathtrace_job job = {scene, &camera, o, &part, a->checkpoint, a->quiet};
+    int writer = 1, status;
+    if (!part.sums)
+        status = cli_fail("%s: out of memory", command);
+    else if (ranks > 1)
+        status = pathtrace_mpi_render(command, &job, &writer);
+    else if (a->checkpoint)
+        status = pathtrace_units_run(command, &job);
+    else
+        status = render_passes(command, scene, &camera, a, &o, &part);
     if (status == CLI_OK && !split)
         part.spp = part.sample_end; /* a time budget may have stopped it early */
-    if (status == CLI_OK)
+    if (status == CLI_OK && writer)
         status = pathtrace_write(command, &part, a->output, a->exposure);
+    if (ranks > 1)
+        pathtrace_mpi_finish();
     free(part.sums);
     cg_image_free(sky);
     cg_trace_scene_free(scene);

@@ -4,6 +4,7 @@
 #include "pathtrace_command.h"
 
 #include "cli.h"
+#include "pathtrace_input.h"
 #include "pathtrace_mpi.h"
 #include "pathtrace_output.h"
 #include "render_scene.h"
@@ -17,7 +18,7 @@
 typedef struct pathtrace_args {
     const char *output, *algorithm, *tile, *range, *environment, *checkpoint;
     cli_size size;
-    int spp, max_depth, seed, threads, quiet, env_given, env_intensity_given;
+    int spp, max_depth, seed, threads, quiet, env_given, env_intensity_given, size_given;
     cg_vec3 env;
     double time, exposure, env_intensity;
 } pathtrace_args;
@@ -30,7 +31,8 @@ static const cli_option pathtrace_options[] = {
      .offset = offsetof(pathtrace_args, algorithm),
      .value_name = "pathtrace",
      .help = "the path tracer"},
-    CLI_OPTION_SIZE(pathtrace_args, size, 0, "picture size (default 320x240)"),
+    CLI_OPTION_SIZE(pathtrace_args, size, CLI_GIVEN(pathtrace_args, size_given),
+                    "picture size (default 320x240, or a scene file's)"),
     {.name = "--spp",
      .kind = CLI_INT,
      .offset = offsetof(pathtrace_args, spp),
@@ -159,76 +161,6 @@ static int parse_range(const char *command, const char *text, int spp, int r[2])
     return CLI_OK;
 }
 
-/* FNV-1a over n bytes, continuing from hash. */
-static uint64_t digest(uint64_t hash, const void *bytes, size_t n)
-{
-    const unsigned char *p = bytes;
-    for (size_t i = 0; i < n; i++)
-        hash = (hash ^ p[i]) * 0x100000001b3ull;
-    return hash;
-}
-
-/* The digest of what the path tracer takes from a mesh: positions,
- * normals, vertex and face colours, and the faces. */
-static uint64_t mesh_digest(const cg_mesh *m)
-{
-    uint64_t hash = 0xcbf29ce484222325ull;
-    size_t v = m->vertex_count, f = m->face_count;
-    hash = digest(hash, &v, sizeof v);
-    hash = digest(hash, &f, sizeof f);
-    if (v) {
-        hash = digest(hash, m->positions, v * sizeof *m->positions);
-        if (m->normals)
-            hash = digest(hash, m->normals, v * sizeof *m->normals);
-        if (m->colors)
-            hash = digest(hash, m->colors, v * sizeof *m->colors);
-    }
-    if (f) {
-        hash = digest(hash, m->face_offsets, (f + 1) * sizeof *m->face_offsets);
-        hash = digest(hash, m->face_indices, m->face_offsets[f] * sizeof *m->face_indices);
-        if (m->face_colors)
-            hash = digest(hash, m->face_colors, f * sizeof *m->face_colors);
-    }
-    return hash;
-}
-
-/* The scene of one mesh under the default material, the camera framing
- * it, and the digest of the mesh (for the part's render key). */
-static cg_status build_scene(const char *path, cg_trace_scene **out, cg_camera *camera,
-                             double aspect, uint64_t *mesh_key, cg_error *err)
-{
-    cg_mesh *mesh = NULL;
-    cg_status s = cg_mesh_load(path, &mesh, err);
-    if (s != CG_OK)
-        return s;
-    *mesh_key = mesh_digest(mesh);
-    cg_trace_material m = cg_trace_material_default();
-    m.surface.color = cg_vec3_make(0.8, 0.8, 0.8);
-    m.surface.kd = 1;
-    cg_trace_scene *scene = NULL;
-    cg_vec3 lo, hi;
-    if ((s = cg_trace_scene_create(&scene)) == CG_OK)
-        s = cg_trace_scene_add_mesh(scene, mesh, NULL, 0.6, &m);
-    cg_mesh_free(mesh);
-    if (s == CG_OK && (s = cg_trace_scene_bounds(scene, &lo, &hi)) != CG_OK)
-        cg_error_set(err, s, "%s: no faces to render", path);
-    if (s == CG_OK) {
-        *camera = cg_camera_default();
-        camera->target = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
-        camera->eye = cg_vec3_add(camera->target, cg_vec3_make(0, 0, 1));
-        if ((s = cg_camera_frame(camera, lo, hi, aspect)) != CG_OK)
-            cg_error_set(err, s, "%s: cannot frame the mesh", path);
-    } else if (err && err->message[0] == 0) {
-        cg_error_set(err, s, "%s: the path tracer refused the mesh", path);
-    }
-    if (s != CG_OK) {
-        cg_trace_scene_free(scene);
-        return s;
-    }
-    *out = scene;
-    return CG_OK;
-}
-
 /* Renders passes of growing sample counts until spp or the time budget. */
 static int render_passes(const char *command, cg_trace_scene *scene, const cg_camera *camera,
                          const pathtrace_args *a, cg_path_options *o, cg_path_part *part)
@@ -256,46 +188,10 @@ static int render_passes(const char *command, cg_trace_scene *scene, const cg_ca
     return CLI_OK;
 }
 
-/* The environment map as linear-light floats: float files as they are,
- * 8-bit ones decoded from sRGB. */
-static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
-{
-    cg_status s = cg_image_load(path, sky, err);
-    if (s != CG_OK || (*sky)->format == CG_PIXEL_RGBAF)
-        return s;
-    cg_image *linear = NULL;
-    s = cg_image_decode_srgb(*sky, &linear);
-    cg_image_free(*sky);
-    *sky = linear;
-    return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
-}
-
-/* What a part's picture depends on beyond its header: the mesh (its
- * digest), the image size (the camera is framed from both), the sky
- * colour, the environment map and its intensity, so that cg merge refuses
- * parts of another render. */
-static uint64_t render_key(uint64_t mesh_key, const pathtrace_args *a, const cg_image *sky)
-{
-    uint64_t hash = mesh_key;
-    int size[2] = {a->size.width, a->size.height};
-    hash = digest(hash, size, sizeof size);
-    double sky_color[3] = {a->env.x, a->env.y, a->env.z};
-    hash = digest(hash, sky_color, sizeof sky_color);
-    if (sky) {
-        int map_size[2] = {sky->width, sky->height};
-        hash = digest(hash, map_size, sizeof map_size);
-        hash = digest(hash, &a->env_intensity, sizeof a->env_intensity);
-        for (int y = 0; y < sky->height; y++)
-            for (int x = 0; x < sky->width; x++) {
-                cg_rgbaf c = cg_image_get(sky, x, y);
-                float rgb[3] = {c.r, c.g, c.b};
-                hash = digest(hash, rgb, sizeof rgb);
-            }
-    }
-    return hash;
-}
-
-static int render(const char *command, const char *input, pathtrace_args *a)
+/* Renders the loaded input: the whole picture or the part --tile and
+ * --sample-range name, in passes, over units (--checkpoint) or over MPI
+ * ranks, and writes it. */
+static int render_input(const char *command, const pathtrace_input *in, const pathtrace_args *a)
 {
     int tile[4] = {0, 0, a->size.width, a->size.height}, range[2] = {0, a->spp};
     if (a->tile && parse_tile(command, a->tile, &a->size, tile) != CLI_OK)
@@ -311,26 +207,14 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     int ranks = pathtrace_mpi_ranks();
     if (a->time > 0 && (a->checkpoint || ranks > 1))
         return cli_usage_error(command, "--time renders in one process without --checkpoint");
-    cg_error err = {0};
-    cg_trace_scene *scene = NULL;
-    cg_camera camera;
-    uint64_t mesh_key;
-    if (build_scene(input, &scene, &camera, (double)a->size.width / a->size.height, &mesh_key, &err)
-        != CG_OK)
-        return cli_fail("%s: %s", command, err.message);
-    cg_image *sky = NULL;
-    if (a->environment && load_sky(a->environment, &sky, &err) != CG_OK) {
-        cg_trace_scene_free(scene);
-        return cli_fail("%s: --environment: %s", command, err.message);
-    }
     cg_path_options o = cg_path_options_default();
-    o.environment_map = sky;
-    o.environment_intensity = a->env_intensity;
+    o.environment_map = in->environment_map;
+    o.environment_intensity = in->environment_intensity;
+    o.environment = in->environment;
     o.spp = a->spp;
     o.max_depth = a->max_depth;
     o.threads = a->threads;
     o.seed = (uint64_t)a->seed;
-    o.environment = a->env;
     o.x0 = tile[0], o.y0 = tile[1], o.x1 = tile[2], o.y1 = tile[3];
     o.sample_begin = range[0];
     o.sample_end = range[1];
@@ -345,10 +229,10 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                          (uint32_t)a->spp,
                          (uint32_t)a->max_depth,
                          o.seed,
-                         render_key(mesh_key, a, sky),
+                         in->key,
                          NULL};
     part.sums = calloc((size_t)(tile[2] - tile[0]) * (size_t)(tile[3] - tile[1]) * 3, 8);
-    pathtrace_job job = {scene, &camera, o, &part, a->checkpoint, a->quiet};
+    pathtrace_job job = {in->scene, &in->camera, o, &part, a->checkpoint, a->quiet};
     int writer = 1, status;
     if (!part.sums)
         status = cli_fail("%s: out of memory", command);
@@ -357,7 +241,7 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     else if (a->checkpoint)
         status = pathtrace_units_run(command, &job);
     else
-        status = render_passes(command, scene, &camera, a, &o, &part);
+        status = render_passes(command, in->scene, &in->camera, a, &o, &part);
     if (status == CLI_OK && !split)
         part.spp = part.sample_end; /* a time budget may have stopped it early */
     if (status == CLI_OK && writer)
@@ -365,8 +249,23 @@ static int render(const char *command, const char *input, pathtrace_args *a)
     if (ranks > 1)
         pathtrace_mpi_finish();
     free(part.sums);
-    cg_image_free(sky);
-    cg_trace_scene_free(scene);
+    return status;
+}
+
+static int render(const char *command, const char *input, pathtrace_args *a)
+{
+    cg_error err = {0};
+    pathtrace_input in;
+    pathtrace_sky sky = {a->environment, a->env, a->env_intensity, a->env_given,
+                         a->env_intensity_given};
+    cg_status loaded = pathtrace_input_load(input, a->size, a->size_given, &sky, &in, &err);
+    if (loaded == CG_EINVAL)
+        return cli_usage_error(command, "%s", err.message);
+    if (loaded != CG_OK)
+        return cli_fail("%s: %s", command, err.message);
+    a->size = (cli_size){in.width, in.height};
+    int status = render_input(command, &in, a);
+    pathtrace_input_free(&in);
     return status;
 }
 
@@ -389,14 +288,7 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
         return cli_usage_error(command, "expected -o OUT");
     if (a.env_given && !(a.env.x >= 0 && a.env.y >= 0 && a.env.z >= 0))
         return cli_usage_error(command, "--environment-color: expected R,G,B >= 0");
-    if (a.env_intensity_given && !a.environment)
-        return cli_usage_error(command, "--environment-intensity scales an --environment map; "
-                                        "give one, or scale --environment-color itself");
     if (a.environment && a.env_given)
         return cli_usage_error(command, "--environment and --environment-color: give one sky");
-    if (render_scene_is_scene(input[0]))
-        return cli_usage_error(command,
-                               "--algorithm pathtrace renders MESH files; scene files are not "
-                               "supported yet");
     return render(command, input[0], &a);
 }

@@ -24,5 +24,10 @@ clip_i128 clip_ring_twice_area(const cg_point64 *p, size_t n);
  * copy's size. */
 double clip_weiler_twice_area(const cg_vec2 *p, size_t n);
 size_t clip_weiler_prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out);
+/* Whether the subject edge a + t d and the window edge c + u e cross
+ * properly, 0 <= t < 1 and 0 <= u < 1 (parallel edges never do); then *t,
+ * *u, and *entering: the subject goes into the counter-clockwise window. */
+int clip_weiler_crossing(cg_vec2 a, cg_vec2 d, cg_vec2 c, cg_vec2 e, double *t, double *u,
+                         int *entering);
 
 #endif

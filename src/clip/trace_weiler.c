@@ -16,7 +16,6 @@
 #include "../core/steps.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,23 +49,6 @@ typedef struct weiler_trace {
     void *user;
 } weiler_trace;
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void
-append(char *text, const char *format, ...)
-{
-    size_t used = strlen(text);
-    if (used + 4 >= LABELS)
-        return;
-    va_list args;
-    va_start(args, format);
-    int n = vsnprintf(text + used, LABELS - used, format, args);
-    va_end(args);
-    if (n < 0 || used + (size_t)n >= LABELS)
-        strcpy(text + LABELS - 4, "...");
-}
-
 static void label(const node *x, int window, char *out, size_t size)
 {
     if (x->crossing >= 0)
@@ -90,14 +72,11 @@ static int find_crossings(weiler_trace *w)
         cg_vec2 a = w->subject[i], d = cg_vec2_sub(w->subject[(i + 1) % w->n], a);
         for (size_t j = 0; j < w->m; j++) {
             cg_vec2 c = w->window[j], e = cg_vec2_sub(w->window[(j + 1) % w->m], c);
-            double den = cg_vec2_cross(d, e);
-            if (den == 0)
+            double t, u;
+            int entering;
+            if (!clip_weiler_crossing(a, d, c, e, &t, &u, &entering))
                 continue;
-            cg_vec2 ac = cg_vec2_sub(c, a);
-            double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
-            if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
-                continue;
-            crossing x = {i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+            crossing x = {i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), entering};
             if (core_array_push(&w->crossings, x) != CG_OK)
                 return -1;
         }
@@ -151,10 +130,10 @@ static int emit_list(weiler_trace *w, int window)
     for (size_t i = 0; i < l->count; i++) {
         label(&l->data[i], window, name, sizeof name);
         long c = l->data[i].crossing;
-        append(text, "%s%s%s", i ? " " : "", name,
-               c < 0                           ? ""
-               : w->crossings.data[c].entering ? "(in)"
-                                               : "(out)");
+        core_text_append(text, LABELS, "%s%s%s", i ? " " : "", name,
+                         c < 0                           ? ""
+                         : w->crossings.data[c].entering ? "(in)"
+                                                         : "(out)");
         points[i] = l->data[i].p;
     }
     core_step s;
@@ -238,7 +217,7 @@ static long walk_leg(weiler_trace *w, int side, size_t at, point_list *ring, int
     for (size_t i = at;; i = (i + 1) % l->count) {
         char name[32];
         label(&l->data[i], side, name, sizeof name);
-        append(path, "%s%s", i == at ? "" : " ", name);
+        core_text_append(path, LABELS, "%s%s", i == at ? "" : " ", name);
         if (i == cur || strlen(path) + 8 >= LABELS)
             break;
     }

@@ -92,6 +92,19 @@ static cg_status check_input(const cg_vec2 *subject, size_t n, const cg_vec2 *wi
     return CG_OK;
 }
 
+int clip_weiler_crossing(cg_vec2 a, cg_vec2 d, cg_vec2 c, cg_vec2 e, double *t, double *u,
+                         int *entering)
+{
+    double den = cg_vec2_cross(d, e);
+    if (den == 0)
+        return 0;
+    cg_vec2 ac = cg_vec2_sub(c, a);
+    *t = cg_vec2_cross(ac, e) / den;
+    *u = cg_vec2_cross(ac, d) / den;
+    *entering = den < 0;
+    return *t >= 0 && *t < 1 && *u >= 0 && *u < 1;
+}
+
 /* Phase 2: every proper crossing of a subject edge with a window edge,
  * appended to *X in subject-edge order. */
 static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing **X,
@@ -102,16 +115,13 @@ static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, si
         cg_vec2 a = S[i], b = S[(i + 1) % n], d = cg_vec2_sub(b, a);
         for (size_t j = 0; j < m; j++) {
             cg_vec2 c = C[j], e = cg_vec2_sub(C[(j + 1) % m], c);
-            double den = cg_vec2_cross(d, e);
-            if (den == 0)
-                continue;
-            cg_vec2 ac = cg_vec2_sub(c, a);
-            double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
-            if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
+            double t, u;
+            int entering;
+            if (!clip_weiler_crossing(a, d, c, e, &t, &u, &entering))
                 continue;
             if (core_array_reserve((void **)X, &capx, *nx + 1, sizeof **X) != CG_OK)
                 return CG_ENOMEM;
-            (*X)[(*nx)++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+            (*X)[(*nx)++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), entering};
         }
     }
     return CG_OK;

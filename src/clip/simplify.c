@@ -418,12 +418,9 @@ cg_status cg_simplify64(const cg_polygon_set64 *paths, int open, cg_clip_fill fi
     if (!paths || !result || !(tolerance >= 0) || isinf(tolerance)
         || (unsigned)algorithm > CG_SIMPLIFY_VISVALINGAM || (unsigned)fill > CG_CLIP_NEGATIVE)
         return CG_EINVAL;
-    int64_t largest;
-    cg_status st = polygon_set64_max_abs(paths, &largest);
+    cg_status st = polygon_set64_check_range(paths);
     if (st != CG_OK)
         return st;
-    if (largest > CG_CLIP_MAX_COORD)
-        return CG_ERANGE;
     cg_polygon_set64 simple = {0}, none = {0}, kept = {0};
     if (!open)
         st = cg_clip_boolean64(CG_CLIP_UNION, paths, fill, &none, fill, &simple);

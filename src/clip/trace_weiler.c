@@ -14,6 +14,7 @@
 #include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
+#include "../core/sort.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -81,8 +82,7 @@ static int find_crossings(weiler_trace *w)
                 return -1;
         }
     }
-    if (w->crossings.count > 1)
-        qsort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
+    core_sort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
     for (size_t k = 0; k < w->crossings.count; k++) {
         const crossing *x = &w->crossings.data[k];
         core_step s;
@@ -171,7 +171,7 @@ static int build_lists(weiler_trace *w)
     for (size_t i = 0; outcome == 0 && i < nx; i++)
         places[i] = (window_place){w->crossings.data[i].window_edge, w->crossings.data[i].u, i};
     if (outcome == 0)
-        qsort(places, nx, sizeof *places, by_window_edge);
+        core_sort(places, nx, sizeof *places, by_window_edge);
     k = 0;
     for (size_t j = 0; j < w->m && outcome == 0; j++) {
         node v = {w->window[j], (long)j, -1, 0, 0};

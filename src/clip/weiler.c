@@ -5,6 +5,7 @@
 #include "cg/clip.h"
 #include "internal.h"
 #include "../core/array.h"
+#include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -133,7 +134,7 @@ static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, si
 static cg_status build_lists(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing *X,
                              size_t nx, wnode *sn, wnode *cn)
 {
-    qsort(X, nx, sizeof *X, cmp_s);
+    core_sort(X, nx, sizeof *X, cmp_s);
     xing **XC = malloc(nx * sizeof *XC);
     size_t *sidx = malloc(nx * sizeof *sidx);
     if (!XC || !sidx) {
@@ -155,7 +156,7 @@ static cg_status build_lists(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_
         sn[i].next = (i + 1) % ns;
     for (size_t i = 0; i < nx; i++)
         XC[i] = &X[i];
-    qsort(XC, nx, sizeof *XC, cmp_c);
+    core_sort(XC, nx, sizeof *XC, cmp_c);
     size_t nc = 0;
     k = 0;
     for (size_t j = 0; j < m; j++) {

@@ -12,6 +12,7 @@
 #include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
+#include "../core/sort.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -212,8 +213,7 @@ cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes
         free(edges.data);
         return CG_OK;
     }
-    if (edges.count > 1) /* qsort wants a non-null array even when empty */
-        qsort(edges.data, edges.count, sizeof *edges.data, by_first_row);
+    core_sort(edges.data, edges.count, sizeof *edges.data, by_first_row);
     int outcome = emit_edge_table(edges.data, edges.count, step, user);
     if (outcome == 0)
         outcome = sweep(edges.data, edges.count, rule, step, user);

@@ -1,6 +1,7 @@
 /* Sutherland-Hodgman polygon clipping (11.2.1, Fig. 11.5) in 2D against a
  * convex window and in 3D against planes; frustum planes and culling. */
 #include "cg/clip.h"
+#include "internal.h"
 #include "../core/array.h"
 
 #include <stdlib.h>
@@ -106,14 +107,6 @@ nomem:
     return CG_ENOMEM;
 }
 
-static double signed_area2(const cg_vec2 *p, size_t n)
-{
-    double s = 0;
-    for (size_t i = 0, j = n - 1; i < n; j = i++)
-        s += cg_vec2_cross(p[j], p[i]);
-    return s;
-}
-
 /* The convex window's edges as planes: distance orient * (edge x (p - a)),
  * positive inside; an edge of length 0 clips nothing. */
 typedef struct window_planes {
@@ -152,7 +145,7 @@ cg_status cg_clip_sutherland_hodgman(const cg_vec2 *subject, size_t n, const cg_
     for (size_t i = 0; i < m; i++)
         if (!isfinite(window[i].x) || !isfinite(window[i].y))
             return CG_EINVAL;
-    double area = signed_area2(window, m);
+    double area = clip_twice_area(window, m);
     if (!(area != 0) || !isfinite(area))
         return CG_EINVAL;
     double orient = area > 0 ? 1.0 : -1.0;

@@ -355,8 +355,8 @@ cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_ve
             window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
         outcome = emit_prepared(&w, delta);
     }
-    int flat = w.n < 3 || w.m < 3 || clip_weiler_twice_area(w.subject, w.n) == 0
-               || clip_weiler_twice_area(w.window, w.m) == 0;
+    int flat = w.n < 3 || w.m < 3 || clip_twice_area(w.subject, w.n) == 0
+               || clip_twice_area(w.window, w.m) == 0;
     if (outcome == 0 && !flat)
         outcome = find_crossings(&w);
     if (outcome == 0 && !flat && (w.crossings.count == 0 || w.crossings.count % 2)) {

@@ -25,7 +25,7 @@ typedef struct xing {
     int entering;
 } xing;
 
-double clip_weiler_twice_area(const cg_vec2 *p, size_t n)
+double clip_twice_area(const cg_vec2 *p, size_t n)
 {
     double s = 0;
     for (size_t i = 0, j = n - 1; i < n; j = i++)
@@ -54,7 +54,7 @@ size_t clip_weiler_prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
     }
     while (m > 1 && out[0].x == out[m - 1].x && out[0].y == out[m - 1].y)
         m--;
-    if (m >= 3 && clip_weiler_twice_area(out, m) < 0)
+    if (m >= 3 && clip_twice_area(out, m) < 0)
         for (size_t i = 0; i < m / 2; i++) {
             cg_vec2 t = out[i];
             out[i] = out[m - 1 - i];
@@ -277,7 +277,7 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
     double delta = (ext > 0 ? ext : 1) * 1e-9;
     n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), S);
     m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
-    if (n < 3 || m < 3 || clip_weiler_twice_area(S, n) == 0 || clip_weiler_twice_area(C, m) == 0) {
+    if (n < 3 || m < 3 || clip_twice_area(S, n) == 0 || clip_twice_area(C, m) == 0) {
         st = CG_OK; /* nothing with an area */
         goto done;
     }

@@ -197,6 +197,18 @@ sp=(render "$tmp/s.json" "${st[@]}")
 cmp -s "$tmp/s.pfm" "$tmp/s-merged.pfm" || fail "merged scene parts differ from the whole"
 "$cg" render "$tmp/s-checker.json" "${st[@]}" --tile 0,10,40,24 -o "$tmp/s3.part"
 expect_error "another render" merge "$tmp/s1.part" "$tmp/s3.part"
+# an emitting material ("emission") seen directly, black and unlit, gives
+# its radiance in the middle pixel
+if command -v python3 >/dev/null; then
+  scene "$tmp/s-glow.json" '{"color": [0, 0, 0]}' '{"color": [0, 0, 0], "kd": 1, "emission": [0.5, 0.25, 2]}'
+  "$cg" render "$tmp/s-glow.json" "${st[@]}" -o "$tmp/s-glow.pfm" || fail "emission scene failed"
+  python3 -c 'import struct,sys
+d=open(sys.argv[1],"rb").read().split(b"\n",3); w,h=map(int,d[1].split())
+px=struct.unpack("<%df"%(3*w*h),d[3])
+r,g,b=px[3*(w//2):3*(w//2)+3]   # the bottom row comes first in a PFM: the floor
+sys.exit(0 if abs(r-0.5)<1e-5 and abs(g-0.25)<1e-5 and abs(b-2)<1e-5 else 1)' "$tmp/s-glow.pfm" \
+    || fail "an emitting floor seen directly is not its emission"
+fi
 # bad environments: the JSON path and what was expected
 scene "$tmp/bad1.json" '{"intensity": 2}' "$plain"
 expect_error "environment.intensity" render "$tmp/bad1.json" "${st[@]}"

@@ -70,6 +70,7 @@ typedef struct cg_scene_material {
     cg_material surface;   /* colour, ka, kd, ks, shininess, reflectance, ... */
     cg_vec3 checker_color; /* second colour of a 3D checker (ray tracer) */
     double checker_size;   /* 0: plain */
+    cg_vec3 emission;      /* emitted radiance (ray tracers), linear; 0: none */
 } cg_scene_material;
 
 typedef struct cg_scene_object {

@@ -14,6 +14,7 @@ static cg_trace_material trace_material(const cg_scene_material *m)
     t.surface = m->surface;
     t.checker_color = m->checker_color;
     t.checker_size = m->checker_size;
+    t.emission = m->emission;
     return t;
 }
 

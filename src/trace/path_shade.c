@@ -193,6 +193,7 @@ cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *option
         if (depth >= options->max_depth)
             return sum;
         const trace_object *object = &scene->objects[hit.object];
+        sum = cg_vec3_add(sum, cg_vec3_mul(weight, object->material.emission));
         path_surface s = surface_of(&object->material.surface,
                                     trace_surface_color(object, hit.point));
         int entering = cg_vec3_dot(direction, hit.normal) < 0;

@@ -163,7 +163,8 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_m
         n = cg_vec3_scale(n, -1);
     cg_vec3 to_viewer = cg_vec3_scale(direction, -1);
     material.color = trace_surface_color(o, hit.point);
-    cg_vec3 color = illuminate(ctx, &hit, &material, n, ng, to_viewer, rng);
+    cg_vec3 color = cg_vec3_add(o->material.emission,
+                                illuminate(ctx, &hit, &material, n, ng, to_viewer, rng));
     if (depth >= opt->max_depth)
         return color;
     cg_vec3 mirror = cg_reflect(direction, n);

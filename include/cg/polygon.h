@@ -120,6 +120,34 @@ cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
 cg_status cg_rect_clip_lines(const cg_polygon_set *paths, cg_rect rect, double scale,
                              cg_polygon_set *result);
 
+/* ---- clipping open paths against polygons ----------------------------------- */
+
+/* Every ring of paths taken as an open polyline (self-crossing allowed),
+ * cut by the region the rings of clip cover under clip_fill:
+ * CG_CLIP_INTERSECTION keeps the pieces inside the region, its boundary
+ * included (a stretch running along an edge is inside), CG_CLIP_DIFFERENCE
+ * the pieces outside it, boundary excluded (a path touching the boundary
+ * from outside is cut there).  Each piece is a path of result (emptied
+ * first; it may not be paths or clip), in order along each path and the
+ * paths in the input's order; pieces of no length (a path touching the
+ * region at a point) are left out.  Where a piece starts or ends is decided
+ * exactly; a crossing inside an edge is rounded to the nearest grid point,
+ * a vertex kept exactly, and the vertices of the path between are its own.
+ * CG_EINVAL for another operation (a union or symmetric difference of a
+ * line and a region is not a set of lines) or fill rule; CG_ERANGE for a
+ * coordinate off the grid; CG_ENOMEM. */
+cg_status cg_clip_lines64(cg_clip_op op, const cg_polygon_set64 *paths,
+                          const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
+                          cg_polygon_set64 *result);
+cg_status cg_clip_lines64_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_polygon_set64 *paths,
+                             const cg_polygon_set64 *clip, cg_clip_fill clip_fill,
+                             cg_polygon_set64 *result);
+cg_status cg_clip_lines(cg_clip_op op, const cg_polygon_set *paths, const cg_polygon_set *clip,
+                        cg_clip_fill clip_fill, double scale, cg_polygon_set *result);
+cg_status cg_clip_lines_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_polygon_set *paths,
+                           const cg_polygon_set *clip, cg_clip_fill clip_fill, double scale,
+                           cg_polygon_set *result);
+
 /* ---- triangulation ---------------------------------------------------------- */
 
 /* The constrained Delaunay triangulation of the region the rings cover

@@ -43,4 +43,22 @@ void polygon_drop_slivers(cg_polygon_set64 *set);
 /* Sign of the cross product (b - a) x (c - a), exact. */
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c);
 
+/* A signed 256-bit integer: magnitude in limbs (least significant first)
+ * and a sign (never negative when zero). */
+typedef struct polygon_wide {
+    uint64_t limb[4];
+    int negative;
+} polygon_wide;
+
+/* The product of two signed 128-bit values, exactly. */
+polygon_wide polygon_wide_mul(polygon_i128 a, polygon_i128 b);
+/* a + b, exactly while the magnitude stays below 2^256. */
+polygon_wide polygon_wide_add(polygon_wide a, polygon_wide b);
+int polygon_wide_sign(polygon_wide w);
+/* The sign of a * b - c * d, exact for values below 2^126 in magnitude. */
+int polygon_compare_products(polygon_i128 a, polygon_i128 b, polygon_i128 c, polygon_i128 d);
+/* numerator / denominator rounded to the nearest integer (halves away from
+ * zero); the denominator is not zero and the quotient fits int64. */
+int64_t polygon_divide_rounded(polygon_i128 numerator, polygon_i128 denominator);
+
 #endif

@@ -47,26 +47,13 @@ static int inside(side s, cg_point64 p)
     return s.sign > 0 ? c >= s.limit : c <= s.limit;
 }
 
-/* numerator / denominator rounded to the nearest integer (halves away from
- * zero); the denominator is not zero. */
-static int64_t divide_rounded(polygon_i128 numerator, polygon_i128 denominator)
-{
-    if (denominator < 0) {
-        numerator = -numerator;
-        denominator = -denominator;
-    }
-    polygon_i128 half = denominator / 2;
-    return (int64_t)(numerator >= 0 ? (numerator + half) / denominator
-                                    : -((-numerator + half) / denominator));
-}
-
 /* Where the edge a-b (one end on each side of the line) crosses the side's
  * line, the other coordinate rounded to the grid. */
 static cg_point64 crossing(side s, cg_point64 a, cg_point64 b)
 {
     int64_t ca = coordinate(a, s.axis), cb = coordinate(b, s.axis);
     int64_t oa = coordinate(a, !s.axis), ob = coordinate(b, !s.axis);
-    int64_t other = oa + divide_rounded((polygon_i128)(ob - oa) * (s.limit - ca), cb - ca);
+    int64_t other = oa + polygon_divide_rounded((polygon_i128)(ob - oa) * (s.limit - ca), cb - ca);
     return s.axis ? (cg_point64){other, s.limit} : (cg_point64){s.limit, other};
 }
 

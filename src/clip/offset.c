@@ -111,6 +111,8 @@ static cg_status add_flat_cut(offset_band *band, cg_point64 p, direction m1, dir
     direction u1 = {b.x - m1.x * cos(phi), b.y - m1.y * cos(phi)};
     direction u2 = {b.x - m2.x * cos(phi), b.y - m2.y * cos(phi)};
     double l1 = hypot(u1.x, u1.y), l2 = hypot(u2.x, u2.y);
+    if (!(l1 > 1e-12 && l2 > 1e-12 && isfinite(along)))
+        return CG_OK; /* a turn too slight to cut: the two offset edges' ends join */
     cg_point64 q1 = {(int64_t)llround((double)p.x + m1.x * d + u1.x / l1 * along),
                      (int64_t)llround((double)p.y + m1.y * d + u1.y / l1 * along)};
     cg_point64 q2 = {(int64_t)llround((double)p.x + m2.x * d + u2.x / l2 * along),

@@ -1,5 +1,5 @@
 /* Private pieces shared by the polygon-geometry files of the clip module
- * (offset, rectangle clipping, triangulation, simplification): the grid of
+ * (offset, rectangle clipping, open paths, triangulation, simplification): the grid of
  * the double API and small exact helpers on int64 rings.  They use only the
  * boolean engine's public API (cg/clip.h). */
 #ifndef CG_CLIP_POLYGON_INTERNAL_H

@@ -170,6 +170,34 @@ cg_status cg_triangulate(const cg_polygon_set *paths, cg_clip_fill fill, double 
 cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
                             double scale, cg_polygon_set *triangles);
 
+/* The largest minimum angle (degrees) a refinement accepts. */
+#define CG_TRIANGULATE_MAX_MIN_ANGLE 30.0
+
+/* The constrained Delaunay triangulation refined with Steiner points until
+ * no triangle has an angle below min_angle degrees (Ruppert's algorithm:
+ * ring edges encroached upon are split, bad triangles get their
+ * circumcentre), except the triangles whose smallest angle lies at a vertex
+ * where the rings' edges meet at less than 60 degrees (the input's own
+ * angle bounds those).  Points added on a ring edge lie exactly on it, at
+ * a grid point (an edge with no grid point inside is not split, and the
+ * triangles it keeps bad stay); points inside are rounded to the grid.  The
+ * triangles tile the region exactly and the triangulation of all its
+ * vertices is constrained Delaunay.  min_angle 0 is cg_triangulate64.
+ * CG_EINVAL for min_angle NaN, negative or above
+ * CG_TRIANGULATE_MAX_MIN_ANGLE (beyond it the refinement need not end);
+ * otherwise as cg_triangulate64.  A cap on the points added (64 per input
+ * vertex, plus 65,536) ends it in any case. */
+cg_status cg_triangulate_refined64(const cg_polygon_set64 *paths, cg_clip_fill fill,
+                                   double min_angle, cg_polygon_set64 *triangles);
+cg_status cg_triangulate_refined64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
+                                      cg_clip_fill fill, double min_angle,
+                                      cg_polygon_set64 *triangles);
+cg_status cg_triangulate_refined(const cg_polygon_set *paths, cg_clip_fill fill, double min_angle,
+                                 double scale, cg_polygon_set *triangles);
+cg_status cg_triangulate_refined_ws(cg_clip_workspace *ws, const cg_polygon_set *paths,
+                                    cg_clip_fill fill, double min_angle, double scale,
+                                    cg_polygon_set *triangles);
+
 /* ---- simplification --------------------------------------------------------- */
 
 typedef enum cg_simplify_algorithm {

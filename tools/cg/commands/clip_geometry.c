@@ -348,11 +348,17 @@ done:
     return status;
 }
 
+typedef struct triangulate_args {
+    cg_clip_fill fill;
+    double min_angle;
+} triangulate_args;
+
 static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
                                   const cg_polygon_set *input, int open, cg_polygon_set *result)
 {
+    const triangulate_args *a = args;
     (void)open;
-    return cg_triangulate_ws(ws, input, *(const cg_clip_fill *)args, 0, result);
+    return cg_triangulate_refined_ws(ws, input, a->fill, a->min_angle, 0, result);
 }
 
 /* cg clip triangulate IN: the triangles as a MULTIPOLYGON. */
@@ -360,17 +366,27 @@ static int triangulate(int argc, char **argv)
 {
     const char *file = NULL;
     common_options common = {0};
-    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
+    triangulate_args args = {CG_CLIP_EVEN_ODD, 0};
     for (int i = 1; i < argc; i++) {
         int taken = take_common("triangulate", argc, argv, &i, &common);
         if (taken == 0)
-            taken = take_fill("triangulate", argc, argv, &i, &fill);
+            taken = take_fill("triangulate", argc, argv, &i, &args.fill);
         if (taken < 0)
             return CLI_USAGE;
         if (taken)
             continue;
-        if (take_operand("triangulate", argv[i], NULL, &file) != 0)
+        if (cli_option_is(argv[i], "--min-angle")) {
+            const char *value = cli_option_value("clip", argc, argv, &i);
+            if (!value || cli_parse_double("clip", "--min-angle", value, &args.min_angle) != 0)
+                return CLI_USAGE;
+            if (!(args.min_angle >= 0 && args.min_angle <= CG_TRIANGULATE_MAX_MIN_ANGLE))
+                return cli_usage_error("clip",
+                                       "triangulate: --min-angle: expected degrees from 0 to %g "
+                                       "(beyond it refinement need not end), got '%s'",
+                                       CG_TRIANGULATE_MAX_MIN_ANGLE, value);
+        } else if (take_operand("triangulate", argv[i], NULL, &file) != 0) {
             return CLI_USAGE;
+        }
     }
     if (!file)
         return cli_usage_error("clip", "triangulate: expected IN");
@@ -386,7 +402,7 @@ static int triangulate(int argc, char **argv)
                                  file);
         goto done;
     }
-    status = run_timed("triangulate", &common, 1, triangulate_step, &fill, &input, 0, &result, 0);
+    status = run_timed("triangulate", &common, 1, triangulate_step, &args, &input, 0, &result, 0);
 done:
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);

@@ -15,8 +15,8 @@ int clip_geometry_run(int argc, char **argv);
     "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n" \
     "       cg clip rect XMIN YMIN XMAX YMAX IN [--fill evenodd|nonzero|positive|negative]\n"    \
     "                    [-o OUT.png] [--repeat N]\n"                                            \
-    "       cg clip triangulate IN [--fill evenodd|nonzero|positive|negative] [-o OUT.png]\n"    \
-    "                    [--repeat N]\n"                                                         \
+    "       cg clip triangulate IN [--min-angle A] [--fill evenodd|nonzero|positive|negative]\n" \
+    "                    [-o OUT.png] [--repeat N]\n"                                            \
     "       cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam]\n"                       \
     "                    [--fill evenodd|nonzero|positive|negative] [-o OUT.png] [--repeat N]\n"
 #define CLIP_GEOMETRY_USAGE_TEXT                                                         \
@@ -31,7 +31,9 @@ int clip_geometry_run(int argc, char **argv);
     "MULTIPOLYGON, line strings as a MULTILINESTRING of their pieces in order; a fast\n" \
     "path for small rectangles on large inputs (tiles of a map).\n\n"                    \
     "triangulate: the constrained Delaunay triangulation of the polygons of IN (made\n"  \
-    "simple first), with no point added, as a MULTIPOLYGON of triangles.\n\n"            \
+    "simple first), with no point added, as a MULTIPOLYGON of triangles.  --min-angle\n" \
+    "A (degrees, at most 30) adds points (Ruppert's refinement) until no triangle has\n" \
+    "an angle below A, except at input corners sharper than 60 degrees.\n\n"             \
     "simplify: removes vertices of IN's polygons (or line strings) while the shape\n"    \
     "stays within TOLERANCE (a distance for rdp, the default; a triangle's area for\n"   \
     "visvalingam), never making edges cross or touch and keeping every ring.\n"

@@ -9,8 +9,9 @@
  *     the union, deflating never gains any;
  *   - rectangle clips: every vertex inside the rectangle, the area at most
  *     the union's (and that of the rectangle) plus the rounding;
- *   - triangulations: every triangle counter-clockwise with positive area,
- *     twice their areas summing exactly to twice the union's;
+ *   - triangulations (refined to a minimum angle too): every triangle
+ *     counter-clockwise with positive area, twice their areas summing
+ *     exactly to twice the union's;
  *   - simplification: as many rings as the union, each of 3 points or more;
  *   - open paths clipped by polygons (the rings as polylines, against their
  *     own union and against the rectangle): pieces of two distinct points
@@ -220,8 +221,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         }
         break;
     }
-    case 2: /* triangulation */
-        st = cg_triangulate64(&in, fill, &out);
+    case 2: /* triangulation, refined to a minimum angle with bit 6 */
+        st = head & 64 ? cg_triangulate_refined64(&in, fill, (double)(get(&r) % 31), &out)
+                       : cg_triangulate64(&in, fill, &out);
         check_status(st, in_range);
         for (size_t t = 0; t < out.ring_count; t++)
             if (out.ring_start[t + 1] - out.ring_start[t] != 3

@@ -85,6 +85,29 @@ cg_status cg_offset(const cg_polygon_set *paths, double delta, const cg_offset_o
 cg_status cg_offset_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, double delta,
                        const cg_offset_options *options, double scale, cg_polygon_set *result);
 
+/* Variable offsets: deltas[i] is the distance at paths->points[i] (one per
+ * point; all >= 0 or all <= 0), interpolated linearly along each edge.  The
+ * band is what a disk sweeps whose centre runs along every edge of the
+ * input paths (as given, not made simple first) while its radius goes from
+ * |delta| at one end to |delta| at the other: the union over the edges of
+ * the convex hull of their two end disks, its arcs drawn with chords
+ * inside the circles within options->arc_tolerance.  Polygons
+ * (options->end CG_OFFSET_END_POLYGON, filled by options->fill) are united
+ * with the band (deltas >= 0) or lose it (deltas <= 0); for
+ * CG_OFFSET_END_JOINED (closed loops) and CG_OFFSET_END_ROUND (open
+ * polylines) the band is the result.  Joins are round (the disks at the
+ * vertices); options->join and miter_limit are not used.  CG_EINVAL for a
+ * NaN or infinite delta, deltas of both signs, another end type or a bad
+ * option; CG_ERANGE when the result may leave the grid; CG_ENOMEM. */
+cg_status cg_offset_variable64(const cg_polygon_set64 *paths, const double *deltas,
+                               const cg_offset_options *options, cg_polygon_set64 *result);
+cg_status cg_offset_variable64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
+                                  const double *deltas, const cg_offset_options *options,
+                                  cg_polygon_set64 *result);
+cg_status cg_offset_variable(const cg_polygon_set *paths, const double *deltas,
+                             const cg_offset_options *options, double scale,
+                             cg_polygon_set *result);
+
 /* ---- clipping against an axis-aligned rectangle ------------------------------ */
 
 /* A rectangle on the integer grid (the boundary belongs to it). */

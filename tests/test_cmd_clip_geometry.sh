@@ -92,6 +92,22 @@ expect 2 "rect too few" "$cg" clip rect 0 0 5 "$tmp/sq.wkt"
 expect 2 "rect bad number" "$cg" clip rect 0 0 5 x "$tmp/sq.wkt"
 expect 0 "rect picture" "$cg" clip rect 0 0 5 5 "$tmp/l.wkt" -o "$tmp/r.png"
 
+# minkowski: a square swept along a segment, a square grown by a square
+echo "POLYGON ((-1 -1, 1 -1, 1 1, -1 1, -1 -1))" > "$tmp/pattern.wkt"
+echo "LINESTRING (0 0, 10 0)" > "$tmp/segment.wkt"
+check "minkowski sum" "$("$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/segment.wkt")" \
+    "MULTIPOLYGON (((-1 -1, 11 -1, 11 1, -1 1, -1 -1)))"
+near "minkowski region" "$("$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/sq.wkt" | wkt_area)" 144 1e-6
+echo "POLYGON ((0 0, 2 0, 0 2, 0 0))" > "$tmp/corner.wkt"
+check "minkowski difference" "$("$cg" clip minkowski difference "$tmp/corner.wkt" "$tmp/segment.wkt")" \
+    "MULTIPOLYGON (((0 -2, 10 -2, 10 0, -2 0, 0 -2)))"
+expect 0 "minkowski picture" "$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/l.wkt" -o "$tmp/m.png"
+expect 2 "minkowski bad op" "$cg" clip minkowski max "$tmp/pattern.wkt" "$tmp/segment.wkt"
+one_line "minkowski bad op"
+expect 2 "minkowski too few" "$cg" clip minkowski sum "$tmp/pattern.wkt"
+expect 2 "minkowski line pattern" "$cg" clip minkowski sum "$tmp/segment.wkt" "$tmp/pattern.wkt"
+expect 1 "minkowski missing" "$cg" clip minkowski sum "$tmp/nothere.wkt" "$tmp/pattern.wkt"
+
 # triangulate: n + 2h - 2 triangles tiling the area
 tris=$("$cg" clip triangulate "$tmp/sq.wkt")
 check "triangles" "$(echo "$tris" | grep -o '((' | wc -l | tr -d ' ')" 8

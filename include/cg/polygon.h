@@ -1,7 +1,8 @@
 /* cg/polygon.h - polygon geometry beyond the boolean operations, on the same
  * exact integer grid (cg/clip.h): offsetting (inflating and deflating
- * polygons, widening polylines), clipping against an axis-aligned rectangle,
- * triangulation and simplification.
+ * polygons, widening polylines), Minkowski sums, clipping against an
+ * axis-aligned rectangle, clipping open paths by polygons, triangulation
+ * (refined to a minimum angle too) and simplification.
  *
  * Every function has an integer form (suffix 64, coordinates within
  * +-CG_CLIP_MAX_COORD) and a double form that scales to the grid as
@@ -107,6 +108,35 @@ cg_status cg_offset_variable64_ws(cg_clip_workspace *ws, const cg_polygon_set64 
 cg_status cg_offset_variable(const cg_polygon_set *paths, const double *deltas,
                              const cg_offset_options *options, double scale,
                              cg_polygon_set *result);
+
+/* ---- Minkowski sums ---------------------------------------------------------- */
+
+typedef enum cg_minkowski_op {
+    CG_MINKOWSKI_SUM,       /* every pattern point plus every path point */
+    CG_MINKOWSKI_DIFFERENCE /* every path point less every pattern point */
+} cg_minkowski_op;
+
+/* The Minkowski sum (or difference) of the region of pattern's rings
+ * (under fill, made simple first) with path: its rings as open polylines
+ * (path_open: the pattern swept along each), or as the region they cover
+ * under fill (the region grown by the pattern).  Built as the union of the
+ * pattern translated to every vertex of the path, the parallelogram each
+ * pattern edge sweeps along each path edge, and (for a region) the region
+ * moved to a point of each pattern polygon; a boolean result.  CG_EINVAL
+ * for an unknown operation or fill; CG_ERANGE when a sum of coordinates
+ * may leave the grid; CG_ENOMEM. */
+cg_status cg_minkowski64(cg_minkowski_op op, const cg_polygon_set64 *pattern,
+                         const cg_polygon_set64 *path, int path_open, cg_clip_fill fill,
+                         cg_polygon_set64 *result);
+cg_status cg_minkowski64_ws(cg_clip_workspace *ws, cg_minkowski_op op,
+                            const cg_polygon_set64 *pattern, const cg_polygon_set64 *path,
+                            int path_open, cg_clip_fill fill, cg_polygon_set64 *result);
+cg_status cg_minkowski(cg_minkowski_op op, const cg_polygon_set *pattern,
+                       const cg_polygon_set *path, int path_open, cg_clip_fill fill, double scale,
+                       cg_polygon_set *result);
+cg_status cg_minkowski_ws(cg_clip_workspace *ws, cg_minkowski_op op, const cg_polygon_set *pattern,
+                          const cg_polygon_set *path, int path_open, cg_clip_fill fill,
+                          double scale, cg_polygon_set *result);
 
 /* ---- clipping against an axis-aligned rectangle ------------------------------ */
 

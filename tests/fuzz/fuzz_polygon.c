@@ -18,6 +18,8 @@
  *     or more; the intersection and the difference together as long as the
  *     paths, and the intersection with the rectangle as long as the
  *     rectangle clip of the lines, within the rounding of the crossings;
+ *   - variable offsets as offsets (bit 7): well formed, inflating never
+ *     loses area, deflating never gains any; Minkowski sums well formed;
  *   - the double API with scale 1 gives the integer API's areas. */
 #include "cg/polygon.h"
 
@@ -154,6 +156,38 @@ static void check_lines(const cg_polygon_set64 *in, const cg_polygon_set64 *simp
     cg_polygon_set64_clear(&by_rect);
 }
 
+/* Variable offsets (the distance at vertex i: delta scaled by i mod 3)
+ * and the Minkowski sum of the first ring's region with the rings (as
+ * paths when the end is round, else as a region). */
+static void check_variable_and_minkowski(const cg_polygon_set64 *in, double delta,
+                                         cg_offset_options *o, i128 area, int in_range)
+{
+    cg_polygon_set64 out = {0}, pattern = {0};
+    double deltas[4 * 32];
+    for (size_t i = 0; i < in->point_count; i++)
+        deltas[i] = delta * (double)(i % 3) / 2;
+    cg_status st = cg_offset_variable64(in, deltas, o, &out);
+    if (st != CG_ERANGE) {
+        check_status(st, 1);
+        check_well_formed(&out);
+        if (o->end == CG_OFFSET_END_POLYGON && delta > 0 && set_twice_area(&out) < area)
+            FAIL();
+        if (o->end == CG_OFFSET_END_POLYGON && delta < 0 && set_twice_area(&out) > area)
+            FAIL();
+    }
+    if (in->ring_count > 0)
+        cg_polygon_set64_add_ring(&pattern, in->points, in->ring_start[1], 1);
+    int open = o->end != CG_OFFSET_END_POLYGON;
+    st = cg_minkowski64(delta < 0 ? CG_MINKOWSKI_DIFFERENCE : CG_MINKOWSKI_SUM, &pattern, in, open,
+                        o->fill, &out);
+    if (st != CG_ERANGE) {
+        check_status(st, in_range);
+        check_well_formed(&out);
+    }
+    cg_polygon_set64_clear(&out);
+    cg_polygon_set64_clear(&pattern);
+}
+
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 {
     reader r = {data, size};
@@ -184,6 +218,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         o.fill = fill;
         o.end = head & 64 ? CG_OFFSET_END_ROUND : CG_OFFSET_END_POLYGON;
         double delta = ((double)(get(&r) % 16) - 8) * scale * 0.75;
+        if (head & 128) {
+            check_variable_and_minkowski(&in, delta, &o, area, in_range);
+            break;
+        }
         st = cg_offset64(&in, delta, &o, &out);
         if (st == CG_ERANGE)
             break; /* the offset itself may leave the grid */

@@ -1,6 +1,6 @@
 /* Gallery: polygon geometry beyond the booleans (chapter 11, cg/polygon.h) -
  * a letter outline offset with each join, inflated and deflated; a polyline
- * widened with each end; polylines clipped by a polygon with holes; a
+ * widened with each end; a Minkowski sum; polylines clipped by a polygon with holes; a
  * polygon with holes triangulated, and refined to a minimum angle; a
  * coastline simplified at several tolerances.  Every picture is made by the
  * very `cg clip ... -o NAME.png` command of its caption, run in-process on
@@ -31,6 +31,10 @@ static const char PATHS[] =
 static const char REGION[] =
     "POLYGON ((0 0, 100 0, 100 100, 0 100, 0 0), "
     "(15 60, 40 60, 40 85, 15 85, 15 60), (60 15, 85 15, 85 40, 60 40, 60 15))";
+/* A small triangle and a spiral path for the Minkowski sum. */
+static const char PEN[] = "POLYGON ((-4 -3, 4 -3, 0 5, -4 -3))";
+static const char SPIRAL[] =
+    "LINESTRING (0 0, 20 0, 20 20, -20 20, -20 -20, 40 -20, 40 40, -40 40)";
 /* A house with a square window and a triangular one. */
 static const char HOUSE[] = "POLYGON ((0 0, 100 0, 100 60, 50 100, 0 60, 0 0), "
                             "(20 20, 20 40, 40 40, 40 20, 20 20), (60 20, 70 50, 80 20, 60 20))";
@@ -143,6 +147,19 @@ static int lines(demo_context *c)
     return r;
 }
 
+static int minkowski(demo_context *c)
+{
+    int r = write_text(c, "polygon-pen.wkt", PEN) | write_text(c, "polygon-spiral.wkt", SPIRAL);
+    if (r == 0)
+        r = shot(c, "polygon-minkowski.png",
+                 "The Minkowski sum of a triangle with a spiral path: the triangle at every "
+                 "vertex united with the parallelogram each of its edges sweeps along each path "
+                 "edge",
+                 "cg clip minkowski sum polygon-pen.wkt polygon-spiral.wkt -o "
+                 "polygon-minkowski.png");
+    return r;
+}
+
 static int triangulations(demo_context *c)
 {
     int r = write_text(c, "polygon-house.wkt", HOUSE);
@@ -210,6 +227,7 @@ static int coastline(demo_context *c)
 static int render(demo_context *context)
 {
     int r = offsets(context);
+    r |= minkowski(context);
     r |= lines(context);
     r |= triangulations(context);
     r |= coastline(context);

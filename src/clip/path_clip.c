@@ -50,13 +50,11 @@ typedef struct split {
 } split;
 
 typedef CORE_ARRAY(split) split_array;
-typedef CORE_ARRAY(cg_point64) point_array;
 typedef CORE_ARRAY(ray) ray_array;
 
-/* The pieces being built: the one open gathers its points. */
+/* The pieces being built, and whether one is open. */
 typedef struct pieces {
-    cg_polygon_set64 *out;
-    point_array open;
+    polygon_pieces built;
     int is_open;
 } pieces;
 
@@ -102,23 +100,6 @@ static int stretch_from_rays(int64_t dx, int64_t dy, const ray *rays, size_t cou
         }
     }
     return rays[best].inside_after ? STRETCH_INSIDE : STRETCH_OUTSIDE;
-}
-
-/* The winding number of p (on no edge) for the rings of region. */
-static int winding_number(const cg_polygon_set64 *region, cg_point64 p)
-{
-    int w = 0;
-    for (size_t r = 0; r < region->ring_count; r++) {
-        size_t a = region->ring_start[r], b = region->ring_start[r + 1];
-        for (size_t i = a; i < b; i++) {
-            cg_point64 u = region->points[i], v = region->points[i + 1 < b ? i + 1 : a];
-            if (u.y <= p.y && v.y > p.y && polygon_orient(u, v, p) > 0)
-                w++;
-            else if (v.y <= p.y && u.y > p.y && polygon_orient(u, v, p) < 0)
-                w--;
-        }
-    }
-    return w;
 }
 
 static int compare_splits(const split *a, const split *b)
@@ -208,23 +189,14 @@ static cg_point64 split_point(cg_point64 a, cg_point64 b, const split *s)
 
 static cg_status piece_add(pieces *out, cg_point64 p)
 {
-    if (out->open.count > 0) {
-        cg_point64 last = out->open.data[out->open.count - 1];
-        if (last.x == p.x && last.y == p.y)
-            return CG_OK;
-    }
-    return core_array_push(&out->open, p);
+    return polygon_piece_add(&out->built, p);
 }
 
 /* Ends the open piece (kept when it has two points or more). */
 static cg_status piece_end(pieces *out)
 {
-    cg_status st = CG_OK;
-    if (out->is_open && out->open.count >= 2)
-        st = cg_polygon_set64_add_ring(out->out, out->open.data, out->open.count, 1);
-    out->open.count = 0;
     out->is_open = 0;
-    return st;
+    return polygon_piece_end(&out->built, 2);
 }
 
 /* A boundary point p of the path after which the path goes `stretch`. */
@@ -264,7 +236,7 @@ static cg_status clip_path(pieces *out, cg_clip_op op, const cg_polygon_set64 *r
     cg_status st = CG_OK;
     int started = 0;
     out->is_open = 0;
-    out->open.count = 0;
+    out->built.open.count = 0;
     for (size_t i = 0; i + 1 < n && st == CG_OK; i++) {
         cg_point64 a = p[i], b = p[i + 1];
         if (a.x == b.x && a.y == b.y)
@@ -278,8 +250,8 @@ static cg_status clip_path(pieces *out, cg_clip_op op, const cg_polygon_set64 *r
         sort_splits(splits->data, splits->count);
         if (!started && (splits->count == 0 || splits->data[0].num != 0)) {
             /* the path starts on no edge */
-            if (winding_number(region, a) != 0 ? op == CG_CLIP_INTERSECTION
-                                               : op == CG_CLIP_DIFFERENCE) {
+            if (polygon_winding_number(region, a) != 0 ? op == CG_CLIP_INTERSECTION
+                                                       : op == CG_CLIP_DIFFERENCE) {
                 out->is_open = 1;
                 st = piece_add(out, a);
             }
@@ -322,7 +294,7 @@ cg_status cg_clip_lines64_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_poly
         return CG_ERANGE;
     cg_polygon_set64 region = {0}, none = {0}, own = {0};
     st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, clip, clip_fill, &none, clip_fill, &region);
-    pieces out = {&own, {0}, 0};
+    pieces out = {{&own, {0}}, 0};
     split_array splits = {0};
     ray_array rays = {0};
     for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
@@ -331,7 +303,7 @@ cg_status cg_clip_lines64_ws(cg_clip_workspace *ws, cg_clip_op op, const cg_poly
             st = clip_path(&out, op, &region, paths->points + paths->ring_start[r], n, &splits,
                            &rays);
     }
-    core_array_free(&out.open);
+    core_array_free(&out.built.open);
     core_array_free(&splits);
     core_array_free(&rays);
     cg_polygon_set64_clear(&region);

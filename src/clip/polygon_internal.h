@@ -7,6 +7,8 @@
 
 #include "cg/polygon.h"
 
+#include "../core/array.h"
+
 __extension__ typedef __int128 polygon_i128;
 
 /* The grid of a double API call: multiply by an explicit scale, or
@@ -42,6 +44,20 @@ cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest);
 void polygon_drop_slivers(cg_polygon_set64 *set);
 /* Sign of the cross product (b - a) x (c - a), exact. */
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c);
+
+/* The winding number of p (on no edge) for the rings of set. */
+int polygon_winding_number(const cg_polygon_set64 *set, cg_point64 p);
+
+/* Open paths cut into pieces (rectangle and polygon clipping of lines):
+ * the piece being built gathers its points, repeated points dropped. */
+typedef struct polygon_pieces {
+    cg_polygon_set64 *result;
+    CORE_ARRAY(cg_point64) open;
+} polygon_pieces;
+cg_status polygon_piece_add(polygon_pieces *pieces, cg_point64 p);
+/* Ends the piece being built: a path of the result when it has `fewest`
+ * points or more (dropped otherwise). */
+cg_status polygon_piece_end(polygon_pieces *pieces, size_t fewest);
 
 /* A signed 256-bit integer: magnitude in limbs (least significant first)
  * and a sign (never negative when zero). */

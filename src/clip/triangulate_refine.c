@@ -266,23 +266,6 @@ static size_t mark_encroached(refinement *r)
     return marked;
 }
 
-/* The winding number of p for the rings (p on no edge). */
-static int winding(const cg_polygon_set64 *rings, cg_point64 p)
-{
-    int w = 0;
-    for (size_t k = 0; k < rings->ring_count; k++) {
-        size_t a = rings->ring_start[k], b = rings->ring_start[k + 1];
-        for (size_t i = a; i < b; i++) {
-            cg_point64 u = rings->points[i], v = rings->points[i + 1 < b ? i + 1 : a];
-            if (u.y <= p.y && v.y > p.y && polygon_orient(u, v, p) > 0)
-                w++;
-            else if (v.y <= p.y && u.y > p.y && polygon_orient(u, v, p) < 0)
-                w--;
-        }
-    }
-    return w;
-}
-
 /* The circumcentre of a, b, c on the grid; 0 when it is off it. */
 static int circumcentre(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 *out)
 {
@@ -323,7 +306,7 @@ static int try_centre(refinement *r, cg_point64 c)
     }
     if (encroached)
         return 2;
-    return !on_boundary && !near_whole && winding(&r->rings, c) != 0;
+    return !on_boundary && !near_whole && polygon_winding_number(&r->rings, c) != 0;
 }
 
 /* The set of used vertices: open addressing, room for twice `most`. */

@@ -1,9 +1,10 @@
 # Polygon geometry (cg/polygon.h) checked against GEOS: offsets against
 # GEOSBufferWithStyle, rectangle clips and triangulations against GEOS's
-# overlay and validity.  Without GEOS each test says it is skipped.
+# overlay and validity, open paths clipped against GEOSIntersection and
+# GEOSDifference.  Without GEOS each test says it is skipped.
 find_library(CG_POLYGON_GEOS_LIBRARY NAMES geos_c)
 find_path(CG_POLYGON_GEOS_INCLUDE NAMES geos_c.h)
-foreach(name clip_offset_geos clip_polygon_geos)
+foreach(name clip_offset_geos clip_polygon_geos clip_lines_geos)
   if(CG_POLYGON_GEOS_LIBRARY AND CG_POLYGON_GEOS_INCLUDE)
     add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
     target_compile_options(${name} PRIVATE ${CG_WARNINGS})

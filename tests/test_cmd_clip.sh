@@ -78,6 +78,28 @@ echo "POLYGON ((0 0, 1e999 0, 1 1, 0 0))" > "$tmp/inf.wkt"
 expect 1 "infinite" "$cg" clip boolean union "$tmp/inf.wkt" "$tmp/a.wkt"
 echo "LINESTRING (0 0, 1 1)" > "$tmp/line.wkt"
 expect 1 "not a polygon" "$cg" clip boolean union "$tmp/line.wkt" "$tmp/a.wkt"
+one_line "union of lines"
+grep -q "only intersection and difference" "$tmp/err" && pass || fail "union of lines: $(cat "$tmp/err")"
+# open paths: the pieces in order, the boundary inside for the intersection only
+echo "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (3 3, 3 7, 7 7, 7 3, 3 3))" > "$tmp/holed.wkt"
+echo "MULTILINESTRING ((-5 5, 15 5), (-5 0, 5 0, 5 -5), (-5 5, 0 10, -5 15))" > "$tmp/lines.wkt"
+check "lines intersection" "$("$cg" clip boolean intersection "$tmp/lines.wkt" "$tmp/holed.wkt")" \
+    "MULTILINESTRING ((0 5, 3 5), (7 5, 10 5), (0 0, 5 0))"
+check "lines difference" "$("$cg" clip boolean difference "$tmp/lines.wkt" "$tmp/holed.wkt")" \
+    "MULTILINESTRING ((-5 5, 0 5), (3 5, 7 5), (10 5, 15 5), (-5 0, 0 0), (5 0, 5 -5), (-5 5, 0 10), (0 10, -5 15))"
+check "line backwards" "$(echo "LINESTRING (15 5, -5 5)" | "$cg" clip boolean intersection - "$tmp/holed.wkt")" \
+    "MULTILINESTRING ((10 5, 7 5), (3 5, 0 5))"
+check "line missing" "$(echo "LINESTRING (20 20, 30 30)" | "$cg" clip boolean intersection - "$tmp/holed.wkt")" \
+    "MULTILINESTRING EMPTY"
+"$cg" clip boolean intersection "$tmp/lines.wkt" "$tmp/holed.wkt" --repeat 3 > /dev/null 2> "$tmp/time"
+if grep -Eq '^boolean: [0-9]+\.[0-9]{2} ms$' "$tmp/time"; then pass; else fail "lines timing: $(cat "$tmp/time")"; fi
+expect 0 "lines picture" "$cg" clip boolean difference "$tmp/lines.wkt" "$tmp/holed.wkt" -o "$tmp/lines.png"
+check "lines picture size" "$(png_size "$tmp/lines.png")" "640x640"
+expect 1 "lines xor" "$cg" clip boolean xor "$tmp/lines.wkt" "$tmp/holed.wkt"
+expect 1 "clip by lines" "$cg" clip boolean intersection "$tmp/holed.wkt" "$tmp/lines.wkt"
+one_line "clip by lines"
+echo "LINESTRING (0 0, nan 1)" > "$tmp/nanline.wkt"
+expect 1 "nan line" "$cg" clip boolean intersection "$tmp/nanline.wkt" "$tmp/holed.wkt"
 expect 1 "missing file" "$cg" clip boolean union "$tmp/nothere.wkt" "$tmp/a.wkt"
 expect 2 "bad op" "$cg" clip boolean merge "$tmp/a.wkt" "$tmp/b.wkt"
 expect 2 "bad fill" "$cg" clip boolean union "$tmp/a.wkt" "$tmp/b.wkt" --fill odd

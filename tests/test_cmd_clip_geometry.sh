@@ -92,6 +92,22 @@ expect 2 "rect too few" "$cg" clip rect 0 0 5 "$tmp/sq.wkt"
 expect 2 "rect bad number" "$cg" clip rect 0 0 5 x "$tmp/sq.wkt"
 expect 0 "rect picture" "$cg" clip rect 0 0 5 5 "$tmp/l.wkt" -o "$tmp/r.png"
 
+# minkowski: a square swept along a segment, a square grown by a square
+echo "POLYGON ((-1 -1, 1 -1, 1 1, -1 1, -1 -1))" > "$tmp/pattern.wkt"
+echo "LINESTRING (0 0, 10 0)" > "$tmp/segment.wkt"
+check "minkowski sum" "$("$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/segment.wkt")" \
+    "MULTIPOLYGON (((-1 -1, 11 -1, 11 1, -1 1, -1 -1)))"
+near "minkowski region" "$("$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/sq.wkt" | wkt_area)" 144 1e-6
+echo "POLYGON ((0 0, 2 0, 0 2, 0 0))" > "$tmp/corner.wkt"
+check "minkowski difference" "$("$cg" clip minkowski difference "$tmp/corner.wkt" "$tmp/segment.wkt")" \
+    "MULTIPOLYGON (((0 -2, 10 -2, 10 0, -2 0, 0 -2)))"
+expect 0 "minkowski picture" "$cg" clip minkowski sum "$tmp/pattern.wkt" "$tmp/l.wkt" -o "$tmp/m.png"
+expect 2 "minkowski bad op" "$cg" clip minkowski max "$tmp/pattern.wkt" "$tmp/segment.wkt"
+one_line "minkowski bad op"
+expect 2 "minkowski too few" "$cg" clip minkowski sum "$tmp/pattern.wkt"
+expect 2 "minkowski line pattern" "$cg" clip minkowski sum "$tmp/segment.wkt" "$tmp/pattern.wkt"
+expect 1 "minkowski missing" "$cg" clip minkowski sum "$tmp/nothere.wkt" "$tmp/pattern.wkt"
+
 # triangulate: n + 2h - 2 triangles tiling the area
 tris=$("$cg" clip triangulate "$tmp/sq.wkt")
 check "triangles" "$(echo "$tris" | grep -o '((' | wc -l | tr -d ' ')" 8
@@ -99,6 +115,29 @@ near "triangles area" "$(echo "$tris" | wkt_area)" 96 1e-6
 expect 2 "triangulate lines" "$cg" clip triangulate "$tmp/l.wkt"
 expect 2 "triangulate no file" "$cg" clip triangulate
 expect 0 "triangulate picture" "$cg" clip triangulate "$tmp/sq.wkt" -o "$tmp/t.png"
+# --min-angle: points added, the area kept, every angle at least A (awk
+# measures each triangle's smallest angle)
+echo "POLYGON ((0 0, 40 0, 40 3, 0 3, 0 0))" > "$tmp/thin.wkt"
+refined=$("$cg" clip triangulate "$tmp/thin.wkt" --min-angle 20)
+near "refined area" "$(echo "$refined" | wkt_area)" 120 1e-6
+n=$(echo "$refined" | grep -o '((' | wc -l | tr -d ' ')
+[ "$n" -gt 10 ] && pass || fail "refined: $n triangles"
+smallest=$("$cg" clip triangulate "$tmp/sq.wkt" --min-angle 30 | tr -d '\n' | sed 's/[A-Za-z]//g' |
+    tr '(' '\n' | grep , | tr -d ')' | awk -F, '{
+        for (j = 1; j <= 3; j++) { split($j, xy, " "); x[j] = xy[1]; y[j] = xy[2] }
+        for (j = 1; j <= 3; j++) {
+            a = j % 3 + 1; b = (j + 1) % 3 + 1
+            ux = x[a] - x[j]; uy = y[a] - y[j]; vx = x[b] - x[j]; vy = y[b] - y[j]
+            t = atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 45 / atan2(1, 1); if (t < 0) t = -t
+            if (min == "" || t < min) min = t
+        }
+    } END { printf "%.3f", min }')
+awk -v m="$smallest" 'BEGIN { exit !(m >= 29.999) }' && pass || fail "min-angle 30: smallest angle $smallest"
+expect 2 "min-angle too large" "$cg" clip triangulate "$tmp/sq.wkt" --min-angle 31
+one_line "min-angle too large"
+grep -q "from 0 to 30" "$tmp/err" && pass || fail "min-angle message: $(cat "$tmp/err")"
+expect 2 "min-angle nan" "$cg" clip triangulate "$tmp/sq.wkt" --min-angle nan
+expect 2 "min-angle missing" "$cg" clip triangulate "$tmp/sq.wkt" --min-angle
 
 # simplify: the near-collinear vertex goes, the triangle stays
 echo "POLYGON ((0 0, 5 0.01, 10 0, 10 10, 0 10))" > "$tmp/n.wkt"

@@ -368,8 +368,10 @@ static cg_status build_band(offset_band *band, const cg_polygon_set64 *paths, cg
     CORE_ARRAY(cg_point64) clean = {0};
     cg_status st = CG_OK;
     for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
-        const cg_point64 *p = clip_ring_points(paths, r);
         size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
+        if (n == 0)
+            continue; /* paths->points may be NULL when no ring has points */
+        const cg_point64 *p = paths->points + paths->ring_start[r];
         clean.count = 0;
         st = core_array_reserve_for(&clean, n);
         for (size_t i = 0; i < n && st == CG_OK; i++)

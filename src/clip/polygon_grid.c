@@ -137,6 +137,41 @@ cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest)
     return CG_OK;
 }
 
+int polygon_winding_number(const cg_polygon_set64 *set, cg_point64 p)
+{
+    int w = 0;
+    for (size_t r = 0; r < set->ring_count; r++) {
+        size_t a = set->ring_start[r], b = set->ring_start[r + 1];
+        for (size_t i = a; i < b; i++) {
+            cg_point64 u = set->points[i], v = set->points[i + 1 < b ? i + 1 : a];
+            if (u.y <= p.y && v.y > p.y && polygon_orient(u, v, p) > 0)
+                w++;
+            else if (v.y <= p.y && u.y > p.y && polygon_orient(u, v, p) < 0)
+                w--;
+        }
+    }
+    return w;
+}
+
+cg_status polygon_piece_add(polygon_pieces *pieces, cg_point64 p)
+{
+    if (pieces->open.count > 0) {
+        cg_point64 last = pieces->open.data[pieces->open.count - 1];
+        if (last.x == p.x && last.y == p.y)
+            return CG_OK;
+    }
+    return core_array_push(&pieces->open, p);
+}
+
+cg_status polygon_piece_end(polygon_pieces *pieces, size_t fewest)
+{
+    cg_status st = CG_OK;
+    if (pieces->open.count >= fewest && pieces->open.count > 0)
+        st = cg_polygon_set64_add_ring(pieces->result, pieces->open.data, pieces->open.count, 1);
+    pieces->open.count = 0;
+    return st;
+}
+
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c)
 {
     polygon_i128 d = (polygon_i128)(b.x - a.x) * (c.y - a.y)

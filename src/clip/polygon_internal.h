@@ -1,11 +1,13 @@
 /* Private pieces shared by the polygon-geometry files of the clip module
- * (offset, rectangle clipping, triangulation, simplification): the grid of
+ * (offset, rectangle clipping, open paths, triangulation, simplification): the grid of
  * the double API and small exact helpers on int64 rings.  They use only the
  * boolean engine's public API (cg/clip.h). */
 #ifndef CG_CLIP_POLYGON_INTERNAL_H
 #define CG_CLIP_POLYGON_INTERNAL_H
 
 #include "cg/polygon.h"
+
+#include "../core/array.h"
 
 __extension__ typedef __int128 polygon_i128;
 
@@ -44,5 +46,37 @@ cg_status polygon_set64_check_range(const cg_polygon_set64 *set);
 void polygon_drop_slivers(cg_polygon_set64 *set);
 /* Sign of the cross product (b - a) x (c - a), exact. */
 int polygon_orient(cg_point64 a, cg_point64 b, cg_point64 c);
+
+/* The winding number of p (on no edge) for the rings of set. */
+int polygon_winding_number(const cg_polygon_set64 *set, cg_point64 p);
+
+/* Open paths cut into pieces (rectangle and polygon clipping of lines):
+ * the piece being built gathers its points, repeated points dropped. */
+typedef struct polygon_pieces {
+    cg_polygon_set64 *result;
+    CORE_ARRAY(cg_point64) open;
+} polygon_pieces;
+cg_status polygon_piece_add(polygon_pieces *pieces, cg_point64 p);
+/* Ends the piece being built: a path of the result when it has `fewest`
+ * points or more (dropped otherwise). */
+cg_status polygon_piece_end(polygon_pieces *pieces, size_t fewest);
+
+/* A signed 256-bit integer: magnitude in limbs (least significant first)
+ * and a sign (never negative when zero). */
+typedef struct polygon_wide {
+    uint64_t limb[4];
+    int negative;
+} polygon_wide;
+
+/* The product of two signed 128-bit values, exactly. */
+polygon_wide polygon_wide_mul(polygon_i128 a, polygon_i128 b);
+/* a + b, exactly while the magnitude stays below 2^256. */
+polygon_wide polygon_wide_add(polygon_wide a, polygon_wide b);
+int polygon_wide_sign(polygon_wide w);
+/* The sign of a * b - c * d, exact for values below 2^126 in magnitude. */
+int polygon_compare_products(polygon_i128 a, polygon_i128 b, polygon_i128 c, polygon_i128 d);
+/* numerator / denominator rounded to the nearest integer (halves away from
+ * zero); the denominator is not zero and the quotient fits int64. */
+int64_t polygon_divide_rounded(polygon_i128 numerator, polygon_i128 denominator);
 
 #endif

@@ -47,26 +47,13 @@ static int inside(side s, cg_point64 p)
     return s.sign > 0 ? c >= s.limit : c <= s.limit;
 }
 
-/* numerator / denominator rounded to the nearest integer (halves away from
- * zero); the denominator is not zero. */
-static int64_t divide_rounded(polygon_i128 numerator, polygon_i128 denominator)
-{
-    if (denominator < 0) {
-        numerator = -numerator;
-        denominator = -denominator;
-    }
-    polygon_i128 half = denominator / 2;
-    return (int64_t)(numerator >= 0 ? (numerator + half) / denominator
-                                    : -((-numerator + half) / denominator));
-}
-
 /* Where the edge a-b (one end on each side of the line) crosses the side's
  * line, the other coordinate rounded to the grid. */
 static cg_point64 crossing(side s, cg_point64 a, cg_point64 b)
 {
     int64_t ca = coordinate(a, s.axis), cb = coordinate(b, s.axis);
     int64_t oa = coordinate(a, !s.axis), ob = coordinate(b, !s.axis);
-    int64_t other = oa + divide_rounded((polygon_i128)(ob - oa) * (s.limit - ca), cb - ca);
+    int64_t other = oa + polygon_divide_rounded((polygon_i128)(ob - oa) * (s.limit - ca), cb - ca);
     return s.axis ? (cg_point64){other, s.limit} : (cg_point64){s.limit, other};
 }
 
@@ -170,33 +157,6 @@ cg_status cg_rect_clip64(const cg_polygon_set64 *paths, cg_clip_fill fill, cg_re
 
 /* ---- polylines -------------------------------------------------------------- */
 
-/* The pieces of result being built: the one open gathers its points. */
-typedef struct pieces {
-    cg_polygon_set64 *result;
-    point_array open;
-} pieces;
-
-/* Appends p to the open piece (starting one when none is open). */
-static cg_status piece_add(pieces *out, cg_point64 p)
-{
-    if (out->open.count > 0) {
-        cg_point64 last = out->open.data[out->open.count - 1];
-        if (last.x == p.x && last.y == p.y)
-            return CG_OK;
-    }
-    return core_array_push(&out->open, p);
-}
-
-/* Ends the open piece, if any, as a path of the result. */
-static cg_status piece_end(pieces *out)
-{
-    if (out->open.count == 0)
-        return CG_OK;
-    cg_status st = cg_polygon_set64_add_ring(out->result, out->open.data, out->open.count, 1);
-    out->open.count = 0;
-    return st;
-}
-
 static cg_point64 along(cg_point64 a, cg_point64 b, double t, cg_rect64 rect)
 {
     double x = nearbyint((double)a.x + t * (double)(b.x - a.x));
@@ -230,28 +190,28 @@ static int cut_segment(cg_point64 a, cg_point64 b, cg_rect64 rect, double *t0, d
     return *t0 <= *t1;
 }
 
-static cg_status clip_polyline(pieces *out, const cg_point64 *p, size_t n, cg_rect64 rect)
+static cg_status clip_polyline(polygon_pieces *out, const cg_point64 *p, size_t n, cg_rect64 rect)
 {
     cg_status st = CG_OK;
     if (n == 1 && p[0].x >= rect.xmin && p[0].x <= rect.xmax && p[0].y >= rect.ymin
         && p[0].y <= rect.ymax)
-        st = piece_add(out, p[0]);
+        st = polygon_piece_add(out, p[0]);
     for (size_t i = 0; i + 1 < n && st == CG_OK; i++) {
         double t0, t1;
         if (!cut_segment(p[i], p[i + 1], rect, &t0, &t1)) {
-            st = piece_end(out);
+            st = polygon_piece_end(out, 1);
             continue;
         }
         if (t0 > 0)
-            st = piece_end(out); /* it comes (back) in here */
+            st = polygon_piece_end(out, 1); /* it comes (back) in here */
         if (st == CG_OK)
-            st = piece_add(out, t0 > 0 ? along(p[i], p[i + 1], t0, rect) : p[i]);
+            st = polygon_piece_add(out, t0 > 0 ? along(p[i], p[i + 1], t0, rect) : p[i]);
         if (st == CG_OK)
-            st = piece_add(out, t1 < 1 ? along(p[i], p[i + 1], t1, rect) : p[i + 1]);
+            st = polygon_piece_add(out, t1 < 1 ? along(p[i], p[i + 1], t1, rect) : p[i + 1]);
         if (st == CG_OK && t1 < 1)
-            st = piece_end(out); /* and leaves */
+            st = polygon_piece_end(out, 1); /* and leaves */
     }
-    return st == CG_OK ? piece_end(out) : st;
+    return st == CG_OK ? polygon_piece_end(out, 1) : st;
 }
 
 cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
@@ -261,7 +221,7 @@ cg_status cg_rect_clip_lines64(const cg_polygon_set64 *paths, cg_rect64 rect,
     if (st != CG_OK)
         return st;
     cg_polygon_set64 own = {0};
-    pieces out = {&own, {0}};
+    polygon_pieces out = {&own, {0}};
     for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
         size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
         if (n > 0) /* paths->points may be NULL when no path has points */

@@ -427,15 +427,19 @@ static uint32_t vertex_of(const mesh *m, size_t count, cg_point64 p)
     return (uint32_t)(found - m->points.data);
 }
 
-/* The distinct points of the rings, sorted, then the enclosing triangle's
- * three corners and its one triangle. */
-static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, size_t *count)
+/* The distinct points of the rings and the extra points, sorted, then the
+ * enclosing triangle's three corners and its one triangle. */
+static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, const cg_point64 *extra,
+                            size_t extra_count, size_t *count)
 {
-    size_t n = rings->point_count;
+    size_t n = rings->point_count + extra_count;
     if (core_array_reserve_for(&m->points, n + 3) != CG_OK)
         return CG_ENOMEM;
-    if (n > 0) /* memcpy wants non-null pointers even for no points */
-        memcpy(m->points.data, rings->points, n * sizeof *rings->points);
+    /* memcpy wants non-null pointers even for no points */
+    if (rings->point_count > 0)
+        memcpy(m->points.data, rings->points, rings->point_count * sizeof *rings->points);
+    if (extra_count > 0)
+        memcpy(m->points.data + rings->point_count, extra, extra_count * sizeof *extra);
     core_sort(m->points.data, n, sizeof *m->points.data, compare_points);
     size_t distinct = 0;
     for (size_t i = 0; i < n; i++)
@@ -554,13 +558,15 @@ static cg_status mark_inside(mesh *m, const cg_polygon_set64 *rings, size_t coun
     return CG_OK;
 }
 
-/* Steps 2 to 5 on simple rings; the inside triangles into result. */
-static cg_status triangulate_rings(mesh *m, const cg_polygon_set64 *rings, cg_polygon_set64 *result)
+/* Steps 2 to 5 on simple rings and extra points; the inside triangles into
+ * result. */
+static cg_status triangulate_rings(mesh *m, const cg_polygon_set64 *rings, const cg_point64 *extra,
+                                   size_t extra_count, cg_polygon_set64 *result)
 {
     size_t count;
-    if (rings->point_count > ((size_t)1 << 30))
+    if (rings->point_count + extra_count > ((size_t)1 << 30))
         return CG_EUNSUPPORTED;
-    cg_status st = start_mesh(m, rings, &count);
+    cg_status st = start_mesh(m, rings, extra, extra_count, &count);
     if (st == CG_OK)
         st = insert_all(m, count);
     for (size_t r = 0; r < rings->ring_count && st == CG_OK; r++) {
@@ -584,6 +590,18 @@ static cg_status triangulate_rings(mesh *m, const cg_polygon_set64 *rings, cg_po
     return st;
 }
 
+cg_status triangulate_cdt(const cg_polygon_set64 *rings, const cg_point64 *extra,
+                          size_t extra_count, cg_polygon_set64 *result)
+{
+    mesh m = {0};
+    cg_status st = triangulate_rings(&m, rings, extra, extra_count, result);
+    core_array_free(&m.points);
+    core_array_free(&m.triangles);
+    core_array_free(&m.corner_of);
+    core_array_free(&m.stack);
+    return st;
+}
+
 cg_status cg_triangulate64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
                               cg_clip_fill fill, cg_polygon_set64 *triangles)
 {
@@ -591,13 +609,8 @@ cg_status cg_triangulate64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *pat
         return CG_EINVAL;
     cg_polygon_set64 simple = {0}, none = {0};
     cg_status st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, paths, fill, &none, fill, &simple);
-    mesh m = {0};
     if (st == CG_OK)
-        st = triangulate_rings(&m, &simple, triangles);
-    core_array_free(&m.points);
-    core_array_free(&m.triangles);
-    core_array_free(&m.corner_of);
-    core_array_free(&m.stack);
+        st = triangulate_cdt(&simple, NULL, 0, triangles);
     cg_polygon_set64_clear(&simple);
     return st;
 }
@@ -608,10 +621,34 @@ cg_status cg_triangulate64(const cg_polygon_set64 *paths, cg_clip_fill fill,
     return cg_triangulate64_ws(NULL, paths, fill, triangles);
 }
 
-cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
-                            double scale, cg_polygon_set *triangles)
+cg_status cg_triangulate_refined64_ws(cg_clip_workspace *ws, const cg_polygon_set64 *paths,
+                                      cg_clip_fill fill, double min_angle,
+                                      cg_polygon_set64 *triangles)
 {
-    if (!paths || !triangles)
+    if (!paths || !triangles || (unsigned)fill > CG_CLIP_NEGATIVE
+        || !(min_angle >= 0 && min_angle <= CG_TRIANGULATE_MAX_MIN_ANGLE))
+        return CG_EINVAL;
+    if (min_angle == 0)
+        return cg_triangulate64_ws(ws, paths, fill, triangles);
+    cg_polygon_set64 simple = {0}, none = {0};
+    cg_status st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, paths, fill, &none, fill, &simple);
+    if (st == CG_OK)
+        st = triangulate_refine(&simple, min_angle, triangles);
+    cg_polygon_set64_clear(&simple);
+    return st;
+}
+
+cg_status cg_triangulate_refined64(const cg_polygon_set64 *paths, cg_clip_fill fill,
+                                   double min_angle, cg_polygon_set64 *triangles)
+{
+    return cg_triangulate_refined64_ws(NULL, paths, fill, min_angle, triangles);
+}
+
+cg_status cg_triangulate_refined_ws(cg_clip_workspace *ws, const cg_polygon_set *paths,
+                                    cg_clip_fill fill, double min_angle, double scale,
+                                    cg_polygon_set *triangles)
+{
+    if (!paths || !triangles || !(min_angle >= 0 && min_angle <= CG_TRIANGULATE_MAX_MIN_ANGLE))
         return CG_EINVAL;
     polygon_grid grid;
     cg_polygon_set64 in = {0}, out = {0};
@@ -619,7 +656,7 @@ cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, 
     if (st == CG_OK)
         st = polygon_set_to_grid(paths, grid, &in);
     if (st == CG_OK)
-        st = cg_triangulate64_ws(ws, &in, fill, &out);
+        st = cg_triangulate_refined64_ws(ws, &in, fill, min_angle, &out);
     if (st == CG_OK)
         st = polygon_set_from_grid(&out, grid, triangles);
     cg_polygon_set64_clear(&in);
@@ -627,8 +664,20 @@ cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, 
     return st;
 }
 
+cg_status cg_triangulate_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
+                            double scale, cg_polygon_set *triangles)
+{
+    return cg_triangulate_refined_ws(ws, paths, fill, 0, scale, triangles);
+}
+
 cg_status cg_triangulate(const cg_polygon_set *paths, cg_clip_fill fill, double scale,
                          cg_polygon_set *triangles)
 {
     return cg_triangulate_ws(NULL, paths, fill, scale, triangles);
+}
+
+cg_status cg_triangulate_refined(const cg_polygon_set *paths, cg_clip_fill fill, double min_angle,
+                                 double scale, cg_polygon_set *triangles)
+{
+    return cg_triangulate_refined_ws(NULL, paths, fill, min_angle, scale, triangles);
 }

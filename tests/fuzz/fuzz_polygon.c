@@ -9,9 +9,17 @@
  *     the union, deflating never gains any;
  *   - rectangle clips: every vertex inside the rectangle, the area at most
  *     the union's (and that of the rectangle) plus the rounding;
- *   - triangulations: every triangle counter-clockwise with positive area,
- *     twice their areas summing exactly to twice the union's;
+ *   - triangulations (refined to a minimum angle too): every triangle
+ *     counter-clockwise with positive area, twice their areas summing
+ *     exactly to twice the union's;
  *   - simplification: as many rings as the union, each of 3 points or more;
+ *   - open paths clipped by polygons (the rings as polylines, against their
+ *     own union and against the rectangle): pieces of two distinct points
+ *     or more; the intersection and the difference together as long as the
+ *     paths, and the intersection with the rectangle as long as the
+ *     rectangle clip of the lines, within the rounding of the crossings;
+ *   - variable offsets as offsets (bit 7): well formed, inflating never
+ *     loses area, deflating never gains any; Minkowski sums well formed;
  *   - the double API with scale 1 gives the integer API's areas. */
 #include "cg/polygon.h"
 
@@ -82,6 +90,104 @@ static void check_status(cg_status st, int in_range)
         FAIL();
 }
 
+static double set_length(const cg_polygon_set64 *s)
+{
+    double total = 0;
+    for (size_t r = 0; r < s->ring_count; r++) {
+        if (s->ring_start[r + 1] - s->ring_start[r] < 2)
+            FAIL();
+        for (size_t i = s->ring_start[r]; i + 1 < s->ring_start[r + 1]; i++) {
+            double dx = (double)(s->points[i + 1].x - s->points[i].x);
+            double dy = (double)(s->points[i + 1].y - s->points[i].y);
+            if (dx == 0 && dy == 0)
+                FAIL();
+            total += hypot(dx, dy);
+        }
+    }
+    return total;
+}
+
+static double paths_length(const cg_polygon_set64 *s)
+{
+    double total = 0;
+    for (size_t r = 0; r < s->ring_count; r++)
+        for (size_t i = s->ring_start[r]; i + 1 < s->ring_start[r + 1]; i++)
+            total += hypot((double)(s->points[i + 1].x - s->points[i].x),
+                           (double)(s->points[i + 1].y - s->points[i].y));
+    return total;
+}
+
+/* The rings of in as open paths, clipped by their own union (simple) and by
+ * the rectangle. */
+static void check_lines(const cg_polygon_set64 *in, const cg_polygon_set64 *simple, cg_rect64 rect,
+                        int in_range)
+{
+    cg_polygon_set64 inside = {0}, outside = {0}, window = {0}, by_rect = {0};
+    cg_status st = cg_clip_lines64(CG_CLIP_INTERSECTION, in, simple, CG_CLIP_NON_ZERO, &inside);
+    check_status(st, in_range);
+    if (st == CG_OK) {
+        st = cg_clip_lines64(CG_CLIP_DIFFERENCE, in, simple, CG_CLIP_NON_ZERO, &outside);
+        check_status(st, 1);
+        double slack = 2.0 * (double)(inside.ring_count + outside.ring_count + 1);
+        if (fabs(set_length(&inside) + set_length(&outside) - paths_length(in)) > slack)
+            FAIL();
+    }
+    if (st == CG_OK && rect.xmin < rect.xmax && rect.ymin < rect.ymax) {
+        cg_point64 w[4] = {{rect.xmin, rect.ymin},
+                           {rect.xmax, rect.ymin},
+                           {rect.xmax, rect.ymax},
+                           {rect.xmin, rect.ymax}};
+        cg_polygon_set64_add_ring(&window, w, 4, 1);
+        if (cg_clip_lines64(CG_CLIP_INTERSECTION, in, &window, CG_CLIP_EVEN_ODD, &inside) != CG_OK
+            || cg_rect_clip_lines64(in, rect, &by_rect) != CG_OK)
+            FAIL();
+        double length = 0; /* the rectangle clip keeps pieces of one point */
+        for (size_t r = 0; r < by_rect.ring_count; r++)
+            for (size_t i = by_rect.ring_start[r]; i + 1 < by_rect.ring_start[r + 1]; i++)
+                length += hypot((double)(by_rect.points[i + 1].x - by_rect.points[i].x),
+                                (double)(by_rect.points[i + 1].y - by_rect.points[i].y));
+        double slack = 2.0 * (double)(inside.ring_count + by_rect.ring_count + 1);
+        if (fabs(set_length(&inside) - length) > slack)
+            FAIL();
+    }
+    cg_polygon_set64_clear(&inside);
+    cg_polygon_set64_clear(&outside);
+    cg_polygon_set64_clear(&window);
+    cg_polygon_set64_clear(&by_rect);
+}
+
+/* Variable offsets (the distance at vertex i: delta scaled by i mod 3)
+ * and the Minkowski sum of the first ring's region with the rings (as
+ * paths when the end is round, else as a region). */
+static void check_variable_and_minkowski(const cg_polygon_set64 *in, double delta,
+                                         cg_offset_options *o, i128 area, int in_range)
+{
+    cg_polygon_set64 out = {0}, pattern = {0};
+    double deltas[4 * 32];
+    for (size_t i = 0; i < in->point_count; i++)
+        deltas[i] = delta * (double)(i % 3) / 2;
+    cg_status st = cg_offset_variable64(in, deltas, o, &out);
+    if (st != CG_ERANGE) {
+        check_status(st, 1);
+        check_well_formed(&out);
+        if (o->end == CG_OFFSET_END_POLYGON && delta > 0 && set_twice_area(&out) < area)
+            FAIL();
+        if (o->end == CG_OFFSET_END_POLYGON && delta < 0 && set_twice_area(&out) > area)
+            FAIL();
+    }
+    if (in->ring_count > 0)
+        cg_polygon_set64_add_ring(&pattern, in->points, in->ring_start[1], 1);
+    int open = o->end != CG_OFFSET_END_POLYGON;
+    st = cg_minkowski64(delta < 0 ? CG_MINKOWSKI_DIFFERENCE : CG_MINKOWSKI_SUM, &pattern, in, open,
+                        o->fill, &out);
+    if (st != CG_ERANGE) {
+        check_status(st, in_range);
+        check_well_formed(&out);
+    }
+    cg_polygon_set64_clear(&out);
+    cg_polygon_set64_clear(&pattern);
+}
+
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
 {
     reader r = {data, size};
@@ -112,6 +218,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         o.fill = fill;
         o.end = head & 64 ? CG_OFFSET_END_ROUND : CG_OFFSET_END_POLYGON;
         double delta = ((double)(get(&r) % 16) - 8) * scale * 0.75;
+        if (head & 128) {
+            check_variable_and_minkowski(&in, delta, &o, area, in_range);
+            break;
+        }
         st = cg_offset64(&in, delta, &o, &out);
         if (st == CG_ERANGE)
             break; /* the offset itself may leave the grid */
@@ -129,6 +239,8 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
             v[k] = (int64_t)(get(&r) & 63) * ((int64_t)1 << shift);
         cg_rect64 rect = {v[0] < v[2] ? v[0] : v[2], v[1] < v[3] ? v[1] : v[3],
                           v[0] < v[2] ? v[2] : v[0], v[1] < v[3] ? v[3] : v[1]};
+        if (head & 32)
+            check_lines(&in, &simple, rect, in_range);
         st = head & 64 ? cg_rect_clip_lines64(&in, rect, &out)
                        : cg_rect_clip64(&in, fill, rect, &out);
         check_status(st, in_range);
@@ -147,8 +259,9 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         }
         break;
     }
-    case 2: /* triangulation */
-        st = cg_triangulate64(&in, fill, &out);
+    case 2: /* triangulation, refined to a minimum angle with bit 6 */
+        st = head & 64 ? cg_triangulate_refined64(&in, fill, (double)(get(&r) % 31), &out)
+                       : cg_triangulate64(&in, fill, &out);
         check_status(st, in_range);
         for (size_t t = 0; t < out.ring_count; t++)
             if (out.ring_start[t + 1] - out.ring_start[t] != 3

@@ -1,4 +1,4 @@
-/* cg clip offset | rect | triangulate | simplify: polygon geometry beyond
+/* cg clip offset | minkowski | rect | triangulate | simplify: polygon geometry beyond
  * the boolean operations (cg/polygon.h), WKT in and out. */
 #include "clip_geometry.h"
 #include "clip_paths.h"
@@ -351,11 +351,17 @@ static int rect(int argc, char **argv)
     return run_job(&job, file, &common);
 }
 
+typedef struct triangulate_args {
+    cg_clip_fill fill;
+    double min_angle;
+} triangulate_args;
+
 static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
                                   const cg_polygon_set *input, int open, cg_polygon_set *result)
 {
+    const triangulate_args *a = args;
     (void)open;
-    return cg_triangulate_ws(ws, input, *(const cg_clip_fill *)args, 0, result);
+    return cg_triangulate_refined_ws(ws, input, a->fill, a->min_angle, 0, result);
 }
 
 /* Triangles are made of polygons only. */
@@ -373,21 +379,31 @@ static int triangulate(int argc, char **argv)
 {
     const char *file = NULL;
     common_options common = {0};
-    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
+    triangulate_args args = {CG_CLIP_EVEN_ODD, 0};
     for (int i = 1; i < argc; i++) {
         int taken = take_common("triangulate", argc, argv, &i, &common);
         if (taken == 0)
-            taken = take_fill("triangulate", argc, argv, &i, &fill);
+            taken = take_fill("triangulate", argc, argv, &i, &args.fill);
         if (taken < 0)
             return CLI_USAGE;
         if (taken)
             continue;
-        if (take_operand("triangulate", argv[i], NULL, &file) != 0)
+        if (cli_option_is(argv[i], "--min-angle")) {
+            const char *value = cli_option_value("clip", argc, argv, &i);
+            if (!value || cli_parse_double("clip", "--min-angle", value, &args.min_angle) != 0)
+                return CLI_USAGE;
+            if (!(args.min_angle >= 0 && args.min_angle <= CG_TRIANGULATE_MAX_MIN_ANGLE))
+                return cli_usage_error("clip",
+                                       "triangulate: --min-angle: expected degrees from 0 to %g "
+                                       "(beyond it refinement need not end), got '%s'",
+                                       CG_TRIANGULATE_MAX_MIN_ANGLE, value);
+        } else if (take_operand("triangulate", argv[i], NULL, &file) != 0) {
             return CLI_USAGE;
+        }
     }
     if (!file)
         return cli_usage_error("clip", "triangulate: expected IN");
-    geometry_job job = {"triangulate", triangulate_step, &fill, triangulate_check, 1, 1, 0};
+    geometry_job job = {"triangulate", triangulate_step, &args, triangulate_check, 1, 1, 0};
     return run_job(&job, file, &common);
 }
 
@@ -450,10 +466,83 @@ static int simplify(int argc, char **argv)
     return run_job(&job, file, &common);
 }
 
+typedef struct minkowski_args {
+    cg_minkowski_op op;
+    cg_clip_fill fill;
+    const cg_polygon_set *pattern;
+} minkowski_args;
+
+static cg_status minkowski_step(const void *args, cg_clip_workspace *ws,
+                                const cg_polygon_set *input, int open, cg_polygon_set *result)
+{
+    const minkowski_args *a = args;
+    return cg_minkowski_ws(ws, a->op, a->pattern, input, open, a->fill, 0, result);
+}
+
+/* cg clip minkowski sum|difference PATTERN PATH */
+static int minkowski(int argc, char **argv)
+{
+    const char *operation = NULL, *files[2] = {NULL, NULL};
+    int count = 0;
+    common_options common = {0};
+    minkowski_args args = {CG_MINKOWSKI_SUM, CG_CLIP_EVEN_ODD, NULL};
+    for (int i = 1; i < argc; i++) {
+        int taken = take_common("minkowski", argc, argv, &i, &common);
+        if (taken == 0)
+            taken = take_fill("minkowski", argc, argv, &i, &args.fill);
+        if (taken < 0)
+            return CLI_USAGE;
+        if (taken)
+            continue;
+        if (cli_is_option(argv[i]))
+            return cli_usage_error("clip", "minkowski: unknown option '%s'", argv[i]);
+        if (!operation)
+            operation = argv[i];
+        else if (count < 2)
+            files[count++] = argv[i];
+        else
+            return cli_usage_error("clip", "minkowski: unexpected argument '%s'", argv[i]);
+    }
+    if (count < 2)
+        return cli_usage_error("clip", "minkowski: expected sum|difference PATTERN PATH");
+    if (strcmp(operation, "sum") == 0)
+        args.op = CG_MINKOWSKI_SUM;
+    else if (strcmp(operation, "difference") == 0)
+        args.op = CG_MINKOWSKI_DIFFERENCE;
+    else
+        return cli_usage_error("clip", "minkowski: expected sum or difference, got '%s'",
+                               operation);
+    if (strcmp(files[0], "-") == 0 && strcmp(files[1], "-") == 0)
+        return cli_usage_error("clip", "minkowski: only one of PATTERN and PATH can be '-'");
+    cg_polygon_set pattern = {0}, path = {0}, result = {0};
+    cg_error err;
+    int pattern_open = 0, open = 0, status = CLI_FAILED;
+    if (clip_paths_read(files[0], &pattern, &pattern_open, &err) != CG_OK
+        || clip_paths_read(files[1], &path, &open, &err) != CG_OK) {
+        cli_fail("clip: %s", err.message);
+        goto done;
+    }
+    if (pattern_open) {
+        status = cli_usage_error("clip",
+                                 "minkowski: %s holds line strings; the pattern is a "
+                                 "polygon",
+                                 files[0]);
+        goto done;
+    }
+    args.pattern = &pattern;
+    status = run_timed("minkowski", &common, 1, minkowski_step, &args, &path, open, &result, 0);
+done:
+    cg_polygon_set_clear(&pattern);
+    cg_polygon_set_clear(&path);
+    cg_polygon_set_clear(&result);
+    return status;
+}
+
 int clip_geometry_handles(const char *name)
 {
     return strcmp(name, "offset") == 0 || strcmp(name, "rect") == 0
-           || strcmp(name, "triangulate") == 0 || strcmp(name, "simplify") == 0;
+           || strcmp(name, "minkowski") == 0 || strcmp(name, "triangulate") == 0
+           || strcmp(name, "simplify") == 0;
 }
 
 int clip_geometry_run(int argc, char **argv)
@@ -462,6 +551,8 @@ int clip_geometry_run(int argc, char **argv)
         return offset(argc, argv);
     if (strcmp(argv[0], "rect") == 0)
         return rect(argc, argv);
+    if (strcmp(argv[0], "minkowski") == 0)
+        return minkowski(argc, argv);
     if (strcmp(argv[0], "triangulate") == 0)
         return triangulate(argc, argv);
     if (strcmp(argv[0], "simplify") == 0)

@@ -1,8 +1,11 @@
 /* cg clip line | polygon | boolean: the clipping algorithms of chapter 11. */
 #include "clip_geometry.h"
+#include "clip_paths.h"
 #include "clip_view.h"
 #include "cli.h"
 #include "command.h"
+
+#include "cg/polygon.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -101,26 +104,40 @@ static const cg_rgba8 SUBJECT_FILL = {66, 133, 244, 60}, SUBJECT_LINE = {40, 90,
 static const cg_rgba8 CLIP_FILL = {234, 67, 53, 60}, CLIP_LINE = {190, 40, 30, 255};
 static const cg_rgba8 RESULT_FILL = {251, 188, 5, 230}, RESULT_LINE = {30, 30, 30, 255};
 
-/* The picture of a clip: both operands faint, the result solid on top. */
+/* Strokes every ring of set as an open path. */
+static cg_status stroke_open(cg_image *image, const clip_view *v, const cg_polygon_set *set,
+                             double width, cg_rgba8 color)
+{
+    cg_status st = CG_OK;
+    for (size_t r = 0; st == CG_OK && r < set->ring_count; r++)
+        st = clip_view_polyline(image, v, set->points + set->ring_start[r],
+                                set->ring_start[r + 1] - set->ring_start[r], 0, width, color);
+    return st;
+}
+
+/* The picture of a clip: both operands faint, the result solid on top;
+ * when `open`, a and the result are open paths (drawn as lines). */
 static int draw(const char *path, const cg_polygon_set *a, const cg_polygon_set *b,
-                const cg_polygon_set *result)
+                const cg_polygon_set *result, int open)
 {
     const cg_polygon_set *sets[] = {a, b, result};
     cg_image *image = NULL;
     clip_view v;
     if (clip_view_canvas(sets, 3, PICTURE_SIZE, &image, &v) != CG_OK)
         return cli_fail("clip: out of memory");
-    cg_status st = clip_view_fill(image, &v, a, SUBJECT_FILL);
+    cg_status st = open ? CG_OK : clip_view_fill(image, &v, a, SUBJECT_FILL);
     if (st == CG_OK)
         st = clip_view_fill(image, &v, b, CLIP_FILL);
-    if (st == CG_OK)
+    if (st == CG_OK && !open)
         st = clip_view_fill(image, &v, result, RESULT_FILL);
     if (st == CG_OK)
-        st = clip_view_stroke(image, &v, a, 1.5, SUBJECT_LINE);
+        st = open ? stroke_open(image, &v, a, 1.5, SUBJECT_LINE)
+                  : clip_view_stroke(image, &v, a, 1.5, SUBJECT_LINE);
     if (st == CG_OK)
         st = clip_view_stroke(image, &v, b, 1.5, CLIP_LINE);
     if (st == CG_OK)
-        st = clip_view_stroke(image, &v, result, 2.5, RESULT_LINE);
+        st = open ? stroke_open(image, &v, result, 4, RESULT_LINE)
+                  : clip_view_stroke(image, &v, result, 2.5, RESULT_LINE);
     int status = st == CG_OK ? cli_write_image(image, path)
                              : cli_fail("clip: %s", cg_status_str(st));
     cg_image_free(image);
@@ -184,8 +201,16 @@ static int boolean(int argc, char **argv)
     cg_polygon_set a = {0}, b = {0}, r = {0};
     cg_error err;
     int status = CLI_FAILED;
-    if (clip_wkt_read(files[0], &a, &err) != CG_OK || clip_wkt_read(files[1], &b, &err) != CG_OK) {
+    int open = 0;
+    if (clip_paths_read(files[0], &a, &open, &err) != CG_OK
+        || clip_wkt_read(files[1], &b, &err) != CG_OK) {
         cli_fail("clip: %s", err.message);
+        goto done;
+    }
+    if (open && op != CG_CLIP_INTERSECTION && op != CG_CLIP_DIFFERENCE) {
+        cli_fail("clip: boolean %s: %s holds line strings, which only intersection and "
+                 "difference clip",
+                 ops[op], files[0]);
         goto done;
     }
     double *times = repeat > 0 ? malloc((size_t)repeat * sizeof *times) : NULL;
@@ -196,7 +221,8 @@ static int boolean(int argc, char **argv)
     cg_clip_workspace *ws = repeat > 1 ? cg_clip_workspace_create() : NULL;
     for (long k = 0; k < runs && st == CG_OK; k++) {
         double t0 = cli_now();
-        st = cg_clip_boolean_ws(ws, (cg_clip_op)op, &a, fill, &b, fill, 0, &r);
+        st = open ? cg_clip_lines_ws(ws, (cg_clip_op)op, &a, &b, fill, 0, &r)
+                  : cg_clip_boolean_ws(ws, (cg_clip_op)op, &a, fill, &b, fill, 0, &r);
         if (times)
             times[k] = cli_now() - t0;
     }
@@ -211,9 +237,12 @@ static int boolean(int argc, char **argv)
         free(times);
     }
     if (out) {
-        status = draw(out, &a, &b, &r);
+        status = draw(out, &a, &b, &r, open);
     } else {
-        clip_wkt_write(stdout, &r);
+        if (open)
+            clip_paths_write_lines(stdout, &r);
+        else
+            clip_wkt_write(stdout, &r);
         status = fflush(stdout) == 0 ? CLI_OK : cli_fail("clip: cannot write the result");
     }
 done:
@@ -290,7 +319,7 @@ static int polygon(int argc, char **argv)
         goto done;
     }
     if (out) {
-        status = draw(out, &s, &w, &r);
+        status = draw(out, &s, &w, &r, 0);
     } else {
         clip_wkt_write(stdout, &r);
         status = CLI_OK;
@@ -340,7 +369,10 @@ const cg_command cg_command_clip = {
     "performs the operation N times after reading (through one workspace, which\n"
     "keeps the engine's memory from run to run) and prints the median time on\n"
     "stderr as 'boolean: 1.23 ms'.  Coordinates are rounded to a grid 2^36 times\n"
-    "finer than the largest |coordinate| (see docs/clip.md).\n\n" CLIP_GEOMETRY_USAGE_TEXT,
+    "finer than the largest |coordinate| (see docs/clip.md).  When A holds line\n"
+    "strings (LINESTRING or MULTILINESTRING), intersection prints the pieces of\n"
+    "them inside B (its boundary included) and difference the pieces outside, as a\n"
+    "MULTILINESTRING in order along each line; -o draws them over B.\n\n" CLIP_GEOMETRY_USAGE_TEXT,
     run,
     clip_syntaxes,
 };

@@ -24,6 +24,7 @@
 #include "cg/hemesh.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
+#include "cg/render.h"
 #include "cg/xform.h"
 
 #include <stddef.h>
@@ -204,6 +205,22 @@ cg_status cg_backface_steps(const cg_mesh *mesh, cg_mat4 model, const cg_camera 
 cg_status cg_zbuffer_pixel_steps(const cg_mesh *mesh, cg_mat4 model, const cg_camera *camera,
                                  int width, int height, int x, int y, int cull, cg_step_fn step,
                                  void *user);
+
+/* The painter's algorithm (5.2) as cg_renderer_draw runs it: draws one
+ * frame into image with the renderer's options and CG_RENDER_PAINTER (the
+ * same bytes as cg_renderer_draw with that algorithm) and reports the
+ * renderer's own steps: phase "sorted", the polygons (triangles after
+ * culling and clipping, in window x, y and depth) by farthest depth (k,
+ * polygon, triangle, z_max, z_min, x_extent, y_extent); phase "tests", for
+ * the list's head P each Q whose depth range reaches P's, Newell's tests in
+ * order up to the first that passes (P, Q, z_extents, x_extents,
+ * y_extents, P_behind_Q_plane, Q_front_of_P_plane, projections: "-" when
+ * not reached; outcome: the test that passed, a swap that moves Q in front
+ * of P, or a split into two new polygons); phase "paint", each polygon as
+ * it is painted (order, polygon, triangle, vertices, z_max, fragments,
+ * color).  Geometry: the outlines in window coordinates (y down).  Errors
+ * as cg_renderer_draw. */
+cg_status cg_painter_steps(cg_renderer *renderer, cg_image *image, cg_step_fn step, void *user);
 
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 

@@ -5,6 +5,7 @@
 #include "cg/render.h"
 #include "cg/light.h"
 #include "cg/color.h"
+#include "cg/trace_steps.h"
 #include "../color/srgb_tables.h"
 
 #include <math.h>
@@ -309,6 +310,10 @@ struct cg_renderer {
     size_t clean_tile_capacity;
     struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;              /* the thread count it was started for */
+    /* cg_painter_steps: the painter's algorithm reports its steps here
+     * during that call (NULL otherwise) */
+    cg_step_fn painter_step;
+    void *painter_user;
 };
 
 /* A mesh vertex after the vertex stage: where it lies against the view
@@ -326,6 +331,7 @@ typedef struct frame_vertex {
 /* A clipped polygon in screen space, for the painter's algorithm. */
 typedef struct painter_polygon {
     int n;
+    uint32_t triangle; /* the mesh triangle it comes from */
     float color[3];
     screen_vertex v[RENDER_MAX_POLYGON];
 } painter_polygon;

@@ -8,8 +8,10 @@
 
 #include <string.h>
 
-static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms,
-                                                trace_fill_algorithms, trace_clip_algorithms};
+static const trace_algorithm *const groups[] = {
+    trace_chapter2_algorithms, trace_view_algorithms, trace_surfaces_algorithms,
+    trace_fill_algorithms,     trace_clip_algorithms,
+};
 
 static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
 
@@ -53,6 +55,8 @@ const cg_command cg_command_trace = {
     "  vanishing DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]  the vanishing point of d\n"
     "  backface MESH [ABOUT_Y [ABOUT_X]]  N, V and the sign of N.V per triangle\n"
     "  zbuffer MESH X Y [WxH]     every fragment at one pixel, accepted or not\n"
+    "  painter MESH [ABOUT_Y [ABOUT_X]]  the depth-sorted list, Newell's tests per\n"
+    "                             pair, each swap or split, the painting order\n"
     "  light POINT NORMAL EYE [LIGHT ...]  ambient, diffuse, specular per light\n"
     "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
     "  hsv R G B                  RGB to HSV by the notes' formulas\n"

@@ -5,6 +5,9 @@
 
 #include "trace_output.h"
 
+#include "cg/mesh.h"
+#include "cg/xform.h"
+
 typedef struct trace_algorithm {
     const char *name;      /* as typed after `cg trace` */
     const char *arguments; /* "X1 Y1 X2 Y2" */
@@ -17,6 +20,9 @@ extern const trace_algorithm trace_chapter2_algorithms[];
 extern const trace_algorithm trace_view_algorithms[];
 extern const trace_algorithm trace_fill_algorithms[];
 extern const trace_algorithm trace_clip_algorithms[];
+extern const trace_algorithm trace_surfaces_algorithms[];
+extern const trace_algorithm trace_shading_algorithms[];
+extern const trace_algorithm trace_mesh_ops_algorithms[];
 
 /* Argument parsing for the algorithms: each prints "cg: trace: ..." and
  * returns -1 on a bad value, 0 when good. */
@@ -28,5 +34,11 @@ int trace_parse_point(const char *what, const char *text, cg_vec2 *out);
 /* "X,Y X,Y ..." into at most capacity points: the count, or -1 after a
  * message. */
 int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity);
+
+/* Loads the mesh at path, turns it about_y then about_x degrees and frames
+ * it with the default camera for the aspect, as cg render does; CLI_OK, or
+ * CLI_FAILED after a message (nothing to free then). */
+int trace_frame_mesh(const char *path, double about_y, double about_x, double aspect,
+                     cg_mesh **mesh, cg_mat4 *model, cg_camera *camera);
 
 #endif

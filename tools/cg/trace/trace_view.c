@@ -236,8 +236,8 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
 /* Loads the mesh, turns it about y then x (degrees) and frames it with the
  * default camera for the aspect, as cg render does; CLI_OK or CLI_FAILED
  * after a message. */
-static int frame_mesh(const char *path, double about_y, double about_x, double aspect,
-                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
+int trace_frame_mesh(const char *path, double about_y, double about_x, double aspect,
+                     cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
 {
     cg_error err;
     if (cg_mesh_load(path, mesh, &err) != CG_OK)
@@ -281,7 +281,7 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
     cg_mesh *mesh;
     cg_mat4 model;
     cg_camera camera;
-    if (frame_mesh(argv[1], about_y, about_x, 4.0 / 3.0, &mesh, &model, &camera) != CLI_OK)
+    if (trace_frame_mesh(argv[1], about_y, about_x, 4.0 / 3.0, &mesh, &model, &camera) != CLI_OK)
         return CLI_FAILED;
     trace_run *run = trace_run_create("backface", argc - 1, argv + 1,
                                       "Back-face culling of %s turned %g degrees about y and %g "
@@ -326,7 +326,7 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
     cg_mesh *mesh;
     cg_mat4 model;
     cg_camera camera;
-    if (frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
+    if (trace_frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
         return CLI_FAILED;
     trace_run *run = trace_run_create("zbuffer", argc - 1, argv + 1,
                                       "The z-buffer at pixel (%ld, %ld) of a %dx%d frame of %s", x,

@@ -245,6 +245,29 @@ cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
  * cg_rgb_to_hsl's. */
 cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void *user);
 
+/* Intensity to pixel (6.1.5) as cg_dither_plane does it on a width x
+ * height plane (rows width floats apart; at most 2^20 values), pixel by
+ * pixel in its order (phase "pixels", the step setting that pixel with its
+ * output level as intensity): CG_DITHER_NONE gives I (clamped), s = I (N -
+ * 1), k, the error I - out and out; the Bayer methods I, s, floor_s, frac,
+ * the matrix index b, threshold = (b + 1/2) / n^2, the decision and out;
+ * Floyd-Steinberg I, v (I plus the errors it received), error = v - out,
+ * the weights ("7/16 3/16 5/16 1/16", renormalized at the border; none at
+ * the last pixel), the parts pushed right, below_left, below and
+ * below_right, and out.  The outputs are cg_dither_plane's, bit for
+ * bit.  Errors as cg_dither_plane. */
+cg_status cg_dither_plane_steps(const float *in, int width, int height, int levels,
+                                cg_dither method, cg_step_fn step, void *user);
+
+/* Gamma correction (7.2.1) of intensities: phase "values", one step per
+ * value with k, I (clamped), the corrected voltage V = I^(1/gamma)
+ * (cg_gamma_encode), its 8-bit code round(255 V), what the CRT shows of it
+ * V^gamma (cg_gamma_decode: I again), what it shows of the uncorrected
+ * I^gamma, and the sRGB encoding of I (cg_linear_to_srgb) beside them.
+ * CG_EINVAL unless gamma is finite and > 0. */
+cg_status cg_gamma_steps(const double *intensities, size_t count, double gamma, cg_step_fn step,
+                         void *user);
+
 /* ---- chapter 9: half-edge meshes ------------------------------------------ */
 
 /* The loop of face f by next (phase "face loop": k, h, origin, next, twin,

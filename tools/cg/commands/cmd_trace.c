@@ -10,7 +10,7 @@
 
 static const trace_algorithm *const groups[] = {
     trace_chapter2_algorithms, trace_view_algorithms, trace_surfaces_algorithms,
-    trace_fill_algorithms,     trace_clip_algorithms,
+    trace_shading_algorithms,  trace_fill_algorithms, trace_clip_algorithms,
 };
 
 static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
@@ -61,6 +61,10 @@ const cg_command cg_command_trace = {
     "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
     "  hsv R G B                  RGB to HSV by the notes' formulas\n"
     "  hsl R G B                  RGB to HSL\n"
+    "  quantize LEVELS I [I ...]  intensity to pixel: s = I (N-1), k, the error\n"
+    "  dither METHOD LEVELS ramp:WxH|IMAGE  bayer2|bayer4|bayer8: threshold per\n"
+    "                             pixel; floyd-steinberg: the error pushed on\n"
+    "  gamma GAMMA I [I ...]      V = I^(1/gamma), its code, what the CRT shows\n"
     "Chapter 9:\n"
     "  face-loop MESH F           a face's half-edges by next: origin, next, twin\n"
     "  one-ring MESH V            a vertex's outgoing half-edges by twin(prev(h))\n"

@@ -280,6 +280,39 @@ cg_status cg_gamma_steps(const double *intensities, size_t count, double gamma, 
 cg_status cg_hemesh_face_loop_steps(const cg_hemesh *m, uint32_t f, cg_step_fn step, void *user);
 cg_status cg_hemesh_one_ring_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step, void *user);
 
+/* Subdivision stencils: the new position of old vertex v of a structure
+ * without deleted elements, as cg_hemesh_subdivide_loop (triangles only,
+ * else CG_EUNSUPPORTED) or cg_hemesh_subdivide_catmull_clark places it,
+ * bit for bit.  Phase "stencil", one step per term (k, term: "P",
+ * "neighbour", "face point", "edge midpoint", "boundary neighbour"; its
+ * index; its weight; its position): Loop (1 - n beta) for P and beta for
+ * each neighbour; Catmull-Clark (n - 3) / n for P, 1 / n^2 for each face
+ * point and 2 / n^2 for each edge midpoint; on the boundary 3/4 and 1/8,
+ * 1/8.  Phase "result": the rule, n, beta (Loop), the old and the new
+ * position.  CG_EINVAL for a bad or deleted vertex or a structure with
+ * deleted elements. */
+cg_status cg_hemesh_loop_stencil_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step, void *user);
+cg_status cg_hemesh_catmull_clark_stencil_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step,
+                                                void *user);
+
+typedef enum cg_edge_operation {
+    CG_EDGE_FLIP = 0,    /* cg_hemesh_flip_edge(m, e) */
+    CG_EDGE_SPLIT = 1,   /* cg_hemesh_split_edge at the edge's midpoint */
+    CG_EDGE_COLLAPSE = 2 /* cg_hemesh_collapse_edge(m, 2e): origin(2e) removed */
+} cg_edge_operation;
+
+/* Applies the operation to edge e of m (the library's call, so m is
+ * changed exactly as by it) and lists the half-edge records around it:
+ * phase "before", each half-edge leaving the edge's ends and its opposite
+ * corners (k, h, origin, dest, twin, next, prev, face), phase "operation"
+ * (the edge, its ends a and b, what was done, "done" or "refused", the new
+ * vertex of a split), then, when done, phase "after": the same for the
+ * vertices still there and the new one.  A refused operation is not an
+ * error (CG_OK, the structure unchanged); CG_EINVAL for a bad or deleted
+ * edge or operation. */
+cg_status cg_hemesh_edge_operation_steps(cg_hemesh *m, cg_edge_operation operation, uint32_t e,
+                                         cg_step_fn step, void *user);
+
 /* ---- chapter 10: filling -------------------------------------------------- */
 
 /* Scan-line polygon fill as cg_fill_polygon does it (same arguments, image

@@ -9,8 +9,9 @@
 #include <string.h>
 
 static const trace_algorithm *const groups[] = {
-    trace_chapter2_algorithms, trace_view_algorithms, trace_surfaces_algorithms,
-    trace_shading_algorithms,  trace_fill_algorithms, trace_clip_algorithms,
+    trace_chapter2_algorithms, trace_view_algorithms,     trace_surfaces_algorithms,
+    trace_shading_algorithms,  trace_mesh_ops_algorithms, trace_fill_algorithms,
+    trace_clip_algorithms,
 };
 
 static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
@@ -68,6 +69,11 @@ const cg_command cg_command_trace = {
     "Chapter 9:\n"
     "  face-loop MESH F           a face's half-edges by next: origin, next, twin\n"
     "  one-ring MESH V            a vertex's outgoing half-edges by twin(prev(h))\n"
+    "  loop MESH V                Loop's stencil: weights, neighbours, new vertex\n"
+    "  catmull-clark MESH V       Catmull-Clark's: face points, edge midpoints\n"
+    "  edge-flip MESH E           half-edge records before and after a flip,\n"
+    "  edge-split MESH E          a split at the midpoint,\n"
+    "  edge-collapse MESH E       a collapse of half-edge 2E\n"
     "Chapter 10 (image coordinates, y down):\n"
     "  scanline 'POLYGON' [even-odd|nonzero]  edge table, active list, spans\n"
     "  flood IMAGE X Y [4|8] [TOL]  seed fill: each seed popped, span, pushes\n"

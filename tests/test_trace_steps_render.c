@@ -7,6 +7,7 @@
 #include "cg/color.h"
 #include "cg/mesh.h"
 #include "cg/render.h"
+#include "cg/trace.h"
 #include "cg/trace_steps.h"
 
 #include <math.h>
@@ -220,9 +221,161 @@ static void painter_agrees(void)
     cg_image_free(img);
 }
 
+/* ---- a pixel's ray tree ------------------------------------------------------- */
+
+enum { RAY_W = 20, RAY_H = 15, MAX_RAYS = 4096 };
+
+typedef struct tree {
+    double color[MAX_RAYS][3], local[MAX_RAYS][3], kr[MAX_RAYS], kt[MAX_RAYS];
+    int parent[MAX_RAYS], kind[MAX_RAYS], hit[MAX_RAYS];
+    int rays, shadows, pixels;
+    double pixel[4];
+} tree;
+
+static int grow_tree(void *user, const cg_step *s)
+{
+    tree *t = user;
+    if (strcmp(s->phase, "rays") == 0) {
+        int i = (int)integer_of(s, "ray");
+        if (i != t->rays || i >= MAX_RAYS)
+            return 1;
+        t->rays++;
+        t->parent[i] = (int)integer_of(s, "parent");
+        const char *kind = text_of(s, "kind");
+        t->kind[i] = kind[0] == 'p' ? 0 : kind[2] == 'f' && kind[3] == 'l' ? 1 : 2;
+        const cg_step_field *local = cg_step_find(s, "local"), *color = cg_step_find(s, "color");
+        t->hit[i] = local->kind == CG_STEP_REALS;
+        for (int k = 0; k < 3; k++) {
+            t->local[i][k] = t->hit[i] ? local->reals[k] : 0;
+            t->color[i][k] = color->reals[k];
+        }
+        const cg_step_field *kr = cg_step_find(s, "kr"), *kt = cg_step_find(s, "kt");
+        t->kr[i] = kr->kind == CG_STEP_REAL ? kr->real : 0;
+        t->kt[i] = kt->kind == CG_STEP_REAL ? kt->real : 0;
+    } else if (strcmp(s->phase, "shadow rays") == 0) {
+        t->shadows++;
+    } else {
+        const cg_step_field *c = cg_step_find(s, "color");
+        memcpy(t->pixel, c->reals, sizeof t->pixel);
+        t->pixels++;
+    }
+    return 0;
+}
+
+/* color = local + kr color(reflected child) + kt color(refracted child), for
+ * every ray that hit; the number of rays where it does not hold. */
+static int tree_sums_wrong(const tree *t)
+{
+    int wrong = 0;
+    for (int i = 0; i < t->rays; i++) {
+        if (!t->hit[i])
+            continue;
+        double sum[3] = {t->local[i][0], t->local[i][1], t->local[i][2]};
+        for (int c = i + 1; c < t->rays; c++)
+            if (t->parent[c] == i)
+                for (int k = 0; k < 3; k++)
+                    sum[k] += (t->kind[c] == 1 ? t->kr[i] : t->kt[i]) * t->color[c][k];
+        for (int k = 0; k < 3; k++)
+            wrong += fabs(sum[k] - t->color[i][k]) > 1e-9 * (1 + fabs(sum[k]));
+    }
+    return wrong;
+}
+
+static cg_trace_scene *random_scene(check_rng *rng)
+{
+    cg_trace_scene *scene;
+    if (cg_trace_scene_create(&scene) != CG_OK)
+        abort();
+    int spheres = (int)check_rng_int(rng, 1, 5);
+    for (int i = 0; i < spheres; i++) {
+        cg_trace_material m = cg_trace_material_default();
+        m.surface = cg_material_make(
+            cg_vec3_make(check_rng_unit(rng), check_rng_unit(rng), check_rng_unit(rng)), 0.1,
+            check_rng_range(rng, 0, 0.9), check_rng_range(rng, 0, 0.6),
+            check_rng_range(rng, 1, 60));
+        int glass = check_rng_int(rng, 0, 2) == 0;
+        m.surface.reflectance = check_rng_range(rng, 0, glass ? 0.2 : 0.8);
+        m.surface.transmittance = glass ? check_rng_range(rng, 0.5, 1 - m.surface.reflectance) : 0;
+        m.surface.refractive_index = glass ? check_rng_range(rng, 1.1, 2.0) : 0;
+        cg_vec3 c = {check_rng_range(rng, -2, 2), check_rng_range(rng, -0.5, 2),
+                     check_rng_range(rng, -2, 1)};
+        CHECK(cg_trace_scene_add_sphere(scene, c, check_rng_range(rng, 0.3, 1.2), NULL, &m)
+              == CG_OK);
+    }
+    cg_trace_material floor = cg_trace_material_default();
+    floor.surface.reflectance = check_rng_range(rng, 0, 0.5);
+    floor.checker_size = 0.7;
+    floor.checker_color = cg_vec3_make(0.1, 0.1, 0.1);
+    CHECK(cg_trace_scene_add_plane(scene, cg_vec3_make(0, -1, 0), cg_vec3_make(0, 1, 0), &floor)
+          == CG_OK);
+    cg_light ambient = cg_light_ambient(cg_vec3_make(0.2, 0.2, 0.2));
+    cg_light point = cg_light_point(cg_vec3_make(check_rng_range(rng, -4, 4), 5, 4),
+                                    cg_vec3_make(0.9, 0.9, 0.8));
+    cg_light sun = cg_light_directional(cg_vec3_make(-1, 2, 1), cg_vec3_make(0.4, 0.4, 0.5));
+    CHECK(cg_trace_scene_add_light(scene, &ambient) == CG_OK);
+    CHECK(cg_trace_scene_add_light(scene, &point) == CG_OK);
+    CHECK(cg_trace_scene_add_light(scene, &sun) == CG_OK);
+    if (check_rng_int(rng, 0, 2) == 0) {
+        cg_trace_area_light area = {{-1, 4, -1}, {2, 0, 0}, {0, 0, 2}, {0.5, 0.5, 0.5}, 2};
+        CHECK(cg_trace_scene_add_area_light(scene, &area) == CG_OK);
+    }
+    return scene;
+}
+
+static void ray_agrees(void)
+{
+    check_rng rng = {0x7a4e};
+    long pixels = 0, rays = 0, refracted = 0, shadows = 0;
+    tree *t = malloc(sizeof *t);
+    for (int scene_index = 0; scene_index < 30; scene_index++) {
+        cg_trace_scene *scene = random_scene(&rng);
+        cg_camera camera = cg_camera_default();
+        camera.eye = cg_vec3_make(check_rng_range(&rng, -1, 1), 1.5, 7);
+        cg_trace_options o = cg_trace_options_default();
+        o.samples = scene_index % 5 == 4 ? 4 : 1;
+        o.max_depth = (int)check_rng_int(&rng, 0, 6);
+        o.shadows = scene_index % 7 != 3;
+        cg_image *img;
+        CHECK(cg_image_create(&img, RAY_W, RAY_H, CG_PIXEL_RGBAF) == CG_OK);
+        CHECK(cg_trace_render(scene, &camera, &o, img, NULL) == CG_OK);
+        int wrong = 0, sums = 0;
+        for (int y = 0; y < RAY_H; y++)
+            for (int x = 0; x < RAY_W; x++) {
+                memset(t, 0, sizeof *t);
+                CHECK(cg_trace_pixel_steps(scene, &camera, &o, RAY_W, RAY_H, x, y, grow_tree, t)
+                      == CG_OK);
+                cg_rgbaf want = cg_image_get(img, x, y);
+                wrong += t->pixels != 1 || (float)t->pixel[0] != want.r
+                         || (float)t->pixel[1] != want.g || (float)t->pixel[2] != want.b
+                         || (float)t->pixel[3] != want.a;
+                sums += tree_sums_wrong(t);
+                pixels++;
+                rays += t->rays;
+                shadows += t->shadows;
+                for (int i = 0; i < t->rays; i++)
+                    refracted += t->kind[i] == 2;
+            }
+        CHECK_MSG(wrong == 0, "scene %d: %d pixels differ from cg_trace_render", scene_index,
+                  wrong);
+        CHECK_MSG(sums == 0, "scene %d: %d rays whose colour is not local + kr R + kt T",
+                  scene_index, sums);
+        cg_image_free(img);
+        cg_trace_scene_free(scene);
+    }
+    free(t);
+    printf("ray trees: %ld pixels, %ld rays (%ld refracted), %ld shadow rays\n", pixels, rays,
+           refracted, shadows);
+    CHECK(refracted > 100);
+    cg_trace_scene *scene = random_scene(&rng);
+    cg_camera camera = cg_camera_default();
+    CHECK(cg_trace_pixel_steps(scene, &camera, NULL, 10, 10, 10, 0, grow_tree, NULL) == CG_EINVAL);
+    cg_trace_scene_free(scene);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
     CHECK_GROUP(painter_agrees);
+    CHECK_GROUP(ray_agrees);
     return check_finish();
 }

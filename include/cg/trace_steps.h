@@ -25,6 +25,7 @@
 #include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/render.h"
+#include "cg/trace.h"
 #include "cg/xform.h"
 
 #include <stddef.h>
@@ -221,6 +222,22 @@ cg_status cg_zbuffer_pixel_steps(const cg_mesh *mesh, cg_mat4 model, const cg_ca
  * color).  Geometry: the outlines in window coordinates (y down).  Errors
  * as cg_renderer_draw. */
 cg_status cg_painter_steps(cg_renderer *renderer, cg_image *image, cg_step_fn step, void *user);
+
+/* A pixel's ray tree (5.4) as cg_trace_render traces it, in a width x
+ * height image: the renderer's own rays, in the order they are started.
+ * Phase "rays", one step per ray (sample, ray, parent, kind: primary,
+ * reflected or refracted; depth; weight: its share of the pixel; hit: the
+ * object, or a miss; t, point, normal (toward the ray's side), side
+ * (outside or inside the object); local: the light at the hit through its
+ * shadow rays; fresnel (Schlick, transparent materials), kr and kt: the
+ * weights of the reflected and refracted rays; secondary: what follows;
+ * color = local + kr color(reflected) + kt color(refracted)).  Phase
+ * "shadow rays": for each ray's hit, each light (ray, light, kind, the
+ * verdict).  Phase "pixel": the pixel's colour (RGBA, linear), exactly
+ * cg_trace_render's.  Errors as cg_trace_render. */
+cg_status cg_trace_pixel_steps(cg_trace_scene *scene, const cg_camera *camera,
+                               const cg_trace_options *options, int width, int height, int x, int y,
+                               cg_step_fn step, void *user);
 
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 

@@ -58,6 +58,8 @@ const cg_command cg_command_trace = {
     "  zbuffer MESH X Y [WxH]     every fragment at one pixel, accepted or not\n"
     "  painter MESH [ABOUT_Y [ABOUT_X]]  the depth-sorted list, Newell's tests per\n"
     "                             pair, each swap or split, the painting order\n"
+    "  ray spheres|MESH X Y [WxH] a pixel's ray tree: hits, shadow rays,\n"
+    "                             reflection, refraction, Fresnel, contributions\n"
     "  light POINT NORMAL EYE [LIGHT ...]  ambient, diffuse, specular per light\n"
     "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
     "  hsv R G B                  RGB to HSV by the notes' formulas\n"

@@ -5,6 +5,7 @@
 
 #include "cli.h"
 #include "cg/render.h"
+#include "cg/trace.h"
 #include "cg/trace_steps.h"
 
 #include <stdio.h>
@@ -109,7 +110,85 @@ static int run_painter(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* The scene of `ray`: the classic spheres seen as the docs' example sees
+ * them, or the mesh turned and framed as `painter` frames it, a little
+ * mirror-like, under the renderer's key light. */
+static int ray_scene(const char *what, double aspect, cg_trace_scene **scene, cg_camera *camera)
+{
+    if (strcmp(what, "spheres") == 0) {
+        if (cg_trace_scene_classic(scene) != CG_OK)
+            return cli_fail("trace: out of memory");
+        *camera = cg_camera_default();
+        camera->eye = cg_vec3_make(0, 2.4, 7.5);
+        return CLI_OK;
+    }
+    cg_mesh *mesh;
+    cg_mat4 model, view;
+    if (trace_frame_mesh(what, 30, 20, aspect, &mesh, &model, camera) != CLI_OK)
+        return CLI_FAILED;
+    cg_trace_material material = cg_trace_material_default();
+    material.surface = cg_material_make(cg_vec3_make(0.8, 0.5, 0.3), 0.2, 0.7, 0.4, 32);
+    material.surface.reflectance = 0.3;
+    cg_light ambient = cg_light_ambient(cg_vec3_make(0.3, 0.3, 0.3));
+    cg_status status = cg_trace_scene_create(scene);
+    if (status == CG_OK)
+        status = cg_trace_scene_add_mesh(*scene, mesh, &model, 1.0, &material);
+    if (status == CG_OK && cg_camera_view(camera, &view) == CG_OK) {
+        cg_light key = cg_render_key_light(view);
+        status = cg_trace_scene_add_light(*scene, &key);
+    }
+    if (status == CG_OK)
+        status = cg_trace_scene_add_light(*scene, &ambient);
+    cg_mesh_free(mesh);
+    if (status != CG_OK) {
+        cg_trace_scene_free(*scene);
+        return cli_fail("trace: %s: %s", what, cg_status_str(status));
+    }
+    return CLI_OK;
+}
+
+/* ray spheres|MESH X Y [WxH] */
+static int run_ray(int argc, char **argv, const trace_outputs *out)
+{
+    long x, y;
+    int width = PAINTER_WIDTH, height = PAINTER_HEIGHT;
+    if (argc < 4 || argc > 5)
+        return cli_usage_error("trace", "ray: expected 'ray spheres|MESH X Y [WxH]'");
+    if ((argc > 4 && cli_parse_size("trace", "WxH", argv[4], &width, &height))
+        || trace_parse_int("X", argv[2], 0, width - 1, &x)
+        || trace_parse_int("Y", argv[3], 0, height - 1, &y))
+        return CLI_USAGE;
+    cg_trace_scene *scene;
+    cg_camera camera;
+    if (ray_scene(argv[1], (double)width / height, &scene, &camera) != CLI_OK)
+        return CLI_FAILED;
+    trace_run *run = trace_run_create("ray", argc - 1, argv + 1,
+                                      "The ray tree of pixel (%ld, %ld) of a %dx%d frame of %s", x,
+                                      y, width, height, argv[1]);
+    if (!run) {
+        cg_trace_scene_free(scene);
+        return cli_fail("trace: out of memory");
+    }
+    run->y_up = 1;
+    trace_note(run, "a primary ray through the pixel's centre; at each hit the local light "
+                    "(ambient, diffuse, specular) with one shadow ray per light, then");
+    trace_note(run, "a reflected ray of weight kr and, through glass, a refracted one of weight "
+                    "kt: Schlick's Fresnel F moves kt F of the transmission to kr, kt = T (1 - F)");
+    trace_note(run, "color = local + kr color(reflected) + kt color(refracted); a ray whose "
+                    "weight in the pixel is below 1/1024, or past depth 5, is not traced");
+    trace_note(run, "colours are linear RGB; the frames show x and y of each ray in world space");
+    cg_trace_options options = cg_trace_options_default();
+    options.clip_depth = 1;
+    cg_status status = cg_trace_pixel_steps(scene, &camera, &options, width, height, (int)x, (int)y,
+                                            cg_step_log_record, run->log);
+    cg_trace_scene_free(scene);
+    int code = trace_finish(run, status, "the scene cannot be traced", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_surfaces_algorithms[] = {
     {"painter", "MESH [ABOUT_Y [ABOUT_X]]", run_painter},
+    {"ray", "spheres|MESH X Y [WxH]", run_ray},
     {NULL, NULL, NULL},
 };

@@ -13,6 +13,8 @@ cube=$dir/cube.obj
 [ -n "${2:-}" ] && [ -f "$2/examples/teaching/cube.obj" ] && cube=$2/examples/teaching/cube.obj
 [ -f "$cube" ] || printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n' >"$cube"
 mkdir -p "$dir/examples/teaching" && cp "$cube" "$dir/examples/teaching/cube.obj"
+# The other meshes the docs' examples trace.
+[ -n "${2:-}" ] && cp "$2"/examples/teaching/*.obj "$dir/examples/teaching/" 2>/dev/null
 # A triangle mesh for Loop's stencils and the edge operations: an octahedron.
 octa=$dir/octahedron.obj
 printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n' >"$octa"

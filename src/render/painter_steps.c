@@ -86,13 +86,15 @@ static void outcome_text(char *out, size_t size, const int *tests, painter_outco
     case PAINTER_MOVED: snprintf(out, size, "all fail: swap, Q moved in front of P"); break;
     case PAINTER_SPLIT_P:
         snprintf(out, size,
-                 "all fail, Q already moved: split P by Q's plane into %d (far) and %d "
+                 "all fail, a swap cannot help (Q moved before or not separable): split P by Q's "
+                 "plane into %d (far) and %d "
                  "(near)",
                  far_piece, near_piece);
         break;
     case PAINTER_SPLIT_Q:
         snprintf(out, size,
-                 "all fail, Q already moved: split Q by P's plane into %d (far) and %d "
+                 "all fail, a swap cannot help (Q moved before or not separable): split Q by P's "
+                 "plane into %d (far) and %d "
                  "(near)",
                  far_piece, near_piece);
         break;

@@ -102,7 +102,7 @@ static int run_painter(int argc, char **argv, const trace_outputs *out)
         trace_run_free(run);
         return cli_fail("trace: %s: %s", argv[1], err.message);
     }
-    trace_summary(run, "%zu polygons painted (%zu triangles, %zu splits), %zu pair tests",
+    trace_summary(run, "%zu polygons painted (%zu triangles, splits: %zu), %zu pair tests",
                   count_phase(run->log, "paint"), stats.triangles, stats.splits,
                   count_phase(run->log, "tests"));
     int code = trace_finish(run, status, "the mesh cannot be drawn", out);

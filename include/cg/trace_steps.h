@@ -239,6 +239,23 @@ cg_status cg_trace_pixel_steps(cg_trace_scene *scene, const cg_camera *camera,
                                const cg_trace_options *options, int width, int height, int x, int y,
                                cg_step_fn step, void *user);
 
+/* Flat, Gouraud and Phong shading at pixel (x, y) as the z-buffer
+ * renderer does it: draws one frame into image with the renderer's options
+ * (the same bytes as cg_renderer_draw; CG_EINVAL unless the algorithm is
+ * CG_RENDER_ZBUFFER) and reports each triangle's fragment there in drawing
+ * order: phase "fragments" (fragment, window_xyz: the snapped vertices,
+ * barycentric: the screen weights from the rasterizer's edge functions,
+ * perspective: the perspective-correct weights l_k (1/w_k) / sum, depth,
+ * buffer: the depth before, decision: written or hidden, mode, then flat:
+ * color; Gouraud: vertex_colors and the interpolated color; Phong:
+ * vertex_normals, the renormalized N, position, base and the lighting terms
+ * ambient, diffuse, specular and their sum color), then phase "pixel": the
+ * frame's pixel (linear RGBA).  The values are recomputed in double from
+ * the rasterizer's setup; the written colour agrees with the pixel to its
+ * float rounding. */
+cg_status cg_shading_pixel_steps(cg_renderer *renderer, cg_image *image, int x, int y,
+                                 cg_step_fn step, void *user);
+
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 
 /* The illumination at a point by cg/light.h's model, light by light: phase

@@ -314,6 +314,11 @@ struct cg_renderer {
      * during that call (NULL otherwise) */
     cg_step_fn painter_step;
     void *painter_user;
+    /* cg_shading_pixel_steps: the fragments at pixel (probe_x, probe_y) */
+    cg_step_fn shade_step;
+    void *shade_user;
+    int probe_x, probe_y, probe_stopped;
+    long long probe_count;
 };
 
 /* A mesh vertex after the vertex stage: where it lies against the view
@@ -398,6 +403,11 @@ void render_finish_setup(const render_frame *frame, setup_triangle *t, const flo
  * number of covered pixels. */
 size_t render_raster(const render_frame *frame, const setup_triangle *t, int x0, int y0, int x1,
                      int y1, int depth_test);
+
+/* cg_shading_pixel_steps' report of the fragment of t at the probed pixel
+ * (shade_probe.c), after render_raster drew t; depth_before: the buffer's
+ * depth there before. */
+void render_probe_fragment(const render_frame *frame, const setup_triangle *t, float depth_before);
 
 /* Painter's algorithm and edge drawing, in their own files. */
 cg_status render_painter(render_frame *frame);

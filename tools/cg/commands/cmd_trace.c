@@ -62,6 +62,8 @@ const cg_command cg_command_trace = {
     "                             reflection, refraction, Fresnel, contributions\n"
     "  light POINT NORMAL EYE [LIGHT ...]  ambient, diffuse, specular per light\n"
     "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
+    "  shading flat|gouraud|phong MESH X Y [WxH]  one pixel: barycentrics,\n"
+    "                             interpolated colour or normal, lighting terms\n"
     "  hsv R G B                  RGB to HSV by the notes' formulas\n"
     "  hsl R G B                  RGB to HSL\n"
     "  quantize LEVELS I [I ...]  intensity to pixel: s = I (N-1), k, the error\n"

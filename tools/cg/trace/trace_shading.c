@@ -5,6 +5,7 @@
 
 #include "cli.h"
 #include "cg/color.h"
+#include "cg/render.h"
 #include "cg/trace_steps.h"
 
 #include <math.h>
@@ -229,7 +230,76 @@ static int run_gamma(int argc, char **argv, const trace_outputs *out)
     return code;
 }
 
+/* shading flat|gouraud|phong MESH X Y [WxH] */
+static int run_shading(int argc, char **argv, const trace_outputs *out)
+{
+    static const char *const modes[3] = {"flat", "gouraud", "phong"};
+    long x, y;
+    int width = 160, height = 120, mode = -1;
+    if (argc < 5 || argc > 6)
+        return cli_usage_error("trace", "shading: expected 'shading flat|gouraud|phong MESH X Y "
+                                        "[WxH]'");
+    for (int i = 0; i < 3; i++)
+        if (strcmp(argv[1], modes[i]) == 0)
+            mode = i;
+    if (mode < 0)
+        return cli_usage_error("trace", "shading: unknown mode '%s' (flat, gouraud or phong)",
+                               argv[1]);
+    if ((argc > 5 && cli_parse_size("trace", "WxH", argv[5], &width, &height))
+        || trace_parse_int("X", argv[3], 0, width - 1, &x)
+        || trace_parse_int("Y", argv[4], 0, height - 1, &y))
+        return CLI_USAGE;
+    cg_mesh *mesh;
+    cg_render_options o;
+    cg_render_options_default(&o);
+    if (trace_frame_mesh(argv[2], 30, 20, (double)width / height, &mesh, &o.model, &o.camera)
+        != CLI_OK)
+        return CLI_FAILED;
+    o.frame_camera = 0;
+    o.shading = (cg_shading)mode;
+    cg_renderer *renderer;
+    cg_error err = {0};
+    cg_image *image = NULL;
+    cg_status status = cg_renderer_create(mesh, &o, &renderer, &err);
+    cg_mesh_free(mesh);
+    if (status != CG_OK)
+        return cli_fail("trace: %s: %s", argv[2], err.message[0] ? err.message : "cannot render");
+    trace_run *run = trace_run_create("shading", argc - 1, argv + 1,
+                                      "%s shading at pixel (%ld, %ld) of a %dx%d frame of %s",
+                                      mode == 0   ? "Flat"
+                                      : mode == 1 ? "Gouraud"
+                                                  : "Phong",
+                                      x, y, width, height, argv[2]);
+    if (run)
+        status = cg_image_create(&image, width, height, CG_PIXEL_RGBAF);
+    if (!run || status != CG_OK) {
+        trace_run_free(run);
+        cg_renderer_free(renderer);
+        return cli_fail("trace: out of memory");
+    }
+    trace_note(run, "the mesh turned 30 degrees about y and 20 about x, framed, back faces culled, "
+                    "lit by cg render's key light (ambient 0.15, Blinn-Phong specular 0.25, "
+                    "exponent 32)");
+    trace_note(run,
+               "each triangle covering the centre (%ld.5, %ld.5): its screen barycentric "
+               "coordinates l, the perspective-correct weights b_k = l_k (1/w_k) / sum, the "
+               "depth test",
+               x, y);
+    trace_note(run, "flat: one colour per face; Gouraud: the vertex colours (lit at the vertices) "
+                    "interpolated by b; Phong: the normals interpolated by b and renormalized, "
+                    "then ambient + diffuse + specular at the pixel");
+    trace_note(run, "colours are linear RGB; the last written fragment's colour is the pixel's "
+                    "(to float rounding)");
+    status = cg_shading_pixel_steps(renderer, image, (int)x, (int)y, cg_step_log_record, run->log);
+    cg_renderer_free(renderer);
+    cg_image_free(image);
+    int code = trace_finish(run, status, "the mesh cannot be drawn", out);
+    trace_run_free(run);
+    return code;
+}
+
 const trace_algorithm trace_shading_algorithms[] = {
+    {"shading", "flat|gouraud|phong MESH X Y [WxH]", run_shading},
     {"quantize", "LEVELS I [I ...]", run_quantize},
     {"dither", "METHOD LEVELS ramp:WxH|IMAGE", run_dither},
     {"gamma", "GAMMA I [I ...]", run_gamma},

@@ -44,6 +44,9 @@ void render_lighting_prepare(render_lighting *l);
  * base, seen from the camera and lit by the lights: the local illumination
  * model of cg/light.h (cg_light_shade), evaluated in float for the ambient
  * and directional lights the renderer uses. */
+/* The three terms render_shade sums (ambient, diffuse, specular), apart. */
+void render_shade_terms(const render_lighting *l, const float position[3], const float n[3],
+                        const float base[3], float ambient[3], float diffuse[3], float specular[3]);
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3]);
 

@@ -18,56 +18,6 @@
 
 #include <string.h>
 
-/* The lighting terms of render_shade, apart (the same formulas). */
-static void shade_terms(const render_lighting *l, const float position[3], const float n[3],
-                        const float base[3], double ambient[3], double diffuse[3],
-                        double specular[3])
-{
-    float view[3] = {n[0], n[1], n[2]};
-    if (l->ks != 0) {
-        if (l->orthographic) {
-            memcpy(view, l->view_dir, sizeof view);
-        } else {
-            float d[3] = {l->eye[0] - position[0], l->eye[1] - position[1],
-                          l->eye[2] - position[2]};
-            float length = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            float inverse = length > 0 ? 1 / length : 0;
-            for (int j = 0; j < 3; j++)
-                view[j] = d[j] * inverse;
-        }
-    }
-    float dsum[3] = {0, 0, 0}, ssum[3] = {0, 0, 0};
-    for (int i = 0; i < l->directional; i++) {
-        const float *L = l->to_light[i], *c = l->light_color[i];
-        float nl = n[0] * L[0] + n[1] * L[1] + n[2] * L[2];
-        if (!(nl > 0))
-            continue;
-        for (int j = 0; j < 3; j++)
-            dsum[j] += c[j] * nl;
-        if (l->ks == 0)
-            continue;
-        float spec;
-        if (l->blinn) {
-            float h[3] = {L[0] + view[0], L[1] + view[1], L[2] + view[2]};
-            float hl = sqrtf(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-            float nh = hl > 0 ? (n[0] * h[0] + n[1] * h[1] + n[2] * h[2]) / hl : 0;
-            spec = nh > 0 ? powf(nh, l->shininess) : 0;
-        } else {
-            float nv = n[0] * view[0] + n[1] * view[1] + n[2] * view[2];
-            float lv = L[0] * view[0] + L[1] * view[1] + L[2] * view[2];
-            float rv = 2 * nl * nv - lv;
-            spec = rv > 0 ? powf(rv > 1 ? 1 : rv, l->shininess) : 0;
-        }
-        for (int j = 0; j < 3; j++)
-            ssum[j] += c[j] * spec;
-    }
-    for (int j = 0; j < 3; j++) {
-        ambient[j] = base[j] * l->ambient[j];
-        diffuse[j] = l->kd * base[j] * dsum[j];
-        specular[j] = l->specular_color[j] * ssum[j];
-    }
-}
-
 static void reals(core_step *s, const char *name, const float *v, int n, double *store)
 {
     for (int i = 0; i < n; i++)
@@ -121,17 +71,14 @@ static void mode_fields(const render_frame *f, const setup_triangle *t, core_ste
     reals(s, "N", normal, 3, store[1]);
     reals(s, "position", v + 3, 3, store[2]);
     reals(s, "base", base, 3, store[3]);
-    double ambient[3], diffuse[3], specular[3];
-    shade_terms(&f->lighting, v + 3, normal, base, ambient, diffuse, specular);
-    memcpy(store[4], ambient, sizeof ambient);
-    memcpy(store[5], diffuse, sizeof diffuse);
-    memcpy(store[6], specular, sizeof specular);
-    core_step_reals(s, "ambient", store[4], 3);
-    core_step_reals(s, "diffuse", store[5], 3);
-    core_step_reals(s, "specular", store[6], 3);
+    float ambient[3], diffuse[3], specular[3], color[3];
+    render_shade_terms(&f->lighting, v + 3, normal, base, ambient, diffuse, specular);
     for (int j = 0; j < 3; j++)
-        store[7][j] = ambient[j] + diffuse[j] + specular[j];
-    core_step_reals(s, "color", store[7], 3);
+        color[j] = ambient[j] + diffuse[j] + specular[j];
+    reals(s, "ambient", ambient, 3, store[4]);
+    reals(s, "diffuse", diffuse, 3, store[5]);
+    reals(s, "specular", specular, 3, store[6]);
+    reals(s, "color", color, 3, store[7]);
 }
 
 void render_probe_fragment(const render_frame *f, const setup_triangle *t, float depth_before)

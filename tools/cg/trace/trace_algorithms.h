@@ -5,6 +5,7 @@
 
 #include "trace_output.h"
 
+#include "cg/hemesh.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
 
@@ -40,5 +41,13 @@ int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int
  * CLI_FAILED after a message (nothing to free then). */
 int trace_frame_mesh(const char *path, double about_y, double about_x, double aspect,
                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera);
+/* MESH [ABOUT_Y [ABOUT_X]] (argv[0] the algorithm; 30 and 20 degrees by
+ * default) loaded and framed by trace_frame_mesh: CLI_OK, or CLI_USAGE or
+ * CLI_FAILED after a message. */
+int trace_turned_mesh(int argc, char **argv, double aspect, double *about_y, double *about_x,
+                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera);
+/* The half-edge structure of the mesh file (strict: a defect is an error,
+ * named); CLI_OK or CLI_FAILED after a message. */
+int trace_load_hemesh(const char *path, cg_hemesh **out);
 
 #endif

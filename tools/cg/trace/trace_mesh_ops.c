@@ -9,9 +9,7 @@
 
 #include <string.h>
 
-/* The half-edge structure of the mesh file (strict: a defect is an error,
- * named); CLI_OK or CLI_FAILED after a message. */
-static int load_hemesh(const char *path, cg_hemesh **out)
+int trace_load_hemesh(const char *path, cg_hemesh **out)
 {
     cg_mesh *mesh;
     cg_error err;
@@ -33,7 +31,7 @@ static int run_stencil(int loop, int argc, char **argv, const trace_outputs *out
     if (trace_parse_int("V", argv[2], 0, 4294967293L, &index))
         return CLI_USAGE;
     cg_hemesh *m;
-    if (load_hemesh(argv[1], &m) != CLI_OK)
+    if (trace_load_hemesh(argv[1], &m) != CLI_OK)
         return CLI_FAILED;
     if ((size_t)index >= m->vertex_count) {
         cg_hemesh_free(m);
@@ -96,7 +94,7 @@ static int run_edge(cg_edge_operation operation, int argc, char **argv, const tr
     if (trace_parse_int("E", argv[2], 0, 2147483646L, &index))
         return CLI_USAGE;
     cg_hemesh *m;
-    if (load_hemesh(argv[1], &m) != CLI_OK)
+    if (trace_load_hemesh(argv[1], &m) != CLI_OK)
         return CLI_FAILED;
     if ((size_t)index >= m->halfedge_count / 2) {
         cg_hemesh_free(m);

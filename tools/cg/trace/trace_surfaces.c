@@ -53,20 +53,14 @@ static cg_status painter_frame(const cg_mesh *mesh, cg_mat4 model, const cg_came
 /* painter MESH [ABOUT_Y [ABOUT_X]] */
 static int run_painter(int argc, char **argv, const trace_outputs *out)
 {
-    double about_y = 30, about_x = 20;
-    if (argc < 2 || argc > 4)
-        return cli_usage_error("trace", "painter: expected 'painter MESH [ABOUT_Y [ABOUT_X]]' "
-                                        "(degrees)");
-    if ((argc > 2 && trace_parse_real("ABOUT_Y", argv[2], &about_y))
-        || (argc > 3 && trace_parse_real("ABOUT_X", argv[3], &about_x)))
-        return CLI_USAGE;
+    double about_y, about_x;
     cg_mesh *mesh;
     cg_mat4 model;
     cg_camera camera;
-    if (trace_frame_mesh(argv[1], about_y, about_x, (double)PAINTER_WIDTH / PAINTER_HEIGHT, &mesh,
-                         &model, &camera)
-        != CLI_OK)
-        return CLI_FAILED;
+    int turned = trace_turned_mesh(argc, argv, (double)PAINTER_WIDTH / PAINTER_HEIGHT, &about_y,
+                                   &about_x, &mesh, &model, &camera);
+    if (turned != CLI_OK)
+        return turned;
     if (cg_mesh_triangle_count(mesh) > PAINTER_MAX_TRIANGLES) {
         cg_mesh_free(mesh);
         return cli_usage_error("trace",

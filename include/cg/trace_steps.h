@@ -234,7 +234,8 @@ cg_status cg_painter_steps(cg_renderer *renderer, cg_image *image, cg_step_fn st
  * color = local + kr color(reflected) + kt color(refracted)).  Phase
  * "shadow rays": for each ray's hit, each light (ray, light, kind, the
  * verdict).  Phase "pixel": the pixel's colour (RGBA, linear), exactly
- * cg_trace_render's.  Errors as cg_trace_render. */
+ * cg_trace_render's.  Geometry: each ray from the side (-z, y).  Errors
+ * as cg_trace_render. */
 cg_status cg_trace_pixel_steps(cg_trace_scene *scene, const cg_camera *camera,
                                const cg_trace_options *options, int width, int height, int x, int y,
                                cg_step_fn step, void *user);

@@ -50,6 +50,8 @@ static int emit_term(const char *phase, long long k, const char *what, long long
     vec3_field(&s, "position", p, xyz);
     s.step.geometry = line;
     s.step.geometry_count = 2;
+    s.step.kept = line; /* the stencil's star stays in the frames */
+    s.step.kept_count = 2;
     return core_step_emit(&s, fn, user);
 }
 

@@ -187,7 +187,8 @@ static int emit_ray(const trace_ray_report *r, size_t i, cg_step_fn fn, void *us
                        : n->kr > 0          ? "reflect kr"
                                             : "opaque, no mirror";
     cg_vec3 end = n->hit ? n->point : cg_vec3_add(n->origin, n->direction);
-    cg_vec2 line[2] = {cg_vec2_make(n->origin.x, n->origin.y), cg_vec2_make(end.x, end.y)};
+    /* seen from the side: -z across (away from a camera looking down -z), y up */
+    cg_vec2 line[2] = {cg_vec2_make(-n->origin.z, n->origin.y), cg_vec2_make(-end.z, end.y)};
     core_step s;
     core_step_begin(&s, "rays");
     core_step_integer(&s, "sample", n->sample);
@@ -264,15 +265,12 @@ cg_status trace_report_emit(trace_ray_report *r, cg_rgbaf pixel, cg_step_fn fn, 
         if (emit_shadow(r, i, fn, user))
             return CG_OK;
     double rgba[4] = {pixel.r, pixel.g, pixel.b, pixel.a};
-    int xy[2] = {r->x, r->y};
     core_step s;
     core_step_begin(&s, "pixel");
     core_step_pixel(&s, "pixel", r->x, r->y);
     core_step_integer(&s, "rays", (long long)r->ray_count);
     core_step_integer(&s, "shadow_rays", (long long)r->shadow_count);
     core_step_reals(&s, "color", rgba, 4);
-    s.step.pixels = xy;
-    s.step.pixel_count = 1;
-    core_step_emit(&s, fn, user);
+    core_step_emit(&s, fn, user); /* no pixel: the frames show the rays in world space */
     return CG_OK;
 }

@@ -115,9 +115,15 @@ static float *dither_input(const char *text, int *width, int *height)
         }
         *width = image->width;
         *height = image->height;
-        plane = *width <= MAX_DITHER_SIDE && *height <= MAX_DITHER_SIDE
-                    ? malloc((size_t)*width * (size_t)*height * sizeof *plane)
-                    : NULL;
+        plane = NULL;
+        if (*width <= MAX_DITHER_SIDE && *height <= MAX_DITHER_SIDE) {
+            plane = malloc((size_t)*width * (size_t)*height * sizeof *plane);
+            if (!plane) {
+                cg_image_free(image);
+                cli_fail("trace: out of memory");
+                return NULL;
+            }
+        }
         for (int y = 0; plane && y < *height; y++)
             for (int x = 0; x < *width; x++)
                 plane[y * *width + x] = cg_image_get_rgba8(image, x, y).r / 255.0f;
@@ -168,7 +174,7 @@ static int run_dither(int argc, char **argv, const trace_outputs *out)
                                argv[1]);
     if (read_levels("dither", argv[2], &levels) != CLI_OK)
         return CLI_USAGE;
-    int width, height;
+    int width = 0, height = 0;
     float *plane = dither_input(argv[3], &width, &height);
     if (!plane)
         return strncmp(argv[3], "ramp:", 5) == 0 || width > MAX_DITHER_SIDE

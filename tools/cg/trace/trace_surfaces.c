@@ -170,7 +170,8 @@ static int run_ray(int argc, char **argv, const trace_outputs *out)
                     "kt: Schlick's Fresnel F moves kt F of the transmission to kr, kt = T (1 - F)");
     trace_note(run, "color = local + kr color(reflected) + kt color(refracted); a ray whose "
                     "weight in the pixel is below 1/1024, or past depth 5, is not traced");
-    trace_note(run, "colours are linear RGB; the frames show x and y of each ray in world space");
+    trace_note(run,
+               "colours are linear RGB; the frames show the rays from the side: -z across, y up");
     cg_trace_options options = cg_trace_options_default();
     options.clip_depth = 1;
     cg_status status = cg_trace_pixel_steps(scene, &camera, &options, width, height, (int)x, (int)y,

@@ -13,6 +13,11 @@ cube=$dir/cube.obj
 [ -n "${2:-}" ] && [ -f "$2/examples/teaching/cube.obj" ] && cube=$2/examples/teaching/cube.obj
 [ -f "$cube" ] || printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n' >"$cube"
 mkdir -p "$dir/examples/teaching" && cp "$cube" "$dir/examples/teaching/cube.obj"
+# The other meshes the docs' examples trace.
+[ -n "${2:-}" ] && cp "$2"/examples/teaching/*.obj "$dir/examples/teaching/" 2>/dev/null
+# A triangle mesh for Loop's stencils and the edge operations: an octahedron.
+octa=$dir/octahedron.obj
+printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n' >"$octa"
 # The room the fills are traced in (examples/teaching/room.txt).
 printf 'size 16 12\nbackground white\ncolor black\npolyline 1 1 14 1 14 10 1 10 1 1\nline 7 1 7 7\nline 10 4 14 4\n' \
     >"$dir/room.txt"
@@ -190,7 +195,7 @@ samples=("line 0 0 7 3" "dda 0 0 7 3" "wu 0 0 7 3" "circle 5" "ellipse 6 3"
          "flatten 0.5 0,0 20,40 60,40 80,0" "scanline 1,1|12,1|12,9|1,9;4,3|8,3|8,6|4,6 nonzero"
          "pipeline 1,1,0" "pipeline 1,1,0 3,2,6 0,0,0 45 320x200"
          "light 0,0,0 0,0,1 0,0,5" "light 0,0,0 0,0,1 0,0,5 ambient:0.1,0.1,0.1 directional:0,0,-1:1,1,1"
-         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "vanishing 1,0,-1" "vanishing 0,1,0 0,0,5 0,0,0 50 320x240" "backface CUBE" "backface CUBE 0 0" "zbuffer CUBE 80 60" "face-loop CUBE 2" "one-ring CUBE 6" "zbuffer CUBE 0 0 40x30" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "cohen-sutherland 0 0 10 8 -5,2 15,12" "liang-barsky 0 0 10 8 -5,2 15,6"
+         "hsv 0.2 0.4 0.6" "hsl 1 1 1" "shading flat CUBE 80 60" "shading gouraud CUBE 80 60" "shading phong CUBE 70 50 160x120" "shading phong CUBE 0 0" "quantize 4 0 0.1 0.5 1.2" "dither floyd-steinberg 2 ramp:6x3" "dither bayer4 3 ramp:8x2" "dither bayer2 2 ROOM" "gamma 2.2 0 0.5 1" "vanishing 1,0,-1" "vanishing 0,1,0 0,0,5 0,0,0 50 320x240" "backface CUBE" "backface CUBE 0 0" "painter CUBE" "painter CUBE 0 0" "ray spheres 80 70" "ray CUBE 80 60 160x120" "ray spheres 0 0 40x30" "zbuffer CUBE 80 60" "face-loop CUBE 2" "one-ring CUBE 6" "loop OCTA 0" "catmull-clark CUBE 6" "catmull-clark OCTA 4" "edge-flip OCTA 0" "edge-split OCTA 3" "edge-collapse OCTA 5" "edge-flip CUBE 0" "zbuffer CUBE 0 0 40x30" "flood ROOM 3 3" "boundary ROOM 3 3 black 8" "cohen-sutherland 0 0 10 8 -5,2 15,12" "liang-barsky 0 0 10 8 -5,2 15,6"
          "sutherland-hodgman 0,0|10,0|10,10|0,10 -5,5|5,-5|15,5|5,15"
          "weiler-atherton 0,0|10,0|10,10|5,4|0,10 -2,3|12,3|12,7|-2,7"
          "frustum -3,0,0|3,0,0|0,3,-30" "frustum 0,0,0|1,0,0|0,1,0 3,3,3 0,0,0 40")
@@ -202,6 +207,7 @@ for sample in "${samples[@]}"; do
     args=("${args[@]//|/ }")
     args=("${args[@]/ROOM/$dir/room.png}")
     args=("${args[@]/CUBE/$cube}")
+    args=("${args[@]/OCTA/$octa}")
     echo "$help" | grep -qE "^  $name " || { echo "FAIL: 'cg help trace' does not name $name"; fail=1; }
     table=$("$CG" trace "${args[@]}") || { echo "FAIL: cg trace $sample"; fail=1; continue; }
     rows_in_table=$(echo "$table" | grep -cE '^ +[0-9]+ ')
@@ -298,7 +304,7 @@ for args in "line 0 0 8" "line 0 0 8 x" "circle -1" "circle 1.5" "square 3" "" \
             "flatten 0 0,0 1,1" "flatten 1e-30 0,0 1e6,1e6 2e6,0" "liang-barsky 10 0 0 10 0,0 1,1" \
             "liang-barsky 0 0 10 10 0,0" "sutherland-hodgman 0,0 1,1" "weiler-atherton 0,0|1,0|0,1 0,0|1,1" "pipeline 1,1" "pipeline 0,0,0 0,0,0" \
             "pipeline 0,0,0 0,0,5 0,0,0 200" "light 0,0,0 0,0,0 0,0,5" "light 0,0,0 0,0,1 0,0,5 spot:1,1,1" \
-            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "backface /nonexistent.obj" "vanishing 0,0,0" "liang-barsky 0 0 10 10 -1e308,0 1e308,5 --frames $dir/huge" "frustum 0,0,0|1,0,0" "face-loop $cube 6" "one-ring $cube 8" "one-ring $cube -1" "frustum 0,0,0|1,0,0|0,1 " "frustum 0,0,0|1,0,0|0,1,0 0,0,0 0,0,0" "vanishing 1,0" "zbuffer $cube 160 0" "zbuffer $cube 0 -1" "zbuffer $cube 1" "backface $dir/room.txt" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
+            "light 0,0,0 0,0,1 0,0,5 ambient:-1,0,0" "hsv 0.2 0.4" "hsl a b c" "backface /nonexistent.obj" "painter /nonexistent.obj" "shading toon $cube 1 1" "shading phong $cube 160 0" "shading phong /nonexistent.obj 1 1" "shading flat $cube 1" "ray spheres 160 0" "ray spheres 1" "ray /nonexistent.obj 1 1" "ray spheres 1 1 0x5" "loop $cube 0" "loop $octa 6" "catmull-clark $octa -1" "edge-flip $octa 12" "edge-split $octa x" "edge-collapse /nonexistent.obj 0" "edge-flip $octa" "quantize 1 0.5" "quantize 4" "quantize 4 nan" "dither bayer3 2 ramp:4x4" "dither bayer2 2 ramp:65x2" "dither floyd-steinberg 300 ramp:4x4" "dither bayer2 2 /nonexistent.png" "gamma 0 0.5" "gamma -1 0.5" "gamma 2.2" "painter $cube x" "painter $cube 0 0 0" "vanishing 0,0,0" "liang-barsky 0 0 10 10 -1e308,0 1e308,5 --frames $dir/huge" "frustum 0,0,0|1,0,0" "face-loop $cube 6" "one-ring $cube 8" "one-ring $cube -1" "frustum 0,0,0|1,0,0|0,1 " "frustum 0,0,0|1,0,0|0,1,0 0,0,0 0,0,0" "vanishing 1,0" "zbuffer $cube 160 0" "zbuffer $cube 0 -1" "zbuffer $cube 1" "backface $dir/room.txt" "scanline 0,0 1,1" "scanline 0,0;1,1;2,2" \
             "scanline 0,0|5,0|0,5 odd" "scanline 0,0|9000,0|0,5" \
             "line 0 0 5 5 --bogus" "line 0 0 5 5 --frames" "circle 3 --html="; do
     # words split at blanks; '|' inside a word stands for a blank

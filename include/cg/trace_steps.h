@@ -24,6 +24,8 @@
 #include "cg/hemesh.h"
 #include "cg/light.h"
 #include "cg/mesh.h"
+#include "cg/render.h"
+#include "cg/trace.h"
 #include "cg/xform.h"
 
 #include <stddef.h>
@@ -205,6 +207,56 @@ cg_status cg_zbuffer_pixel_steps(const cg_mesh *mesh, cg_mat4 model, const cg_ca
                                  int width, int height, int x, int y, int cull, cg_step_fn step,
                                  void *user);
 
+/* The painter's algorithm (5.2) as cg_renderer_draw runs it: draws one
+ * frame into image with the renderer's options and CG_RENDER_PAINTER (the
+ * same bytes as cg_renderer_draw with that algorithm) and reports the
+ * renderer's own steps: phase "sorted", the polygons (triangles after
+ * culling and clipping, in window x, y and depth) by farthest depth (k,
+ * polygon, triangle, z_max, z_min, x_extent, y_extent); phase "tests", for
+ * the list's head P each Q whose depth range reaches P's, Newell's tests in
+ * order up to the first that passes (P, Q, z_extents, x_extents,
+ * y_extents, P_behind_Q_plane, Q_front_of_P_plane, projections: "-" when
+ * not reached; outcome: the test that passed, a swap that moves Q in front
+ * of P, or a split into two new polygons); phase "paint", each polygon as
+ * it is painted (order, polygon, triangle, vertices, z_max, fragments,
+ * color).  Geometry: the outlines in window coordinates (y down).  Errors
+ * as cg_renderer_draw. */
+cg_status cg_painter_steps(cg_renderer *renderer, cg_image *image, cg_step_fn step, void *user);
+
+/* A pixel's ray tree (5.4) as cg_trace_render traces it, in a width x
+ * height image: the renderer's own rays, in the order they are started.
+ * Phase "rays", one step per ray (sample, ray, parent, kind: primary,
+ * reflected or refracted; depth; weight: its share of the pixel; hit: the
+ * object, or a miss; t, point, normal (toward the ray's side), side
+ * (outside or inside the object); local: the light at the hit through its
+ * shadow rays; fresnel (Schlick, transparent materials), kr and kt: the
+ * weights of the reflected and refracted rays; secondary: what follows;
+ * color = local + kr color(reflected) + kt color(refracted)).  Phase
+ * "shadow rays": for each ray's hit, each light (ray, light, kind, the
+ * verdict).  Phase "pixel": the pixel's colour (RGBA, linear), exactly
+ * cg_trace_render's.  Geometry: each ray from the side (-z, y).  Errors
+ * as cg_trace_render. */
+cg_status cg_trace_pixel_steps(cg_trace_scene *scene, const cg_camera *camera,
+                               const cg_trace_options *options, int width, int height, int x, int y,
+                               cg_step_fn step, void *user);
+
+/* Flat, Gouraud and Phong shading at pixel (x, y) as the z-buffer
+ * renderer does it: draws one frame into image with the renderer's options
+ * (the same bytes as cg_renderer_draw; CG_EINVAL unless the algorithm is
+ * CG_RENDER_ZBUFFER) and reports each triangle's fragment there in drawing
+ * order: phase "fragments" (fragment, window_xyz: the snapped vertices,
+ * barycentric: the screen weights from the rasterizer's edge functions,
+ * perspective: the perspective-correct weights l_k (1/w_k) / sum, depth,
+ * buffer: the depth before, decision: written or hidden, mode, then flat:
+ * color; Gouraud: vertex_colors and the interpolated color; Phong:
+ * vertex_normals, the renormalized N, position, base and the lighting terms
+ * ambient, diffuse, specular and their sum color), then phase "pixel": the
+ * frame's pixel (linear RGBA).  The values are recomputed in double from
+ * the rasterizer's setup; the written colour agrees with the pixel to its
+ * float rounding. */
+cg_status cg_shading_pixel_steps(cg_renderer *renderer, cg_image *image, int x, int y,
+                                 cg_step_fn step, void *user);
+
 /* ---- chapters 6-7: illumination and colour -------------------------------- */
 
 /* The illumination at a point by cg/light.h's model, light by light: phase
@@ -228,6 +280,29 @@ cg_status cg_light_steps(cg_vec3 position, cg_vec3 normal, cg_vec3 view,
  * cg_rgb_to_hsl's. */
 cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void *user);
 
+/* Intensity to pixel (6.1.5) as cg_dither_plane does it on a width x
+ * height plane (rows width floats apart; at most 2^20 values), pixel by
+ * pixel in its order (phase "pixels", the step setting that pixel with its
+ * output level as intensity): CG_DITHER_NONE gives I (clamped), s = I (N -
+ * 1), k, the error I - out and out; the Bayer methods I, s, floor_s, frac,
+ * the matrix index b, threshold = (b + 1/2) / n^2, the decision and out;
+ * Floyd-Steinberg I, v (I plus the errors it received), error = v - out,
+ * the weights ("7/16 3/16 5/16 1/16", renormalized at the border; none at
+ * the last pixel), the parts pushed right, below_left, below and
+ * below_right, and out.  The outputs are cg_dither_plane's, bit for
+ * bit.  Errors as cg_dither_plane. */
+cg_status cg_dither_plane_steps(const float *in, int width, int height, int levels,
+                                cg_dither method, cg_step_fn step, void *user);
+
+/* Gamma correction (7.2.1) of intensities: phase "values", one step per
+ * value with k, I (clamped), the corrected voltage V = I^(1/gamma)
+ * (cg_gamma_encode), its 8-bit code round(255 V), what the CRT shows of it
+ * V^gamma (cg_gamma_decode: I again), what it shows of the uncorrected
+ * I^gamma, and the sRGB encoding of I (cg_linear_to_srgb) beside them.
+ * CG_EINVAL unless gamma is finite and > 0. */
+cg_status cg_gamma_steps(const double *intensities, size_t count, double gamma, cg_step_fn step,
+                         void *user);
+
 /* ---- chapter 9: half-edge meshes ------------------------------------------ */
 
 /* The loop of face f by next (phase "face loop": k, h, origin, next, twin,
@@ -239,6 +314,39 @@ cg_status cg_rgb_to_hsv_steps(cg_vec3 rgb, int lightness, cg_step_fn step, void 
  * CG_EINVAL for a deleted or missing face or vertex. */
 cg_status cg_hemesh_face_loop_steps(const cg_hemesh *m, uint32_t f, cg_step_fn step, void *user);
 cg_status cg_hemesh_one_ring_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step, void *user);
+
+/* Subdivision stencils: the new position of old vertex v of a structure
+ * without deleted elements, as cg_hemesh_subdivide_loop (triangles only,
+ * else CG_EUNSUPPORTED) or cg_hemesh_subdivide_catmull_clark places it,
+ * bit for bit.  Phase "stencil", one step per term (k, term: "P",
+ * "neighbour", "face point", "edge midpoint", "boundary neighbour"; its
+ * index; its weight; its position): Loop (1 - n beta) for P and beta for
+ * each neighbour; Catmull-Clark (n - 3) / n for P, 1 / n^2 for each face
+ * point and 2 / n^2 for each edge midpoint; on the boundary 3/4 and 1/8,
+ * 1/8.  Phase "result": the rule, n, beta (Loop), the old and the new
+ * position.  CG_EINVAL for a bad or deleted vertex or a structure with
+ * deleted elements. */
+cg_status cg_hemesh_loop_stencil_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step, void *user);
+cg_status cg_hemesh_catmull_clark_stencil_steps(const cg_hemesh *m, uint32_t v, cg_step_fn step,
+                                                void *user);
+
+typedef enum cg_edge_operation {
+    CG_EDGE_FLIP = 0,    /* cg_hemesh_flip_edge(m, e) */
+    CG_EDGE_SPLIT = 1,   /* cg_hemesh_split_edge at the edge's midpoint */
+    CG_EDGE_COLLAPSE = 2 /* cg_hemesh_collapse_edge(m, 2e): origin(2e) removed */
+} cg_edge_operation;
+
+/* Applies the operation to edge e of m (the library's call, so m is
+ * changed exactly as by it) and lists the half-edge records around it:
+ * phase "before", each half-edge leaving the edge's ends and its opposite
+ * corners (k, h, origin, dest, twin, next, prev, face), phase "operation"
+ * (the edge, its ends a and b, what was done, "done" or "refused", the new
+ * vertex of a split), then, when done, phase "after": the same for the
+ * vertices still there and the new one.  A refused operation is not an
+ * error (CG_OK, the structure unchanged); CG_EINVAL for a bad or deleted
+ * edge or operation. */
+cg_status cg_hemesh_edge_operation_steps(cg_hemesh *m, cg_edge_operation operation, uint32_t e,
+                                         cg_step_fn step, void *user);
 
 /* ---- chapter 10: filling -------------------------------------------------- */
 

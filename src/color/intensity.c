@@ -2,6 +2,7 @@
  * quantization, ordered (Bayer) dithering, Floyd-Steinberg error diffusion
  * and halftone cells. */
 #include "cg/color.h"
+#include "internal.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -81,7 +82,7 @@ static float clamp_float(float v)
 }
 
 static void ordered(const float *in, float *out, int width, int height, size_t stride, int levels,
-                    int n)
+                    int n, color_dither_report *report)
 {
     int m[8][8];
     bayer_matrix(n, m);
@@ -96,7 +97,10 @@ static void ordered(const float *in, float *out, int width, int height, size_t s
             double s = clamp_float(in[i]) * top;
             double base = floor(s);
             double k = base + (s - base > threshold[y % n][x % n] ? 1 : 0);
+            float input = in[i];
             out[i] = (float)((k > top ? top : k) / top);
+            if (report)
+                color_report_ordered(report, x, y, input, s, m[y % n][x % n], n, out[i]);
         }
 }
 
@@ -113,7 +117,7 @@ static float quantize_float(double v, double top)
 /* Floyd-Steinberg on a working copy in double (errors accumulate in double
  * so the total is kept to rounding). */
 static cg_status floyd_steinberg(const float *in, float *out, int width, int height, size_t stride,
-                                 int levels)
+                                 int levels, color_dither_report *report)
 {
     size_t w = (size_t)width;
     double *cur = calloc(w + 2, sizeof *cur), *next = calloc(w + 2, sizeof *next);
@@ -135,7 +139,7 @@ static cg_status floyd_steinberg(const float *in, float *out, int width, int hei
         float *o = out + (size_t)y * stride;
         for (size_t x = 0; x < w; x++) {
             double v = cur[x + 1];
-            float q = quantize_float(v, top);
+            float q = quantize_float(v, top), input = in[(size_t)y * stride + x];
             o[x] = q;
             double e = v - q;
             int right = x + 1 < w, left = x > 0;
@@ -143,6 +147,10 @@ static cg_status floyd_steinberg(const float *in, float *out, int width, int hei
             double wbl = !last_row && left ? 3 : 0, wb = !last_row ? 5 : 0;
             double wbr = !last_row && right ? 1 : 0;
             double total = wr + wbl + wb + wbr;
+            if (report) {
+                double weights[4] = {wr, wbl, wb, wbr};
+                color_report_diffusion(report, (int)x, y, input, v, q, e, weights);
+            }
             if (total == 0)
                 continue; /* the last pixel: its error leaves the image */
             e /= total;
@@ -160,8 +168,8 @@ static cg_status floyd_steinberg(const float *in, float *out, int width, int hei
     return CG_OK;
 }
 
-cg_status cg_dither_plane(const float *in, float *out, int width, int height, size_t stride,
-                          int levels, cg_dither method)
+cg_status color_dither_plane(const float *in, float *out, int width, int height, size_t stride,
+                             int levels, cg_dither method, color_dither_report *report)
 {
     if (!in || !out || width <= 0 || height <= 0 || stride < (size_t)width || !levels_ok(levels))
         return CG_EINVAL;
@@ -171,16 +179,26 @@ cg_status cg_dither_plane(const float *in, float *out, int width, int height, si
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++) {
                 size_t i = (size_t)y * stride + (size_t)x;
-                out[i] = quantize_float(clamp_float(in[i]), top);
+                float input = in[i];
+                out[i] = quantize_float(clamp_float(input), top);
+                if (report)
+                    color_report_quantize(report, x, y, input, top, out[i]);
             }
         return CG_OK;
     }
-    case CG_DITHER_BAYER2: ordered(in, out, width, height, stride, levels, 2); return CG_OK;
-    case CG_DITHER_BAYER4: ordered(in, out, width, height, stride, levels, 4); return CG_OK;
-    case CG_DITHER_BAYER8: ordered(in, out, width, height, stride, levels, 8); return CG_OK;
-    case CG_DITHER_FLOYD_STEINBERG: return floyd_steinberg(in, out, width, height, stride, levels);
+    case CG_DITHER_BAYER2: ordered(in, out, width, height, stride, levels, 2, report); return CG_OK;
+    case CG_DITHER_BAYER4: ordered(in, out, width, height, stride, levels, 4, report); return CG_OK;
+    case CG_DITHER_BAYER8: ordered(in, out, width, height, stride, levels, 8, report); return CG_OK;
+    case CG_DITHER_FLOYD_STEINBERG:
+        return floyd_steinberg(in, out, width, height, stride, levels, report);
     default: return CG_EINVAL;
     }
+}
+
+cg_status cg_dither_plane(const float *in, float *out, int width, int height, size_t stride,
+                          int levels, cg_dither method)
+{
+    return color_dither_plane(in, out, width, height, stride, levels, method, NULL);
 }
 
 cg_status cg_image_dither(cg_image *image, int levels, cg_dither method)

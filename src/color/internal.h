@@ -46,4 +46,29 @@ static inline int cg_simd_level(void)
 #define CG_SIMD_PICK(base, avx2, avx512) \
     (cg_simd_level() == 2 ? (avx512) : cg_simd_level() == 1 ? (avx2) : (base))
 
+/* ---- intensity to pixel, step by step (trace_dither.c) ------------------- */
+
+#include "cg/trace_steps.h"
+
+/* Where cg_dither_plane_steps sends the steps of a plane being dithered. */
+typedef struct color_dither_report {
+    cg_step_fn fn;
+    void *user;
+    int stopped; /* the callback asked to stop: no more steps */
+} color_dither_report;
+
+/* cg_dither_plane, reporting each pixel when report is not NULL. */
+cg_status color_dither_plane(const float *in, float *out, int width, int height, size_t stride,
+                             int levels, cg_dither method, color_dither_report *report);
+/* One pixel of plain quantization to top + 1 levels, of ordered dithering
+ * (Bayer index b of the n x n matrix), of Floyd-Steinberg error diffusion
+ * (v: the input plus the errors it received; weights: of the right, below
+ * left, below and below right neighbours, 0 where there is none). */
+void color_report_quantize(color_dither_report *r, int x, int y, float input, double top,
+                           float out);
+void color_report_ordered(color_dither_report *r, int x, int y, float input, double scaled, int b,
+                          int n, float out);
+void color_report_diffusion(color_dither_report *r, int x, int y, float input, double v, float out,
+                            double error, const double weights[4]);
+
 #endif

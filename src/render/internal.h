@@ -5,6 +5,7 @@
 #include "cg/render.h"
 #include "cg/light.h"
 #include "cg/color.h"
+#include "cg/trace_steps.h"
 #include "../color/srgb_tables.h"
 
 #include <math.h>
@@ -43,6 +44,9 @@ void render_lighting_prepare(render_lighting *l);
  * base, seen from the camera and lit by the lights: the local illumination
  * model of cg/light.h (cg_light_shade), evaluated in float for the ambient
  * and directional lights the renderer uses. */
+/* The three terms render_shade sums (ambient, diffuse, specular), apart. */
+void render_shade_terms(const render_lighting *l, const float position[3], const float n[3],
+                        const float base[3], float ambient[3], float diffuse[3], float specular[3]);
 void render_shade(const render_lighting *lighting, const float position[3], const float normal[3],
                   const float base[3], float out[3]);
 
@@ -309,6 +313,15 @@ struct cg_renderer {
     size_t clean_tile_capacity;
     struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;              /* the thread count it was started for */
+    /* cg_painter_steps: the painter's algorithm reports its steps here
+     * during that call (NULL otherwise) */
+    cg_step_fn painter_step;
+    void *painter_user;
+    /* cg_shading_pixel_steps: the fragments at pixel (probe_x, probe_y) */
+    cg_step_fn shade_step;
+    void *shade_user;
+    int probe_x, probe_y, probe_stopped;
+    long long probe_count;
 };
 
 /* A mesh vertex after the vertex stage: where it lies against the view
@@ -326,6 +339,7 @@ typedef struct frame_vertex {
 /* A clipped polygon in screen space, for the painter's algorithm. */
 typedef struct painter_polygon {
     int n;
+    uint32_t triangle; /* the mesh triangle it comes from */
     float color[3];
     screen_vertex v[RENDER_MAX_POLYGON];
 } painter_polygon;
@@ -392,6 +406,11 @@ void render_finish_setup(const render_frame *frame, setup_triangle *t, const flo
  * number of covered pixels. */
 size_t render_raster(const render_frame *frame, const setup_triangle *t, int x0, int y0, int x1,
                      int y1, int depth_test);
+
+/* cg_shading_pixel_steps' report of the fragment of t at the probed pixel
+ * (shade_probe.c), after render_raster drew t; depth_before: the buffer's
+ * depth there before. */
+void render_probe_fragment(const render_frame *frame, const setup_triangle *t, float depth_before);
 
 /* Painter's algorithm and edge drawing, in their own files. */
 cg_status render_painter(render_frame *frame);

@@ -10,27 +10,12 @@
  * allow it; a Q that was already moved once closes a cycle, and the cycle is
  * broken by splitting P (or Q) along the other's plane.  The tests run in
  * screen space (pixels, window depth), where the projection is parallel. */
-#include "internal.h"
+#include "painter.h"
 #include "../core/array.h"
 #include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct node {
-    double xmin, xmax, ymin, ymax, zmin, zmax;
-    double plane[4]; /* unit normal (toward the viewer) and offset, depth scaled */
-    int prev, next;
-    unsigned char moved, floating;
-} node;
-
-typedef struct painter {
-    const render_frame *f;
-    painter_polygon *polygons;
-    node *nodes;
-    size_t count, polygon_capacity, node_capacity, limit;
-    double depth_scale;
-} painter;
 
 static double vx(const screen_vertex *v)
 {
@@ -44,7 +29,7 @@ static double vy(const screen_vertex *v)
 static void describe(painter *pt, int i)
 {
     const painter_polygon *p = &pt->polygons[i];
-    node *n = &pt->nodes[i];
+    painter_node *n = &pt->nodes[i];
     double s = pt->depth_scale;
     n->xmin = n->ymin = n->zmin = INFINITY;
     n->xmax = n->ymax = n->zmax = -INFINITY;
@@ -122,20 +107,26 @@ static int separated_by_edges(const painter_polygon *a, const painter_polygon *b
     return 0;
 }
 
-/* True when P can be painted before Q: tests 1 to 5. */
-static int may_precede(const painter *pt, int p, int q)
+/* Tests 1 to 5 in order (painter.h): the number of the first that passes
+ * (P may be painted before Q), or 0 when none does. */
+static int newell_tests(const painter *pt, int p, int q, int tests[PAINTER_TESTS])
 {
-    const node *a = &pt->nodes[p], *b = &pt->nodes[q];
-    if (a->xmax <= b->xmin || b->xmax <= a->xmin)
-        return 1;
-    if (a->ymax <= b->ymin || b->ymax <= a->ymin)
-        return 1;
-    if (all_on_side(pt, p, q, -1))
-        return 1;
-    if (all_on_side(pt, q, p, +1))
-        return 1;
+    const painter_node *a = &pt->nodes[p], *b = &pt->nodes[q];
     const painter_polygon *pp = &pt->polygons[p], *qq = &pt->polygons[q];
-    return separated_by_edges(pp, qq) || separated_by_edges(qq, pp);
+    for (int k = 0; k < PAINTER_TESTS; k++)
+        tests[k] = -1;
+    for (int k = 0; k < PAINTER_TESTS; k++) {
+        switch (k) {
+        case 0: tests[k] = a->xmax <= b->xmin || b->xmax <= a->xmin; break;
+        case 1: tests[k] = a->ymax <= b->ymin || b->ymax <= a->ymin; break;
+        case 2: tests[k] = all_on_side(pt, p, q, -1); break;
+        case 3: tests[k] = all_on_side(pt, q, p, +1); break;
+        default: tests[k] = separated_by_edges(pp, qq) || separated_by_edges(qq, pp); break;
+        }
+        if (tests[k])
+            return k + 1;
+    }
+    return 0;
 }
 
 static int add_polygon(painter *pt, const painter_polygon *p)
@@ -148,7 +139,7 @@ static int add_polygon(painter *pt, const painter_polygon *p)
                != CG_OK)
         return -1;
     pt->polygons[pt->count] = *p;
-    memset(&pt->nodes[pt->count], 0, sizeof(node));
+    memset(&pt->nodes[pt->count], 0, sizeof(painter_node));
     describe(pt, (int)pt->count);
     return (int)pt->count++;
 }
@@ -216,7 +207,7 @@ static int split(painter *pt, int which, int by, int *far_piece, int *near_piece
 
 static void unlink_node(painter *pt, int *list_head, int i)
 {
-    node *n = &pt->nodes[i];
+    painter_node *n = &pt->nodes[i];
     if (n->prev >= 0)
         pt->nodes[n->prev].next = n->next;
     else
@@ -252,6 +243,7 @@ static void paint(painter *pt, int i)
 {
     const render_frame *f = pt->f;
     const painter_polygon *p = &pt->polygons[i];
+    size_t fragments = 0;
     for (int k = 1; k + 1 < p->n; k++) {
         setup_triangle t;
         if (render_setup(&p->v[0], &p->v[k], &p->v[k + 1], f->width, f->height, f->attribute_count,
@@ -260,8 +252,10 @@ static void paint(painter *pt, int i)
             continue;
         render_finish_setup(f, &t, p->color);
         f->r->stats.rasterized++;
-        f->r->stats.fragments += render_raster(f, &t, 0, 0, f->width, f->height, 0);
+        fragments += render_raster(f, &t, 0, 0, f->width, f->height, 0);
     }
+    f->r->stats.fragments += fragments;
+    painter_report_paint(pt, i, fragments);
 }
 
 /* The image cleared to the background, the depth to +infinity. */
@@ -341,17 +335,23 @@ static void replace_by_pieces(painter *pt, int *list, int which, int a, int b)
  * memory runs out. */
 static int settle_head(painter *pt, int *list, size_t *splits)
 {
-    int p = *list;
+    int p = *list, tests[PAINTER_TESTS];
     for (int q = pt->nodes[p].next; q >= 0; q = pt->nodes[q].next) {
         if (pt->nodes[q].zmax <= pt->nodes[p].zmin) {
-            if (!pt->nodes[q].floating)
+            int floating = pt->nodes[q].floating;
+            painter_report_pair(pt, p, q, NULL, floating ? PAINTER_DEPTH_SKIP : PAINTER_DEPTH_APART,
+                                -1, -1);
+            if (!floating)
                 break; /* the sorted rest cannot overlap P in depth */
             continue;
         }
-        if (may_precede(pt, p, q))
+        if (newell_tests(pt, p, q, tests)) {
+            painter_report_pair(pt, p, q, tests, PAINTER_PASSED, -1, -1);
             continue;
+        }
         /* P may hide part of Q: can Q go first instead? */
         if (!pt->nodes[q].moved && (all_on_side(pt, q, p, -1) || all_on_side(pt, p, q, +1))) {
+            painter_report_pair(pt, p, q, tests, PAINTER_MOVED, -1, -1);
             unlink_node(pt, list, q);
             push_front(pt, list, q);
             pt->nodes[q].moved = pt->nodes[q].floating = 1;
@@ -365,8 +365,11 @@ static int settle_head(painter *pt, int *list, size_t *splits)
         }
         if (result < 0)
             return -1;
-        if (result == 0)
+        if (result == 0) {
+            painter_report_pair(pt, p, q, tests, PAINTER_UNRESOLVED, -1, -1);
             continue; /* cannot be resolved: keep the sorted order */
+        }
+        painter_report_pair(pt, p, q, tests, which == p ? PAINTER_SPLIT_P : PAINTER_SPLIT_Q, a, b);
         ++*splits;
         replace_by_pieces(pt, list, which, a, b);
         return 1;
@@ -381,8 +384,12 @@ cg_status render_painter(render_frame *f)
     memset(&pt, 0, sizeof pt);
     pt.f = f;
     pt.depth_scale = f->width > f->height ? f->width : f->height;
+    pt.step = f->r->painter_step;
+    pt.user = f->r->painter_user;
     int list = -1;
     cg_status status = gather_sorted(&pt, &list);
+    if (status == CG_OK)
+        painter_report_sorted(&pt, list);
     size_t splits = 0, painted = 0;
     int naive = f->o->algorithm == CG_RENDER_DEPTH_SORT;
     while (status == CG_OK && list >= 0) {

@@ -341,10 +341,19 @@ size_t render_raster(const render_frame *f, const setup_triangle *t, int x0, int
                      int depth_test)
 {
     int rgba8 = f->image->format == CG_PIXEL_RGBA8;
+    const cg_renderer *r = f->r;
+    int probe = r->shade_step && r->probe_x >= x0 && r->probe_x < x1 && r->probe_y >= y0
+                && r->probe_y < y1 && r->probe_x >= t->box[0] && r->probe_x < t->box[2]
+                && r->probe_y >= t->box[1] && r->probe_y < t->box[3];
+    float before = probe ? f->depth[(size_t)r->probe_y * f->width + r->probe_x] : 0;
+    size_t fragments;
     switch (f->shading) {
-    case MODE_FLAT: return RASTER_CASE(MODE_FLAT);
-    case MODE_GOURAUD: return RASTER_CASE(MODE_GOURAUD);
-    case MODE_TEXTURED: return RASTER_CASE(MODE_TEXTURED);
-    default: return RASTER_CASE(MODE_PHONG);
+    case MODE_FLAT: fragments = RASTER_CASE(MODE_FLAT); break;
+    case MODE_GOURAUD: fragments = RASTER_CASE(MODE_GOURAUD); break;
+    case MODE_TEXTURED: fragments = RASTER_CASE(MODE_TEXTURED); break;
+    default: fragments = RASTER_CASE(MODE_PHONG); break;
     }
+    if (probe)
+        render_probe_fragment(f, t, before);
+    return fragments;
 }

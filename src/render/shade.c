@@ -45,8 +45,9 @@ void render_lighting_prepare(render_lighting *l)
     l->blinn = m->specular == CG_SPECULAR_BLINN;
 }
 
-void render_shade(const render_lighting *l, const float position[3], const float n[3],
-                  const float base[3], float out[3])
+void render_shade_terms(const render_lighting *l, const float position[3], const float n[3],
+                        const float base[3], float ambient[3], float diffuse_term[3],
+                        float specular_term[3])
 {
     float view[3] = {n[0], n[1], n[2]}; /* only the specular term looks at it */
     if (l->ks != 0) {
@@ -86,7 +87,18 @@ void render_shade(const render_lighting *l, const float position[3], const float
         for (int j = 0; j < 3; j++)
             specular[j] += c[j] * spec;
     }
+    for (int j = 0; j < 3; j++) {
+        ambient[j] = base[j] * l->ambient[j];
+        diffuse_term[j] = l->kd * base[j] * diffuse[j];
+        specular_term[j] = l->specular_color[j] * specular[j];
+    }
+}
+
+void render_shade(const render_lighting *l, const float position[3], const float n[3],
+                  const float base[3], float out[3])
+{
+    float ambient[3], diffuse[3], specular[3];
+    render_shade_terms(l, position, n, base, ambient, diffuse, specular);
     for (int j = 0; j < 3; j++)
-        out[j] = base[j] * l->ambient[j] + l->kd * base[j] * diffuse[j]
-                 + l->specular_color[j] * specular[j];
+        out[j] = ambient[j] + diffuse[j] + specular[j];
 }

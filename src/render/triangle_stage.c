@@ -39,7 +39,8 @@ static void emit_setup(render_frame *f, render_chunk *c, const setup_triangle *t
     c->setup_count++;
 }
 
-static void emit_polygon(render_chunk *c, const screen_vertex *v, int n, const float color[3])
+static void emit_polygon(render_chunk *c, size_t triangle, const screen_vertex *v, int n,
+                         const float color[3])
 {
     if (c->failed)
         return;
@@ -51,6 +52,7 @@ static void emit_polygon(render_chunk *c, const screen_vertex *v, int n, const f
     }
     painter_polygon *out = &c->polygons[c->polygon_count++];
     out->n = n;
+    out->triangle = (uint32_t)triangle;
     memcpy(out->color, color, sizeof out->color);
     memcpy(out->v, v, sizeof *v * (size_t)n);
 }
@@ -199,7 +201,7 @@ static void keep_polygon(render_frame *f, render_chunk *c, size_t i, const scree
         c->culled++;
         return;
     }
-    emit_polygon(c, s, count, color);
+    emit_polygon(c, i, s, count, color);
 }
 
 /* The z-buffer sets up the clipped polygon as a fan of triangles. */

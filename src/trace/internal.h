@@ -3,6 +3,7 @@
 #define CG_TRACE_INTERNAL_H
 
 #include "cg/trace.h"
+#include "cg/trace_steps.h"
 #include "../core/worker_pool.h"
 
 /* A node of the binary tree the build makes (32 bytes): bounds, and either
@@ -143,5 +144,48 @@ cg_vec3 trace_offset(const trace_hit *hit, cg_vec3 normal);
  * colour on the cells of odd parity (the plane's own axes for a plane,
  * world axes otherwise).  Shared by the Whitted and the path tracer. */
 cg_vec3 trace_surface_color(const trace_object *o, cg_vec3 p);
+
+/* ---- one pixel's ray tree (ray_tree.c, for cg_trace_pixel_steps) ---------- */
+
+typedef enum trace_ray_kind {
+    TRACE_RAY_PRIMARY,
+    TRACE_RAY_REFLECTED,
+    TRACE_RAY_REFRACTED
+} trace_ray_kind;
+
+/* How a light was found at a hit: ambient (no shadow ray), facing away
+ * (none cast), a shadow ray cast, lit without one (shadows off), an area
+ * light's samples. */
+typedef enum trace_light_check {
+    TRACE_LIGHT_AMBIENT,
+    TRACE_LIGHT_AWAY,
+    TRACE_LIGHT_TESTED,
+    TRACE_LIGHT_UNTESTED,
+    TRACE_LIGHT_AREA
+} trace_light_check;
+
+typedef struct trace_ray_report trace_ray_report;
+
+trace_ray_report *trace_report_create(const cg_trace_scene *scene, int x, int y);
+void trace_report_free(trace_ray_report *r);
+/* A new sample of the pixel at image point (px, py). */
+void trace_report_sample(trace_ray_report *r, int sample, double px, double py);
+/* A ray traced from the innermost ray not done (its parent): its node. */
+int trace_report_ray(trace_ray_report *r, trace_ray_kind kind, int depth, double weight,
+                     cg_vec3 origin, cg_vec3 direction);
+void trace_report_hit(trace_ray_report *r, int node, const trace_hit *hit, int object_kind,
+                      cg_vec3 normal, int entering);
+void trace_report_shadow(trace_ray_report *r, size_t light, int light_kind, trace_light_check check,
+                         int visible, int samples);
+void trace_report_local(trace_ray_report *r, int node, cg_vec3 local);
+/* The split between reflection (kr) and refraction (kt) with the Fresnel
+ * weight (NaN: not transparent); total: total internal reflection. */
+void trace_report_split(trace_ray_report *r, int node, double fresnel, double kr, double kt,
+                        int total);
+/* The ray's colour (hit NULL: a miss, the background); it is done. */
+void trace_report_done(trace_ray_report *r, int node, const trace_hit *hit, cg_vec3 color);
+/* Every ray, shadow ray and the pixel as steps; CG_ENOMEM when recording
+ * ran out of memory. */
+cg_status trace_report_emit(trace_ray_report *r, cg_rgbaf pixel, cg_step_fn fn, void *user);
 
 #endif

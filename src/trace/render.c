@@ -59,7 +59,8 @@ typedef struct context {
     const cg_trace_scene *scene;
     const cg_trace_options *options;
     uint64_t rays;
-    double *visibility; /* one per scene light */
+    double *visibility;       /* one per scene light */
+    trace_ray_report *report; /* cg_trace_pixel_steps: the ray tree, or NULL */
 } context;
 
 cg_vec3 trace_surface_color(const trace_object *o, cg_vec3 p)
@@ -108,9 +109,18 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
         } else if (!lit || !cg_light_vector(l, hit->point, &to_light, &distance)
                    || cg_vec3_dot(n_geometric, to_light) <= 0 || cg_vec3_dot(n, to_light) <= 0) {
             ctx->visibility[i] = 0;
+            if (ctx->report)
+                trace_report_shadow(ctx->report, i, l->kind, TRACE_LIGHT_AWAY, 0, 0);
+            continue;
         } else {
             ctx->visibility[i] = visible(ctx, hit, n_geometric, to_light, distance);
         }
+        if (ctx->report)
+            trace_report_shadow(ctx->report, i, l->kind,
+                                l->kind == CG_LIGHT_AMBIENT ? TRACE_LIGHT_AMBIENT
+                                : ctx->options->shadows     ? TRACE_LIGHT_TESTED
+                                                            : TRACE_LIGHT_UNTESTED,
+                                ctx->visibility[i] > 0, 1);
     }
     cg_vec3 sum = cg_shade_terms_sum(cg_light_shade_terms(
         hit->point, n, to_viewer, material, scene->lights, scene->light_count, ctx->visibility));
@@ -118,6 +128,7 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
         const cg_trace_area_light *l = &scene->area_lights[i];
         int side = l->samples;
         cg_vec3 color = cg_vec3_scale(l->color, 1.0 / (side * side));
+        int seen = 0;
         for (int sy = 0; sy < side; sy++)
             for (int sx = 0; sx < side; sx++) {
                 /* One jittered sample in each cell of a side x side grid. */
@@ -130,10 +141,15 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
                 if (!cg_light_vector(&point, hit->point, &to_light, &distance)
                     || cg_vec3_dot(n_geometric, to_light) <= 0 || cg_vec3_dot(n, to_light) <= 0)
                     continue;
-                if (visible(ctx, hit, n_geometric, to_light, distance))
+                if (visible(ctx, hit, n_geometric, to_light, distance)) {
+                    seen++;
                     sum = cg_vec3_add(
                         sum, cg_light_shade(hit->point, n, to_viewer, material, &point, 1));
+                }
             }
+        if (ctx->report)
+            trace_report_shadow(ctx->report, scene->light_count + i, CG_LIGHT_POINT,
+                                TRACE_LIGHT_AREA, seen, side * side);
     }
     return sum;
 }
@@ -141,15 +157,20 @@ static cg_vec3 illuminate(context *ctx, const trace_hit *hit, const cg_material 
 /* Radiance along the ray (direction unit) between t_min and t_max (the
  * camera's near and far for a primary ray); *hit_any set when it hits. */
 static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_min, double t_max,
-                     int depth, double weight, sampler *rng, int *hit_any)
+                     int depth, double weight, sampler *rng, int *hit_any, trace_ray_kind kind)
 {
     const cg_trace_options *opt = ctx->options;
     trace_hit hit;
     ctx->rays++;
+    int node = ctx->report ? trace_report_ray(ctx->report, kind, depth, weight, origin, direction)
+                           : -1;
     if (!trace_intersect(ctx->scene, origin, direction, t_min, t_max, &hit)) {
         if (hit_any)
             *hit_any = 0;
-        return cg_vec3_make(opt->background.r, opt->background.g, opt->background.b);
+        cg_vec3 background = cg_vec3_make(opt->background.r, opt->background.g, opt->background.b);
+        if (node >= 0)
+            trace_report_done(ctx->report, node, NULL, background);
+        return background;
     }
     if (hit_any)
         *hit_any = 1;
@@ -163,10 +184,17 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_m
         n = cg_vec3_scale(n, -1);
     cg_vec3 to_viewer = cg_vec3_scale(direction, -1);
     material.color = trace_surface_color(o, hit.point);
+    if (node >= 0)
+        trace_report_hit(ctx->report, node, &hit, o->kind, n, entering);
     cg_vec3 color = cg_vec3_add(o->material.emission,
                                 illuminate(ctx, &hit, &material, n, ng, to_viewer, rng));
-    if (depth >= opt->max_depth)
+    if (node >= 0)
+        trace_report_local(ctx->report, node, color);
+    if (depth >= opt->max_depth) {
+        if (node >= 0)
+            trace_report_done(ctx->report, node, &hit, color);
         return color;
+    }
     cg_vec3 mirror = cg_reflect(direction, n);
     if (cg_vec3_dot(mirror, ng) <= 0)
         mirror = cg_reflect(direction, ng);
@@ -181,20 +209,28 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_m
             double fresnel = cg_fresnel_schlick(cos_i, n1, n2);
             reflect_weight += transmit * fresnel;
             double w = transmit * (1 - fresnel);
+            if (node >= 0)
+                trace_report_split(ctx->report, node, fresnel, reflect_weight, w, 0);
             if (w * weight >= MIN_WEIGHT) {
                 cg_vec3 c = trace(ctx, trace_offset(&hit, cg_vec3_scale(ng, -1)), refracted, 0,
-                                  INFINITY, depth + 1, weight * w, rng, NULL);
+                                  INFINITY, depth + 1, weight * w, rng, NULL, TRACE_RAY_REFRACTED);
                 color = cg_vec3_add(color, cg_vec3_scale(c, w));
             }
         } else {
             reflect_weight += transmit; /* total internal reflection */
+            if (node >= 0)
+                trace_report_split(ctx->report, node, 1, reflect_weight, 0, 1);
         }
+    } else if (node >= 0) {
+        trace_report_split(ctx->report, node, NAN, reflect_weight, 0, 0);
     }
     if (reflect_weight > 0 && reflect_weight * weight >= MIN_WEIGHT) {
         cg_vec3 c = trace(ctx, trace_offset(&hit, ng), mirror, 0, INFINITY, depth + 1,
-                          weight * reflect_weight, rng, NULL);
+                          weight * reflect_weight, rng, NULL, TRACE_RAY_REFLECTED);
         color = cg_vec3_add(color, cg_vec3_scale(c, reflect_weight));
     }
+    if (node >= 0)
+        trace_report_done(ctx->report, node, &hit, color);
     return color;
 }
 
@@ -204,6 +240,7 @@ typedef struct job {
     const cg_trace_scene *scene;
     const cg_trace_options *options;
     cg_image *image;
+    int width, height; /* the image's */
     /* Primary rays: origin(x, y) = origin0 + x origin_dx + y origin_dy and
      * direction the same, normalized (both affine in the image point). */
     cg_vec3 origin0, origin_dx, origin_dy, dir0, dir_dx, dir_dy;
@@ -222,7 +259,7 @@ typedef struct job {
     int done_tiles;
 } job;
 
-static void render_pixel(const job *j, context *ctx, int x, int y)
+static cg_rgbaf pixel_color(const job *j, context *ctx, int x, int y)
 {
     const cg_trace_options *opt = j->options;
     int n = opt->samples;
@@ -232,7 +269,7 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
     int cols = (int)ceil(sqrt((double)n));
     int rows = (n + cols - 1) / cols;
     double r = 0, g = 0, b = 0, a = 0;
-    uint64_t pixel = (uint64_t)y * (uint64_t)j->image->width + (uint64_t)x;
+    uint64_t pixel = (uint64_t)y * (uint64_t)j->width + (uint64_t)x;
     for (int k = 0; k < n; k++) {
         int row = k / cols, col = k % cols;
         int in_row = row == rows - 1 ? n - cols * (rows - 1) : cols;
@@ -250,8 +287,10 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
         double length = cg_vec3_length(step);
         cg_vec3 direction = cg_vec3_normalize(step);
         int hit = 0;
+        if (ctx->report)
+            trace_report_sample(ctx->report, k, px, py);
         cg_vec3 c = trace(ctx, origin, direction, j->depth_from * length, j->depth_to * length, 0,
-                          1, &rng, &hit);
+                          1, &rng, &hit, TRACE_RAY_PRIMARY);
         double w = 1.0 / ((double)rows * in_row);
         r += c.x * w;
         g += c.y * w;
@@ -259,20 +298,26 @@ static void render_pixel(const job *j, context *ctx, int x, int y)
         a += (hit ? 1.0 : opt->background.a) * w;
     }
     cg_rgbaf out = {(float)r, (float)g, (float)b, (float)a};
-    cg_image_set(j->image, x, y, out);
+    return out;
+}
+
+static void render_pixel(const job *j, context *ctx, int x, int y)
+{
+    cg_image_set(j->image, x, y, pixel_color(j, ctx, x, y));
 }
 
 /* The tiles a worker claims, pixel by pixel; the rays it traced. */
 static void render_tiles(void *job_context, int worker)
 {
     job *j = job_context;
-    context ctx = {j->scene, j->options, 0, j->visibility + (size_t)worker * j->scene->light_count};
+    context ctx = {j->scene, j->options, 0, j->visibility + (size_t)worker * j->scene->light_count,
+                   NULL};
     size_t claimed;
     while (core_worker_pool_claim(&j->tiles, &claimed)) {
         int tile = (int)claimed;
         int x0 = tile % j->tiles_x * TILE, y0 = tile / j->tiles_x * TILE;
-        int x1 = x0 + TILE < j->image->width ? x0 + TILE : j->image->width;
-        int y1 = y0 + TILE < j->image->height ? y0 + TILE : j->image->height;
+        int x1 = x0 + TILE < j->width ? x0 + TILE : j->width;
+        int y1 = y0 + TILE < j->height ? y0 + TILE : j->height;
         for (int y = y0; y < y1; y++)
             for (int x = x0; x < x1; x++)
                 render_pixel(j, &ctx, x, y);
@@ -292,7 +337,7 @@ static void render_tiles(void *job_context, int worker)
  * affine in the image point, so the rest follow exactly. */
 static cg_status setup_camera(job *j, const cg_camera *camera)
 {
-    int w = j->image->width, h = j->image->height;
+    int w = j->width, h = j->height;
     cg_vec3 o[3], d[3], axis, unused;
     cg_status s = cg_camera_ray(camera, w, h, w * 0.5, h * 0.5, &unused, &axis);
     const double px[3] = {0, 1, 0}, py[3] = {0, 0, 1};
@@ -330,19 +375,64 @@ static double seconds_since(const struct timespec *a)
     return (double)(b.tv_sec - a->tv_sec) + (double)(b.tv_nsec - a->tv_nsec) * 1e-9;
 }
 
+/* The options' checks of cg_trace_render. */
+static cg_status check_options(const cg_trace_options *opt)
+{
+    if (opt->samples < 1 || opt->max_depth < 0 || opt->threads < 1)
+        return CG_EINVAL;
+    if (opt->samples > MAX_SAMPLES || opt->max_depth > MAX_DEPTH || opt->threads > MAX_THREADS)
+        return CG_ERANGE;
+    if (!isfinite(opt->background.r) || !isfinite(opt->background.g) || !isfinite(opt->background.b)
+        || !isfinite(opt->background.a))
+        return CG_EINVAL;
+    return CG_OK;
+}
+
+cg_status cg_trace_pixel_steps(cg_trace_scene *scene, const cg_camera *camera,
+                               const cg_trace_options *options, int width, int height, int x, int y,
+                               cg_step_fn step, void *user)
+{
+    if (!scene || !camera || !step || width <= 0 || height <= 0 || x < 0 || y < 0 || x >= width
+        || y >= height)
+        return CG_EINVAL;
+    cg_trace_options opt = options ? *options : cg_trace_options_default();
+    cg_status s = check_options(&opt);
+    if (s == CG_OK)
+        s = cg_trace_scene_build(scene, 1, NULL);
+    if (s != CG_OK)
+        return s;
+    job j;
+    memset(&j, 0, sizeof j);
+    j.scene = scene;
+    j.options = &opt;
+    j.width = width;
+    j.height = height;
+    if ((s = setup_camera(&j, camera)) != CG_OK)
+        return s;
+    double *visibility = malloc((scene->light_count + 1) * sizeof *visibility);
+    trace_ray_report *report = trace_report_create(scene, x, y);
+    context ctx = {scene, &opt, 0, visibility, report};
+    if (!visibility || !report) {
+        free(visibility);
+        trace_report_free(report);
+        return CG_ENOMEM;
+    }
+    cg_rgbaf color = pixel_color(&j, &ctx, x, y);
+    s = trace_report_emit(report, color, step, user);
+    free(visibility);
+    trace_report_free(report);
+    return s;
+}
+
 cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
                           const cg_trace_options *options, cg_image *image, cg_trace_stats *stats)
 {
     if (!scene || !camera || !image || image->width <= 0 || image->height <= 0)
         return CG_EINVAL;
     cg_trace_options opt = options ? *options : cg_trace_options_default();
-    if (opt.samples < 1 || opt.max_depth < 0 || opt.threads < 1)
-        return CG_EINVAL;
-    if (opt.samples > MAX_SAMPLES || opt.max_depth > MAX_DEPTH || opt.threads > MAX_THREADS)
-        return CG_ERANGE;
-    if (!isfinite(opt.background.r) || !isfinite(opt.background.g) || !isfinite(opt.background.b)
-        || !isfinite(opt.background.a))
-        return CG_EINVAL;
+    cg_status check = check_options(&opt);
+    if (check != CG_OK)
+        return check;
     if (stats)
         memset(stats, 0, sizeof *stats);
     double build = 0;
@@ -356,6 +446,8 @@ cg_status cg_trace_render(cg_trace_scene *scene, const cg_camera *camera,
     j.scene = scene;
     j.options = &opt;
     j.image = image;
+    j.width = image->width;
+    j.height = image->height;
     if ((s = setup_camera(&j, camera)) != CG_OK)
         return s;
     j.tiles_x = (image->width + TILE - 1) / TILE;

@@ -8,8 +8,11 @@
 
 #include <string.h>
 
-static const trace_algorithm *const groups[] = {trace_chapter2_algorithms, trace_view_algorithms,
-                                                trace_fill_algorithms, trace_clip_algorithms};
+static const trace_algorithm *const groups[] = {
+    trace_chapter2_algorithms, trace_view_algorithms,     trace_surfaces_algorithms,
+    trace_shading_algorithms,  trace_mesh_ops_algorithms, trace_fill_algorithms,
+    trace_clip_algorithms,
+};
 
 static const cli_syntax *const trace_syntaxes[] = {&trace_output_syntax, NULL};
 
@@ -53,13 +56,28 @@ const cg_command cg_command_trace = {
     "  vanishing DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]  the vanishing point of d\n"
     "  backface MESH [ABOUT_Y [ABOUT_X]]  N, V and the sign of N.V per triangle\n"
     "  zbuffer MESH X Y [WxH]     every fragment at one pixel, accepted or not\n"
+    "  painter MESH [ABOUT_Y [ABOUT_X]]  the depth-sorted list, Newell's tests per\n"
+    "                             pair, each swap or split, the painting order\n"
+    "  ray spheres|MESH X Y [WxH] a pixel's ray tree: hits, shadow rays,\n"
+    "                             reflection, refraction, Fresnel, contributions\n"
     "  light POINT NORMAL EYE [LIGHT ...]  ambient, diffuse, specular per light\n"
     "                             (ambient:R,G,B point:X,Y,Z:R,G,B directional:...)\n"
+    "  shading flat|gouraud|phong MESH X Y [WxH]  one pixel: barycentrics,\n"
+    "                             interpolated colour or normal, lighting terms\n"
     "  hsv R G B                  RGB to HSV by the notes' formulas\n"
     "  hsl R G B                  RGB to HSL\n"
+    "  quantize LEVELS I [I ...]  intensity to pixel: s = I (N-1), k, the error\n"
+    "  dither METHOD LEVELS ramp:WxH|IMAGE  bayer2|bayer4|bayer8: threshold per\n"
+    "                             pixel; floyd-steinberg: the error pushed on\n"
+    "  gamma GAMMA I [I ...]      V = I^(1/gamma), its code, what the CRT shows\n"
     "Chapter 9:\n"
     "  face-loop MESH F           a face's half-edges by next: origin, next, twin\n"
     "  one-ring MESH V            a vertex's outgoing half-edges by twin(prev(h))\n"
+    "  loop MESH V                Loop's stencil: weights, neighbours, new vertex\n"
+    "  catmull-clark MESH V       Catmull-Clark's: face points, edge midpoints\n"
+    "  edge-flip MESH E           half-edge records before and after a flip,\n"
+    "  edge-split MESH E          a split at the midpoint,\n"
+    "  edge-collapse MESH E       a collapse of half-edge 2E\n"
     "Chapter 10 (image coordinates, y down):\n"
     "  scanline 'POLYGON' [even-odd|nonzero]  edge table, active list, spans\n"
     "  flood IMAGE X Y [4|8] [TOL]  seed fill: each seed popped, span, pushes\n"

@@ -5,6 +5,10 @@
 
 #include "trace_output.h"
 
+#include "cg/hemesh.h"
+#include "cg/mesh.h"
+#include "cg/xform.h"
+
 typedef struct trace_algorithm {
     const char *name;      /* as typed after `cg trace` */
     const char *arguments; /* "X1 Y1 X2 Y2" */
@@ -17,6 +21,9 @@ extern const trace_algorithm trace_chapter2_algorithms[];
 extern const trace_algorithm trace_view_algorithms[];
 extern const trace_algorithm trace_fill_algorithms[];
 extern const trace_algorithm trace_clip_algorithms[];
+extern const trace_algorithm trace_surfaces_algorithms[];
+extern const trace_algorithm trace_shading_algorithms[];
+extern const trace_algorithm trace_mesh_ops_algorithms[];
 
 /* Argument parsing for the algorithms: each prints "cg: trace: ..." and
  * returns -1 on a bad value, 0 when good. */
@@ -32,5 +39,19 @@ int trace_next_word(const char **at, char *word, size_t size);
 /* "X,Y X,Y ..." into at most capacity points: the count, or -1 after a
  * message. */
 int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity);
+
+/* Loads the mesh at path, turns it about_y then about_x degrees and frames
+ * it with the default camera for the aspect, as cg render does; CLI_OK, or
+ * CLI_FAILED after a message (nothing to free then). */
+int trace_frame_mesh(const char *path, double about_y, double about_x, double aspect,
+                     cg_mesh **mesh, cg_mat4 *model, cg_camera *camera);
+/* MESH [ABOUT_Y [ABOUT_X]] (argv[0] the algorithm; 30 and 20 degrees by
+ * default) loaded and framed by trace_frame_mesh: CLI_OK, or CLI_USAGE or
+ * CLI_FAILED after a message. */
+int trace_turned_mesh(int argc, char **argv, double aspect, double *about_y, double *about_x,
+                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera);
+/* The half-edge structure of the mesh file (strict: a defect is an error,
+ * named); CLI_OK or CLI_FAILED after a message. */
+int trace_load_hemesh(const char *path, cg_hemesh **out);
 
 #endif

@@ -233,8 +233,8 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
 /* Loads the mesh, turns it about y then x (degrees) and frames it with the
  * default camera for the aspect, as cg render does; CLI_OK or CLI_FAILED
  * after a message. */
-static int frame_mesh(const char *path, double about_y, double about_x, double aspect,
-                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
+int trace_frame_mesh(const char *path, double about_y, double about_x, double aspect,
+                     cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
 {
     cg_error err;
     if (cg_mesh_load(path, mesh, &err) != CG_OK)
@@ -265,21 +265,31 @@ static int frame_mesh(const char *path, double about_y, double about_x, double a
     return CLI_OK;
 }
 
+int trace_turned_mesh(int argc, char **argv, double aspect, double *about_y, double *about_x,
+                      cg_mesh **mesh, cg_mat4 *model, cg_camera *camera)
+{
+    *about_y = 30;
+    *about_x = 20;
+    if (argc < 2 || argc > 4)
+        return cli_usage_error("trace", "%s: expected '%s MESH [ABOUT_Y [ABOUT_X]]' (degrees)",
+                               argv[0], argv[0]);
+    if ((argc > 2 && trace_parse_real("ABOUT_Y", argv[2], about_y))
+        || (argc > 3 && trace_parse_real("ABOUT_X", argv[3], about_x)))
+        return CLI_USAGE;
+    return trace_frame_mesh(argv[1], *about_y, *about_x, aspect, mesh, model, camera);
+}
+
 /* backface MESH [ABOUT_Y [ABOUT_X]] */
 static int run_backface(int argc, char **argv, const trace_outputs *out)
 {
-    double about_y = 30, about_x = 20;
-    if (argc < 2 || argc > 4)
-        return cli_usage_error("trace", "backface: expected 'backface MESH [ABOUT_Y [ABOUT_X]]' "
-                                        "(degrees)");
-    if ((argc > 2 && trace_parse_real("ABOUT_Y", argv[2], &about_y))
-        || (argc > 3 && trace_parse_real("ABOUT_X", argv[3], &about_x)))
-        return CLI_USAGE;
+    double about_y, about_x;
     cg_mesh *mesh;
     cg_mat4 model;
     cg_camera camera;
-    if (frame_mesh(argv[1], about_y, about_x, 4.0 / 3.0, &mesh, &model, &camera) != CLI_OK)
-        return CLI_FAILED;
+    int turned = trace_turned_mesh(argc, argv, 4.0 / 3.0, &about_y, &about_x, &mesh, &model,
+                                   &camera);
+    if (turned != CLI_OK)
+        return turned;
     trace_run *run = trace_run_create("backface", argc - 1, argv + 1,
                                       "Back-face culling of %s turned %g degrees about y and %g "
                                       "about x, camera at (%g, %g, %g)",
@@ -321,7 +331,7 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
     cg_mesh *mesh;
     cg_mat4 model;
     cg_camera camera;
-    if (frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
+    if (trace_frame_mesh(argv[1], 30, 20, (double)width / height, &mesh, &model, &camera) != CLI_OK)
         return CLI_FAILED;
     trace_run *run = trace_run_create("zbuffer", argc - 1, argv + 1,
                                       "The z-buffer at pixel (%ld, %ld) of a %dx%d frame of %s", x,
@@ -354,15 +364,10 @@ static int run_hemesh(int ring, int argc, char **argv, const trace_outputs *out)
                                ring ? "V" : "F");
     if (trace_parse_int(ring ? "V" : "F", argv[2], 0, 4294967293L, &index))
         return CLI_USAGE;
-    cg_mesh *mesh;
     cg_hemesh *hemesh;
-    cg_error err;
-    if (cg_mesh_load(argv[1], &mesh, &err) != CG_OK)
-        return cli_fail("trace: %s", err.message);
-    cg_status status = cg_hemesh_build(mesh, 0, &hemesh, NULL, &err);
-    cg_mesh_free(mesh);
-    if (status != CG_OK)
-        return cli_fail("trace: %s: %s", argv[1], err.message);
+    if (trace_load_hemesh(argv[1], &hemesh) != CLI_OK)
+        return CLI_FAILED;
+    cg_status status;
     trace_run *run = trace_run_create(argv[0], argc - 1, argv + 1, "The %s of %s %ld in %s",
                                       ring ? "one-ring" : "loop", ring ? "vertex" : "face", index,
                                       argv[1]);

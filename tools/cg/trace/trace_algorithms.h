@@ -5,6 +5,8 @@
 
 #include "trace_output.h"
 
+#include "cg/clip.h"
+
 typedef struct trace_algorithm {
     const char *name;      /* as typed after `cg trace` */
     const char *arguments; /* "X1 Y1 X2 Y2" */
@@ -28,5 +30,20 @@ int trace_parse_point(const char *what, const char *text, cg_vec2 *out);
 /* "X,Y X,Y ..." into at most capacity points: the count, or -1 after a
  * message. */
 int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity);
+
+/* The same for another command (`cg check` reads the arguments of the
+ * traces): messages start "cg: COMMAND: ". */
+int trace_parse_point_for(const char *command, const char *what, const char *text, cg_vec2 *out);
+int trace_parse_polygon_for(const char *command, const char *what, const char *text,
+                            cg_vec2 *points, int capacity);
+/* The polygon of `scanline` (algorithm `name` in messages): contours
+ * "X,Y X,Y ...; X,Y ..." of at least 3 points each, at most capacity points
+ * and max_contours contours: CLI_OK, or CLI_USAGE after a message. */
+int trace_parse_contours(const char *command, const char *name, const char *text, cg_vec2 *points,
+                         int capacity, int *sizes, int max_contours, int *contour_count);
+/* The arguments of the line clippers, NAME XMIN YMIN XMAX YMAX X0,Y0 X1,Y1
+ * (argv[0] is NAME): CLI_OK, or CLI_USAGE after a message. */
+int trace_parse_window_segment(const char *command, const char *name, int argc, char **argv,
+                               cg_rect *window, cg_vec2 *p0, cg_vec2 *p1);
 
 #endif

@@ -56,6 +56,20 @@ done
 (cd "$work/lines" && env -u DISPLAY -u WAYLAND_DISPLAY CG_BGI_OUTPUT=other.png ./lines </dev/null)
 [ -f "$work/lines/other.png" ] && cmp -s "$work/lines/other.png" "$work/lines/bgi.png" && pass ||
   fail "CG_BGI_OUTPUT names the picture"
+# With a display: a window, getch waits for a key typed into it, and the
+# picture goes to $CG_BGI_OUTPUT only (xvfb and xdotool, as test_view.sh).
+if command -v xvfb-run >/dev/null && command -v xdotool >/dev/null && [ -x "$work/house/house" ]; then
+  (cd "$work/house" && timeout 60 xvfb-run -a sh -c '
+     CG_BGI_OUTPUT=window.png ./house & pid=$!
+     for i in 1 2 3 4 5 6 7 8 9 10; do xdotool search --name "cg BGI" >/dev/null 2>&1 && break; sleep 0.5; done
+     xdotool search --name "cg BGI" >/dev/null 2>&1 && echo window > found.txt
+     sleep 0.5; xdotool key q; wait $pid' </dev/null >/dev/null 2>&1)
+  [ -f "$work/house/found.txt" ] && pass || fail "house opens a window under xvfb"
+  cmp -s "$work/house/window.png" "$work/house/bgi.png" && pass ||
+    fail "the window's program ends at a key and writes CG_BGI_OUTPUT, the same picture"
+else
+  fail "the window test needs xvfb-run and xdotool (Debian packages xvfb, xdotool)"
+fi
 # The same shapes through cg draw (the 16 colours as #rrggbb).
 reference() { # NAME: compares NAME/bgi.ppm with the script on stdin
   "$CG" draw - -o "$work/$1/expected.ppm" >"$work/err" 2>&1 || fail "$1: reference: $(cat "$work/err")"

@@ -15,6 +15,20 @@ trap 'rm -rf "$work"' EXIT
 printf 'size 16 12\nbackground white\ncolor black\npolyline 1 1 14 1 14 10 1 10 1 1\nline 7 1 7 7\nline 10 4 14 4\n' \
     >"$work/room.txt"
 "$CG" draw "$work/room.txt" -o "$work/room.png" || { echo "FAIL: cannot draw the room"; exit 1; }
+# The examples of docs/teaching.md ("$ printf ... | cg check ...") print
+# what the docs show.
+docs_fail=0 docs_count=0
+if [ -n "${2:-}" ] && [ -f "$2/docs/teaching.md" ]; then
+  while IFS= read -r command; do
+    expected=$(c="$command" awk '$0 == "$ " ENVIRON["c"] { on = 1; next } on && /^(\$ |```)/ { exit } on' "$2/docs/teaching.md")
+    actual=$(eval "${command/| cg check/| \"\$CG\" check}")
+    if [ "$expected" != "$actual" ]; then
+      echo "FAIL: docs example: $command"; echo "expected: $expected"; echo "got: $actual"; docs_fail=1
+    fi
+    docs_count=$((docs_count + 1))
+  done < <(sed -n 's/^\$ \(printf .*| cg check .*\)/\1/p' "$2/docs/teaching.md")
+  [ "$docs_count" -ge 5 ] || { echo "FAIL: docs/teaching.md has $docs_count cg check examples"; docs_fail=1; }
+fi
 CG="$CG" WORK="$work" python3 - <<'PYEOF'
 import json, os, random, subprocess, sys
 from fractions import Fraction
@@ -349,3 +363,5 @@ ok(r.returncode == 0 and all(a in r.stdout for a in ["line X1 Y1 X2 Y2", "circle
 print("%d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)
 PYEOF
+status=$?
+[ "$docs_fail" = 0 ] && [ "$status" = 0 ]

@@ -45,6 +45,8 @@ static double octant_distance(long long x, long long y, long long r)
  * (2y - 1)^2 <= 4 (r^2 - x^2) <= (2y + 1)^2; never equal). */
 static int within_half(long long x, long long y, long long r)
 {
+    if (x > r || y > r + 1)
+        return 0; /* far, and no square below may overflow */
     long long s4 = 4 * (r * r - x * x);
     if (s4 < 0)
         return 0;

@@ -79,6 +79,11 @@ void check_note(const char *format, ...)
 #endif
     ;
 
+/* Reads the pixels as a set: CLI_OK with *sorted (by (y, x); free(), NULL
+ * when there is none) and *count; else the status after the message or the
+ * verdict "wrong: pixel ... is listed twice", what naming the algorithm. */
+int check_read_set(FILE *in, const char *what, check_pixel **sorted, size_t *count);
+
 /* "wrong: pixel (x, y) is listed twice (lines a and b); ..." for the repeat
  * at index r of sorted (check_first_repeat), naming what the algorithm
  * draws once. */

@@ -96,8 +96,9 @@ static void describe_spans(const polygon *poly, const crossing *c, int n, char *
 
 /* The explanation of pixel (x, y) by its scan-line: filled says whether the
  * student filled it. */
-static int explain_pixel(const polygon *poly, long long x, long long y, int filled)
+static int explain_pixel(const void *context, long long x, long long y, int filled)
 {
+    const polygon *poly = context;
     static crossing c[MAX_POINTS];
     double xc = (double)x + 0.5, yc = (double)y + 0.5;
     int n = row_crossings(poly, yc, c);
@@ -197,6 +198,27 @@ static int first_difference(const check_pixel *s, size_t ns, const check_pixel *
     return 0;
 }
 
+/* Explains the first pixel in which the student's fill differs from the
+ * definition's: in_student says which of the two has it. */
+typedef int (*explain_fn)(const void *context, long long x, long long y, int in_student);
+
+/* The student's sorted pixels against the definition's, then against cg's
+ * (both in scan order): CLI_OK when the same as both, else the verdict. */
+static int compare_fill(const check_pixel *sorted, size_t count, const check_pixels *definition,
+                        const check_pixel *cg, size_t cg_count, explain_fn explain,
+                        const void *context, const char *cg_name)
+{
+    check_pixel at;
+    int in_student;
+    if (first_difference(sorted, count, definition->data, definition->count, &at, &in_student))
+        return explain(context, at.x, at.y, in_student);
+    if (first_difference(sorted, count, cg, cg_count, &at, &in_student))
+        return check_wrong("pixel (%lld, %lld) is %s, but %s %s it", at.x, at.y,
+                           in_student ? "filled" : "not filled", cg_name,
+                           in_student ? "leaves" : "fills");
+    return CLI_OK;
+}
+
 static int check_polygon(const polygon *poly, const check_pixel *sorted, size_t count)
 {
     check_pixels definition = {0}, cg = {0};
@@ -206,18 +228,10 @@ static int check_polygon(const polygon *poly, const check_pixel *sorted, size_t 
     check_pixel *cg_sorted = check_sorted(&cg);
     if (definition_fill(poly, &definition) != 0 || status != CG_OK || (cg.count && !cg_sorted))
         code = cli_fail("check: polygon-fill: %s", cg_status_str(status ? status : CG_ENOMEM));
-    check_pixel at;
-    int in_student;
-    if (code == CLI_OK
-        && first_difference(sorted, count, definition.data, definition.count, &at, &in_student))
-        code = explain_pixel(poly, at.x, at.y, in_student);
-    else if (code == CLI_OK
-             && first_difference(sorted, count, cg_sorted, cg.count, &at, &in_student))
-        code = check_wrong("pixel (%lld, %lld) is %s; cg's scan-line fill %s it (a rounding of "
-                           "the crossing)",
-                           at.x, at.y, in_student ? "filled" : "not filled",
-                           in_student ? "leaves" : "fills");
-    else if (code == CLI_OK)
+    if (code == CLI_OK)
+        code = compare_fill(sorted, count, &definition, cg_sorted, cg.count, explain_pixel, poly,
+                            "cg's scan-line fill (a rounding of a crossing)");
+    if (code == CLI_OK)
         code = check_right("%zu pixels, those whose centres are inside by the pixel-centre rule "
                            "(%s), the same as cg's scan-line fill",
                            count, poly->rule == CG_FILL_NONZERO ? "non-zero" : "even-odd");
@@ -254,18 +268,12 @@ static int run_polygon_fill(int argc, char **argv, FILE *in, const check_options
     for (int i = 0; i < total; i++)
         if (!(fabs(poly.points[i].x) <= 4096 && fabs(poly.points[i].y) <= 4096))
             return cli_usage_error("check", "polygon-fill: coordinates must lie within 4096");
-    check_pixels pixels = {0};
-    int code = check_read_pixels(in, &pixels);
-    check_pixel *sorted = code == CLI_OK ? check_sorted(&pixels) : NULL;
-    if (code == CLI_OK && pixels.count && !sorted)
-        code = cli_fail("check: out of memory");
-    if (code == CLI_OK) {
-        long repeat = check_first_repeat(sorted, pixels.count);
-        code = repeat >= 0 ? check_wrong_repeat(sorted, repeat, "a scan-line fill")
-                           : check_polygon(&poly, sorted, pixels.count);
-    }
+    check_pixel *sorted;
+    size_t count;
+    int code = check_read_set(in, "a scan-line fill", &sorted, &count);
+    if (code == CLI_OK)
+        code = check_polygon(&poly, sorted, count);
     free(sorted);
-    core_array_free(&pixels);
     return code;
 }
 
@@ -323,8 +331,9 @@ typedef struct flood_check {
     int sx, sy, connectivity;
 } flood_check;
 
-static int explain_flood(const flood_check *f, long long x, long long y, int in_student)
+static int explain_flood(const void *context, long long x, long long y, int in_student)
 {
+    const flood_check *f = context;
     static const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
     char a[16], b[16];
     cg_rgba8 seed = cg_image_get_rgba8(f->image, f->sx, f->sy);
@@ -387,14 +396,10 @@ static int check_flood(const cg_image *image, long sx, long sy, long connectivit
         || regions(image, region, (int)sx, (int)sy, (int)connectivity, &definition, &cg) != 0)
         code = cli_fail("check: flood-fill: out of memory");
     flood_check f = {image, region, (int)sx, (int)sy, (int)connectivity};
-    check_pixel at;
-    int in_student;
-    if (code == CLI_OK
-        && first_difference(sorted, count, definition.data, definition.count, &at, &in_student))
-        code = explain_flood(&f, at.x, at.y, in_student);
-    else if (code == CLI_OK && first_difference(sorted, count, cg.data, cg.count, &at, &in_student))
-        code = check_wrong("pixel (%lld, %lld) differs from cg's flood fill", at.x, at.y);
-    else if (code == CLI_OK)
+    if (code == CLI_OK)
+        code = compare_fill(sorted, count, &definition, cg.data, cg.count, explain_flood, &f,
+                            "cg's flood fill");
+    if (code == CLI_OK)
         code = check_right("%zu pixels, the %ld-connected region of the seed's colour around "
                            "(%ld, %ld), the same as cg's flood fill",
                            count, connectivity, sx, sy);
@@ -432,18 +437,12 @@ static int run_flood_fill(int argc, char **argv, FILE *in, const check_options *
                                "(%d x %d)",
                                x, y, image->width, image->height);
     }
-    check_pixels pixels = {0};
-    int code = check_read_pixels(in, &pixels);
-    check_pixel *sorted = code == CLI_OK ? check_sorted(&pixels) : NULL;
-    if (code == CLI_OK && pixels.count && !sorted)
-        code = cli_fail("check: out of memory");
-    if (code == CLI_OK) {
-        long repeat = check_first_repeat(sorted, pixels.count);
-        code = repeat >= 0 ? check_wrong_repeat(sorted, repeat, "a flood fill")
-                           : check_flood(image, x, y, connectivity, sorted, pixels.count);
-    }
+    check_pixel *sorted;
+    size_t count;
+    int code = check_read_set(in, "a flood fill", &sorted, &count);
+    if (code == CLI_OK)
+        code = check_flood(image, x, y, connectivity, sorted, count);
     free(sorted);
-    core_array_free(&pixels);
     cg_image_free(image);
     return code;
 }

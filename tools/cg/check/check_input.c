@@ -248,3 +248,28 @@ void check_fraction(char *text, size_t size, long long p, long long q)
     else
         snprintf(text, size, "%lld/%lld = %.2f", p, q, (double)p / (double)q);
 }
+
+int check_read_set(FILE *in, const char *what, check_pixel **sorted, size_t *count)
+{
+    check_pixels pixels = {0};
+    *sorted = NULL;
+    *count = 0;
+    int code = check_read_pixels(in, &pixels);
+    if (code == CLI_OK && pixels.count) {
+        *sorted = check_sorted(&pixels);
+        if (!*sorted)
+            code = cli_fail("check: out of memory");
+    }
+    if (code == CLI_OK) {
+        long repeat = check_first_repeat(*sorted, pixels.count);
+        if (repeat >= 0)
+            code = check_wrong_repeat(*sorted, repeat, what);
+    }
+    *count = pixels.count;
+    core_array_free(&pixels);
+    if (code != CLI_OK) {
+        free(*sorted);
+        *sorted = NULL;
+    }
+    return code;
+}

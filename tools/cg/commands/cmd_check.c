@@ -73,8 +73,7 @@ const cg_command cg_command_check = {
     "  sutherland-hodgman 'WINDOW' 'SUBJECT'  the output list's vertices in order\n"
     "                             (any starting vertex), nothing when all is clipped\n"
     "  --tolerance T              how far a point may be from the right one (0.01)\n\n"
-    "Example: cg trace line 1 1 22 9 --json > /dev/null; my_bresenham 1 1 22 9 | cg check "
-    "line 1 1 22 9\n",
+    "Example: ./my_line 1 1 22 9 | cg check line 1 1 22 9 && echo passed\n",
     run,
     NULL,
 };

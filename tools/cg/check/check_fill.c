@@ -431,11 +431,12 @@ static int run_flood_fill(int argc, char **argv, FILE *in, const check_options *
     if (status != CG_OK)
         return cli_fail("check: %s: %s", argv[1], cg_status_str(status));
     if (!cg_image_contains(image, (int)x, (int)y)) {
+        int width = image->width, height = image->height;
         cg_image_free(image);
         return cli_usage_error("check",
                                "flood-fill: the seed (%ld, %ld) is outside the image "
                                "(%d x %d)",
-                               x, y, image->width, image->height);
+                               x, y, width, height);
     }
     check_pixel *sorted;
     size_t count;

@@ -47,7 +47,10 @@ for p in $programs; do
   # The build line of the docs, exactly.
   if cc "$source_dir/tests/bgi/$p.c" -o "$work/$p/$p" $(pkg-config --cflags --libs cg-bgi) \
        2>"$work/$p/cc.txt"; then pass; else fail "$p builds: $(cat "$work/$p/cc.txt")"; continue; fi
-  if run "$work/$p" "$p"; then pass; else fail "$p runs headless to its end"; fi
+  # Ends by itself (circles.c is a "void main()" program: its exit status
+  # is whatever was left in a register, so only a timeout or a signal fails).
+  run "$work/$p" "$p"; status=$?
+  [ "$status" -lt 124 ] && pass || fail "$p runs headless to its end (status $status)"
   [ -f "$work/$p/bgi.png" ] && [ "$(png_size "$work/$p/bgi.png")" = 640x480 ] && pass ||
     fail "$p writes a 640x480 bgi.png"
   ppm "$work/$p/bgi.png"

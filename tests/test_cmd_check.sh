@@ -209,7 +209,7 @@ for r in [0, 1, 2, 3, 5, 11, 41] + [random.randint(0, 80) for _ in range(60)]:
 code, out, _ = check(["circle", 11], pixels(["circle", 11]))
 ok(code == 0 and "8-symmetric" in out, "the notes' circle of radius 11")
 
-for _ in range(30):
+for _ in range(80):
     rx, ry = random.randint(0, 40), random.randint(0, 40)
     args = ["ellipse", rx, ry]
     pts = pixels(args if rx != ry else ["circle", rx])

@@ -7,7 +7,12 @@
  * within 1/2 of the real circle along y, which leaves one pixel per column
  * (Observation 4), and all eight mirrors of each must be there
  * (Observation 2).  A missing pixel is explained by symmetry when a mirror
- * is present, else by Algorithm 2's midpoint decision. */
+ * is present, else by Algorithm 2's midpoint decision.
+ *
+ * Ellipse: each pixel within 1/2 of the real ellipse by the same measure
+ * (the smaller of the x- and y-distance), 4-symmetric, then cg's midpoint
+ * ellipse (docs/draw.md): the pixel each column of region 1 and each row of
+ * region 2 selects. */
 #include "check.h"
 
 #include "cli.h"
@@ -222,44 +227,68 @@ static int run_circle(int argc, char **argv, FILE *in, const check_options *opti
     return code;
 }
 
-/* The ellipse's distance from the pixel offset (a, b) >= 0 along the
- * pixel's minor axis: y where the slope is at most 1 in magnitude
- * (region 1), x beyond. */
+/* The ellipse's distance from the pixel offset (a, b) >= 0, as the notes
+ * measure a digital circle's: the smaller of the x-distance and the
+ * y-distance to the real curve (the distance to the nearer tip beyond
+ * both radii); *axis names which. */
 static double ellipse_distance(long long a, long long b, long long rx, long long ry,
                                const char **axis)
 {
     double x = (double)a, y = (double)b, A = (double)rx, B = (double)ry;
-    int region1 = B * B * x <= A * A * y;
-    *axis = region1 ? "y" : "x";
-    if (region1)
-        return x > A ? hypot(x - A, y) : fabs(y - B * sqrt(1 - (x / A) * (x / A)));
-    return y > B ? hypot(x, y - B) : fabs(x - A * sqrt(1 - (y / B) * (y / B)));
+    /* A zero radius is a segment along the other axis. */
+    double dy = x > A    ? INFINITY
+                : A == 0 ? fmax(0, y - B)
+                         : fabs(y - B * sqrt(1 - (x / A) * (x / A)));
+    double dx = y > B    ? INFINITY
+                : B == 0 ? fmax(0, x - A)
+                         : fabs(x - A * sqrt(1 - (y / B) * (y / B)));
+    if (isinf(dx) && isinf(dy)) {
+        *axis = "the nearer tip";
+        return fmin(hypot(x - A, y), hypot(x, y - B));
+    }
+    *axis = dy <= dx ? "y" : "x";
+    return fmin(dx, dy);
 }
 
-/* Each of the student's pixels in cg's ellipse; 1 after a verdict. */
-static int check_ellipse_pixels(const check_pixels *in, const check_pixel *cg_sorted,
-                                size_t cg_count, long rx, long ry, long cx, long cy, int *verdict)
+/* The student's pixels by the definition (each within 1/2, 4-symmetric),
+ * then each in cg's midpoint ellipse; 1 after a verdict. */
+static int check_ellipse_pixels(const check_pixels *in, const check_pixel *sorted,
+                                const check_pixel *cg_sorted, size_t cg_count, long rx, long ry,
+                                long cx, long cy, int *verdict)
 {
+    for (size_t i = 0; i < in->count; i++) {
+        const check_pixel *p = &in->data[i];
+        const char *axis;
+        double d = ellipse_distance(llabs(p->x - cx), llabs(p->y - cy), rx, ry, &axis);
+        if (d > 0.5) {
+            *verdict = check_wrong("pixel (%lld, %lld) is %.2f from the ellipse along %s; a "
+                                   "pixel of a digital ellipse is at most 1/2 away (the smaller "
+                                   "of its x- and y-distance)",
+                                   p->x, p->y, d, axis);
+            return 1;
+        }
+    }
+    for (size_t i = 0; i < in->count; i++) {
+        const check_pixel *p = &in->data[i];
+        long long mx[3] = {2 * cx - p->x, p->x, 2 * cx - p->x};
+        long long my[3] = {p->y, 2 * cy - p->y, 2 * cy - p->y};
+        for (int k = 0; k < 3; k++)
+            if (check_find(sorted, in->count, mx[k], my[k]) < 0) {
+                *verdict = check_wrong("pixel (%lld, %lld) is missing, but its mirror (%lld, "
+                                       "%lld) is there; the ellipse is 4-symmetric",
+                                       mx[k], my[k], p->x, p->y);
+                return 1;
+            }
+    }
     for (size_t i = 0; i < in->count; i++) {
         const check_pixel *p = &in->data[i];
         if (check_find(cg_sorted, cg_count, p->x, p->y) >= 0)
             continue;
-        long long a = llabs(p->x - cx), b = llabs(p->y - cy);
-        const char *axis;
-        double d = rx && ry ? ellipse_distance(a, b, rx, ry, &axis) : 0;
-        if (rx && ry && d > 0.5) {
-            *verdict = check_wrong("pixel (%lld, %lld) is %.2f from the ellipse along %s; a "
-                                   "pixel of the midpoint ellipse is at most 1/2 away",
-                                   p->x, p->y, d, axis);
-            check_note("region 1 (slope at most 1 in magnitude) is measured along y, region 2 "
-                       "along x");
-        } else {
-            *verdict = check_wrong("pixel (%lld, %lld) is not the midpoint ellipse's: region 1 "
-                                   "takes in each column the pixel whose lower midpoint "
-                                   "(x, y - 1/2) is inside, region 2 in each row the pixel "
-                                   "whose inner midpoint is inside",
-                                   p->x, p->y);
-        }
+        *verdict = check_wrong("pixel (%lld, %lld) is within 1/2 of the ellipse but not the "
+                               "midpoint ellipse's: region 1 takes in each column the pixel "
+                               "whose lower midpoint (x, y - 1/2) is inside, region 2 in each "
+                               "row the pixel whose inner midpoint is inside",
+                               p->x, p->y);
         return 1;
     }
     return 0;
@@ -322,7 +351,8 @@ static int run_ellipse(int argc, char **argv, FILE *in, const check_options *opt
         long repeat = check_first_repeat(sorted, pixels.count);
         if (repeat >= 0)
             code = check_wrong_repeat(sorted, repeat, "the midpoint ellipse");
-        else if (!check_ellipse_pixels(&pixels, cg_sorted, cg_pixels.count, rx, ry, cx, cy, &code)
+        else if (!check_ellipse_pixels(&pixels, sorted, cg_sorted, cg_pixels.count, rx, ry, cx, cy,
+                                       &code)
                  && !check_ellipse_missing(&cg, sorted, pixels.count, cx, cy, &code))
             code = check_right("the midpoint ellipse with radii %ld and %ld about (%ld, %ld): "
                                "%zu pixels, 4-symmetric, the same as cg's",

@@ -9,6 +9,7 @@
 #define CG_TOOL_CHECK_H
 
 #include "../../../src/core/array.h"
+#include "../../../src/core/sort.h"
 #include "cg/core.h"
 
 #include <stdio.h>

@@ -56,7 +56,7 @@ static int row_crossings(const polygon *poly, double yc, crossing *out)
         }
         start += poly->sizes[c];
     }
-    qsort(out, (size_t)n, sizeof *out, compare_crossings);
+    core_sort(out, (size_t)n, sizeof *out, compare_crossings);
     return n;
 }
 

@@ -155,7 +155,7 @@ check_pixel *check_sorted(const check_pixels *pixels)
     if (!sorted)
         return NULL;
     memcpy(sorted, pixels->data, pixels->count * sizeof *sorted);
-    qsort(sorted, pixels->count, sizeof *sorted, compare_pixels);
+    core_sort(sorted, pixels->count, sizeof *sorted, compare_pixels);
     return sorted;
 }
 

@@ -8,6 +8,7 @@
 #include "cg/hemesh.h"
 #include "cg/mesh.h"
 #include "cg/xform.h"
+#include "cg/clip.h"
 
 typedef struct trace_algorithm {
     const char *name;      /* as typed after `cg trace` */
@@ -53,5 +54,19 @@ int trace_turned_mesh(int argc, char **argv, double aspect, double *about_y, dou
 /* The half-edge structure of the mesh file (strict: a defect is an error,
  * named); CLI_OK or CLI_FAILED after a message. */
 int trace_load_hemesh(const char *path, cg_hemesh **out);
+/* The same for another command (`cg check` reads the arguments of the
+ * traces): messages start "cg: COMMAND: ". */
+int trace_parse_point_for(const char *command, const char *what, const char *text, cg_vec2 *out);
+int trace_parse_polygon_for(const char *command, const char *what, const char *text,
+                            cg_vec2 *points, int capacity);
+/* The polygon of `scanline` (algorithm `name` in messages): contours
+ * "X,Y X,Y ...; X,Y ..." of at least 3 points each, at most capacity points
+ * and max_contours contours: CLI_OK, or CLI_USAGE after a message. */
+int trace_parse_contours(const char *command, const char *name, const char *text, cg_vec2 *points,
+                         int capacity, int *sizes, int max_contours, int *contour_count);
+/* The arguments of the line clippers, NAME XMIN YMIN XMAX YMAX X0,Y0 X1,Y1
+ * (argv[0] is NAME): CLI_OK, or CLI_USAGE after a message. */
+int trace_parse_window_segment(const char *command, const char *name, int argc, char **argv,
+                               cg_rect *window, cg_vec2 *p0, cg_vec2 *p1);
 
 #endif

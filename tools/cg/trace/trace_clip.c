@@ -12,27 +12,6 @@
 
 enum { MAX_POLYGON = 256 };
 
-/* The arguments of the two line clippers, NAME XMIN YMIN XMAX YMAX X0,Y0
- * X1,Y1: 0, or CLI_USAGE after a message. */
-static int read_window_segment(const char *name, int argc, char **argv, cg_rect *window,
-                               cg_vec2 *p0, cg_vec2 *p1)
-{
-    double bounds[4];
-    static const char *const names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
-    if (argc != 7)
-        return cli_usage_error("trace", "%s: expected '%s XMIN YMIN XMAX YMAX X0,Y0 X1,Y1'", name,
-                               name);
-    for (int i = 0; i < 4; i++)
-        if (trace_parse_real(names[i], argv[i + 1], &bounds[i]))
-            return CLI_USAGE;
-    if (trace_parse_point("P0", argv[5], p0) || trace_parse_point("P1", argv[6], p1))
-        return CLI_USAGE;
-    if (bounds[0] > bounds[2] || bounds[1] > bounds[3])
-        return cli_usage_error("trace", "%s: the window needs XMIN <= XMAX and YMIN <= YMAX", name);
-    *window = (cg_rect){bounds[0], bounds[1], bounds[2], bounds[3]};
-    return 0;
-}
-
 /* The window's outline in the scene. */
 static void add_window_frame(trace_run *run, cg_rect window)
 {
@@ -47,7 +26,7 @@ static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
 {
     cg_rect window;
     cg_vec2 p0, p1;
-    if (read_window_segment("cohen-sutherland", argc, argv, &window, &p0, &p1))
+    if (trace_parse_window_segment("trace", "cohen-sutherland", argc, argv, &window, &p0, &p1))
         return CLI_USAGE;
     trace_run *run = trace_run_create(
         "cohen-sutherland", argc - 1, argv + 1,
@@ -71,7 +50,7 @@ static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
 {
     cg_rect window;
     cg_vec2 p0, p1;
-    if (read_window_segment("liang-barsky", argc, argv, &window, &p0, &p1))
+    if (trace_parse_window_segment("trace", "liang-barsky", argc, argv, &window, &p0, &p1))
         return CLI_USAGE;
     trace_run *run = trace_run_create("liang-barsky", argc - 1, argv + 1,
                                       "Liang-Barsky: (%g, %g)-(%g, %g) against [%g, %g] x [%g, %g]",

@@ -9,40 +9,6 @@
 
 enum { MAX_POINTS = 256, MAX_CONTOURS = 16 };
 
-/* "X,Y X,Y ...; X,Y ..." into contours; CLI_OK or CLI_USAGE. */
-static int parse_contours(const char *text, cg_vec2 *points, int *sizes, int *contour_count)
-{
-    char part[4096];
-    int total = 0, count = 0;
-    const char *at = text;
-    for (;;) {
-        size_t n = strcspn(at, ";");
-        if (n >= sizeof part || count >= MAX_CONTOURS)
-            return cli_usage_error("trace",
-                                   "scanline: at most %d contours of at most %zu "
-                                   "characters",
-                                   MAX_CONTOURS, sizeof part - 1);
-        memcpy(part, at, n);
-        part[n] = 0;
-        int got = trace_parse_polygon("POLYGON", part, points + total, MAX_POINTS - total);
-        if (got < 0)
-            return CLI_USAGE;
-        if (got > 0) {
-            if (got < 3)
-                return cli_usage_error("trace", "scanline: a contour needs at least 3 points");
-            sizes[count++] = got;
-            total += got;
-        }
-        if (!at[n])
-            break;
-        at += n + 1;
-    }
-    if (count == 0)
-        return cli_usage_error("trace", "scanline: the polygon has no points");
-    *contour_count = count;
-    return CLI_OK;
-}
-
 static int run_scanline(int argc, char **argv, const trace_outputs *out)
 {
     static cg_vec2 points[MAX_POINTS];
@@ -58,7 +24,9 @@ static int run_scanline(int argc, char **argv, const trace_outputs *out)
             return cli_usage_error("trace", "scanline: unknown rule '%s' (even-odd or nonzero)",
                                    argv[2]);
     }
-    if (parse_contours(argv[1], points, sizes, &contours) != CLI_OK)
+    if (trace_parse_contours("trace", "scanline", argv[1], points, MAX_POINTS, sizes, MAX_CONTOURS,
+                             &contours)
+        != CLI_OK)
         return CLI_USAGE;
     trace_run *run = trace_run_create(
         "scanline", argc - 1, argv + 1, "Scan-line polygon fill, %d contour%s, %s rule", contours,

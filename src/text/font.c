@@ -216,6 +216,35 @@ cg_status cg_font_find(const char *family, int weight, int italic, char *path, s
     return status;
 }
 
+cg_status cg_font_family_exists(const char *family, cg_error *err)
+{
+    if (!family || !*family)
+        return cg_error_set(err, CG_EINVAL, "font: no family name");
+    FcConfig *config = FcInitLoadConfigAndFonts();
+    FcPattern *pattern = config ? FcPatternCreate() : NULL;
+    FcObjectSet *objects = pattern ? FcObjectSetBuild(FC_FILE, (char *)NULL) : NULL;
+    FcFontSet *set = NULL;
+    if (objects) {
+        FcPatternAddString(pattern, FC_FAMILY, (const FcChar8 *)family);
+        FcPatternAddBool(pattern, FC_SCALABLE, FcTrue);
+        set = FcFontList(config, pattern, objects);
+    }
+    cg_status status = CG_OK;
+    if (!set)
+        status = cg_error_set(err, CG_ENOMEM, "font %s: fontconfig could not start", family);
+    else if (set->nfont == 0)
+        status = cg_error_set(err, CG_EEMPTY, "no font of the family '%s' is installed", family);
+    if (set)
+        FcFontSetDestroy(set);
+    if (objects)
+        FcObjectSetDestroy(objects);
+    if (pattern)
+        FcPatternDestroy(pattern);
+    if (config)
+        FcConfigDestroy(config);
+    return status;
+}
+
 cg_status cg_font_open(const char *family_or_file, int weight, int italic, cg_font **out,
                        cg_error *err)
 {

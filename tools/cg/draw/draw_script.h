@@ -52,10 +52,19 @@ typedef struct draw_state {
     double dashes[32]; /* `dash ON OFF ...`, dash_count 0: solid */
     int dash_count;
     struct draw_fill *fill; /* polygon being built, current path, scratch */
+
+    /* text (tools/cg/drawcmds_text.c): the font, its size, alignment,
+     * baseline, wrapping width and line spacing */
+    struct draw_text *text;
 } draw_state;
 
 /* Releases state->fill (drawcmds_fill.c); called by draw_state_release. */
 void draw_fill_release(draw_state *state);
+/* Releases state->text (drawcmds_text.c); called by draw_state_release. */
+void draw_text_release(draw_state *state);
+/* The rasterizer of the fill commands, with the script's compositing and
+ * tolerance: what `fill` fills with (NULL when out of memory). */
+struct cg_rasterizer *draw_fill_rasterizer(draw_state *state);
 
 /* A command: run returns 0 on success, non-zero after printing an error
  * (with draw_error).  argv[0] is the command name, argc counts it. */

@@ -51,6 +51,12 @@ static draw_fill *fill_of(draw_state *s)
     return s->fill;
 }
 
+cg_rasterizer *draw_fill_rasterizer(draw_state *state)
+{
+    draw_fill *f = fill_of(state);
+    return f ? f->rasterizer : NULL;
+}
+
 static int out_of_memory(const draw_state *s)
 {
     return draw_error(s, "out of memory");

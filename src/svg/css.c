@@ -39,7 +39,12 @@ static const char *const property_names[SVG_PROPERTY_COUNT] = {"fill",
                                                                "filter",
                                                                "marker-start",
                                                                "marker-mid",
-                                                               "marker-end"};
+                                                               "marker-end",
+                                                               "font-family",
+                                                               "font-size",
+                                                               "font-weight",
+                                                               "font-style",
+                                                               "text-anchor"};
 
 #define RANK_ATTRIBUTE 1ULL
 #define RANK_SHEET (2ULL << 48)

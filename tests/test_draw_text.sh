@@ -177,6 +177,22 @@ text 5 30 Red
 SCRIPT
 inked tc && pass || fail "translucent text drew nothing"
 
+# glyphs are flattened within 0.01 px whatever a coarser `tolerance` says
+draw coarse <<SCRIPT || fail "tolerance: $(cat "$work/err")"
+tolerance 5
+size 200 60
+font $sans 16
+text 5 30 Family
+SCRIPT
+same coarse file "text under 'tolerance 5' is not flattened within 0.01 px"
+draw fine <<SCRIPT || fail "tolerance: $(cat "$work/err")"
+tolerance 0.001
+size 200 60
+font $sans 16
+text 5 30 Family
+SCRIPT
+cmp -s "$work/fine.ppm" "$work/file.ppm" && fail "text ignores a finer tolerance" || pass
+
 # 5. Bad lines: one line naming the line, exit 1, no output.
 bad() { # bad DESCRIPTION EXPECTED_MESSAGE_PART: script on stdin
   rm -f "$work/bad.ppm"

@@ -12,10 +12,11 @@
  *   FT_Render_Glyph  what a FreeType program usually does: load, scale and
  *                 render each glyph into its own bitmap
  *
- * and the same paragraph through `cg draw --repeat` (CG_TOOL), which also
- * opens the font, shapes and lays out the text on every run.  Processor
- * time, medians of several runs. */
+ * and the same paragraph through `cg draw --repeat` (bench_tool.h), which
+ * also opens the font, shapes and lays out the text on every run.
+ * Processor time, medians of several runs. */
 #include "bench.h"
+#include "bench_tool.h"
 #include "cg/fill.h"
 #include "cg/image.h"
 #include "cg/text.h"
@@ -175,9 +176,9 @@ static void run_render_glyph(void *context)
     bench_sink = (double)sum;
 }
 
-/* The median time of one run of the paragraph as a `cg draw` script, from
- * the tool's own `--repeat` report ("draw: 12.3 ms"); -1 on failure. */
-static double tool_seconds(const job *j)
+/* The processor time of one run of the paragraph as a `cg draw` script
+ * (bench_tool.h); -1 on failure. */
+static double tool_seconds(void)
 {
     char script[] = "/tmp/cg-bench-text-XXXXXX";
     int fd = mkstemp(script);
@@ -193,26 +194,17 @@ static double tool_seconds(const job *j)
         fprintf(f, "text 8 %.17g \"", 20 + line * 20.5);
         for (size_t i = 0; i < 120; i++) {
             char c = words[(start + i) % n];
-            fputs(c == '"' ? "\\\"" : c == '\\' ? "\\\\" : (char[]){c, 0}, f);
+            if (c == '"' || c == '\\')
+                fputc('\\', f);
+            fputc(c, f);
         }
         fputs("\"\n", f);
     }
     fclose(f);
-    char command[512];
-    snprintf(command, sizeof command, "%s draw %s -o /tmp/cg-bench-text.png --repeat %d 2>&1",
-             CG_TOOL, script, RUNS);
-    FILE *p = popen(command, "r");
-    double ms = -1;
-    char line[256];
-    while (p && fgets(line, sizeof line, p))
-        if (sscanf(line, "draw: %lf ms", &ms) == 1)
-            break;
-    if (p)
-        pclose(p);
+    double seconds = bench_tool_median(script, "/tmp/cg-bench-text.ppm", RUNS, 3);
     remove(script);
-    remove("/tmp/cg-bench-text.png");
-    (void)j;
-    return ms < 0 ? -1 : ms * 1e-3;
+    remove("/tmp/cg-bench-text.ppm");
+    return seconds;
 }
 
 int main(void)
@@ -255,7 +247,7 @@ int main(void)
                  tolerances[t]);
         bench_row(name, each, "FT_Render_Glyph", render, note);
     }
-    double tool = tool_seconds(&j);
+    double tool = tool_seconds();
     if (tool > 0)
         bench_row("glyphs: the paragraph by cg draw --repeat (opens, shapes, fills)", tool,
                   "FreeType", ft, note);

@@ -131,4 +131,11 @@ grep -q "skipped <textPath>: text on a path is not supported" "$work/err" && pas
   printf '</text></svg>'
 } | svg many
 [ $? = 0 ] && pass || fail "20,000 positioned characters: $(cat "$work/err")"
+{
+  printf '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><text>'
+  head -c 1000001 /dev/zero | tr '\0' 'a'
+  printf '</text></svg>'
+} | svg huge
+[ $? = 1 ] && grep -q "a <text> element of more than 1000000 characters" "$work/err" && pass ||
+  fail "1,000,001 characters: '$(cat "$work/err")'"
 finish

@@ -143,6 +143,9 @@ static cg_font *font_for(svg_render *r, const svg_style *s)
 /* ---- characters and their positions ---------------------------------------- */
 
 enum { HAS_X = 1, HAS_Y = 2, HAS_DX = 4, HAS_DY = 8 };
+/* Characters of one <text> element: a bound on a hostile file's memory
+ * (about 50 bytes each) and time. */
+#define SVG_MAX_TEXT_CHARS 1000000
 
 typedef struct text_char {
     size_t byte;   /* offset of its UTF-8 bytes in the layout's text */
@@ -177,6 +180,13 @@ static void out_of_memory(text_layout *t)
 static void add_char(text_layout *t, const char *bytes, size_t n, int element)
 {
     text_char c = {t->bytes.count, element, 0, 0, 0, 0, 0};
+    if (t->chars.count >= SVG_MAX_TEXT_CHARS) {
+        if (!t->failed)
+            svg_fail(t->r, CG_ERANGE, "a <text> element of more than %d characters",
+                     SVG_MAX_TEXT_CHARS);
+        t->failed = 1;
+        return;
+    }
     if (core_array_reserve((void **)&t->bytes.data, &t->bytes.capacity, t->bytes.count + n + 1, 1)
             != CG_OK
         || core_array_push(&t->chars, c) != CG_OK) {

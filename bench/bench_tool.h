@@ -42,11 +42,8 @@ static inline double bench_tool_seconds(const char *script, const char *out, int
  * the tool failed. */
 static inline double bench_tool_median(const char *script, const char *out, int repeat, int runs)
 {
-    double samples[64];
-    if (runs > 64)
-        runs = 64;
-    if (runs < 1)
-        runs = 1;
+    double samples[BENCH_MAX_RUNS];
+    runs = bench_runs(runs);
     for (int i = 0; i < runs; i++) {
         double once = bench_tool_seconds(script, out, 1);
         double more = bench_tool_seconds(script, out, repeat + 1);
@@ -54,8 +51,7 @@ static inline double bench_tool_median(const char *script, const char *out, int 
             return -1;
         samples[i] = (more - once) / repeat;
     }
-    qsort(samples, (size_t)runs, sizeof samples[0], bench_compare);
-    return runs % 2 ? samples[runs / 2] : 0.5 * (samples[runs / 2 - 1] + samples[runs / 2]);
+    return bench_median_of(samples, runs);
 }
 
 #endif

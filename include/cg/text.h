@@ -43,8 +43,9 @@ cg_status cg_font_find(const char *family, int weight, int italic, char *path, s
  * (compared as fontconfig does: case and blanks ignored), CG_EEMPTY with a
  * one-line message otherwise.  cg_font_find always returns a font, the
  * closest substitute when the family is missing; this says whether it would
- * substitute.  Generic names (sans-serif, serif, monospace) are aliases,
- * not families: CG_EEMPTY. */
+ * substitute.  The generic names serif, sans-serif, monospace, cursive,
+ * fantasy, system-ui, sans and mono (any case) are CG_OK: fontconfig's
+ * configuration resolves them. */
 cg_status cg_font_family_exists(const char *family, cg_error *err);
 
 /* A font from a file name (when such a file exists) or else a family name

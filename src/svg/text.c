@@ -21,7 +21,6 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
 /* ---- fonts ------------------------------------------------------------------ */
 
@@ -45,16 +44,6 @@ void svg_fonts_free(svg_render *r)
     free(r->fonts->entries);
     free(r->fonts);
     r->fonts = NULL;
-}
-
-static int is_generic(const char *name)
-{
-    static const char *const generic[] = {"serif",   "sans-serif", "monospace", "cursive",
-                                          "fantasy", "system-ui",  "sans",      "mono"};
-    for (size_t i = 0; i < sizeof generic / sizeof *generic; i++)
-        if (strcasecmp(name, generic[i]) == 0)
-            return 1;
-    return 0;
 }
 
 /* The next name of a font-family list from *p ("A, 'B C', serif"),
@@ -103,7 +92,7 @@ static cg_font *open_family_list(const char *list, int weight, int italic)
         if (index++ == 0)
             memcpy(first, name, sizeof first);
         cg_font *font = NULL;
-        if ((is_generic(name) || cg_font_family_exists(name, NULL) == CG_OK)
+        if (cg_font_family_exists(name, NULL) == CG_OK
             && cg_font_open(name, weight, italic, &font, NULL) == CG_OK)
             return font;
     }

@@ -162,6 +162,20 @@ int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out)
     return 0;
 }
 
+int draw_arg_keyword(const draw_state *state, int argc, char **argv, const char *usage,
+                     const char *const *words, int count, int *out)
+{
+    if (draw_arg_count(state, argc, argv, 1, usage))
+        return 1;
+    for (int i = 0; i < count; i++)
+        if (strcmp(argv[1], words[i]) == 0) {
+            *out = i;
+            return 0;
+        }
+    return draw_error(state, "expected %s after '%s', got '%s'", usage + strlen(argv[0]) + 1,
+                      argv[0], argv[1]);
+}
+
 int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,
                     const char *usage, cg_vec2 **out, int *count)
 {

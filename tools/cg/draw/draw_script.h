@@ -99,6 +99,11 @@ int draw_arg_double(const draw_state *state, const char *text, const char *what,
 int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what, double *out);
 /* A colour: #rgb, #rrggbb, #rrggbbaa or a name. */
 int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out);
+/* One word argument (argc must be 2) among words[0 .. count - 1]: *out
+ * gets its index; else an error quoting the choices of usage
+ * ("fillrule evenodd|nonzero"). */
+int draw_arg_keyword(const draw_state *state, int argc, char **argv, const char *usage,
+                     const char *const *words, int count, int *out);
 /* Points given as X Y pairs from argv[first] to argv[argc - 1]: at least
  * min_points, an even number of numbers.  *out is malloc'ed (caller frees). */
 int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,

@@ -94,17 +94,6 @@ static int looks_like_file(const char *name)
     return 0;
 }
 
-/* The generic families fontconfig resolves by its configuration. */
-static int is_generic_family(const char *name)
-{
-    static const char *const generic[] = {"sans-serif", "serif",     "monospace", "sans",
-                                          "mono",       "system-ui", "cursive",   "fantasy"};
-    for (size_t i = 0; i < sizeof generic / sizeof *generic; i++)
-        if (strcasecmp(name, generic[i]) == 0)
-            return 1;
-    return 0;
-}
-
 static int open_font(draw_state *s, const char *name, cg_font **font)
 {
     cg_error err;
@@ -112,7 +101,7 @@ static int open_font(draw_state *s, const char *name, cg_font **font)
     int is_file = stat(name, &st) == 0 && S_ISREG(st.st_mode);
     if (!is_file && looks_like_file(name))
         return draw_error(s, "cannot open the font file '%s': no such file", name);
-    if (!is_file && !is_generic_family(name) && cg_font_family_exists(name, &err) != CG_OK)
+    if (!is_file && cg_font_family_exists(name, &err) != CG_OK)
         return draw_error(s,
                           "no font family '%s' is installed (expected a family fontconfig "
                           "knows, such as 'DejaVu Sans', a generic sans-serif, serif or "
@@ -156,20 +145,6 @@ static int run_font(draw_state *s, int argc, char **argv)
     return 0;
 }
 
-static int keyword(draw_state *s, int argc, char **argv, const char *usage,
-                   const char *const *words, int count, int *out)
-{
-    if (draw_arg_count(s, argc, argv, 1, usage))
-        return 1;
-    for (int i = 0; i < count; i++)
-        if (strcmp(argv[1], words[i]) == 0) {
-            *out = i;
-            return 0;
-        }
-    return draw_error(s, "expected %s after '%s', got '%s'", usage + strlen(argv[0]) + 1, argv[0],
-                      argv[1]);
-}
-
 static int run_align(draw_state *s, int argc, char **argv)
 {
     static const char *const words[] = {"start", "middle", "end"}; /* = cg_text_align */
@@ -177,7 +152,7 @@ static int run_align(draw_state *s, int argc, char **argv)
     int align = 0;
     if (!t)
         return out_of_memory(s);
-    if (keyword(s, argc, argv, "align start|middle|end", words, 3, &align))
+    if (draw_arg_keyword(s, argc, argv, "align start|middle|end", words, 3, &align))
         return 1;
     t->style.align = (cg_text_align)align;
     return 0;
@@ -191,7 +166,8 @@ static int run_baseline(draw_state *s, int argc, char **argv)
     int baseline = 0;
     if (!t)
         return out_of_memory(s);
-    if (keyword(s, argc, argv, "baseline alphabetic|top|middle|bottom", words, 4, &baseline))
+    if (draw_arg_keyword(s, argc, argv, "baseline alphabetic|top|middle|bottom", words, 4,
+                         &baseline))
         return 1;
     t->style.baseline = (cg_text_baseline)baseline;
     return 0;

@@ -442,6 +442,17 @@ static void fontconfig_finds_families(void)
     CHECK(cg_font_open("DejaVu Sans", 400, 0, &font, NULL) == CG_OK && font);
     cg_font_free(font);
     CHECK(cg_font_find("DejaVu Sans", 400, 0, path, 4, &index, NULL) == CG_ERANGE);
+    /* whether a family is installed: fontconfig's comparison, generic names */
+    cg_error err;
+    CHECK(cg_font_family_exists("DejaVu Sans", &err) == CG_OK);
+    CHECK(cg_font_family_exists("dejavu  SANS", &err) == CG_OK);
+    CHECK(cg_font_family_exists("sans-serif", &err) == CG_OK);
+    CHECK(cg_font_family_exists("Monospace", &err) == CG_OK);
+    CHECK(cg_font_family_exists("No Such Family Cg", &err) == CG_EEMPTY);
+    CHECK(strstr(err.message, "No Such Family Cg") != NULL);
+    CHECK(cg_font_family_exists("DejaVu Sans Nonexistent", &err) == CG_EEMPTY);
+    CHECK(cg_font_family_exists("", &err) == CG_EINVAL);
+    CHECK(cg_font_family_exists(NULL, &err) == CG_EINVAL);
 }
 
 int main(int argc, char **argv)

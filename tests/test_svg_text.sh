@@ -104,6 +104,18 @@ svg inherited <<'EOT'
 <svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><g font-family="DejaVu Serif" font-size="10"><text x="5" y="30"><tspan font-size="200%">Listed</tspan></text></g></svg>
 EOT
 same inherited serif "a tspan's font does not come from its group (font-size 200% of 10)"
+# the font shorthand sets style, weight, size and family (line height ignored)
+svg shorthand <<'EOT'
+<svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><text x="5" y="30" style="font: italic bold 20px/1.5 'DejaVu Serif', serif">Listed</text></svg>
+EOT
+svg longhand <<'EOT'
+<svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><text x="5" y="30" font-style="italic" font-weight="bold" font-size="20" font-family="DejaVu Serif">Listed</text></svg>
+EOT
+same shorthand longhand "the font shorthand is not its four properties"
+svg reset <<'EOT'
+<svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><style>text { font: 20px DejaVu Serif }</style><g font-weight="bold" font-style="italic"><text x="5" y="30">Listed</text></g></svg>
+EOT
+same reset serif "the font shorthand does not reset weight and style to normal"
 # a tspan's own x starts where the characters would have been put anyway
 svg split <<'EOT'
 <svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><text x="5 60" y="30" font-family="DejaVu Sans" font-size="20">ab</text></svg>

@@ -116,6 +116,15 @@ svg reset <<'EOT'
 <svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><style>text { font: 20px DejaVu Serif }</style><g font-weight="bold" font-style="italic"><text x="5" y="30">Listed</text></g></svg>
 EOT
 same reset serif "the font shorthand does not reset weight and style to normal"
+# a gradient in objectBoundingBox units spans the whole text, across tspans
+grad='<defs><linearGradient id="g"><stop offset="0" stop-color="red"/><stop offset="1" stop-color="blue"/></linearGradient></defs>'
+svg whole <<EOT
+<svg xmlns="http://www.w3.org/2000/svg" width="200" height="40">$grad<text x="5" y="30" font-family="DejaVu Sans" font-size="24" fill="url(#g)">abcdef</text></svg>
+EOT
+svg spans <<EOT
+<svg xmlns="http://www.w3.org/2000/svg" width="200" height="40">$grad<text x="5" y="30" font-family="DejaVu Sans" font-size="24" fill="url(#g)">ab<tspan>cd</tspan>ef</text></svg>
+EOT
+same whole spans "a gradient restarts at each tspan instead of spanning the text"
 # a tspan's own x starts where the characters would have been put anyway
 svg split <<'EOT'
 <svg xmlns="http://www.w3.org/2000/svg" width="200" height="40"><text x="5 60" y="30" font-family="DejaVu Sans" font-size="20">ab</text></svg>

@@ -251,9 +251,12 @@ int svg_node_bounds(svg_render *r, const svg_node *node, cg_mat3 m, const svg_vi
 cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
                             const svg_viewport *vp, svg_box box, int *none);
 /* Fills and strokes path (user space) with style s, as a shape is drawn;
- * is_line: the element is a <line>, which has no fill. */
-void svg_paint_path(svg_render *r, const cg_path *user, int is_line, cg_mat3 ctm,
-                    const svg_viewport *vp, const svg_style *s, double opacity, cg_image *target);
+ * paint_box (min, max in user space; NULL: the path's bounds) is the
+ * objectBoundingBox of gradients; is_line: the element is a <line>, which
+ * has no fill. */
+void svg_paint_path(svg_render *r, const cg_path *user, const cg_vec2 *paint_box, int is_line,
+                    cg_mat3 ctm, const svg_viewport *vp, const svg_style *s, double opacity,
+                    cg_image *target);
 /* Draws a <text> element: its character data and tspans, shaped and laid
  * out (text.c). */
 void svg_draw_text(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,

@@ -165,12 +165,13 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
     if (cg_path_create(&user) != CG_OK)
         svg_fail(r, CG_ENOMEM, "out of memory");
     else if (svg_shape_path(node, vp, user))
-        svg_paint_path(r, user, strcmp(node->name, "line") == 0, ctm, vp, s, opacity, target);
+        svg_paint_path(r, user, NULL, strcmp(node->name, "line") == 0, ctm, vp, s, opacity, target);
     cg_path_free(user);
 }
 
-void svg_paint_path(svg_render *r, const cg_path *user, int is_line, cg_mat3 ctm,
-                    const svg_viewport *vp, const svg_style *s, double opacity, cg_image *target)
+void svg_paint_path(svg_render *r, const cg_path *user, const cg_vec2 *paint_box, int is_line,
+                    cg_mat3 ctm, const svg_viewport *vp, const svg_style *s, double opacity,
+                    cg_image *target)
 {
     cg_path *device = NULL;
     if (cg_path_create(&device) != CG_OK) {
@@ -190,6 +191,10 @@ void svg_paint_path(svg_render *r, const cg_path *user, int is_line, cg_mat3 ctm
                                  * fmax(s->join == CG_JOIN_MITER ? s->miter_limit : 1, 1.5)
                            : 0;
     svg_touch(r, device_box(bbox, ctm, reach));
+    if (paint_box) { /* the gradients' objectBoundingBox: the element's */
+        bbox[0] = paint_box[0];
+        bbox[1] = paint_box[1];
+    }
     cg_gradient_stop stops[256];
     for (int pass = 0; pass < 2; pass++) {
         int stroke = pass == (s->stroke_first ? 0 : 1);

@@ -19,6 +19,7 @@
 #include "internal.h"
 #include "cg/text.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -337,6 +338,24 @@ static void place_spans(text_layout *t, text_span *spans, int count)
     }
 }
 
+/* Appends span's outlines to path (user space): 1 when it has any. */
+static int span_path(text_layout *t, const text_span *s, cg_path *path)
+{
+    const svg_style *style = &t->elements.data[s->element].style;
+    char *text = s->font ? span_text(t, s) : NULL;
+    if (s->font && !text)
+        out_of_memory(t);
+    int drawn = text
+                && cg_text_run_path(s->font, text, style->font_size, s->x, s->y, CG_TEXT_START,
+                                    CG_BASELINE_ALPHABETIC, path, NULL, NULL)
+                       == CG_OK
+                && !cg_path_is_empty(path);
+    free(text);
+    return drawn;
+}
+
+/* Draws the spans; gradients in objectBoundingBox units span the bounds
+ * of the whole text (the union of its glyph outlines). */
 static void draw_spans(text_layout *t, const text_span *spans, int count, cg_mat3 ctm,
                        double opacity, cg_image *target)
 {
@@ -345,23 +364,19 @@ static void draw_spans(text_layout *t, const text_span *spans, int count, cg_mat
         out_of_memory(t);
         return;
     }
-    for (int k = 0; k < count && !t->failed && t->r->failure == CG_OK; k++) {
-        const text_span *s = &spans[k];
-        const svg_style *style = &t->elements.data[s->element].style;
-        if (!s->font || !style->visible)
+    for (int k = 0; k < count && !t->failed; k++)
+        span_path(t, &spans[k], path);
+    cg_vec2 box[2];
+    double tolerance = fmax(
+        0.001, 0.01 / fmax(hypot(ctm.m[0][0], ctm.m[1][0]), hypot(ctm.m[0][1], ctm.m[1][1])));
+    int has_box = !t->failed && cg_path_bounds(path, tolerance, &box[0], &box[1]) == CG_OK;
+    for (int k = 0; has_box && k < count && !t->failed && t->r->failure == CG_OK; k++) {
+        const svg_style *style = &t->elements.data[spans[k].element].style;
+        if (!style->visible)
             continue;
-        char *text = span_text(t, s);
-        if (!text) {
-            out_of_memory(t);
-            break;
-        }
         cg_path_reset(path);
-        if (cg_text_run_path(s->font, text, style->font_size, s->x, s->y, CG_TEXT_START,
-                             CG_BASELINE_ALPHABETIC, path, NULL, NULL)
-                == CG_OK
-            && !cg_path_is_empty(path))
-            svg_paint_path(t->r, path, 0, ctm, t->vp, style, opacity, target);
-        free(text);
+        if (span_path(t, &spans[k], path))
+            svg_paint_path(t->r, path, box, 0, ctm, t->vp, style, opacity, target);
     }
     cg_path_free(path);
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SVG text and tspan (docs/svg.md, "Text"): the drawings of
 # tests/data/svg_text/*.svg by cg against resvg, which is given only the
-# DejaVu fonts of fonts-dejavu-core: cg's mean difference (tests/
+# fonts of fonts-dejavu-core and fonts-noto-core: cg's mean difference (tests/
 # svg_compare.c --pair) is at most 0.75/255 over the whole image and
 # 6/255 over the pixels either touches; rsvg-convert's is printed beside.
 # Then the layout by its definition: text-anchor end and middle move a run
@@ -11,8 +11,9 @@
 set -u
 cg="$1" source_dir=$(cd "$2" && pwd) build_dir="$3"
 . "$source_dir/tests/cli_checks.sh"
-fonts=/usr/share/fonts/truetype/dejavu
+fonts=/usr/share/fonts/truetype/dejavu noto=/usr/share/fonts/truetype/noto
 [ -f "$fonts/DejaVuSans.ttf" ] || { echo "test_svg_text: $fonts not found: skipped (apt-get install fonts-dejavu-core)"; exit 77; }
+[ -f "$noto/NotoSansArabic-Regular.ttf" ] || { echo "test_svg_text: $noto not found: skipped (apt-get install fonts-noto-core)"; exit 77; }
 compare="$build_dir/tests/svg_compare" ref="$build_dir/tests/text_reference"
 [ -x "$compare" ] && [ -x "$ref" ] || { echo "test_svg_text: $compare or $ref not built"; exit 1; }
 
@@ -34,7 +35,7 @@ if [ -z "$module" ] || ! command -v node >/dev/null; then
 else
   mkdir -p "$work/cg" "$work/resvg" "$work/rsvg"
   ls "$source_dir"/tests/data/svg_text/*.svg > "$work/list"
-  CG_RESVG_MODULE="$module" CG_RESVG_FONT_DIR="$fonts" \
+  CG_RESVG_MODULE="$module" CG_RESVG_FONT_DIR="$fonts:$noto" \
     node "$source_dir/tests/svg/resvg_render.js" 240 "$work/resvg" "$work/list" 2>"$work/err" ||
     fail "resvg: $(cat "$work/err")"
   i=0

@@ -8,9 +8,10 @@ const width = parseInt(process.argv[2]);
 const outDir = process.argv[3];
 const files = fs.readFileSync(process.argv[4], 'utf8').split('\n').filter((f) => f.length > 0);
 const first = parseInt(process.argv[5] || '0');
-// CG_RESVG_FONT_DIR (tests/test_svg_text.sh): the only fonts resvg sees, the first family the default
+// CG_RESVG_FONT_DIR (tests/test_svg_text.sh): the only font folders resvg sees (colon-separated),
+// DejaVu Sans the default family
 const font = process.env.CG_RESVG_FONT_DIR
-  ? { loadSystemFonts: false, fontDirs: [process.env.CG_RESVG_FONT_DIR], defaultFontFamily: 'DejaVu Sans' }
+  ? { loadSystemFonts: false, fontDirs: process.env.CG_RESVG_FONT_DIR.split(':'), defaultFontFamily: 'DejaVu Sans' }
   : { loadSystemFonts: false };
 files.forEach((file, index) => {
   if (index < first) return;

@@ -94,20 +94,58 @@ static int looks_like_file(const char *name)
     return 0;
 }
 
-static int open_font(draw_state *s, const char *name, cg_font **font)
+/* Cuts the style suffixes off a family name ("DejaVu Sans:bold:italic",
+ * ":weight=600"), in place, into *weight and *italic: 0, or 1 after an
+ * error naming the bad suffix. */
+static int style_suffixes(draw_state *s, char *name, int *weight, int *italic)
+{
+    *weight = 400;
+    *italic = 0;
+    char *colon = strchr(name, ':');
+    if (!colon)
+        return 0;
+    *colon = '\0';
+    for (char *p = colon + 1; p;) {
+        char *next = strchr(p, ':');
+        if (next)
+            *next++ = '\0';
+        int w;
+        char extra;
+        if (strcmp(p, "bold") == 0)
+            *weight = 700;
+        else if (strcmp(p, "italic") == 0 || strcmp(p, "oblique") == 0)
+            *italic = 1;
+        else if (strcmp(p, "regular") == 0 || strcmp(p, "normal") == 0)
+            *weight = 400;
+        else if (sscanf(p, "weight=%d%c", &w, &extra) == 1 && w >= 1 && w <= 1000)
+            *weight = w;
+        else
+            return draw_error(s,
+                              "unknown font style ':%s' (expected :bold, :italic, :regular or "
+                              ":weight=1..1000 after the family)",
+                              p);
+        p = next;
+    }
+    return 0;
+}
+
+static int open_font(draw_state *s, char *name, cg_font **font)
 {
     cg_error err;
     struct stat st;
     int is_file = stat(name, &st) == 0 && S_ISREG(st.st_mode);
     if (!is_file && looks_like_file(name))
         return draw_error(s, "cannot open the font file '%s': no such file", name);
+    int weight = 400, italic = 0;
+    if (!is_file && style_suffixes(s, name, &weight, &italic))
+        return 1;
     if (!is_file && cg_font_family_exists(name, &err) != CG_OK)
         return draw_error(s,
                           "no font family '%s' is installed (expected a family fontconfig "
                           "knows, such as 'DejaVu Sans', a generic sans-serif, serif or "
                           "monospace, or a font file)",
                           name);
-    if (cg_font_open(name, 400, 0, font, &err) != CG_OK)
+    if (cg_font_open(name, weight, italic, font, &err) != CG_OK)
         return draw_error(s, "cannot load the font '%s': %s", name, err.message);
     return 0;
 }

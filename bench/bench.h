@@ -8,6 +8,7 @@
 #ifndef CG_BENCH_H
 #define CG_BENCH_H
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -38,6 +39,16 @@ static inline double bench_median_of(double *samples, int runs)
 {
     qsort(samples, (size_t)runs, sizeof samples[0], bench_compare);
     return runs % 2 ? samples[runs / 2] : 0.5 * (samples[runs / 2 - 1] + samples[runs / 2]);
+}
+
+/* A uniform number in [0, 1) from the xorshift64 generator at *state (the
+ * benchmarks' inputs are the same on every run and machine). */
+static inline double bench_random(uint64_t *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    return (double)(*state >> 11) * (1.0 / 9007199254740992.0);
 }
 
 /* Runs work(context) `runs` times (at most 64) and returns the median time

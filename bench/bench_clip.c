@@ -3,6 +3,7 @@
  * vertices, spiky ones, smooth ellipses, many small squares against a circle, a plate
  * with holes), with the result areas side by side. */
 #include "bench.h"
+#include "bench_rings.h"
 #include "bench_clip_peers.h"
 #include "cg/clip.h"
 
@@ -18,10 +19,7 @@ typedef struct shape {
 static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
 static double rnd(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return bench_random(&rng_state);
 }
 
 static void add_ring(shape *s, const cg_point64 *p, size_t n, int new_polygon)
@@ -31,14 +29,7 @@ static void add_ring(shape *s, const cg_point64 *p, size_t n, int new_polygon)
 
 static void finish(shape *s)
 {
-    s->xy = malloc(2 * (s->set.point_count + 1) * sizeof *s->xy);
-    s->len = malloc((s->set.ring_count + 1) * sizeof *s->len);
-    for (size_t i = 0; i < s->set.point_count; i++) {
-        s->xy[2 * i] = s->set.points[i].x;
-        s->xy[2 * i + 1] = s->set.points[i].y;
-    }
-    for (size_t r = 0; r < s->set.ring_count; r++)
-        s->len[r] = s->set.ring_start[r + 1] - s->set.ring_start[r];
+    bench_rings_flatten(&s->set, &s->xy, &s->len);
 }
 
 static void star(shape *s, size_t n, double cx, double cy, double r0, double r1)

@@ -37,13 +37,10 @@ typedef struct shape_set {
     int count;
 } shape_set;
 
-static unsigned long long rng_state = 88172645463325252ULL;
+static uint64_t rng_state = 88172645463325252ULL;
 static double unit(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return bench_random(&rng_state);
 }
 
 /* Builds count shapes by calling make(center, size, xy, sizes) which

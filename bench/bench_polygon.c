@@ -8,6 +8,7 @@
  * command's own time for an offset and a triangulation.  Areas (triangle
  * counts) are printed side by side in the notes. */
 #include "bench.h"
+#include "bench_rings.h"
 #include "bench_polygon_peers.h"
 #include "cg/polygon.h"
 
@@ -19,10 +20,7 @@
 static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
 static double rnd(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+    return bench_random(&rng_state);
 }
 
 typedef struct shape {
@@ -47,14 +45,7 @@ static void star(shape *s, size_t n, double radius, int reversed)
 
 static void finish(shape *s)
 {
-    s->xy = malloc(2 * (s->set.point_count + 1) * sizeof *s->xy);
-    s->len = malloc((s->set.ring_count + 1) * sizeof *s->len);
-    for (size_t i = 0; i < s->set.point_count; i++) {
-        s->xy[2 * i] = s->set.points[i].x;
-        s->xy[2 * i + 1] = s->set.points[i].y;
-    }
-    for (size_t r = 0; r < s->set.ring_count; r++)
-        s->len[r] = s->set.ring_start[r + 1] - s->set.ring_start[r];
+    bench_rings_flatten(&s->set, &s->xy, &s->len);
     s->peer = (polygon_peer_input){s->xy, s->len, s->set.ring_count};
 }
 

@@ -18,6 +18,9 @@ done
 
 missing=()
 for package in "${wanted[@]}"; do
+  # A Node.js from outside Debian (NodeSource's nodejs) bundles npm and conflicts
+  # with Debian's npm package: any working npm will do.
+  if [ "$package" = npm ] && command -v npm >/dev/null 2>&1; then continue; fi
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
     || missing+=("$package")
 done

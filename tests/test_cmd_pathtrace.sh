@@ -131,7 +131,93 @@ data=b"".join(struct.pack("<3f",*rows[3-y])*8 for y in range(4))
 open(sys.argv[1],"wb").write(b"PF\n8 4\n-1.0\n"+data)' "$tmp/sky-top.pfm"
   run --environment "$tmp/sky-top.pfm" -o "$tmp/sky-top-render.pfm"
   cmp -s "$tmp/sky-top-render.pfm" "$tmp/sky-color.pfm" && fail "a map with a bright top renders as a uniform sky"
+  # --environment-intensity scales the map: a 0.25,0.125,0.5 pixel at 2 is
+  # the 0.5,0.25,1 sky, to the byte (powers of two scale exactly)
+  pfm "$tmp/sky-half.pfm" 1 1 0.25 0.125 0.5
+  run --environment "$tmp/sky-half.pfm" --environment-intensity 2 -o "$tmp/sky-scaled.pfm"
+  cmp -s "$tmp/sky-scaled.pfm" "$tmp/sky-color.pfm" || fail "--environment-intensity 2 does not double the map"
+  expect_error "scales an --environment map" "${pt[@]}" --environment-intensity 2
+  expect_error "--environment-intensity" "${pt[@]}" --environment "$tmp/sky1.pfm" --environment-intensity -1
+  # parts under another intensity belong to another render
+  run --sample-range 0..2 --environment "$tmp/sky1.pfm" -o "$tmp/i1.part"
+  run --sample-range 2..6 --environment "$tmp/sky1.pfm" --environment-intensity 3 -o "$tmp/i3.part"
+  expect_error "another render" merge "$tmp/i1.part" "$tmp/i3.part"
+  run --sample-range 2..6 --environment "$tmp/sky1.pfm" -o "$tmp/i1b.part"
+  "$cg" merge "$tmp/i1.part" "$tmp/i1b.part" -o "$tmp/i1.pfm" || fail "merge of parts under one sky failed"
 fi
+
+# Scene files: their size unless --size, their objects, materials, lights
+# and camera, and their "environment" (a file relative to the scene, with an
+# intensity, or a colour; the background colour without the key).
+scene() { # FILE ENVIRONMENT-JSON-OR-EMPTY FLOOR-MATERIAL
+  local environment=""
+  [ -n "$2" ] && environment="\"environment\": $2,"
+  cat >"$1" <<JSON
+{"image": {"width": 40, "height": 24, "background": [0.2, 0.2, 0.2]},
+ "camera": {"eye": [0, 1.5, 4], "target": [0, 0.5, 0], "fov": 50},
+ $environment
+ "lights": [{"type": "directional", "direction": [0.3, -1, -0.2], "color": [1, 1, 1]}],
+ "materials": {"floor": $3, "red": {"color": [0.8, 0.2, 0.1], "kd": 1}},
+ "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
+             {"type": "sphere", "center": [0, 0.6, 0], "radius": 0.6, "material": "red"}]}
+JSON
+}
+plain='{"color": [0.7, 0.7, 0.7], "kd": 1}'
+checker='{"color": [0.7, 0.7, 0.7], "kd": 1, "checker": {"color": [0.1, 0.1, 0.1], "size": 0.5}}'
+st=(--algorithm pathtrace --spp 4 --seed 2 --max-depth 3 --quiet)
+scene "$tmp/s.json" "" "$plain"
+"$cg" render "$tmp/s.json" "${st[@]}" -o "$tmp/s.pfm" 2>"$tmp/err" || fail "scene render failed: $(cat "$tmp/err")"
+[ "$(head -c 20 "$tmp/s.pfm" | sed -n 2p)" = "40 24" ] || fail "a scene's own size is not used"
+"$cg" render "$tmp/s.json" "${st[@]}" --size 20x12 -o "$tmp/s-small.pfm" || fail "scene --size failed"
+[ "$(head -c 20 "$tmp/s-small.pfm" | sed -n 2p)" = "20 12" ] || fail "--size does not override a scene's size"
+# the background is the sky without the key: the same bytes as that colour
+"$cg" render "$tmp/s.json" "${st[@]}" --environment-color 0.2,0.2,0.2 -o "$tmp/s-bg.pfm"
+cmp -s "$tmp/s.pfm" "$tmp/s-bg.pfm" || fail "a scene without environment is not lit by its background"
+scene "$tmp/s-color.json" '{"color": [0.5, 0.25, 1]}' "$plain"
+"$cg" render "$tmp/s-color.json" "${st[@]}" -o "$tmp/s-color.pfm"
+"$cg" render "$tmp/s.json" "${st[@]}" --environment-color 0.5,0.25,1 -o "$tmp/s-cli.pfm"
+cmp -s "$tmp/s-color.pfm" "$tmp/s-cli.pfm" || fail "environment.color differs from --environment-color"
+if command -v python3 >/dev/null; then
+  mkdir -p "$tmp/skies"
+  pfm "$tmp/skies/half.pfm" 1 1 0.25 0.125 0.5
+  scene "$tmp/s-file.json" '{"file": "skies/half.pfm", "intensity": 2}' "$plain"
+  "$cg" render "$tmp/s-file.json" "${st[@]}" -o "$tmp/s-file.pfm" 2>"$tmp/err" \
+    || fail "environment.file failed: $(cat "$tmp/err")"
+  cmp -s "$tmp/s-file.pfm" "$tmp/s-color.pfm" || fail "environment.file x intensity differs from the colour"
+fi
+# the checker of the ray tracer's floors is drawn too
+scene "$tmp/s-checker.json" "" "$checker"
+"$cg" render "$tmp/s-checker.json" "${st[@]}" -o "$tmp/s-checker.pfm"
+cmp -s "$tmp/s.pfm" "$tmp/s-checker.pfm" && fail "a checkered floor renders as a plain one"
+# parts of a scene merge to the whole render; another scene's parts do not
+sp=(render "$tmp/s.json" "${st[@]}")
+"$cg" "${sp[@]}" --tile 0,0,40,10 -o "$tmp/s1.part" && "$cg" "${sp[@]}" --tile 0,10,40,24 -o "$tmp/s2.part" \
+  || fail "scene parts failed"
+"$cg" merge "$tmp/s1.part" "$tmp/s2.part" -o "$tmp/s-merged.pfm" || fail "merge of scene parts failed"
+cmp -s "$tmp/s.pfm" "$tmp/s-merged.pfm" || fail "merged scene parts differ from the whole"
+"$cg" render "$tmp/s-checker.json" "${st[@]}" --tile 0,10,40,24 -o "$tmp/s3.part"
+expect_error "another render" merge "$tmp/s1.part" "$tmp/s3.part"
+# an emitting material ("emission") seen directly, black and unlit, gives
+# its radiance in the middle pixel
+if command -v python3 >/dev/null; then
+  scene "$tmp/s-glow.json" '{"color": [0, 0, 0]}' '{"color": [0, 0, 0], "kd": 1, "emission": [0.5, 0.25, 2]}'
+  "$cg" render "$tmp/s-glow.json" "${st[@]}" -o "$tmp/s-glow.pfm" || fail "emission scene failed"
+  python3 -c 'import struct,sys
+d=open(sys.argv[1],"rb").read().split(b"\n",3); w,h=map(int,d[1].split())
+px=struct.unpack("<%df"%(3*w*h),d[3])
+r,g,b=px[3*(w//2):3*(w//2)+3]   # the bottom row comes first in a PFM: the floor
+sys.exit(0 if abs(r-0.5)<1e-5 and abs(g-0.25)<1e-5 and abs(b-2)<1e-5 else 1)' "$tmp/s-glow.pfm" \
+    || fail "an emitting floor seen directly is not its emission"
+fi
+# bad environments: the JSON path and what was expected
+scene "$tmp/bad1.json" '{"intensity": 2}' "$plain"
+expect_error "environment.intensity" render "$tmp/bad1.json" "${st[@]}"
+scene "$tmp/bad2.json" '{"file": "sky.hdr", "color": [1, 1, 1]}' "$plain"
+expect_error "a file or a color" render "$tmp/bad2.json" "${st[@]}"
+scene "$tmp/bad3.json" '{"file": "missing.hdr"}' "$plain"
+expect_error "missing.hdr" render "$tmp/bad3.json" "${st[@]}"
+scene "$tmp/bad4.json" '{"colour": [1, 1, 1]}' "$plain"
+expect_error "colour" render "$tmp/bad4.json" "${st[@]}"
 
 [ "$failed" -eq 0 ] && echo "test_cmd_pathtrace: all passed"
 exit "$failed"

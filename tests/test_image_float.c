@@ -196,6 +196,22 @@ static void test_hdr_bytes(void)
         CHECK(cg_image_get(img, 1, 1).b == rgbe_value(0x30, 0x88));
         cg_image_free(img);
     }
+    /* EXPOSURE=K lines are cumulative multipliers the reader undoes: the
+     * same pixels under EXPOSURE=2 and EXPOSURE=4 (a product of 8) come out
+     * an eighth as bright, exactly (powers of two). */
+    const unsigned char exposed[] = "#?RADIANCE\nEXPOSURE=2\nEXPOSURE= 4 \n\n-Y 2 +X 2\n"
+                                    "\x80\x40\x20\x81"
+                                    "\x00\x00\x00\x00"
+                                    "\xff\x01\x00\x7f"
+                                    "\x10\x20\x30\x88";
+    CHECK_EQ_INT(cg_image_load_memory(exposed, sizeof exposed - 1, "exposed", &img, &err), CG_OK);
+    if (img) {
+        cg_rgbaf p = cg_image_get(img, 0, 0);
+        CHECK(p.r == rgbe_value(128, 129) / 8 && p.g == rgbe_value(64, 129) / 8
+              && p.b == rgbe_value(32, 129) / 8 && p.a == 1);
+        CHECK(cg_image_get(img, 1, 1).b == rgbe_value(0x30, 0x88) / 8);
+        cg_image_free(img);
+    }
     /* One run-length scanline of width 8: R a run of 8, G literals, B a run
      * of 5 and 3 literals, E a run of 8. */
     const unsigned char rle[] = "#?RGBE\n\n-Y 1 +X 8\n"
@@ -249,6 +265,12 @@ static void test_hdr_round_trip(void)
 static void test_hdr_bad(void)
 {
     expect_bad("#?RADIANCE\n", 11, CG_EFORMAT, "ends before the resolution");
+    expect_bad("#?RADIANCE\nEXPOSURE=0\n\n-Y 1 +X 1\n\0\0\0\0", 37, CG_EFORMAT, "exposure");
+    expect_bad("#?RADIANCE\nEXPOSURE=-2\n\n-Y 1 +X 1\n\0\0\0\0", 38, CG_EFORMAT, "exposure");
+    expect_bad("#?RADIANCE\nEXPOSURE=nan\n\n-Y 1 +X 1\n\0\0\0\0", 39, CG_EFORMAT, "exposure");
+    expect_bad("#?RADIANCE\nEXPOSURE=2x\n\n-Y 1 +X 1\n\0\0\0\0", 38, CG_EFORMAT, "exposure");
+    expect_bad("#?RADIANCE\nEXPOSURE=1e300\nEXPOSURE=1e300\n\n-Y 1 +X 1\n\0\0\0\0", 56, CG_EFORMAT,
+               "exposure");
     expect_bad("#?NOTHDR\n\n-Y 1 +X 1\n\0\0\0\0", 24, CG_EFORMAT, "not a Radiance HDR");
     expect_bad("#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n\0\0\0\0", 48, CG_EUNSUPPORTED,
                "xyze");
@@ -261,6 +283,9 @@ static void test_hdr_bad(void)
     expect_bad("#?RADIANCE\n\n-Y 1 +X 8\n\x02\x02\x00\x08\x88", 27, CG_EFORMAT, "truncated");
     expect_bad("#?RADIANCE\n\n-Y 100000 +X 100000\n", 33, CG_ERANGE, "over cg's limit");
     expect_bad("#?RADIANCE\n\n-Y 0 +X 5\n", 22, CG_EFORMAT, "zero width");
+    /* a few bytes claiming 12 x 12,996,627 pixels: refused before allocating */
+    expect_bad("#?RADIANCE\n\n-Y 12996627 +X 12\n\x02\x02\x00\x0c", 34, CG_EFORMAT,
+               "need at least");
 }
 
 /* The filmic curve of cg/image_float.h, in double. */

@@ -111,6 +111,57 @@ static void white_furnace(void)
  * light of irradiance E at angle theta, L = rho E cos(theta) / pi exactly;
  * under a point light of intensity I at height h with 1/d^2 falloff,
  * L = rho I h / (pi d^3). */
+/* Emission.  Seen directly, a black emitter gives its radiance exactly.
+ * Inside a closed sphere emitting E with Lambert albedo a (no lights, no
+ * sky), every path bounces until Russian roulette or the depth stops it:
+ * the radiance is E (1 + a + a^2 + ...) = E / (1 - a), here 0.2 / 0.6. */
+static void emission(void)
+{
+    cg_trace_scene *scene = NULL;
+    cg_trace_material glow = lambert(0);
+    glow.emission = cg_vec3_make(0.25, 0.5, 2);
+    cg_trace_scene_create(&scene);
+    cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &glow);
+    cg_camera cam = looking_at(cg_vec3_make(0, 0, 3), cg_vec3_make(0, 0, 0));
+    cam.fovy = 0.2; /* radians: the sphere (half-angle 0.34) fills the view */
+    cg_path_options o = cg_path_options_default();
+    o.spp = 2;
+    cg_image *im = render(scene, &cam, &o);
+    int exact = im != NULL;
+    for (int y = 0; im && y < H; y++)
+        for (int x = 0; x < W; x++) {
+            cg_rgbaf c = cg_image_get(im, x, y);
+            exact &= fabs(c.r - 0.25) < 1e-6 && fabs(c.g - 0.5) < 1e-6 && fabs(c.b - 2) < 1e-6;
+        }
+    CHECK_REPORT(exact, "a black emitter seen directly is not its emission");
+    cg_image_free(im);
+    cg_trace_scene_free(scene);
+
+    cg_trace_material room = lambert(0.4);
+    room.emission = cg_vec3_make(0.2, 0.2, 0.2);
+    cg_trace_scene_create(&scene);
+    cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &room);
+    cam = looking_at(cg_vec3_make(0, 0, 0.2), cg_vec3_make(0, 0, -1));
+    o.spp = 64;
+    o.max_depth = 64;
+    im = render(scene, &cam, &o);
+    double mean = im ? image_mean(im) : -1;
+    CHECK_REPORT(fabs(mean - 0.2 / 0.6) < 0.01 * (0.2 / 0.6), "emitting room mean %.5f, want %.5f",
+                 mean, 0.2 / 0.6);
+    cg_image_free(im);
+    cg_trace_scene_free(scene);
+
+    cg_trace_material bad = lambert(0.5);
+    bad.emission.y = -1;
+    cg_trace_scene_create(&scene);
+    CHECK_REPORT(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &bad) != CG_OK,
+                 "a negative emission is accepted");
+    bad.emission.y = NAN;
+    CHECK_REPORT(cg_trace_scene_add_sphere(scene, cg_vec3_make(0, 0, 0), 1, NULL, &bad) != CG_OK,
+                 "a NaN emission is accepted");
+    cg_trace_scene_free(scene);
+}
+
 static void lambert_plane(void)
 {
     double rho = 0.7;
@@ -424,6 +475,7 @@ int main(int argc, char **argv)
 {
     check_start(argc, argv);
     CHECK_GROUP(white_furnace);
+    CHECK_GROUP(emission);
     CHECK_GROUP(lambert_plane);
     CHECK_GROUP(whitted_direct);
     CHECK_GROUP(noise_rate);

@@ -14,6 +14,7 @@
 #include "cg/light.h"
 #include "cg/mesh.h"
 #include "cg/render.h"
+#include "cg/trace.h"
 #include "cg/xform.h"
 
 #ifdef __cplusplus
@@ -69,6 +70,7 @@ typedef struct cg_scene_material {
     cg_material surface;   /* colour, ka, kd, ks, shininess, reflectance, ... */
     cg_vec3 checker_color; /* second colour of a 3D checker (ray tracer) */
     double checker_size;   /* 0: plain */
+    cg_vec3 emission;      /* emitted radiance (ray tracers), linear; 0: none */
 } cg_scene_material;
 
 typedef struct cg_scene_object {
@@ -122,6 +124,17 @@ typedef struct cg_scene {
     size_t object_count;
     char **overlays; /* `cg draw` script lines drawn over the picture */
     size_t overlay_count;
+
+    /* The path tracer's sky, the key "environment": an equirectangular
+     * file (resolved against the scene's folder, loaded as linear light
+     * with the meshes: 8-bit files are decoded from sRGB) times intensity,
+     * or a uniform colour.  Without the key (environment_given 0) the sky
+     * is the background colour.  The other renderers ignore it. */
+    int environment_given;
+    char *environment_file;
+    cg_image *environment_map;    /* NULL for a colour, or when files are not loaded */
+    double environment_intensity; /* default 1 */
+    cg_vec3 environment_color;    /* when there is no file */
 } cg_scene;
 
 /* Reads a scene file and loads the mesh files it names (paths relative to
@@ -153,6 +166,14 @@ cg_status cg_scene_render_with(const cg_scene *scene, cg_scene_algorithm algorit
  * large square around the scene), and the renderer options for the scene's
  * camera, lights and settings with the given algorithm (zbuffer or painter). */
 cg_status cg_scene_world_mesh(const cg_scene *scene, cg_mesh **out, cg_error *err);
+/* The ray tracers' pieces: every object with its material and every light
+ * in a new cg/trace.h scene, and the scene's camera (its near and far open
+ * for planes, as the ray tracer draws them).  default_lights 1 adds the
+ * rasterizer's key light and a white ambient light when the file gives no
+ * light (what the Whitted ray tracer does); the path tracer passes 0, its
+ * sky lighting such scenes.  CG_EUNSUPPORTED for oblique projections. */
+cg_status cg_scene_trace_scene(const cg_scene *scene, int default_lights, cg_trace_scene **out,
+                               cg_camera *camera, cg_error *err);
 cg_status cg_scene_raster_options(const cg_scene *scene, cg_scene_algorithm algorithm,
                                   cg_render_options *options, cg_error *err);
 

@@ -109,6 +109,11 @@ typedef struct cg_trace_material {
     cg_material surface;
     cg_vec3 checker_color; /* second colour of the checker */
     double checker_size;   /* cell size; 0 for the plain colour */
+    /* Radiance the surface emits, linear RGB >= 0, the same on both sides
+     * and in every direction (0: none).  The Whitted tracer adds it where
+     * a ray sees the surface; the path tracer wherever a path meets it (it
+     * is not sampled as a light, so small bright emitters are noisy). */
+    cg_vec3 emission;
 } cg_trace_material;
 
 /* White, ka 1, kd 0.9, ks 0.2, shininess 32, Blinn-Phong, opaque. */

@@ -31,6 +31,7 @@
  * miter_limit * d from its vertex, farther than the offset, and one built
  * on the other side (say inside a hole's sharp corner) could cross the
  * polygon and come out beyond it. */
+#include "internal.h"
 #include "polygon_internal.h"
 
 #include "../core/array.h"
@@ -107,14 +108,18 @@ static cg_status piece_close(offset_band *band)
 static cg_status add_flat_cut(offset_band *band, cg_point64 p, direction m1, direction m2,
                               direction b, double phi, double reach)
 {
-    double d = band->width, along = (reach - d * cos(phi)) / sin(phi);
+    /* At phi = 0 (a turn too small for the doubles) the cut passes through
+     * p + m*d itself: along is 0 there, and u1, u2 have no direction. */
+    double d = band->width, sin_phi = sin(phi);
+    double along = sin_phi > 1e-12 ? (reach - d * cos(phi)) / sin_phi : 0;
     direction u1 = {b.x - m1.x * cos(phi), b.y - m1.y * cos(phi)};
     direction u2 = {b.x - m2.x * cos(phi), b.y - m2.y * cos(phi)};
     double l1 = hypot(u1.x, u1.y), l2 = hypot(u2.x, u2.y);
-    cg_point64 q1 = {(int64_t)llround((double)p.x + m1.x * d + u1.x / l1 * along),
-                     (int64_t)llround((double)p.y + m1.y * d + u1.y / l1 * along)};
-    cg_point64 q2 = {(int64_t)llround((double)p.x + m2.x * d + u2.x / l2 * along),
-                     (int64_t)llround((double)p.y + m2.y * d + u2.y / l2 * along)};
+    double k1 = l1 > 0 ? along / l1 : 0, k2 = l2 > 0 ? along / l2 : 0;
+    cg_point64 q1 = {(int64_t)llround((double)p.x + m1.x * d + u1.x * k1),
+                     (int64_t)llround((double)p.y + m1.y * d + u1.y * k1)};
+    cg_point64 q2 = {(int64_t)llround((double)p.x + m2.x * d + u2.x * k2),
+                     (int64_t)llround((double)p.y + m2.y * d + u2.y * k2)};
     cg_status st = piece_push(band, q1);
     return st == CG_OK ? piece_push(band, q2) : st;
 }
@@ -363,7 +368,7 @@ static cg_status build_band(offset_band *band, const cg_polygon_set64 *paths, cg
     CORE_ARRAY(cg_point64) clean = {0};
     cg_status st = CG_OK;
     for (size_t r = 0; r < paths->ring_count && st == CG_OK; r++) {
-        const cg_point64 *p = paths->points + paths->ring_start[r];
+        const cg_point64 *p = clip_ring_points(paths, r);
         size_t n = paths->ring_start[r + 1] - paths->ring_start[r];
         clean.count = 0;
         st = core_array_reserve_for(&clean, n);

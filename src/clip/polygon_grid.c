@@ -109,6 +109,15 @@ polygon_i128 polygon_ring_twice_area(const cg_point64 *p, size_t n)
     return s;
 }
 
+cg_status polygon_set64_check_range(const cg_polygon_set64 *set)
+{
+    int64_t largest;
+    cg_status st = polygon_set64_max_abs(set, &largest);
+    if (st == CG_OK && largest > CG_CLIP_MAX_COORD)
+        st = CG_ERANGE;
+    return st;
+}
+
 cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest)
 {
     int64_t m = 0;

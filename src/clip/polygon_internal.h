@@ -35,6 +35,8 @@ polygon_i128 polygon_ring_twice_area(const cg_point64 *p, size_t n);
 /* The largest |coordinate| of the set; CG_EINVAL when a ring lies outside
  * its point array. */
 cg_status polygon_set64_max_abs(const cg_polygon_set64 *set, int64_t *largest);
+/* That check, then CG_ERANGE when a coordinate is beyond CG_CLIP_MAX_COORD. */
+cg_status polygon_set64_check_range(const cg_polygon_set64 *set);
 /* Drops from a result (polygons with holes) every ring narrower than a
  * grid unit on average (its area below half its perimeter), the rounding's
  * slivers: a polygon with its holes when it is its outer ring, a hole

@@ -100,7 +100,7 @@ double cg_polygon_set64_area(const cg_polygon_set64 *set)
     double total = 0;
     for (size_t r = 0; set && r < set->ring_count; r++) {
         size_t a = set->ring_start[r], b = set->ring_start[r + 1];
-        total += 0.5 * (double)clip_ring_twice_area(set->points + a, b - a);
+        total += 0.5 * (double)clip_ring_twice_area(clip_ring_points(set, r), b - a);
     }
     return total;
 }

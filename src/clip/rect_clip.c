@@ -102,13 +102,7 @@ static cg_status check_input(const cg_polygon_set64 *paths, cg_rect64 rect,
 {
     if (!paths || !result || rect.xmin > rect.xmax || rect.ymin > rect.ymax)
         return CG_EINVAL;
-    int64_t largest;
-    cg_status st = polygon_set64_max_abs(paths, &largest);
-    if (st != CG_OK)
-        return st;
-    if (largest > CG_CLIP_MAX_COORD)
-        return CG_ERANGE;
-    return CG_OK;
+    return polygon_set64_check_range(paths);
 }
 
 /* Every ring of paths cut to the rectangle, into cut (rings of fewer than
@@ -317,8 +311,10 @@ static cg_status to_grid(const cg_polygon_set *paths, cg_rect rect, double scale
     return st;
 }
 
-cg_status cg_rect_clip_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
-                          cg_rect rect, double scale, cg_polygon_set *result)
+/* The double entry points: paths and rect on the grid, clipped there as
+ * polygons (with fill, and ws) or as lines, and the result back. */
+static cg_status clip_on_grid(cg_clip_workspace *ws, const cg_polygon_set *paths, int lines,
+                              cg_clip_fill fill, cg_rect rect, double scale, cg_polygon_set *result)
 {
     if (!result)
         return CG_EINVAL;
@@ -327,12 +323,18 @@ cg_status cg_rect_clip_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg
     cg_rect64 r;
     cg_status st = to_grid(paths, rect, scale, &grid, &in, &r);
     if (st == CG_OK)
-        st = cg_rect_clip64_ws(ws, &in, fill, r, &out);
+        st = lines ? cg_rect_clip_lines64(&in, r, &out) : cg_rect_clip64_ws(ws, &in, fill, r, &out);
     if (st == CG_OK)
         st = polygon_set_from_grid(&out, grid, result);
     cg_polygon_set64_clear(&in);
     cg_polygon_set64_clear(&out);
     return st;
+}
+
+cg_status cg_rect_clip_ws(cg_clip_workspace *ws, const cg_polygon_set *paths, cg_clip_fill fill,
+                          cg_rect rect, double scale, cg_polygon_set *result)
+{
+    return clip_on_grid(ws, paths, 0, fill, rect, scale, result);
 }
 
 cg_status cg_rect_clip(const cg_polygon_set *paths, cg_clip_fill fill, cg_rect rect, double scale,
@@ -344,17 +346,5 @@ cg_status cg_rect_clip(const cg_polygon_set *paths, cg_clip_fill fill, cg_rect r
 cg_status cg_rect_clip_lines(const cg_polygon_set *paths, cg_rect rect, double scale,
                              cg_polygon_set *result)
 {
-    if (!result)
-        return CG_EINVAL;
-    polygon_grid grid;
-    cg_polygon_set64 in = {0}, out = {0};
-    cg_rect64 r;
-    cg_status st = to_grid(paths, rect, scale, &grid, &in, &r);
-    if (st == CG_OK)
-        st = cg_rect_clip_lines64(&in, r, &out);
-    if (st == CG_OK)
-        st = polygon_set_from_grid(&out, grid, result);
-    cg_polygon_set64_clear(&in);
-    cg_polygon_set64_clear(&out);
-    return st;
+    return clip_on_grid(NULL, paths, 1, CG_CLIP_EVEN_ODD, rect, scale, result);
 }

@@ -106,29 +106,31 @@ static int in_triangle(cg_point64 a, cg_point64 v, cg_point64 b, cg_point64 q)
     return s1 >= 0 && s2 >= 0 && s3 >= 0;
 }
 
+/* One edge p -> r of a winding-number count about q: 1 when q lies on
+ * the edge, else 0 with *winding moved by an upward (+1) or downward (-1)
+ * crossing of q's row with q on its left. */
+static int winding_edge(cg_point64 p, cg_point64 r, cg_point64 q, int *winding)
+{
+    if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0
+        && (q.y - p.y) * (q.y - r.y) <= 0)
+        return 1;
+    if (p.y <= q.y && r.y > q.y && polygon_orient(p, r, q) > 0)
+        (*winding)++;
+    else if (p.y > q.y && r.y <= q.y && polygon_orient(p, r, q) < 0)
+        (*winding)--;
+    return 0;
+}
+
 /* 1 when q lies in or on the polygon of the stretch from a along the path
  * to b, closed by b-a (winding number, boundary included). */
 static int in_stretch(const simplifier *s, size_t a, size_t b, cg_point64 q)
 {
     int winding = 0;
-    for (size_t i = a; i != b; i = s->next[i]) {
-        cg_point64 p = s->points[i], r = s->points[s->next[i]];
-        if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0
-            && (q.y - p.y) * (q.y - r.y) <= 0)
+    for (size_t i = a; i != b; i = s->next[i])
+        if (winding_edge(s->points[i], s->points[s->next[i]], q, &winding))
             return 1;
-        if (p.y <= q.y && r.y > q.y && polygon_orient(p, r, q) > 0)
-            winding++;
-        else if (p.y > q.y && r.y <= q.y && polygon_orient(p, r, q) < 0)
-            winding--;
-    }
-    cg_point64 p = s->points[b], r = s->points[a];
-    if (polygon_orient(p, r, q) == 0 && (q.x - p.x) * (q.x - r.x) <= 0
-        && (q.y - p.y) * (q.y - r.y) <= 0)
+    if (winding_edge(s->points[b], s->points[a], q, &winding))
         return 1;
-    if (p.y <= q.y && r.y > q.y && polygon_orient(p, r, q) > 0)
-        winding++;
-    else if (p.y > q.y && r.y <= q.y && polygon_orient(p, r, q) < 0)
-        winding--;
     return winding != 0;
 }
 
@@ -418,12 +420,9 @@ cg_status cg_simplify64(const cg_polygon_set64 *paths, int open, cg_clip_fill fi
     if (!paths || !result || !(tolerance >= 0) || isinf(tolerance)
         || (unsigned)algorithm > CG_SIMPLIFY_VISVALINGAM || (unsigned)fill > CG_CLIP_NEGATIVE)
         return CG_EINVAL;
-    int64_t largest;
-    cg_status st = polygon_set64_max_abs(paths, &largest);
+    cg_status st = polygon_set64_check_range(paths);
     if (st != CG_OK)
         return st;
-    if (largest > CG_CLIP_MAX_COORD)
-        return CG_ERANGE;
     cg_polygon_set64 simple = {0}, none = {0}, kept = {0};
     if (!open)
         st = cg_clip_boolean64(CG_CLIP_UNION, paths, fill, &none, fill, &simple);

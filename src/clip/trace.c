@@ -1,6 +1,7 @@
 /* The clipping traces of cg/trace_steps.h: Liang-Barsky's p, q and t per
  * boundary, and Sutherland-Hodgman's lists per clip edge. */
 #include "cg/clip.h"
+#include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
 
@@ -8,6 +9,32 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+
+/* The last step of both line clippers: accepted with the visible part
+ * from-to (kept), or rejected; drawn over segment[0..2) when not NULL. */
+static void emit_line_outcome(int accepted, cg_vec2 from, cg_vec2 to, const cg_vec2 *segment,
+                              cg_step_fn step, void *user)
+{
+    core_step s;
+    cg_vec2 visible[2] = {from, to};
+    core_step_begin(&s, "outcome");
+    core_step_text(&s, "outcome", accepted ? "accept" : "reject");
+    if (accepted) {
+        core_step_point(&s, "from", from);
+        core_step_point(&s, "to", to);
+        s.step.kept = visible;
+        s.step.kept_count = 2;
+    } else {
+        core_step_none(&s, "from");
+        core_step_none(&s, "to");
+    }
+    if (segment) {
+        s.step.geometry = segment;
+        s.step.geometry_count = 2;
+    }
+    core_step_emit(&s, step, user);
+}
 
 cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_fn step, void *user)
 {
@@ -67,22 +94,7 @@ cg_status cg_liang_barsky_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_step_
         if (core_step_emit(&s, step, user))
             return CG_OK;
     }
-    core_step s;
-    cg_vec2 visible[2] = {c0, c1};
-    core_step_begin(&s, "outcome");
-    core_step_text(&s, "outcome", accepted ? "accept" : "reject");
-    if (accepted) {
-        core_step_point(&s, "from", c0);
-        core_step_point(&s, "to", c1);
-        s.step.kept = visible;
-        s.step.kept_count = 2;
-    } else {
-        core_step_none(&s, "from");
-        core_step_none(&s, "to");
-    }
-    s.step.geometry = segment;
-    s.step.geometry_count = 2;
-    core_step_emit(&s, step, user);
+    emit_line_outcome(accepted, c0, c1, segment, step, user);
     return CG_OK;
 }
 
@@ -96,14 +108,6 @@ static cg_vec2 crossing(cg_vec2 inside, double d_inside, cg_vec2 outside, double
 {
     double t = d_inside / (d_inside - d_outside);
     return cg_vec2_add(inside, cg_vec2_scale(cg_vec2_sub(outside, inside), t));
-}
-
-static double signed_area2(const cg_vec2 *p, size_t n)
-{
-    double s = 0;
-    for (size_t i = 0, j = n - 1; i < n; j = i++)
-        s += cg_vec2_cross(p[j], p[i]);
-    return s;
 }
 
 typedef struct clip_edge_trace {
@@ -191,7 +195,7 @@ cg_status cg_sutherland_hodgman_steps(const cg_vec2 *subject, size_t n, const cg
     free(result);
     if (status != CG_OK || n == 0)
         return status;
-    double orient = signed_area2(window, m) > 0 ? 1.0 : -1.0;
+    double orient = clip_twice_area(window, m) > 0 ? 1.0 : -1.0;
     point_array lists[2] = {{0}, {0}};
     int current = 0, outcome = 0;
     for (size_t i = 0; i < n; i++)
@@ -262,19 +266,6 @@ cg_status cg_cohen_sutherland_steps(cg_rect window, cg_vec2 p0, cg_vec2 p1, cg_s
                                                      &relay);
     if (status != CG_OK || relay.stopped)
         return status;
-    core_step s;
-    cg_vec2 visible[2] = {p0, p1};
-    core_step_begin(&s, "outcome");
-    core_step_text(&s, "outcome", accepted ? "accept" : "reject");
-    if (accepted) {
-        core_step_point(&s, "from", p0);
-        core_step_point(&s, "to", p1);
-        s.step.kept = visible;
-        s.step.kept_count = 2;
-    } else {
-        core_step_none(&s, "from");
-        core_step_none(&s, "to");
-    }
-    core_step_emit(&s, step, user);
+    emit_line_outcome(accepted, p0, p1, NULL, step, user);
     return CG_OK;
 }

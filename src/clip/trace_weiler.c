@@ -14,9 +14,9 @@
 #include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
+#include "../core/sort.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,23 +50,6 @@ typedef struct weiler_trace {
     void *user;
 } weiler_trace;
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void
-append(char *text, const char *format, ...)
-{
-    size_t used = strlen(text);
-    if (used + 4 >= LABELS)
-        return;
-    va_list args;
-    va_start(args, format);
-    int n = vsnprintf(text + used, LABELS - used, format, args);
-    va_end(args);
-    if (n < 0 || used + (size_t)n >= LABELS)
-        strcpy(text + LABELS - 4, "...");
-}
-
 static void label(const node *x, int window, char *out, size_t size)
 {
     if (x->crossing >= 0)
@@ -90,20 +73,16 @@ static int find_crossings(weiler_trace *w)
         cg_vec2 a = w->subject[i], d = cg_vec2_sub(w->subject[(i + 1) % w->n], a);
         for (size_t j = 0; j < w->m; j++) {
             cg_vec2 c = w->window[j], e = cg_vec2_sub(w->window[(j + 1) % w->m], c);
-            double den = cg_vec2_cross(d, e);
-            if (den == 0)
+            double t, u;
+            int entering;
+            if (!clip_weiler_crossing(a, d, c, e, &t, &u, &entering))
                 continue;
-            cg_vec2 ac = cg_vec2_sub(c, a);
-            double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
-            if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
-                continue;
-            crossing x = {i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+            crossing x = {i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), entering};
             if (core_array_push(&w->crossings, x) != CG_OK)
                 return -1;
         }
     }
-    if (w->crossings.count > 1)
-        qsort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
+    core_sort(w->crossings.data, w->crossings.count, sizeof *w->crossings.data, by_subject_edge);
     for (size_t k = 0; k < w->crossings.count; k++) {
         const crossing *x = &w->crossings.data[k];
         core_step s;
@@ -151,10 +130,10 @@ static int emit_list(weiler_trace *w, int window)
     for (size_t i = 0; i < l->count; i++) {
         label(&l->data[i], window, name, sizeof name);
         long c = l->data[i].crossing;
-        append(text, "%s%s%s", i ? " " : "", name,
-               c < 0                           ? ""
-               : w->crossings.data[c].entering ? "(in)"
-                                               : "(out)");
+        core_text_append(text, LABELS, "%s%s%s", i ? " " : "", name,
+                         c < 0                           ? ""
+                         : w->crossings.data[c].entering ? "(in)"
+                                                         : "(out)");
         points[i] = l->data[i].p;
     }
     core_step s;
@@ -192,7 +171,7 @@ static int build_lists(weiler_trace *w)
     for (size_t i = 0; outcome == 0 && i < nx; i++)
         places[i] = (window_place){w->crossings.data[i].window_edge, w->crossings.data[i].u, i};
     if (outcome == 0)
-        qsort(places, nx, sizeof *places, by_window_edge);
+        core_sort(places, nx, sizeof *places, by_window_edge);
     k = 0;
     for (size_t j = 0; j < w->m && outcome == 0; j++) {
         node v = {w->window[j], (long)j, -1, 0, 0};
@@ -238,7 +217,7 @@ static long walk_leg(weiler_trace *w, int side, size_t at, point_list *ring, int
     for (size_t i = at;; i = (i + 1) % l->count) {
         char name[32];
         label(&l->data[i], side, name, sizeof name);
-        append(path, "%s%s", i == at ? "" : " ", name);
+        core_text_append(path, LABELS, "%s%s", i == at ? "" : " ", name);
         if (i == cur || strlen(path) + 8 >= LABELS)
             break;
     }
@@ -376,8 +355,8 @@ cg_status cg_weiler_atherton_steps(const cg_vec2 *subject, size_t n, const cg_ve
             window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), w.window);
         outcome = emit_prepared(&w, delta);
     }
-    int flat = w.n < 3 || w.m < 3 || clip_weiler_twice_area(w.subject, w.n) == 0
-               || clip_weiler_twice_area(w.window, w.m) == 0;
+    int flat = w.n < 3 || w.m < 3 || clip_twice_area(w.subject, w.n) == 0
+               || clip_twice_area(w.window, w.m) == 0;
     if (outcome == 0 && !flat)
         outcome = find_crossings(&w);
     if (outcome == 0 && !flat && (w.crossings.count == 0 || w.crossings.count % 2)) {

@@ -29,6 +29,7 @@
 #include "triangulate_internal.h"
 
 #include "../core/array.h"
+#include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -433,10 +434,9 @@ static cg_status start_mesh(mesh *m, const cg_polygon_set64 *rings, size_t *coun
     size_t n = rings->point_count;
     if (core_array_reserve_for(&m->points, n + 3) != CG_OK)
         return CG_ENOMEM;
-    if (n > 0) { /* memcpy and qsort want non-null pointers even for no points */
+    if (n > 0) /* memcpy wants non-null pointers even for no points */
         memcpy(m->points.data, rings->points, n * sizeof *rings->points);
-        qsort(m->points.data, n, sizeof *m->points.data, compare_points);
-    }
+    core_sort(m->points.data, n, sizeof *m->points.data, compare_points);
     size_t distinct = 0;
     for (size_t i = 0; i < n; i++)
         if (distinct == 0 || compare_points(&m->points.data[distinct - 1], &m->points.data[i]) != 0)
@@ -500,8 +500,7 @@ static cg_status insert_all(mesh *m, size_t count)
             round++;
         order.data[i].key = round << 56 | morton(x, y); /* rounds below 2^8 */
     }
-    if (count > 1) /* qsort wants a non-null array even when empty */
-        qsort(order.data, count, sizeof *order.data, compare_keyed);
+    core_sort(order.data, count, sizeof *order.data, compare_keyed);
     cg_status st = CG_OK;
     for (size_t i = 0; i < count && st == CG_OK; i++)
         st = insert(m, order.data[i].vertex);

@@ -5,6 +5,7 @@
 #include "cg/clip.h"
 #include "internal.h"
 #include "../core/array.h"
+#include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -24,7 +25,7 @@ typedef struct xing {
     int entering;
 } xing;
 
-double clip_weiler_twice_area(const cg_vec2 *p, size_t n)
+double clip_twice_area(const cg_vec2 *p, size_t n)
 {
     double s = 0;
     for (size_t i = 0, j = n - 1; i < n; j = i++)
@@ -53,7 +54,7 @@ size_t clip_weiler_prepare(const cg_vec2 *in, size_t n, cg_vec2 d, cg_vec2 *out)
     }
     while (m > 1 && out[0].x == out[m - 1].x && out[0].y == out[m - 1].y)
         m--;
-    if (m >= 3 && clip_weiler_twice_area(out, m) < 0)
+    if (m >= 3 && clip_twice_area(out, m) < 0)
         for (size_t i = 0; i < m / 2; i++) {
             cg_vec2 t = out[i];
             out[i] = out[m - 1 - i];
@@ -92,6 +93,19 @@ static cg_status check_input(const cg_vec2 *subject, size_t n, const cg_vec2 *wi
     return CG_OK;
 }
 
+int clip_weiler_crossing(cg_vec2 a, cg_vec2 d, cg_vec2 c, cg_vec2 e, double *t, double *u,
+                         int *entering)
+{
+    double den = cg_vec2_cross(d, e);
+    if (den == 0)
+        return 0;
+    cg_vec2 ac = cg_vec2_sub(c, a);
+    *t = cg_vec2_cross(ac, e) / den;
+    *u = cg_vec2_cross(ac, d) / den;
+    *entering = den < 0;
+    return *t >= 0 && *t < 1 && *u >= 0 && *u < 1;
+}
+
 /* Phase 2: every proper crossing of a subject edge with a window edge,
  * appended to *X in subject-edge order. */
 static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing **X,
@@ -102,16 +116,13 @@ static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, si
         cg_vec2 a = S[i], b = S[(i + 1) % n], d = cg_vec2_sub(b, a);
         for (size_t j = 0; j < m; j++) {
             cg_vec2 c = C[j], e = cg_vec2_sub(C[(j + 1) % m], c);
-            double den = cg_vec2_cross(d, e);
-            if (den == 0)
-                continue;
-            cg_vec2 ac = cg_vec2_sub(c, a);
-            double t = cg_vec2_cross(ac, e) / den, u = cg_vec2_cross(ac, d) / den;
-            if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
+            double t, u;
+            int entering;
+            if (!clip_weiler_crossing(a, d, c, e, &t, &u, &entering))
                 continue;
             if (core_array_reserve((void **)X, &capx, *nx + 1, sizeof **X) != CG_OK)
                 return CG_ENOMEM;
-            (*X)[(*nx)++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), den < 0};
+            (*X)[(*nx)++] = (xing){i, j, t, u, cg_vec2_add(a, cg_vec2_scale(d, t)), entering};
         }
     }
     return CG_OK;
@@ -123,7 +134,7 @@ static cg_status find_crossings(const cg_vec2 *S, size_t n, const cg_vec2 *C, si
 static cg_status build_lists(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_t m, xing *X,
                              size_t nx, wnode *sn, wnode *cn)
 {
-    qsort(X, nx, sizeof *X, cmp_s);
+    core_sort(X, nx, sizeof *X, cmp_s);
     xing **XC = malloc(nx * sizeof *XC);
     size_t *sidx = malloc(nx * sizeof *sidx);
     if (!XC || !sidx) {
@@ -145,7 +156,7 @@ static cg_status build_lists(const cg_vec2 *S, size_t n, const cg_vec2 *C, size_
         sn[i].next = (i + 1) % ns;
     for (size_t i = 0; i < nx; i++)
         XC[i] = &X[i];
-    qsort(XC, nx, sizeof *XC, cmp_c);
+    core_sort(XC, nx, sizeof *XC, cmp_c);
     size_t nc = 0;
     k = 0;
     for (size_t j = 0; j < m; j++) {
@@ -266,7 +277,7 @@ cg_status cg_clip_weiler_atherton(const cg_vec2 *subject, size_t n, const cg_vec
     double delta = (ext > 0 ? ext : 1) * 1e-9;
     n = clip_weiler_prepare(subject, n, cg_vec2_make(0, 0), S);
     m = clip_weiler_prepare(window, m, cg_vec2_make(delta * 0.7548776662, delta * 0.5698402910), C);
-    if (n < 3 || m < 3 || clip_weiler_twice_area(S, n) == 0 || clip_weiler_twice_area(C, m) == 0) {
+    if (n < 3 || m < 3 || clip_twice_area(S, n) == 0 || clip_twice_area(C, m) == 0) {
         st = CG_OK; /* nothing with an area */
         goto done;
     }

@@ -2,9 +2,6 @@
 #include "cg/color.h"
 #include "srgb_tables.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 double cg_srgb_to_linear(double encoded)
 {
@@ -41,15 +38,13 @@ void cg_srgb8_decode(const uint8_t *in, float *out, size_t n)
 {
     const float *t = color_srgb_decode_table;
     size_t i = 0;
-#if defined(__SSE2__)
     if (n >= STREAM_THRESHOLD) {
         for (; i < n && ((uintptr_t)(out + i) & 15) != 0; i++)
             out[i] = t[in[i]];
         for (; i + 4 <= n; i += 4)
-            _mm_stream_ps(out + i, _mm_setr_ps(t[in[i]], t[in[i + 1]], t[in[i + 2]], t[in[i + 3]]));
-        _mm_sfence();
+            v4_stream(out + i, v4_set4(t[in[i]], t[in[i + 1]], t[in[i + 2]], t[in[i + 3]]));
+        v4_stream_fence();
     }
-#endif
     for (; i < n; i++)
         out[i] = t[in[i]];
 }

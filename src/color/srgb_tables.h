@@ -5,10 +5,9 @@
 
 #include "cg/image.h" /* cg_rgba8 */
 
+#include "../core/simd4.h"
+
 #include <stdint.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 extern const float color_srgb_decode_table[256];
 /* threshold[k]: least linear value of code k + 1; threshold[255] = +infinity. */
@@ -28,24 +27,22 @@ static inline uint8_t cg_srgb_encode_unit(float linear)
     return (uint8_t)(code + (x >= color_srgb_threshold_table[code]));
 }
 
-#if defined(__SSE2__)
 /* The same for lanes 0, 1 and 2 of v at once, into px's r, g and b (its
  * alpha is left as it is). */
-static inline void cg_srgb_encode_rgb(cg_rgba8 *px, __m128 v)
+static inline void cg_srgb_encode_rgb(cg_rgba8 *px, v4 v)
 {
     /* max(v, 0) gives 0 for NaN, as above */
-    v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
-    __m128i i = _mm_cvttps_epi32(_mm_mul_ps(v, _mm_set1_ps(4096.0f)));
-    unsigned c0 = color_srgb_encode_start[_mm_cvtsi128_si32(i)];
-    unsigned c1 = color_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0x55))];
-    unsigned c2 = color_srgb_encode_start[_mm_cvtsi128_si32(_mm_shuffle_epi32(i, 0xaa))];
-    __m128 next = _mm_setr_ps(color_srgb_threshold_table[c0], color_srgb_threshold_table[c1],
-                              color_srgb_threshold_table[c2], 0.0f);
-    int up = _mm_movemask_ps(_mm_cmpge_ps(v, next));
+    v = v4_min(v4_max(v, v4_set(0.0f)), v4_set(1.0f));
+    i4 i = i4_truncate(v4_mul(v, v4_set(4096.0f)));
+    unsigned c0 = color_srgb_encode_start[i4_lane(i, 0)];
+    unsigned c1 = color_srgb_encode_start[i4_lane(i, 1)];
+    unsigned c2 = color_srgb_encode_start[i4_lane(i, 2)];
+    v4 next = v4_set3(color_srgb_threshold_table[c0], color_srgb_threshold_table[c1],
+                      color_srgb_threshold_table[c2]);
+    int up = v4_bits(v4_ge(v, next));
     px->r = (uint8_t)(c0 + (up & 1));
     px->g = (uint8_t)(c1 + ((up >> 1) & 1));
     px->b = (uint8_t)(c2 + ((up >> 2) & 1));
 }
-#endif
 
 #endif

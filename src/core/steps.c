@@ -3,6 +3,8 @@
 
 #include "array.h"
 
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -219,4 +221,17 @@ size_t cg_step_log_count(const cg_step_log *log)
 const cg_step *cg_step_log_get(const cg_step_log *log, size_t i)
 {
     return log && i < log->steps.count ? &log->steps.data[i].step : NULL;
+}
+
+void core_text_append(char *text, size_t size, const char *format, ...)
+{
+    size_t used = strlen(text);
+    if (used + 4 >= size)
+        return;
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(text + used, size - used, format, args);
+    va_end(args);
+    if (n < 0 || used + (size_t)n >= size)
+        strcpy(text + size - 4, "...");
 }

@@ -23,6 +23,13 @@ void core_step_pixel(core_step *s, const char *name, long long x, long long y);
 void core_step_point(core_step *s, const char *name, cg_vec2 value);
 void core_step_points(core_step *s, const char *name, const cg_vec2 *points, size_t count);
 void core_step_reals(core_step *s, const char *name, const double *reals, size_t count);
+/* Appends printf text to the string in text[0..size), cut with "..." when
+ * it does not fit (a step's label lists, bounded). */
+void core_text_append(char *text, size_t size, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 /* Calls fn with the step built (fields set); its result. */
 int core_step_emit(core_step *s, cg_step_fn fn, void *user);
 

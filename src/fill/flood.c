@@ -9,12 +9,10 @@
  * Every pixel is painted once; the stack lives on the heap and grows. */
 #include "cg/fill.h"
 #include "../core/array.h"
+#include "../core/simd4.h"
 
 #include <stdlib.h>
 #include <string.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 typedef struct span_entry {
     int left, right, y, dir, parent_left, parent_right;
@@ -118,16 +116,11 @@ static int push(flood *f, int left, int right, int y, int dir, int parent_left, 
 static inline int extend_right_exact(uint32_t *row, int t, int last, uint32_t reference,
                                      uint32_t color)
 {
-#if defined(__SSE2__)
-    __m128i ref4 = _mm_set1_epi32((int)reference), color4 = _mm_set1_epi32((int)color);
-    while (t + 4 <= last) {
-        __m128i v = _mm_loadu_si128((const __m128i *)(row + t + 1));
-        if (_mm_movemask_epi8(_mm_cmpeq_epi32(v, ref4)) != 0xFFFF)
-            break;
-        _mm_storeu_si128((__m128i *)(row + t + 1), color4);
+    i4 ref4 = i4_set((int)reference), color4 = i4_set((int)color);
+    while (t + 4 <= last && i4_all_equal(i4_load(row + t + 1), ref4)) {
+        i4_store(row + t + 1, color4);
         t += 4;
     }
-#endif
     while (t < last && row[t + 1] == reference)
         row[++t] = color;
     return t;
@@ -136,16 +129,11 @@ static inline int extend_right_exact(uint32_t *row, int t, int last, uint32_t re
 /* ...and going left, down to column 0. */
 static inline int extend_left_exact(uint32_t *row, int s, uint32_t reference, uint32_t color)
 {
-#if defined(__SSE2__)
-    __m128i ref4 = _mm_set1_epi32((int)reference), color4 = _mm_set1_epi32((int)color);
-    while (s >= 4) {
-        __m128i v = _mm_loadu_si128((const __m128i *)(row + s - 4));
-        if (_mm_movemask_epi8(_mm_cmpeq_epi32(v, ref4)) != 0xFFFF)
-            break;
-        _mm_storeu_si128((__m128i *)(row + s - 4), color4);
+    i4 ref4 = i4_set((int)reference), color4 = i4_set((int)color);
+    while (s >= 4 && i4_all_equal(i4_load(row + s - 4), ref4)) {
+        i4_store(row + s - 4, color4);
         s -= 4;
     }
-#endif
     while (s > 0 && row[s - 1] == reference)
         row[--s] = color;
     return s;

@@ -5,15 +5,13 @@
 #include "cg/fill.h"
 #include "../color/srgb_tables.h"
 #include "../core/array.h"
+#include "../core/simd4.h"
 #include "cg/color.h"
 
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 #include <wchar.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 /* ---- growing arrays of points ------------------------------------------- */
 
@@ -98,25 +96,20 @@ static inline void fill_store32(uint32_t *d, int n, uint32_t v)
         wmemset((wchar_t *)(void *)d, w, (size_t)n);
         return;
     }
-#if defined(__SSE2__)
     /* The last four pixels are stored over what the loop stored, and one to
      * three pixels by three stores that may coincide: no branch on the
      * remainder (runs of every length come one after another in a row, and
      * the branches of a loop over the remainder mispredicted). */
     if (n >= 4) {
-        __m128i v4 = _mm_set1_epi32((int)v);
+        i4 four = i4_set((int)v);
         for (; i + 4 < n; i += 4)
-            _mm_storeu_si128((__m128i *)(d + i), v4);
-        _mm_storeu_si128((__m128i *)(d + n - 4), v4);
+            i4_store(d + i, four);
+        i4_store(d + n - 4, four);
     } else if (n > 0) {
         d[0] = v;
         d[n >> 1] = v;
         d[n - 1] = v;
     }
-#else
-    for (; i < n; i++)
-        d[i] = v;
-#endif
 }
 
 typedef struct fill_painter {
@@ -413,24 +406,24 @@ static inline void fill_next_generation(struct cg_rasterizer *r)
  * result; the three channels at once with SSE2.  Everything it reads (2.1
  * KiB of tables) stays in the first-level cache. */
 #if defined(__SSE2__)
-typedef __m128 fill_rgb;
+typedef v4 fill_rgb;
 static inline fill_rgb fill_rgb_make(float r, float g, float b)
 {
-    return _mm_setr_ps(r, g, b, 0.0f);
+    return v4_set3(r, g, b);
 }
 
-static inline __m128 fill_decode_rgb(const cg_rgba8 *px)
+static inline v4 fill_decode_rgb(const cg_rgba8 *px)
 {
-    return _mm_setr_ps(color_srgb_decode_table[px->r], color_srgb_decode_table[px->g],
-                       color_srgb_decode_table[px->b], 0.0f);
+    return v4_set3(color_srgb_decode_table[px->r], color_srgb_decode_table[px->g],
+                   color_srgb_decode_table[px->b]);
 }
 
 static inline uint32_t fill_blend_opaque(uint32_t v, fill_rgb src, float as)
 {
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);
-    __m128 dk = fill_decode_rgb(&px);
-    cg_srgb_encode_rgb(&px, _mm_add_ps(dk, _mm_mul_ps(_mm_sub_ps(src, dk), _mm_set1_ps(as))));
+    v4 dk = fill_decode_rgb(&px);
+    cg_srgb_encode_rgb(&px, v4_add(dk, v4_mul(v4_sub(src, dk), v4_set(as))));
     memcpy(&v, &px, sizeof v);
     return v;
 }
@@ -441,9 +434,8 @@ static inline uint32_t fill_blend_translucent(uint32_t v, fill_rgb src, float as
     cg_rgba8 px;
     memcpy(&px, &v, sizeof px);
     float ad = px.a * (1.0f / 255.0f) * (1 - as), a = as + ad;
-    __m128 mix = _mm_add_ps(_mm_mul_ps(src, _mm_set1_ps(as)),
-                            _mm_mul_ps(fill_decode_rgb(&px), _mm_set1_ps(ad)));
-    cg_srgb_encode_rgb(&px, _mm_mul_ps(mix, _mm_set1_ps(1 / a)));
+    v4 mix = v4_add(v4_mul(src, v4_set(as)), v4_mul(fill_decode_rgb(&px), v4_set(ad)));
+    cg_srgb_encode_rgb(&px, v4_mul(mix, v4_set(1 / a)));
     px.a = (uint8_t)(a * 255.0f + 0.5f);
     memcpy(&v, &px, sizeof v);
     return v;

@@ -10,6 +10,7 @@
  * so two polygons sharing an edge compute the same crossing bit for bit and
  * split the pixels on it between them without overlap or gap. */
 #include "internal.h"
+#include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -127,7 +128,7 @@ typedef struct active_edge {
 static void sort_edges(fill_edge *edges, size_t n)
 {
     if (n > 48) {
-        qsort(edges, n, sizeof *edges, compare_edges);
+        core_sort(edges, n, sizeof *edges, compare_edges);
         return;
     }
     for (size_t i = 1; i < n; i++) {

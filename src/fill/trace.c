@@ -12,9 +12,9 @@
 #include "internal.h"
 #include "../core/array.h"
 #include "../core/steps.h"
+#include "../core/sort.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,24 +39,6 @@ static int by_first_row(const void *a, const void *b)
     if (x->first_row != y->first_row)
         return (x->first_row > y->first_row) - (x->first_row < y->first_row);
     return (x->number > y->number) - (x->number < y->number);
-}
-
-/* Appends printf text to a bounded buffer (cut with "..." when full). */
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void
-append(char *text, const char *format, ...)
-{
-    size_t used = strlen(text);
-    if (used + 4 >= TEXT_SIZE)
-        return;
-    va_list args;
-    va_start(args, format);
-    int n = vsnprintf(text + used, TEXT_SIZE - used, format, args);
-    va_end(args);
-    if (n < 0 || used + (size_t)n >= TEXT_SIZE)
-        strcpy(text + TEXT_SIZE - 4, "...");
 }
 
 static int emit_edge_table(const traced_edge *edges, size_t count, cg_step_fn fn, void *user)
@@ -96,8 +78,9 @@ static int emit_row(const traced_edge *edges, const active_crossing *active, siz
     int winding = 0, inside = 0;
     double span_left = 0;
     for (size_t i = 0; i < count; i++) {
-        append(list, "%se%d x=%.6g %s", i ? ", " : "", edges[active[i].edge].number, active[i].x,
-               active[i].dir > 0 ? "down" : "up");
+        core_text_append(list, TEXT_SIZE, "%se%d x=%.6g %s", i ? ", " : "",
+                         edges[active[i].edge].number, active[i].x,
+                         active[i].dir > 0 ? "down" : "up");
         winding += active[i].dir;
         int now = rule == CG_FILL_NONZERO ? winding != 0 : (winding & 1);
         if (now && !inside) {
@@ -106,11 +89,11 @@ static int emit_row(const traced_edge *edges, const active_crossing *active, siz
             long long first = (long long)ceil(span_left - 0.5);
             long long last = (long long)ceil(active[i].x - 0.5) - 1;
             if (first <= last)
-                append(spans, "%s[%.6g, %.6g) -> %lld..%lld", spans[0] ? "; " : "", span_left,
-                       active[i].x, first, last);
+                core_text_append(spans, TEXT_SIZE, "%s[%.6g, %.6g) -> %lld..%lld",
+                                 spans[0] ? "; " : "", span_left, active[i].x, first, last);
             else
-                append(spans, "%s[%.6g, %.6g) -> none", spans[0] ? "; " : "", span_left,
-                       active[i].x);
+                core_text_append(spans, TEXT_SIZE, "%s[%.6g, %.6g) -> none", spans[0] ? "; " : "",
+                                 span_left, active[i].x);
             for (long long x = first; x <= last; x++)
                 if (core_array_push(pixels, (int)x) != CG_OK || core_array_push(pixels, y) != CG_OK)
                     return -1;
@@ -151,7 +134,7 @@ static int sweep(const traced_edge *edges, size_t count, cg_fill_rule rule, cg_s
         for (size_t i = 0; i < active_count; i++) {
             const traced_edge *e = &edges[active[i].edge];
             if (e->last_row < y) {
-                append(removed, "%se%d", removed[0] ? " " : "", e->number);
+                core_text_append(removed, TEXT_SIZE, "%se%d", removed[0] ? " " : "", e->number);
                 continue;
             }
             active[kept].x = e->x0 + (yc - e->y0) * e->slope;
@@ -164,7 +147,7 @@ static int sweep(const traced_edge *edges, size_t count, cg_fill_rule rule, cg_s
             const traced_edge *e = &edges[next];
             active[active_count++] = (active_crossing){e->x0 + (yc - e->y0) * e->slope, e->dir,
                                                        (int)next};
-            append(added, "%se%d", added[0] ? " " : "", e->number);
+            core_text_append(added, TEXT_SIZE, "%se%d", added[0] ? " " : "", e->number);
             next++;
         }
         if (active_count == 0) {
@@ -230,8 +213,7 @@ cg_status cg_scanline_fill_steps(const cg_vec2 *points, const int *contour_sizes
         free(edges.data);
         return CG_OK;
     }
-    if (edges.count > 1) /* qsort wants a non-null array even when empty */
-        qsort(edges.data, edges.count, sizeof *edges.data, by_first_row);
+    core_sort(edges.data, edges.count, sizeof *edges.data, by_first_row);
     int outcome = emit_edge_table(edges.data, edges.count, step, user);
     if (outcome == 0)
         outcome = sweep(edges.data, edges.count, rule, step, user);

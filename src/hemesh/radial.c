@@ -17,6 +17,7 @@
  * from the larger vertex that is followed by one running from the smaller.
  */
 #include "internal.h"
+#include "../core/sort.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -106,7 +107,7 @@ cg_status hm_radial_sort_bucket(const cg_mesh *mesh, const uint32_t *offsets,
             sides[j] = x;
         }
     } else {
-        qsort(sides, n, sizeof *sides, radial_compare);
+        core_sort(sides, n, sizeof *sides, radial_compare);
     }
     /* each group of three or more starts where the solid begins */
     for (size_t i = 0; i < n;) {

@@ -105,6 +105,10 @@ static int channel_slot(const char *name)
     return -1;
 }
 
+/* The plane of one chunk that receives the channels cg does not keep;
+ * planes 0-4 are R, G, B, A and Y (channel_slot). */
+enum { DISCARD_PLANE = 5 };
+
 typedef struct read_state {
     exr_context_t ctx;
     exr_decode_pipeline_t decoder;
@@ -112,7 +116,7 @@ typedef struct read_state {
     exr_attr_box2i_t window;
     cg_image *image;
     int grey;      /* the file has Y and not R, G, B */
-    float *planes; /* 5 planes of one chunk: R, G, B, A, Y */
+    float *planes; /* the planes of one chunk: R, G, B, A, Y, discard */
     size_t planes_pixels;
 } read_state;
 
@@ -148,7 +152,7 @@ static exr_result_t decode_chunk(read_state *r, const exr_chunk_info_t *chunk, i
     if (n > r->planes_pixels) {
         free(r->planes);
         r->planes_pixels = 0;
-        if (!(r->planes = malloc(5 * n * sizeof *r->planes)))
+        if (!(r->planes = malloc((DISCARD_PLANE + 1) * n * sizeof *r->planes)))
             return EXR_ERR_OUT_OF_MEMORY;
         r->planes_pixels = n;
     }
@@ -161,14 +165,18 @@ static exr_result_t decode_chunk(read_state *r, const exr_chunk_info_t *chunk, i
     for (int c = 0; c < r->decoder.channel_count; c++) {
         exr_coding_channel_info_t *ch = &r->decoder.channels[c];
         int slot = channel_slot(ch->channel_name);
-        ch->decode_to_ptr = NULL;
+        /* Every channel gets a destination: OpenEXRCore 3.1 writes through a
+         * NULL decode_to_ptr on some corrupt chunks.  Channels cg does not
+         * keep (and any of a size other than the chunk's, at most w x h)
+         * all go to the discard plane. */
         if (slot < 0 || ch->height != h || ch->width != w)
-            continue;
-        present |= 1 << slot;
+            slot = DISCARD_PLANE;
+        else
+            present |= 1 << slot;
         ch->user_data_type = EXR_PIXEL_FLOAT;
         ch->user_bytes_per_element = 4;
         ch->user_pixel_stride = 4;
-        ch->user_line_stride = 4 * w;
+        ch->user_line_stride = 4 * (ch->width > 0 ? ch->width : 1);
         ch->decode_to_ptr = (uint8_t *)(r->planes + (size_t)slot * n);
     }
     if (first

@@ -6,7 +6,10 @@
  * the other as runs: a count over 128 repeats the next byte count - 128
  * times, a count 1..128 is followed by that many literal bytes).
  * A pixel (R, G, B, E) with E > 0 is ((R, G, B) + 0.5) * 2^(E - 136), as
- * Radiance decodes it; E = 0 is black.  EXPOSURE lines are not applied. */
+ * Radiance decodes it; E = 0 is black.  EXPOSURE=K header lines say the
+ * pixels were multiplied by K (cumulatively, when there are several): the
+ * reader divides by their product, so the image holds the radiance the
+ * file was made from, as Radiance's own tools report it. */
 #include "internal.h"
 
 #include <math.h>
@@ -37,8 +40,9 @@ static int next_line(hdr_reader *r, char *line, size_t cap)
 }
 
 static cg_status read_header(hdr_reader *r, unsigned long *width, unsigned long *height,
-                             cg_error *err)
+                             double *exposure, cg_error *err)
 {
+    *exposure = 1;
     char line[256];
     if (!next_line(r, line, sizeof line)
         || (strncmp(line, "#?RADIANCE", 10) != 0 && strncmp(line, "#?RGBE", 6) != 0))
@@ -50,6 +54,19 @@ static cg_status read_header(hdr_reader *r, unsigned long *width, unsigned long 
                                 r->name);
         if (line[0] == '\0')
             break;
+        if (strncmp(line, "EXPOSURE=", 9) == 0) {
+            char *end;
+            double k = strtod(line + 9, &end);
+            while (*end == ' ' || *end == '\t' || *end == '\r')
+                end++;
+            if (end == line + 9 || *end || !(k > 0) || !isfinite(k * *exposure)
+                || !(k * *exposure > 0))
+                return cg_error_set(err, CG_EFORMAT,
+                                    "%s: bad HDR exposure line '%.64s' (expected EXPOSURE=K "
+                                    "with K > 0)",
+                                    r->name, line);
+            *exposure *= k;
+        }
         if (strncmp(line, "FORMAT=", 7) == 0 && strcmp(line + 7, "32-bit_rle_rgbe") != 0)
             return cg_error_set(err, CG_EUNSUPPORTED,
                                 "%s: HDR pixel format '%s' is not supported (only "
@@ -107,9 +124,23 @@ cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, 
     *out = NULL;
     hdr_reader r = {bytes, size, 0, name};
     unsigned long width, height;
-    cg_status status = read_header(&r, &width, &height, err);
+    double exposure;
+    cg_status status = read_header(&r, &width, &height, &exposure, err);
     if (status != CG_OK)
         return status;
+    /* An image over a million pixels is allocated only when the data can
+     * hold it: a scanline takes at least 4 bytes a pixel flat, or run-length
+     * encoded its 4-byte start and two bytes per 127 pixels of each
+     * component.  So a few bytes claiming a huge image are refused before
+     * any allocation, while the errors of small files still name the exact
+     * defect the decoding meets. */
+    int rle = width >= 8 && width < 32768;
+    size_t row_least = rle ? 4 + 8 * ((width + 126) / 127) : 4 * (size_t)width;
+    if ((double)width * (double)height > 1 << 20 && (size - r.at) / row_least < height)
+        return cg_error_set(err, CG_EFORMAT,
+                            "%s: truncated HDR data: %lu rows of %lu pixels need at least %zu "
+                            "bytes, the file has %zu",
+                            name, height, width, row_least * height, size - r.at);
     unsigned char *scan = malloc((size_t)width * 4);
     if (!scan
         || (status = cg_image_create(out, (int)width, (int)height, CG_PIXEL_RGBAF)) != CG_OK) {
@@ -119,8 +150,7 @@ cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, 
     }
     for (unsigned long y = 0; y < height && status == CG_OK; y++) {
         const unsigned char *p = bytes + r.at;
-        if (width >= 8 && width < 32768 && size - r.at >= 4 && p[0] == 2 && p[1] == 2
-            && !(p[2] & 0x80)) {
+        if (rle && size - r.at >= 4 && p[0] == 2 && p[1] == 2 && !(p[2] & 0x80)) {
             if (((unsigned long)p[2] << 8 | p[3]) != width)
                 status = cg_error_set(err, CG_EFORMAT, "%s: HDR scanline width mismatch", name);
             else {
@@ -137,6 +167,11 @@ cg_status hdr_decode(const unsigned char *bytes, size_t size, const char *name, 
         cg_rgbaf *row = cg_image_row_rgbaf(*out, (int)y);
         for (unsigned long x = 0; x < width && status == CG_OK; x++)
             row[x] = rgbe_to_float(scan + 4 * x);
+        for (unsigned long x = 0; exposure != 1 && x < width && status == CG_OK; x++) {
+            row[x].r = (float)(row[x].r / exposure);
+            row[x].g = (float)(row[x].g / exposure);
+            row[x].b = (float)(row[x].b / exposure);
+        }
     }
     free(scan);
     if (status != CG_OK) {

@@ -259,15 +259,10 @@ static cg_status write_file(const char *path, const char *json, const byte_array
 
 cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
 {
-    size_t n = cg_mesh_triangle_count(m);
-    uint32_t(*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
-    if (!triangles)
-        return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
-    cg_status s = cg_mesh_triangulate(m, triangles);
-    if (s != CG_OK) {
-        free(triangles);
-        return cg_error_set(err, s, "%s: cannot triangulate the mesh", path);
-    }
+    uint32_t(*triangles)[3];
+    cg_status s = mesh_write_triangles(m, path, err, &triangles);
+    if (s != CG_OK)
+        return s;
     byte_array bin = {0};
     cJSON *root = cJSON_CreateObject(), *asset = cJSON_CreateObject();
     cJSON_AddStringToObject(asset, "version", "2.0");

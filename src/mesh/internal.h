@@ -113,6 +113,13 @@ typedef struct text_cursor {
     size_t line; /* 1-based line of p */
 } text_cursor;
 
+/* A cursor at the start of bytes[0..size), line 1 of the file name. */
+static inline text_cursor text_cursor_start(const char *bytes, size_t size, const char *name)
+{
+    text_cursor t = {bytes, bytes + size, name, 1};
+    return t;
+}
+
 static inline void text_skip_blanks(text_cursor *t)
 {
     while (t->p < t->end && is_blank(*t->p))
@@ -212,6 +219,10 @@ cg_status stl_read(const unsigned char *bytes, size_t size, const char *name, cg
 cg_status off_write(const cg_mesh *m, const char *path, cg_error *err);
 cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err);
 cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err);
+/* The mesh's faces as cg_mesh_triangle_count(m) triangles, for the writers
+ * of triangle formats (STL, glTF): *out to free, or an error naming path. */
+cg_status mesh_write_triangles(const cg_mesh *m, const char *path, cg_error *err,
+                               uint32_t (**out)[3]);
 
 /* glTF 2.0, .gltf or .glb (gltf.c); directory as for obj_read. */
 cg_status gltf_read(const unsigned char *bytes, size_t size, const char *name,

@@ -608,10 +608,7 @@ cg_status obj_read(const char *bytes, size_t size, const char *name, const char 
 {
     obj_reader r;
     memset(&r, 0, sizeof r);
-    r.t.p = bytes;
-    r.t.end = bytes + size;
-    r.t.name = name;
-    r.t.line = 1;
+    r.t = text_cursor_start(bytes, size, name);
     r.err = err;
     r.current_material = OBJ_NONE;
     builder_init(&r.b);

@@ -177,10 +177,7 @@ cg_status off_read(const char *bytes, size_t size, const char *name, cg_mesh **o
 {
     off_reader r;
     memset(&r, 0, sizeof r);
-    r.t.p = bytes;
-    r.t.end = bytes + size;
-    r.t.name = name;
-    r.t.line = 1;
+    r.t = text_cursor_start(bytes, size, name);
     r.err = err;
     builder_init(&r.b);
     int64_t nv = 0, nf = 0, ne = 0;

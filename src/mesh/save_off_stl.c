@@ -83,12 +83,12 @@ static void put_f32(unsigned char *p, double v)
     put_u32(p, bits);
 }
 
-cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err)
+cg_status mesh_write_triangles(const cg_mesh *m, const char *path, cg_error *err,
+                               uint32_t (**out)[3])
 {
     size_t n = cg_mesh_triangle_count(m);
-    if (n > UINT32_MAX)
-        return cg_error_set(err, CG_ERANGE, "%s: %zu triangles, more than STL counts", path, n);
     uint32_t(*triangles)[3] = malloc((n ? n : 1) * sizeof *triangles);
+    *out = NULL;
     if (!triangles)
         return cg_error_set(err, CG_ENOMEM, "%s: out of memory", path);
     cg_status s = cg_mesh_triangulate(m, triangles);
@@ -96,6 +96,19 @@ cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err)
         free(triangles);
         return cg_error_set(err, s, "%s: cannot triangulate the mesh", path);
     }
+    *out = triangles;
+    return CG_OK;
+}
+
+cg_status stl_write(const cg_mesh *m, const char *path, cg_error *err)
+{
+    size_t n = cg_mesh_triangle_count(m);
+    if (n > UINT32_MAX)
+        return cg_error_set(err, CG_ERANGE, "%s: %zu triangles, more than STL counts", path, n);
+    uint32_t(*triangles)[3];
+    cg_status s = mesh_write_triangles(m, path, err, &triangles);
+    if (s != CG_OK)
+        return s;
     safe_file o;
     if ((s = safe_file_open(&o, path, err)) != CG_OK) {
         free(triangles);

@@ -12,6 +12,7 @@
  * screen space (pixels, window depth), where the projection is parallel. */
 #include "internal.h"
 #include "../core/array.h"
+#include "../core/sort.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -304,7 +305,7 @@ static cg_status gather_sorted(painter *pt, int *list)
         keys[i].zmax = pt->nodes[i].zmax;
         keys[i].index = (int)i;
     }
-    qsort(keys, pt->count, sizeof *keys, by_far_depth);
+    core_sort(keys, pt->count, sizeof *keys, by_far_depth);
     *list = -1;
     for (size_t i = pt->count; i-- > 0;)
         push_front(pt, list, keys[i].index);

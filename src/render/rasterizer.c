@@ -9,10 +9,8 @@
  * (the top-left rule), whichever tile or thread draws it. */
 #include "pipeline.h"
 #include "cg/color.h"
+#include "../core/simd4.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <string.h>
 
 /* ---- fragments ---------------------------------------------------------- */
@@ -51,50 +49,45 @@ typedef struct gouraud_plane {
     int64_t step1, step2;    /* edge functions 1 and 2 per pixel */
 } gouraud_plane;
 
-#if defined(__SSE2__)
 /* An opaque pixel from the three colours in lanes 0-2 of v (lane 3, 1 / w
  * in the Gouraud runs, is ignored): every lane rounded as the scalar encode
  * rounds it, so the pictures are identical, with a quarter of the work. */
-static inline void encode_store(cg_rgba8 *p, __m128 v)
+static inline void encode_store(cg_rgba8 *p, v4 v)
 {
     cg_srgb_encode_rgb(p, v);
     p->a = 255;
 }
-#endif
 
 static inline void gouraud_run(const gouraud_plane *g, int64_t w1, int64_t w2, float *zrow,
                                unsigned char *row, int x0, int begin, int end, const int depth_test,
                                const int rgba8)
 {
-#if defined(__SSE2__)
     if (rgba8) {
-        const __m128 base = _mm_setr_ps(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]);
-        const __m128 d1 = _mm_setr_ps(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]);
-        const __m128 d2 = _mm_setr_ps(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2]);
-        const __m128 step = _mm_setr_ps(g->c_step[0], g->c_step[1], g->c_step[2], g->q_step);
-        __m128 v = _mm_setzero_ps();
+        const v4 base = v4_set4(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]);
+        const v4 d1 = v4_set4(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]);
+        const v4 d2 = v4_set4(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2]);
+        const v4 step = v4_set4(g->c_step[0], g->c_step[1], g->c_step[2], g->q_step);
+        v4 v = v4_set(0.0f);
         cg_rgba8 *out = (cg_rgba8 *)row + x0;
         /* Locals: the byte stores below may alias anything in memory. */
         const int64_t step1 = g->step1, step2 = g->step2;
         const float ia = g->ia, z0 = g->z0, dz1 = g->dz1, dz2 = g->dz2;
         for (int i = begin, restart = begin; i < end;
-             i++, w1 += step1, w2 += step2, v = _mm_add_ps(v, step)) {
+             i++, w1 += step1, w2 += step2, v = v4_add(v, step)) {
             float l1 = (float)w1 * ia, l2 = (float)w2 * ia;
             if (i == restart) {
-                v = _mm_add_ps(_mm_add_ps(base, _mm_mul_ps(_mm_set1_ps(l1), d1)),
-                               _mm_mul_ps(_mm_set1_ps(l2), d2));
+                v = v4_add(v4_add(base, v4_mul(v4_set(l1), d1)), v4_mul(v4_set(l2), d2));
                 restart += RENDER_TILE;
             }
             float z = z0 + l1 * dz1 + l2 * dz2;
             if (depth_test && !(z < zrow[i]))
                 continue;
             zrow[i] = z;
-            float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
-            encode_store(out + i, _mm_mul_ps(v, _mm_set1_ps(r)));
+            float r = 1 / v4_lane3(v);
+            encode_store(out + i, v4_mul(v, v4_set(r)));
         }
         return;
     }
-#endif
     float q = 0, c[3] = {0, 0, 0};
     for (int i = begin, restart = begin; i < end; i++, w1 += g->step1, w2 += g->step2,
              q += g->q_step, c[0] += g->c_step[0], c[1] += g->c_step[1], c[2] += g->c_step[2]) {
@@ -120,18 +113,15 @@ static inline void gouraud_run(const gouraud_plane *g, int64_t w1, int64_t w2, f
 static inline void gouraud_pixel(const gouraud_plane *g, float l1, float l2, unsigned char *row,
                                  int x, const int rgba8)
 {
-#if defined(__SSE2__)
     if (rgba8) {
-        __m128 v = _mm_add_ps(
-            _mm_add_ps(_mm_setr_ps(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]),
-                       _mm_mul_ps(_mm_set1_ps(l1),
-                                  _mm_setr_ps(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]))),
-            _mm_mul_ps(_mm_set1_ps(l2), _mm_setr_ps(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2])));
-        float r = 1 / _mm_cvtss_f32(_mm_shuffle_ps(v, v, 0xff));
-        encode_store((cg_rgba8 *)row + x, _mm_mul_ps(v, _mm_set1_ps(r)));
+        v4 v = v4_add(
+            v4_add(v4_set4(g->c[0][0], g->c[0][1], g->c[0][2], g->q[0]),
+                   v4_mul(v4_set(l1), v4_set4(g->c[1][0], g->c[1][1], g->c[1][2], g->q[1]))),
+            v4_mul(v4_set(l2), v4_set4(g->c[2][0], g->c[2][1], g->c[2][2], g->q[2])));
+        float r = 1 / v4_lane3(v);
+        encode_store((cg_rgba8 *)row + x, v4_mul(v, v4_set(r)));
         return;
     }
-#endif
     float q = g->q[0] + l1 * g->q[1] + l2 * g->q[2], c[3];
     for (int j = 0; j < 3; j++)
         c[j] = g->c[0][j] + l1 * g->c[1][j] + l2 * g->c[2][j];

@@ -15,6 +15,7 @@
 #include "checker.h"
 #include "../core/array.h"
 #include "../core/vector_order.h"
+#include "../core/sort.h"
 
 #include <float.h>
 #include <stdlib.h>
@@ -185,7 +186,7 @@ static cg_status pieces_mesh(const checker_frame *frame, const polygon_list *pie
     if (s == CG_OK) {
         for (size_t i = 0; i < n; i++)
             keys[i] = (keyed_point){pieces->points[i], i};
-        qsort(keys, n, sizeof *keys, compare_points);
+        core_sort(keys, n, sizeof *keys, compare_points);
         for (size_t i = 0; i < n; i++) {
             if (i > 0 && (core_vec3_less(keys[i - 1].p, keys[i].p)))
                 unique++;

@@ -38,8 +38,8 @@ static cg_status parse_array(const scene_parser *p, const cJSON *root, const cha
 
 static cg_status parse_scene(const scene_parser *p, const cJSON *root, cg_scene *s)
 {
-    static const char *const keys[] = {"comment",   "image",   "camera",   "render", "lights",
-                                       "materials", "objects", "overlays", NULL};
+    static const char *const keys[] = {"comment",   "image",   "camera",   "render",      "lights",
+                                       "materials", "objects", "overlays", "environment", NULL};
     cg_status st;
     if (!cJSON_IsObject(root))
         return cg_error_set(p->err, CG_EFORMAT, "%s: expected a JSON object at the top level",
@@ -54,6 +54,9 @@ static cg_status parse_scene(const scene_parser *p, const cJSON *root, cg_scene 
         return st;
     if ((v = cJSON_GetObjectItemCaseSensitive(root, "render"))
         && (st = scene_parse_render(p, v, s)))
+        return st;
+    if ((v = cJSON_GetObjectItemCaseSensitive(root, "environment"))
+        && (st = scene_parse_environment(p, v, s)))
         return st;
     if ((v = cJSON_GetObjectItemCaseSensitive(root, "materials"))
         && (st = scene_parse_materials(p, v, s)))

@@ -10,8 +10,8 @@ static cg_status parse_material(const scene_parser *p, const char *path, const c
                                 cg_scene_material *m)
 {
     static const char *const keys[] = {
-        "color",       "specular_color", "ka",  "kd",      "ks", "shininess", "specular",
-        "reflectance", "transmittance",  "ior", "checker", NULL};
+        "color",       "specular_color", "ka",  "kd",      "ks",       "shininess", "specular",
+        "reflectance", "transmittance",  "ior", "checker", "emission", NULL};
     static const char *const models[] = {"phong", "blinn", NULL};
     cg_material *s = &m->surface;
     int model = (int)s->specular;
@@ -26,7 +26,8 @@ static cg_status parse_material(const scene_parser *p, const char *path, const c
         || (st = scene_get_choice(p, path, v, "specular", models, &model))
         || (st = scene_get_number(p, path, v, "reflectance", 0, 1, &s->reflectance))
         || (st = scene_get_number(p, path, v, "transmittance", 0, 1, &s->transmittance))
-        || (st = scene_get_number(p, path, v, "ior", 0.01, 100, &s->refractive_index)))
+        || (st = scene_get_number(p, path, v, "ior", 0.01, 100, &s->refractive_index))
+        || (st = scene_get_color(p, path, v, "emission", &m->emission)))
         return st;
     s->specular = (cg_specular_model)model;
     const cJSON *checker = cJSON_GetObjectItemCaseSensitive(v, "checker");

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static char *resolve_path(const char *base_dir, const char *file)
+char *scene_resolve_path(const char *base_dir, const char *file)
 {
     size_t base = (base_dir && base_dir[0] && file[0] != '/') ? strlen(base_dir) + 1 : 0;
     char *path = malloc(base + strlen(file) + 1);
@@ -90,7 +90,7 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
         scene_path_join(key_path, path, "file");
         if (!cJSON_IsString(file) || !file->valuestring[0])
             return scene_expected(p, key_path, "the path of a mesh file", file);
-        if (!(o->file = resolve_path(p->base_dir, file->valuestring)))
+        if (!(o->file = scene_resolve_path(p->base_dir, file->valuestring)))
             return cg_error_set(p->err, CG_ENOMEM, "%s: out of memory", p->name);
         if (p->load_meshes) {
             cg_error mesh_error;

@@ -14,6 +14,7 @@ static cg_trace_material trace_material(const cg_scene_material *m)
     t.surface = m->surface;
     t.checker_color = m->checker_color;
     t.checker_size = m->checker_size;
+    t.emission = m->emission;
     return t;
 }
 
@@ -65,19 +66,22 @@ static void open_depth_for_planes(const cg_scene *scene, cg_camera *camera)
         camera->near = fmin(camera->near, 1e-4 * distance);
 }
 
-cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *err)
+cg_status cg_scene_trace_scene(const cg_scene *scene, int default_lights, cg_trace_scene **out,
+                               cg_camera *camera, cg_error *err)
 {
+    if (!scene || !out || !camera)
+        return cg_error_set(err, CG_EINVAL, "scene: no scene, output or camera given");
+    *out = NULL;
     if (scene_is_oblique(scene))
         return cg_error_set(
             err, CG_EUNSUPPORTED,
             "scene: the ray tracer draws perspective and orthogonal views only; "
             "render cavalier, cabinet and oblique projections with zbuffer or painter");
-    cg_camera camera;
     cg_mat4 model;
-    cg_status s = scene_view(scene, &camera, &model);
+    cg_status s = scene_view(scene, camera, &model);
     if (s != CG_OK)
         return cg_error_set(err, s, "scene: the camera cannot see the scene");
-    open_depth_for_planes(scene, &camera);
+    open_depth_for_planes(scene, camera);
     cg_trace_scene *trace;
     if ((s = cg_trace_scene_create(&trace)) != CG_OK)
         return cg_error_set(err, s, "scene: cannot create the ray-tracing scene");
@@ -94,30 +98,43 @@ cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *e
         if ((s = cg_trace_scene_add_area_light(trace, &light)) != CG_OK)
             cg_error_set(err, s, "scene: an area light was refused");
     }
-    if (s == CG_OK && scene->light_count + scene->area_light_count == 0) {
+    if (s == CG_OK && default_lights && scene->light_count + scene->area_light_count == 0) {
         /* No lights given: the rasterizer's, its key light and a white
          * ambient light (scaled by each material's ka). */
         cg_mat4 view;
         cg_light ambient = cg_light_ambient(cg_vec3_make(1, 1, 1)), key;
-        if ((s = cg_camera_view(&camera, &view)) == CG_OK) {
+        if ((s = cg_camera_view(camera, &view)) == CG_OK) {
             key = cg_render_key_light(view);
             s = cg_trace_scene_add_light(trace, &key);
         }
         if (s == CG_OK)
             s = cg_trace_scene_add_light(trace, &ambient);
     }
-    if (s == CG_OK) {
-        cg_trace_options options = cg_trace_options_default();
-        options.samples = scene->samples;
-        options.max_depth = scene->max_depth;
-        options.threads = scene->threads;
-        options.shadows = scene->shadows;
-        options.normals = scene->shading == CG_SCENE_FLAT ? CG_TRACE_FLAT : CG_TRACE_SMOOTH;
-        options.background = scene->background;
-        options.clip_depth = 1;
-        if ((s = cg_trace_render(trace, &camera, &options, image, NULL)) != CG_OK)
-            cg_error_set(err, s, "scene: ray tracing failed: %s", cg_status_str(s));
+    if (s != CG_OK) {
+        cg_trace_scene_free(trace);
+        return s;
     }
+    *out = trace;
+    return CG_OK;
+}
+
+cg_status scene_render_trace(const cg_scene *scene, cg_image *image, cg_error *err)
+{
+    cg_camera camera;
+    cg_trace_scene *trace;
+    cg_status s = cg_scene_trace_scene(scene, 1, &trace, &camera, err);
+    if (s != CG_OK)
+        return s;
+    cg_trace_options options = cg_trace_options_default();
+    options.samples = scene->samples;
+    options.max_depth = scene->max_depth;
+    options.threads = scene->threads;
+    options.shadows = scene->shadows;
+    options.normals = scene->shading == CG_SCENE_FLAT ? CG_TRACE_FLAT : CG_TRACE_SMOOTH;
+    options.background = scene->background;
+    options.clip_depth = 1;
+    if ((s = cg_trace_render(trace, &camera, &options, image, NULL)) != CG_OK)
+        cg_error_set(err, s, "scene: ray tracing failed: %s", cg_status_str(s));
     cg_trace_scene_free(trace);
     return s;
 }

@@ -22,6 +22,8 @@ cg_status scene_create_empty(cg_scene **out)
     s->height = 480;
     cg_rgbaf background = {0.01f, 0.012f, 0.016f, 1};
     s->background = background;
+    s->environment_intensity = 1;
+    s->environment_color = cg_vec3_make(1, 1, 1);
     s->camera = cg_camera_default();
     s->camera.ortho_height = 0; /* 0: chosen by framing */
     s->frame_camera = 1;
@@ -59,6 +61,8 @@ void cg_scene_free(cg_scene *scene)
         free(scene->materials[i].name);
     for (size_t i = 0; i < scene->overlay_count; i++)
         free(scene->overlays[i]);
+    free(scene->environment_file);
+    cg_image_free(scene->environment_map);
     free(scene->objects);
     free(scene->materials);
     free(scene->lights);

@@ -2,6 +2,7 @@
  * warnings about skipped content), the document's size, freeing. */
 #include "internal.h"
 #include "cg/fill.h"
+#include "../core/sort.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -231,8 +232,7 @@ cg_status cg_svg_load_memory(const void *bytes, size_t size, const char *name, c
     snprintf(svg->name, sizeof svg->name, "%s", name ? name : "<memory>");
     cg_status status = svg_parse_xml(svg, bytes ? bytes : "", size, err);
     if (status == CG_OK && (status = survey(svg, svg->root)) == CG_OK) {
-        if (svg->ids.count > 1) /* qsort wants a non-null array even when empty */
-            qsort(svg->ids.data, svg->ids.count, sizeof *svg->ids.data, compare_ids);
+        core_sort(svg->ids.data, svg->ids.count, sizeof *svg->ids.data, compare_ids);
         status = svg_apply_styles(svg, err);
         if (status == CG_OK)
             review(svg, svg->root);

@@ -6,7 +6,7 @@
 #define CG_TRACE_BVH_INTERNAL_H
 
 #include "internal.h"
-#include "simd4.h"
+#include "../core/simd4.h"
 #include "../core/worker_pool.h"
 
 #include <float.h>

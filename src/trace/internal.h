@@ -139,4 +139,9 @@ int trace_occluded(const cg_trace_scene *scene, cg_vec3 origin, cg_vec3 directio
  * relative to the magnitude of the coordinates. */
 cg_vec3 trace_offset(const trace_hit *hit, cg_vec3 normal);
 
+/* The colour of object o at p: its material's, or the checker's second
+ * colour on the cells of odd parity (the plane's own axes for a plane,
+ * world axes otherwise).  Shared by the Whitted and the path tracer. */
+cg_vec3 trace_surface_color(const trace_object *o, cg_vec3 p);
+
 #endif

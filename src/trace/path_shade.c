@@ -19,12 +19,13 @@ static double clamp01(double v)
     return v > 0 ? (v < 1 ? v : 1) : 0;
 }
 
-static path_surface surface_of(const cg_material *m)
+/* The surface of material m whose colour at the hit is color (the
+ * checker's cell, when the material has one). */
+static path_surface surface_of(const cg_material *m, cg_vec3 color)
 {
     path_surface s;
     double kd = m->kd;
-    s.albedo = cg_vec3_make(clamp01(m->color.x * kd), clamp01(m->color.y * kd),
-                            clamp01(m->color.z * kd));
+    s.albedo = cg_vec3_make(clamp01(color.x * kd), clamp01(color.y * kd), clamp01(color.z * kd));
     s.mirror = clamp01(m->reflectance);
     s.glass = clamp01(m->transmittance);
     if (s.mirror + s.glass > 1) {
@@ -191,7 +192,10 @@ cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *option
             return cg_vec3_add(sum, cg_vec3_mul(weight, environment_radiance(options, direction)));
         if (depth >= options->max_depth)
             return sum;
-        path_surface s = surface_of(&scene->objects[hit.object].material.surface);
+        const trace_object *object = &scene->objects[hit.object];
+        sum = cg_vec3_add(sum, cg_vec3_mul(weight, object->material.emission));
+        path_surface s = surface_of(&object->material.surface,
+                                    trace_surface_color(object, hit.point));
         int entering = cg_vec3_dot(direction, hit.normal) < 0;
         cg_vec3 ng = entering ? hit.normal : cg_vec3_scale(hit.normal, -1);
         cg_vec3 n = cg_vec3_dot(hit.smooth_normal, ng) > 0 ? hit.smooth_normal : ng;

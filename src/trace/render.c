@@ -62,7 +62,7 @@ typedef struct context {
     double *visibility; /* one per scene light */
 } context;
 
-static cg_vec3 surface_color(const trace_object *o, cg_vec3 p)
+cg_vec3 trace_surface_color(const trace_object *o, cg_vec3 p)
 {
     const cg_trace_material *m = &o->material;
     if (!(m->checker_size > 0))
@@ -162,8 +162,9 @@ static cg_vec3 trace(context *ctx, cg_vec3 origin, cg_vec3 direction, double t_m
     if (cg_vec3_dot(n, ng) < 0)
         n = cg_vec3_scale(n, -1);
     cg_vec3 to_viewer = cg_vec3_scale(direction, -1);
-    material.color = surface_color(o, hit.point);
-    cg_vec3 color = illuminate(ctx, &hit, &material, n, ng, to_viewer, rng);
+    material.color = trace_surface_color(o, hit.point);
+    cg_vec3 color = cg_vec3_add(o->material.emission,
+                                illuminate(ctx, &hit, &material, n, ng, to_viewer, rng));
     if (depth >= opt->max_depth)
         return color;
     cg_vec3 mirror = cg_reflect(direction, n);

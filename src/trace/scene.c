@@ -31,6 +31,8 @@ static int material_valid(const cg_trace_material *m)
     if (!finite3(m->checker_color) || m->checker_color.x < 0 || m->checker_color.y < 0
         || m->checker_color.z < 0 || !isfinite(m->checker_size) || m->checker_size < 0)
         return 0;
+    if (!finite3(m->emission) || m->emission.x < 0 || m->emission.y < 0 || m->emission.z < 0)
+        return 0;
     return m->surface.reflectance <= 1 && m->surface.transmittance <= 1;
 }
 

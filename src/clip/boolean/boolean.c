@@ -44,6 +44,7 @@
  * boolean_sort.c, and boolean_double.c (the double API);
  * boolean_engine.h holds what they share. */
 #include "boolean_engine.h"
+#include "../../core/sort.h"
 
 int boolean_add_edge(engine *g, int64_t x0, int64_t y0, int64_t x1, int64_t y1, int op,
                      uint32_t orig)
@@ -294,7 +295,7 @@ static int note_split_bands(passes *p, int pass)
         bands[k][0] = nb == 1 && bands[0][0] < e->y_bottom ? bands[0][0] : e->y_bottom;
         bands[k][1] = nb == 1 && bands[0][1] > e->y_top ? bands[0][1] : e->y_top;
     }
-    qsort(bands, nb, sizeof *bands, cmp_band);
+    core_sort(bands, nb, sizeof *bands, cmp_band);
     size_t band_count = 0;
     for (size_t i = 0; i < nb; i++) {
         if (band_count && bands[i][0] <= bands[band_count - 1][1]) {

@@ -11,6 +11,7 @@
  * areas add up to the ring's, so nothing of the result changes but its
  * rings. */
 #include "boolean_engine.h"
+#include "../../core/sort.h"
 
 typedef struct pinch_point {
     int64_t x, y;
@@ -72,7 +73,7 @@ int boolean_split_pinches(cg_point64 *pts, size_t n, const size_t *at, size_t br
         pinch_point *sorted = (pinch_point *)(end + n);
         for (size_t i = 0; i < n; i++)
             sorted[i] = (pinch_point){pts[i].x, pts[i].y, i};
-        qsort(sorted, n, sizeof *sorted, cmp_pinch_point);
+        core_sort(sorted, n, sizeof *sorted, cmp_pinch_point);
         /* a group for each point the ring passes more than once */
         size_t groups = 0;
         for (size_t i = 0; i < n;) {

@@ -4,6 +4,7 @@
  * horizontal edges in order, and what a pass keeps for the next. */
 #include "boolean_engine.h"
 #include "../../core/arena.h"
+#include "../../core/sort.h"
 
 /* Forgets the arrays of the last pass; their memory is kept for the next. */
 void boolean_sweep_reset(sweep *s)
@@ -209,7 +210,7 @@ int boolean_sweep_sort(sweep *s, carry *c)
             all[v++] = edges[q].yb;
             all[v++] = edges[q].yt;
         }
-        qsort(all, v, sizeof *all, cmp_i64);
+        core_sort(all, v, sizeof *all, cmp_i64);
         size_t w = 0;
         for (size_t q = 0; q < v; q++)
             if (!w || all[w - 1] != all[q])
@@ -280,7 +281,7 @@ int boolean_carry_keep(carry *c, const sweep *s)
     c->scanline_count = s->scanline_count;
     for (size_t i = 0; i < g->split_count; i++)
         c->split_ys[i] = g->splits[i].y;
-    qsort(c->split_ys, g->split_count, sizeof *c->split_ys, cmp_i64);
+    core_sort(c->split_ys, g->split_count, sizeof *c->split_ys, cmp_i64);
     c->split_y_count = g->split_count;
     c->scanlines_valid = 1;
     return 1;

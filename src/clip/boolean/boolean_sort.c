@@ -1,6 +1,7 @@
 /* Sorting for the boolean operations: stable radix and run-merging sorts of
  * edges and pieces by two integer keys, and qsort for a few records. */
 #include "boolean_engine.h"
+#include "../../core/sort.h"
 
 /* The int64_t field of record i, the field of record 0 at `base` and the
  * records `stride` bytes apart (the sorts' keys k1 and k2). */
@@ -430,7 +431,7 @@ void boolean_sort_few(void *base, size_t n, size_t size, int (*cmp)(const void *
 {
     unsigned char v[64], *a = base;
     if (n > 16 || size > sizeof v) {
-        qsort(base, n, size, cmp);
+        core_sort(base, n, size, cmp);
         return;
     }
     for (size_t i = 1; i < n; i++) {

@@ -1,6 +1,7 @@
 /* Splitting for the boolean operations: snap rounding to hot pixels, and
  * the replacement of every split edge by its pieces. */
 #include "boolean_engine.h"
+#include "../../core/sort.h"
 
 static int cmp_along(const void *a, const void *b)
 {
@@ -19,7 +20,7 @@ static inline void sort_along(split_sort *a, size_t n)
         for (size_t i = 1; i < n; i++)
             descents += before_along(&a[i], &a[i - 1]);
         if (descents > n / 16) {
-            qsort(a, n, sizeof *a, cmp_along);
+            core_sort(a, n, sizeof *a, cmp_along);
             return;
         }
     }

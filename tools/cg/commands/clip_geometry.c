@@ -13,7 +13,6 @@
 
 #define PICTURE_SIZE 640
 
-static const cg_rgba8 WHITE = {255, 255, 255, 255};
 static const cg_rgba8 INPUT_FILL = {66, 133, 244, 60}, INPUT_LINE = {40, 90, 200, 255};
 static const cg_rgba8 RESULT_FILL = {251, 188, 5, 200}, RESULT_LINE = {30, 30, 30, 255};
 
@@ -22,18 +21,11 @@ static const cg_rgba8 RESULT_FILL = {251, 188, 5, 200}, RESULT_LINE = {30, 30, 3
 static int draw(const char *path, const cg_polygon_set *input, int input_open,
                 const cg_polygon_set *result, int result_open)
 {
-    cg_vec2 lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
-    clip_bounds_add(input, &lo, &hi);
-    clip_bounds_add(result, &lo, &hi);
-    if (!(lo.x <= hi.x)) {
-        lo = cg_vec2_make(0, 0);
-        hi = cg_vec2_make(1, 1);
-    }
+    const cg_polygon_set *sets[] = {input, result};
     cg_image *image = NULL;
-    if (cg_image_create(&image, PICTURE_SIZE, PICTURE_SIZE, CG_PIXEL_RGBA8) != CG_OK)
+    clip_view v;
+    if (clip_view_canvas(sets, 2, PICTURE_SIZE, &image, &v) != CG_OK)
         return cli_fail("clip: out of memory");
-    cg_image_clear_rgba8(image, WHITE);
-    clip_view v = clip_view_fit(lo, hi, PICTURE_SIZE, PICTURE_SIZE, 24);
     cg_status st = CG_OK;
     if (!input_open)
         st = clip_view_fill(image, &v, input, INPUT_FILL);
@@ -158,9 +150,62 @@ static int take_operand(const char *name, const char *arg, const char **first, c
     return 0;
 }
 
+/* What a command does once its arguments are parsed: read IN, check what it
+ * holds, run the step (timed), write or draw the result. */
+typedef struct geometry_job {
+    const char *name;
+    geometry_step step;
+    void *args;
+    /* NULL, or 0 to go on / CLI_USAGE after a message, given whether IN holds
+     * line strings; it may fill args from that. */
+    int (*check)(void *args, const char *file, int open);
+    int workspace_for_lines; /* use a workspace on line strings too */
+    int workspace_for_polygons;
+    int result_open_when_open; /* line strings in, line strings out */
+} geometry_job;
+
+static int run_job(const geometry_job *job, const char *file, const common_options *common)
+{
+    cg_polygon_set input = {0}, result = {0};
+    cg_error err;
+    int open = 0, status;
+    if (clip_paths_read(file, &input, &open, &err) != CG_OK)
+        status = cli_fail("clip: %s", err.message);
+    else if (!job->check || (status = job->check(job->args, file, open)) == 0)
+        status = run_timed(job->name, common,
+                           open ? job->workspace_for_lines : job->workspace_for_polygons, job->step,
+                           job->args, &input, open, &result, open && job->result_open_when_open);
+    cg_polygon_set_clear(&input);
+    cg_polygon_set_clear(&result);
+    return status;
+}
+
+/* --fill NAME into *fill: 1 taken, 0 not this option, -1 usage error. */
+static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fill *fill)
+{
+    if (!cli_option_is(argv[*i], "--fill"))
+        return 0;
+    const char *value = cli_option_value("clip", argc, argv, i);
+    if (!value)
+        return -1;
+    int k = pick_name(value, fill_names, 4);
+    if (k < 0) {
+        cli_usage_error("clip",
+                        "%s: --fill: expected evenodd, nonzero, positive or negative, "
+                        "got '%s'",
+                        name, value);
+        return -1;
+    }
+    *fill = (cg_clip_fill)k;
+    return 1;
+}
+
+static const char *const offset_ends[] = {"polygon", "joined", "butt", "square", "round"};
+
 typedef struct offset_args {
     double delta;
-    const cg_offset_options *options;
+    cg_offset_options options;
+    int end; /* index in offset_ends, or -1: the default for what IN holds */
 } offset_args;
 
 static cg_status offset_step(const void *args, cg_clip_workspace *ws, const cg_polygon_set *input,
@@ -168,26 +213,41 @@ static cg_status offset_step(const void *args, cg_clip_workspace *ws, const cg_p
 {
     const offset_args *a = args;
     (void)open;
-    return cg_offset_ws(ws, input, a->delta, a->options, 0, result);
+    return cg_offset_ws(ws, input, a->delta, &a->options, 0, result);
+}
+
+/* The ends butt, square and round are for line strings; the default end
+ * follows what IN holds. */
+static int offset_check(void *args, const char *file, int open)
+{
+    offset_args *a = args;
+    if (!open && a->end > 1)
+        return cli_usage_error("clip", "offset: --end %s is for line strings; %s holds polygons",
+                               offset_ends[a->end], file);
+    a->options.end = a->end >= 0 ? (cg_offset_end)a->end
+                     : open      ? CG_OFFSET_END_ROUND
+                                 : CG_OFFSET_END_POLYGON;
+    return 0;
 }
 
 static int offset(int argc, char **argv)
 {
     static const char *const joins[] = {"miter", "round", "square", "bevel"};
-    static const char *const ends[] = {"polygon", "joined", "butt", "square", "round"};
     cg_offset_options options = cg_offset_options_default();
     common_options common = {0};
     const char *file = NULL, *delta_text = NULL;
     int end = -1;
     for (int i = 1; i < argc; i++) {
         int taken = take_common("offset", argc, argv, &i, &common);
+        if (taken == 0)
+            taken = take_fill("offset", argc, argv, &i, &options.fill);
         if (taken < 0)
             return CLI_USAGE;
         if (taken)
             continue;
         const char *value = NULL;
         if (cli_option_is(argv[i], "--join") || cli_option_is(argv[i], "--end")
-            || cli_option_is(argv[i], "--fill") || cli_option_is(argv[i], "--miter-limit")
+            || cli_option_is(argv[i], "--miter-limit")
             || cli_option_is(argv[i], "--arc-tolerance")) {
             const char *option = argv[i];
             value = cli_option_value("clip", argc, argv, &i);
@@ -202,20 +262,12 @@ static int offset(int argc, char **argv)
                                            value);
                 options.join = (cg_offset_join)k;
             } else if (cli_option_is(option, "--end")) {
-                end = pick_name(value, ends, 5);
+                end = pick_name(value, offset_ends, 5);
                 if (end < 1)
                     return cli_usage_error("clip",
                                            "offset: --end: expected butt, square, round "
                                            "or joined, got '%s'",
                                            value);
-            } else if (cli_option_is(option, "--fill")) {
-                int k = pick_name(value, fill_names, 4);
-                if (k < 0)
-                    return cli_usage_error("clip",
-                                           "offset: --fill: expected evenodd, nonzero, "
-                                           "positive or negative, got '%s'",
-                                           value);
-                options.fill = (cg_clip_fill)k;
             } else if (cli_option_is(option, "--miter-limit")) {
                 if (cli_parse_double("clip", "--miter-limit", value, &options.miter_limit) != 0)
                     return CLI_USAGE;
@@ -244,47 +296,9 @@ static int offset(int argc, char **argv)
         return CLI_USAGE;
     if (!isfinite(delta))
         return cli_usage_error("clip", "DELTA: expected a finite number, got '%s'", delta_text);
-    cg_polygon_set input = {0}, result = {0};
-    cg_error err;
-    int open = 0, status = CLI_FAILED;
-    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
-        cli_fail("clip: %s", err.message);
-        goto done;
-    }
-    if (!open && end > 1) {
-        status = cli_usage_error("clip", "offset: --end %s is for line strings; %s holds polygons",
-                                 ends[end], file);
-        goto done;
-    }
-    options.end = end >= 0 ? (cg_offset_end)end
-                  : open   ? CG_OFFSET_END_ROUND
-                           : CG_OFFSET_END_POLYGON;
-    offset_args args = {delta, &options};
-    status = run_timed("offset", &common, 1, offset_step, &args, &input, open, &result, 0);
-done:
-    cg_polygon_set_clear(&input);
-    cg_polygon_set_clear(&result);
-    return status;
-}
-
-/* --fill NAME into *fill: 1 taken, 0 not this option, -1 usage error. */
-static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fill *fill)
-{
-    if (!cli_option_is(argv[*i], "--fill"))
-        return 0;
-    const char *value = cli_option_value("clip", argc, argv, i);
-    if (!value)
-        return -1;
-    int k = pick_name(value, fill_names, 4);
-    if (k < 0) {
-        cli_usage_error("clip",
-                        "%s: --fill: expected evenodd, nonzero, positive or negative, "
-                        "got '%s'",
-                        name, value);
-        return -1;
-    }
-    *fill = (cg_clip_fill)k;
-    return 1;
+    offset_args args = {delta, options, end};
+    geometry_job job = {"offset", offset_step, &args, offset_check, 1, 1, 0};
+    return run_job(&job, file, &common);
 }
 
 typedef struct rect_args {
@@ -332,20 +346,9 @@ static int rect(int argc, char **argv)
         return cli_usage_error("clip", "rect: expected XMIN YMIN XMAX YMAX IN");
     if (v[0] > v[2] || v[1] > v[3])
         return cli_usage_error("clip", "rect: the rectangle needs XMIN <= XMAX and YMIN <= YMAX");
-    cg_rect window = {v[0], v[1], v[2], v[3]};
-    cg_polygon_set input = {0}, result = {0};
-    cg_error err;
-    int open = 0, status = CLI_FAILED;
-    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
-        cli_fail("clip: %s", err.message);
-        goto done;
-    }
-    rect_args args = {window, fill};
-    status = run_timed("rect", &common, !open, rect_step, &args, &input, open, &result, open);
-done:
-    cg_polygon_set_clear(&input);
-    cg_polygon_set_clear(&result);
-    return status;
+    rect_args args = {{v[0], v[1], v[2], v[3]}, fill};
+    geometry_job job = {"rect", rect_step, &args, NULL, 0, 1, 1};
+    return run_job(&job, file, &common);
 }
 
 static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
@@ -353,6 +356,16 @@ static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
 {
     (void)open;
     return cg_triangulate_ws(ws, input, *(const cg_clip_fill *)args, 0, result);
+}
+
+/* Triangles are made of polygons only. */
+static int triangulate_check(void *args, const char *file, int open)
+{
+    (void)args;
+    if (open)
+        return cli_usage_error("clip", "triangulate: %s holds line strings; expected polygons",
+                               file);
+    return 0;
 }
 
 /* cg clip triangulate IN: the triangles as a MULTIPOLYGON. */
@@ -374,23 +387,8 @@ static int triangulate(int argc, char **argv)
     }
     if (!file)
         return cli_usage_error("clip", "triangulate: expected IN");
-    cg_polygon_set input = {0}, result = {0};
-    cg_error err;
-    int open = 0, status = CLI_FAILED;
-    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
-        cli_fail("clip: %s", err.message);
-        goto done;
-    }
-    if (open) {
-        status = cli_usage_error("clip", "triangulate: %s holds line strings; expected polygons",
-                                 file);
-        goto done;
-    }
-    status = run_timed("triangulate", &common, 1, triangulate_step, &fill, &input, 0, &result, 0);
-done:
-    cg_polygon_set_clear(&input);
-    cg_polygon_set_clear(&result);
-    return status;
+    geometry_job job = {"triangulate", triangulate_step, &fill, triangulate_check, 1, 1, 0};
+    return run_job(&job, file, &common);
 }
 
 typedef struct simplify_args {
@@ -447,19 +445,9 @@ static int simplify(int argc, char **argv)
     if (!(tolerance >= 0) || isinf(tolerance))
         return cli_usage_error("clip", "TOLERANCE: expected a finite number >= 0, got '%s'",
                                tolerance_text);
-    cg_polygon_set input = {0}, result = {0};
-    cg_error err;
-    int open = 0, status = CLI_FAILED;
-    if (clip_paths_read(file, &input, &open, &err) != CG_OK) {
-        cli_fail("clip: %s", err.message);
-        goto done;
-    }
     simplify_args args = {fill, algorithm, tolerance};
-    status = run_timed("simplify", &common, 0, simplify_step, &args, &input, open, &result, open);
-done:
-    cg_polygon_set_clear(&input);
-    cg_polygon_set_clear(&result);
-    return status;
+    geometry_job job = {"simplify", simplify_step, &args, NULL, 0, 0, 1};
+    return run_job(&job, file, &common);
 }
 
 int clip_geometry_handles(const char *name)

@@ -243,6 +243,25 @@ void clip_bounds_add(const cg_polygon_set *set, cg_vec2 *lo, cg_vec2 *hi)
     }
 }
 
+cg_status clip_view_canvas(const cg_polygon_set *const *sets, size_t count, int size,
+                           cg_image **image, clip_view *view)
+{
+    cg_vec2 lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < count; i++)
+        clip_bounds_add(sets[i], &lo, &hi);
+    if (!(lo.x <= hi.x)) {
+        lo = cg_vec2_make(0, 0);
+        hi = cg_vec2_make(1, 1);
+    }
+    *image = NULL;
+    cg_status st = cg_image_create(image, size, size, CG_PIXEL_RGBA8);
+    if (st != CG_OK)
+        return st;
+    cg_image_clear_rgba8(*image, (cg_rgba8){255, 255, 255, 255});
+    *view = clip_view_fit(lo, hi, size, size, 24);
+    return CG_OK;
+}
+
 cg_vec2 clip_view_map(const clip_view *v, cg_vec2 p)
 {
     return cg_vec2_make(v->ox + v->scale * p.x, v->oy - v->scale * p.y);

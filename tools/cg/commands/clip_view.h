@@ -28,6 +28,12 @@ clip_view clip_view_fit(cg_vec2 lo, cg_vec2 hi, int width, int height, int margi
 /* Grows [lo, hi] to hold the set's points. */
 void clip_bounds_add(const cg_polygon_set *set, cg_vec2 *lo, cg_vec2 *hi);
 cg_vec2 clip_view_map(const clip_view *v, cg_vec2 p);
+/* The blank picture of a clip: a white square image of size pixels and the
+ * view fitting the points of sets[0..count) (NULL entries skipped; the unit
+ * box when there are none) with a 24-pixel margin.  CG_ENOMEM leaves
+ * *image NULL. */
+cg_status clip_view_canvas(const cg_polygon_set *const *sets, size_t count, int size,
+                           cg_image **image, clip_view *view);
 /* Fills the set (non-zero rule, so a result with holes), anti-aliased. */
 cg_status clip_view_fill(cg_image *image, const clip_view *v, const cg_polygon_set *set,
                          cg_rgba8 color);

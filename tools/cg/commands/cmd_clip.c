@@ -97,7 +97,6 @@ static int line(int argc, char **argv)
     return CLI_OK;
 }
 
-static const cg_rgba8 WHITE = {255, 255, 255, 255};
 static const cg_rgba8 SUBJECT_FILL = {66, 133, 244, 60}, SUBJECT_LINE = {40, 90, 200, 255};
 static const cg_rgba8 CLIP_FILL = {234, 67, 53, 60}, CLIP_LINE = {190, 40, 30, 255};
 static const cg_rgba8 RESULT_FILL = {251, 188, 5, 230}, RESULT_LINE = {30, 30, 30, 255};
@@ -106,19 +105,11 @@ static const cg_rgba8 RESULT_FILL = {251, 188, 5, 230}, RESULT_LINE = {30, 30, 3
 static int draw(const char *path, const cg_polygon_set *a, const cg_polygon_set *b,
                 const cg_polygon_set *result)
 {
-    cg_vec2 lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
-    clip_bounds_add(a, &lo, &hi);
-    clip_bounds_add(b, &lo, &hi);
-    clip_bounds_add(result, &lo, &hi);
-    if (!(lo.x <= hi.x)) {
-        lo = cg_vec2_make(0, 0);
-        hi = cg_vec2_make(1, 1);
-    }
+    const cg_polygon_set *sets[] = {a, b, result};
     cg_image *image = NULL;
-    if (cg_image_create(&image, PICTURE_SIZE, PICTURE_SIZE, CG_PIXEL_RGBA8) != CG_OK)
+    clip_view v;
+    if (clip_view_canvas(sets, 3, PICTURE_SIZE, &image, &v) != CG_OK)
         return cli_fail("clip: out of memory");
-    cg_image_clear_rgba8(image, WHITE);
-    clip_view v = clip_view_fit(lo, hi, PICTURE_SIZE, PICTURE_SIZE, 24);
     cg_status st = clip_view_fill(image, &v, a, SUBJECT_FILL);
     if (st == CG_OK)
         st = clip_view_fill(image, &v, b, CLIP_FILL);

@@ -4,6 +4,8 @@
 #include "pathtrace_command.h"
 
 #include "cli.h"
+#include "pathtrace_input.h"
+#include "pathtrace_mpi.h"
 #include "pathtrace_output.h"
 #include "render_scene.h"
 #include "cg/image_float.h"
@@ -14,11 +16,11 @@
 #include <string.h>
 
 typedef struct pathtrace_args {
-    const char *output, *algorithm, *tile, *range, *environment;
+    const char *output, *algorithm, *tile, *range, *environment, *checkpoint;
     cli_size size;
-    int spp, max_depth, seed, threads, quiet, env_given;
+    int spp, max_depth, seed, threads, quiet, env_given, env_intensity_given, size_given;
     cg_vec3 env;
-    double time, exposure;
+    double time, exposure, env_intensity;
 } pathtrace_args;
 
 static const cli_option pathtrace_options[] = {
@@ -29,7 +31,8 @@ static const cli_option pathtrace_options[] = {
      .offset = offsetof(pathtrace_args, algorithm),
      .value_name = "pathtrace",
      .help = "the path tracer"},
-    CLI_OPTION_SIZE(pathtrace_args, size, 0, "picture size (default 320x240)"),
+    CLI_OPTION_SIZE(pathtrace_args, size, CLI_GIVEN(pathtrace_args, size_given),
+                    "picture size (default 320x240, or a scene file's)"),
     {.name = "--spp",
      .kind = CLI_INT,
      .offset = offsetof(pathtrace_args, spp),
@@ -63,6 +66,15 @@ static const cli_option pathtrace_options[] = {
      .value_name = "FILE",
      .help = "equirectangular sky (.hdr, .exr, .pfm; 8-bit files are sRGB), replaces "
              "--environment-color; a one-pixel file is a uniform sky"},
+    {.name = "--environment-intensity",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(pathtrace_args, env_intensity),
+     .value_name = "K",
+     .help = "multiplies the --environment map's radiance (default 1)",
+     .range_text = "a number >= 0",
+     .low = 0,
+     .high = 1e9,
+     .given = CLI_GIVEN(pathtrace_args, env_intensity_given)},
     {.name = "--tile",
      .kind = CLI_STRING,
      .offset = offsetof(pathtrace_args, tile),
@@ -73,6 +85,12 @@ static const cli_option pathtrace_options[] = {
      .offset = offsetof(pathtrace_args, range),
      .value_name = "A..B",
      .help = "render only samples A to B-1, to a .part file"},
+    {.name = "--checkpoint",
+     .kind = CLI_STRING,
+     .offset = offsetof(pathtrace_args, checkpoint),
+     .value_name = "DIR",
+     .help = "keep finished units of 32x32 pixels and 16 samples in DIR; a rerun with the "
+             "same arguments renders only the missing ones"},
     {.name = "--time",
      .kind = CLI_DOUBLE,
      .offset = offsetof(pathtrace_args, time),
@@ -143,40 +161,6 @@ static int parse_range(const char *command, const char *text, int spp, int r[2])
     return CLI_OK;
 }
 
-static cg_status build_scene(const char *path, cg_trace_scene **out, cg_camera *camera,
-                             double aspect, cg_error *err)
-{
-    cg_mesh *mesh = NULL;
-    cg_status s = cg_mesh_load(path, &mesh, err);
-    if (s != CG_OK)
-        return s;
-    cg_trace_material m = cg_trace_material_default();
-    m.surface.color = cg_vec3_make(0.8, 0.8, 0.8);
-    m.surface.kd = 1;
-    cg_trace_scene *scene = NULL;
-    cg_vec3 lo, hi;
-    if ((s = cg_trace_scene_create(&scene)) == CG_OK)
-        s = cg_trace_scene_add_mesh(scene, mesh, NULL, 0.6, &m);
-    cg_mesh_free(mesh);
-    if (s == CG_OK && (s = cg_trace_scene_bounds(scene, &lo, &hi)) != CG_OK)
-        cg_error_set(err, s, "%s: no faces to render", path);
-    if (s == CG_OK) {
-        *camera = cg_camera_default();
-        camera->target = cg_vec3_scale(cg_vec3_add(lo, hi), 0.5);
-        camera->eye = cg_vec3_add(camera->target, cg_vec3_make(0, 0, 1));
-        if ((s = cg_camera_frame(camera, lo, hi, aspect)) != CG_OK)
-            cg_error_set(err, s, "%s: cannot frame the mesh", path);
-    } else if (err && err->message[0] == 0) {
-        cg_error_set(err, s, "%s: the path tracer refused the mesh", path);
-    }
-    if (s != CG_OK) {
-        cg_trace_scene_free(scene);
-        return s;
-    }
-    *out = scene;
-    return CG_OK;
-}
-
 /* Renders passes of growing sample counts until spp or the time budget. */
 static int render_passes(const char *command, cg_trace_scene *scene, const cg_camera *camera,
                          const pathtrace_args *a, cg_path_options *o, cg_path_part *part)
@@ -204,61 +188,10 @@ static int render_passes(const char *command, cg_trace_scene *scene, const cg_ca
     return CLI_OK;
 }
 
-/* The environment map as linear-light floats: float files as they are,
- * 8-bit ones decoded from sRGB. */
-static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
-{
-    cg_status s = cg_image_load(path, sky, err);
-    if (s != CG_OK || (*sky)->format == CG_PIXEL_RGBAF)
-        return s;
-    cg_image *linear = NULL;
-    s = cg_image_decode_srgb(*sky, &linear);
-    cg_image_free(*sky);
-    *sky = linear;
-    return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
-}
-
-/* FNV-1a over n bytes, continuing from hash. */
-static uint64_t digest(uint64_t hash, const void *bytes, size_t n)
-{
-    const unsigned char *p = bytes;
-    for (size_t i = 0; i < n; i++)
-        hash = (hash ^ p[i]) * 0x100000001b3ull;
-    return hash;
-}
-
-/* What a part's picture depends on beyond its header: the mesh file's
- * bytes, the image size (the camera is framed from both), the sky colour
- * and the environment map, so that cg merge refuses parts of another render. */
-static uint64_t render_key(const char *input, const pathtrace_args *a, const cg_image *sky)
-{
-    uint64_t hash = 0xcbf29ce484222325ull;
-    FILE *f = fopen(input, "rb");
-    if (f) {
-        unsigned char block[65536];
-        size_t n;
-        while ((n = fread(block, 1, sizeof block, f)) > 0)
-            hash = digest(hash, block, n);
-        fclose(f);
-    }
-    int size[2] = {a->size.width, a->size.height};
-    hash = digest(hash, size, sizeof size);
-    double sky_color[3] = {a->env.x, a->env.y, a->env.z};
-    hash = digest(hash, sky_color, sizeof sky_color);
-    if (sky) {
-        int map_size[2] = {sky->width, sky->height};
-        hash = digest(hash, map_size, sizeof map_size);
-        for (int y = 0; y < sky->height; y++)
-            for (int x = 0; x < sky->width; x++) {
-                cg_rgbaf c = cg_image_get(sky, x, y);
-                float rgb[3] = {c.r, c.g, c.b};
-                hash = digest(hash, rgb, sizeof rgb);
-            }
-    }
-    return hash;
-}
-
-static int render(const char *command, const char *input, pathtrace_args *a)
+/* Renders the loaded input: the whole picture or the part --tile and
+ * --sample-range name, in passes, over units (--checkpoint) or over MPI
+ * ranks, and writes it. */
+static int render_input(const char *command, const pathtrace_input *in, const pathtrace_args *a)
 {
     int tile[4] = {0, 0, a->size.width, a->size.height}, range[2] = {0, a->spp};
     if (a->tile && parse_tile(command, a->tile, &a->size, tile) != CLI_OK)
@@ -271,23 +204,17 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                                a->output);
     if (split && a->time > 0)
         return cli_usage_error(command, "--time renders whole pictures only");
-    cg_error err = {0};
-    cg_trace_scene *scene = NULL;
-    cg_camera camera;
-    if (build_scene(input, &scene, &camera, (double)a->size.width / a->size.height, &err) != CG_OK)
-        return cli_fail("%s: %s", command, err.message);
-    cg_image *sky = NULL;
-    if (a->environment && load_sky(a->environment, &sky, &err) != CG_OK) {
-        cg_trace_scene_free(scene);
-        return cli_fail("%s: --environment: %s", command, err.message);
-    }
+    int ranks = pathtrace_mpi_ranks();
+    if (a->time > 0 && (a->checkpoint || ranks > 1))
+        return cli_usage_error(command, "--time renders in one process without --checkpoint");
     cg_path_options o = cg_path_options_default();
-    o.environment_map = sky;
+    o.environment_map = in->environment_map;
+    o.environment_intensity = in->environment_intensity;
+    o.environment = in->environment;
     o.spp = a->spp;
     o.max_depth = a->max_depth;
     o.threads = a->threads;
     o.seed = (uint64_t)a->seed;
-    o.environment = a->env;
     o.x0 = tile[0], o.y0 = tile[1], o.x1 = tile[2], o.y1 = tile[3];
     o.sample_begin = range[0];
     o.sample_end = range[1];
@@ -297,23 +224,48 @@ static int render(const char *command, const char *input, pathtrace_args *a)
                          (uint32_t)tile[1],
                          (uint32_t)tile[2],
                          (uint32_t)tile[3],
-                         0,
-                         0,
+                         (uint32_t)range[0],
+                         (uint32_t)range[1],
                          (uint32_t)a->spp,
                          (uint32_t)a->max_depth,
                          o.seed,
-                         render_key(input, a, sky),
+                         in->key,
                          NULL};
     part.sums = calloc((size_t)(tile[2] - tile[0]) * (size_t)(tile[3] - tile[1]) * 3, 8);
-    int status = part.sums ? render_passes(command, scene, &camera, a, &o, &part)
-                           : cli_fail("%s: out of memory", command);
+    pathtrace_job job = {in->scene, &in->camera, o, &part, a->checkpoint, a->quiet};
+    int writer = 1, status;
+    if (!part.sums)
+        status = cli_fail("%s: out of memory", command);
+    else if (ranks > 1)
+        status = pathtrace_mpi_render(command, &job, &writer);
+    else if (a->checkpoint)
+        status = pathtrace_units_run(command, &job);
+    else
+        status = render_passes(command, in->scene, &in->camera, a, &o, &part);
     if (status == CLI_OK && !split)
         part.spp = part.sample_end; /* a time budget may have stopped it early */
-    if (status == CLI_OK)
+    if (status == CLI_OK && writer)
         status = pathtrace_write(command, &part, a->output, a->exposure);
+    if (ranks > 1)
+        pathtrace_mpi_finish();
     free(part.sums);
-    cg_image_free(sky);
-    cg_trace_scene_free(scene);
+    return status;
+}
+
+static int render(const char *command, const char *input, pathtrace_args *a)
+{
+    cg_error err = {0};
+    pathtrace_input in;
+    pathtrace_sky sky = {a->environment, a->env, a->env_intensity, a->env_given,
+                         a->env_intensity_given};
+    cg_status loaded = pathtrace_input_load(input, a->size, a->size_given, &sky, &in, &err);
+    if (loaded == CG_EINVAL)
+        return cli_usage_error(command, "%s", err.message);
+    if (loaded != CG_OK)
+        return cli_fail("%s: %s", command, err.message);
+    a->size = (cli_size){in.width, in.height};
+    int status = render_input(command, &in, a);
+    pathtrace_input_free(&in);
     return status;
 }
 
@@ -327,6 +279,7 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
     a.max_depth = 8;
     a.threads = 1;
     a.env = cg_vec3_make(1, 1, 1);
+    a.env_intensity = 1;
     const char *input[1] = {NULL};
     int count = 0;
     if (cli_parse(&pathtrace_syntax, argc, argv, &a, input, &count) != CLI_OK)
@@ -337,9 +290,5 @@ int pathtrace_command_run(const char *command, int argc, char **argv)
         return cli_usage_error(command, "--environment-color: expected R,G,B >= 0");
     if (a.environment && a.env_given)
         return cli_usage_error(command, "--environment and --environment-color: give one sky");
-    if (render_scene_is_scene(input[0]))
-        return cli_usage_error(command,
-                               "--algorithm pathtrace renders MESH files; scene files are not "
-                               "supported yet");
     return render(command, input[0], &a);
 }

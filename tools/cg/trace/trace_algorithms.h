@@ -25,6 +25,10 @@ int trace_parse_real(const char *what, const char *text, double *out);
 /* "X,Y" with finite coordinates. */
 int trace_parse_point(const char *what, const char *text, cg_vec2 *out);
 
+/* The next word of *at (words are separated by spaces and tabs) into
+ * word[0..size): 1 with *at past it, 0 at the end of the text, -1 when the
+ * word does not fit. */
+int trace_next_word(const char **at, char *word, size_t size);
 /* "X,Y X,Y ..." into at most capacity points: the count, or -1 after a
  * message. */
 int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity);

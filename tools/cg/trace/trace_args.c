@@ -42,29 +42,33 @@ int trace_parse_point(const char *what, const char *text, cg_vec2 *out)
     return 0;
 }
 
+int trace_next_word(const char **at, char *word, size_t size)
+{
+    const char *p = *at + strspn(*at, " \t");
+    size_t n = strcspn(p, " \t");
+    *at = p + n;
+    if (n == 0)
+        return 0;
+    if (n >= size)
+        return -1;
+    memcpy(word, p, n);
+    word[n] = 0;
+    return 1;
+}
+
 /* "X,Y X,Y ..." into points; the count, or -1 after a message. */
 int trace_parse_polygon(const char *what, const char *text, cg_vec2 *points, int capacity)
 {
-    int count = 0;
-    const char *at = text;
+    int count = 0, got;
     char word[128];
-    while (*at) {
-        while (*at == ' ' || *at == '\t')
-            at++;
-        if (!*at)
-            break;
-        size_t n = strcspn(at, " \t");
-        if (n >= sizeof word || count >= capacity) {
+    for (const char *at = text; (got = trace_next_word(&at, word, sizeof word)) != 0; count++) {
+        if (got < 0 || count >= capacity) {
             cli_usage_error("trace", "%s: at most %d points of at most %zu characters", what,
                             capacity, sizeof word - 1);
             return -1;
         }
-        memcpy(word, at, n);
-        word[n] = 0;
         if (trace_parse_point(what, word, &points[count]))
             return -1;
-        count++;
-        at += n;
     }
     return count;
 }

@@ -36,19 +36,33 @@ static int parse_line(const char *name, int argc, char **argv, long v[4])
     return CLI_OK;
 }
 
+/* The frame of the three line traces: X1 Y1 X2 Y2 parsed into v, the run
+ * titled "TITLE from (X1, Y1) to (X2, Y2)" with the real line through the
+ * pixel centres in its scene.  NULL with the exit status in *code. */
+static trace_run *begin_line(const char *name, const char *title, int argc, char **argv, long v[4],
+                             int *code)
+{
+    *code = parse_line(name, argc, argv, v);
+    if (*code)
+        return NULL;
+    trace_run *run = trace_run_create(name, argc - 1, argv + 1, "%s from (%ld, %ld) to (%ld, %ld)",
+                                      title, v[0], v[1], v[2], v[3]);
+    if (!run) {
+        *code = cli_fail("trace: out of memory");
+        return NULL;
+    }
+    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
+    trace_scene_add(run, real_line, 2, 0);
+    return run;
+}
+
 static int run_line(int argc, char **argv, const trace_outputs *out)
 {
     long v[4];
-    int bad = parse_line("line", argc, argv, v);
-    if (bad)
-        return bad;
-    trace_run *run = trace_run_create(
-        "line", argc - 1, argv + 1, "Bresenham's line (Algorithm 1) from (%ld, %ld) to (%ld, %ld)",
-        v[0], v[1], v[2], v[3]);
+    int code;
+    trace_run *run = begin_line("line", "Bresenham's line (Algorithm 1)", argc, argv, v, &code);
     if (!run)
-        return cli_fail("trace: out of memory");
-    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
-    trace_scene_add(run, real_line, 2, 0);
+        return code;
     cg_status status = cg_line_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3], cg_step_log_record,
                                      run->log);
     if (status == CG_OK && cg_step_log_count(run->log) > 0) {
@@ -74,62 +88,44 @@ static int run_line(int argc, char **argv, const trace_outputs *out)
         long pixels = trace_pixel_total(run);
         trace_summary(run, "%ld pixel%s", pixels, pixels == 1 ? "" : "s");
     }
-    int code = trace_finish(run, status, "the line cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the line cannot be traced", out);
 }
 
 static int run_dda(int argc, char **argv, const trace_outputs *out)
 {
     long v[4];
-    int bad = parse_line("dda", argc, argv, v);
-    if (bad)
-        return bad;
-    trace_run *run = trace_run_create("dda", argc - 1, argv + 1,
-                                      "DDA line from (%ld, %ld) to (%ld, %ld)", v[0], v[1], v[2],
-                                      v[3]);
+    int code;
+    trace_run *run = begin_line("dda", "DDA line", argc, argv, v, &code);
     if (!run)
-        return cli_fail("trace: out of memory");
+        return code;
     long long dx = (long long)v[2] - v[0], dy = (long long)v[3] - v[1];
     long long n = (dx < 0 ? -dx : dx) > (dy < 0 ? -dy : dy) ? (dx < 0 ? -dx : dx)
                                                             : (dy < 0 ? -dy : dy);
     trace_note(run, "steps n = max(|dx|, |dy|) = %lld; x += dx/n = %g, y += dy/n = %g", n,
                n ? (double)dx / (double)n : 0.0, n ? (double)dy / (double)n : 0.0);
     trace_note(run, "each pixel is (round(x), round(y)), halves rounded up");
-    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
-    trace_scene_add(run, real_line, 2, 0);
     cg_status status = cg_line_dda_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
                                          cg_step_log_record, run->log);
     long pixels = trace_pixel_total(run);
     trace_summary(run, "%ld pixel%s", pixels, pixels == 1 ? "" : "s");
-    int code = trace_finish(run, status, "the line cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the line cannot be traced", out);
 }
 
 static int run_wu(int argc, char **argv, const trace_outputs *out)
 {
     long v[4];
-    int bad = parse_line("wu", argc, argv, v);
-    if (bad)
-        return bad;
-    trace_run *run = trace_run_create("wu", argc - 1, argv + 1,
-                                      "Wu's anti-aliased line from (%ld, %ld) to (%ld, %ld)", v[0],
-                                      v[1], v[2], v[3]);
+    int code;
+    trace_run *run = begin_line("wu", "Wu's anti-aliased line", argc, argv, v, &code);
     if (!run)
-        return cli_fail("trace: out of memory");
+        return code;
     trace_note(run, "one column per step along the major axis (rows for a steep line); minor is "
                     "the real line's other coordinate there");
     trace_note(run, "the two pixels around it share the intensity: I_lower = 1 - frac(minor), "
                     "I_upper = frac(minor)");
-    cg_vec2 real_line[2] = {{v[0] + 0.5, v[1] + 0.5}, {v[2] + 0.5, v[3] + 0.5}};
-    trace_scene_add(run, real_line, 2, 0);
     cg_status status = cg_line_wu_steps((int)v[0], (int)v[1], (int)v[2], (int)v[3],
                                         cg_step_log_record, run->log);
     trace_summary(run, "%zu columns", cg_step_log_count(run->log));
-    int code = trace_finish(run, status, "the line cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the line cannot be traced", out);
 }
 
 static int run_circle(int argc, char **argv, const trace_outputs *out)
@@ -155,9 +151,7 @@ static int run_circle(int argc, char **argv, const trace_outputs *out)
     long pixels = trace_pixel_total(run);
     trace_summary(run, "%zu step%s; with 8-way symmetry the circle has %ld pixel%s", steps,
                   steps == 1 ? "" : "s", pixels, pixels == 1 ? "" : "s");
-    int code = trace_finish(run, status, "the circle cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the circle cannot be traced", out);
 }
 
 static int run_ellipse(int argc, char **argv, const trace_outputs *out)
@@ -192,9 +186,7 @@ static int run_ellipse(int argc, char **argv, const trace_outputs *out)
     long pixels = trace_pixel_total(run);
     trace_summary(run, "%zu steps; with 4-way symmetry the ellipse has %ld pixel%s",
                   cg_step_log_count(run->log), pixels, pixels == 1 ? "" : "s");
-    int code = trace_finish(run, status, "the ellipse cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the ellipse cannot be traced", out);
 }
 
 /* ---- curves ------------------------------------------------------------------ */
@@ -242,9 +234,7 @@ static int run_cubic(cg_curve_basis basis, int argc, char **argv, const trace_ou
     if (basis != CG_BASIS_HERMITE)
         trace_scene_add(run, curve.g, 4, 0);
     cg_status status = cg_cubic_steps(&curve, (int)n, cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the curve cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the curve cannot be traced", out);
 }
 
 static int run_hermite(int argc, char **argv, const trace_outputs *out)
@@ -269,17 +259,29 @@ static int run_catmull_rom(int argc, char **argv, const trace_outputs *out)
 
 enum { MAX_CONTROL = 64 };
 
+/* NAME NUMBER P0 P1 [P2 ...], the arguments of casteljau and flatten: the
+ * number (called what) and 2 to MAX_CONTROL control points.  CLI_OK, or
+ * CLI_USAGE after a message. */
+static int read_control(const char *what, int argc, char **argv, double *number,
+                        cg_vec2 control[MAX_CONTROL], int *count)
+{
+    *count = argc - 2;
+    if (argc < 4 || *count > MAX_CONTROL)
+        return cli_usage_error("trace",
+                               "%s: expected '%s %s P0 P1 [P2 ...]' with 2 to %d points X,Y",
+                               argv[0], argv[0], what, MAX_CONTROL);
+    if (trace_parse_real(what, argv[1], number)
+        || parse_points(argv + 2, *count, control) != CLI_OK)
+        return CLI_USAGE;
+    return CLI_OK;
+}
+
 static int run_casteljau(int argc, char **argv, const trace_outputs *out)
 {
     double t;
     cg_vec2 control[MAX_CONTROL];
-    int count = argc - 2;
-    if (argc < 4 || count > MAX_CONTROL)
-        return cli_usage_error("trace",
-                               "casteljau: expected 'casteljau T P0 P1 [P2 ...]' with 2 "
-                               "to %d points X,Y",
-                               MAX_CONTROL);
-    if (trace_parse_real("T", argv[1], &t) || parse_points(argv + 2, count, control) != CLI_OK)
+    int count;
+    if (read_control("T", argc, argv, &t, control, &count) != CLI_OK)
         return CLI_USAGE;
     trace_run *run = trace_run_create("casteljau", argc - 1, argv + 1,
                                       "de Casteljau's algorithm at t = %g, degree %d", t,
@@ -292,23 +294,15 @@ static int run_casteljau(int argc, char **argv, const trace_outputs *out)
                     "the last point the right curve [t, 1]");
     trace_scene_add(run, control, count, 0);
     cg_status status = cg_casteljau_steps(control, count, t, cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the curve cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the curve cannot be traced", out);
 }
 
 static int run_flatten(int argc, char **argv, const trace_outputs *out)
 {
     double tolerance;
     cg_vec2 control[MAX_CONTROL];
-    int count = argc - 2;
-    if (argc < 4 || count > MAX_CONTROL)
-        return cli_usage_error("trace",
-                               "flatten: expected 'flatten TOLERANCE P0 P1 [P2 ...]' "
-                               "with 2 to %d points X,Y",
-                               MAX_CONTROL);
-    if (trace_parse_real("TOLERANCE", argv[1], &tolerance)
-        || parse_points(argv + 2, count, control) != CLI_OK)
+    int count;
+    if (read_control("TOLERANCE", argc, argv, &tolerance, control, &count) != CLI_OK)
         return CLI_USAGE;
     if (!(tolerance > 0))
         return cli_usage_error("trace", "flatten: TOLERANCE must be positive, got '%s'", argv[1]);
@@ -330,9 +324,7 @@ static int run_flatten(int argc, char **argv, const trace_outputs *out)
         segments += cg_step_log_get(run->log, i)->kept_count > 0;
     trace_summary(run, "%zu pieces tested; the polyline has %ld segment%s",
                   cg_step_log_count(run->log), segments, segments == 1 ? "" : "s");
-    int code = trace_finish(run, status, "the tolerance is too small for this curve", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the tolerance is too small for this curve", out);
 }
 
 const trace_algorithm trace_chapter2_algorithms[] = {

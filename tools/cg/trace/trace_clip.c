@@ -64,9 +64,7 @@ static int run_cohen_sutherland(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "otherwise the outside endpoint (p0 first) moves to the first boundary its "
                     "code names (top, bottom, right, left), and its code is computed again");
     cg_status status = cg_cohen_sutherland_steps(window, p0, p1, cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the window or the points are not valid", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the window or the points are not valid", out);
 }
 
 static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
@@ -91,20 +89,38 @@ static int run_liang_barsky(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "visible from t_enter to t_exit when t_enter <= t_exit (the outcome's points "
                     "are computed exactly by the library)");
     cg_status status = cg_liang_barsky_steps(window, p0, p1, cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the window or the points are not valid", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the window or the points are not valid", out);
+}
+
+/* NAME "WINDOW" "SUBJECT", the arguments of the two polygon clippers, into
+ * window[0..*m) and subject[0..*n): 0, or CLI_USAGE after a message. */
+static int read_window_subject(int argc, char **argv, cg_vec2 *window, int *m, cg_vec2 *subject,
+                               int *n)
+{
+    if (argc != 3)
+        return cli_usage_error("trace",
+                               "%s: expected '%s \"WINDOW\" \"SUBJECT\"', each as 'X,Y X,Y X,Y "
+                               "...'",
+                               argv[0], argv[0]);
+    *m = trace_parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
+    *n = *m < 0 ? -1 : trace_parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
+    return *m < 0 || *n < 0 ? CLI_USAGE : 0;
+}
+
+/* The window and the subject in the scene, y up. */
+static void add_window_subject(trace_run *run, const cg_vec2 *window, int m, const cg_vec2 *subject,
+                               int n)
+{
+    run->y_up = 1;
+    trace_scene_add(run, window, m, 1);
+    trace_scene_add(run, subject, n, 1);
 }
 
 static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *out)
 {
     static cg_vec2 window[MAX_POLYGON], subject[MAX_POLYGON];
-    if (argc != 3)
-        return cli_usage_error("trace", "sutherland-hodgman: expected 'sutherland-hodgman "
-                                        "\"WINDOW\" \"SUBJECT\"', each as 'X,Y X,Y X,Y ...'");
-    int m = trace_parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
-    int n = m < 0 ? -1 : trace_parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
-    if (m < 0 || n < 0)
+    int m = 0, n = 0;
+    if (read_window_subject(argc, argv, window, &m, subject, &n))
         return CLI_USAGE;
     if (m < 3)
         return cli_usage_error("trace", "sutherland-hodgman: the window needs at least 3 "
@@ -114,9 +130,7 @@ static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *ou
                                       m);
     if (!run)
         return cli_fail("trace: out of memory");
-    run->y_up = 1;
-    trace_scene_add(run, window, m, 1);
-    trace_scene_add(run, subject, n, 1);
+    add_window_subject(run, window, m, subject, n);
     trace_note(run, "for each clip edge in turn, every polygon edge s -> e of the input list "
                     "adds to the output list:");
     trace_note(run, "  in -> in: e;  in -> out: the crossing;  out -> out: nothing;  out -> in: "
@@ -125,23 +139,17 @@ static int run_sutherland_hodgman(int argc, char **argv, const trace_outputs *ou
                     "input");
     cg_status status = cg_sutherland_hodgman_steps(subject, (size_t)n, window, (size_t)m,
                                                    cg_step_log_record, run->log);
-    int code = trace_finish(run, status,
-                            "the window must be convex with non-zero area, and "
-                            "every point finite",
-                            out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status,
+                        "the window must be convex with non-zero area, and "
+                        "every point finite",
+                        out);
 }
 
 static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
 {
     static cg_vec2 window[MAX_POLYGON], subject[MAX_POLYGON];
-    if (argc != 3)
-        return cli_usage_error("trace", "weiler-atherton: expected 'weiler-atherton \"WINDOW\" "
-                                        "\"SUBJECT\"', each as 'X,Y X,Y X,Y ...'");
-    int m = trace_parse_polygon("WINDOW", argv[1], window, MAX_POLYGON);
-    int n = m < 0 ? -1 : trace_parse_polygon("SUBJECT", argv[2], subject, MAX_POLYGON);
-    if (m < 0 || n < 0)
+    int m = 0, n = 0;
+    if (read_window_subject(argc, argv, window, &m, subject, &n))
         return CLI_USAGE;
     if (m < 3 || n < 3)
         return cli_usage_error("trace", "weiler-atherton: each polygon needs at least 3 points");
@@ -149,9 +157,7 @@ static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
                                       "Weiler-Atherton: a %d-gon clipped by a %d-gon", n, m);
     if (!run)
         return cli_fail("trace: out of memory");
-    run->y_up = 1;
-    trace_scene_add(run, window, m, 1);
-    trace_scene_add(run, subject, n, 1);
+    add_window_subject(run, window, m, subject, n);
     trace_note(run, "both boundaries are made counter-clockwise; every crossing of a subject "
                     "edge with a window edge is entering (the subject goes into the window) or "
                     "exiting");
@@ -162,32 +168,21 @@ static int run_weiler_atherton(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "loops turning clockwise are holes of the smallest loop around them");
     cg_status status = cg_weiler_atherton_steps(subject, (size_t)n, window, (size_t)m,
                                                 cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "each polygon needs 3 finite points", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "each polygon needs 3 finite points", out);
 }
 
 /* "X,Y,Z X,Y,Z ..." into at most capacity points: the count, or -1. */
 static int parse_polygon3(const char *text, cg_vec3 *points, int capacity)
 {
-    int count = 0;
+    int count = 0, got;
     char word[192];
-    for (const char *at = text; *at;) {
-        while (*at == ' ' || *at == '\t')
-            at++;
-        if (!*at)
-            break;
-        size_t n = strcspn(at, " \t");
-        if (n >= sizeof word || count >= capacity) {
+    for (const char *at = text; (got = trace_next_word(&at, word, sizeof word)) != 0; count++) {
+        if (got < 0 || count >= capacity) {
             cli_usage_error("trace", "frustum: at most %d points X,Y,Z", capacity);
             return -1;
         }
-        memcpy(word, at, n);
-        word[n] = 0;
         if (cli_parse_vec3("trace", "POLYGON", word, &points[count]))
             return -1;
-        count++;
-        at += n;
     }
     return count;
 }
@@ -236,9 +231,7 @@ static int run_frustum(int argc, char **argv, const trace_outputs *out)
                     "out -> in: the crossing, then e; out -> out: nothing");
     cg_status status = cg_clip_planes_steps(polygon, (size_t)n, planes, 6, names,
                                             cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "every point must be finite", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "every point must be finite", out);
 }
 
 const trace_algorithm trace_clip_algorithms[] = {

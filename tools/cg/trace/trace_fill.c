@@ -84,9 +84,7 @@ static int run_scanline(int argc, char **argv, const trace_outputs *out)
                                               run->log);
     long pixels = trace_pixel_total(run);
     trace_summary(run, "%ld pixel%s filled", pixels, pixels == 1 ? "" : "s");
-    int code = trace_finish(run, status, "coordinates must be finite and within 4096", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "coordinates must be finite and within 4096", out);
 }
 
 /* flood IMAGE X Y [4|8] [TOLERANCE], boundary IMAGE X Y COLOR [4|8] [TOLERANCE] */
@@ -152,9 +150,7 @@ static int run_seed_fill(int boundary, int argc, char **argv, const trace_output
     long pixels = trace_pixel_total(run);
     trace_summary(run, "%zu seeds popped; %ld pixel%s filled", cg_step_log_count(run->log), pixels,
                   pixels == 1 ? "" : "s");
-    int code = trace_finish(run, status, "the seed must be inside the image", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the seed must be inside the image", out);
 }
 
 static int run_flood(int argc, char **argv, const trace_outputs *out)

@@ -453,7 +453,8 @@ void trace_print_json(const trace_run *run)
     printf("}\n");
 }
 
-int trace_finish(trace_run *run, cg_status status, const char *what, const trace_outputs *out)
+static int write_outputs(const trace_run *run, cg_status status, const char *what,
+                         const trace_outputs *out)
 {
     if (status == CG_OK)
         status = cg_step_log_status(run->log);
@@ -471,4 +472,11 @@ int trace_finish(trace_run *run, cg_status status, const char *what, const trace
     else
         trace_print_table(run);
     return fflush(stdout) == 0 ? CLI_OK : cli_fail("trace: cannot write the output");
+}
+
+int trace_finish(trace_run *run, cg_status status, const char *what, const trace_outputs *out)
+{
+    int code = write_outputs(run, status, what, out);
+    trace_run_free(run);
+    return code;
 }

@@ -75,8 +75,8 @@ void trace_scene_add(trace_run *run, const cg_vec2 *points, int count, int close
 long trace_pixel_total(const trace_run *run);
 
 /* Checks the library's status (a usage error for CG_EINVAL/CG_ERANGE with
- * what, a failure otherwise), then writes the outputs asked for; the exit
- * status. */
+ * what, a failure otherwise), then writes the outputs asked for, and frees
+ * the run; the exit status. */
 int trace_finish(trace_run *run, cg_status status, const char *what, const trace_outputs *out);
 
 /* A field as the table shows it ("-" for no value), cut at size. */

@@ -42,19 +42,31 @@ static int read_camera(const char *name, int argc, char **argv, camera_args *c)
     return 0;
 }
 
+/* NAME X,Y,Z [EYE [TARGET [FOVY [WxH]]]]: the vector (called what) and the
+ * camera, by default at (0, 0, 5) looking at the origin, 60 degrees,
+ * 640x480.  0, or CLI_USAGE after a message (usage when the count is off). */
+static int read_vector_camera(const char *usage, const char *what, int argc, char **argv,
+                              cg_vec3 *vector, camera_args *c)
+{
+    *c = (camera_args){.eye = {0, 0, 5},
+                       .target = {0, 0, 0},
+                       .fovy = 60,
+                       .width = 640,
+                       .height = 480};
+    if (argc < 2 || argc > 6)
+        return cli_usage_error("trace", "%s", usage);
+    if (cli_parse_vec3("trace", what, argv[1], vector) || read_camera(argv[0], argc, argv, c))
+        return CLI_USAGE;
+    return 0;
+}
+
 static int run_pipeline(int argc, char **argv, const trace_outputs *out)
 {
     cg_vec3 point;
-    camera_args c = {.eye = {0, 0, 5},
-                     .target = {0, 0, 0},
-                     .fovy = 60,
-                     .width = 640,
-                     .height = 480};
-    if (argc < 2 || argc > 6)
-        return cli_usage_error("trace", "pipeline: expected 'pipeline X,Y,Z [EYE [TARGET [FOVY "
-                                        "[WxH]]]]' (points as X,Y,Z)");
-    if (cli_parse_vec3("trace", "point", argv[1], &point)
-        || read_camera("pipeline", argc, argv, &c))
+    camera_args c;
+    if (read_vector_camera("pipeline: expected 'pipeline X,Y,Z [EYE [TARGET [FOVY [WxH]]]]' "
+                           "(points as X,Y,Z)",
+                           "point", argc, argv, &point, &c))
         return CLI_USAGE;
     trace_run *run = trace_run_create("pipeline", argc - 1, argv + 1,
                                       "The viewing pipeline of (%g, %g, %g): camera at (%g, %g, "
@@ -71,24 +83,15 @@ static int run_pipeline(int argc, char **argv, const trace_outputs *out)
     cg_mat4 model = cg_xform3_translate(0, 0, 0);
     cg_status status = cg_pipeline_steps(model, c.view, c.projection, c.width, c.height, point,
                                          cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the point must be finite", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the point must be finite", out);
 }
 
 static int run_vanishing(int argc, char **argv, const trace_outputs *out)
 {
     cg_vec3 direction;
-    camera_args c = {.eye = {0, 0, 5},
-                     .target = {0, 0, 0},
-                     .fovy = 60,
-                     .width = 640,
-                     .height = 480};
-    if (argc < 2 || argc > 6)
-        return cli_usage_error("trace", "vanishing: expected 'vanishing DX,DY,DZ [EYE [TARGET "
-                                        "[FOVY [WxH]]]]'");
-    if (cli_parse_vec3("trace", "direction", argv[1], &direction)
-        || read_camera("vanishing", argc, argv, &c))
+    camera_args c;
+    if (read_vector_camera("vanishing: expected 'vanishing DX,DY,DZ [EYE [TARGET [FOVY [WxH]]]]'",
+                           "direction", argc, argv, &direction, &c))
         return CLI_USAGE;
     if (!(cg_vec3_length(direction) > 0))
         return cli_usage_error("trace", "vanishing: the direction must not be zero");
@@ -103,9 +106,7 @@ static int run_vanishing(int argc, char **argv, const trace_outputs *out)
                     "image is where their images converge");
     cg_status status = cg_vanishing_point_steps(c.view, c.projection, c.width, c.height, direction,
                                                 cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "the direction must not be zero", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the direction must not be zero", out);
 }
 
 static int run_color(int lightness, int argc, char **argv, const trace_outputs *out)
@@ -126,9 +127,7 @@ static int run_color(int lightness, int argc, char **argv, const trace_outputs *
                lightness ? "lightness L" : "value V");
     cg_status status = cg_rgb_to_hsv_steps(cg_vec3_make(rgb[0], rgb[1], rgb[2]), lightness,
                                            cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "bad colour", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "bad colour", out);
 }
 
 static int run_hsv(int argc, char **argv, const trace_outputs *out)
@@ -228,9 +227,7 @@ static int run_light(int argc, char **argv, const trace_outputs *out)
                     "0); spec = 0 when N.L <= 0");
     cg_status status = cg_light_steps(point, normal, view, &material, lights, count,
                                       cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "bad material or light", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "bad material or light", out);
 }
 
 /* Loads the mesh, turns it about y then x (degrees) and frames it with the
@@ -306,9 +303,7 @@ static int run_backface(int argc, char **argv, const trace_outputs *out)
                          "front: kept")
                   != 0;
     trace_summary(run, "%ld of %zu triangles culled", culled, cg_step_log_count(run->log));
-    int code = trace_finish(run, status, "the mesh is not valid", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the mesh is not valid", out);
 }
 
 /* zbuffer MESH X Y [WxH]: the mesh turned 30 degrees about y and 20 about x,
@@ -346,9 +341,7 @@ static int run_zbuffer(int argc, char **argv, const trace_outputs *out)
     cg_status status = cg_zbuffer_pixel_steps(mesh, model, &camera, width, height, (int)x, (int)y,
                                               1, cg_step_log_record, run->log);
     cg_mesh_free(mesh);
-    int code = trace_finish(run, status, "the mesh is not valid", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the mesh is not valid", out);
 }
 
 /* face-loop MESH F and one-ring MESH V on the half-edge structure built
@@ -393,9 +386,7 @@ static int run_hemesh(int ring, int argc, char **argv, const trace_outputs *out)
                  ? cg_hemesh_one_ring_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log)
                  : cg_hemesh_face_loop_steps(hemesh, (uint32_t)index, cg_step_log_record, run->log);
     cg_hemesh_free(hemesh);
-    int code = trace_finish(run, status, ring ? "no such vertex" : "no such face", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, ring ? "no such vertex" : "no such face", out);
 }
 
 static int run_face_loop(int argc, char **argv, const trace_outputs *out)

@@ -1,11 +1,15 @@
-/* Four-float vectors for the BVH build and traversal: SSE2 where available,
- * plain C elsewhere.  The plain C versions give, lane by lane, exactly what
- * the instructions give (min and max return their second operand when
- * either is NaN, comparisons are false with NaN, masks are all-ones or
- * all-zero bit patterns), so code written once on these gives the same
- * results either way. */
-#ifndef CG_TRACE_SIMD4_H
-#define CG_TRACE_SIMD4_H
+/* Private to libcg: four-lane vectors, SSE2 where available, plain C
+ * elsewhere, the one place cg's code names SIMD instructions.  v4 holds four
+ * floats (the BVH build and traversal, the Gouraud runs, the sRGB encode),
+ * i4 four 32-bit integers (the SAH sweep's counts, 16-byte pixel and depth
+ * stores of the fills and tile clears, the flood fill's four-pixel test).
+ * The plain C versions give, lane by lane, exactly what the instructions
+ * give (min and max return their second operand when either is NaN,
+ * comparisons are false with NaN, masks are all-ones or all-zero bit
+ * patterns, stores write the same bytes), so code written once on these
+ * gives the same results either way. */
+#ifndef CG_CORE_SIMD4_H
+#define CG_CORE_SIMD4_H
 
 #include "cg/core.h"
 
@@ -140,6 +144,21 @@ static inline void v4_to_int(v4 a, int *out)
 {
     _mm_storeu_si128((__m128i *)(void *)out, _mm_cvttps_epi32(a));
 }
+/* Lane 3 (the w of (x, y, z, w)). */
+static inline float v4_lane3(v4 a)
+{
+    return _mm_cvtss_f32(_mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)));
+}
+/* Stores to 16-byte aligned p past the caches (for outputs larger than
+ * they are); v4_stream_fence() orders them before later stores. */
+static inline void v4_stream(float *p, v4 a)
+{
+    _mm_stream_ps(p, a);
+}
+static inline void v4_stream_fence(void)
+{
+    _mm_sfence();
+}
 /* (y, z, x, w): each of lanes 0..2 next to the following one. */
 static inline v4 v4_yzx(v4 a)
 {
@@ -187,9 +206,44 @@ static inline i4 i4_add(i4 a, i4 b)
 {
     return _mm_add_epi32(a, b);
 }
-static inline void i4_store(int *p, i4 a)
+/* 16 bytes at p (any alignment), as four 32-bit lanes. */
+static inline i4 i4_load(const void *p)
 {
-    _mm_storeu_si128((__m128i *)(void *)p, a);
+    return _mm_loadu_si128((const __m128i *)p);
+}
+static inline void i4_store(void *p, i4 a)
+{
+    _mm_storeu_si128((__m128i *)p, a);
+}
+/* The same to 16-byte aligned p past the caches (see v4_stream). */
+static inline void i4_stream(void *p, i4 a)
+{
+    _mm_stream_si128((__m128i *)p, a);
+}
+/* The bits of a's four floats as integer lanes. */
+static inline i4 i4_from_v4_bits(v4 a)
+{
+    return _mm_castps_si128(a);
+}
+/* Lanes 0..3 of a truncated to integers (a's lanes within int's range). */
+static inline i4 i4_truncate(v4 a)
+{
+    return _mm_cvttps_epi32(a);
+}
+/* Lane k (0..3, a constant) of a. */
+static inline int i4_lane(i4 a, int k)
+{
+    switch (k) {
+    case 0: return _mm_cvtsi128_si32(a);
+    case 1: return _mm_cvtsi128_si32(_mm_shuffle_epi32(a, 0x55));
+    case 2: return _mm_cvtsi128_si32(_mm_shuffle_epi32(a, 0xaa));
+    default: return _mm_cvtsi128_si32(_mm_shuffle_epi32(a, 0xff));
+    }
+}
+/* Whether the four lanes of a and b are all equal. */
+static inline int i4_all_equal(i4 a, i4 b)
+{
+    return _mm_movemask_epi8(_mm_cmpeq_epi32(a, b)) == 0xFFFF;
 }
 /* All-ones lanes where a lane is 0. */
 static inline v4 i4_is_zero(i4 a)
@@ -310,6 +364,15 @@ static inline void v4_to_int(v4 a, int *out)
     for (int i = 0; i < 4; i++)
         out[i] = (a.f[i] > -2e9f && a.f[i] < 2e9f) ? (int)a.f[i] : 0;
 }
+static inline float v4_lane3(v4 a)
+{
+    return a.f[3];
+}
+static inline void v4_stream(float *p, v4 a)
+{
+    memcpy(p, a.f, sizeof a.f);
+}
+static inline void v4_stream_fence(void) {}
 static inline v4 v4_yzx(v4 a)
 {
     return v4_set4(a.f[1], a.f[2], a.f[0], a.f[3]);
@@ -362,10 +425,39 @@ static inline i4 i4_add(i4 a, i4 b)
         r.i[k] = (int32_t)((uint32_t)a.i[k] + (uint32_t)b.i[k]);
     return r;
 }
-static inline void i4_store(int *p, i4 a)
+static inline i4 i4_load(const void *p)
 {
-    for (int k = 0; k < 4; k++)
-        p[k] = a.i[k];
+    i4 r;
+    memcpy(r.i, p, sizeof r.i);
+    return r;
+}
+static inline void i4_store(void *p, i4 a)
+{
+    memcpy(p, a.i, sizeof a.i);
+}
+static inline void i4_stream(void *p, i4 a)
+{
+    memcpy(p, a.i, sizeof a.i);
+}
+static inline i4 i4_from_v4_bits(v4 a)
+{
+    i4 r;
+    memcpy(r.i, a.f, sizeof r.i);
+    return r;
+}
+static inline i4 i4_truncate(v4 a)
+{
+    i4 r;
+    v4_to_int(a, r.i);
+    return r;
+}
+static inline int i4_lane(i4 a, int k)
+{
+    return a.i[k];
+}
+static inline int i4_all_equal(i4 a, i4 b)
+{
+    return a.i[0] == b.i[0] && a.i[1] == b.i[1] && a.i[2] == b.i[2] && a.i[3] == b.i[3];
 }
 static inline v4 i4_is_zero(i4 a)
 {

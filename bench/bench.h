@@ -26,6 +26,21 @@ static inline int bench_compare(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+enum { BENCH_MAX_RUNS = 64 };
+
+/* runs clamped to 1 .. BENCH_MAX_RUNS. */
+static inline int bench_runs(int runs)
+{
+    return runs > BENCH_MAX_RUNS ? BENCH_MAX_RUNS : runs < 1 ? 1 : runs;
+}
+
+/* The median of samples[0 .. runs - 1] (sorted in place). */
+static inline double bench_median_of(double *samples, int runs)
+{
+    qsort(samples, (size_t)runs, sizeof samples[0], bench_compare);
+    return runs % 2 ? samples[runs / 2] : 0.5 * (samples[runs / 2 - 1] + samples[runs / 2]);
+}
+
 /* A uniform number in [0, 1) from the xorshift64 generator at *state (the
  * benchmarks' inputs are the same on every run and machine). */
 static inline double bench_random(uint64_t *state)
@@ -43,11 +58,8 @@ static inline double bench_random(uint64_t *state)
 static inline double bench_median_clock(void (*work)(void *), void *context, int runs,
                                         clockid_t clock)
 {
-    double samples[64];
-    if (runs > 64)
-        runs = 64;
-    if (runs < 1)
-        runs = 1;
+    double samples[BENCH_MAX_RUNS];
+    runs = bench_runs(runs);
     for (int i = 0; i < runs; i++) {
         struct timespec a, b;
         clock_gettime(clock, &a);
@@ -55,8 +67,7 @@ static inline double bench_median_clock(void (*work)(void *), void *context, int
         clock_gettime(clock, &b);
         samples[i] = (double)(b.tv_sec - a.tv_sec) + (double)(b.tv_nsec - a.tv_nsec) * 1e-9;
     }
-    qsort(samples, (size_t)runs, sizeof samples[0], bench_compare);
-    return runs % 2 ? samples[runs / 2] : 0.5 * (samples[runs / 2 - 1] + samples[runs / 2]);
+    return bench_median_of(samples, runs);
 }
 
 /* Runs work(context) `runs` times (at most 64) and returns the median wall

@@ -18,6 +18,7 @@
  * bench_draw_script [RUNS [ONLY]]: ONLY keeps the cases whose name contains
  * it ("polygons"). */
 #include "bench.h"
+#include "bench_tool.h"
 #include "bench_draw_script_peers.h"
 #include "cg/draw.h"
 #include "cg/fill.h"
@@ -27,9 +28,6 @@
 #include <stdarg.h>
 #include <stdint.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #ifdef CG_BENCH_HAVE_CAIRO
 #include <cairo.h>
@@ -207,44 +205,10 @@ static void run_library(void *context)
 
 /* ---- the cg tool --------------------------------------------------------------- */
 
-/* Runs `cg draw SCRIPT -o OUT --repeat R` and returns its processor time
- * (user + system) in seconds, or -1 when it failed. */
-static double tool_seconds(const char *script, const char *out, int repeat)
-{
-    char times[16];
-    snprintf(times, sizeof times, "%d", repeat);
-    pid_t pid = fork();
-    if (pid < 0)
-        return -1;
-    if (pid == 0) {
-        if (!freopen("/dev/null", "w", stderr))
-            _exit(127);
-        execl(CG_TOOL, CG_TOOL, "draw", script, "-o", out, "--repeat", times, (char *)NULL);
-        _exit(127);
-    }
-    int status;
-    struct rusage usage;
-    if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return -1;
-    return (double)usage.ru_utime.tv_sec + (double)usage.ru_utime.tv_usec * 1e-6
-           + (double)usage.ru_stime.tv_sec + (double)usage.ru_stime.tv_usec * 1e-6;
-}
-
 /* The median over `runs` of the time of one run of the script by the tool. */
 static double time_tool(const shape_case *c, const char *script, const char *out, int runs)
 {
-    double samples[64];
-    if (runs > 64)
-        runs = 64;
-    for (int i = 0; i < runs; i++) {
-        double once = tool_seconds(script, out, 1);
-        double more = tool_seconds(script, out, c->repeat + 1);
-        if (once < 0 || more < 0)
-            return -1;
-        samples[i] = (more - once) / c->repeat;
-    }
-    qsort(samples, (size_t)runs, sizeof samples[0], bench_compare);
-    return runs % 2 ? samples[runs / 2] : 0.5 * (samples[runs / 2 - 1] + samples[runs / 2]);
+    return bench_tool_median(script, out, c->repeat, runs);
 }
 
 /* ---- the peers ------------------------------------------------------------------ */

@@ -615,14 +615,16 @@ static void hostile(void)
           && strstr(err.message, "/nonexistent/file.svg"));
     /* skipped content: one warning per kind, nothing fetched, metadata of
      * other namespaces ignored silently */
-    const char *t = HEAD "xmlns:inkscape='http://www.inkscape.org/namespaces/inkscape'>"
-                         "<inkscape:grid/><filter id='f'><feGaussianBlur/></filter><text>a</text>"
-                         "<text>b</text><script>alert(1)</script><rect width='4' height='4' "
-                         "filter='url(#f)'/><use href='other.svg#x'/><image href='http://x/y.png'/>"
-                         "</svg>";
+    const char *t = HEAD
+        "xmlns:inkscape='http://www.inkscape.org/namespaces/inkscape'>"
+        "<inkscape:grid/><filter "
+        "id='f'><feGaussianBlur/></filter><text><textPath>a</textPath></text>"
+        "<textPath>b</textPath><script>alert(1)</script><rect width='4' height='4' "
+        "filter='url(#f)'/><use href='other.svg#x'/><image href='http://x/y.png'/>"
+        "</svg>";
     CHECK(cg_svg_load_memory(t, strlen(t), "t", &svg, &err) == CG_OK);
     int n = cg_svg_warning_count(svg);
-    const char *expected[] = {"<filter>",       "<feGaussianBlur>", "<text>",        "<script>",
+    const char *expected[] = {"<filter>",       "<feGaussianBlur>", "<textPath>",    "<script>",
                               "filter effects", "other.svg#x",      "http://x/y.png"};
     CHECK_EQ_INT(n, 7);
     for (int i = 0; i < 7; i++) {

@@ -52,13 +52,13 @@ grep -Eq '^255 0 0 255 0 0 (127 127|128 128) 255 (127 127|128 128) 255$' <<<"$(p
 # skipped content: one warning per kind, the rest drawn
 cat > "$dir/skip.svg" <<'SVG'
 <svg xmlns="http://www.w3.org/2000/svg" width="2" height="1">
-  <filter id="f"/><filter id="g"/><text>a</text><text>b</text>
+  <filter id="f"/><filter id="g"/><text><textPath>a</textPath></text><text><textPath>b</textPath></text>
   <rect width="2" height="1" fill="lime" filter="url(#f)"/>
 </svg>
 SVG
 err=$("$CG" svg "$dir/skip.svg" -o "$dir/skip.ppm" 2>&1) || ok "skip.svg failed: $err"
 [ "$(grep -c 'warning: skipped <filter>' <<<"$err")" = 1 ] || ok "filter warnings: $err"
-[ "$(grep -c 'warning: skipped <text>' <<<"$err")" = 1 ] || ok "text warnings: $err"
+[ "$(grep -c 'warning: skipped <textPath>' <<<"$err")" = 1 ] || ok "text warnings: $err"
 grep -q "filter effects are not supported: drawn without them" <<<"$err" || ok "no filter-use warning: $err"
 [ "$(pixels "$dir/skip.ppm" 6)" = "0 255 0 0 255 0" ] || ok "skip.ppm: $(pixels "$dir/skip.ppm" 6)"
 

@@ -9,9 +9,11 @@
  * color and currentColor, display, visibility, paint-order, mix-blend-mode;
  * linear and radial gradients (gradientUnits, gradientTransform,
  * spreadMethod, fx/fy, href inheritance); clipPath, mask; image with an
- * embedded PNG (data: URI).  Compositing is in sRGB, SVG's default.
+ * embedded PNG (data: URI); text and tspan (x, y, dx, dy, font-family,
+ * font-size, font-weight, font-style, text-anchor), shaped and drawn with
+ * cg/text.h.  Compositing is in sRGB, SVG's default.
  *
- * Anything else (filters, patterns, markers, text, animation, scripts,
+ * Anything else (filters, patterns, markers, textPath, animation, scripts,
  * foreignObject, references to other files) is skipped with one warning
  * naming it; nothing is ever fetched.
  *

@@ -39,6 +39,15 @@ cg_status cg_font_load_memory(const void *data, size_t size, int face_index, cg_
 cg_status cg_font_find(const char *family, int weight, int italic, char *path, size_t cap,
                        int *face_index, cg_error *err);
 
+/* CG_OK when fontconfig has a scalable font whose family is exactly family
+ * (compared as fontconfig does: case and blanks ignored), CG_EEMPTY with a
+ * one-line message otherwise.  cg_font_find always returns a font, the
+ * closest substitute when the family is missing; this says whether it would
+ * substitute.  The generic names serif, sans-serif, monospace, cursive,
+ * fantasy, system-ui, sans and mono (any case) are CG_OK: fontconfig's
+ * configuration resolves them. */
+cg_status cg_font_family_exists(const char *family, cg_error *err);
+
 /* A font from a file name (when such a file exists) or else a family name
  * looked up with cg_font_find. */
 cg_status cg_font_open(const char *family_or_file, int weight, int italic, cg_font **out,

@@ -39,7 +39,12 @@ static const char *const property_names[SVG_PROPERTY_COUNT] = {"fill",
                                                                "filter",
                                                                "marker-start",
                                                                "marker-mid",
-                                                               "marker-end"};
+                                                               "marker-end",
+                                                               "font-family",
+                                                               "font-size",
+                                                               "font-weight",
+                                                               "font-style",
+                                                               "text-anchor"};
 
 #define RANK_ATTRIBUTE 1ULL
 #define RANK_SHEET (2ULL << 48)
@@ -97,6 +102,74 @@ typedef struct css_declaration {
 
 typedef CORE_ARRAY(css_declaration) css_declarations;
 
+static int is_font_size(const char *word)
+{
+    static const char *const keywords[] = {"xx-small", "x-small", "small",    "medium",
+                                           "large",    "x-large", "xx-large", "xxx-large",
+                                           "larger",   "smaller"};
+    if (isdigit((unsigned char)word[0]) || word[0] == '.')
+        return 1;
+    for (size_t i = 0; i < sizeof keywords / sizeof *keywords; i++)
+        if (strcmp(word, keywords[i]) == 0)
+            return 1;
+    return 0;
+}
+
+/* A weight number: 1 to 1000 in digits alone ("700"). */
+static int is_font_weight_number(const char *word)
+{
+    size_t n = strspn(word, "0123456789");
+    return n > 0 && n <= 4 && !word[n] && atoi(word) >= 1 && atoi(word) <= 1000;
+}
+
+/* The CSS font shorthand ("italic bold 20px/1.2 'DejaVu Serif', serif"),
+ * cut in place into font-style, font-weight, font-size and font-family;
+ * the style and weight it leaves out are reset to normal, and variant,
+ * stretch and line height are not read.  Returns how many properties it
+ * gives: 4, or 0 when it has no size or no family after it (a system font
+ * keyword, a malformed value). */
+static int expand_font(char *value, svg_property *properties, const char **values)
+{
+    const char *style = "normal", *weight = "normal";
+    char *p = value;
+    for (;;) {
+        while (isspace((unsigned char)*p))
+            p++;
+        char *word = p;
+        while (*p && !isspace((unsigned char)*p))
+            p++;
+        if (word == p)
+            return 0;
+        int at_end = !*p;
+        *p = 0;
+        char *slash = strchr(word, '/');
+        if (slash)
+            *slash = 0;
+        if (is_font_weight_number(word) && !slash) {
+            weight = word;
+        } else if (strcmp(word, "italic") == 0 || strcmp(word, "oblique") == 0) {
+            style = word;
+        } else if (strcmp(word, "bold") == 0 || strcmp(word, "bolder") == 0
+                   || strcmp(word, "lighter") == 0) {
+            weight = word;
+        } else if (is_font_size(word)) {
+            char *family = at_end ? p : p + 1;
+            while (isspace((unsigned char)*family))
+                family++;
+            if (!*family)
+                return 0;
+            properties[0] = SVG_FONT_STYLE, values[0] = style;
+            properties[1] = SVG_FONT_WEIGHT, values[1] = weight;
+            properties[2] = SVG_FONT_SIZE, values[2] = word;
+            properties[3] = SVG_FONT_FAMILY, values[3] = family;
+            return 4;
+        }
+        if (at_end)
+            return 0;
+        p++;
+    }
+}
+
 /* Parses "name: value; ..." in place (text is owned and writable): onto
  * node when it is set, else into list. */
 static cg_status declare_in_place(char *text, svg_node *node, unsigned long long rank,
@@ -119,13 +192,20 @@ static cg_status declare_in_place(char *text, svg_node *node, unsigned long long
                 value = trim(value, bang);
                 r = important_rank;
             }
-            svg_property p = svg_property_of(name, strlen(name));
-            if (node) {
-                declare(node, p, value, r);
-            } else if (p < SVG_PROPERTY_COUNT) {
-                css_declaration d = {p, value, r == important_rank && bang != NULL};
-                if (core_array_push(list, d) != CG_OK)
-                    return CG_ENOMEM;
+            svg_property properties[4] = {svg_property_of(name, strlen(name))};
+            const char *values[4] = {value};
+            int count = 1;
+            if (properties[0] == SVG_PROPERTY_COUNT && strcmp(name, "font") == 0)
+                count = expand_font(value, properties, values);
+            for (int i = 0; i < count; i++) {
+                if (node) {
+                    declare(node, properties[i], values[i], r);
+                } else if (properties[i] < SVG_PROPERTY_COUNT) {
+                    css_declaration d = {properties[i], values[i],
+                                         r == important_rank && bang != NULL};
+                    if (core_array_push(list, d) != CG_OK)
+                        return CG_ENOMEM;
+                }
             }
         }
         if (last)

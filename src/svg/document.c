@@ -66,14 +66,17 @@ static const char *const known[] = {"svg",
                                     "style",
                                     "title",
                                     "desc",
-                                    "metadata"};
+                                    "metadata",
+                                    "text",
+                                    "tspan",
+                                    "#text"};
 
 static const char *reason_for(const char *name)
 {
     if (strcmp(name, "filter") == 0 || strncmp(name, "fe", 2) == 0)
         return "filter effects are not supported";
-    if (strcmp(name, "text") == 0 || strcmp(name, "tspan") == 0 || strcmp(name, "textPath") == 0)
-        return "text is not supported yet";
+    if (strcmp(name, "textPath") == 0)
+        return "text on a path is not supported";
     if (strncmp(name, "animate", 7) == 0 || strcmp(name, "set") == 0)
         return "animation is not supported (the static picture is drawn)";
     if (strcmp(name, "script") == 0)

@@ -42,6 +42,11 @@ typedef enum svg_property {
     SVG_MARKER_START,
     SVG_MARKER_MID,
     SVG_MARKER_END,
+    SVG_FONT_FAMILY,
+    SVG_FONT_SIZE,
+    SVG_FONT_WEIGHT,
+    SVG_FONT_STYLE,
+    SVG_TEXT_ANCHOR,
     SVG_PROPERTY_COUNT
 } svg_property;
 
@@ -63,7 +68,7 @@ typedef struct svg_node {
     svg_attribute *attributes;
     int attribute_count;
     struct svg_node *parent, *first_child, *last_child, *next;
-    char *text; /* character data (for <style>), may be NULL */
+    char *text; /* character data (of <style>, and of "#text" nodes), may be NULL */
     size_t text_length;
     int line; /* in the file, for messages */
     svg_declared declared[SVG_PROPERTY_COUNT];
@@ -179,6 +184,12 @@ typedef struct svg_style {
     cg_rgba8 color;
     int visible;
     int stroke_first; /* paint-order: stroke before fill */
+    /* text */
+    const char *font_family; /* the declared list, NULL: the initial (serif) */
+    double font_size;        /* user units, initially 16 */
+    int font_weight;         /* CSS 1..1000, initially 400 */
+    int italic;              /* font-style italic or oblique */
+    int text_anchor;         /* cg_text_align: start, middle, end */
 } svg_style;
 
 /* A box of pixels x0 <= x < x1, y0 <= y < y1 (empty when x0 >= x1). */
@@ -203,9 +214,10 @@ typedef struct svg_render {
     int use_depth;
     int effect_depth; /* clip paths and masks being built */
     cg_status failure;
-    int width, height; /* of the target image */
-    svg_box dirty;     /* where drawing calls drew since it was reset */
-    double work;       /* pixels composited so far */
+    int width, height;       /* of the target image */
+    svg_box dirty;           /* where drawing calls drew since it was reset */
+    double work;             /* pixels composited so far */
+    struct svg_fonts *fonts; /* the fonts text asked for (text.c), NULL until then */
 } svg_render;
 
 /* Grows r->dirty by box (clamped to the image). */
@@ -238,6 +250,19 @@ int svg_node_bounds(svg_render *r, const svg_node *node, cg_mat3 m, const svg_vi
  * when it has neither or they failed. */
 cg_image *svg_clip_and_mask(svg_render *r, const svg_node *node, cg_mat3 ctm,
                             const svg_viewport *vp, svg_box box, int *none);
+/* Fills and strokes path (user space) with style s, as a shape is drawn;
+ * paint_box (min, max in user space; NULL: the path's bounds) is the
+ * objectBoundingBox of gradients; is_line: the element is a <line>, which
+ * has no fill. */
+void svg_paint_path(svg_render *r, const cg_path *user, const cg_vec2 *paint_box, int is_line,
+                    cg_mat3 ctm, const svg_viewport *vp, const svg_style *s, double opacity,
+                    cg_image *target);
+/* Draws a <text> element: its character data and tspans, shaped and laid
+ * out (text.c). */
+void svg_draw_text(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,
+                   const svg_style *s, double opacity, cg_image *target);
+/* Frees r->fonts. */
+void svg_fonts_free(svg_render *r);
 /* Draws an <image> with an embedded PNG. */
 void svg_draw_image(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,
                     const svg_style *style, cg_image *target);

@@ -161,12 +161,24 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
 {
     if (!s->visible)
         return;
-    cg_path *user = NULL, *device = NULL;
-    if (cg_path_create(&user) != CG_OK || cg_path_create(&device) != CG_OK) {
+    cg_path *user = NULL;
+    if (cg_path_create(&user) != CG_OK)
         svg_fail(r, CG_ENOMEM, "out of memory");
-        goto done;
+    else if (svg_shape_path(node, vp, user))
+        svg_paint_path(r, user, NULL, strcmp(node->name, "line") == 0, ctm, vp, s, opacity, target);
+    cg_path_free(user);
+}
+
+void svg_paint_path(svg_render *r, const cg_path *user, const cg_vec2 *paint_box, int is_line,
+                    cg_mat3 ctm, const svg_viewport *vp, const svg_style *s, double opacity,
+                    cg_image *target)
+{
+    cg_path *device = NULL;
+    if (cg_path_create(&device) != CG_OK) {
+        svg_fail(r, CG_ENOMEM, "out of memory");
+        return;
     }
-    if (!svg_shape_path(node, vp, user) || cg_path_transform(user, ctm, device) != CG_OK)
+    if (cg_path_transform(user, ctm, device) != CG_OK)
         goto done;
     cg_vec2 bbox[2];
     /* within 0.01 px of the true bounds (a gradient's box, the drawn box) */
@@ -179,6 +191,10 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
                                  * fmax(s->join == CG_JOIN_MITER ? s->miter_limit : 1, 1.5)
                            : 0;
     svg_touch(r, device_box(bbox, ctm, reach));
+    if (paint_box) { /* the gradients' objectBoundingBox: the element's */
+        bbox[0] = paint_box[0];
+        bbox[1] = paint_box[1];
+    }
     cg_gradient_stop stops[256];
     for (int pass = 0; pass < 2; pass++) {
         int stroke = pass == (s->stroke_first ? 0 : 1);
@@ -188,14 +204,13 @@ static void draw_shape(svg_render *r, const svg_node *node, cg_mat3 ctm, const s
                 && resolve_paint(r, &s->stroke, s->stroke_opacity * opacity, s, bbox, has_bbox, ctm,
                                  vp, &paint, stops))
                 stroke_shape(r, user, device, s, ctm, &paint, target);
-        } else if (strcmp(node->name, "line") != 0
+        } else if (!is_line
                    && resolve_paint(r, &s->fill, s->fill_opacity * opacity, s, bbox, has_bbox, ctm,
                                     vp, &paint, stops)) {
             fill_shape(r, device, &paint, s->fill_rule, target);
         }
     }
 done:
-    cg_path_free(user);
     cg_path_free(device);
 }
 
@@ -301,6 +316,8 @@ static void render_content(svg_render *r, const svg_node *node, cg_mat3 ctm, con
         render_use(r, node, ctm, vp, s, target);
     } else if (strcmp(name, "image") == 0) {
         svg_draw_image(r, node, ctm, vp, s, target);
+    } else if (strcmp(name, "text") == 0) {
+        svg_draw_text(r, node, ctm, vp, s, opacity, target);
     }
     /* defs, symbol, gradients, clipPath, mask, style, metadata and the
      * skipped elements draw nothing here */
@@ -319,7 +336,7 @@ static int single_paint(const svg_node *node, const svg_style *s)
 void svg_render_node(svg_render *r, const svg_node *node, cg_mat3 ctm, const svg_viewport *vp,
                      const svg_style *parent, cg_image *target)
 {
-    if (r->failure != CG_OK)
+    if (r->failure != CG_OK || node->name[0] == '#') /* "#text": drawn by its <text> */
         return;
     if (++r->rendered > CG_SVG_MAX_RENDERED) {
         svg_fail(r, CG_EFORMAT, "more than %d elements to draw (an exponential <use> tree?)",
@@ -457,6 +474,7 @@ cg_status cg_svg_render(const cg_svg *svg, cg_image *image, cg_mat3 transform, c
     }
     cg_rasterizer_free(r.raster);
     cg_rasterizer_free(r.coverage);
+    svg_fonts_free(&r);
     if (r.failure != CG_OK && err && err->status == CG_OK)
         cg_error_set(err, r.failure, "%s: %s", svg->name, cg_status_str(r.failure));
     return r.failure;

@@ -19,6 +19,8 @@ void svg_initial_style(svg_style *s)
     s->miter_limit = 4;
     s->color = (cg_rgba8){0, 0, 0, 255};
     s->visible = 1;
+    s->font_size = 16;
+    s->font_weight = 400;
 }
 
 static int keyword(const char *value, const char *word)
@@ -107,6 +109,86 @@ static void dash_value(const char *value, const svg_viewport *vp, svg_style *s)
     s->dash_count = count;
 }
 
+/* font-size: a length, a percentage or em of the parent's size, or a
+ * keyword of CSS's absolute and relative sizes. */
+static void font_size_value(const char *value, const svg_viewport *vp, double *size)
+{
+    static const struct {
+        const char *name;
+        double px;
+    } sizes[] = {{"xx-small", 9}, {"x-small", 10}, {"small", 13},    {"medium", 16},
+                 {"large", 18},   {"x-large", 24}, {"xx-large", 32}, {"xxx-large", 48}};
+    if (!value || keyword(value, "inherit"))
+        return;
+    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; i++)
+        if (keyword(value, sizes[i].name)) {
+            *size = sizes[i].px;
+            return;
+        }
+    if (keyword(value, "larger") || keyword(value, "smaller")) {
+        *size = keyword(value, "larger") ? *size * 1.2 : *size / 1.2;
+        return;
+    }
+    double v;
+    const char *end = svg_read_number(svg_skip(value, 0), &v);
+    if (!end)
+        return;
+    if (*end == '%' && !*svg_skip(end + 1, 0))
+        v = *size * v / 100;
+    else if (strncmp(end, "em", 2) == 0 && !*svg_skip(end + 2, 0))
+        v = *size * v;
+    else if (strncmp(end, "ex", 2) == 0 && !*svg_skip(end + 2, 0))
+        v = *size * v / 2;
+    else if (svg_length(value, SVG_AXIS_DIAGONAL, vp, &v) != 0)
+        return;
+    if (v >= 0 && v <= 1e6)
+        *size = v;
+}
+
+/* font-weight: normal, bold, bolder, lighter (CSS's steps) or 1..1000. */
+static void font_weight_value(const char *value, int *weight)
+{
+    if (!value || keyword(value, "inherit"))
+        return;
+    if (keyword(value, "normal")) {
+        *weight = 400;
+    } else if (keyword(value, "bold")) {
+        *weight = 700;
+    } else if (keyword(value, "bolder")) {
+        *weight = *weight < 350 ? 400 : *weight < 550 ? 700 : 900;
+    } else if (keyword(value, "lighter")) {
+        *weight = *weight < 100 ? *weight : *weight < 550 ? 100 : *weight < 750 ? 400 : 700;
+    } else {
+        double v;
+        const char *end = svg_read_number(svg_skip(value, 0), &v);
+        if (end && !*svg_skip(end, 0) && v >= 1 && v <= 1000)
+            *weight = (int)v;
+    }
+}
+
+static void text_values(const svg_declared *d, const svg_viewport *vp, svg_style *s)
+{
+    const char *v;
+    if ((v = d[SVG_FONT_FAMILY].value) != NULL && !keyword(v, "inherit") && *svg_skip(v, 0))
+        s->font_family = v;
+    font_size_value(d[SVG_FONT_SIZE].value, vp, &s->font_size);
+    font_weight_value(d[SVG_FONT_WEIGHT].value, &s->font_weight);
+    if ((v = d[SVG_FONT_STYLE].value) != NULL) {
+        if (keyword(v, "italic") || keyword(v, "oblique"))
+            s->italic = 1;
+        else if (keyword(v, "normal"))
+            s->italic = 0;
+    }
+    if ((v = d[SVG_TEXT_ANCHOR].value) != NULL) {
+        if (keyword(v, "start"))
+            s->text_anchor = 0;
+        else if (keyword(v, "middle"))
+            s->text_anchor = 1;
+        else if (keyword(v, "end"))
+            s->text_anchor = 2;
+    }
+}
+
 void svg_compute_style(const svg_render *r, const svg_node *node, const svg_viewport *vp,
                        const svg_style *parent, svg_style *s)
 {
@@ -177,5 +259,6 @@ void svg_compute_style(const svg_render *r, const svg_node *node, const svg_view
         const char *fill = strstr(v, "fill"), *stroke = strstr(v, "stroke");
         s->stroke_first = stroke && (!fill || stroke < fill);
     }
+    text_values(d, vp, s);
 #undef VALUE
 }

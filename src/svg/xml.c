@@ -168,12 +168,48 @@ static void XMLCALL on_end(void *user, const XML_Char *name)
         reader->current = reader->current->parent;
 }
 
-/* Character data is kept for <style> only (the sheets). */
+/* The "#text" child of a <text> or <tspan> that character data goes to:
+ * its last child when that is one, else a new one (NULL when out of
+ * memory, with the reader stopped). */
+static svg_node *text_child(xml_reader *reader, svg_node *parent)
+{
+    if (parent->last_child && strcmp(parent->last_child->name, "#text") == 0)
+        return parent->last_child;
+    if (++reader->elements > CG_SVG_MAX_ELEMENTS) {
+        char m[96];
+        snprintf(m, sizeof m, "more than %d elements", CG_SVG_MAX_ELEMENTS);
+        stop(reader, CG_ERANGE, m);
+        return NULL;
+    }
+    svg_node *node = calloc(1, sizeof *node);
+    if (!node || !(node->name = copy_string("#text"))) {
+        svg_node_free(node);
+        stop(reader, CG_ENOMEM, "out of memory");
+        return NULL;
+    }
+    node->line = (int)XML_GetCurrentLineNumber(reader->parser);
+    node->parent = parent;
+    if (parent->last_child)
+        parent->last_child->next = node;
+    else
+        parent->first_child = node;
+    parent->last_child = node;
+    return node;
+}
+
+/* Character data is kept for <style> (the sheets) and for <text> and
+ * <tspan>, as "#text" children between their elements. */
 static void XMLCALL on_text(void *user, const XML_Char *text, int length)
 {
     xml_reader *reader = user;
     svg_node *node = reader->current;
-    if (reader->foreign_depth || !node || strcmp(node->name, "style") != 0 || length <= 0)
+    if (reader->foreign_depth || !node || length <= 0)
+        return;
+    if (strcmp(node->name, "text") == 0 || strcmp(node->name, "tspan") == 0)
+        node = text_child(reader, node);
+    else if (strcmp(node->name, "style") != 0)
+        return;
+    if (!node)
         return;
     char *grown = realloc(node->text, node->text_length + (size_t)length + 1);
     if (!grown) {

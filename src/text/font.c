@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 /* The largest font file accepted (fonts of CJK scripts reach ~30 MB). */
@@ -213,6 +214,48 @@ cg_status cg_font_find(const char *family, int weight, int italic, char *path, s
         FcPatternDestroy(match);
     FcPatternDestroy(pattern);
     FcConfigDestroy(config);
+    return status;
+}
+
+/* The generic families fontconfig resolves through its configuration. */
+static int is_generic_family(const char *name)
+{
+    static const char *const generic[] = {"serif",   "sans-serif", "monospace", "cursive",
+                                          "fantasy", "system-ui",  "sans",      "mono"};
+    for (size_t i = 0; i < sizeof generic / sizeof *generic; i++)
+        if (strcasecmp(name, generic[i]) == 0)
+            return 1;
+    return 0;
+}
+
+cg_status cg_font_family_exists(const char *family, cg_error *err)
+{
+    if (!family || !*family)
+        return cg_error_set(err, CG_EINVAL, "font: no family name");
+    if (is_generic_family(family))
+        return CG_OK;
+    FcConfig *config = FcInitLoadConfigAndFonts();
+    FcPattern *pattern = config ? FcPatternCreate() : NULL;
+    FcObjectSet *objects = pattern ? FcObjectSetBuild(FC_FILE, (char *)NULL) : NULL;
+    FcFontSet *set = NULL;
+    if (objects) {
+        FcPatternAddString(pattern, FC_FAMILY, (const FcChar8 *)family);
+        FcPatternAddBool(pattern, FC_SCALABLE, FcTrue);
+        set = FcFontList(config, pattern, objects);
+    }
+    cg_status status = CG_OK;
+    if (!set)
+        status = cg_error_set(err, CG_ENOMEM, "font %s: fontconfig could not start", family);
+    else if (set->nfont == 0)
+        status = cg_error_set(err, CG_EEMPTY, "no font of the family '%s' is installed", family);
+    if (set)
+        FcFontSetDestroy(set);
+    if (objects)
+        FcObjectSetDestroy(objects);
+    if (pattern)
+        FcPatternDestroy(pattern);
+    if (config)
+        FcConfigDestroy(config);
     return status;
 }
 

@@ -90,6 +90,12 @@ static cg_status next_line(cg_font *font, const char *text, size_t start, double
 {
     size_t best = start, i = start;
     double best_w = 0;
+    if (!(width > 0)) { /* no wrapping: the line runs to the break, shaped once */
+        while (text[i] && text[i] != '\n')
+            i++;
+        *end = i;
+        return run_bytes(font, text + start, i - start, size, 0, 0, NULL, line_width, err);
+    }
     for (;;) {
         while (text[i] && text[i] != ' ' && text[i] != '\n')
             i++;

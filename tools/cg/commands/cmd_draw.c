@@ -77,7 +77,7 @@ static int run(int argc, char **argv)
 
 const cg_command cg_command_draw = {
     "draw",
-    "draw lines, circles, curves, polygons and paths from a script",
+    "draw lines, circles, curves, polygons, paths and text from a script",
     "usage: cg draw FILE -o OUT [--repeat N]\n\n"
     "Runs the drawing script FILE (- for stdin) and writes the canvas to OUT in the\n"
     "format of its extension: .png, .ppm or .pgm.  One command a line, # starts a\n"
@@ -98,6 +98,14 @@ const cg_command cg_command_draw = {
     "  join miter|round|bevel             cap butt|round|square\n"
     "  compositing linear|srgb [OPERATOR [BLEND_MODE]]   (how later fills mix colours)\n"
     "  flood X Y           flood8 X Y     boundaryfill X Y BOUNDARY_COLOR\n"
+    "Text (filled with the colour and compositing of fill):\n"
+    "  font FAMILY-OR-FILE SIZE           (a fontconfig family such as DejaVu Sans,\n"
+    "                                      sans-serif, or a .ttf/.otf/.ttc file; SIZE px;\n"
+    "                                      DejaVu Sans:bold:italic, :weight=600 choose faces)\n"
+    "  text X Y STRING                    (the words after Y; \"quoted\" keeps blanks,\n"
+    "                                      #, and \\\" \\\\ \\n escapes)\n"
+    "  align start|middle|end             baseline alphabetic|top|middle|bottom\n"
+    "  wrap WIDTH (0 or off: no wrapping) linespacing FACTOR (default 1.2)\n"
     "Integer coordinates (pixel indices) for line, polyline, circle, disc, ellipse,\n"
     "arcs and the flood seeds; decimals for the others.  A bad line is reported as\n"
     "FILE:LINE: what was expected, and no output is written.  A UTF-8 byte-order\n"

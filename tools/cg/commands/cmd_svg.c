@@ -154,11 +154,12 @@ const cg_command cg_command_svg = {
     "usage: cg svg IN.svg -o OUT.png [--width W | --height H | --zoom Z] [--background COLOR]\n\n"
     "Draws the SVG document IN.svg (the static subset icon themes use: shapes,\n"
     "paths, groups, use and symbol, style sheets, gradients, clip paths, masks,\n"
-    "opacity, embedded PNG images) into OUT (.png, .ppm or .pgm), compositing in\n"
-    "sRGB as SVG specifies.  The picture has the document's size in px, or is\n"
+    "opacity, embedded PNG images, text and tspan) into OUT (.png, .ppm or\n"
+    ".pgm), compositing in sRGB as SVG specifies.  The picture has the document's size in px, or "
+    "is\n"
     "scaled to W pixels wide or H high (the other side keeps the aspect), or by\n"
     "the factor Z.  It is transparent unless --background gives a colour\n"
-    "(#rrggbb, #rrggbbaa or a name).  Unsupported content (filters, text,\n"
+    "(#rrggbb, #rrggbbaa or a name).  Unsupported content (filters, textPath,\n"
     "patterns, markers, animation, scripts, other files) is skipped with one\n"
     "warning for each kind on stderr; nothing is ever fetched.  See docs/svg.md.\n",
     run,

@@ -162,6 +162,20 @@ int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out)
     return 0;
 }
 
+int draw_arg_keyword(const draw_state *state, int argc, char **argv, const char *usage,
+                     const char *const *words, int count, int *out)
+{
+    if (draw_arg_count(state, argc, argv, 1, usage))
+        return 1;
+    for (int i = 0; i < count; i++)
+        if (strcmp(argv[1], words[i]) == 0) {
+            *out = i;
+            return 0;
+        }
+    return draw_error(state, "expected %s after '%s', got '%s'", usage + strlen(argv[0]) + 1,
+                      argv[0], argv[1]);
+}
+
 int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,
                     const char *usage, cg_vec2 **out, int *count)
 {
@@ -299,6 +313,38 @@ void draw_script_free(draw_script *script)
 
 static int parse(draw_script *script, size_t size);
 
+/* A word starting with '"' at *q: its text up to the closing quote, with the
+ * escapes \" \\ and \n, is moved to the start of the word (in place: it
+ * only shrinks), the rest of the word's bytes become blanks, and *q points
+ * after the closing quote.  Returns NULL, or what is wrong. */
+static const char *unquote(char **q)
+{
+    char *read = *q + 1, *write = *q;
+    for (;;) {
+        char c = *read++;
+        if (c == '\0')
+            return "unterminated quoted string: expected a closing '\"' on the same line";
+        if (c == '"')
+            break;
+        if (c == '\\') {
+            c = *read++;
+            if (c == 'n')
+                c = '\n';
+            else if (c != '"' && c != '\\')
+                return "unknown escape in a quoted string (expected \\\", \\\\ or \\n)";
+        }
+        *write++ = c;
+    }
+    if (*read && !is_blank(*read))
+        return "expected a blank after the closing '\"' of a quoted string";
+    char *end = write;
+    while (write < read)
+        *write++ = ' ';
+    *end = '\0';
+    *q = read;
+    return NULL;
+}
+
 int draw_script_load(const char *path, draw_script *script)
 {
     memset(script, 0, sizeof *script);
@@ -368,10 +414,21 @@ static int parse(draw_script *script, size_t size)
             if (!*q)
                 break;
             char *word = q;
+            int quoted = *q == '"';
+            if (quoted) {
+                const char *problem = unquote(&q);
+                if (problem) {
+                    where.line = number;
+                    draw_error(&where, "%s", problem);
+                    free(argv);
+                    draw_script_free(script);
+                    return 1;
+                }
+            }
             while (*q && !is_blank(*q))
                 q++;
             size_t length = (size_t)(q - word);
-            if (word[0] == '#' && (argc == 0 || !is_hex_colour(word, length)))
+            if (!quoted && word[0] == '#' && (argc == 0 || !is_hex_colour(word, length)))
                 break;
             if (*q)
                 *q++ = '\0';
@@ -471,6 +528,7 @@ int draw_script_run_on(const draw_script *script, cg_image *canvas)
 void draw_state_release(draw_state *state)
 {
     draw_fill_release(state);
+    draw_text_release(state);
     cg_image_free(state->canvas);
     state->canvas = NULL;
 }

@@ -52,10 +52,19 @@ typedef struct draw_state {
     double dashes[32]; /* `dash ON OFF ...`, dash_count 0: solid */
     int dash_count;
     struct draw_fill *fill; /* polygon being built, current path, scratch */
+
+    /* text (tools/cg/drawcmds_text.c): the font, its size, alignment,
+     * baseline, wrapping width and line spacing */
+    struct draw_text *text;
 } draw_state;
 
 /* Releases state->fill (drawcmds_fill.c); called by draw_state_release. */
 void draw_fill_release(draw_state *state);
+/* Releases state->text (drawcmds_text.c); called by draw_state_release. */
+void draw_text_release(draw_state *state);
+/* The rasterizer of the fill commands, with the script's compositing and
+ * tolerance: what `fill` fills with (NULL when out of memory). */
+struct cg_rasterizer *draw_fill_rasterizer(draw_state *state);
 
 /* A command: run returns 0 on success, non-zero after printing an error
  * (with draw_error).  argv[0] is the command name, argc counts it. */
@@ -90,6 +99,11 @@ int draw_arg_double(const draw_state *state, const char *text, const char *what,
 int draw_arg_nonnegative(const draw_state *state, const char *text, const char *what, double *out);
 /* A colour: #rgb, #rrggbb, #rrggbbaa or a name. */
 int draw_arg_color(const draw_state *state, const char *text, cg_rgba8 *out);
+/* One word argument (argc must be 2) among words[0 .. count - 1]: *out
+ * gets its index; else an error quoting the choices of usage
+ * ("fillrule evenodd|nonzero"). */
+int draw_arg_keyword(const draw_state *state, int argc, char **argv, const char *usage,
+                     const char *const *words, int count, int *out);
 /* Points given as X Y pairs from argv[first] to argv[argc - 1]: at least
  * min_points, an even number of numbers.  *out is malloc'ed (caller frees). */
 int draw_arg_points(const draw_state *state, int argc, char **argv, int first, int min_points,

@@ -51,6 +51,12 @@ static draw_fill *fill_of(draw_state *s)
     return s->fill;
 }
 
+cg_rasterizer *draw_fill_rasterizer(draw_state *state)
+{
+    draw_fill *f = fill_of(state);
+    return f ? f->rasterizer : NULL;
+}
+
 static int out_of_memory(const draw_state *s)
 {
     return draw_error(s, "out of memory");
@@ -58,36 +64,22 @@ static int out_of_memory(const draw_state *s)
 
 /* ---- attributes ------------------------------------------------------------ */
 
-static int keyword(draw_state *s, int argc, char **argv, const char *usage,
-                   const char *const *words, int count, int *out)
-{
-    if (draw_arg_count(s, argc, argv, 1, usage))
-        return 1;
-    for (int i = 0; i < count; i++)
-        if (strcmp(argv[1], words[i]) == 0) {
-            *out = i;
-            return 0;
-        }
-    return draw_error(s, "expected %s after '%s', got '%s'", usage + strlen(argv[0]) + 1, argv[0],
-                      argv[1]);
-}
-
 static int run_fillrule(draw_state *s, int argc, char **argv)
 {
     static const char *const words[] = {"evenodd", "nonzero"}; /* = cg_fill_rule */
-    return keyword(s, argc, argv, "fillrule evenodd|nonzero", words, 2, &s->fill_rule);
+    return draw_arg_keyword(s, argc, argv, "fillrule evenodd|nonzero", words, 2, &s->fill_rule);
 }
 
 static int run_join(draw_state *s, int argc, char **argv)
 {
     static const char *const words[] = {"miter", "round", "bevel"}; /* = cg_line_join */
-    return keyword(s, argc, argv, "join miter|round|bevel", words, 3, &s->line_join);
+    return draw_arg_keyword(s, argc, argv, "join miter|round|bevel", words, 3, &s->line_join);
 }
 
 static int run_cap(draw_state *s, int argc, char **argv)
 {
     static const char *const words[] = {"butt", "round", "square"}; /* = cg_line_cap */
-    return keyword(s, argc, argv, "cap butt|round|square", words, 3, &s->line_cap);
+    return draw_arg_keyword(s, argc, argv, "cap butt|round|square", words, 3, &s->line_cap);
 }
 
 /* compositing SPACE [OPERATOR [BLEND_MODE]]: how later fills mix colours. */

@@ -67,9 +67,7 @@ static int run_stencil(int loop, int argc, char **argv, const trace_outputs *out
                                "subdivides triangles; try catmull-clark)",
                                argv[1]);
     }
-    int code = trace_finish(run, status, "no such vertex", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "no such vertex", out);
 }
 
 static int run_loop(int argc, char **argv, const trace_outputs *out)
@@ -126,9 +124,7 @@ static int run_edge(cg_edge_operation operation, int argc, char **argv, const tr
     cg_status status = cg_hemesh_edge_operation_steps(m, operation, (uint32_t)index,
                                                       cg_step_log_record, run->log);
     cg_hemesh_free(m);
-    int code = trace_finish(run, status, "no such edge", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "no such edge", out);
 }
 
 static int run_edge_flip(int argc, char **argv, const trace_outputs *out)

@@ -61,9 +61,7 @@ static int run_plane(trace_run *run, const float *plane, int width, int height, 
     plane_background(run, plane, width, height);
     cg_status status = cg_dither_plane_steps(plane, width, height, levels, method,
                                              cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "bad plane or levels", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "bad plane or levels", out);
 }
 
 /* quantize LEVELS I [I ...] */
@@ -231,9 +229,7 @@ static int run_gamma(int argc, char **argv, const trace_outputs *out)
     trace_note(run, "code = round(255 V); shown = V^gamma (I again); uncorrected = I^gamma, what "
                     "sending I itself shows; sRGB: the standard's curve for comparison");
     cg_status status = cg_gamma_steps(values, (size_t)n, gamma, cg_step_log_record, run->log);
-    int code = trace_finish(run, status, "bad gamma", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "bad gamma", out);
 }
 
 /* shading flat|gouraud|phong MESH X Y [WxH] */
@@ -299,9 +295,7 @@ static int run_shading(int argc, char **argv, const trace_outputs *out)
     status = cg_shading_pixel_steps(renderer, image, (int)x, (int)y, cg_step_log_record, run->log);
     cg_renderer_free(renderer);
     cg_image_free(image);
-    int code = trace_finish(run, status, "the mesh cannot be drawn", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the mesh cannot be drawn", out);
 }
 
 const trace_algorithm trace_shading_algorithms[] = {

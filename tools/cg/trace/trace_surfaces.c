@@ -99,9 +99,7 @@ static int run_painter(int argc, char **argv, const trace_outputs *out)
     trace_summary(run, "%zu polygons painted (%zu triangles, splits: %zu), %zu pair tests",
                   count_phase(run->log, "paint"), stats.triangles, stats.splits,
                   count_phase(run->log, "tests"));
-    int code = trace_finish(run, status, "the mesh cannot be drawn", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the mesh cannot be drawn", out);
 }
 
 /* The scene of `ray`: the classic spheres seen as the docs' example sees
@@ -177,9 +175,7 @@ static int run_ray(int argc, char **argv, const trace_outputs *out)
     cg_status status = cg_trace_pixel_steps(scene, &camera, &options, width, height, (int)x, (int)y,
                                             cg_step_log_record, run->log);
     cg_trace_scene_free(scene);
-    int code = trace_finish(run, status, "the scene cannot be traced", out);
-    trace_run_free(run);
-    return code;
+    return trace_finish(run, status, "the scene cannot be traced", out);
 }
 
 const trace_algorithm trace_surfaces_algorithms[] = {

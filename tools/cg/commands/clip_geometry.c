@@ -45,43 +45,164 @@ static int draw(const char *path, const cg_polygon_set *input, int input_open,
     return status;
 }
 
-/* Index of text in names[0..count), or -1. */
-static int pick_name(const char *text, const char *const *names, int count)
+/* The arguments of every command of this file, parsed by cli_parse. */
+typedef struct geometry_arguments {
+    const char *picture;               /* -o */
+    int repeat;                        /* --repeat, 0 when not given */
+    int fill;                          /* --fill: cg_clip_fill */
+    int join;                          /* offset --join: cg_offset_join */
+    int end, end_given;                /* offset --end: index in end_choices */
+    double miter_limit, arc_tolerance; /* offset */
+    double min_angle;                  /* triangulate */
+    int algorithm;                     /* simplify: cg_simplify_algorithm */
+} geometry_arguments;
+
+static const char *const fill_choices[] = {"evenodd", "nonzero", "positive", "negative", NULL};
+static const char *const join_choices[] = {"miter", "round", "square", "bevel", NULL};
+/* The ends of line strings, in the order of cg_offset_end from
+ * CG_OFFSET_END_JOINED. */
+static const char *const end_choices[] = {"joined", "butt", "square", "round", NULL};
+static const char *const algorithm_choices[] = {"rdp", "visvalingam", NULL};
+
+/* --fill, -o and --repeat: the options every command here takes. */
+#define GEOMETRY_COMMON_OPTIONS                                                            \
+    {.name = "--fill",                                                                     \
+     .kind = CLI_CHOICE,                                                                   \
+     .offset = offsetof(geometry_arguments, fill),                                         \
+     .choices = fill_choices,                                                              \
+     .help = "the fill rule of the polygons read (default evenodd)"},                      \
+        CLI_OPTION_OUTPUT(geometry_arguments, picture, "OUT.png",                          \
+                          "draw the input and the result instead of printing the result"), \
+        CLI_OPTION_REPEAT(geometry_arguments, repeat, 100000,                              \
+                          "perform the operation N times; the median time on stderr")
+
+static const cli_option offset_options[] = {
+    {.name = "--join",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(geometry_arguments, join),
+     .choices = join_choices,
+     .help = "the corners (default miter)"},
+    {.name = "--end",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(geometry_arguments, end),
+     .choices = end_choices,
+     .given = CLI_GIVEN(geometry_arguments, end_given),
+     .help = "the ends of line strings (default round)"},
+    {.name = "--miter-limit",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(geometry_arguments, miter_limit),
+     .value_name = "M",
+     .help = "miters cut flat at M times |DELTA| (default 2)",
+     .range_text = "a number >= 1",
+     .low = 1,
+     .high = 1e300},
+    {.name = "--arc-tolerance",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(geometry_arguments, arc_tolerance),
+     .value_name = "T",
+     .help = "the gap between a round join and its chords (default |DELTA|/500)",
+     .range_text = "a positive number",
+     .low = 0,
+     .high = 1e300,
+     .open = CLI_OPEN_LOW},
+    GEOMETRY_COMMON_OPTIONS,
+};
+static const cli_option triangulate_options[] = {
+    {.name = "--min-angle",
+     .kind = CLI_DOUBLE,
+     .offset = offsetof(geometry_arguments, min_angle),
+     .value_name = "A",
+     .help = "refine until no angle is below A degrees",
+     .range_text = "degrees from 0 to 30 (beyond it refinement need not end)",
+     .low = 0,
+     .high = CG_TRIANGULATE_MAX_MIN_ANGLE},
+    GEOMETRY_COMMON_OPTIONS,
+};
+static const cli_option simplify_options[] = {
+    {.name = "--algorithm",
+     .kind = CLI_CHOICE,
+     .offset = offsetof(geometry_arguments, algorithm),
+     .choices = algorithm_choices,
+     .help = "Ramer-Douglas-Peucker (the default) or Visvalingam-Whyatt"},
+    GEOMETRY_COMMON_OPTIONS,
+};
+static const cli_option shared_options[] = {GEOMETRY_COMMON_OPTIONS};
+
+static const cli_option_group offset_groups[] = {CLI_GROUP(NULL, offset_options), {0}};
+static const cli_option_group triangulate_groups[] = {CLI_GROUP(NULL, triangulate_options), {0}};
+static const cli_option_group simplify_groups[] = {CLI_GROUP(NULL, simplify_options), {0}};
+static const cli_option_group common_groups[] = {CLI_GROUP(NULL, shared_options), {0}};
+
+const cli_syntax clip_offset_syntax = {.command = "clip",
+                                       .action = "offset",
+                                       .groups = offset_groups,
+                                       .max_positionals = 2,
+                                       .too_many = "offset: unexpected argument '%s'",
+                                       .min_positionals = 2,
+                                       .too_few = "offset: expected DELTA IN"};
+const cli_syntax clip_minkowski_syntax = {
+    .command = "clip",
+    .action = "minkowski",
+    .groups = common_groups,
+    .max_positionals = 3,
+    .too_many = "minkowski: unexpected argument '%s'",
+    .min_positionals = 3,
+    .too_few = "minkowski: expected sum|difference PATTERN PATH"};
+const cli_syntax clip_rect_syntax = {.command = "clip",
+                                     .action = "rect",
+                                     .groups = common_groups,
+                                     .max_positionals = 5,
+                                     .too_many = "rect: unexpected argument '%s'",
+                                     .min_positionals = 5,
+                                     .too_few = "rect: expected XMIN YMIN XMAX YMAX IN"};
+const cli_syntax clip_triangulate_syntax = {.command = "clip",
+                                            .action = "triangulate",
+                                            .groups = triangulate_groups,
+                                            .max_positionals = 1,
+                                            .too_many = "triangulate: unexpected argument '%s'",
+                                            .min_positionals = 1,
+                                            .too_few = "triangulate: expected IN"};
+const cli_syntax clip_simplify_syntax = {.command = "clip",
+                                         .action = "simplify",
+                                         .groups = simplify_groups,
+                                         .max_positionals = 2,
+                                         .too_many = "simplify: unexpected argument '%s'",
+                                         .min_positionals = 2,
+                                         .too_few = "simplify: expected TOLERANCE IN"};
+
+/* Parses a command's arguments with the defaults set; checks -o's format.
+ * CLI_OK, or CLI_USAGE after a message. */
+static int parse_geometry(const cli_syntax *syntax, int argc, char **argv, geometry_arguments *args,
+                          const char **positionals)
 {
-    for (int i = 0; i < count; i++)
-        if (strcmp(text, names[i]) == 0)
-            return i;
-    return -1;
+    cg_offset_options defaults = cg_offset_options_default();
+    *args = (geometry_arguments){NULL,
+                                 0,
+                                 CG_CLIP_EVEN_ODD,
+                                 CG_OFFSET_JOIN_MITER,
+                                 0,
+                                 0,
+                                 defaults.miter_limit,
+                                 defaults.arc_tolerance,
+                                 0,
+                                 CG_SIMPLIFY_RDP};
+    if (cli_parse(syntax, argc, argv, args, positionals, NULL) != CLI_OK)
+        return CLI_USAGE;
+    if (args->picture && cg_file_format_from_path(args->picture) == CG_FILE_UNKNOWN)
+        return cli_usage_error("clip", "%s: -o %s: unknown image format (expected .png, .ppm)",
+                               syntax->action, args->picture);
+    return CLI_OK;
 }
 
-/* The options every command of this file takes: -o and --repeat. */
-typedef struct common_options {
-    const char *picture;
-    long repeat;
-} common_options;
-
-/* 1 when argv[*i] was -o or --repeat (taken), 0 when not one of them, -1 on
- * a usage error (printed). */
-static int take_common(const char *name, int argc, char **argv, int *i, common_options *common)
+/* A positional number: finite (and >= low when low_given). */
+static int parse_number(const char *name, const char *text, int at_least_zero, double *out)
 {
-    if (cli_option_is(argv[*i], "-o")) {
-        common->picture = cli_option_value("clip", argc, argv, i);
-        if (!common->picture)
-            return -1;
-        if (cg_file_format_from_path(common->picture) == CG_FILE_UNKNOWN) {
-            cli_usage_error("clip", "%s: -o %s: unknown image format (expected .png, .ppm)", name,
-                            common->picture);
-            return -1;
-        }
-        return 1;
-    }
-    if (cli_option_is(argv[*i], "--repeat")) {
-        const char *r = cli_option_value("clip", argc, argv, i);
-        if (!r || cli_parse_long("clip", "--repeat", r, 1, 100000, &common->repeat) != 0)
-            return -1;
-        return 1;
-    }
-    return 0;
+    if (cli_parse_double("clip", name, text, out) != 0)
+        return CLI_USAGE;
+    if (!isfinite(*out) || (at_least_zero && !(*out >= 0)))
+        return cli_usage_error("clip", "%s: expected a finite number%s, got '%s'", name,
+                               at_least_zero ? " >= 0" : "", text);
+    return CLI_OK;
 }
 
 /* Prints the median of the timings on stderr as "NAME: 1.23 ms". */
@@ -92,7 +213,7 @@ static void report_time(const char *name, double *times, long runs)
 }
 
 /* Writes the result (or draws it); frees nothing. */
-static int finish(const common_options *common, const cg_polygon_set *input, int input_open,
+static int finish(const geometry_arguments *common, const cg_polygon_set *input, int input_open,
                   const cg_polygon_set *result, int result_open)
 {
     if (common->picture)
@@ -104,15 +225,13 @@ static int finish(const common_options *common, const cg_polygon_set *input, int
     return fflush(stdout) == 0 ? CLI_OK : cli_fail("clip: cannot write the result");
 }
 
-static const char *const fill_names[] = {"evenodd", "nonzero", "positive", "negative"};
-
 /* One run of a command's operation on the input, with a workspace or NULL. */
 typedef cg_status (*geometry_step)(const void *args, cg_clip_workspace *ws,
                                    const cg_polygon_set *input, int open, cg_polygon_set *result);
 
 /* Runs step once, or --repeat times timing each (with a workspace when
  * want_workspace), reports the median, then writes or draws the result. */
-static int run_timed(const char *name, const common_options *common, int want_workspace,
+static int run_timed(const char *name, const geometry_arguments *common, int want_workspace,
                      geometry_step step, const void *args, const cg_polygon_set *input, int open,
                      cg_polygon_set *result, int result_open)
 {
@@ -135,20 +254,6 @@ static int run_timed(const char *name, const common_options *common, int want_wo
     return finish(common, input, open, result, result_open);
 }
 
-/* The positional argument after the first ones: IN, then nothing more.
- * 0, or CLI_USAGE after a message. */
-static int take_operand(const char *name, const char *arg, const char **first, const char **file)
-{
-    if (cli_is_option(arg))
-        return cli_usage_error("clip", "%s: unknown option '%s'", name, arg);
-    if (first && !*first)
-        *first = arg;
-    else if (!*file)
-        *file = arg;
-    else
-        return cli_usage_error("clip", "%s: unexpected argument '%s'", name, arg);
-    return 0;
-}
 
 /* What a command does once its arguments are parsed: read IN, check what it
  * holds, run the step (timed), write or draw the result. */
@@ -164,7 +269,7 @@ typedef struct geometry_job {
     int result_open_when_open; /* line strings in, line strings out */
 } geometry_job;
 
-static int run_job(const geometry_job *job, const char *file, const common_options *common)
+static int run_job(const geometry_job *job, const char *file, const geometry_arguments *common)
 {
     cg_polygon_set input = {0}, result = {0};
     cg_error err;
@@ -180,27 +285,6 @@ static int run_job(const geometry_job *job, const char *file, const common_optio
     return status;
 }
 
-/* --fill NAME into *fill: 1 taken, 0 not this option, -1 usage error. */
-static int take_fill(const char *name, int argc, char **argv, int *i, cg_clip_fill *fill)
-{
-    if (!cli_option_is(argv[*i], "--fill"))
-        return 0;
-    const char *value = cli_option_value("clip", argc, argv, i);
-    if (!value)
-        return -1;
-    int k = pick_name(value, fill_names, 4);
-    if (k < 0) {
-        cli_usage_error("clip",
-                        "%s: --fill: expected evenodd, nonzero, positive or negative, "
-                        "got '%s'",
-                        name, value);
-        return -1;
-    }
-    *fill = (cg_clip_fill)k;
-    return 1;
-}
-
-static const char *const offset_ends[] = {"polygon", "joined", "butt", "square", "round"};
 
 typedef struct offset_args {
     double delta;
@@ -221,9 +305,9 @@ static cg_status offset_step(const void *args, cg_clip_workspace *ws, const cg_p
 static int offset_check(void *args, const char *file, int open)
 {
     offset_args *a = args;
-    if (!open && a->end > 1)
+    if (!open && a->end > CG_OFFSET_END_JOINED)
         return cli_usage_error("clip", "offset: --end %s is for line strings; %s holds polygons",
-                               offset_ends[a->end], file);
+                               end_choices[a->end - CG_OFFSET_END_JOINED], file);
     a->options.end = a->end >= 0 ? (cg_offset_end)a->end
                      : open      ? CG_OFFSET_END_ROUND
                                  : CG_OFFSET_END_POLYGON;
@@ -232,73 +316,21 @@ static int offset_check(void *args, const char *file, int open)
 
 static int offset(int argc, char **argv)
 {
-    static const char *const joins[] = {"miter", "round", "square", "bevel"};
-    cg_offset_options options = cg_offset_options_default();
-    common_options common = {0};
-    const char *file = NULL, *delta_text = NULL;
-    int end = -1;
-    for (int i = 1; i < argc; i++) {
-        int taken = take_common("offset", argc, argv, &i, &common);
-        if (taken == 0)
-            taken = take_fill("offset", argc, argv, &i, &options.fill);
-        if (taken < 0)
-            return CLI_USAGE;
-        if (taken)
-            continue;
-        const char *value = NULL;
-        if (cli_option_is(argv[i], "--join") || cli_option_is(argv[i], "--end")
-            || cli_option_is(argv[i], "--miter-limit")
-            || cli_option_is(argv[i], "--arc-tolerance")) {
-            const char *option = argv[i];
-            value = cli_option_value("clip", argc, argv, &i);
-            if (!value)
-                return CLI_USAGE;
-            if (cli_option_is(option, "--join")) {
-                int k = pick_name(value, joins, 4);
-                if (k < 0)
-                    return cli_usage_error("clip",
-                                           "offset: --join: expected miter, round, square "
-                                           "or bevel, got '%s'",
-                                           value);
-                options.join = (cg_offset_join)k;
-            } else if (cli_option_is(option, "--end")) {
-                end = pick_name(value, offset_ends, 5);
-                if (end < 1)
-                    return cli_usage_error("clip",
-                                           "offset: --end: expected butt, square, round "
-                                           "or joined, got '%s'",
-                                           value);
-            } else if (cli_option_is(option, "--miter-limit")) {
-                if (cli_parse_double("clip", "--miter-limit", value, &options.miter_limit) != 0)
-                    return CLI_USAGE;
-                if (!(options.miter_limit >= 1 && isfinite(options.miter_limit)))
-                    return cli_usage_error("clip",
-                                           "offset: --miter-limit: expected a number "
-                                           ">= 1, got '%s'",
-                                           value);
-            } else {
-                if (cli_parse_double("clip", "--arc-tolerance", value, &options.arc_tolerance) != 0)
-                    return CLI_USAGE;
-                if (!(options.arc_tolerance > 0 && isfinite(options.arc_tolerance)))
-                    return cli_usage_error("clip",
-                                           "offset: --arc-tolerance: expected a positive "
-                                           "number, got '%s'",
-                                           value);
-            }
-        } else if (take_operand("offset", argv[i], &delta_text, &file) != 0) {
-            return CLI_USAGE;
-        }
-    }
-    if (!file)
-        return cli_usage_error("clip", "offset: expected DELTA IN");
-    double delta;
-    if (cli_parse_double("clip", "DELTA", delta_text, &delta) != 0)
+    geometry_arguments common;
+    const char *positionals[2];
+    if (parse_geometry(&clip_offset_syntax, argc, argv, &common, positionals) != CLI_OK)
         return CLI_USAGE;
-    if (!isfinite(delta))
-        return cli_usage_error("clip", "DELTA: expected a finite number, got '%s'", delta_text);
-    offset_args args = {delta, options, end};
+    double delta;
+    if (parse_number("DELTA", positionals[0], 0, &delta) != CLI_OK)
+        return CLI_USAGE;
+    cg_offset_options options = cg_offset_options_default();
+    options.fill = (cg_clip_fill)common.fill;
+    options.join = (cg_offset_join)common.join;
+    options.miter_limit = common.miter_limit;
+    options.arc_tolerance = common.arc_tolerance;
+    offset_args args = {delta, options, common.end_given ? CG_OFFSET_END_JOINED + common.end : -1};
     geometry_job job = {"offset", offset_step, &args, offset_check, 1, 1, 0};
-    return run_job(&job, file, &common);
+    return run_job(&job, positionals[1], &common);
 }
 
 typedef struct rect_args {
@@ -318,37 +350,19 @@ static cg_status rect_step(const void *args, cg_clip_workspace *ws, const cg_pol
 static int rect(int argc, char **argv)
 {
     static const char *names[4] = {"XMIN", "YMIN", "XMAX", "YMAX"};
+    geometry_arguments common;
+    const char *positionals[5];
+    if (parse_geometry(&clip_rect_syntax, argc, argv, &common, positionals) != CLI_OK)
+        return CLI_USAGE;
     double v[4];
-    int count = 0;
-    const char *file = NULL;
-    common_options common = {0};
-    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
-    for (int i = 1; i < argc; i++) {
-        int taken = take_common("rect", argc, argv, &i, &common);
-        if (taken == 0)
-            taken = take_fill("rect", argc, argv, &i, &fill);
-        if (taken < 0)
+    for (int k = 0; k < 4; k++)
+        if (parse_number(names[k], positionals[k], 0, &v[k]) != CLI_OK)
             return CLI_USAGE;
-        if (taken)
-            continue;
-        if (count < 4 && !cli_is_option(argv[i])) {
-            if (cli_parse_double("clip", names[count], argv[i], &v[count]) != 0)
-                return CLI_USAGE;
-            if (!isfinite(v[count]))
-                return cli_usage_error("clip", "%s: expected a finite number, got '%s'",
-                                       names[count], argv[i]);
-            count++;
-        } else if (take_operand("rect", argv[i], NULL, &file) != 0) {
-            return CLI_USAGE;
-        }
-    }
-    if (!file)
-        return cli_usage_error("clip", "rect: expected XMIN YMIN XMAX YMAX IN");
     if (v[0] > v[2] || v[1] > v[3])
         return cli_usage_error("clip", "rect: the rectangle needs XMIN <= XMAX and YMIN <= YMAX");
-    rect_args args = {{v[0], v[1], v[2], v[3]}, fill};
+    rect_args args = {{v[0], v[1], v[2], v[3]}, (cg_clip_fill)common.fill};
     geometry_job job = {"rect", rect_step, &args, NULL, 0, 1, 1};
-    return run_job(&job, file, &common);
+    return run_job(&job, positionals[4], &common);
 }
 
 typedef struct triangulate_args {
@@ -377,34 +391,13 @@ static int triangulate_check(void *args, const char *file, int open)
 /* cg clip triangulate IN: the triangles as a MULTIPOLYGON. */
 static int triangulate(int argc, char **argv)
 {
-    const char *file = NULL;
-    common_options common = {0};
-    triangulate_args args = {CG_CLIP_EVEN_ODD, 0};
-    for (int i = 1; i < argc; i++) {
-        int taken = take_common("triangulate", argc, argv, &i, &common);
-        if (taken == 0)
-            taken = take_fill("triangulate", argc, argv, &i, &args.fill);
-        if (taken < 0)
-            return CLI_USAGE;
-        if (taken)
-            continue;
-        if (cli_option_is(argv[i], "--min-angle")) {
-            const char *value = cli_option_value("clip", argc, argv, &i);
-            if (!value || cli_parse_double("clip", "--min-angle", value, &args.min_angle) != 0)
-                return CLI_USAGE;
-            if (!(args.min_angle >= 0 && args.min_angle <= CG_TRIANGULATE_MAX_MIN_ANGLE))
-                return cli_usage_error("clip",
-                                       "triangulate: --min-angle: expected degrees from 0 to %g "
-                                       "(beyond it refinement need not end), got '%s'",
-                                       CG_TRIANGULATE_MAX_MIN_ANGLE, value);
-        } else if (take_operand("triangulate", argv[i], NULL, &file) != 0) {
-            return CLI_USAGE;
-        }
-    }
-    if (!file)
-        return cli_usage_error("clip", "triangulate: expected IN");
+    geometry_arguments common;
+    const char *positionals[1];
+    if (parse_geometry(&clip_triangulate_syntax, argc, argv, &common, positionals) != CLI_OK)
+        return CLI_USAGE;
+    triangulate_args args = {(cg_clip_fill)common.fill, common.min_angle};
     geometry_job job = {"triangulate", triangulate_step, &args, triangulate_check, 1, 1, 0};
-    return run_job(&job, file, &common);
+    return run_job(&job, positionals[0], &common);
 }
 
 typedef struct simplify_args {
@@ -424,46 +417,17 @@ static cg_status simplify_step(const void *args, cg_clip_workspace *ws, const cg
 /* cg clip simplify TOLERANCE IN [--algorithm rdp|visvalingam] */
 static int simplify(int argc, char **argv)
 {
-    const char *file = NULL, *tolerance_text = NULL;
-    common_options common = {0};
-    cg_clip_fill fill = CG_CLIP_EVEN_ODD;
-    cg_simplify_algorithm algorithm = CG_SIMPLIFY_RDP;
-    for (int i = 1; i < argc; i++) {
-        int taken = take_common("simplify", argc, argv, &i, &common);
-        if (taken == 0)
-            taken = take_fill("simplify", argc, argv, &i, &fill);
-        if (taken < 0)
-            return CLI_USAGE;
-        if (taken)
-            continue;
-        if (cli_option_is(argv[i], "--algorithm")) {
-            const char *a = cli_option_value("clip", argc, argv, &i);
-            if (!a)
-                return CLI_USAGE;
-            if (strcmp(a, "rdp") == 0)
-                algorithm = CG_SIMPLIFY_RDP;
-            else if (strcmp(a, "visvalingam") == 0)
-                algorithm = CG_SIMPLIFY_VISVALINGAM;
-            else
-                return cli_usage_error("clip",
-                                       "simplify: --algorithm: expected rdp or "
-                                       "visvalingam, got '%s'",
-                                       a);
-        } else if (take_operand("simplify", argv[i], &tolerance_text, &file) != 0) {
-            return CLI_USAGE;
-        }
-    }
-    if (!file)
-        return cli_usage_error("clip", "simplify: expected TOLERANCE IN");
-    double tolerance;
-    if (cli_parse_double("clip", "TOLERANCE", tolerance_text, &tolerance) != 0)
+    geometry_arguments common;
+    const char *positionals[2];
+    if (parse_geometry(&clip_simplify_syntax, argc, argv, &common, positionals) != CLI_OK)
         return CLI_USAGE;
-    if (!(tolerance >= 0) || isinf(tolerance))
-        return cli_usage_error("clip", "TOLERANCE: expected a finite number >= 0, got '%s'",
-                               tolerance_text);
-    simplify_args args = {fill, algorithm, tolerance};
+    double tolerance;
+    if (parse_number("TOLERANCE", positionals[0], 1, &tolerance) != CLI_OK)
+        return CLI_USAGE;
+    simplify_args args = {(cg_clip_fill)common.fill, (cg_simplify_algorithm)common.algorithm,
+                          tolerance};
     geometry_job job = {"simplify", simplify_step, &args, NULL, 0, 0, 1};
-    return run_job(&job, file, &common);
+    return run_job(&job, positionals[1], &common);
 }
 
 typedef struct minkowski_args {
@@ -482,29 +446,12 @@ static cg_status minkowski_step(const void *args, cg_clip_workspace *ws,
 /* cg clip minkowski sum|difference PATTERN PATH */
 static int minkowski(int argc, char **argv)
 {
-    const char *operation = NULL, *files[2] = {NULL, NULL};
-    int count = 0;
-    common_options common = {0};
-    minkowski_args args = {CG_MINKOWSKI_SUM, CG_CLIP_EVEN_ODD, NULL};
-    for (int i = 1; i < argc; i++) {
-        int taken = take_common("minkowski", argc, argv, &i, &common);
-        if (taken == 0)
-            taken = take_fill("minkowski", argc, argv, &i, &args.fill);
-        if (taken < 0)
-            return CLI_USAGE;
-        if (taken)
-            continue;
-        if (cli_is_option(argv[i]))
-            return cli_usage_error("clip", "minkowski: unknown option '%s'", argv[i]);
-        if (!operation)
-            operation = argv[i];
-        else if (count < 2)
-            files[count++] = argv[i];
-        else
-            return cli_usage_error("clip", "minkowski: unexpected argument '%s'", argv[i]);
-    }
-    if (count < 2)
-        return cli_usage_error("clip", "minkowski: expected sum|difference PATTERN PATH");
+    geometry_arguments common;
+    const char *positionals[3];
+    if (parse_geometry(&clip_minkowski_syntax, argc, argv, &common, positionals) != CLI_OK)
+        return CLI_USAGE;
+    const char *operation = positionals[0], *files[2] = {positionals[1], positionals[2]};
+    minkowski_args args = {CG_MINKOWSKI_SUM, (cg_clip_fill)common.fill, NULL};
     if (strcmp(operation, "sum") == 0)
         args.op = CG_MINKOWSKI_SUM;
     else if (strcmp(operation, "difference") == 0)

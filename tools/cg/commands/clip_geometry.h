@@ -3,6 +3,12 @@
 #ifndef CG_TOOL_CLIP_GEOMETRY_H
 #define CG_TOOL_CLIP_GEOMETRY_H
 
+#include "options.h"
+
+/* Their command lines (for `cg help clip`'s options too). */
+extern const cli_syntax clip_offset_syntax, clip_minkowski_syntax, clip_rect_syntax,
+    clip_triangulate_syntax, clip_simplify_syntax;
+
 /* True when name is one of these commands. */
 int clip_geometry_handles(const char *name);
 /* Runs one; argv[0] is its name.  Returns the exit status. */

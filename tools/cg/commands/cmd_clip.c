@@ -342,7 +342,14 @@ static int run(int argc, char **argv)
                           "unknown clip command '%s' (expected line, polygon or boolean)");
 }
 
-static const cli_syntax *const clip_syntaxes[] = {&line_syntax, &polygon_syntax, &boolean_syntax,
+static const cli_syntax *const clip_syntaxes[] = {&line_syntax,
+                                                  &polygon_syntax,
+                                                  &boolean_syntax,
+                                                  &clip_offset_syntax,
+                                                  &clip_minkowski_syntax,
+                                                  &clip_rect_syntax,
+                                                  &clip_triangulate_syntax,
+                                                  &clip_simplify_syntax,
                                                   NULL};
 
 const cg_command cg_command_clip = {

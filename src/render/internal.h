@@ -149,9 +149,14 @@ static inline int32_t render_snap(double value, int size)
     return t - ((double)t > s);
 }
 void render_corner_from_screen(const screen_vertex *s, int width, int height, render_corner *out);
+/* The flags of render_setup: back faces culled; the box of the pixels whose
+ * samples (not only centres) it may cover, for multisampling. */
+#define RENDER_SETUP_CULL 1
+#define RENDER_SETUP_MULTISAMPLE 2
 /* Orients the triangle for the rasterizer; returns 0 when it covers no pixel
  * centre (zero area after snapping, or box empty), -1 when it is back-facing
- * (seen clockwise) and cull is set, 1 when out is ready. */
+ * (seen clockwise) and cull (RENDER_SETUP_* flags) culls, 1 when out is
+ * ready. */
 int render_setup_fixed(const render_corner *const v[3], int width, int height, int attribute_count,
                        int cull, setup_triangle *out);
 /* The same from screen vertices (snapped here). */
@@ -307,6 +312,10 @@ struct cg_renderer {
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
+    unsigned char *sample_memory; /* multisampling: one tile's samples per worker */
+    size_t sample_memory_capacity;
+    struct render_samples *sample_buffers;
+    size_t sample_buffer_capacity;
     struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;              /* the thread count it was started for */
 };
@@ -359,7 +368,10 @@ typedef struct render_frame {
     float normal_matrix[3][3];
     render_lighting lighting;
     int shading, attribute_count, cull;
-    int fill_background; /* hidden-line: faces drawn in the background colour */
+    int samples;                           /* per pixel: 1, 2, 4, 8 or 16 (multisample.c) */
+    int setup_flags;                       /* RENDER_SETUP_* for the z-buffer's triangles */
+    struct render_samples *sample_buffers; /* per worker, samples > 1 */
+    int fill_background;                   /* hidden-line: faces drawn in the background colour */
     float background[4];
     cg_rgba8 background8;
     float *depth;

@@ -59,9 +59,29 @@ static void triangle_phase(team *tm)
     core_worker_pool_wait(tm->pool, &tm->chunks);
 }
 
+/* Draws a non-empty tile multisampled (multisample.c) with worker's
+ * samples; returns the covered sample count. */
+static size_t draw_tile_samples(render_frame *f, int worker, int x0, int y0, int x1, int y1,
+                                int tile)
+{
+    render_samples *s = &f->sample_buffers[worker];
+    render_samples_begin(s);
+    size_t fragments = 0;
+    for (int i = 0; i < f->chunk_count; i++) {
+        const render_chunk *c = &f->chunks[i];
+        for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++) {
+            const setup_triangle *t =
+                (const setup_triangle *)(c->setups + (size_t)c->bin_list[k] * f->stride);
+            fragments += render_raster_samples(f, s, t, x0, y0, x1, y1);
+        }
+    }
+    render_samples_resolve(f, s, x0, y0, x1, y1);
+    return fragments;
+}
+
 /* Clears tile `tile` and draws every triangle binned on it, chunk by chunk
- * (mesh order); returns the covered pixel count. */
-static size_t draw_tile(render_frame *f, int tile)
+ * (mesh order); returns the covered pixel (or sample) count. */
+static size_t draw_tile(render_frame *f, int worker, int tile)
 {
     int chunks = f->chunk_count;
     int x0 = tile % f->tiles_x * RENDER_TILE, y0 = tile / f->tiles_x * RENDER_TILE;
@@ -70,6 +90,10 @@ static size_t draw_tile(render_frame *f, int tile)
     int empty = 1;
     for (int i = 0; i < chunks && empty; i++)
         empty = f->chunks[i].bin_start[tile] == f->chunks[i].bin_start[tile + 1];
+    if (f->samples > 1 && !empty) {
+        f->clean_tiles[tile] = 0;
+        return draw_tile_samples(f, worker, x0, y0, x1, y1, tile);
+    }
     /* The depth of a tile left empty since it was last cleared is still
      * infinite: only its colour (the caller's image) is written. */
     render_clear_tile(f, x0, y0, x1, y1, empty, !(empty && f->clean_tiles[tile]));
@@ -93,7 +117,7 @@ static void tile_phase(team *tm, int worker)
     render_frame *f = tm->frame;
     size_t fragments = 0, tile;
     while (core_worker_pool_claim(&tm->tiles, &tile)) {
-        fragments += draw_tile(f, (int)tile);
+        fragments += draw_tile(f, worker, (int)tile);
         size_t done = core_worker_pool_finish(tm->pool, &tm->tiles);
         if (worker == 0 && f->o->progress)
             f->o->progress(f->o->progress_user, (double)done / f->tile_count);

@@ -53,6 +53,7 @@ typedef enum render_option {
     OPT_SHADING,
     OPT_THREADS,
     OPT_TEXTURE_FILTER,
+    OPT_MSAA,
     OPT_COUNT
 } render_option;
 

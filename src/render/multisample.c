@@ -20,12 +20,16 @@
  *
  * Storage is per tile and per worker (render_samples): a pixel is either
  * untouched (background, infinite depth: nothing stored), uniform (every
- * sample the same colour: one colour kept) or mixed (a colour per
- * sample), so a triangle covering whole pixels costs one colour store per
- * pixel, and only mixed pixels are averaged. */
+ * sample the same colour: one colour kept, in an array of one colour per
+ * pixel) or mixed (a colour per sample), so a triangle covering whole
+ * pixels costs one colour store per pixel, and only mixed pixels are
+ * averaged. */
 #include "pipeline.h"
 #include "attributes.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <string.h>
 
 enum { UNTOUCHED, UNIFORM, MIXED };
@@ -52,21 +56,69 @@ const int8_t (*render_sample_positions(int samples))[2]
 size_t render_samples_bytes(int samples)
 {
     size_t pixels = (size_t)RENDER_TILE * RENDER_TILE;
-    return pixels * (size_t)samples * 5 * sizeof(float) + pixels;
+    return pixels * ((size_t)samples * 5 + 4) * sizeof(float) + pixels;
 }
 
 void render_samples_bind(render_samples *s, void *memory, int samples)
 {
     size_t pixels = (size_t)RENDER_TILE * RENDER_TILE;
     s->samples = samples;
-    s->color = memory;
-    s->depth = s->color + pixels * (size_t)samples * 4;
-    s->state = (unsigned char *)(s->depth + pixels * (size_t)samples);
+    s->pixel = memory;
+    s->depth = s->pixel + pixels * 4;
+    s->color = s->depth + pixels * (size_t)samples;
+    s->state = (unsigned char *)(s->color + pixels * (size_t)samples * 4);
 }
 
-void render_samples_begin(render_samples *s)
+static inline void copy4(float *to, const float *from)
+{
+    to[0] = from[0];
+    to[1] = from[1];
+    to[2] = from[2];
+    to[3] = from[3];
+}
+
+/* Samples covered in a mask of at most 16 bits. */
+static inline int bits(unsigned mask)
+{
+    static const unsigned char nibble[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+    return nibble[mask & 15] + nibble[mask >> 4 & 15] + nibble[mask >> 8 & 15]
+           + nibble[mask >> 12 & 15];
+}
+
+void render_samples_begin(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1)
 {
     memset(s->state, UNTOUCHED, (size_t)RENDER_TILE * RENDER_TILE);
+    s->x0 = x0;
+    s->y0 = y0;
+    render_clear_tile(f, x0, y0, x1, y1, 0, 1);
+}
+
+/* A pixel whose samples all show colour c, nearest depth z: written to the
+ * image and depth buffer at once (no resolve needed). */
+static inline void write_pixel(const render_frame *f, const render_samples *s, size_t p,
+                               const float c[4], float z)
+{
+    int x = s->x0 + (int)(p % RENDER_TILE), y = s->y0 + (int)(p / RENDER_TILE);
+    f->depth[(size_t)y * f->width + x] = z;
+    unsigned char *row = f->image->data + (size_t)y * f->image->stride;
+    if (f->image->format == CG_PIXEL_RGBA8) {
+        cg_rgba8 *q = (cg_rgba8 *)row + x;
+#if defined(__SSE2__)
+        cg_srgb_encode_rgb(q, _mm_setr_ps(c[0], c[1], c[2], 0));
+#else
+        q->r = cg_srgb_encode_unit(c[0]);
+        q->g = cg_srgb_encode_unit(c[1]);
+        q->b = cg_srgb_encode_unit(c[2]);
+#endif
+        float a = c[3] < 0 ? 0 : c[3] > 1 ? 1 : c[3];
+        q->a = c[3] == 1 ? 255 : (uint8_t)(a * 255 + 0.5f);
+    } else {
+        cg_rgbaf *q = (cg_rgbaf *)row + x;
+        q->r = c[0];
+        q->g = c[1];
+        q->b = c[2];
+        q->a = c[3];
+    }
 }
 
 /* The samples of pixel p before a fragment writes some of them: an untouched
@@ -80,11 +132,11 @@ static inline void make_writable(const render_frame *f, render_samples *s, size_
         float *depth = s->depth + p * (size_t)n;
         for (int k = 0; k < n; k++) {
             depth[k] = INFINITY;
-            memcpy(color + 4 * k, f->background, 4 * sizeof(float));
+            copy4(color + 4 * k, f->background);
         }
     } else if (s->state[p] == UNIFORM) {
-        for (int k = 1; k < n; k++)
-            memcpy(color + 4 * k, color, 4 * sizeof(float));
+        for (int k = 0; k < n; k++)
+            copy4(color + 4 * k, s->pixel + 4 * p);
     }
 }
 
@@ -164,9 +216,9 @@ static inline int shade(const render_frame *f, const setup_triangle *t,
 static SAMPLES_SPECIALIZE void fragment(const render_frame *f, render_samples *s,
                                         const setup_triangle *t, const attribute_plane *plane,
                                         const sample_offsets *o, size_t p, unsigned covered,
-                                        float l1, float l2, float zc, float cutoff, const int mode)
+                                        float l1, float l2, float zc, float cutoff, const int mode,
+                                        const int n)
 {
-    const int n = s->samples;
     const unsigned full = (1u << n) - 1;
     float *depth = s->depth + p * (size_t)n;
     int untouched = s->state[p] == UNTOUCHED;
@@ -184,26 +236,30 @@ static SAMPLES_SPECIALIZE void fragment(const render_frame *f, render_samples *s
         return;
     if (cutoff > 0 && !(pass &= coverage_of_alpha(alpha, cutoff, n)))
         return;
-    float *color = s->color + p * (size_t)n * 4;
     if (pass == full) {
-        for (int k = 0; k < n; k++)
+        float nearest = z[0];
+        for (int k = 0; k < n; k++) {
             depth[k] = z[k];
-        memcpy(color, c, sizeof c);
+            nearest = z[k] < nearest ? z[k] : nearest;
+        }
+        copy4(s->pixel + 4 * p, c);
         s->state[p] = UNIFORM;
+        write_pixel(f, s, p, c, nearest);
         return;
     }
     make_writable(f, s, p);
+    float *color = s->color + p * (size_t)n * 4;
     for (int k = 0; k < n; k++)
         if (pass >> k & 1) {
             depth[k] = z[k];
-            memcpy(color + 4 * k, c, sizeof c);
+            copy4(color + 4 * k, c);
         }
     s->state[p] = MIXED;
 }
 
 static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_samples *s,
                                                 const setup_triangle *t, int tx, int ty, int x0,
-                                                int y0, int x1, int y1, const int mode)
+                                                int y0, int x1, int y1, const int mode, const int n)
 {
     if (t->box[0] > x0)
         x0 = t->box[0];
@@ -215,7 +271,6 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
         y1 = t->box[3];
     if (x0 >= x1 || y0 >= y1)
         return 0;
-    const int n = s->samples;
     const unsigned full = (1u << n) - 1;
     raster_edges e;
     render_edges_at(t, x0, y0, &e);
@@ -256,23 +311,33 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
                 if (!covered)
                     continue;
             }
-            count += (size_t)__builtin_popcount(covered);
+            count += (size_t)(covered == full ? n : bits(covered));
             float l1 = (float)w[1] * ia, l2 = (float)w[2] * ia;
             fragment(f, s, t, &plane, &o, row + (size_t)i, covered, l1, l2,
-                     z0 + l1 * dz1 + l2 * dz2, cutoff, mode);
+                     z0 + l1 * dz1 + l2 * dz2, cutoff, mode, n);
         }
     }
     return count;
 }
 
+/* Specialized for each shading mode and sample count: both constant in the
+ * per-pixel loops. */
+#define SAMPLES_CASE(mode)                                                     \
+    switch (s->samples) {                                                      \
+    case 2: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 2);   \
+    case 4: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 4);   \
+    case 8: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 8);   \
+    default: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 16); \
+    }
+
 size_t render_raster_samples(const render_frame *f, render_samples *s, const setup_triangle *t,
                              int x0, int y0, int x1, int y1)
 {
     switch (f->shading) {
-    case MODE_FLAT: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, MODE_FLAT);
-    case MODE_GOURAUD: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, MODE_GOURAUD);
-    case MODE_TEXTURED: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, MODE_TEXTURED);
-    default: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, MODE_PHONG);
+    case MODE_FLAT: SAMPLES_CASE(MODE_FLAT);
+    case MODE_GOURAUD: SAMPLES_CASE(MODE_GOURAUD);
+    case MODE_TEXTURED: SAMPLES_CASE(MODE_TEXTURED);
+    default: SAMPLES_CASE(MODE_PHONG);
     }
 }
 
@@ -289,47 +354,22 @@ static float pairwise(const float *v, int n, int stride)
 
 void render_samples_resolve(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1)
 {
-    const int n = s->samples, rgba8 = f->image->format == CG_PIXEL_RGBA8;
+    const int n = s->samples;
     const float inverse = 1.0f / (float)n;
+    /* Untouched and uniform pixels are in the image already. */
     for (int y = y0; y < y1; y++) {
-        float *zrow = f->depth + (size_t)y * f->width;
-        unsigned char *row = f->image->data + (size_t)y * f->image->stride;
+        const unsigned char *state = s->state + (size_t)(y - y0) * RENDER_TILE;
         for (int x = x0; x < x1; x++) {
+            if (state[x - x0] != MIXED)
+                continue;
             size_t p = (size_t)(y - y0) * RENDER_TILE + (size_t)(x - x0);
             const float *depth = s->depth + p * (size_t)n, *color = s->color + p * (size_t)n * 4;
-            float c[4];
-            if (s->state[p] == UNTOUCHED) {
-                zrow[x] = INFINITY;
-                if (rgba8)
-                    ((cg_rgba8 *)row)[x] = f->background8;
-                else
-                    memcpy((cg_rgbaf *)row + x, f->background, sizeof(cg_rgbaf));
-                continue;
-            }
-            float z = depth[0];
+            float z = depth[0], c[4];
             for (int k = 1; k < n; k++)
                 z = depth[k] < z ? depth[k] : z;
-            zrow[x] = z;
-            if (s->state[p] == UNIFORM) {
-                memcpy(c, color, sizeof c);
-            } else {
-                for (int j = 0; j < 4; j++)
-                    c[j] = pairwise(color + j, n, 4) * inverse;
-            }
-            if (rgba8) {
-                cg_rgba8 *q = (cg_rgba8 *)row + x;
-                q->r = cg_srgb_encode_unit(c[0]);
-                q->g = cg_srgb_encode_unit(c[1]);
-                q->b = cg_srgb_encode_unit(c[2]);
-                float a = c[3] < 0 ? 0 : c[3] > 1 ? 1 : c[3];
-                q->a = (uint8_t)(a * 255 + 0.5f);
-            } else {
-                cg_rgbaf *q = (cg_rgbaf *)row + x;
-                q->r = c[0];
-                q->g = c[1];
-                q->b = c[2];
-                q->a = c[3];
-            }
+            for (int j = 0; j < 4; j++)
+                c[j] = pairwise(color + j, n, 4) * inverse;
+            write_pixel(f, s, p, c, z);
         }
     }
 }

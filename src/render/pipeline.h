@@ -125,10 +125,12 @@ void render_bin_chunk(render_frame *f, render_chunk *c);
 /* ---- multisampling (multisample.c) ---------------------------------------- */
 
 /* The samples of one tile, kept by one worker while it draws the tile:
- * colour (linear RGBA) and depth per sample, and a state per pixel. */
+ * depth and colour (linear RGBA) per sample, the colour of pixels whose
+ * samples all agree, and a state per pixel. */
 typedef struct render_samples {
     int samples;
-    float *color, *depth;
+    int x0, y0; /* the tile's corner */
+    float *pixel, *depth, *color;
     unsigned char *state;
 } render_samples;
 
@@ -139,14 +141,16 @@ const int8_t (*render_sample_positions(int samples))[2];
  * (float-aligned). */
 size_t render_samples_bytes(int samples);
 void render_samples_bind(render_samples *s, void *memory, int samples);
-/* Before a tile: every pixel untouched (background, infinite depth). */
-void render_samples_begin(render_samples *s);
+/* Before the tile [x0, x1) x [y0, y1): every pixel untouched (the image
+ * and depth buffer cleared to the background and infinity). */
+void render_samples_begin(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1);
 /* t drawn into the tile [x0, x1) x [y0, y1) (x0, y0 its corner); returns
  * the number of covered samples. */
 size_t render_raster_samples(const render_frame *f, render_samples *s, const setup_triangle *t,
                              int x0, int y0, int x1, int y1);
-/* The tile's pixels averaged in linear light into the image, and the
- * nearest sample's depth into the depth buffer. */
+/* The tile's pixels whose samples differ averaged in linear light into the
+ * image, and their nearest sample's depth into the depth buffer (pixels
+ * whose samples agree are written as they are drawn). */
 void render_samples_resolve(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1);
 
 /* ---- the tiles (clear.c) and the team of threads (team.c) ------------------- */

@@ -65,7 +65,7 @@ static size_t draw_tile_samples(render_frame *f, int worker, int x0, int y0, int
                                 int tile)
 {
     render_samples *s = &f->sample_buffers[worker];
-    render_samples_begin(s);
+    render_samples_begin(f, s, x0, y0, x1, y1);
     size_t fragments = 0;
     for (int i = 0; i < f->chunk_count; i++) {
         const render_chunk *c = &f->chunks[i];

@@ -190,8 +190,8 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
     setup_lighting(f, &camera, &view);
     f->fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
     f->shading = f->fill_background ? MODE_FLAT : (int)o->shading;
-    if (!f->fill_background && (r->textured || o->shading == CG_SHADING_UNLIT))
-        f->shading = MODE_TEXTURED; /* per pixel, textures sampled (textured.c) */
+    if (!f->fill_background && (r->textured || r->blended || o->shading == CG_SHADING_UNLIT))
+        f->shading = MODE_TEXTURED; /* per pixel, textures sampled, alpha (textured.c) */
     f->attribute_count = f->shading == MODE_FLAT       ? 0
                          : f->shading == MODE_GOURAUD  ? 3
                          : f->shading == MODE_TEXTURED ? TEXTURED_ATTRIBUTES
@@ -199,6 +199,8 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
                                                        : 6;
     f->cull = o->cull == CG_CULL_BACK;
     f->samples = o->msaa > 1 && o->algorithm == CG_RENDER_ZBUFFER ? o->msaa : 1;
+    f->use_samples = o->algorithm == CG_RENDER_ZBUFFER
+                     && (f->samples > 1 || (r->blended && !f->fill_background));
     f->setup_flags = (f->cull ? RENDER_SETUP_CULL : 0)
                      | (f->samples > 1 ? RENDER_SETUP_MULTISAMPLE : 0);
     f->background[0] = o->background.r;
@@ -307,7 +309,7 @@ static cg_status draw_faces(render_frame *f)
         f->thread_count = (int)r->triangle_count;
     int painter = o->algorithm != CG_RENDER_ZBUFFER;
     if (frame_vertex_buffers(f) != CG_OK || frame_chunks(f) != CG_OK
-        || (f->samples > 1 && frame_sample_buffers(f) != CG_OK))
+        || (f->use_samples && frame_sample_buffers(f) != CG_OK))
         return CG_ENOMEM;
     size_t fragments;
     render_run_phases(f, painter, &fragments);

@@ -260,6 +260,8 @@ typedef struct prepared_vertex {
 typedef struct render_material {
     cg_texture *base_texture; /* NULL: the base colour alone */
     float alpha;              /* base colour factor's alpha */
+    int blend;                /* alpha mode BLEND (OBJ d below 1): blended over
+                                 what lies behind, after the opaque faces */
     float alpha_cutoff;       /* alpha mode MASK: fragments below are dropped;
                                  0 for every other mode (drawn opaque) */
     cg_texture_wrap wrap_u, wrap_v;
@@ -283,6 +285,7 @@ struct cg_renderer {
     size_t material_count;
     render_material *materials;
     int textured; /* some material has a texture and the mesh coordinates */
+    int blended;  /* some face has a BLEND material */
     char *warnings;
     uint32_t *face_triangle; /* per face, its triangle of largest area, whose
                                  turn is the face's (culling its edges) */
@@ -369,8 +372,10 @@ typedef struct render_frame {
     render_lighting lighting;
     int shading, attribute_count, cull;
     int samples;                           /* per pixel: 1, 2, 4, 8 or 16 (multisample.c) */
+    int use_samples;                       /* tiles drawn through multisample.c: more than one
+                        sample, or blended faces (which need linear colour) */
     int setup_flags;                       /* RENDER_SETUP_* for the z-buffer's triangles */
-    struct render_samples *sample_buffers; /* per worker, samples > 1 */
+    struct render_samples *sample_buffers; /* per worker, with use_samples */
     int fill_background;                   /* hidden-line: faces drawn in the background colour */
     float background[4];
     cg_rgba8 background8;

@@ -34,6 +34,7 @@
 
 enum { UNTOUCHED, UNIFORM, MIXED };
 
+static const int8_t positions1[1][2] = {{0, 0}};
 static const int8_t positions2[2][2] = {{4, 4}, {-4, -4}};
 static const int8_t positions4[4][2] = {{-2, -6}, {6, -2}, {-6, 2}, {2, 6}};
 static const int8_t positions8[8][2] = {{1, -3}, {-1, 3},  {5, 1}, {-3, -5},
@@ -45,6 +46,7 @@ static const int8_t positions16[16][2] = {{1, 1},  {-1, -3}, {-3, 2}, {4, -1}, {
 const int8_t (*render_sample_positions(int samples))[2]
 {
     switch (samples) {
+    case 1: return positions1;
     case 2: return positions2;
     case 4: return positions4;
     case 8: return positions8;
@@ -204,6 +206,55 @@ static inline int shade(const render_frame *f, const setup_triangle *t,
     return attribute_pixel(f, t, plane, l1, l2, mode, c, alpha);
 }
 
+/* c over d in linear light (straight alpha a): Porter and Duff's over. */
+static inline void over(float d[4], const float c[4], float a)
+{
+    for (int j = 0; j < 3; j++)
+        d[j] = c[j] * a + d[j] * (1 - a);
+    d[3] = a + d[3] * (1 - a);
+}
+
+/* A fragment of a BLEND material: depth-tested at its samples but not
+ * written; its colour laid over what each passing sample shows. */
+static void blend_fragment(const render_frame *f, render_samples *s, const setup_triangle *t,
+                           const attribute_plane *plane, const sample_offsets *o, size_t p,
+                           unsigned covered, float l1, float l2, float zc, int n)
+{
+    const unsigned full = (1u << n) - 1;
+    float *depth = s->depth + p * (size_t)n;
+    int untouched = s->state[p] == UNTOUCHED;
+    unsigned pass = 0;
+    for (int k = 0; k < n; k++)
+        if ((covered >> k & 1) && (untouched || zc + o->z[k] < depth[k]))
+            pass |= 1u << k;
+    if (!pass)
+        return;
+    float c[4], alpha;
+    if (!attribute_pixel(f, t, plane, l1, l2, MODE_TEXTURED, c, &alpha))
+        return;
+    float a = alpha < 0 ? 0 : alpha > 1 ? 1 : alpha;
+    if (pass == full && s->state[p] != MIXED) {
+        float *pixel = s->pixel + 4 * p, nearest = INFINITY;
+        if (untouched) {
+            for (int k = 0; k < n; k++)
+                depth[k] = INFINITY;
+            copy4(pixel, f->background);
+        }
+        for (int k = 0; k < n; k++)
+            nearest = depth[k] < nearest ? depth[k] : nearest;
+        over(pixel, c, a);
+        s->state[p] = UNIFORM;
+        write_pixel(f, s, p, pixel, nearest);
+        return;
+    }
+    make_writable(f, s, p);
+    float *color = s->color + p * (size_t)n * 4;
+    for (int k = 0; k < n; k++)
+        if (pass >> k & 1)
+            over(color + 4 * k, c, a);
+    s->state[p] = MIXED;
+}
+
 #if defined(__GNUC__)
 #define SAMPLES_SPECIALIZE __attribute__((always_inline)) inline
 #else
@@ -281,8 +332,11 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
     if (mode != MODE_FLAT)
         attribute_setup(t, &e, ia, mode == MODE_GOURAUD ? 3 : f->attribute_count, &plane);
     float cutoff = 0;
-    if (mode == MODE_TEXTURED && t->material != RENDER_NO_MATERIAL)
+    int blend = 0;
+    if (mode == MODE_TEXTURED && t->material != RENDER_NO_MATERIAL) {
         cutoff = f->r->materials[t->material].alpha_cutoff;
+        blend = f->r->materials[t->material].blend;
+    }
     size_t count = 0;
     for (int y = y0; y < y1;
          y++, e.w[0] += e.step_y[0], e.w[1] += e.step_y[1], e.w[2] += e.step_y[2]) {
@@ -313,8 +367,12 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
             }
             count += (size_t)(covered == full ? n : bits(covered));
             float l1 = (float)w[1] * ia, l2 = (float)w[2] * ia;
-            fragment(f, s, t, &plane, &o, row + (size_t)i, covered, l1, l2,
-                     z0 + l1 * dz1 + l2 * dz2, cutoff, mode, n);
+            if (mode == MODE_TEXTURED && blend)
+                blend_fragment(f, s, t, &plane, &o, row + (size_t)i, covered, l1, l2,
+                               z0 + l1 * dz1 + l2 * dz2, n);
+            else
+                fragment(f, s, t, &plane, &o, row + (size_t)i, covered, l1, l2,
+                         z0 + l1 * dz1 + l2 * dz2, cutoff, mode, n);
         }
     }
     return count;
@@ -324,6 +382,7 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
  * per-pixel loops. */
 #define SAMPLES_CASE(mode)                                                     \
     switch (s->samples) {                                                      \
+    case 1: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 1);   \
     case 2: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 2);   \
     case 4: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 4);   \
     case 8: return raster_samples(f, s, t, x0, y0, x0, y0, x1, y1, mode, 8);   \

@@ -134,8 +134,8 @@ typedef struct render_samples {
     unsigned char *state;
 } render_samples;
 
-/* The standard sample positions for 2, 4, 8 or 16 samples (NULL for another
- * count): x, y in 1/16 pixel from the pixel centre, y down. */
+/* The standard sample positions for 1 (the centre), 2, 4, 8 or 16 samples
+ * (NULL for another count): x, y in 1/16 pixel from the pixel centre, y down. */
 const int8_t (*render_sample_positions(int samples))[2];
 /* Bytes of one tile's samples; render_samples_bind lays them out in memory
  * (float-aligned). */

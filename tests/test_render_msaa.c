@@ -381,6 +381,50 @@ static void threads_and_counts(void)
     cg_mesh_free(m);
 }
 
+/* Alpha-to-coverage: a square of a MASK material (cutoff 0.5) whose alpha
+ * is a, drawn white on black: at one sample dropped below the cutoff and
+ * whole above it; at N samples round(a' N) of them, a' the alpha mapped so
+ * that the cutoff falls at one half. */
+static void alpha_to_coverage(void)
+{
+    static const float alphas[] = {0.1f, 0.3f, 0.45f, 0.6f, 0.7f, 0.9f, 1.0f};
+    for (size_t ai = 0; ai < sizeof alphas / sizeof *alphas; ai++) {
+        float alpha = alphas[ai];
+        long long v[3][2] = {{0, 0}, {SIDE * 256, 0}, {0, SIDE * 256}};
+        cg_mesh *m = triangle_mesh(v);
+        CHECK(m != NULL);
+        cg_mesh_material material = cg_mesh_material_default();
+        material.base_color = (cg_rgbaf){1, 1, 1, alpha};
+        material.alpha_mode = CG_MESH_ALPHA_MASK;
+        material.alpha_cutoff = 0.5;
+        uint32_t face_material = 0;
+        m->materials = &material;
+        m->material_count = 1;
+        m->face_materials = &face_material;
+        for (int n = 1; n <= 16; n *= 2) {
+            cg_render_options o;
+            parallel_options(&o, n);
+            cg_image *image;
+            CHECK(cg_image_create(&image, SIDE, SIDE, CG_PIXEL_RGBAF) == CG_OK);
+            cg_error err;
+            CHECK(cg_render(m, &o, image, &err) == CG_OK);
+            double mapped = alpha < 0.5 ? alpha : 0.5 + 0.5 * (alpha - 0.5) / 0.5;
+            int k = n == 1 ? (alpha >= 0.5) : (int)floor(mapped * n + 0.5);
+            if (k > n)
+                k = n;
+            /* A pixel well inside the triangle. */
+            CHECK_MSG(cg_image_row_rgbaf(image, 5)[5].r * (float)n == (float)k,
+                      "alpha %g, %d samples: %g, expected %d/%d", alpha, n,
+                      cg_image_row_rgbaf(image, 5)[5].r, k, n);
+            cg_image_free(image);
+        }
+        m->materials = NULL;
+        m->material_count = 0;
+        m->face_materials = NULL;
+        cg_mesh_free(m);
+    }
+}
+
 static void bad_counts(void)
 {
     cg_mesh *m;
@@ -418,6 +462,7 @@ int main(int argc, char **argv)
     CHECK_GROUP(closed_mesh);
     CHECK_GROUP(linear_mix);
     CHECK_GROUP(threads_and_counts);
+    CHECK_GROUP(alpha_to_coverage);
     CHECK_GROUP(bad_counts);
     return check_finish();
 }

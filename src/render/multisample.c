@@ -400,15 +400,29 @@ size_t render_raster_samples(const render_frame *f, render_samples *s, const set
     }
 }
 
-/* Sum of v[0..n) for n a power of two, pairwise: n equal values sum to
- * exactly n times the value, so a pixel whose samples agree resolves to
- * that colour exactly. */
-static float pairwise(const float *v, int n, int stride)
+/* The mean of the n colours (n a power of two) of a pixel's samples,
+ * summed pairwise: n equal colours sum to exactly n times the colour, so a
+ * pixel whose samples agree resolves to that colour exactly. */
+static inline void mean(const float *color, int n, float inverse, float out[4])
 {
-    if (n == 1)
-        return v[0];
-    int h = n / 2;
-    return pairwise(v, h, stride) + pairwise(v + (size_t)h * stride, h, stride);
+#if defined(__SSE2__)
+    __m128 t[16];
+    for (int k = 0; k < n; k++)
+        t[k] = _mm_loadu_ps(color + 4 * k);
+    for (int w = n; w > 1; w /= 2)
+        for (int k = 0; k < w / 2; k++)
+            t[k] = _mm_add_ps(t[2 * k], t[2 * k + 1]);
+    _mm_storeu_ps(out, _mm_mul_ps(t[0], _mm_set1_ps(inverse)));
+#else
+    float t[16][4];
+    memcpy(t, color, (size_t)n * sizeof t[0]);
+    for (int w = n; w > 1; w /= 2)
+        for (int k = 0; k < w / 2; k++)
+            for (int j = 0; j < 4; j++)
+                t[k][j] = t[2 * k][j] + t[2 * k + 1][j];
+    for (int j = 0; j < 4; j++)
+        out[j] = t[0][j] * inverse;
+#endif
 }
 
 void render_samples_resolve(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1)
@@ -426,8 +440,7 @@ void render_samples_resolve(render_frame *f, render_samples *s, int x0, int y0, 
             float z = depth[0], c[4];
             for (int k = 1; k < n; k++)
                 z = depth[k] < z ? depth[k] : z;
-            for (int j = 0; j < 4; j++)
-                c[j] = pairwise(color + j, n, 4) * inverse;
+            mean(color, n, inverse, c);
             write_pixel(f, s, p, c, z);
         }
     }

@@ -122,6 +122,10 @@ typedef struct cg_render_options {
      * linear light.  CG_EINVAL for another count, or for more than one with
      * the painter's algorithms. */
     int msaa;
+    /* Non-zero: shadow maps for the directional lights (2048 x 2048 texels
+     * over the mesh's world box, percentage-closer filtered, slope-scaled
+     * bias), in every algorithm and shading of the rasterizer (default 0). */
+    int shadows;
     double crease_angle; /* radians: when the mesh has no normals, faces meeting at a
                             larger angle keep separate vertex normals (default 60 deg) */
     /* Called now and then from the calling thread with the fraction done

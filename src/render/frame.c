@@ -91,6 +91,7 @@ void render_buffers_free(cg_renderer *r)
     free(r->frame_states);
     free(r->clean_tiles);
     r->clean_tiles = NULL;
+    render_shadows_free(r);
     free(r->sample_memory);
     free(r->sample_buffers);
     r->sample_memory = NULL;
@@ -351,6 +352,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     cg_status status = frame_begin(r, image, &f);
     if (status == CG_OK)
         status = frame_depth_buffers(&f);
+    if (status == CG_OK)
+        status = render_shadows_build(&f);
     if (status != CG_OK)
         return status;
     unsigned outside = object_outside(&f);

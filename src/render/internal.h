@@ -18,6 +18,15 @@
 
 /* ---- shading: the one place that computes the colour of a point --------- */
 
+/* A directional light's shadow map (shadow.c): world point -> texel u, v
+ * and depth along the light's direction by the rows of m. */
+typedef struct render_shadow_map {
+    int size;
+    float m[3][4];
+    float texel; /* world units per texel */
+    float *depth;
+} render_shadow_map;
+
 typedef struct render_lighting {
     int count; /* lights[0] is the ambient light */
     cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
@@ -33,7 +42,13 @@ typedef struct render_lighting {
     float kd, ks, shininess;
     float specular_color[3];
     int blinn;
+    const render_shadow_map *shadow[CG_RENDER_MAX_LIGHTS]; /* per directional light, or NULL */
 } render_lighting;
+
+/* The fraction (0 to 1) of the light of shadow map `map` that reaches the
+ * world point `position` whose normal makes cos theta = nl with the light:
+ * 3 x 3 percentage-closer filtering, slope-scaled bias (shadow.c). */
+float render_shadow_visibility(const render_shadow_map *map, const float position[3], float nl);
 
 /* Fills the float fields of l from its lights (ambient and directional
  * only, which is what the renderer makes) and material. */
@@ -315,6 +330,7 @@ struct cg_renderer {
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
+    render_shadow_map shadow_maps[CG_RENDER_MAX_LIGHTS]; /* kept between frames */
     unsigned char *sample_memory; /* multisampling: one tile's samples per worker */
     size_t sample_memory_capacity;
     struct render_samples *sample_buffers;
@@ -400,6 +416,10 @@ void render_clip_position(const render_frame *frame, size_t i, double c[4]);
 void render_world_position(const render_frame *frame, size_t i, float out[3]);
 /* Frees the buffers a renderer keeps between frames. */
 void render_buffers_free(cg_renderer *r);
+/* With options.shadows, the shadow map of each directional light of the
+ * frame into f->lighting (CG_ENOMEM); frees them. */
+cg_status render_shadows_build(render_frame *f);
+void render_shadows_free(cg_renderer *r);
 
 /* Stores the flat (or Phong base) colour of a set-up triangle, encoded too. */
 void render_finish_setup(const render_frame *frame, setup_triangle *t, const float color[3]);

@@ -204,6 +204,8 @@ static cg_status check_options(const cg_render_options *o)
         return CG_EINVAL;
     if (o->msaa > 1 && o->algorithm != CG_RENDER_ZBUFFER)
         return CG_EINVAL;
+    if (o->shadows != 0 && o->shadows != 1)
+        return CG_EINVAL;
     for (int i = 0; i < o->light_count; i++)
         if (!(cg_vec3_length(o->lights[i].direction) > 0)
             || !isfinite(cg_vec3_length(o->lights[i].direction)) || !(o->lights[i].intensity >= 0)

@@ -267,6 +267,13 @@ static const cli_option pipeline_options[] = {
 
 /* The rasterizer's own (the ray tracer sees both faces and draws no edges). */
 static const cli_option raster_options[] = {
+    {.name = "--shadows",
+     .kind = CLI_FLAG,
+     .offset = RENDER(shadows),
+     .flag_value = 1,
+     .given = GIVEN(OPT_SHADOWS),
+     .help = "shadow maps for the directional lights (percentage-closer\n"
+             "filtered; the ray tracer casts shadow rays instead)"},
     {.name = "--msaa",
      .kind = CLI_CUSTOM,
      .parse = parse_msaa,
@@ -410,15 +417,15 @@ static int first_given(const render_request *r, const render_option *set, int co
 static int check_combinations(const char *command, int trace_only, const render_request *r)
 {
     static const render_option raster_only[] = {
-        OPT_CULL,       OPT_WIREFRAME,    OPT_HIDDEN_LINE,    OPT_EDGES,
-        OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH, OPT_TEXTURE_FILTER, OPT_MSAA};
+        OPT_CULL,         OPT_WIREFRAME,      OPT_HIDDEN_LINE, OPT_EDGES,  OPT_EDGE_COLOR,
+        OPT_OUTPUT_DEPTH, OPT_TEXTURE_FILTER, OPT_MSAA,        OPT_SHADOWS};
     static const render_option trace_options[] = {OPT_SPP,        OPT_DEPTH, OPT_STATS,
                                                   OPT_NO_SHADOWS, OPT_FLOOR, OPT_SCENE};
     /* A scene file brings its own objects and normals, and is rendered
      * through cg/scene.h, which keeps no ray or depth statistics. */
     static const render_option not_for_scenes[] = {
-        OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,  OPT_FLOOR,
-        OPT_SCENE,  OPT_STATS,      OPT_TEXTURE_FILTER};
+        OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,   OPT_FLOOR,
+        OPT_SCENE,  OPT_STATS,      OPT_TEXTURE_FILTER, OPT_SHADOWS};
     const raytrace_settings *s = &r->trace;
     int k;
     if (trace_only && r->algorithm != RENDER_RAYTRACE)
@@ -430,7 +437,7 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command, "--eye and --view-from exclude each other");
     if (render_request_has(r, OPT_UP) && !(cg_vec3_length(s->common.up) > 0))
         return cli_usage_error(command, "--up: the up vector must not be zero");
-    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 7)) >= 0)
+    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 8)) >= 0)
         return cli_usage_error(command, "%s: not available with a scene file (%s)",
                                render_option_name((render_option)k),
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
@@ -440,7 +447,7 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command,
                                "--shading unlit: only the rasterizer draws mesh files unlit "
                                "(use --algorithm zbuffer or painter on a mesh file)");
-    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 8)) >= 0)
+    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 9)) >= 0)
         return cli_usage_error(command,
                                "%s: not available with the ray tracer (use --algorithm "
                                "zbuffer or painter)",

@@ -54,6 +54,7 @@ typedef enum render_option {
     OPT_THREADS,
     OPT_TEXTURE_FILTER,
     OPT_MSAA,
+    OPT_SHADOWS,
     OPT_COUNT
 } render_option;
 

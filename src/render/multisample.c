@@ -176,9 +176,11 @@ static void offsets_setup(const setup_triangle *t, const raster_edges *e, int n,
 static inline unsigned coverage_of_alpha(float alpha, float cutoff, int n)
 {
     float a = alpha < cutoff ? 0.5f * alpha / cutoff
-                             : 0.5f + 0.5f * (alpha - cutoff) / (1 - cutoff);
+              : cutoff < 1   ? 0.5f + 0.5f * (alpha - cutoff) / (1 - cutoff)
+                             : 1; /* a cutoff of 1 keeps alpha 1 whole */
     if (!(a > 0))
         return 0;
+    a = a < 1 ? a : 1;
     int k = (int)(a * (float)n + 0.5f);
     return k >= n ? (1u << n) - 1 : (1u << k) - 1;
 }

@@ -83,12 +83,16 @@ static void map_point(const render_shadow_map *map, const float p[3], float out[
 static void draw_triangle(render_shadow_map *map, const float *a, const float *b, const float *c)
 {
     double area = (double)(b[0] - a[0]) * (c[1] - a[1]) - (double)(b[1] - a[1]) * (c[0] - a[0]);
-    if (!(fabs(area) > 0))
+    if (!(fabs(area) > 0) || !isfinite(area) || !isfinite(a[2] + b[2] + c[2]))
         return;
     double x0 = fmin(a[0], fmin(b[0], c[0])), x1 = fmax(a[0], fmax(b[0], c[0]));
     double y0 = fmin(a[1], fmin(b[1], c[1])), y1 = fmax(a[1], fmax(b[1], c[1]));
-    int ix0 = (int)fmax(0, ceil(x0 - 0.5)), ix1 = (int)fmin(map->size - 1, floor(x1 - 0.5));
-    int iy0 = (int)fmax(0, ceil(y0 - 0.5)), iy1 = (int)fmin(map->size - 1, floor(y1 - 0.5));
+    /* Clamped to the map before the conversions. */
+    double last = map->size - 1;
+    int ix0 = (int)fmin(fmax(0, ceil(x0 - 0.5)), last + 1);
+    int ix1 = (int)fmax(fmin(last, floor(x1 - 0.5)), -1);
+    int iy0 = (int)fmin(fmax(0, ceil(y0 - 0.5)), last + 1);
+    int iy1 = (int)fmax(fmin(last, floor(y1 - 0.5)), -1);
     for (int y = iy0; y <= iy1; y++)
         for (int x = ix0; x <= ix1; x++) {
             double px = x + 0.5, py = y + 0.5;
@@ -160,8 +164,10 @@ float render_shadow_visibility(const render_shadow_map *map, const float positio
     map_point(map, position, q);
     float tangent = nl > 0 ? sqrtf(fmaxf(0, 1 - nl * nl)) / nl : 4;
     float bias = map->texel * fminf(1.5f + 2 * tangent, 8);
-    int x = (int)floorf(q[0]), y = (int)floorf(q[1]);
-    if (!(q[0] >= 0 && q[1] >= 0 && x < map->size && y < map->size))
+    if (!(q[0] >= 0 && q[1] >= 0 && q[0] < (float)map->size && q[1] < (float)map->size))
+        return 1; /* outside the map (or not finite): lit */
+    int x = (int)q[0], y = (int)q[1];
+    if (x >= map->size || y >= map->size)
         return 1;
     int lit = 0, count = 0;
     for (int dy = -1; dy <= 1; dy++)

@@ -115,6 +115,17 @@ typedef struct cg_render_options {
      * the level of detail from the screen-space derivatives of the texture
      * coordinates at each pixel). */
     cg_texture_filter texture_filter;
+    /* Samples per pixel of the z-buffer: 1 (default; 0 means 1 too), 2, 4, 8
+     * or 16, at the standard sample positions of Direct3D and Vulkan.  Each
+     * sample has its own coverage (top-left rule) and depth; a triangle is
+     * shaded once per pixel, at its centre; the samples are averaged in
+     * linear light.  CG_EINVAL for another count, or for more than one with
+     * the painter's algorithms. */
+    int msaa;
+    /* Non-zero: shadow maps for the directional lights (2048 x 2048 texels
+     * over the mesh's world box, percentage-closer filtered, slope-scaled
+     * bias), in every algorithm and shading of the rasterizer (default 0). */
+    int shadows;
     double crease_angle; /* radians: when the mesh has no normals, faces meeting at a
                             larger angle keep separate vertex normals (default 60 deg) */
     /* Called now and then from the calling thread with the fraction done

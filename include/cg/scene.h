@@ -113,6 +113,7 @@ typedef struct cg_scene {
     int samples;   /* ray tracer: samples per pixel */
     int max_depth; /* ray tracer: recursion limit */
     int shadows;   /* ray tracer: shadow rays */
+    int msaa;      /* z-buffer: samples per pixel, 1, 2, 4, 8 or 16 */
 
     cg_light *lights;
     size_t light_count;

@@ -91,6 +91,12 @@ void render_buffers_free(cg_renderer *r)
     free(r->frame_states);
     free(r->clean_tiles);
     r->clean_tiles = NULL;
+    render_shadows_free(r);
+    free(r->sample_memory);
+    free(r->sample_buffers);
+    r->sample_memory = NULL;
+    r->sample_buffers = NULL;
+    r->sample_memory_capacity = r->sample_buffer_capacity = 0;
     r->clean_tile_capacity = 0;
     r->frame_vertices = NULL;
     r->frame_attributes = NULL;
@@ -185,14 +191,19 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
     setup_lighting(f, &camera, &view);
     f->fill_background = o->edges == CG_EDGES_HIDDEN_LINE;
     f->shading = f->fill_background ? MODE_FLAT : (int)o->shading;
-    if (!f->fill_background && (r->textured || o->shading == CG_SHADING_UNLIT))
-        f->shading = MODE_TEXTURED; /* per pixel, textures sampled (textured.c) */
+    if (!f->fill_background && (r->textured || r->blended || o->shading == CG_SHADING_UNLIT))
+        f->shading = MODE_TEXTURED; /* per pixel, textures sampled, alpha (textured.c) */
     f->attribute_count = f->shading == MODE_FLAT       ? 0
                          : f->shading == MODE_GOURAUD  ? 3
                          : f->shading == MODE_TEXTURED ? TEXTURED_ATTRIBUTES
                          : r->varying_color            ? 9
                                                        : 6;
     f->cull = o->cull == CG_CULL_BACK;
+    f->samples = o->msaa > 1 && o->algorithm == CG_RENDER_ZBUFFER ? o->msaa : 1;
+    f->use_samples = o->algorithm == CG_RENDER_ZBUFFER
+                     && (f->samples > 1 || (r->blended && !f->fill_background));
+    f->setup_flags = (f->cull ? RENDER_SETUP_CULL : 0)
+                     | (f->samples > 1 ? RENDER_SETUP_MULTISAMPLE : 0);
     f->background[0] = o->background.r;
     f->background[1] = o->background.g;
     f->background[2] = o->background.b;
@@ -203,6 +214,24 @@ static cg_status frame_begin(cg_renderer *r, cg_image *image, render_frame *f)
     f->tiles_x = (f->width + RENDER_TILE - 1) / RENDER_TILE;
     f->tiles_y = (f->height + RENDER_TILE - 1) / RENDER_TILE;
     f->tile_count = f->tiles_x * f->tiles_y;
+    return CG_OK;
+}
+
+/* Multisampling: one tile's samples for each worker, kept by the renderer. */
+static cg_status frame_sample_buffers(render_frame *f)
+{
+    cg_renderer *r = f->r;
+    size_t bytes = render_samples_bytes(f->samples), workers = (size_t)f->thread_count;
+    if (core_array_reserve((void **)&r->sample_memory, &r->sample_memory_capacity, bytes * workers,
+                           1)
+            != CG_OK
+        || core_array_reserve((void **)&r->sample_buffers, &r->sample_buffer_capacity, workers,
+                              sizeof *r->sample_buffers)
+               != CG_OK)
+        return CG_ENOMEM;
+    for (size_t i = 0; i < workers; i++)
+        render_samples_bind(&r->sample_buffers[i], r->sample_memory + i * bytes, f->samples);
+    f->sample_buffers = r->sample_buffers;
     return CG_OK;
 }
 
@@ -279,9 +308,10 @@ static cg_status draw_faces(render_frame *f)
     f->thread_count = o->threads;
     if ((size_t)f->thread_count > r->triangle_count)
         f->thread_count = (int)r->triangle_count;
-    if (frame_vertex_buffers(f) != CG_OK || frame_chunks(f) != CG_OK)
-        return CG_ENOMEM;
     int painter = o->algorithm != CG_RENDER_ZBUFFER;
+    if (frame_vertex_buffers(f) != CG_OK || frame_chunks(f) != CG_OK
+        || (f->use_samples && frame_sample_buffers(f) != CG_OK))
+        return CG_ENOMEM;
     size_t fragments;
     render_run_phases(f, painter, &fragments);
     cg_status status = CG_OK;
@@ -322,6 +352,8 @@ cg_status cg_renderer_draw(cg_renderer *r, cg_image *image)
     cg_status status = frame_begin(r, image, &f);
     if (status == CG_OK)
         status = frame_depth_buffers(&f);
+    if (status == CG_OK)
+        status = render_shadows_build(&f);
     if (status != CG_OK)
         return status;
     unsigned outside = object_outside(&f);

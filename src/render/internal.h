@@ -19,6 +19,15 @@
 
 /* ---- shading: the one place that computes the colour of a point --------- */
 
+/* A directional light's shadow map (shadow.c): world point -> texel u, v
+ * and depth along the light's direction by the rows of m. */
+typedef struct render_shadow_map {
+    int size;
+    float m[3][4];
+    float texel; /* world units per texel */
+    float *depth;
+} render_shadow_map;
+
 typedef struct render_lighting {
     int count; /* lights[0] is the ambient light */
     cg_light lights[CG_RENDER_MAX_LIGHTS + 1];
@@ -34,7 +43,13 @@ typedef struct render_lighting {
     float kd, ks, shininess;
     float specular_color[3];
     int blinn;
+    const render_shadow_map *shadow[CG_RENDER_MAX_LIGHTS]; /* per directional light, or NULL */
 } render_lighting;
+
+/* The fraction (0 to 1) of the light of shadow map `map` that reaches the
+ * world point `position` whose normal makes cos theta = nl with the light:
+ * 3 x 3 percentage-closer filtering, slope-scaled bias (shadow.c). */
+float render_shadow_visibility(const render_shadow_map *map, const float position[3], float nl);
 
 /* Fills the float fields of l from its lights (ambient and directional
  * only, which is what the renderer makes) and material. */
@@ -153,9 +168,14 @@ static inline int32_t render_snap(double value, int size)
     return t - ((double)t > s);
 }
 void render_corner_from_screen(const screen_vertex *s, int width, int height, render_corner *out);
+/* The flags of render_setup: back faces culled; the box of the pixels whose
+ * samples (not only centres) it may cover, for multisampling. */
+#define RENDER_SETUP_CULL 1
+#define RENDER_SETUP_MULTISAMPLE 2
 /* Orients the triangle for the rasterizer; returns 0 when it covers no pixel
  * centre (zero area after snapping, or box empty), -1 when it is back-facing
- * (seen clockwise) and cull is set, 1 when out is ready. */
+ * (seen clockwise) and cull (RENDER_SETUP_* flags) culls, 1 when out is
+ * ready. */
 int render_setup_fixed(const render_corner *const v[3], int width, int height, int attribute_count,
                        int cull, setup_triangle *out);
 /* The same from screen vertices (snapped here). */
@@ -259,6 +279,8 @@ typedef struct prepared_vertex {
 typedef struct render_material {
     cg_texture *base_texture; /* NULL: the base colour alone */
     float alpha;              /* base colour factor's alpha */
+    int blend;                /* alpha mode BLEND (OBJ d below 1): blended over
+                                 what lies behind, after the opaque faces */
     float alpha_cutoff;       /* alpha mode MASK: fragments below are dropped;
                                  0 for every other mode (drawn opaque) */
     cg_texture_wrap wrap_u, wrap_v;
@@ -282,6 +304,7 @@ struct cg_renderer {
     size_t material_count;
     render_material *materials;
     int textured; /* some material has a texture and the mesh coordinates */
+    int blended;  /* some face has a BLEND material */
     char *warnings;
     uint32_t *face_triangle; /* per face, its triangle of largest area, whose
                                  turn is the face's (culling its edges) */
@@ -311,6 +334,11 @@ struct cg_renderer {
                                    is all +infinity (nothing drawn there since
                                    it was cleared) */
     size_t clean_tile_capacity;
+    render_shadow_map shadow_maps[CG_RENDER_MAX_LIGHTS]; /* kept between frames */
+    unsigned char *sample_memory; /* multisampling: one tile's samples per worker */
+    size_t sample_memory_capacity;
+    struct render_samples *sample_buffers;
+    size_t sample_buffer_capacity;
     struct core_worker_pool *pool; /* worker threads kept between frames */
     int pool_threads;              /* the thread count it was started for */
     /* cg_painter_steps: the painter's algorithm reports its steps here
@@ -373,7 +401,12 @@ typedef struct render_frame {
     float normal_matrix[3][3];
     render_lighting lighting;
     int shading, attribute_count, cull;
-    int fill_background; /* hidden-line: faces drawn in the background colour */
+    int samples;                           /* per pixel: 1, 2, 4, 8 or 16 (multisample.c) */
+    int use_samples;                       /* tiles drawn through multisample.c: more than one
+                        sample, or blended faces (which need linear colour) */
+    int setup_flags;                       /* RENDER_SETUP_* for the z-buffer's triangles */
+    struct render_samples *sample_buffers; /* per worker, with use_samples */
+    int fill_background;                   /* hidden-line: faces drawn in the background colour */
     float background[4];
     cg_rgba8 background8;
     float *depth;
@@ -397,6 +430,10 @@ void render_clip_position(const render_frame *frame, size_t i, double c[4]);
 void render_world_position(const render_frame *frame, size_t i, float out[3]);
 /* Frees the buffers a renderer keeps between frames. */
 void render_buffers_free(cg_renderer *r);
+/* With options.shadows, the shadow map of each directional light of the
+ * frame into f->lighting (CG_ENOMEM); frees them. */
+cg_status render_shadows_build(render_frame *f);
+void render_shadows_free(cg_renderer *r);
 
 /* Stores the flat (or Phong base) colour of a set-up triangle, encoded too. */
 void render_finish_setup(const render_frame *frame, setup_triangle *t, const float color[3]);

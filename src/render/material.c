@@ -84,6 +84,8 @@ cg_status render_materials_load(cg_renderer *r, const cg_mesh *mesh)
     for (size_t f = 0; f < mesh->face_count; f++) {
         uint32_t k = mesh->face_materials[f];
         r->face_material[f] = k < mesh->material_count ? k : RENDER_NO_MATERIAL;
+        if (k < mesh->material_count && mesh->materials[k].alpha_mode == CG_MESH_ALPHA_BLEND)
+            r->blended = 1;
     }
     for (size_t k = 0; k < mesh->material_count; k++) {
         const cg_mesh_material *m = &mesh->materials[k];
@@ -93,6 +95,7 @@ cg_status render_materials_load(cg_renderer *r, const cg_mesh *mesh)
         texture_transform(&m->base_color_map, out->transform);
         out->alpha = m->base_color.a;
         out->alpha_cutoff = m->alpha_mode == CG_MESH_ALPHA_MASK ? (float)m->alpha_cutoff : 0;
+        out->blend = m->alpha_mode == CG_MESH_ALPHA_BLEND;
         if (mesh->texcoords)
             load_base_texture(r, m, out);
         if (out->base_texture)

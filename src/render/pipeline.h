@@ -48,9 +48,11 @@ static inline uint32_t render_triangle_material(const cg_renderer *r, size_t i)
  * interpolated (perspective-correct) at the pixel, duv the derivatives of
  * the texture coordinates along x and y (du/dx, dv/dx, du/dy, dv/dy).
  * Returns 0 when the fragment is dropped (alpha mode MASK, alpha below the
- * cutoff): then nothing of it is written, neither colour nor depth. */
+ * cutoff): then nothing of it is written, neither colour nor depth.  With
+ * alpha non-NULL nothing is dropped: the fragment's alpha (material factor
+ * times texel) goes to *alpha and the caller applies the mask. */
 int render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
-                             const float duv[4], float out[3]);
+                             const float duv[4], float out[3], float *alpha);
 
 #define VERTEX_BLOCK 4096   /* vertices taken at a time */
 #define TRIANGLE_BLOCK 1024 /* triangles per chunk, up to MAX_CHUNKS chunks */
@@ -119,6 +121,37 @@ void render_triangle_stage(render_frame *f, render_chunk *c, int painter);
 /* Tile lists of one chunk (counting sort by tile, mesh order kept), in
  * buffers kept from frame to frame. */
 void render_bin_chunk(render_frame *f, render_chunk *c);
+
+/* ---- multisampling (multisample.c) ---------------------------------------- */
+
+/* The samples of one tile, kept by one worker while it draws the tile:
+ * depth and colour (linear RGBA) per sample, the colour of pixels whose
+ * samples all agree, and a state per pixel. */
+typedef struct render_samples {
+    int samples;
+    int x0, y0; /* the tile's corner */
+    float *pixel, *depth, *color;
+    unsigned char *state;
+} render_samples;
+
+/* The standard sample positions for 1 (the centre), 2, 4, 8 or 16 samples
+ * (NULL for another count): x, y in 1/16 pixel from the pixel centre, y down. */
+const int8_t (*render_sample_positions(int samples))[2];
+/* Bytes of one tile's samples; render_samples_bind lays them out in memory
+ * (float-aligned). */
+size_t render_samples_bytes(int samples);
+void render_samples_bind(render_samples *s, void *memory, int samples);
+/* Before the tile [x0, x1) x [y0, y1): every pixel untouched (the image
+ * and depth buffer cleared to the background and infinity). */
+void render_samples_begin(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1);
+/* t drawn into the tile [x0, x1) x [y0, y1) (x0, y0 its corner); returns
+ * the number of covered samples. */
+size_t render_raster_samples(const render_frame *f, render_samples *s, const setup_triangle *t,
+                             int x0, int y0, int x1, int y1);
+/* The tile's pixels whose samples differ averaged in linear light into the
+ * image, and their nearest sample's depth into the depth buffer (pixels
+ * whose samples agree are written as they are drawn). */
+void render_samples_resolve(render_frame *f, render_samples *s, int x0, int y0, int x1, int y1);
 
 /* ---- the tiles (clear.c) and the team of threads (team.c) ------------------- */
 

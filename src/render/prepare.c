@@ -199,6 +199,13 @@ static cg_status check_options(const cg_render_options *o)
         || (unsigned)o->texture_filter > CG_TEXTURE_TRILINEAR || (unsigned)o->cull > CG_CULL_BACK
         || (unsigned)o->edges > CG_EDGES_OVERLAY)
         return CG_EINVAL;
+    if (o->msaa != 0 && o->msaa != 1 && o->msaa != 2 && o->msaa != 4 && o->msaa != 8
+        && o->msaa != 16)
+        return CG_EINVAL;
+    if (o->msaa > 1 && o->algorithm != CG_RENDER_ZBUFFER)
+        return CG_EINVAL;
+    if (o->shadows != 0 && o->shadows != 1)
+        return CG_EINVAL;
     for (int i = 0; i < o->light_count; i++)
         if (!(cg_vec3_length(o->lights[i].direction) > 0)
             || !isfinite(cg_vec3_length(o->lights[i].direction)) || !(o->lights[i].intensity >= 0)
@@ -229,6 +236,7 @@ void cg_render_options_default(cg_render_options *o)
     o->light_count = 0;
     o->crease_angle = cg_radians(60);
     o->texture_filter = CG_TEXTURE_TRILINEAR;
+    o->msaa = 1;
 }
 
 cg_status cg_renderer_set_options(cg_renderer *renderer, const cg_render_options *options)

@@ -51,7 +51,7 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height, i
      * positive: front faces are turned around, back faces culled or turned. */
     if (area == 0)
         return 0;
-    if (area > 0 && cull)
+    if (area > 0 && (cull & RENDER_SETUP_CULL))
         return -1;
     int order[3] = {0, 2, 1};
     if (area > 0) {
@@ -71,11 +71,15 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height, i
         if (y[k] > max_y)
             max_y = y[k];
     }
-    /* Pixels whose centres p * 256 + 128 lie within the box. */
-    int64_t x0 = floor_subpixel((int64_t)min_x - HALF + SUBPIXEL - 1);
-    int64_t x1 = floor_subpixel((int64_t)max_x - HALF) + 1;
-    int64_t y0 = floor_subpixel((int64_t)min_y - HALF + SUBPIXEL - 1);
-    int64_t y1 = floor_subpixel((int64_t)max_y - HALF) + 1;
+    /* Pixels whose centres p * 256 + 128 lie within the box; multisampled,
+     * pixels whose square [p, p + 1) meets it (every standard sample
+     * position lies in that square). */
+    const int multisample = (cull & RENDER_SETUP_MULTISAMPLE) != 0;
+    const int64_t half = multisample ? 0 : HALF;
+    int64_t x0 = floor_subpixel((int64_t)min_x - half + (multisample ? 0 : SUBPIXEL - 1));
+    int64_t x1 = floor_subpixel((int64_t)max_x - half) + 1;
+    int64_t y0 = floor_subpixel((int64_t)min_y - half + (multisample ? 0 : SUBPIXEL - 1));
+    int64_t y1 = floor_subpixel((int64_t)max_y - half) + 1;
     if (x0 < 0)
         x0 = 0;
     if (y0 < 0)
@@ -90,7 +94,7 @@ int render_setup_fixed(const render_corner *const v[3], int width, int height, i
         out->x[k] = v[order[k]]->x;
         out->y[k] = v[order[k]]->y;
     }
-    if ((x1 - x0) * (y1 - y0) <= SMALL_BOX
+    if (!multisample && (x1 - x0) * (y1 - y0) <= SMALL_BOX
         && !covers_a_centre(out, (int)x0, (int)y0, (int)x1, (int)y1))
         return 0;
     for (int k = 0; k < 3; k++) {

@@ -68,6 +68,15 @@ void render_shade_terms(const render_lighting *l, const float position[3], const
         float nl = n[0] * L[0] + n[1] * L[1] + n[2] * L[2];
         if (!(nl > 0))
             continue; /* light behind the surface */
+        float lit[3];
+        if (l->shadow[i]) {
+            float visible = render_shadow_visibility(l->shadow[i], position, nl);
+            if (!(visible > 0))
+                continue; /* in the shadow */
+            for (int j = 0; j < 3; j++)
+                lit[j] = c[j] * visible;
+            c = lit;
+        }
         for (int j = 0; j < 3; j++)
             diffuse[j] += c[j] * nl;
         if (l->ks == 0)

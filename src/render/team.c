@@ -15,6 +15,7 @@
 #include "pipeline.h"
 #include "../core/worker_pool.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 /* One frame's phases and the fragment count of each worker. */
@@ -59,9 +60,84 @@ static void triangle_phase(team *tm)
     core_worker_pool_wait(tm->pool, &tm->chunks);
 }
 
+/* A blended triangle of a tile, in the order it is drawn: farthest first
+ * (the sum of its corners' window depths, which orders as their centroid),
+ * then in mesh order. */
+typedef struct blended {
+    float depth;
+    uint32_t order; /* position among the tile's triangles, in mesh order */
+    const setup_triangle *t;
+} blended;
+
+static int back_to_front(const void *a, const void *b)
+{
+    const blended *p = a, *q = b;
+    if (p->depth != q->depth)
+        return p->depth < q->depth ? 1 : -1;
+    return p->order < q->order ? -1 : p->order > q->order;
+}
+
+static int is_blended(const render_frame *f, const setup_triangle *t)
+{
+    return f->shading == MODE_TEXTURED && t->material != RENDER_NO_MATERIAL
+           && f->r->materials[t->material].blend;
+}
+
+/* Draws a non-empty tile through the samples (multisample.c) of worker:
+ * the opaque triangles in mesh order, then the blended ones back to front
+ * (in mesh order when there is no memory to sort them); returns the
+ * covered sample count. */
+static size_t draw_tile_samples(render_frame *f, int worker, int x0, int y0, int x1, int y1,
+                                int tile)
+{
+    render_samples *s = &f->sample_buffers[worker];
+    render_samples_begin(f, s, x0, y0, x1, y1);
+    size_t fragments = 0, blend_count = 0;
+    for (int i = 0; i < f->chunk_count; i++) {
+        const render_chunk *c = &f->chunks[i];
+        for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++) {
+            const setup_triangle *t =
+                (const setup_triangle *)(c->setups + (size_t)c->bin_list[k] * f->stride);
+            if (is_blended(f, t))
+                blend_count++;
+            else
+                fragments += render_raster_samples(f, s, t, x0, y0, x1, y1);
+        }
+    }
+    if (blend_count) {
+        blended *list = malloc(blend_count * sizeof *list);
+        size_t n = 0;
+        uint32_t order = 0;
+        for (int i = 0; i < f->chunk_count; i++) {
+            const render_chunk *c = &f->chunks[i];
+            for (uint32_t k = c->bin_start[tile]; k < c->bin_start[tile + 1]; k++, order++) {
+                const setup_triangle *t =
+                    (const setup_triangle *)(c->setups + (size_t)c->bin_list[k] * f->stride);
+                if (!is_blended(f, t))
+                    continue;
+                if (!list) {
+                    fragments += render_raster_samples(f, s, t, x0, y0, x1, y1);
+                    continue;
+                }
+                list[n].depth = t->z[0] + t->z[1] + t->z[2];
+                list[n].order = order;
+                list[n++].t = t;
+            }
+        }
+        if (list) {
+            qsort(list, n, sizeof *list, back_to_front);
+            for (size_t k = 0; k < n; k++)
+                fragments += render_raster_samples(f, s, list[k].t, x0, y0, x1, y1);
+            free(list);
+        }
+    }
+    render_samples_resolve(f, s, x0, y0, x1, y1);
+    return fragments;
+}
+
 /* Clears tile `tile` and draws every triangle binned on it, chunk by chunk
- * (mesh order); returns the covered pixel count. */
-static size_t draw_tile(render_frame *f, int tile)
+ * (mesh order); returns the covered pixel (or sample) count. */
+static size_t draw_tile(render_frame *f, int worker, int tile)
 {
     int chunks = f->chunk_count;
     int x0 = tile % f->tiles_x * RENDER_TILE, y0 = tile / f->tiles_x * RENDER_TILE;
@@ -70,6 +146,10 @@ static size_t draw_tile(render_frame *f, int tile)
     int empty = 1;
     for (int i = 0; i < chunks && empty; i++)
         empty = f->chunks[i].bin_start[tile] == f->chunks[i].bin_start[tile + 1];
+    if (f->use_samples && !empty) {
+        f->clean_tiles[tile] = 0;
+        return draw_tile_samples(f, worker, x0, y0, x1, y1, tile);
+    }
     /* The depth of a tile left empty since it was last cleared is still
      * infinite: only its colour (the caller's image) is written. */
     render_clear_tile(f, x0, y0, x1, y1, empty, !(empty && f->clean_tiles[tile]));
@@ -93,7 +173,7 @@ static void tile_phase(team *tm, int worker)
     render_frame *f = tm->frame;
     size_t fragments = 0, tile;
     while (core_worker_pool_claim(&tm->tiles, &tile)) {
-        fragments += draw_tile(f, (int)tile);
+        fragments += draw_tile(f, worker, (int)tile);
         size_t done = core_worker_pool_finish(tm->pool, &tm->tiles);
         if (worker == 0 && f->o->progress)
             f->o->progress(f->o->progress_user, (double)done / f->tile_count);

@@ -17,7 +17,7 @@
 #include <math.h>
 
 int render_textured_fragment(const render_frame *f, uint32_t material, const float *v,
-                             const float duv[4], float out[3])
+                             const float duv[4], float out[3], float *alpha_out)
 {
     float base[3] = {v[6], v[7], v[8]};
     const render_material *m = material != RENDER_NO_MATERIAL ? &f->r->materials[material] : NULL;
@@ -42,7 +42,9 @@ int render_textured_fragment(const render_frame *f, uint32_t material, const flo
         base[2] *= texel.b;
         alpha *= texel.a;
     }
-    if (m && alpha < m->alpha_cutoff)
+    if (alpha_out)
+        *alpha_out = alpha; /* the caller decides */
+    else if (m && alpha < m->alpha_cutoff)
         return 0; /* glTF alphaMode MASK */
     if (f->o->shading == CG_SHADING_UNLIT) {
         out[0] = base[0];

@@ -127,7 +127,7 @@ static inline void setup_inside(render_frame *f, render_chunk *c, size_t i, cons
     setup_triangle *t = next_setup(f, c);
     if (!t)
         return;
-    int result = render_setup_fixed(pc, f->width, f->height, 0, f->cull, t);
+    int result = render_setup_fixed(pc, f->width, f->height, 0, f->setup_flags, t);
     if (result < 0) {
         c->culled++;
         return;
@@ -212,7 +212,8 @@ static void setup_fan(render_frame *f, render_chunk *c, size_t i, const screen_v
     int colored = 0, culled = 0, emitted = 0;
     for (int k = 1; k + 1 < count; k++) {
         setup_triangle t;
-        int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->cull, &t);
+        int result = render_setup(&s[0], &s[k], &s[k + 1], f->width, f->height, n, f->setup_flags,
+                                  &t);
         if (result < 0)
             culled = 1;
         if (result != 1)

@@ -1,5 +1,6 @@
 /* The scene file's "image" (size and background) and "render" (algorithm,
- * shading, culling, edges and the ray tracer's settings). */
+ * shading, culling, edges, the z-buffer's samples per pixel and the ray
+ * tracer's settings). */
 #include "parse.h"
 
 cg_status scene_parse_image(const scene_parser *p, const cJSON *v, cg_scene *s)
@@ -22,7 +23,7 @@ cg_status scene_parse_image(const scene_parser *p, const cJSON *v, cg_scene *s)
 cg_status scene_parse_render(const scene_parser *p, const cJSON *v, cg_scene *s)
 {
     static const char *const keys[] = {"algorithm", "shading", "cull",    "edges", "threads",
-                                       "samples",   "depth",   "shadows", NULL};
+                                       "samples",   "depth",   "shadows", "msaa",  NULL};
     static const char *const algorithms[] = {"zbuffer", "painter", "raytrace", NULL};
     static const char *const shadings[] = {"flat", "gouraud", "phong", NULL};
     static const char *const culls[] = {"none", "back", NULL};
@@ -38,8 +39,12 @@ cg_status scene_parse_render(const scene_parser *p, const cJSON *v, cg_scene *s)
         || (st = scene_get_int(p, "render", v, "threads", 1, 64, &s->threads))
         || (st = scene_get_int(p, "render", v, "samples", 1, 1024, &s->samples))
         || (st = scene_get_int(p, "render", v, "depth", 0, 32, &s->max_depth))
-        || (st = scene_get_bool(p, "render", v, "shadows", &s->shadows)))
+        || (st = scene_get_bool(p, "render", v, "shadows", &s->shadows))
+        || (st = scene_get_int(p, "render", v, "msaa", 1, 16, &s->msaa)))
         return st;
+    if (s->msaa & (s->msaa - 1))
+        return scene_expected(p, "render.msaa", "1, 2, 4, 8 or 16",
+                              cJSON_GetObjectItemCaseSensitive(v, "msaa"));
     s->algorithm = (cg_scene_algorithm)algorithm;
     s->shading = (cg_scene_shading)shading;
     s->cull_back = cull;

@@ -130,6 +130,7 @@ static cg_status material_pass(const cg_mesh *world, const uint32_t *face_materi
     cg_render_options o = *base;
     o.shading = CG_SHADING_FLAT;
     o.edges = CG_EDGES_NONE;
+    o.msaa = 1; /* codes, not colours: never averaged */
     o.ambient = 1;
     o.specular = 0;
     o.light_count = 1;

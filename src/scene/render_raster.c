@@ -289,6 +289,11 @@ cg_status scene_raster_base_options(const cg_scene *scene, cg_scene_algorithm al
     o->cull = scene->cull_back ? CG_CULL_BACK : CG_CULL_NONE;
     o->edges = (cg_edge_mode)scene->edges;
     o->threads = scene->threads;
+    if (scene->msaa > 1 && o->algorithm != CG_RENDER_ZBUFFER)
+        return cg_error_set(err, CG_EUNSUPPORTED,
+                            "scene: render.msaa: the painter's algorithm draws one sample per "
+                            "pixel (use the zbuffer algorithm, or msaa 1)");
+    o->msaa = scene->msaa;
     o->background = scene->background;
     renderer_lights(scene, o);
     return CG_OK;

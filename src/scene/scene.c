@@ -38,6 +38,7 @@ cg_status scene_create_empty(cg_scene **out)
     s->samples = 1;
     s->max_depth = 5;
     s->shadows = 1;
+    s->msaa = 1;
     s->materials = malloc(sizeof *s->materials);
     if (!s->materials) {
         free(s);

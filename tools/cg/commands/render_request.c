@@ -84,6 +84,21 @@ static int parse_scene(const char *command, const cli_option *option, const char
     return 0;
 }
 
+/* --msaa 1|2|4|8|16: samples per pixel of the z-buffer. */
+static int parse_msaa(const char *command, const cli_option *option, const char *text,
+                      void *arguments)
+{
+    (void)option;
+    static const char *const counts[] = {"1", "2", "4", "8", "16"};
+    for (int k = 0; k < 5; k++)
+        if (strcmp(text, counts[k]) == 0) {
+            ((render_request *)arguments)->trace.common.render.msaa = 1 << k;
+            return 0;
+        }
+    cli_usage_error(command, "--msaa: expected 1, 2, 4, 8 or 16 samples per pixel, got '%s'", text);
+    return -1;
+}
+
 /* ---- the table ------------------------------------------------------------------- */
 
 #define COMMON(member) offsetof(render_request, trace.common.member)
@@ -252,6 +267,20 @@ static const cli_option pipeline_options[] = {
 
 /* The rasterizer's own (the ray tracer sees both faces and draws no edges). */
 static const cli_option raster_options[] = {
+    {.name = "--shadows",
+     .kind = CLI_FLAG,
+     .offset = RENDER(shadows),
+     .flag_value = 1,
+     .given = GIVEN(OPT_SHADOWS),
+     .help = "shadow maps for the directional lights (percentage-closer\n"
+             "filtered; the ray tracer casts shadow rays instead)"},
+    {.name = "--msaa",
+     .kind = CLI_CUSTOM,
+     .parse = parse_msaa,
+     .value_name = "1|2|4|8|16",
+     .given = GIVEN(OPT_MSAA),
+     .help = "multisample anti-aliasing: samples per pixel at the standard\n"
+             "positions, resolved in linear light (default 1; z-buffer only)"},
     {.name = "--texture-filter",
      .kind = CLI_CHOICE,
      .offset = RENDER(texture_filter),
@@ -387,16 +416,16 @@ static int first_given(const render_request *r, const render_option *set, int co
 /* Rejects, with one line, an option that means nothing for what was asked. */
 static int check_combinations(const char *command, int trace_only, const render_request *r)
 {
-    static const render_option raster_only[] = {OPT_CULL,          OPT_WIREFRAME,  OPT_HIDDEN_LINE,
-                                                OPT_EDGES,         OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,
-                                                OPT_TEXTURE_FILTER};
+    static const render_option raster_only[] = {
+        OPT_CULL,         OPT_WIREFRAME,      OPT_HIDDEN_LINE, OPT_EDGES,  OPT_EDGE_COLOR,
+        OPT_OUTPUT_DEPTH, OPT_TEXTURE_FILTER, OPT_MSAA,        OPT_SHADOWS};
     static const render_option trace_options[] = {OPT_SPP,        OPT_DEPTH, OPT_STATS,
                                                   OPT_NO_SHADOWS, OPT_FLOOR, OPT_SCENE};
     /* A scene file brings its own objects and normals, and is rendered
      * through cg/scene.h, which keeps no ray or depth statistics. */
     static const render_option not_for_scenes[] = {
-        OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,  OPT_FLOOR,
-        OPT_SCENE,  OPT_STATS,      OPT_TEXTURE_FILTER};
+        OPT_CREASE, OPT_EDGE_COLOR, OPT_OUTPUT_DEPTH,   OPT_FLOOR,
+        OPT_SCENE,  OPT_STATS,      OPT_TEXTURE_FILTER, OPT_SHADOWS};
     const raytrace_settings *s = &r->trace;
     int k;
     if (trace_only && r->algorithm != RENDER_RAYTRACE)
@@ -408,7 +437,7 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command, "--eye and --view-from exclude each other");
     if (render_request_has(r, OPT_UP) && !(cg_vec3_length(s->common.up) > 0))
         return cli_usage_error(command, "--up: the up vector must not be zero");
-    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 7)) >= 0)
+    if (s->input && render_scene_is_scene(s->input) && (k = first_given(r, not_for_scenes, 8)) >= 0)
         return cli_usage_error(command, "%s: not available with a scene file (%s)",
                                render_option_name((render_option)k),
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
@@ -418,11 +447,15 @@ static int check_combinations(const char *command, int trace_only, const render_
         return cli_usage_error(command,
                                "--shading unlit: only the rasterizer draws mesh files unlit "
                                "(use --algorithm zbuffer or painter on a mesh file)");
-    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 7)) >= 0)
+    if (r->algorithm == RENDER_RAYTRACE && (k = first_given(r, raster_only, 9)) >= 0)
         return cli_usage_error(command,
                                "%s: not available with the ray tracer (use --algorithm "
                                "zbuffer or painter)",
                                render_option_name((render_option)k));
+    if ((r->algorithm == RENDER_PAINTER || r->algorithm == RENDER_DEPTH_SORT)
+        && s->common.render.msaa > 1)
+        return cli_usage_error(command, "--msaa: only the z-buffer multisamples (the painter's "
+                                        "algorithms draw one sample per pixel)");
     if (r->algorithm != RENDER_RAYTRACE && (k = first_given(r, trace_options, 6)) >= 0)
         return cli_usage_error(command,
                                "%s: only the ray tracer uses it (add --algorithm "

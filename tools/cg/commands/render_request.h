@@ -53,6 +53,8 @@ typedef enum render_option {
     OPT_SHADING,
     OPT_THREADS,
     OPT_TEXTURE_FILTER,
+    OPT_MSAA,
+    OPT_SHADOWS,
     OPT_COUNT
 } render_option;
 

@@ -121,6 +121,8 @@ int render_scene_apply(const char *command, const render_request *r, cg_scene *s
                                                             : CG_SCENE_PHONG;
     if (c->have_threads)
         scene->threads = o->threads;
+    if (render_request_has(r, OPT_MSAA))
+        scene->msaa = o->msaa;
     if (c->have_background)
         scene->background = o->background;
     if (render_request_has(r, OPT_CULL))

@@ -202,6 +202,21 @@ static inline void render_edge_at(const setup_triangle *t, int i, int j, int64_t
     *step_y = dx * RENDER_SUBPIXEL;
 }
 
+/* The pixel rectangle [x0, x1) x [y0, y1) (a tile's) cut to the triangle's
+ * bounding box; 0 when nothing is left. */
+static inline int render_clip_to_box(const setup_triangle *t, int *x0, int *y0, int *x1, int *y1)
+{
+    if (t->box[0] > *x0)
+        *x0 = t->box[0];
+    if (t->box[1] > *y0)
+        *y0 = t->box[1];
+    if (t->box[2] < *x1)
+        *x1 = t->box[2];
+    if (t->box[3] < *y1)
+        *y1 = t->box[3];
+    return *x0 < *x1 && *y0 < *y1;
+}
+
 /* Edge k runs from vertex k + 1 to vertex k + 2 (mod 3).  Inline: every
  * set-up triangle and every tile it touches starts here. */
 static inline void render_edges_at(const setup_triangle *t, int x, int y, raster_edges *out)

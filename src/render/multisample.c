@@ -314,15 +314,7 @@ static SAMPLES_SPECIALIZE size_t raster_samples(const render_frame *f, render_sa
                                                 const setup_triangle *t, int tx, int ty, int x0,
                                                 int y0, int x1, int y1, const int mode, const int n)
 {
-    if (t->box[0] > x0)
-        x0 = t->box[0];
-    if (t->box[1] > y0)
-        y0 = t->box[1];
-    if (t->box[2] < x1)
-        x1 = t->box[2];
-    if (t->box[3] < y1)
-        y1 = t->box[3];
-    if (x0 >= x1 || y0 >= y1)
+    if (!render_clip_to_box(t, &x0, &y0, &x1, &y1))
         return 0;
     const unsigned full = (1u << n) - 1;
     raster_edges e;

@@ -171,15 +171,7 @@ static RENDER_SPECIALIZE size_t raster_mode(const render_frame *f, const setup_t
                                             int y0, int x1, int y1, const int mode,
                                             const int depth_test, const int rgba8)
 {
-    if (t->box[0] > x0)
-        x0 = t->box[0];
-    if (t->box[1] > y0)
-        y0 = t->box[1];
-    if (t->box[2] < x1)
-        x1 = t->box[2];
-    if (t->box[3] < y1)
-        y1 = t->box[3];
-    if (x0 >= x1 || y0 >= y1)
+    if (!render_clip_to_box(t, &x0, &y0, &x1, &y1))
         return 0;
     raster_edges e;
     render_edges_at(t, x0, y0, &e);

@@ -138,8 +138,13 @@ static void check_lines(const cg_polygon_set64 *in, const cg_polygon_set64 *simp
                            {rect.xmax, rect.ymax},
                            {rect.xmin, rect.ymax}};
         cg_polygon_set64_add_ring(&window, w, 4, 1);
-        if (cg_clip_lines64(CG_CLIP_INTERSECTION, in, &window, CG_CLIP_EVEN_ODD, &inside) != CG_OK
-            || cg_rect_clip_lines64(in, rect, &by_rect) != CG_OK)
+        /* the general engine refuses a window beyond its grid; the
+         * rectangle clip takes any rectangle */
+        int window_in_range = rect.xmax <= CG_CLIP_MAX_COORD && rect.ymax <= CG_CLIP_MAX_COORD;
+        cg_status by_window = cg_clip_lines64(CG_CLIP_INTERSECTION, in, &window, CG_CLIP_EVEN_ODD,
+                                              &inside);
+        check_status(by_window, window_in_range);
+        if (cg_rect_clip_lines64(in, rect, &by_rect) != CG_OK)
             FAIL();
         double length = 0; /* the rectangle clip keeps pieces of one point */
         for (size_t r = 0; r < by_rect.ring_count; r++)
@@ -147,7 +152,7 @@ static void check_lines(const cg_polygon_set64 *in, const cg_polygon_set64 *simp
                 length += hypot((double)(by_rect.points[i + 1].x - by_rect.points[i].x),
                                 (double)(by_rect.points[i + 1].y - by_rect.points[i].y));
         double slack = 2.0 * (double)(inside.ring_count + by_rect.ring_count + 1);
-        if (fabs(set_length(&inside) - length) > slack)
+        if (by_window == CG_OK && fabs(set_length(&inside) - length) > slack)
             FAIL();
     }
     cg_polygon_set64_clear(&inside);

@@ -17,10 +17,10 @@
  * pattern polygon (a point of B's interior reached from a is either in
  * B + a, or the way crosses B's boundary).  Each piece covers its points
  * with winding number 1 (the parallelograms are turned counter-clockwise,
- * a translated polygon keeps its holes), so one union under the non-zero
- * rule gives the sum.  The difference is the sum with the pattern
- * reflected through the origin (every path point less every pattern
- * point). */
+ * a translated polygon keeps its holes), so their union under the non-zero
+ * rule gives the sum (united in parts, see unite_tree).  The difference is
+ * the sum with the pattern reflected through the origin (every path point
+ * less every pattern point). */
 #include "polygon_internal.h"
 
 #include <math.h>
@@ -68,32 +68,100 @@ static cg_status add_swept(cg_polygon_set64 *out, const cg_polygon_set64 *patter
     return st;
 }
 
-/* The pieces of pattern (simple, one polygon after another) + path. */
-static cg_status add_pieces(cg_polygon_set64 *pieces, const cg_polygon_set64 *pattern,
-                            const cg_polygon_set64 *path, int open, const cg_polygon_set64 *region)
+typedef CORE_ARRAY(cg_polygon_set64) polygon_set_list;
+
+static void free_sets(polygon_set_list *sets)
+{
+    for (size_t i = 0; i < sets->count; i++)
+        cg_polygon_set64_clear(&sets->data[i]);
+    core_array_free(sets);
+}
+
+/* Appends the union (non-zero rule) of *pieces to sets; *pieces is emptied. */
+static cg_status push_union(cg_clip_workspace *ws, cg_polygon_set64 *pieces, polygon_set_list *sets)
+{
+    cg_polygon_set64 none = {0}, merged = {0};
+    cg_status st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, pieces, CG_CLIP_NON_ZERO, &none,
+                                        CG_CLIP_NON_ZERO, &merged);
+    if (st == CG_OK && merged.ring_count > 0)
+        st = core_array_push(sets, merged);
+    if (st != CG_OK || merged.ring_count == 0)
+        cg_polygon_set64_clear(&merged);
+    cg_polygon_set64_clear(pieces);
+    return st;
+}
+
+/* The pieces of pattern (simple, one polygon after another) + path, each
+ * path vertex's pieces (the pattern there and swept along the edge that
+ * follows) already united into one set of `sets`. */
+static cg_status add_pieces(cg_clip_workspace *ws, polygon_set_list *sets,
+                            const cg_polygon_set64 *pattern, const cg_polygon_set64 *path, int open,
+                            const cg_polygon_set64 *region)
 {
     size_t capacity = pattern->point_count > region->point_count ? pattern->point_count
                                                                  : region->point_count;
     cg_point64 *scratch = capacity ? malloc(capacity * sizeof *scratch) : NULL;
     if (capacity && !scratch)
         return CG_ENOMEM;
+    cg_polygon_set64 pieces = {0};
     cg_status st = CG_OK;
     for (size_t r = 0; r < path->ring_count && st == CG_OK; r++) {
         size_t a = path->ring_start[r], b = path->ring_start[r + 1];
         for (size_t i = a; i < b && st == CG_OK; i++) {
             cg_point64 e0 = path->points[i];
-            st = add_translated(pieces, pattern, e0.x, e0.y, scratch, capacity);
+            st = add_translated(&pieces, pattern, e0.x, e0.y, scratch, capacity);
             if (i + 1 < b || (!open && b - a > 1))
                 if (st == CG_OK)
-                    st = add_swept(pieces, pattern, e0, path->points[i + 1 < b ? i + 1 : a]);
+                    st = add_swept(&pieces, pattern, e0, path->points[i + 1 < b ? i + 1 : a]);
+            if (st == CG_OK)
+                st = push_union(ws, &pieces, sets);
         }
     }
     /* a region: itself moved to a point of each pattern polygon */
     for (size_t k = 0; k < pattern->polygon_count && st == CG_OK && !open; k++) {
         cg_point64 p = pattern->points[pattern->ring_start[pattern->polygon_start[k]]];
-        st = add_translated(pieces, region, p.x, p.y, scratch, capacity);
+        st = add_translated(&pieces, region, p.x, p.y, scratch, capacity);
+        if (st == CG_OK)
+            st = push_union(ws, &pieces, sets);
     }
+    cg_polygon_set64_clear(&pieces);
     free(scratch);
+    return st;
+}
+
+/* The union of every set into result, two at a time in a balanced tree.
+ * One sweep over every piece at once would split every piece at every
+ * crossing of every other (a 31-point pattern along a 70-point path makes
+ * some 10^8 split points, most of them inside the sum); united in pairs,
+ * the edges inside each part are gone before the next level sees them. */
+static cg_status unite_tree(cg_clip_workspace *ws, polygon_set_list *sets, cg_polygon_set64 *result)
+{
+    cg_polygon_set64 none = {0};
+    cg_status st = CG_OK;
+    while (sets->count > 2 && st == CG_OK) {
+        size_t kept = 0;
+        for (size_t i = 0; i < sets->count && st == CG_OK; i += 2) {
+            cg_polygon_set64 merged = {0};
+            if (i + 1 < sets->count) {
+                st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, &sets->data[i], CG_CLIP_NON_ZERO,
+                                          &sets->data[i + 1], CG_CLIP_NON_ZERO, &merged);
+                cg_polygon_set64_clear(&sets->data[i]);
+                cg_polygon_set64_clear(&sets->data[i + 1]);
+            } else {
+                merged = sets->data[i];
+                sets->data[i] = (cg_polygon_set64){0};
+            }
+            sets->data[kept++] = merged;
+        }
+        /* on failure every set stays in place for free_sets (the moved and
+         * united ones are empty) */
+        if (st == CG_OK)
+            sets->count = kept;
+    }
+    if (st == CG_OK)
+        st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, sets->count > 0 ? &sets->data[0] : &none,
+                                  CG_CLIP_NON_ZERO, sets->count > 1 ? &sets->data[1] : &none,
+                                  CG_CLIP_NON_ZERO, result);
     return st;
 }
 
@@ -112,7 +180,8 @@ cg_status cg_minkowski64_ws(cg_clip_workspace *ws, cg_minkowski_op op,
         return st;
     if (a > CG_CLIP_MAX_COORD || b > CG_CLIP_MAX_COORD || a + b > CG_CLIP_MAX_COORD)
         return CG_ERANGE;
-    cg_polygon_set64 shape = {0}, region = {0}, none = {0}, pieces = {0};
+    cg_polygon_set64 shape = {0}, region = {0}, none = {0};
+    polygon_set_list sets = {0};
     st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, pattern, fill, &none, fill, &shape);
     for (size_t i = 0; i < shape.point_count && op == CG_MINKOWSKI_DIFFERENCE; i++)
         shape.points[i] = (cg_point64){-shape.points[i].x, -shape.points[i].y};
@@ -120,13 +189,12 @@ cg_status cg_minkowski64_ws(cg_clip_workspace *ws, cg_minkowski_op op,
     if (st == CG_OK && !path_open)
         st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, path, fill, &none, fill, &region);
     if (st == CG_OK)
-        st = add_pieces(&pieces, &shape, path_open ? path : &region, path_open, &region);
+        st = add_pieces(ws, &sets, &shape, path_open ? path : &region, path_open, &region);
     if (st == CG_OK)
-        st = cg_clip_boolean64_ws(ws, CG_CLIP_UNION, &pieces, CG_CLIP_NON_ZERO, &none,
-                                  CG_CLIP_NON_ZERO, result);
+        st = unite_tree(ws, &sets, result);
     cg_polygon_set64_clear(&shape);
     cg_polygon_set64_clear(&region);
-    cg_polygon_set64_clear(&pieces);
+    free_sets(&sets);
     return st;
 }
 

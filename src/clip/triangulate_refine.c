@@ -21,8 +21,13 @@
  * not encroach each other without end; the triangles with their smallest
  * angle at such a vertex are left as they are (the input's angle bounds
  * them).  Circumcentres are rounded to the grid.  With the bound at most
- * 30 degrees this terminates in practice; a cap on the points added (64
- * per input vertex, plus 65,536) makes it certain. */
+ * 30 degrees this terminates in practice; two caps make it certain: on
+ * the points added (64 per input vertex, plus 65,536) and on the work, the
+ * points triangulated over all rounds (256 rounds of the input and 1,024
+ * points), since near the grid's resolution a round may add a single point
+ * (rounded circumcentres making new bad triangles) and every round
+ * triangulates everything again.  At either cap the triangulation of the
+ * last round is the result: valid, with some angles under the bound. */
 #include "triangulate_internal.h"
 
 #include "../core/array.h"
@@ -403,11 +408,13 @@ cg_status triangulate_refine(const cg_polygon_set64 *simple, double min_angle,
     r.cos_bound = cos(min_angle * M_PI / 180);
     cg_status st = start(&r, simple);
     size_t cap = 64 * simple->point_count + 65536;
+    size_t work = 0, work_cap = 256 * (simple->point_count + 1024);
     for (int done = 0; st == CG_OK && !done;) {
         st = build_rings(&r);
         if (st == CG_OK)
             st = triangulate_cdt(&r.rings, r.extra.data, r.extra.count, &r.triangles);
-        if (st != CG_OK || r.extra.count + r.segments.count > cap)
+        work += r.rings.point_count + r.extra.count;
+        if (st != CG_OK || r.extra.count + r.segments.count > cap || work > work_cap)
             break;
         size_t split = 0, added = 0;
         if (mark_encroached(&r) == 0)

@@ -5,11 +5,13 @@
 # An input that fails (crash, leak, timeout, out of memory) is kept as a
 # regression case: copied into tests/fuzz/corpus/NAME/ under libFuzzer's name
 # for it, and printed in base64 so that a log alone is enough to recover it.
+# One input may take at most 60 s (libFuzzer's default, 1,200 s, would let a
+# single slow input run past the whole stage's budget unseen).
 # Usage: run.sh FUZZER NAME SECONDS WORK_DIR CORPUS_DIR [DICTIONARY]
 fuzzer=$1 name=$2 seconds=$3 work=$4 corpus=$5 dict=${6:-}
 rm -rf "$work/failures"
 mkdir -p "$work/corpus" "$work/failures" || exit 1
-set -- -max_total_time="$seconds" -rss_limit_mb=2048 -artifact_prefix="$work/failures/"
+set -- -max_total_time="$seconds" -timeout=60 -rss_limit_mb=2048 -artifact_prefix="$work/failures/"
 [ -n "$dict" ] && set -- "$@" -dict="$dict"
 if [ -d "$corpus" ]; then
   set -- "$@" "$work/corpus" "$corpus"

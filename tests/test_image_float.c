@@ -470,6 +470,43 @@ static void test_formats(void)
     cg_image_free(img);
 }
 
+/* cg_image_load_linear: every 8-bit code of a PNG decodes from sRGB, alpha
+ * scaled; a float file comes back bit for bit; errors name the file. */
+static void test_load_linear(void)
+{
+    cg_image *img, *back = NULL;
+    cg_error err;
+    CHECK_EQ_INT(cg_image_create(&img, 256, 1, CG_PIXEL_RGBA8), CG_OK);
+    for (int k = 0; k < 256; k++)
+        cg_image_set_rgba8(img, k, 0, (cg_rgba8){(uint8_t)k, (uint8_t)(255 - k), 0, (uint8_t)k});
+    CHECK_EQ_INT(cg_image_write(img, "linear_codes.png", CG_FILE_UNKNOWN, &err), CG_OK);
+    CHECK_EQ_INT(cg_image_load_linear("linear_codes.png", &back, &err), CG_OK);
+    CHECK(back && back->format == CG_PIXEL_RGBAF && back->width == 256);
+    for (int k = 0; back && k < 256; k++) {
+        cg_rgbaf p = cg_image_get(back, k, 0);
+        CHECK(p.r == cg_srgb8_to_linear((uint8_t)k) && p.g == cg_srgb8_to_linear((uint8_t)(255 - k))
+              && p.b == 0 && fabsf(p.a - (float)k / 255) <= 1e-7f);
+    }
+    cg_image_free(back);
+    cg_image_free(img);
+    CHECK_EQ_INT(cg_image_create(&img, 2, 1, CG_PIXEL_RGBAF), CG_OK);
+    cg_image_set(img, 0, 0, (cg_rgbaf){3.25f, 0.1f, 1e-6f, 1});
+    cg_image_set(img, 1, 0, (cg_rgbaf){0, 65504.0f, 0.5f, 1});
+    CHECK_EQ_INT(cg_image_write(img, "linear_float.pfm", CG_FILE_UNKNOWN, &err), CG_OK);
+    back = NULL;
+    CHECK_EQ_INT(cg_image_load_linear("linear_float.pfm", &back, &err), CG_OK);
+    for (int x = 0; back && x < 2; x++) {
+        cg_rgbaf a = cg_image_get(img, x, 0), b = cg_image_get(back, x, 0);
+        CHECK(a.r == b.r && a.g == b.g && a.b == b.b);
+    }
+    cg_image_free(back);
+    cg_image_free(img);
+    back = img;
+    CHECK_EQ_INT(cg_image_load_linear("no_such_sky.hdr", &back, &err), CG_EIO);
+    CHECK(back == NULL && strstr(err.message, "no_such_sky.hdr") != NULL);
+    CHECK_EQ_INT(cg_image_load_linear(NULL, &back, &err), CG_EINVAL);
+}
+
 int main(int argc, char **argv)
 {
     check_start(argc, argv);
@@ -482,5 +519,6 @@ int main(int argc, char **argv)
     CHECK_GROUP(test_tonemap);
     CHECK_GROUP(test_exr);
     CHECK_GROUP(test_formats);
+    CHECK_GROUP(test_load_linear);
     return check_finish();
 }

@@ -30,6 +30,11 @@ cg_status cg_image_load(const char *path, cg_image **out, cg_error *err);
 /* The same from memory; name is used in messages. */
 cg_status cg_image_load_memory(const void *bytes, size_t size, const char *name, cg_image **out,
                                cg_error *err);
+/* Reads any image file cg knows into a new RGBAF image in linear light: the
+ * float formats as they are, the 8-bit ones decoded from sRGB (what an
+ * environment map or a light probe needs).  Errors as cg_image_read. */
+cg_status cg_image_load_linear(const char *path, cg_image **out, cg_error *err);
+
 
 /* 1 when the format holds float pixels (PFM, HDR, EXR). */
 int cg_file_format_is_float(cg_file_format format);

@@ -159,6 +159,20 @@ cg_status cg_image_read(const char *path, cg_image **out, cg_error *err)
     return read_file_with(path, out, err, 0);
 }
 
+cg_status cg_image_load_linear(const char *path, cg_image **out, cg_error *err)
+{
+    cg_status status = read_file_with(path, out, err, 1);
+    if (status != CG_OK || (*out)->format == CG_PIXEL_RGBAF)
+        return status;
+    cg_image *linear;
+    status = cg_image_decode_srgb(*out, &linear);
+    cg_image_free(*out);
+    *out = status == CG_OK ? linear : NULL;
+    if (status != CG_OK)
+        return cg_error_set(err, status, "%s: cannot allocate the decoded image", path);
+    return CG_OK;
+}
+
 /* Writes bytes to a temporary file beside path, then renames it over path. */
 cg_status image_replace_file(const char *path, const byte_buffer *contents, cg_error *err)
 {

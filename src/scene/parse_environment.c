@@ -11,19 +11,10 @@
  * decoded from sRGB. */
 static cg_status load_map(const scene_parser *p, const char *file, cg_image **out)
 {
-    cg_image *image = NULL;
     cg_error err;
-    cg_status st = cg_image_load(file, &image, &err);
-    if (st != CG_OK)
-        return cg_error_set(p->err, st, "%s: environment.file: %s", p->name, err.message);
-    if (image->format == CG_PIXEL_RGBAF) {
-        *out = image;
-        return CG_OK;
-    }
-    st = cg_image_decode_srgb(image, out);
-    cg_image_free(image);
+    cg_status st = cg_image_load_linear(file, out, &err);
     return st == CG_OK ? CG_OK
-                       : cg_error_set(p->err, st, "%s: environment.file: out of memory", p->name);
+                       : cg_error_set(p->err, st, "%s: environment.file: %s", p->name, err.message);
 }
 
 cg_status scene_parse_environment(const scene_parser *p, const cJSON *v, cg_scene *s)

@@ -85,16 +85,8 @@ static uint64_t digest_picture(uint64_t hash, const pathtrace_input *in)
 static cg_status load_sky(const char *path, cg_image **sky, cg_error *err)
 {
     cg_error inner;
-    cg_status s = cg_image_load(path, sky, &inner);
-    if (s != CG_OK)
-        return cg_error_set(err, s, "--environment: %s", inner.message);
-    if ((*sky)->format == CG_PIXEL_RGBAF)
-        return CG_OK;
-    cg_image *linear = NULL;
-    s = cg_image_decode_srgb(*sky, &linear);
-    cg_image_free(*sky);
-    *sky = linear;
-    return s == CG_OK ? CG_OK : cg_error_set(err, s, "%s: %s", path, cg_status_str(s));
+    cg_status s = cg_image_load_linear(path, sky, &inner);
+    return s == CG_OK ? CG_OK : cg_error_set(err, s, "--environment: %s", inner.message);
 }
 
 /* One mesh under the default material, framed for the picture's aspect. */

@@ -11,31 +11,7 @@
 #include "polygon_shapes.h"
 #include "check.h"
 
-#include <stdarg.h>
-
 static GEOSContextHandle_t geos;
-static void geos_message(const char *fmt, ...)
-{
-    (void)fmt;
-}
-
-static void random_region(cg_polygon_set *region)
-{
-    cg_polygon_set raw = {0}, none = {0};
-    cg_vec2 ring[60];
-    int stars = 1 + (int)(shapes_uniform() * 3);
-    for (int k = 0; k < stars; k++) {
-        int n = 5 + (int)(shapes_uniform() * 50);
-        cg_vec2 c = {shapes_between(-30, 30), shapes_between(-30, 30)};
-        shapes_star(ring, n, c, 5, 25, 0);
-        cg_polygon_set_add_ring(&raw, ring, (size_t)n, 1);
-        shapes_star(ring, 8, c, 1, 4, 1);
-        cg_polygon_set_add_ring(&raw, ring, 8, 1);
-    }
-    cg_clip_boolean(CG_CLIP_UNION, &raw, CG_CLIP_NON_ZERO, &none, CG_CLIP_NON_ZERO, 0, region);
-    cg_polygon_set_clear(&raw);
-}
-
 /* Polylines: random points, and stretches along the region's boundary
  * (from one vertex of a ring to a later one, so edges are run along and
  * vertices passed through). */
@@ -110,7 +86,7 @@ static void against_geos(void)
 {
     cg_polygon_set region = {0}, paths = {0}, in = {0}, out = {0};
     for (int trial = 0; trial < 300; trial++) {
-        random_region(&region);
+        shapes_random_region(&region, 1);
         random_paths(&paths, &region);
         CHECK(cg_clip_lines(CG_CLIP_INTERSECTION, &paths, &region, CG_CLIP_NON_ZERO, 0, &in)
               == CG_OK);
@@ -165,9 +141,7 @@ static void against_geos(void)
 
 int main(int argc, char **argv)
 {
-    geos = GEOS_init_r();
-    GEOSContext_setNoticeHandler_r(geos, geos_message);
-    GEOSContext_setErrorHandler_r(geos, geos_message);
+    geos = shapes_geos_start();
     check_start(argc, argv);
     CHECK_GROUP(against_geos);
     GEOS_finish_r(geos);

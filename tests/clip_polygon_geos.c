@@ -10,34 +10,7 @@
 #include "polygon_shapes.h"
 #include "check.h"
 
-#include <stdarg.h>
-
 static GEOSContextHandle_t geos;
-static void geos_message(const char *fmt, ...)
-{
-    (void)fmt;
-}
-
-/* A simple random region: stars (one with a hole) united by cg. */
-static void random_region(cg_polygon_set *region)
-{
-    cg_polygon_set raw = {0}, none = {0};
-    cg_vec2 ring[60];
-    int stars = 1 + (int)(shapes_uniform() * 3);
-    for (int k = 0; k < stars; k++) {
-        int n = 5 + (int)(shapes_uniform() * 50);
-        cg_vec2 c = {shapes_between(-30, 30), shapes_between(-30, 30)};
-        shapes_star(ring, n, c, 5, 25, 0);
-        cg_polygon_set_add_ring(&raw, ring, (size_t)n, 1);
-        if (k == 0) {
-            shapes_star(ring, 8, c, 1, 4, 1);
-            cg_polygon_set_add_ring(&raw, ring, 8, 1);
-        }
-    }
-    cg_clip_boolean(CG_CLIP_UNION, &raw, CG_CLIP_NON_ZERO, &none, CG_CLIP_NON_ZERO, 0, region);
-    cg_polygon_set_clear(&raw);
-}
-
 static double symmetric_difference_area(GEOSGeometry *a, GEOSGeometry *b)
 {
     GEOSGeometry *x = GEOSSymDifference_r(geos, a, b);
@@ -52,7 +25,7 @@ static void rectangles(void)
 {
     cg_polygon_set region = {0}, clipped = {0};
     for (int trial = 0; trial < 200; trial++) {
-        random_region(&region);
+        shapes_random_region(&region, 0);
         double x0 = shapes_between(-40, 30), y0 = shapes_between(-40, 30);
         cg_rect r = {x0, y0, x0 + shapes_between(0.1, 40), y0 + shapes_between(0.1, 40)};
         CHECK(cg_rect_clip(&region, CG_CLIP_NON_ZERO, r, 0, &clipped) == CG_OK);
@@ -77,7 +50,7 @@ static void triangulations(void)
 {
     cg_polygon_set region = {0}, triangles = {0};
     for (int trial = 0; trial < 200; trial++) {
-        random_region(&region);
+        shapes_random_region(&region, 0);
         CHECK(cg_triangulate(&region, CG_CLIP_NON_ZERO, 0, &triangles) == CG_OK);
         GEOSGeometry *tri = shapes_geos_polygons(geos, &triangles);
         int valid = 1;
@@ -102,7 +75,7 @@ static void simplifications(void)
 {
     cg_polygon_set region = {0}, simple = {0};
     for (int trial = 0; trial < 200; trial++) {
-        random_region(&region);
+        shapes_random_region(&region, 0);
         double tolerance = shapes_between(0.01, 3);
         int rdp = trial % 2 == 0;
         CHECK(cg_simplify(&region, 0, CG_CLIP_NON_ZERO,
@@ -130,9 +103,7 @@ static void simplifications(void)
 
 int main(int argc, char **argv)
 {
-    geos = GEOS_init_r();
-    GEOSContext_setNoticeHandler_r(geos, geos_message);
-    GEOSContext_setErrorHandler_r(geos, geos_message);
+    geos = shapes_geos_start();
     check_start(argc, argv);
     CHECK_GROUP(rectangles);
     CHECK_GROUP(triangulations);

@@ -9,39 +9,8 @@
  * random points agrees (points within two grid units of the boundary left
  * out); the difference is the sum with the reflected pattern; closed forms
  * (a square swept along a segment, a square grown by a square); bad input. */
-#include "cg/polygon.h"
+#include "polygon_shapes.h"
 #include "check.h"
-
-static uint64_t state = 0xda3e39cb94b95bdbull;
-static double uniform01(void)
-{
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return (double)(state >> 11) / 9007199254740992.0;
-}
-static double between(double lo, double hi)
-{
-    return lo + (hi - lo) * uniform01();
-}
-
-static int winding(const cg_polygon_set64 *s, double x, double y)
-{
-    int w = 0;
-    for (size_t r = 0; r < s->ring_count; r++) {
-        size_t a = s->ring_start[r], b = s->ring_start[r + 1];
-        for (size_t i = a; i < b; i++) {
-            cg_point64 p = s->points[i], q = s->points[i + 1 < b ? i + 1 : a];
-            double c = (double)(q.x - p.x) * (y - (double)p.y)
-                       - (x - (double)p.x) * (double)(q.y - p.y);
-            if ((double)p.y <= y && (double)q.y > y && c > 0)
-                w++;
-            else if ((double)q.y <= y && (double)p.y > y && c < 0)
-                w--;
-        }
-    }
-    return w;
-}
 
 /* The outward distance of (x, y) from the convex counter-clockwise ring
  * a[0..n): the largest over its edges. */
@@ -79,10 +48,10 @@ static double swept_gap(const cg_point64 *a, int n, double x, double y, cg_point
 
 static int convex_pattern(cg_point64 *a, double r)
 {
-    int n = 3 + (int)between(0, 8);
-    double angle = between(0, 1), step = 2 * M_PI / n;
+    int n = 3 + (int)shapes_between(0, 8);
+    double angle = shapes_between(0, 1), step = 2 * M_PI / n;
     for (int i = 0; i < n; i++) {
-        double t = angle + step * (i + between(0, 0.5));
+        double t = angle + step * (i + shapes_between(0, 0.5));
         a[i] = (cg_point64){(int64_t)llround(r * cos(t)), (int64_t)llround(r * sin(t))};
     }
     return n;
@@ -95,7 +64,7 @@ static void random_sums(void)
     cg_polygon_set64 pattern = {0}, reflected = {0}, path = {0}, sum = {0}, diff = {0};
     for (int trial = 0; trial < 150; trial++) {
         cg_point64 a[16], minus[16];
-        int n = convex_pattern(a, between(50, 400));
+        int n = convex_pattern(a, shapes_between(50, 400));
         cg_polygon_set64_clear(&pattern);
         cg_polygon_set64_clear(&reflected);
         cg_polygon_set64_add_ring(&pattern, a, (size_t)n, 1);
@@ -105,10 +74,11 @@ static void random_sums(void)
         int open = trial % 2 == 0;
         cg_polygon_set64_clear(&path);
         cg_point64 p[40];
-        int m = open ? 1 + (int)between(0, 12) : 5 + (int)between(0, 30);
+        int m = open ? 1 + (int)shapes_between(0, 12) : 5 + (int)shapes_between(0, 30);
         for (int i = 0; i < m; i++) {
-            double t = 2 * M_PI * i / m, r = between(600, 2000);
-            p[i] = open ? (cg_point64){(int64_t)between(-2000, 2000), (int64_t)between(-2000, 2000)}
+            double t = 2 * M_PI * i / m, r = shapes_between(600, 2000);
+            p[i] = open ? (cg_point64){(int64_t)shapes_between(-2000, 2000),
+                                       (int64_t)shapes_between(-2000, 2000)}
                         : (cg_point64){(int64_t)llround(r * cos(t)), (int64_t)llround(r * sin(t))};
         }
         cg_polygon_set64_add_ring(&path, p, (size_t)m, 1);
@@ -135,7 +105,7 @@ static void random_sums(void)
                   "trial %d: the difference with -A is not the sum with A: areas %.17g, %.17g",
                   trial, cg_polygon_set64_area(&sum), cg_polygon_set64_area(&diff));
         for (int k = 0; k < 300; k++) {
-            double x = between(-2600, 2600), y = between(-2600, 2600), gap = INFINITY;
+            double x = shapes_between(-2600, 2600), y = shapes_between(-2600, 2600), gap = INFINITY;
             for (size_t r = 0; r < path.ring_count; r++) {
                 size_t s = path.ring_start[r], e = path.ring_start[r + 1];
                 for (size_t i = s; i < e; i++) {
@@ -148,8 +118,9 @@ static void random_sums(void)
                 continue;
             }
             int want = gap < 0
-                       || (!open && winding(&path, x - (double)a[0].x, y - (double)a[0].y) % 2);
-            int got = winding(&sum, x, y) != 0;
+                       || (!open
+                           && shapes_winding64(&path, x - (double)a[0].x, y - (double)a[0].y) % 2);
+            int got = shapes_winding64(&sum, x, y) != 0;
             judged++;
             CHECK_MSG(got == want, "trial %d: (%.1f, %.1f) gap %.2f: got %d, want %d", trial, x, y,
                       gap, got, want);

@@ -8,39 +8,8 @@
  * the arc tolerance and a grid unit of the band's boundary; equal distances
  * give cg_offset64's round offset (the symmetric difference thin); bad
  * input. */
-#include "cg/polygon.h"
+#include "polygon_shapes.h"
 #include "check.h"
-
-static uint64_t state = 0x853c49e6748fea9bull;
-static double uniform01(void)
-{
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return (double)(state >> 11) / 9007199254740992.0;
-}
-static double between(double lo, double hi)
-{
-    return lo + (hi - lo) * uniform01();
-}
-
-static int winding(const cg_polygon_set64 *s, double x, double y)
-{
-    int w = 0;
-    for (size_t r = 0; r < s->ring_count; r++) {
-        size_t a = s->ring_start[r], b = s->ring_start[r + 1];
-        for (size_t i = a; i < b; i++) {
-            cg_point64 p = s->points[i], q = s->points[i + 1 < b ? i + 1 : a];
-            double c = (double)(q.x - p.x) * (y - (double)p.y)
-                       - (x - (double)p.x) * (double)(q.y - p.y);
-            if ((double)p.y <= y && (double)q.y > y && c > 0)
-                w++;
-            else if ((double)q.y <= y && (double)p.y > y && c < 0)
-                w--;
-        }
-    }
-    return w;
-}
 
 /* min over t of |x - c(t)| - r(t) for the edge p-q. */
 static double edge_gap(double x, double y, cg_point64 p, cg_point64 q, double rp, double rq)
@@ -86,7 +55,7 @@ static void star(cg_polygon_set64 *s, int n, double cx, double cy, double lo, do
 {
     cg_point64 p[64];
     for (int i = 0; i < n; i++) {
-        double t = 2 * M_PI * (i + between(0, 0.6)) / n, r = between(lo, hi);
+        double t = 2 * M_PI * (i + shapes_between(0, 0.6)) / n, r = shapes_between(lo, hi);
         p[reversed ? n - 1 - i : i] = (cg_point64){(int64_t)llround(cx + r * cos(t)),
                                                    (int64_t)llround(cy + r * sin(t))};
     }
@@ -102,15 +71,15 @@ static void check_points(const cg_polygon_set64 *in, const double *deltas, cg_of
     int closed = end != CG_OFFSET_END_ROUND, polygons = end == CG_OFFSET_END_POLYGON;
     int deflate = polygons && deltas[0] < 0;
     for (int k = 0; k < 400; k++) {
-        double x = between(-3000, 3000), y = between(-3000, 3000);
+        double x = shapes_between(-3000, 3000), y = shapes_between(-3000, 3000);
         double gap = band_gap(in, deltas, closed, x, y);
-        int region = polygons && winding(in, x, y) != 0; /* fill: nonzero */
+        int region = polygons && shapes_winding64(in, x, y) != 0; /* fill: nonzero */
         if (fabs(gap) < slack) {
             unjudged++;
             continue;
         }
         int want = polygons ? (deflate ? region && gap > 0 : region || gap < 0) : gap < 0;
-        int got = winding(result, x, y) != 0;
+        int got = shapes_winding64(result, x, y) != 0;
         judged++;
         CHECK_MSG(got == want, "trial %d: (%.1f, %.1f) gap %.2f: got %d, want %d", trial, x, y, gap,
                   got, want);
@@ -129,18 +98,20 @@ static void against_definition(void)
                             : trial % 3 == 1 ? CG_OFFSET_END_ROUND
                                              : CG_OFFSET_END_JOINED;
         if (end == CG_OFFSET_END_POLYGON) {
-            star(&in, 5 + (int)between(0, 30), 0, 0, 800, 2000, 0);
-            star(&in, 3 + (int)between(0, 8), between(-200, 200), between(-200, 200), 100, 400, 1);
+            star(&in, 5 + (int)shapes_between(0, 30), 0, 0, 800, 2000, 0);
+            star(&in, 3 + (int)shapes_between(0, 8), shapes_between(-200, 200),
+                 shapes_between(-200, 200), 100, 400, 1);
         } else {
             cg_point64 p[20];
-            int n = 1 + (int)between(0, 12);
+            int n = 1 + (int)shapes_between(0, 12);
             for (int i = 0; i < n; i++)
-                p[i] = (cg_point64){(int64_t)between(-2000, 2000), (int64_t)between(-2000, 2000)};
+                p[i] = (cg_point64){(int64_t)shapes_between(-2000, 2000),
+                                    (int64_t)shapes_between(-2000, 2000)};
             cg_polygon_set64_add_ring(&in, p, (size_t)n, 1);
         }
         double deltas[64], sign = end == CG_OFFSET_END_POLYGON && trial % 2 ? -1 : 1;
         for (size_t i = 0; i < in.point_count; i++)
-            deltas[i] = sign * (trial % 5 == 0 ? 0 : between(0, 400));
+            deltas[i] = sign * (trial % 5 == 0 ? 0 : shapes_between(0, 400));
         o.end = end;
         CHECK(cg_offset_variable64(&in, deltas, &o, &out) == CG_OK);
         check_points(&in, deltas, end, &out, o.arc_tolerance + 2, trial);
@@ -161,7 +132,7 @@ static void constant_is_round_offset(void)
     o.arc_tolerance = 2;
     for (int trial = 0; trial < 40; trial++) {
         cg_polygon_set64_clear(&in);
-        star(&in, 5 + (int)between(0, 30), 0, 0, 800, 2000, 0);
+        star(&in, 5 + (int)shapes_between(0, 30), 0, 0, 800, 2000, 0);
         double d = trial % 2 ? 150 : -150, deltas[64];
         for (size_t i = 0; i < in.point_count; i++)
             deltas[i] = d;

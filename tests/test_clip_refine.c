@@ -14,24 +14,10 @@
  * failed).  Inputs: random star
  * polygons with holes, random self-crossing rings, combs (sharp input
  * angles), a square with touching square holes; bounds 5 to 30 degrees. */
-#include "cg/polygon.h"
+#include "polygon_shapes.h"
 #include "check.h"
 
 __extension__ typedef __int128 i128;
-
-static uint64_t state = 0x9E3779B97F4A7C15ull;
-static int64_t uniform(int64_t lo, int64_t hi)
-{
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return lo + (int64_t)(state % (uint64_t)(hi - lo + 1));
-}
-
-static i128 cross(cg_point64 a, cg_point64 b, cg_point64 c)
-{
-    return (i128)(b.x - a.x) * (c.y - a.y) - (i128)(b.y - a.y) * (c.x - a.x);
-}
 
 static i128 dot(cg_point64 a, cg_point64 b, cg_point64 c) /* (b - a) . (c - a) */
 {
@@ -56,7 +42,7 @@ static int in_circle(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 d)
 /* The angle (degrees) at v of the triangle v, a, b. */
 static double angle_at(cg_point64 v, cg_point64 a, cg_point64 b)
 {
-    double c = (double)cross(v, a, b), d = (double)dot(v, a, b);
+    double c = (double)shapes_cross64(v, a, b), d = (double)dot(v, a, b);
     return atan2(fabs(c), d) * 180 / M_PI;
 }
 
@@ -90,8 +76,8 @@ static int on_ring_edge(const cg_polygon_set64 *rings, cg_point64 p, cg_point64 
         for (size_t i = a; i < b; i++) {
             cg_point64 u = rings->points[i], v = rings->points[i + 1 < b ? i + 1 : a];
             i128 l = dot(u, v, v);
-            if (cross(u, v, p) == 0 && cross(u, v, q) == 0 && dot(u, v, p) >= 0 && dot(u, v, q) <= l
-                && dot(u, v, q) > dot(u, v, p))
+            if (shapes_cross64(u, v, p) == 0 && shapes_cross64(u, v, q) == 0 && dot(u, v, p) >= 0
+                && dot(u, v, q) <= l && dot(u, v, q) > dot(u, v, p))
                 return 1;
         }
     }
@@ -100,16 +86,11 @@ static int on_ring_edge(const cg_polygon_set64 *rings, cg_point64 p, cg_point64 
 
 static long total_triangles, sharp_exceptions, whole_exceptions;
 
+/* Euclid's algorithm, recursively: a segment of steps (dx, dy) has a grid
+ * point inside exactly when gcd(dx, dy) > 1. */
 static int64_t gcd(int64_t a, int64_t b)
 {
-    a = a < 0 ? -a : a;
-    b = b < 0 ? -b : b;
-    while (b) {
-        int64_t t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
+    return b == 0 ? (a < 0 ? -a : a) : gcd(b, a % b);
 }
 
 /* Whether a vertex of triangle p is an end of a triangle edge along a ring
@@ -145,7 +126,7 @@ static void check_refined(const char *what, int trial, const cg_polygon_set64 *i
     size_t nt = tri.ring_count;
     for (size_t t = 0; t < nt; t++) {
         const cg_point64 *p = tri.points + tri.ring_start[t];
-        i128 a = cross(p[0], p[1], p[2]);
+        i128 a = shapes_cross64(p[0], p[1], p[2]);
         bad += tri.ring_start[t + 1] - tri.ring_start[t] != 3 || a <= 0;
         area += a;
         int worst = 0;
@@ -182,7 +163,7 @@ static void check_refined(const char *what, int trial, const cg_polygon_set64 *i
     for (size_t r = 0; r < simple.ring_count; r++) {
         size_t a = simple.ring_start[r], b = simple.ring_start[r + 1];
         for (size_t i = a; i + 2 < b; i++)
-            want += cross(simple.points[a], simple.points[i + 1], simple.points[i + 2]);
+            want += shapes_cross64(simple.points[a], simple.points[i + 1], simple.points[i + 2]);
         for (size_t i = a; i < b; i++) {
             /* the triangle edges along it cover it: their projections sum to
              * its squared length (no edge is there twice: each has a twin
@@ -193,8 +174,9 @@ static void check_refined(const char *what, int trial, const cg_polygon_set64 *i
                 const cg_point64 *p = tri.points + tri.ring_start[t];
                 for (int k = 0; k < 3; k++) {
                     cg_point64 from = p[k], to = p[(k + 1) % 3];
-                    if (cross(u, v, from) == 0 && cross(u, v, to) == 0 && dot(u, v, from) >= 0
-                        && dot(u, v, to) <= dot(u, v, v) && dot(u, v, to) > dot(u, v, from))
+                    if (shapes_cross64(u, v, from) == 0 && shapes_cross64(u, v, to) == 0
+                        && dot(u, v, from) >= 0 && dot(u, v, to) <= dot(u, v, v)
+                        && dot(u, v, to) > dot(u, v, from))
                         covered += dot(u, v, to) - dot(u, v, from);
                 }
             }
@@ -221,8 +203,8 @@ static void star(cg_polygon_set64 *s, int n, int64_t cx, int64_t cy, int64_t r_l
 {
     cg_point64 p[64];
     for (int i = 0; i < n; i++) {
-        double t = 2 * M_PI * (i + 0.3 * (double)uniform(0, 100) / 100) / n;
-        double r = (double)uniform(r_lo, r_hi);
+        double t = 2 * M_PI * (i + 0.3 * (double)shapes_int(0, 100) / 100) / n;
+        double r = (double)shapes_int(r_lo, r_hi);
         cg_point64 q = {(cx + (int64_t)llround(r * cos(t))) * 4096,
                         (cy + (int64_t)llround(r * sin(t))) * 4096};
         p[reversed ? n - 1 - i : i] = q;
@@ -235,17 +217,17 @@ static void random_polygons(void)
     cg_polygon_set64 s = {0};
     for (int trial = 0; trial < 60; trial++) {
         cg_polygon_set64_clear(&s);
-        star(&s, 5 + (int)uniform(0, 20), 0, 0, 60, 120, 0);
-        star(&s, 3 + (int)uniform(0, 5), -25, 0, 10, 20, 1);
-        star(&s, 3 + (int)uniform(0, 5), 25, 10, 8, 18, 1);
+        star(&s, 5 + (int)shapes_int(0, 20), 0, 0, 60, 120, 0);
+        star(&s, 3 + (int)shapes_int(0, 5), -25, 0, 10, 20, 1);
+        star(&s, 3 + (int)shapes_int(0, 5), 25, 10, 8, 18, 1);
         check_refined("stars", trial, &s, CG_CLIP_NON_ZERO, bounds[trial % 6], 1);
     }
     for (int trial = 0; trial < 60; trial++) { /* self-crossing: sharp corners */
         cg_polygon_set64_clear(&s);
         cg_point64 p[12];
-        int n = 3 + (int)uniform(0, 9);
+        int n = 3 + (int)shapes_int(0, 9);
         for (int i = 0; i < n; i++)
-            p[i] = (cg_point64){uniform(-100, 100) * 4096, uniform(-100, 100) * 4096};
+            p[i] = (cg_point64){shapes_int(-100, 100) * 4096, shapes_int(-100, 100) * 4096};
         cg_polygon_set64_add_ring(&s, p, (size_t)n, 1);
         check_refined("crossing", trial, &s, (cg_clip_fill)(trial % 4), bounds[trial % 6], 0);
     }

@@ -9,24 +9,10 @@
  * edge is locally Delaunay.  The inputs: random self-crossing rings, rings
  * on a coarse grid (collinear runs, touching holes), combs, a square with
  * many touching square holes, and spirals. */
-#include "cg/polygon.h"
+#include "polygon_shapes.h"
 #include "check.h"
 
 __extension__ typedef __int128 i128;
-
-static uint64_t state = 0x2545F4914F6CDD1Dull;
-static int64_t uniform(int64_t lo, int64_t hi)
-{
-    state ^= state << 13;
-    state ^= state >> 7;
-    state ^= state << 17;
-    return lo + (int64_t)(state % (uint64_t)(hi - lo + 1));
-}
-
-static i128 cross(cg_point64 a, cg_point64 b, cg_point64 c)
-{
-    return (i128)(b.x - a.x) * (c.y - a.y) - (i128)(b.y - a.y) * (c.x - a.x);
-}
 
 /* d strictly inside the circle through a, b, c (counter-clockwise). */
 static int in_circle(cg_point64 a, cg_point64 b, cg_point64 c, cg_point64 d)
@@ -82,7 +68,8 @@ static size_t ring_pieces(const cg_polygon_set64 *simple, cg_point64 a, cg_point
             cg_point64 c = simple->points[k];
             i128 dot = (i128)(c.x - from.x) * (b.x - from.x)
                        + (i128)(c.y - from.y) * (b.y - from.y);
-            if (cross(from, b, c) == 0 && dot > 0 && dot < len && (best == 0 || dot < best)) {
+            if (shapes_cross64(from, b, c) == 0 && dot > 0 && dot < len
+                && (best == 0 || dot < best)) {
                 best = dot;
                 next = c;
             }
@@ -109,7 +96,7 @@ static void check_triangulation(const char *what, int trial, const cg_polygon_se
     for (size_t t = 0; t < nt; t++) {
         const cg_point64 *p = tri.points + tri.ring_start[t];
         bad += tri.ring_start[t + 1] - tri.ring_start[t] != 3;
-        i128 a = cross(p[0], p[1], p[2]);
+        i128 a = shapes_cross64(p[0], p[1], p[2]);
         bad += a <= 0;
         area += a;
         for (int k = 0; k < 3; k++)
@@ -119,7 +106,7 @@ static void check_triangulation(const char *what, int trial, const cg_polygon_se
     for (size_t r = 0; r < simple.ring_count; r++) {
         size_t a = simple.ring_start[r], b = simple.ring_start[r + 1];
         for (size_t i = a; i + 2 < b; i++)
-            want += cross(simple.points[a], simple.points[i + 1], simple.points[i + 2]);
+            want += shapes_cross64(simple.points[a], simple.points[i + 1], simple.points[i + 2]);
         for (size_t i = a; i < b; i++)
             ne += ring_pieces(&simple, simple.points[i], simple.points[i + 1 < b ? i + 1 : a],
                               edges + ne);
@@ -173,9 +160,9 @@ static void random_rings(cg_polygon_set64 *s, int rings, int points, int64_t ext
     cg_polygon_set64_clear(s);
     for (int r = 0; r < rings; r++) {
         cg_point64 p[200];
-        int n = 3 + (int)uniform(0, points - 3);
+        int n = 3 + (int)shapes_int(0, points - 3);
         for (int i = 0; i < n; i++)
-            p[i] = (cg_point64){uniform(-extent, extent), uniform(-extent, extent)};
+            p[i] = (cg_point64){shapes_int(-extent, extent), shapes_int(-extent, extent)};
         cg_polygon_set64_add_ring(s, p, (size_t)n, 1);
     }
 }
@@ -184,7 +171,7 @@ static void random_polygons(void)
 {
     cg_polygon_set64 s = {0};
     for (int trial = 0; trial < 300; trial++) {
-        random_rings(&s, 1 + (int)uniform(0, 3), 60, 500000);
+        random_rings(&s, 1 + (int)shapes_int(0, 3), 60, 500000);
         check_triangulation("random", trial, &s, (cg_clip_fill)(trial % 4));
     }
     cg_polygon_set64_clear(&s);
@@ -195,7 +182,7 @@ static void coarse_grid(void)
 {
     cg_polygon_set64 s = {0};
     for (int trial = 0; trial < 400; trial++) {
-        random_rings(&s, 1 + (int)uniform(0, 4), 12, 3);
+        random_rings(&s, 1 + (int)shapes_int(0, 4), 12, 3);
         for (size_t i = 0; i < s.point_count; i++) {
             s.points[i].x *= 1000;
             s.points[i].y *= 1000;

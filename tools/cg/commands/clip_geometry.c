@@ -8,6 +8,7 @@
 #include "cg/polygon.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -267,6 +268,8 @@ typedef struct geometry_job {
     int workspace_for_lines; /* use a workspace on line strings too */
     int workspace_for_polygons;
     int result_open_when_open; /* line strings in, line strings out */
+    /* NULL, or told the result once it is written (for warnings) */
+    void (*report)(const void *args, const cg_polygon_set *result);
 } geometry_job;
 
 static int run_job(const geometry_job *job, const char *file, const geometry_arguments *common)
@@ -280,6 +283,8 @@ static int run_job(const geometry_job *job, const char *file, const geometry_arg
         status = run_timed(job->name, common,
                            open ? job->workspace_for_lines : job->workspace_for_polygons, job->step,
                            job->args, &input, open, &result, open && job->result_open_when_open);
+    if (status == 0 && job->report)
+        job->report(job->args, &result);
     cg_polygon_set_clear(&input);
     cg_polygon_set_clear(&result);
     return status;
@@ -329,7 +334,7 @@ static int offset(int argc, char **argv)
     options.miter_limit = common.miter_limit;
     options.arc_tolerance = common.arc_tolerance;
     offset_args args = {delta, options, common.end_given ? CG_OFFSET_END_JOINED + common.end : -1};
-    geometry_job job = {"offset", offset_step, &args, offset_check, 1, 1, 0};
+    geometry_job job = {"offset", offset_step, &args, offset_check, 1, 1, 0, NULL};
     return run_job(&job, positionals[1], &common);
 }
 
@@ -361,7 +366,7 @@ static int rect(int argc, char **argv)
     if (v[0] > v[2] || v[1] > v[3])
         return cli_usage_error("clip", "rect: the rectangle needs XMIN <= XMAX and YMIN <= YMAX");
     rect_args args = {{v[0], v[1], v[2], v[3]}, (cg_clip_fill)common.fill};
-    geometry_job job = {"rect", rect_step, &args, NULL, 0, 1, 1};
+    geometry_job job = {"rect", rect_step, &args, NULL, 0, 1, 1, NULL};
     return run_job(&job, positionals[4], &common);
 }
 
@@ -376,6 +381,39 @@ static cg_status triangulate_step(const void *args, cg_clip_workspace *ws,
     const triangulate_args *a = args;
     (void)open;
     return cg_triangulate_refined_ws(ws, input, a->fill, a->min_angle, 0, result);
+}
+
+/* The smallest angle of triangle p, in degrees. */
+static double smallest_angle(const cg_vec2 *p)
+{
+    double least = 180;
+    for (int i = 0; i < 3; i++) {
+        cg_vec2 a = p[i], b = p[(i + 1) % 3], c = p[(i + 2) % 3];
+        double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+        double angle = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / M_PI;
+        least = angle < least ? angle : least;
+    }
+    return least;
+}
+
+/* Refinement keeps some angles under the bound (at input corners too sharp
+ * to refine, and where the grid is too coarse to split further): say how
+ * many, so that a user does not take the bound for a guarantee. */
+static void triangulate_report(const void *args, const cg_polygon_set *result)
+{
+    const triangulate_args *a = args;
+    if (a->min_angle <= 0)
+        return;
+    size_t under = 0;
+    for (size_t t = 0; t < result->ring_count; t++)
+        if (result->ring_start[t + 1] - result->ring_start[t] == 3
+            && smallest_angle(result->points + result->ring_start[t]) < a->min_angle - 1e-9)
+            under++;
+    if (under)
+        fprintf(stderr,
+                "cg: clip: triangulate: %zu of %zu triangles keep an angle under %g degrees (at "
+                "input corners too sharp to refine, or where the grid is too coarse to split)\n",
+                under, result->ring_count, a->min_angle);
 }
 
 /* Triangles are made of polygons only. */
@@ -396,7 +434,8 @@ static int triangulate(int argc, char **argv)
     if (parse_geometry(&clip_triangulate_syntax, argc, argv, &common, positionals) != CLI_OK)
         return CLI_USAGE;
     triangulate_args args = {(cg_clip_fill)common.fill, common.min_angle};
-    geometry_job job = {"triangulate", triangulate_step, &args, triangulate_check, 1, 1, 0};
+    geometry_job job = {"triangulate",     triangulate_step, &args, triangulate_check, 1, 1, 0,
+                        triangulate_report};
     return run_job(&job, positionals[0], &common);
 }
 
@@ -426,7 +465,7 @@ static int simplify(int argc, char **argv)
         return CLI_USAGE;
     simplify_args args = {(cg_clip_fill)common.fill, (cg_simplify_algorithm)common.algorithm,
                           tolerance};
-    geometry_job job = {"simplify", simplify_step, &args, NULL, 0, 0, 1};
+    geometry_job job = {"simplify", simplify_step, &args, NULL, 0, 0, 1, NULL};
     return run_job(&job, positionals[1], &common);
 }
 

@@ -1,6 +1,7 @@
 /* Fonts: FreeType faces over the file's bytes, fontconfig look-up, and the
  * glyph-outline cache (cg/text.h). */
 #include "internal.h"
+#include "../core/array.h"
 
 #include FT_OUTLINE_H
 #include <fontconfig/fontconfig.h>
@@ -91,16 +92,16 @@ cg_status cg_font_load(const char *path, int face_index, cg_font **out, cg_error
     size_t size = 0, cap = 0;
     for (;;) {
         if (size == cap) {
-            size_t grown = cap ? cap * 2 : 65536;
-            unsigned char *bigger = grown <= TEXT_MAX_FONT_BYTES ? realloc(data, grown) : NULL;
-            if (!bigger) {
+            cg_status grown = size < TEXT_MAX_FONT_BYTES
+                                  ? core_array_reserve((void **)&data, &cap, size + 65536, 1)
+                                  : CG_ERANGE;
+            if (grown != CG_OK) {
                 free(data);
                 fclose(file);
-                return cg_error_set(err, grown > TEXT_MAX_FONT_BYTES ? CG_ERANGE : CG_ENOMEM,
-                                    "%s: font file too large", path);
+                return cg_error_set(err, grown, "%s: font file too large", path);
             }
-            data = bigger;
-            cap = grown;
+            if (cap > TEXT_MAX_FONT_BYTES)
+                cap = TEXT_MAX_FONT_BYTES; /* read no more than the limit */
         }
         size_t got = fread(data + size, 1, cap - size, file);
         size += got;
@@ -172,6 +173,15 @@ size_t cg_font_cached_glyphs(const cg_font *font)
 
 /* ---- font look-up ----------------------------------------------------------- */
 
+/* fontconfig's configuration, loaded once per process: reading the
+ * configuration files and scanning the font cache took a few milliseconds
+ * on every lookup.  FcInit is idempotent and thread-safe; the configuration
+ * it makes current lives until exit.  NULL when fontconfig cannot start. */
+static FcConfig *font_config(void)
+{
+    return FcInit() ? FcConfigGetCurrent() : NULL;
+}
+
 static int fc_weight(int css)
 {
     return (int)FcWeightFromOpenTypeDouble(css < 1 ? 400 : css > 1000 ? 1000 : css);
@@ -182,13 +192,10 @@ cg_status cg_font_find(const char *family, int weight, int italic, char *path, s
 {
     if (!family || !path || !cap || !face_index)
         return cg_error_set(err, CG_EINVAL, "font: no family name");
-    FcConfig *config = FcInitLoadConfigAndFonts();
+    FcConfig *config = font_config();
     FcPattern *pattern = config ? FcPatternCreate() : NULL;
-    if (!pattern) {
-        if (config)
-            FcConfigDestroy(config);
+    if (!pattern)
         return cg_error_set(err, CG_ENOMEM, "font %s: fontconfig could not start", family);
-    }
     FcPatternAddString(pattern, FC_FAMILY, (const FcChar8 *)family);
     FcPatternAddInteger(pattern, FC_WEIGHT, fc_weight(weight));
     FcPatternAddInteger(pattern, FC_SLANT, italic ? FC_SLANT_ITALIC : FC_SLANT_ROMAN);
@@ -213,7 +220,6 @@ cg_status cg_font_find(const char *family, int weight, int italic, char *path, s
     if (match)
         FcPatternDestroy(match);
     FcPatternDestroy(pattern);
-    FcConfigDestroy(config);
     return status;
 }
 
@@ -234,7 +240,7 @@ cg_status cg_font_family_exists(const char *family, cg_error *err)
         return cg_error_set(err, CG_EINVAL, "font: no family name");
     if (is_generic_family(family))
         return CG_OK;
-    FcConfig *config = FcInitLoadConfigAndFonts();
+    FcConfig *config = font_config();
     FcPattern *pattern = config ? FcPatternCreate() : NULL;
     FcObjectSet *objects = pattern ? FcObjectSetBuild(FC_FILE, (char *)NULL) : NULL;
     FcFontSet *set = NULL;
@@ -254,8 +260,6 @@ cg_status cg_font_family_exists(const char *family, cg_error *err)
         FcObjectSetDestroy(objects);
     if (pattern)
         FcPatternDestroy(pattern);
-    if (config)
-        FcConfigDestroy(config);
     return status;
 }
 

@@ -1,6 +1,7 @@
 /* Glyph outlines: FT_Outline_Decompose into a per-font cache in font units,
  * then into cg paths at a size and origin (cg/text.h). */
 #include "internal.h"
+#include "../core/array.h"
 
 #include FT_OUTLINE_H
 
@@ -11,22 +12,11 @@ static int outline_push(text_outline *o, unsigned char op, const FT_Vector *a, c
 {
     const FT_Vector *p[3] = {a, b, c};
     int n = op == 'M' || op == 'L' ? 1 : op == 'Q' ? 2 : op == 'C' ? 3 : 0;
-    if (o->op_count == o->op_cap) {
-        size_t cap = o->op_cap ? o->op_cap * 2 : 32;
-        unsigned char *ops = realloc(o->ops, cap);
-        if (!ops)
-            return -1;
-        o->ops = ops;
-        o->op_cap = cap;
-    }
-    if (o->pt_count + 2 * (size_t)n > o->pt_cap) {
-        size_t cap = o->pt_cap ? o->pt_cap * 2 : 128;
-        double *pts = realloc(o->pts, cap * sizeof *pts);
-        if (!pts)
-            return -1;
-        o->pts = pts;
-        o->pt_cap = cap;
-    }
+    if (core_array_reserve((void **)&o->ops, &o->op_cap, o->op_count + 1, sizeof *o->ops) != CG_OK
+        || core_array_reserve((void **)&o->pts, &o->pt_cap, o->pt_count + 2 * (size_t)n,
+                              sizeof *o->pts)
+               != CG_OK)
+        return -1;
     o->ops[o->op_count++] = op;
     for (int i = 0; i < n; i++) {
         o->pts[o->pt_count++] = (double)p[i]->x;

@@ -92,6 +92,9 @@ typedef struct cg_scene_area_light {
     int samples;
 } cg_scene_area_light;
 
+/* A scene's keyframes (the key "animation"), posed by cg_scene_set_frame. */
+typedef struct cg_scene_animation cg_scene_animation;
+
 typedef struct cg_scene {
     int width, height;
     cg_rgbaf background; /* linear light */
@@ -136,6 +139,10 @@ typedef struct cg_scene {
     cg_image *environment_map;    /* NULL for a colour, or when files are not loaded */
     double environment_intensity; /* default 1 */
     cg_vec3 environment_color;    /* when there is no file */
+    /* Keyframes: NULL and frame_count 0 for a still scene; else frames
+     * 0 to frame_count - 1 (the key's "frames", or up to its last key). */
+    cg_scene_animation *animation;
+    int frame_count;
 } cg_scene;
 
 /* Reads a scene file and loads the mesh files it names (paths relative to
@@ -150,6 +157,18 @@ cg_status cg_scene_load(const char *path, cg_scene **out, cg_error *err);
 cg_status cg_scene_parse(const char *text, size_t size, const char *name, const char *base_dir,
                          int load_meshes, cg_scene **out, cg_error *err);
 void cg_scene_free(cg_scene *scene);
+
+/* Poses an animated scene at frame (any finite number; frames between keys
+ * are interpolated, linearly or by a Catmull-Rom spline through the keys,
+ * and the first and last keys hold before and after them): each animated
+ * value is written, the rest left as they are.  Camera values (eye, target,
+ * up, fov) are written as the keys give them; an object's placement is
+ * translate * rotate (about x, then y, then z, degrees) * scale applied
+ * after the file's transform list; a light's colour is the file's times the
+ * animated intensity (unless the lights have been replaced since).  Poses
+ * do not accumulate.  CG_OK and nothing changed for a still scene;
+ * CG_EINVAL for NULL or a non-finite frame. */
+cg_status cg_scene_set_frame(cg_scene *scene, double frame);
 
 /* Renders the scene into a new RGBA8 image of its size, with the scene's
  * algorithm.  Overlays are not drawn (the cg tool draws them with its script

@@ -38,8 +38,9 @@ static cg_status parse_array(const scene_parser *p, const cJSON *root, const cha
 
 static cg_status parse_scene(const scene_parser *p, const cJSON *root, cg_scene *s)
 {
-    static const char *const keys[] = {"comment",   "image",   "camera",   "render",      "lights",
-                                       "materials", "objects", "overlays", "environment", NULL};
+    static const char *const keys[] = {"comment",     "image",     "camera",  "render",
+                                       "lights",      "materials", "objects", "overlays",
+                                       "environment", "animation", NULL};
     cg_status st;
     if (!cJSON_IsObject(root))
         return cg_error_set(p->err, CG_EFORMAT, "%s: expected a JSON object at the top level",
@@ -65,6 +66,9 @@ static cg_status parse_scene(const scene_parser *p, const cJSON *root, cg_scene 
         || (st = parse_array(p, root, "objects", CG_SCENE_MAX_OBJECTS, scene_parse_object, s))
         || (st = parse_array(p, root, "overlays", CG_SCENE_MAX_OVERLAYS, scene_parse_overlay, s)))
         return st;
+    /* last: its keys name the objects and lights read above */
+    if ((v = cJSON_GetObjectItemCaseSensitive(root, "animation")))
+        return scene_parse_animation(p, root, v, s);
     return CG_OK;
 }
 

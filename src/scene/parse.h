@@ -9,6 +9,7 @@
  *   parse_objects.c    "objects" and "overlays"
  *   parse_transform.c  an object's "transform"
  *   parse_environment.c "environment" (the path tracer's sky)
+ *   parse_animation.c  "animation" (keyframes, animation.h)
  *
  * Every reader checks its keys (an unknown key is an error) and reports the
  * first problem as "file: json.path: expected ..., got ...". */
@@ -101,6 +102,9 @@ cg_status scene_parse_object(const scene_parser *p, const char *path, const cJSO
 /* One line of a cg draw script. */
 cg_status scene_parse_overlay(const scene_parser *p, const char *path, const cJSON *v, cg_scene *s);
 cg_status scene_parse_environment(const scene_parser *p, const cJSON *v, cg_scene *s);
+/* After the objects and lights: root is the file's top level. */
+cg_status scene_parse_animation(const scene_parser *p, const cJSON *root, const cJSON *v,
+                                cg_scene *s);
 /* file joined to base_dir unless absolute (malloc'ed; NULL when out of memory). */
 char *scene_resolve_path(const char *base_dir, const char *file);
 /* A transform list, composed into *out. */

@@ -1,5 +1,6 @@
 /* Scene objects: defaults and release. */
 #include "internal.h"
+#include "animation.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -64,6 +65,7 @@ void cg_scene_free(cg_scene *scene)
         free(scene->overlays[i]);
     free(scene->environment_file);
     cg_image_free(scene->environment_map);
+    animation_free(scene->animation);
     free(scene->objects);
     free(scene->materials);
     free(scene->lights);

@@ -8,6 +8,7 @@
 #include "render_scene.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Choices are stored as ints into these enums. */
@@ -97,6 +98,30 @@ static int parse_msaa(const char *command, const cli_option *option, const char 
         }
     cli_usage_error(command, "--msaa: expected 1, 2, 4, 8 or 16 samples per pixel, got '%s'", text);
     return -1;
+}
+
+/* --frames A..B: frames A to B (inclusive) of an animated scene. */
+static int parse_frames(const char *command, const cli_option *option, const char *text,
+                        void *arguments)
+{
+    (void)option;
+    render_request *r = arguments;
+    char *end;
+    long a = strtol(text, &end, 10), b = -1;
+    if (end != text && end[0] == '.' && end[1] == '.') {
+        const char *rest = end + 2;
+        b = strtol(rest, &end, 10);
+        if (end == rest)
+            b = -1;
+    }
+    if (*end || a < 0 || b < a || b > 1000000) {
+        cli_usage_error(command, "--frames: expected A..B with 0 <= A <= B <= 1000000, got '%s'",
+                        text);
+        return -1;
+    }
+    r->frame_first = (int)a;
+    r->frame_last = (int)b;
+    return 0;
 }
 
 /* ---- the table ------------------------------------------------------------------- */
@@ -370,6 +395,17 @@ static const cli_option raytrace_options[] = {
      .help = "print the BVH build time and rays per second"},
 };
 
+static const cli_option scene_options[] = {
+    {.name = "--frames",
+     .kind = CLI_CUSTOM,
+     .parse = parse_frames,
+     .value_name = "A..B",
+     .given = GIVEN(OPT_FRAMES),
+     .help = "frames A to B of the scene's animation, one image each: OUT\n"
+             "with %d (or %04d) takes the frame number, else -NNNN goes\n"
+             "before its extension (out.png: out-0000.png, ...)"},
+};
+
 static const cli_option_group render_groups[] = {
     CLI_GROUP(NULL, output_options),
     CLI_GROUP("Camera (default: looking along -z, placed so the whole mesh fills the view):",
@@ -378,6 +414,7 @@ static const cli_option_group render_groups[] = {
     CLI_GROUP("Pipeline:", pipeline_options),
     CLI_GROUP("Rasterizer (not with --algorithm raytrace):", raster_options),
     CLI_GROUP("Ray tracer (--algorithm raytrace only):", raytrace_options),
+    CLI_GROUP("Scene files:", scene_options),
     {0},
 };
 
@@ -442,6 +479,9 @@ static int check_combinations(const char *command, int trace_only, const render_
                                render_option_name((render_option)k),
                                k == OPT_FLOOR || k == OPT_SCENE ? "put the objects in the scene"
                                                                 : "it applies to mesh files");
+    if (render_request_has(r, OPT_FRAMES) && !(s->input && render_scene_is_scene(s->input)))
+        return cli_usage_error(command, "--frames: animates a scene file (its \"animation\" "
+                                        "key); a mesh file has one frame");
     if (s->common.render.shading == CG_SHADING_UNLIT
         && (r->algorithm == RENDER_RAYTRACE || (s->input && render_scene_is_scene(s->input))))
         return cli_usage_error(command,

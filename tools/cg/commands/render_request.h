@@ -55,6 +55,7 @@ typedef enum render_option {
     OPT_TEXTURE_FILTER,
     OPT_MSAA,
     OPT_SHADOWS,
+    OPT_FRAMES,
     OPT_COUNT
 } render_option;
 
@@ -64,9 +65,10 @@ typedef struct render_request {
      * --scene, --quiet). */
     raytrace_settings trace;
     render_algorithm algorithm;
-    double crease_degrees; /* --crease (default 60) */
-    int output_depth;      /* --output-depth */
-    int given[OPT_COUNT];  /* how often each option was on the command line */
+    double crease_degrees;       /* --crease (default 60) */
+    int output_depth;            /* --output-depth */
+    int frame_first, frame_last; /* --frames A..B of an animated scene */
+    int given[OPT_COUNT];        /* how often each option was on the command line */
 } render_request;
 
 /* The command line of `cg render` and `cg trace-render`, for the help. */

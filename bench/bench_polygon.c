@@ -419,12 +419,13 @@ static void simplifications(void)
     }
 }
 
-/* The cg command on a WKT file of the star: its own median time (what it
- * prints for --repeat) against the library's. */
+/* The cg command on a WKT file of the 10,000-vertex star: its own median
+ * time (what it prints for --repeat) beside the library call on the same
+ * input and arguments (the command converts to and from its grid). */
 static void command_rows(void)
 {
     shape s = {0};
-    star(&s, 10000, 1000, 0);
+    star(&s, 10000, RADIUS, 0);
     char path[] = "/tmp/cg_bench_polygon_XXXXXX";
     int fd = mkstemp(path);
     FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
@@ -440,8 +441,8 @@ static void command_rows(void)
     fclose(f);
     enum { COMMANDS = 4 };
     static const char *commands[COMMANDS] = {
-        "offset 10 %s --join round --repeat 5", "triangulate %s --repeat 5",
-        "rect 950 -50 1050 50 %s --repeat 5", "simplify 1 %s --repeat 5"};
+        "offset 10000 %s --join round --repeat 5", "triangulate %s --repeat 5",
+        "rect 950000 -50000 1050000 50000 %s --repeat 5", "simplify 1000 %s --repeat 5"};
     static const char *names[COMMANDS] = {
         "cg clip offset round star 10000 (command)", "cg clip triangulate star 10000 (command)",
         "cg clip rect tile star 10000 (command)", "cg clip simplify rdp star 10000 (command)"};
@@ -465,11 +466,11 @@ static void command_rows(void)
         job j = {&s,
                  {0},
                  cg_clip_workspace_create(),
-                 10,
+                 RADIUS / 100,
                  0,
-                 c == 3 ? 1 : cg_offset_options_default().arc_tolerance,
+                 c == 3 ? RADIUS / 1000 : 0, /* 0: the default arc tolerance */
                  1,
-                 {950, -50, 1050, 50},
+                 {950000, -50000, 1050000, 50000},
                  NULL};
         double t_lib = bench_median(library[c], &j, 5);
         cg_polygon_set64_clear(&j.result);

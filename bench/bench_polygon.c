@@ -2,11 +2,17 @@
  * GEOS on the same integer inputs: offsets of 5-lobed star polygons (a
  * random jitter of half a chord) by 1% of their radius with round and
  * miter joins (against Clipper2's InflatePaths and GEOS's buffer),
- * rectangle clips of a small tile and of most of the star (against cg's
- * own boolean intersection and Clipper2's RectClip), triangulations of a
- * star with a star hole (against Clipper2's Triangulate), and the cg
- * command's own time for an offset and a triangulation.  Areas (triangle
- * counts) are printed side by side in the notes. */
+ * rectangle clips of a small tile and of most of the star, as a polygon
+ * (against cg's own boolean intersection, Clipper2's RectClip and GEOS's
+ * GEOSClipByRect) and as a polyline (RectClipLines, GEOSClipByRect),
+ * Minkowski sums of a 32-gon along the star as an open path (Clipper2's
+ * MinkowskiSum), RDP simplifications (GEOS's TopologyPreserveSimplify,
+ * Clipper2's SimplifyPaths and RamerDouglasPeucker), triangulations of a
+ * star with a star hole (Clipper2's Triangulate, GEOS's constrained
+ * Delaunay triangulation), and the cg command's own time beside the
+ * library's.  Areas (lengths, point or triangle counts) are printed side
+ * by side in the notes.  `bench_polygon [offset|rect|lines|minkowski|
+ * simplify|triangulate|command]` runs one group. */
 #include "bench.h"
 #include "bench_rings.h"
 #include "bench_polygon_peers.h"
@@ -124,6 +130,67 @@ static void clipper2_triangulate_job(void *v)
     j->area = peer_clipper2_triangulate(j->peer);
 }
 
+static void cg_rect_lines_job(void *v)
+{
+    job *j = v;
+    cg_rect_clip_lines64(&j->input->set, j->rect, &j->result);
+    double total = 0;
+    for (size_t r = 0; r < j->result.ring_count; r++)
+        for (size_t i = j->result.ring_start[r] + 1; i < j->result.ring_start[r + 1]; i++)
+            total += hypot((double)(j->result.points[i].x - j->result.points[i - 1].x),
+                           (double)(j->result.points[i].y - j->result.points[i - 1].y));
+    j->area = total;
+}
+static void clipper2_rect_lines_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_rect_lines(j->peer, j->rect.xmin, j->rect.ymin, j->rect.xmax,
+                                       j->rect.ymax);
+}
+static void geos_rect_job(void *v)
+{
+    job *j = v;
+    j->area = peer_geos_clip_rect(j->peer, (double)j->rect.xmin, (double)j->rect.ymin,
+                                  (double)j->rect.xmax, (double)j->rect.ymax);
+}
+static void cg_simplify_job(void *v)
+{
+    job *j = v;
+    cg_simplify64(&j->input->set, 0, CG_CLIP_NON_ZERO, CG_SIMPLIFY_RDP, j->tolerance, &j->result);
+    j->area = (double)j->result.point_count;
+}
+static void clipper2_simplify_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_simplify(j->peer, j->tolerance, j->join);
+}
+static void geos_simplify_job(void *v)
+{
+    job *j = v;
+    j->area = peer_geos_simplify(j->peer, j->tolerance);
+}
+static void geos_triangulate_job(void *v)
+{
+    job *j = v;
+    j->area = peer_geos_triangulate(j->peer);
+}
+
+/* The pattern of the Minkowski rows, its input beside it. */
+static shape *minkowski_pattern;
+static void *minkowski_pattern_peer;
+static void cg_minkowski_job(void *v)
+{
+    job *j = v;
+    cg_minkowski64_ws(j->ws, CG_MINKOWSKI_SUM, &minkowski_pattern->set, &j->input->set, 1,
+                      CG_CLIP_NON_ZERO, &j->result);
+    j->area = cg_polygon_set64_area(&j->result);
+}
+static void clipper2_minkowski_job(void *v)
+{
+    job *j = v;
+    j->area = peer_clipper2_minkowski(minkowski_pattern_peer, j->peer, 0);
+}
+
 static int runs_for(size_t n)
 {
     return n >= 100000 ? 3 : n >= 10000 ? 5 : 15;
@@ -150,6 +217,20 @@ static void clipper2_row(const char *name, double t_cg, double v_cg, int counts,
         snprintf(note, sizeof note, "areas cg %.6g, Clipper2 %.6g", v_cg, j->area);
     bench_row(name, t_cg, "Clipper2", t, note);
     peer_clipper2_free(j->peer);
+}
+
+/* The same for GEOS (lines: its input as polylines); what names v_cg. */
+static void geos_row(const char *name, double t_cg, double v_cg, const char *what,
+                     void (*run)(void *), job *j, int runs, int lines)
+{
+    char note[160];
+    if (!peer_geos_available())
+        return;
+    j->peer = lines ? peer_geos_prepare_lines(&j->input->peer) : peer_geos_prepare(&j->input->peer);
+    double t = bench_median(run, j, runs);
+    snprintf(note, sizeof note, "%s cg %.6g, GEOS %.6g", what, v_cg, j->area);
+    bench_row(name, t_cg, "GEOS", t, note);
+    peer_geos_free(j->peer);
 }
 
 static void offsets(void)
@@ -209,6 +290,7 @@ static void rectangles(void)
             snprintf(note, sizeof note, "areas rect %.6g, boolean %.6g", a_cg, j.area);
             bench_row(name, t_cg, "cg boolean", t_bool, note);
             clipper2_row(name, t_cg, a_cg, 0, clipper2_rect_job, &j, runs, 0);
+            geos_row(name, t_cg, a_cg, "areas", geos_rect_job, &j, runs, 0);
             cg_polygon_set64_clear(&j.result);
             cg_clip_workspace_free(j.ws);
         }
@@ -230,18 +312,120 @@ static void triangulations(void)
         char name[64];
         snprintf(name, sizeof name, "triangulate star+hole %zu", sizes[k] + sizes[k] / 10);
         clipper2_row(name, t_cg, n_cg, 1, clipper2_triangulate_job, &j, runs, 1);
+        geos_row(name, t_cg, n_cg, "triangles", geos_triangulate_job, &j, runs < 3 ? runs : 3, 0);
         cg_polygon_set64_clear(&j.result);
         cg_clip_workspace_free(j.ws);
         shape_free(&s);
     }
 }
 
-/* The cg command on a WKT file of the star: its own median time (what it
- * prints for --repeat) against the library's. */
+/* The star's ring as an open polyline cut to a tile and to most of it. */
+static void rectangle_lines(void)
+{
+    static const size_t sizes[] = {1000, 100000, 1000000};
+    for (int k = 0; k < 3; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        finish(&s);
+        for (int large = 0; large < 2; large++) {
+            int64_t h = large ? (int64_t)(0.8 * RADIUS) : (int64_t)(0.05 * RADIUS);
+            int64_t cx = large ? 0 : (int64_t)RADIUS;
+            job j = {&s, {0}, cg_clip_workspace_create(), 0,   0,
+                     0,  0,   {cx - h, -h, cx + h, h},    NULL};
+            int runs = runs_for(sizes[k]);
+            double t_cg = bench_median(cg_rect_lines_job, &j, runs), l_cg = j.area;
+            char name[64], note[160];
+            snprintf(name, sizeof name, "rect lines %s star %zu", large ? "large" : "tile",
+                     sizes[k]);
+            if (peer_clipper2_available()) {
+                j.peer = peer_clipper2_prepare(&s.peer);
+                double t = bench_median(clipper2_rect_lines_job, &j, runs);
+                snprintf(note, sizeof note, "lengths cg %.6g, Clipper2 %.6g", l_cg, j.area);
+                bench_row(name, t_cg, "Clipper2", t, note);
+                peer_clipper2_free(j.peer);
+            }
+            geos_row(name, t_cg, l_cg, "lengths", geos_rect_job, &j, runs, 1);
+            cg_polygon_set64_clear(&j.result);
+            cg_clip_workspace_free(j.ws);
+        }
+        shape_free(&s);
+    }
+}
+
+/* A 32-gon of 1% of the radius swept along the star's ring as an open
+ * path. */
+static void minkowski(void)
+{
+    static const size_t sizes[] = {1000, 10000, 100000};
+    shape pattern = {0};
+    cg_point64 p[32];
+    for (int i = 0; i < 32; i++)
+        p[i] = (cg_point64){llround(RADIUS / 100 * cos(2 * M_PI * i / 32)),
+                            llround(RADIUS / 100 * sin(2 * M_PI * i / 32))};
+    cg_polygon_set64_add_ring(&pattern.set, p, 32, 1);
+    finish(&pattern);
+    minkowski_pattern = &pattern;
+    minkowski_pattern_peer = peer_clipper2_available() ? peer_clipper2_prepare(&pattern.peer)
+                                                       : NULL;
+    for (int k = 0; k < 3; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        finish(&s);
+        job j = {&s, {0}, cg_clip_workspace_create(), 0, 0, 0, 0, {0, 0, 0, 0}, NULL};
+        int runs = runs_for(sizes[k]);
+        double t_cg = bench_median(cg_minkowski_job, &j, runs), a_cg = j.area;
+        char name[64];
+        snprintf(name, sizeof name, "minkowski 32-gon along star path %zu", sizes[k]);
+        if (sizes[k] <= 10000)
+            clipper2_row(name, t_cg, a_cg, 0, clipper2_minkowski_job, &j, runs < 3 ? runs : 3, 1);
+        else /* Clipper2 takes seconds at 10,000 already, growing faster than n */
+            bench_row(name, t_cg, "-", 0, "Clipper2 not run at this size (7.8 s at 10,000)");
+        cg_polygon_set64_clear(&j.result);
+        cg_clip_workspace_free(j.ws);
+        shape_free(&s);
+    }
+    if (minkowski_pattern_peer)
+        peer_clipper2_free(minkowski_pattern_peer);
+    shape_free(&pattern);
+}
+
+/* RDP at 0.1% of the radius (cg keeps topology, as GEOS's does; Clipper2's
+ * SimplifyPaths and RamerDouglasPeucker do not). */
+static void simplifications(void)
+{
+    static const size_t sizes[] = {1000, 100000};
+    for (int k = 0; k < 2; k++) {
+        shape s = {0};
+        star(&s, sizes[k], RADIUS, 0);
+        finish(&s);
+        job j = {&s, {0}, NULL, 0, 0, RADIUS / 1000, 0, {0, 0, 0, 0}, NULL};
+        int runs = runs_for(sizes[k]);
+        double t_cg = bench_median(cg_simplify_job, &j, runs), n_cg = j.area;
+        char name[64], note[160];
+        snprintf(name, sizeof name, "simplify rdp star %zu", sizes[k]);
+        geos_row(name, t_cg, n_cg, "points", geos_simplify_job, &j, runs, 0);
+        if (peer_clipper2_available()) {
+            j.peer = peer_clipper2_prepare(&s.peer);
+            for (j.join = 0; j.join < 2; j.join++) {
+                double t = bench_median(clipper2_simplify_job, &j, runs);
+                snprintf(note, sizeof note, "points cg %.0f, Clipper2 %s %.0f", n_cg,
+                         j.join ? "RamerDouglasPeucker" : "SimplifyPaths", j.area);
+                bench_row(name, t_cg, j.join ? "Clipper2 RDP" : "Clipper2", t, note);
+            }
+            peer_clipper2_free(j.peer);
+        }
+        cg_polygon_set64_clear(&j.result);
+        shape_free(&s);
+    }
+}
+
+/* The cg command on a WKT file of the 10,000-vertex star: its own median
+ * time (what it prints for --repeat) beside the library call on the same
+ * input and arguments (the command converts to and from its grid). */
 static void command_rows(void)
 {
     shape s = {0};
-    star(&s, 10000, 1000, 0);
+    star(&s, 10000, RADIUS, 0);
     char path[] = "/tmp/cg_bench_polygon_XXXXXX";
     int fd = mkstemp(path);
     FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
@@ -255,11 +439,14 @@ static void command_rows(void)
                 (long long)s.set.points[i].y);
     fputs("))\n", f);
     fclose(f);
-    static const char *commands[2] = {"offset 10 %s --join round --repeat 5",
-                                      "triangulate %s --repeat 5"};
-    static const char *names[2] = {"cg clip offset round star 10000 (command)",
-                                   "cg clip triangulate star 10000 (command)"};
-    for (int c = 0; c < 2; c++) {
+    enum { COMMANDS = 4 };
+    static const char *commands[COMMANDS] = {
+        "offset 10000 %s --join round --repeat 5", "triangulate %s --repeat 5",
+        "rect 950000 -50000 1050000 50000 %s --repeat 5", "simplify 1000 %s --repeat 5"};
+    static const char *names[COMMANDS] = {
+        "cg clip offset round star 10000 (command)", "cg clip triangulate star 10000 (command)",
+        "cg clip rect tile star 10000 (command)", "cg clip simplify rdp star 10000 (command)"};
+    for (int c = 0; c < COMMANDS; c++) {
         char args[256], line[4096];
         snprintf(args, sizeof args, commands[c], path);
         snprintf(line, sizeof line, "'%s' clip %s 2>&1 >/dev/null", CG_TOOL, args);
@@ -273,7 +460,26 @@ static void command_rows(void)
         }
         if (p)
             pclose(p);
-        bench_row(names[c], ms / 1e3, "-", 0, "the median the command prints for --repeat 5");
+        /* the library on the same input and arguments */
+        static void (*const library[COMMANDS])(void *) = {cg_offset_job, cg_triangulate_job,
+                                                          cg_rect_job, cg_simplify_job};
+        job j = {&s,
+                 {0},
+                 cg_clip_workspace_create(),
+                 RADIUS / 100,
+                 0,
+                 c == 3 ? RADIUS / 1000 : 0, /* 0: the default arc tolerance */
+                 1,
+                 {950000, -50000, 1050000, 50000},
+                 NULL};
+        double t_lib = bench_median(library[c], &j, 5);
+        cg_polygon_set64_clear(&j.result);
+        cg_clip_workspace_free(j.ws);
+        char note[160];
+        snprintf(note, sizeof note,
+                 "the median the command prints for --repeat 5; the library call %.3f ms",
+                 t_lib * 1e3);
+        bench_row(names[c], ms / 1e3, "-", 0, note);
     }
     remove(path);
     shape_free(&s);
@@ -286,6 +492,12 @@ int main(int argc, char **argv)
         offsets();
     if (!only || strcmp(only, "rect") == 0)
         rectangles();
+    if (!only || strcmp(only, "lines") == 0)
+        rectangle_lines();
+    if (!only || strcmp(only, "minkowski") == 0)
+        minkowski();
+    if (!only || strcmp(only, "simplify") == 0)
+        simplifications();
     if (!only || strcmp(only, "triangulate") == 0)
         triangulations();
     if (!only || strcmp(only, "command") == 0)

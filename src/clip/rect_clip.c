@@ -190,15 +190,26 @@ static int cut_segment(cg_point64 a, cg_point64 b, cg_rect64 rect, double *t0, d
     return *t0 <= *t1;
 }
 
+/* Which sides of the rectangle p lies beyond (Cohen-Sutherland's code). */
+static unsigned outcode(cg_point64 p, cg_rect64 rect)
+{
+    return (unsigned)(p.x < rect.xmin) | (unsigned)(p.x > rect.xmax) << 1
+           | (unsigned)(p.y < rect.ymin) << 2 | (unsigned)(p.y > rect.ymax) << 3;
+}
+
 static cg_status clip_polyline(polygon_pieces *out, const cg_point64 *p, size_t n, cg_rect64 rect)
 {
     cg_status st = CG_OK;
     if (n == 1 && p[0].x >= rect.xmin && p[0].x <= rect.xmax && p[0].y >= rect.ymin
         && p[0].y <= rect.ymax)
         st = polygon_piece_add(out, p[0]);
+    unsigned code = n > 0 ? outcode(p[0], rect) : 0;
     for (size_t i = 0; i + 1 < n && st == CG_OK; i++) {
-        double t0, t1;
-        if (!cut_segment(p[i], p[i + 1], rect, &t0, &t1)) {
+        double t0 = 0, t1 = 1;
+        unsigned next = outcode(p[i + 1], rect), both = code | next, beyond = code & next;
+        code = next;
+        /* both ends beyond one side: nothing inside; both inside: all of it */
+        if (beyond || (both && !cut_segment(p[i], p[i + 1], rect, &t0, &t1))) {
             st = polygon_piece_end(out, 1);
             continue;
         }

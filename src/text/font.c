@@ -5,6 +5,7 @@
 
 #include FT_OUTLINE_H
 #include <fontconfig/fontconfig.h>
+#include <pthread.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -175,11 +176,31 @@ size_t cg_font_cached_glyphs(const cg_font *font)
 
 /* fontconfig's configuration, loaded once per process: reading the
  * configuration files and scanning the font cache took a few milliseconds
- * on every lookup.  FcInit is idempotent and thread-safe; the configuration
- * it makes current lives until exit.  NULL when fontconfig cannot start. */
+ * on every lookup.  cg keeps its own (not fontconfig's current one, which
+ * the program may set or free), destroyed at exit (or when libcg is
+ * unloaded): fontconfig keeps pointers to some of its blocks in its mapped
+ * cache files only, where a leak checker would not see them.  NULL when
+ * fontconfig cannot start. */
+static FcConfig *loaded_config;
+static pthread_once_t config_once = PTHREAD_ONCE_INIT;
+
+static void free_config(void)
+{
+    FcConfigDestroy(loaded_config);
+    loaded_config = NULL;
+}
+
+static void load_config(void)
+{
+    loaded_config = FcInitLoadConfigAndFonts();
+    if (loaded_config)
+        atexit(free_config);
+}
+
 static FcConfig *font_config(void)
 {
-    return FcInit() ? FcConfigGetCurrent() : NULL;
+    pthread_once(&config_once, load_config);
+    return loaded_config;
 }
 
 static int fc_weight(int css)

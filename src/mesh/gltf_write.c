@@ -275,8 +275,16 @@ cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
     free(triangles);
     if (s == CG_OK && m->material_count) {
         cJSON *materials = cJSON_AddArrayToObject(root, "materials");
-        for (size_t i = 0; i < m->material_count; i++)
-            cJSON_AddItemToArray(materials, material_json(&m->materials[i]));
+        int strength = 0;
+        for (size_t i = 0; i < m->material_count; i++) {
+            cJSON *material = material_json(&m->materials[i]);
+            strength |= cJSON_HasObjectItem(material, "extensions");
+            cJSON_AddItemToArray(materials, material);
+        }
+        if (strength) /* every extension a file uses is declared */
+            cJSON_AddItemToObject(
+                root, "extensionsUsed",
+                cJSON_CreateStringArray((const char *[]){"KHR_materials_emissive_strength"}, 1));
     }
     if (cJSON_GetArraySize(primitives) > 0) {
         cJSON *buffers = cJSON_AddArrayToObject(root, "buffers"), *buffer = cJSON_CreateObject();

@@ -4,7 +4,8 @@
  * material 0, 1, ... and then those without one, each group in the order of
  * the source's faces; positions rounded to float; normals unit length;
  * v flipped twice (v' = 1 - (1 - v)); colours clamped to [0, 1]; material
- * factors kept (Phong: metallic 0, roughness sqrt(2 / (Ns + 2))).
+ * factors kept (Phong: metallic 0, roughness sqrt(2 / (Ns + 2))); PNG and
+ * JPEG maps embedded byte for byte with their sampler and transform.
  * Prints one line (triangles, values compared, values that differ) and the
  * first differences; exit 0 when none differ, 1 otherwise.
  * usage: gltf_compare SOURCE WRITTEN.glb */
@@ -81,8 +82,65 @@ static void same_corner(const cg_mesh *a, uint32_t v, const cg_mesh *b, uint32_t
     }
 }
 
+/* The bytes of a texture's image (embedded or its file's), or NULL; *owned to free. */
+static const unsigned char *image_of(const cg_mesh_texture_ref *t, size_t *n, unsigned char **owned)
+{
+    *owned = NULL, *n = 0;
+    if (t->image_bytes) {
+        *n = t->image_byte_count;
+        return t->image_bytes;
+    }
+    FILE *f = t->image_path ? fopen(t->image_path, "rb") : NULL;
+    if (!f)
+        return NULL;
+    unsigned char chunk[65536];
+    size_t got;
+    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        unsigned char *more = realloc(*owned, *n + got);
+        if (!more)
+            break;
+        memcpy(more + *n, chunk, got);
+        *owned = more, *n += got;
+    }
+    fclose(f);
+    return *owned;
+}
+
+/* A map of the source is embedded in the written file, the same bytes, when
+ * its image is PNG or JPEG (written: whether the writer carries the slot). */
+static void same_texture(const cg_mesh_texture_ref *a, const cg_mesh_texture_ref *b, int written,
+                         size_t i)
+{
+    size_t n;
+    unsigned char *owned;
+    const unsigned char *bytes = image_of(a, &n, &owned);
+    int image = written && bytes
+                && ((n > 8 && memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0)
+                    || (n > 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF));
+    expect(image == (b->image_bytes != NULL), "having a texture", i);
+    if (image && b->image_bytes) {
+        expect(n == b->image_byte_count && memcmp(bytes, b->image_bytes, n) == 0, "texture bytes",
+               i);
+        expect(a->wrap_u == b->wrap_u && a->wrap_v == b->wrap_v, "texture wrap", i);
+        expect(a->magnify_nearest == b->magnify_nearest && a->encoding == b->encoding,
+               "texture filter and encoding", i);
+        expect(a->offset[0] == b->offset[0] && a->offset[1] == b->offset[1]
+                   && a->rotation == b->rotation && a->scale[0] == b->scale[0]
+                   && a->scale[1] == b->scale[1],
+               "texture transform", i);
+        expect(a->amount == b->amount, "texture scale or strength", i);
+    }
+    free(owned);
+}
+
 static void same_material(const cg_mesh_material *m, const cg_mesh_material *w, size_t i)
 {
+    int pbr = m->model != CG_MESH_MATERIAL_PHONG;
+    same_texture(&m->base_color_map, &w->base_color_map, 1, i);
+    same_texture(&m->metallic_roughness_map, &w->metallic_roughness_map, pbr, i);
+    same_texture(&m->normal_map, &w->normal_map, pbr, i);
+    same_texture(&m->occlusion_map, &w->occlusion_map, 1, i);
+    same_texture(&m->emissive_map, &w->emissive_map, 1, i);
     expect(strcmp(m->name ? m->name : "", w->name ? w->name : "") == 0, "material name", i);
     expect(w->model == CG_MESH_MATERIAL_METALLIC_ROUGHNESS, "material model", i);
     expect(clamp01(m->base_color.r) == w->base_color.r

@@ -2,7 +2,7 @@
 # What cg writes as glTF, checked by the Khronos glTF validator (npm package
 # gltf-validator, installed into tests/gltf by scripts/install-npm-deps.sh):
 # cg convert-mesh writes .glb from OBJ (with and without materials, quads,
-# normals, texture coordinates), PLY (vertex colours), an empty mesh, and
+# normals, texture coordinates, PNG maps), PLY (vertex colours), an empty mesh, and
 # every glTF 2.0 model of Debian's assimp-testmodels that cg reads (nodes,
 # cameras, textured and PBR materials); the validator must report zero errors
 # on each, and cg must read each back equal to what it wrote
@@ -33,6 +33,10 @@ Ns 64
 newmtl glass
 Kd 0.2 0.4 0.9
 d 0.25
+map_Kd -clamp on -s 2 2 1 logo.png
+newmtl textured
+Kd 1 1 1
+map_Kd logo.png
 newmtl lamp
 Kd 1 1 1
 Ke 4 3 1
@@ -61,6 +65,8 @@ usemtl glass
 f 2/2/3 3/3/3 7/5/2
 usemtl lamp
 f 4/4/1 3/3/1 7/5/1
+usemtl textured
+f 1/1/1 3/3/1 7/5/1
 usemtl red plastic
 f 5/1/1 6/2/1 7/5/1
 EOT
@@ -86,6 +92,9 @@ end_header
 EOT
 printf 'v 0 0 0\nv 1 0 0\n' > "$work/in/empty.obj"
 models=/usr/share/assimp/models/glTF2
+# the texture: a PNG cg draws
+printf 'size 16 16\nbackground white\ncolor #c03020\ndisc 8 8 5\n' > "$work/logo.draw"
+"$cg" draw "$work/logo.draw" -o "$work/in/logo.png" 2> "$work/err" && pass || fail "cg draw logo.png: $(cat "$work/err")"
 if [ -d "$models" ]; then
   find "$models" \( -name '*.gltf' -o -name '*.glb' \) -type f | LC_ALL=C sort > "$work/models"
 else

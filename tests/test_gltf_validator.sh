@@ -119,6 +119,11 @@ while read -r file; do
   i=$((i + 1))
 done < <(list)
 [ "$i" -ge 5 ] && pass || fail "only $i files written"
+# a position beyond the range of floats is refused with a message, nothing written
+printf 'v 0 0 0\nv 1e300 0 0\nv 0 1 0\nf 1 2 3\n' > "$work/huge.obj"
+expect 1 "huge position" "$cg" convert-mesh "$work/huge.obj" "$work/huge.glb"
+grep -q "beyond the range of floats" "$work/err" && pass || fail "huge position: $(cat "$work/err")"
+[ -e "$work/huge.glb" ] && fail "huge.glb written" || pass
 echo "test_gltf_validator: $i files written by cg"
 CG_GLTF_VALIDATOR="$module" node "$source_dir/tests/gltf/validate.js" $(cat "$work/written") > "$work/report"
 status=$?

@@ -70,6 +70,8 @@ static cg_status write_vertices(const cg_mesh *m, const uint32_t *vertices, size
         const double *p = &m->positions[vertices[i]].x;
         for (int k = 0; k < 3 && s == CG_OK; k++) {
             float f = (float)p[k];
+            if (!isfinite(f)) /* glTF stores floats */
+                return CG_ERANGE;
             lo[k] = f < lo[k] ? f : lo[k];
             hi[k] = f > hi[k] ? f : hi[k];
             s = put_float(bin, p[k]);
@@ -100,6 +102,9 @@ static cg_status write_vertices(const cg_mesh *m, const uint32_t *vertices, size
     if (m->texcoords && s == CG_OK) {
         start = bin->count;
         for (size_t i = 0; s == CG_OK && i < count; i++) {
+            cg_vec2 t = m->texcoords[vertices[i]];
+            if (!isfinite((float)t.x) || !isfinite((float)(1.0 - t.y)))
+                return CG_ERANGE;
             s = put_float(bin, m->texcoords[vertices[i]].x);
             if (s == CG_OK)
                 s = put_float(bin, 1.0 - m->texcoords[vertices[i]].y);
@@ -431,6 +436,11 @@ cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
         s = write_file(path, json, &bin, err);
     else if (s == CG_ENOMEM)
         s = cg_error_set(err, s, "%s: out of memory", path);
+    else if (s == CG_ERANGE)
+        s = cg_error_set(err, s,
+                         "%s: a vertex position or texture coordinate lies beyond the range of "
+                         "floats, which glTF stores",
+                         path);
     free(json);
     core_array_free(&bin);
     return s;

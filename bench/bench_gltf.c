@@ -5,7 +5,10 @@
  * 32-bit indices) written into a temporary directory.  cg's result is the
  * flattened world-space mesh (doubles); assimp's its scene of float meshes.
  * Times are medians; peak memory is measured in a child process per reader
- * (its peak resident size less that of a child that reads nothing). */
+ * (its peak resident size less that of a child that reads nothing).  A
+ * second row per file times `cg mesh info FILE` as a user runs it (the
+ * whole process: start, load, the half-edge summary it prints) against the
+ * same assimp load, with the process's peak resident size. */
 #include "bench.h"
 #include "cg.h"
 
@@ -70,6 +73,47 @@ static long peak_bytes(void (*work)(void *), void *context)
     return usage.ru_maxrss * 1024L;
 }
 
+/* Processor time (user + system) of one run of `cg mesh info path`, and its
+ * peak resident size in *peak; -1 when it failed. */
+static double tool_seconds(const char *path, long *peak)
+{
+    pid_t pid = fork();
+    if (pid < 0)
+        return -1;
+    if (pid == 0) {
+        if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))
+            _exit(127);
+        execl(CG_TOOL, CG_TOOL, "mesh", "info", path, (char *)NULL);
+        _exit(127);
+    }
+    int status;
+    struct rusage usage;
+    if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return -1;
+    *peak = usage.ru_maxrss * 1024L;
+    return (double)usage.ru_utime.tv_sec + (double)usage.ru_utime.tv_usec * 1e-6
+           + (double)usage.ru_stime.tv_sec + (double)usage.ru_stime.tv_usec * 1e-6;
+}
+
+/* The `cg mesh info FILE` row: the median over runs, against assimp's load. */
+static void tool_row(const char *label, const char *path, int runs, double assimp_time)
+{
+    double samples[BENCH_MAX_RUNS];
+    long peak = 0;
+    runs = bench_runs(runs);
+    for (int i = 0; i < runs; i++)
+        if ((samples[i] = tool_seconds(path, &peak)) < 0) {
+            fprintf(stderr, "bench_gltf: cg mesh info %s failed\n", path);
+            return;
+        }
+    char name[160], note[160];
+    snprintf(name, sizeof name, "cg mesh info %s", label);
+    snprintf(note, sizeof note, "the whole process (start, load, summary); peak resident %.1f MB",
+             peak / 1e6);
+    bench_row(name, bench_median_of(samples, runs), assimp_time > 0 ? "assimp" : "-", assimp_time,
+              note);
+}
+
 static void compare(const char *label, const char *path, int runs)
 {
     job a = {path, 0}, b = {path, 0};
@@ -91,6 +135,7 @@ static void compare(const char *label, const char *path, int runs)
         snprintf(note, sizeof note, "%ld triangles; peak +%.1f MB; assimp not built or failed",
                  a.triangles, cg_peak / 1e6);
         bench_row(name, cg_time, "-", 0, note);
+        tool_row(label, path, runs, 0);
         return;
     }
     double assimp_time = bench_median_clock(assimp_work, &b, runs, CLOCK_PROCESS_CPUTIME_ID);
@@ -100,6 +145,7 @@ static void compare(const char *label, const char *path, int runs)
              a.triangles, b.triangles, cg_peak / 1e6, assimp_peak / 1e6,
              assimp_peak > 0 ? (double)cg_peak / (double)assimp_peak : 0);
     bench_row(name, cg_time, "assimp", assimp_time, note);
+    tool_row(label, path, runs, assimp_time);
 }
 
 static void put_u32(FILE *f, uint32_t v)

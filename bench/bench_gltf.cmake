@@ -8,3 +8,6 @@ cg_bench_peer(bench_gltf
               DEFINE CG_HAVE_ASSIMP
               LINK PkgConfig::BENCH_ASSIMP
               MESSAGE "bench_gltf: assimp not found (libassimp-dev); rows without a peer")
+# The `cg mesh info FILE` rows run the build's cg tool.
+target_compile_definitions(bench_gltf PRIVATE CG_TOOL="$<TARGET_FILE:cg>")
+add_dependencies(bench_gltf cg)

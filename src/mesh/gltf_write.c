@@ -9,7 +9,10 @@
  * vertices it uses (a vertex shared by two materials is written twice).  Texture coordinates go
  * back to glTF's convention (v = 1 - v'), vertex colours are linear already.
  * Materials keep their factors (base colour, metallic, roughness, emissive,
- * alpha mode and cutoff, double-sided); texture maps are not written. */
+ * alpha mode and cutoff, double-sided) and their PNG and JPEG maps, embedded
+ * after the primitives (base colour, metallic-roughness, normal, occlusion,
+ * emissive; an OBJ's map_Kd as the base colour), each with its sampler; a
+ * map whose image cannot be read or is in another format is left out. */
 #include "internal.h"
 #include "../core/array.h"
 #include "../core/safe_file.h"
@@ -67,6 +70,8 @@ static cg_status write_vertices(const cg_mesh *m, const uint32_t *vertices, size
         const double *p = &m->positions[vertices[i]].x;
         for (int k = 0; k < 3 && s == CG_OK; k++) {
             float f = (float)p[k];
+            if (!isfinite(f)) /* glTF stores floats */
+                return CG_ERANGE;
             lo[k] = f < lo[k] ? f : lo[k];
             hi[k] = f > hi[k] ? f : hi[k];
             s = put_float(bin, p[k]);
@@ -97,6 +102,9 @@ static cg_status write_vertices(const cg_mesh *m, const uint32_t *vertices, size
     if (m->texcoords && s == CG_OK) {
         start = bin->count;
         for (size_t i = 0; s == CG_OK && i < count; i++) {
+            cg_vec2 t = m->texcoords[vertices[i]];
+            if (!isfinite((float)t.x) || !isfinite((float)(1.0 - t.y)))
+                return CG_ERANGE;
             s = put_float(bin, m->texcoords[vertices[i]].x);
             if (s == CG_OK)
                 s = put_float(bin, 1.0 - m->texcoords[vertices[i]].y);
@@ -159,6 +167,115 @@ static cJSON *material_json(const cg_mesh_material *m)
     if (m->double_sided)
         cJSON_AddTrueToObject(j, "doubleSided");
     return j;
+}
+
+/* The bytes of a texture's image: embedded, or the whole file it names
+ * (*owned then to free); NULL when there is none or it cannot be read. */
+static const unsigned char *image_of(const cg_mesh_texture_ref *t, size_t *n, unsigned char **owned)
+{
+    *owned = NULL;
+    if (t->image_bytes) {
+        *n = t->image_byte_count;
+        return t->image_bytes;
+    }
+    FILE *f = t->image_path ? fopen(t->image_path, "rb") : NULL;
+    long size = f && fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (size > 0 && (size_t)size < UINT32_MAX && fseek(f, 0, SEEK_SET) == 0
+        && (*owned = malloc((size_t)size)) && fread(*owned, 1, (size_t)size, f) != (size_t)size) {
+        free(*owned);
+        *owned = NULL;
+    }
+    if (f)
+        fclose(f);
+    *n = *owned ? (size_t)size : 0;
+    return *owned;
+}
+
+/* Embeds texture t's image (PNG or JPEG, the formats glTF allows) in bin
+ * with its sampler, and adds {"index": texture} to info as key (with its
+ * scale or strength, and KHR_texture_transform, bit 2 of *used); a texture
+ * without such an image is left out. */
+static cg_status add_texture(cJSON *root, byte_array *bin, const cg_mesh_texture_ref *t,
+                             cJSON *info, const char *key, int *used)
+{
+    size_t n;
+    unsigned char *owned;
+    const unsigned char *bytes = image_of(t, &n, &owned);
+    const char *mime = n > 8 && memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0 ? "image/png"
+                       : n > 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF
+                           ? "image/jpeg"
+                           : NULL;
+    size_t start = bin->count;
+    cg_status s = mime ? put_bytes(bin, bytes, n) : CG_OK;
+    free(owned);
+    while (s == CG_OK && mime && bin->count % 4) /* the next accessor stays aligned */
+        s = put_bytes(bin, "", 1);
+    if (s != CG_OK || !mime)
+        return s;
+    cJSON *views = cJSON_GetObjectItemCaseSensitive(root, "bufferViews");
+    cJSON *view = cJSON_CreateObject(), *image = cJSON_CreateObject();
+    cJSON_AddNumberToObject(view, "buffer", 0);
+    cJSON_AddNumberToObject(view, "byteOffset", (double)start);
+    cJSON_AddNumberToObject(view, "byteLength", (double)n);
+    cJSON_AddNumberToObject(image, "bufferView", cJSON_GetArraySize(views));
+    cJSON_AddItemToArray(views, view);
+    cJSON_AddStringToObject(image, "mimeType", mime);
+    cJSON *images = cJSON_GetObjectItemCaseSensitive(root, "images");
+    if (!images)
+        images = cJSON_AddArrayToObject(root, "images");
+    cJSON *samplers = cJSON_GetObjectItemCaseSensitive(root, "samplers");
+    if (!samplers)
+        samplers = cJSON_AddArrayToObject(root, "samplers");
+    cJSON *textures = cJSON_GetObjectItemCaseSensitive(root, "textures");
+    if (!textures)
+        textures = cJSON_AddArrayToObject(root, "textures");
+    static const int wrap[] = {10497 /* REPEAT */, 33648 /* MIRRORED */, 33071 /* CLAMP */};
+    cJSON *sampler = cJSON_CreateObject(), *texture = cJSON_CreateObject();
+    cJSON_AddNumberToObject(sampler, "magFilter", t->magnify_nearest ? 9728 : 9729);
+    cJSON_AddNumberToObject(sampler, "minFilter", 9987); /* LINEAR_MIPMAP_LINEAR */
+    cJSON_AddNumberToObject(sampler, "wrapS", wrap[t->wrap_u <= 2 ? t->wrap_u : 0]);
+    cJSON_AddNumberToObject(sampler, "wrapT", wrap[t->wrap_v <= 2 ? t->wrap_v : 0]);
+    cJSON_AddNumberToObject(texture, "sampler", cJSON_GetArraySize(samplers));
+    cJSON_AddNumberToObject(texture, "source", cJSON_GetArraySize(images));
+    cJSON_AddItemToArray(images, image);
+    cJSON_AddItemToArray(samplers, sampler);
+    cJSON *ref = cJSON_CreateObject();
+    cJSON_AddNumberToObject(ref, "index", cJSON_GetArraySize(textures));
+    cJSON_AddItemToArray(textures, texture);
+    if (t->amount != 1 && strcmp(key, "normalTexture") == 0)
+        cJSON_AddNumberToObject(ref, "scale", t->amount);
+    if (t->amount != 1 && strcmp(key, "occlusionTexture") == 0)
+        cJSON_AddNumberToObject(ref, "strength", t->amount);
+    if (t->offset[0] != 0 || t->offset[1] != 0 || t->rotation != 0 || t->scale[0] != 1
+        || t->scale[1] != 1) {
+        cJSON *ext = cJSON_AddObjectToObject(ref, "extensions");
+        cJSON *transform = cJSON_AddObjectToObject(ext, "KHR_texture_transform");
+        cJSON_AddItemToObject(transform, "offset", cJSON_CreateDoubleArray(t->offset, 2));
+        cJSON_AddNumberToObject(transform, "rotation", t->rotation);
+        cJSON_AddItemToObject(transform, "scale", cJSON_CreateDoubleArray(t->scale, 2));
+        *used |= 2;
+    }
+    cJSON_AddItemToObject(info, key, ref);
+    return CG_OK;
+}
+
+/* The maps of material m into its JSON j: base colour (map_Kd), metallic-
+ * roughness, normal, occlusion and emissive. */
+static cg_status add_textures(cJSON *root, byte_array *bin, const cg_mesh_material *m, cJSON *j,
+                              int *used)
+{
+    cJSON *pbr = cJSON_GetObjectItemCaseSensitive(j, "pbrMetallicRoughness");
+    cg_status s = add_texture(root, bin, &m->base_color_map, pbr, "baseColorTexture", used);
+    if (s == CG_OK && m->model != CG_MESH_MATERIAL_PHONG)
+        s = add_texture(root, bin, &m->metallic_roughness_map, pbr, "metallicRoughnessTexture",
+                        used);
+    if (s == CG_OK && m->model != CG_MESH_MATERIAL_PHONG)
+        s = add_texture(root, bin, &m->normal_map, j, "normalTexture", used);
+    if (s == CG_OK)
+        s = add_texture(root, bin, &m->occlusion_map, j, "occlusionTexture", used);
+    if (s == CG_OK)
+        s = add_texture(root, bin, &m->emissive_map, j, "emissiveTexture", used);
+    return s;
 }
 
 /* Which faces belong to primitive `wanted` (a material, or none). */
@@ -275,8 +392,20 @@ cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
     free(triangles);
     if (s == CG_OK && m->material_count) {
         cJSON *materials = cJSON_AddArrayToObject(root, "materials");
-        for (size_t i = 0; i < m->material_count; i++)
-            cJSON_AddItemToArray(materials, material_json(&m->materials[i]));
+        int used = 0; /* bit 1: KHR_materials_emissive_strength, 2: KHR_texture_transform */
+        for (size_t i = 0; i < m->material_count && s == CG_OK; i++) {
+            cJSON *material = material_json(&m->materials[i]);
+            used |= cJSON_HasObjectItem(material, "extensions");
+            cJSON_AddItemToArray(materials, material);
+            if (cJSON_GetArraySize(primitives) > 0) /* images live in the BIN chunk */
+                s = add_textures(root, &bin, &m->materials[i], material, &used);
+        }
+        static const char *extensions[] = {"KHR_materials_emissive_strength",
+                                           "KHR_texture_transform"};
+        if (used) /* every extension a file uses is declared */
+            cJSON_AddItemToObject(
+                root, "extensionsUsed",
+                cJSON_CreateStringArray(extensions + (used == 2), used == 3 ? 2 : 1));
     }
     if (cJSON_GetArraySize(primitives) > 0) {
         cJSON *buffers = cJSON_AddArrayToObject(root, "buffers"), *buffer = cJSON_CreateObject();
@@ -307,6 +436,11 @@ cg_status gltf_write(const cg_mesh *m, const char *path, cg_error *err)
         s = write_file(path, json, &bin, err);
     else if (s == CG_ENOMEM)
         s = cg_error_set(err, s, "%s: out of memory", path);
+    else if (s == CG_ERANGE)
+        s = cg_error_set(err, s,
+                         "%s: a vertex position or texture coordinate lies beyond the range of "
+                         "floats, which glTF stores",
+                         path);
     free(json);
     core_array_free(&bin);
     return s;

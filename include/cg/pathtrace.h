@@ -2,7 +2,9 @@
  *
  * Radiance is estimated per pixel by tracing paths from the camera:
  * next-event estimation toward every point, spot, directional and area light
- * of the scene, a BSDF-sampled continuation (cosine-weighted for Lambert,
+ * of the scene and toward the triangles of emissive meshes (one point per
+ * bounce, chosen by area times emitted luminance, weighted against BSDF
+ * sampling by the power heuristic), a BSDF-sampled continuation (cosine-weighted for Lambert,
  * exact reflection for mirrors, Fresnel-weighted reflection or refraction for
  * smooth dielectrics), Russian roulette after three bounces, and a maximum
  * depth.  Rays that leave the scene see a uniform environment radiance.
@@ -52,6 +54,11 @@ typedef struct cg_path_options {
     const cg_image *environment_map;
     double environment_intensity; /* multiplies the map, >= 0 (default 1) */
     int x0, y0, x1, y1;           /* the tile [x0, x1) x [y0, y1); all 0: the whole image */
+    /* 0 (default): emissive meshes are lights, sampled by area times
+     * luminance with MIS against BSDF sampling; 1: emission counts only
+     * where paths happen to meet it (the estimator without emitter
+     * sampling, for comparisons). */
+    int no_emitter_sampling;
     /* Called after each finished row of the tile (one call at a time); may
      * be NULL. */
     void (*progress)(void *user, int done, int total);

@@ -24,6 +24,7 @@ typedef struct path_job {
     const cg_trace_scene *scene;
     const cg_camera *camera;
     const cg_path_options *options;
+    const path_lights *lights;
     int width, height, x0, y0, x1, y1, begin, end;
     uint64_t *sums;
     core_worker_pool *pool;
@@ -51,7 +52,7 @@ static void render_pixel(path_job *j, int x, int y, uint64_t *out)
         cg_vec3 o, d;
         if (cg_camera_ray(j->camera, j->width, j->height, x + dx, y + dy, &o, &d) != CG_OK)
             continue;
-        cg_vec3 c = path_radiance(j->scene, j->options, o, cg_vec3_normalize(d), &rng);
+        cg_vec3 c = path_radiance(j->scene, j->lights, j->options, o, cg_vec3_normalize(d), &rng);
         out[0] += fixed(c.x);
         out[1] += fixed(c.y);
         out[2] += fixed(c.z);
@@ -136,12 +137,19 @@ cg_status cg_path_render_sums(cg_trace_scene *scene, const cg_camera *camera, in
     cg_vec3 o, d;
     if ((s = cg_camera_ray(camera, width, height, 0.5, 0.5, &o, &d)) != CG_OK)
         return s;
-    if (pthread_mutex_init(&j.lock, NULL) != 0)
+    path_lights lights = {0};
+    if (!options->no_emitter_sampling && (s = path_lights_build(scene, &lights)) != CG_OK)
+        return s;
+    j.lights = &lights;
+    if (pthread_mutex_init(&j.lock, NULL) != 0) {
+        path_lights_free(&lights);
         return CG_ENOMEM;
+    }
     j.pool = trace_scene_pool(scene, options->threads);
     core_worker_pool_phase_init(&j.rows, (size_t)(j.y1 - j.y0));
     core_worker_pool_run(j.pool, render_rows, &j);
     pthread_mutex_destroy(&j.lock);
+    path_lights_free(&lights);
     return CG_OK;
 }
 

@@ -1,5 +1,6 @@
 /* The path tracer's integrator: next-event estimation toward the scene's
- * lights, BSDF-sampled continuation, Russian roulette. */
+ * lights and emitters (MIS-weighted against BSDF sampling), BSDF-sampled
+ * continuation, Russian roulette. */
 #include "path_internal.h"
 
 #include <math.h>
@@ -182,10 +183,40 @@ static cg_vec3 environment_radiance(const cg_path_options *options, cg_vec3 d)
     return cg_vec3_scale(sum, options->environment_intensity);
 }
 
-cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *options, cg_vec3 origin,
-                      cg_vec3 direction, path_sampler *rng)
+/* The continuation of the path at a hit: the next direction and the
+ * throughput's factor; *pdf the solid-angle density of a diffuse choice
+ * (0: a specular lobe).  0 when the path ends. */
+static int continue_path(const path_surface *s, const trace_hit *hit, cg_vec3 n, cg_vec3 ng,
+                         int entering, cg_vec3 *direction, cg_vec3 *weight, cg_vec3 *origin,
+                         double *pdf, path_sampler *rng)
+{
+    double u = path_next(rng), u1 = path_next(rng), u2 = path_next(rng);
+    cg_vec3 offset_normal = ng;
+    *pdf = 0;
+    if (u < s->diffuse) {
+        *direction = cosine_direction(n, u1, u2);
+        if (cg_vec3_dot(*direction, ng) <= 0)
+            return 0;
+        *weight = cg_vec3_mul(*weight, s->albedo);
+        *pdf = s->diffuse * cg_vec3_dot(*direction, n) / M_PI;
+    } else if (u < s->diffuse + s->mirror) {
+        *direction = cg_vec3_normalize(cg_reflect(*direction, n));
+    } else {
+        *direction = glass_direction(*direction, n, entering, s->ior, u1, &offset_normal);
+    }
+    *origin = trace_offset(hit, offset_normal);
+    return 1;
+}
+
+cg_vec3 path_radiance(const cg_trace_scene *scene, const path_lights *lights,
+                      const cg_path_options *options, cg_vec3 origin, cg_vec3 direction,
+                      path_sampler *rng)
 {
     cg_vec3 sum = cg_vec3_make(0, 0, 0), weight = cg_vec3_make(1, 1, 1);
+    path_lights none = {0};
+    if (!lights)
+        lights = &none;
+    double bsdf_pdf = 0; /* of the ray being traced; 0: the camera's or a specular one */
     for (int depth = 0;; depth++) {
         trace_hit hit;
         if (!trace_intersect(scene, origin, direction, 0, INFINITY, &hit))
@@ -193,7 +224,10 @@ cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *option
         if (depth >= options->max_depth)
             return sum;
         const trace_object *object = &scene->objects[hit.object];
-        sum = cg_vec3_add(sum, cg_vec3_mul(weight, object->material.emission));
+        double mis = bsdf_pdf > 0 ? path_lights_hit_weight(lights, object, bsdf_pdf, hit.t,
+                                                           cg_vec3_dot(direction, hit.normal))
+                                  : 1;
+        sum = cg_vec3_add(sum, cg_vec3_mul(weight, cg_vec3_scale(object->material.emission, mis)));
         path_surface s = surface_of(&object->material.surface,
                                     trace_surface_color(object, hit.point));
         int entering = cg_vec3_dot(direction, hit.normal) < 0;
@@ -201,22 +235,14 @@ cg_vec3 path_radiance(const cg_trace_scene *scene, const cg_path_options *option
         cg_vec3 n = cg_vec3_dot(hit.smooth_normal, ng) > 0 ? hit.smooth_normal : ng;
         if (s.diffuse > 0) {
             cg_vec3 e = direct(scene, &hit, ng, rng);
+            /* An emitter met by the next ray counts only below the depth. */
+            if (depth + 1 < options->max_depth)
+                e = cg_vec3_add(e, path_lights_direct(scene, lights, &hit, n, ng, s.diffuse, rng));
             sum = cg_vec3_add(sum, cg_vec3_mul(weight, cg_vec3_scale(cg_vec3_mul(s.albedo, e),
                                                                      s.diffuse / M_PI)));
         }
-        double u = path_next(rng), u1 = path_next(rng), u2 = path_next(rng);
-        cg_vec3 offset_normal = ng;
-        if (u < s.diffuse) {
-            direction = cosine_direction(n, u1, u2);
-            if (cg_vec3_dot(direction, ng) <= 0)
-                return sum;
-            weight = cg_vec3_mul(weight, s.albedo);
-        } else if (u < s.diffuse + s.mirror) {
-            direction = cg_vec3_normalize(cg_reflect(direction, n));
-        } else {
-            direction = glass_direction(direction, n, entering, s.ior, u1, &offset_normal);
-        }
-        origin = trace_offset(&hit, offset_normal);
+        if (!continue_path(&s, &hit, n, ng, entering, &direction, &weight, &origin, &bsdf_pdf, rng))
+            return sum;
         if (depth >= 3) {
             double m = weight.x > weight.y ? weight.x : weight.y;
             double q = m > weight.z ? m : weight.z;
